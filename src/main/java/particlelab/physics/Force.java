@@ -1,0 +1,53 @@
+package particlelab.physics;
+
+import com.jme3.math.Vector3f;
+
+/**
+ * One force acting on a particle, as the lecture's recipe uses it: {@code a = g + F/m}.
+ *
+ * <p>A scene composes only the forces it shows. Field forces such as gravity give every mass
+ * the same acceleration and contribute to {@code g}; the others push with a force in newtons
+ * and contribute to {@code F}. Implementations read the particle's current state and must
+ * not modify it, and must allocate nothing.
+ */
+public interface Force {
+
+    /**
+     * Add this force's push, in newtons, to the net force F. Field forces add nothing here.
+     *
+     * @param particle the particle pushed (not null, not modified)
+     * @param netForce the sum of forces so far (in newtons, not null, modified)
+     */
+    default void addForce(Particle particle, Vector3f netForce) {
+    }
+
+    /**
+     * Add this force's mass-independent field acceleration to g. Pushing forces add nothing.
+     *
+     * @param particle the particle accelerated (not null, not modified)
+     * @param fieldAcceleration the sum of field accelerations so far (in m/s², not null,
+     *     modified)
+     */
+    default void addFieldAcceleration(Particle particle, Vector3f fieldAcceleration) {
+    }
+
+    /**
+     * Return how fast this force damps the particle's speed at its current state, the rate
+     * {@code λ} (per second) for which the Euler step scales the speed by {@code 1 − λh}.
+     * The integrator stays stable while {@code h < 2/λ} and never reverses the velocity while
+     * {@code h < 1/λ}. Forces that do not depend on velocity return 0.
+     *
+     * @param particle the particle (not null, not modified)
+     * @return the damping rate (in 1/s, &ge;0)
+     */
+    default float dampingRate(Particle particle) {
+        return 0f;
+    }
+
+    /**
+     * Describe this force with its current coefficients, for a HUD or a report.
+     *
+     * @return a short equation such as {@code F = -0.9·V}
+     */
+    String describe();
+}

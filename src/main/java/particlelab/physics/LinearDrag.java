@@ -1,0 +1,56 @@
+package particlelab.physics;
+
+import com.jme3.math.Vector3f;
+
+/**
+ * Linear (viscous) drag {@code F = −b·V}: slow flow, small particles. With mass m the speed
+ * decays at the rate {@code k = b/m}; the Euler step multiplies the speed by {@code 1 − k·h},
+ * so it is stable for {@code h < 2m/b} and never reverses the velocity for {@code h < m/b}.
+ */
+public final class LinearDrag implements Force {
+
+    private float coefficient;
+
+    /**
+     * Create linear drag.
+     *
+     * @param coefficient b (in N·s/m = kg/s, finite, &ge;0)
+     */
+    public LinearDrag(float coefficient) {
+        setCoefficient(coefficient);
+    }
+
+    /**
+     * Return the coefficient.
+     *
+     * @return b (in N·s/m, &ge;0)
+     */
+    public float getCoefficient() {
+        return coefficient;
+    }
+
+    /**
+     * Alter the coefficient.
+     *
+     * @param coefficient b (in N·s/m = kg/s, finite, &ge;0)
+     */
+    public void setCoefficient(float coefficient) {
+        this.coefficient = Validate.nonNegative(coefficient, "linear drag b (N*s/m)");
+    }
+
+    @Override
+    public void addForce(Particle particle, Vector3f netForce) {
+        // F = -b V
+        netForce.scaleAdd(-coefficient, particle.velocity, netForce);
+    }
+
+    @Override
+    public float dampingRate(Particle particle) {
+        return coefficient / particle.getMass();
+    }
+
+    @Override
+    public String describe() {
+        return "F = -" + coefficient + "·V";
+    }
+}

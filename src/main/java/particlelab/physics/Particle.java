@@ -1,0 +1,94 @@
+package particlelab.physics;
+
+import com.jme3.math.Vector3f;
+
+/**
+ * A point mass: position P (m), velocity V (m/s) and mass m (kg).
+ *
+ * <p>The vectors are {@code public final}: update them in place ({@code addLocal},
+ * {@code scaleAdd}, {@code set}), never by replacing them, so no step allocates.
+ */
+public final class Particle {
+
+    /** Position P (in metres; live, modified in place by the integrator). */
+    public final Vector3f position = new Vector3f();
+    /** Velocity V (in metres per second; live, modified in place by the integrator). */
+    public final Vector3f velocity = new Vector3f();
+
+    private float massKg;
+
+    /**
+     * Create a particle of mass 1 kg at rest at the origin.
+     */
+    public Particle() {
+        this.massKg = 1f;
+    }
+
+    /**
+     * Create a particle.
+     *
+     * @param position the initial position (in metres, finite, not null, copied)
+     * @param velocity the initial velocity (in metres per second, finite, not null, copied)
+     * @param massKg the mass (in kilograms, finite, &gt;0)
+     */
+    public Particle(Vector3f position, Vector3f velocity, float massKg) {
+        setMass(massKg);
+        setState(position, velocity);
+    }
+
+    /**
+     * Return the mass.
+     *
+     * @return the mass (in kilograms, finite, &gt;0)
+     */
+    public float getMass() {
+        return massKg;
+    }
+
+    /**
+     * Alter the mass.
+     *
+     * @param massKg the new mass (in kilograms, finite, &gt;0)
+     */
+    public void setMass(float massKg) {
+        this.massKg = Validate.positive(massKg, "mass (kg)");
+    }
+
+    /**
+     * Copy a new position and velocity into this particle.
+     *
+     * @param newPosition the position (in metres, finite, not null, not modified)
+     * @param newVelocity the velocity (in metres per second, finite, not null, not modified)
+     */
+    public void setState(Vector3f newPosition, Vector3f newVelocity) {
+        Validate.finite(newPosition, "position (m)");
+        Validate.finite(newVelocity, "velocity (m/s)");
+        position.set(newPosition);
+        velocity.set(newVelocity);
+    }
+
+    /**
+     * Copy the whole state (position, velocity, mass) of another particle into this one.
+     *
+     * @param source the particle to copy (not null, not modified)
+     */
+    public void copyFrom(Particle source) {
+        position.set(source.position);
+        velocity.set(source.velocity);
+        massKg = source.massKg;
+    }
+
+    /**
+     * Test whether the position and velocity are finite.
+     *
+     * @return true if no component is NaN or infinite
+     */
+    public boolean isFinite() {
+        return Validate.isFinite(position) && Validate.isFinite(velocity);
+    }
+
+    @Override
+    public String toString() {
+        return "Particle[P=" + position + ", V=" + velocity + ", m=" + massKg + "]";
+    }
+}

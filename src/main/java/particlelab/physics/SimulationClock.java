@@ -1,0 +1,313 @@
+package particlelab.physics;
+
+/**
+ * Turns the frame times a game loop hands us into integrator steps: pause, single step, time
+ * scale, and two stepping modes.
+ *
+ * <ul>
+ * <li>{@link Mode#RAW_TPF}: one step of exactly {@code tpf·timeScale} per frame, the lecture's
+ * way. Frame-time spikes go straight into the physics: that is what the mode is there to
+ * show.</li>
+ * <li>{@link Mode#FIXED_STEP}: steps of a fixed {@code h} from an accumulator; the leftover
+ * (less than h) is carried to the next frame. A frame longer than {@link #getMaxFrameSeconds()}
+ * is clamped, and at most {@link #getMaxStepsPerFrame()} steps run per frame; simulated time
+ * beyond either limit is dropped (and counted in {@link #getDroppedSeconds()}), so a 5 s hitch
+ * neither explodes the simulation nor freezes the app catching up.</li>
+ * </ul>
+ *
+ * Pause freezes only the simulation: the caller keeps rendering and reading input. While
+ * paused, {@link #requestSingleStep()} makes the next frame take exactly one step of h.
+ */
+public final class SimulationClock {
+
+    /** How frame times become steps. */
+    public enum Mode {
+        /** One step of the (scaled) frame time per frame: the lecture's loop. */
+        RAW_TPF,
+        /** Fixed steps of h from an accumulator, with the leftover carried. */
+        FIXED_STEP
+    }
+
+    /** Receives the steps the clock decides on. */
+    @FunctionalInterface
+    public interface Stepper {
+        /**
+         * Advance the simulation by one step.
+         *
+         * @param stepSeconds h (in seconds, &gt;0)
+         */
+        void step(float stepSeconds);
+    }
+
+    /** The default fixed step (in seconds): 60 steps per second. */
+    public static final float DEFAULT_STEP_SECONDS = 1f / 60f;
+    /** The default longest frame accepted in fixed-step mode (in seconds). */
+    public static final float DEFAULT_MAX_FRAME_SECONDS = 0.25f;
+    /** The default cap on steps per frame: a clamped 0.25 s frame at 60 Hz fits. */
+    public static final int DEFAULT_MAX_STEPS_PER_FRAME = 16;
+    /** Smallest time scale accepted. */
+    public static final float MIN_TIME_SCALE = 1f / 64f;
+    /** Largest time scale accepted. */
+    public static final float MAX_TIME_SCALE = 64f;
+
+    private Mode mode = Mode.FIXED_STEP;
+    private float stepSeconds = DEFAULT_STEP_SECONDS;
+    private float maxFrameSeconds = DEFAULT_MAX_FRAME_SECONDS;
+    private int maxStepsPerFrame = DEFAULT_MAX_STEPS_PER_FRAME;
+    private float timeScale = 1f;
+    private boolean paused;
+    private boolean singleStepRequested;
+    /** Fixed-step leftover carried between frames (in seconds, &ge;0, &lt;h). */
+    private double accumulatorSeconds;
+    private double simulatedSeconds;
+    private double droppedSeconds;
+    private float lastStepSeconds;
+
+    /**
+     * Turn one frame into steps and take them.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0; 0 takes no step)
+     * @param stepper what to step (not null)
+     * @return the number of steps taken this frame (&ge;0)
+     */
+    public int advance(float tpf, Stepper stepper) {
+        if (!(tpf >= 0f) || tpf == Float.POSITIVE_INFINITY) {
+            throw new IllegalArgumentException(
+                    "frame time tpf (s) must be finite and >= 0, but was " + tpf);
+        }
+        if (paused) {
+            if (singleStepRequested) {
+                singleStepRequested = false;
+                take(stepper, stepSeconds);
+                return 1;
+            }
+            return 0;
+        }
+        float scaled = tpf * timeScale;
+        if (scaled == 0f) {
+            return 0;
+        }
+        if (mode == Mode.RAW_TPF) {
+            take(stepper, scaled);
+            return 1;
+        }
+        return advanceFixed(scaled, stepper);
+    }
+
+    /**
+     * Return the stepping mode.
+     *
+     * @return the mode (not null)
+     */
+    public Mode getMode() {
+        return mode;
+    }
+
+    /**
+     * Choose the stepping mode. Switching clears the fixed-step leftover.
+     *
+     * @param newMode the mode (not null)
+     */
+    public void setMode(Mode newMode) {
+        if (newMode == null) {
+            throw new IllegalArgumentException("mode must be RAW_TPF or FIXED_STEP, but was null");
+        }
+        mode = newMode;
+        accumulatorSeconds = 0.0;
+    }
+
+    /**
+     * Switch between raw tpf and fixed steps.
+     */
+    public void toggleMode() {
+        setMode(mode == Mode.RAW_TPF ? Mode.FIXED_STEP : Mode.RAW_TPF);
+    }
+
+    /**
+     * Return the fixed step h, also used by single steps.
+     *
+     * @return h (in seconds, &gt;0)
+     */
+    public float getStepSeconds() {
+        return stepSeconds;
+    }
+
+    /**
+     * Alter the fixed step h.
+     *
+     * @param newStepSeconds h (in seconds, finite, &gt;0)
+     */
+    public void setStepSeconds(float newStepSeconds) {
+        stepSeconds = Validate.positive(newStepSeconds, "fixed step h (s)");
+    }
+
+    /**
+     * Return the longest frame accepted in fixed-step mode.
+     *
+     * @return the limit (in seconds, &gt;0)
+     */
+    public float getMaxFrameSeconds() {
+        return maxFrameSeconds;
+    }
+
+    /**
+     * Alter the longest frame accepted in fixed-step mode; longer frames are clamped.
+     *
+     * @param seconds the limit (in seconds, finite, &gt;0)
+     */
+    public void setMaxFrameSeconds(float seconds) {
+        maxFrameSeconds = Validate.positive(seconds, "max frame time (s)");
+    }
+
+    /**
+     * Return the cap on fixed steps per frame.
+     *
+     * @return the cap (&ge;1)
+     */
+    public int getMaxStepsPerFrame() {
+        return maxStepsPerFrame;
+    }
+
+    /**
+     * Alter the cap on fixed steps per frame.
+     *
+     * @param steps the cap (&ge;1)
+     */
+    public void setMaxStepsPerFrame(int steps) {
+        if (steps < 1) {
+            throw new IllegalArgumentException(
+                    "max steps per frame must be >= 1, but was " + steps);
+        }
+        maxStepsPerFrame = steps;
+    }
+
+    /**
+     * Return the time scale (1 = real time).
+     *
+     * @return the factor applied to every frame time
+     */
+    public float getTimeScale() {
+        return timeScale;
+    }
+
+    /**
+     * Alter the time scale.
+     *
+     * @param scale the factor (finite, from {@link #MIN_TIME_SCALE} to
+     *     {@link #MAX_TIME_SCALE})
+     */
+    public void setTimeScale(float scale) {
+        if (!(scale >= MIN_TIME_SCALE && scale <= MAX_TIME_SCALE)) {
+            throw new IllegalArgumentException("time scale must be from " + MIN_TIME_SCALE
+                    + " to " + MAX_TIME_SCALE + ", but was " + scale);
+        }
+        timeScale = scale;
+    }
+
+    /**
+     * Test whether the simulation is paused.
+     *
+     * @return true if paused
+     */
+    public boolean isPaused() {
+        return paused;
+    }
+
+    /**
+     * Pause or resume the simulation.
+     *
+     * @param newPaused true to pause
+     */
+    public void setPaused(boolean newPaused) {
+        paused = newPaused;
+        singleStepRequested = false;
+    }
+
+    /**
+     * Ask for exactly one step of h on the next frame; ignored unless paused.
+     */
+    public void requestSingleStep() {
+        if (paused) {
+            singleStepRequested = true;
+        }
+    }
+
+    /**
+     * Return the simulated time since the last reset.
+     *
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getSimulatedSeconds() {
+        return simulatedSeconds;
+    }
+
+    /**
+     * Return the frame time dropped by the clamp and the step cap since the last reset.
+     *
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getDroppedSeconds() {
+        return droppedSeconds;
+    }
+
+    /**
+     * Return the duration of the most recent step taken.
+     *
+     * @return h of the last step (in seconds, &ge;0; 0 before the first)
+     */
+    public float getLastStepSeconds() {
+        return lastStepSeconds;
+    }
+
+    /**
+     * Return the step size the current mode uses, for a HUD or a stability check: the fixed h,
+     * or in raw mode the last step taken (h before the first).
+     *
+     * @return the step (in seconds, &gt;0)
+     */
+    public float getCurrentStepSeconds() {
+        if (mode == Mode.RAW_TPF && lastStepSeconds > 0f) {
+            return lastStepSeconds;
+        }
+        return stepSeconds;
+    }
+
+    /**
+     * Forget the time counters and the leftover; keep mode, step, scale and pause.
+     */
+    public void reset() {
+        accumulatorSeconds = 0.0;
+        simulatedSeconds = 0.0;
+        droppedSeconds = 0.0;
+        lastStepSeconds = 0f;
+        singleStepRequested = false;
+    }
+
+    private int advanceFixed(float scaledSeconds, Stepper stepper) {
+        float accepted = scaledSeconds;
+        if (accepted > maxFrameSeconds) {
+            droppedSeconds += accepted - maxFrameSeconds;
+            accepted = maxFrameSeconds;
+        }
+        accumulatorSeconds += accepted;
+        int steps = 0;
+        while (accumulatorSeconds >= stepSeconds && steps < maxStepsPerFrame) {
+            take(stepper, stepSeconds);
+            accumulatorSeconds -= stepSeconds;
+            ++steps;
+        }
+        if (accumulatorSeconds >= stepSeconds) {
+            // The cap stopped us: drop whole steps we could not take, keep the leftover.
+            double excess = accumulatorSeconds - accumulatorSeconds % stepSeconds;
+            droppedSeconds += excess;
+            accumulatorSeconds -= excess;
+        }
+        return steps;
+    }
+
+    private void take(Stepper stepper, float seconds) {
+        stepper.step(seconds);
+        simulatedSeconds += seconds;
+        lastStepSeconds = seconds;
+    }
+}
