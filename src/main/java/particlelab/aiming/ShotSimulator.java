@@ -1,0 +1,98 @@
+package particlelab.aiming;
+
+import com.jme3.math.Vector3f;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.Validate;
+
+/**
+ * Fires a bullet from the origin along the x axis and steps it with the shared integrator and
+ * the scene's own forces until it comes down through the ground plane {@code y = 0}.
+ * Reuses one particle: firing allocates nothing.
+ */
+public final class ShotSimulator {
+
+    private final ParticleIntegrator integrator;
+    private final Particle bullet;
+    private final float stepSeconds;
+    private final int maxSteps;
+
+    /**
+     * Create a simulator.
+     *
+     * @param integrator the scene's integrator, with its forces (not null)
+     * @param massKg the bullet's mass (in kilograms, finite, &gt;0)
+     * @param stepSeconds h (in seconds, finite, &gt;0)
+     * @param maxFlightSeconds give up on a shot still in the air after this long (in seconds,
+     *     finite, &gt;0)
+     */
+    public ShotSimulator(ParticleIntegrator integrator, float massKg, float stepSeconds,
+            float maxFlightSeconds) {
+        if (integrator == null) {
+            throw new IllegalArgumentException("integrator must not be null");
+        }
+        this.integrator = integrator;
+        this.bullet = new Particle();
+        bullet.setMass(massKg);
+        this.stepSeconds = Validate.positive(stepSeconds, "step h (s)");
+        Validate.positive(maxFlightSeconds, "max flight time (s)");
+        this.maxSteps = (int) Math.min(Integer.MAX_VALUE - 1L,
+                (long) Math.ceil(maxFlightSeconds / stepSeconds));
+    }
+
+    /**
+     * Return the step.
+     *
+     * @return h (in seconds, &gt;0)
+     */
+    public float getStepSeconds() {
+        return stepSeconds;
+    }
+
+    /**
+     * Fire one shot from the origin with velocity {@code (vx, vy, 0)}.
+     *
+     * @param horizontalSpeed vx (in m/s, finite)
+     * @param verticalSpeed vy (in m/s, finite)
+     * @param storeResult storage for where it landed (not null, modified)
+     * @return true if it landed within the time allowed
+     */
+    public boolean fire(float horizontalSpeed, float verticalSpeed, Landing storeResult) {
+        Validate.finite(horizontalSpeed, "horizontal speed vx (m/s)");
+        Validate.finite(verticalSpeed, "vertical speed vy (m/s)");
+        bullet.position.zero();
+        bullet.velocity.set(horizontalSpeed, verticalSpeed, 0f);
+        return flyUntilGround(storeResult);
+    }
+
+    /**
+     * Fire one shot from a given state and step it until it comes down through {@code y = 0}.
+     *
+     * @param start the bullet's initial state (its y should be &ge;0; not null, not modified)
+     * @param storeResult storage for where it landed (not null, modified)
+     * @return true if it landed within the time allowed
+     */
+    public boolean fire(Particle start, Landing storeResult) {
+        bullet.copyFrom(start);
+        return flyUntilGround(storeResult);
+    }
+
+    private boolean flyUntilGround(Landing storeResult) {
+        Vector3f position = bullet.position;
+        for (int step = 1; step <= maxSteps; ++step) {
+            float previousX = position.x;
+            float previousY = position.y;
+            integrator.step(bullet, stepSeconds);
+            if (position.y < 0f && previousY >= 0f) {
+                // Interpolate the crossing inside this step.
+                double fraction = previousY / ((double) previousY - position.y);
+                double x = previousX + fraction * ((double) position.x - previousX);
+                double time = (step - 1 + fraction) * stepSeconds;
+                storeResult.set(true, x, time, step);
+                return true;
+            }
+        }
+        storeResult.set(false, Double.NaN, Double.NaN, maxSteps);
+        return false;
+    }
+}
