@@ -1,0 +1,103 @@
+package particlelab.app;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.function.Supplier;
+import particlelab.demo.DemoState;
+import particlelab.demo.DragDemo;
+import particlelab.demo.GravitationalPullDemo;
+import particlelab.demo.HelloAimingDemo;
+import particlelab.demo.ThrustDemo;
+import particlelab.demo.UniformMotionDemo;
+import particlelab.demo.WindDemo;
+
+/**
+ * The demos, in lecture order: an explicit list, not a classpath scan. A new demo is added
+ * here with a short command-line name; a test fails if a demo class is missing.
+ */
+public final class DemoCatalog {
+
+    /** One demo: its command-line name and how to create it. */
+    public static final class Entry {
+        private final String name;
+        private final Supplier<DemoState> factory;
+
+        Entry(String name, Supplier<DemoState> factory) {
+            this.name = name;
+            this.factory = factory;
+        }
+
+        /** @return the name used by {@code particle-lab demo NAME} (not null) */
+        public String getName() {
+            return name;
+        }
+
+        /** @return a new instance of the demo (not null) */
+        public DemoState create() {
+            return factory.get();
+        }
+    }
+
+    private static final List<Entry> ENTRIES = Collections.unmodifiableList(List.of(
+            new Entry("uniform", UniformMotionDemo::new),
+            new Entry("pull", GravitationalPullDemo::new),
+            new Entry("drag", DragDemo::new),
+            new Entry("thrust", ThrustDemo::new),
+            new Entry("aiming", HelloAimingDemo::new),
+            new Entry("wind", WindDemo::new)));
+
+    private DemoCatalog() {
+    }
+
+    /**
+     * Return the demos in lecture order.
+     *
+     * @return an unmodifiable list (not null)
+     */
+    public static List<Entry> entries() {
+        return ENTRIES;
+    }
+
+    /**
+     * Return the demos' command-line names in lecture order.
+     *
+     * @return a new list (not null)
+     */
+    public static List<String> names() {
+        List<String> names = new ArrayList<>();
+        for (Entry entry : ENTRIES) {
+            names.add(entry.getName());
+        }
+        return names;
+    }
+
+    /**
+     * Find a demo's position by its name.
+     *
+     * @param name the command-line name (case-insensitive), or a 1-based number
+     * @return the index (&ge;0), or -1 if there is no such demo
+     */
+    public static int indexOf(String name) {
+        for (int i = 0; i < ENTRIES.size(); ++i) {
+            if (ENTRIES.get(i).getName().equalsIgnoreCase(name)
+                    || Integer.toString(i + 1).equals(name)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * Create one instance of every demo, in lecture order.
+     *
+     * @return a new list (not null)
+     */
+    public static List<DemoState> createAll() {
+        List<DemoState> demos = new ArrayList<>();
+        for (Entry entry : ENTRIES) {
+            demos.add(entry.create());
+        }
+        return demos;
+    }
+}

@@ -1,0 +1,59 @@
+package particlelab.app;
+
+import com.jme3.system.Timer;
+
+/**
+ * A jME timer that reports the same frame time every frame, whatever the wall clock says, so
+ * a run of N frames simulates exactly N·tpf seconds and its screenshot is reproducible.
+ */
+public final class FixedTimer extends Timer {
+
+    /** Time is counted in nanoseconds. */
+    private static final long RESOLUTION = 1_000_000_000L;
+
+    private final float frameSeconds;
+    private long ticks;
+
+    /**
+     * Create a timer.
+     *
+     * @param frameSeconds the time per frame it reports (in seconds, finite, &ge;0)
+     */
+    public FixedTimer(float frameSeconds) {
+        if (!(frameSeconds >= 0f) || Float.isInfinite(frameSeconds)) {
+            throw new IllegalArgumentException(
+                    "fixed frame time (s) must be finite and >= 0, but was " + frameSeconds);
+        }
+        this.frameSeconds = frameSeconds;
+    }
+
+    @Override
+    public long getTime() {
+        return ticks;
+    }
+
+    @Override
+    public long getResolution() {
+        return RESOLUTION;
+    }
+
+    @Override
+    public float getFrameRate() {
+        return frameSeconds > 0f ? 1f / frameSeconds : 0f;
+    }
+
+    @Override
+    public float getTimePerFrame() {
+        return frameSeconds;
+    }
+
+    @Override
+    public void update() {
+        ticks += (long) (frameSeconds * RESOLUTION);
+    }
+
+    @Override
+    public void reset() {
+        ticks = 0L;
+    }
+}

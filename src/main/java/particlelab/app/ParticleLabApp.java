@@ -1,0 +1,192 @@
+package particlelab.app;
+
+import com.jme3.app.DebugKeysAppState;
+import com.jme3.app.FlyCamAppState;
+import com.jme3.app.SimpleApplication;
+import com.jme3.app.StatsAppState;
+import com.jme3.math.ColorRGBA;
+import com.jme3.renderer.RenderManager;
+import com.jme3.system.AppSettings;
+import java.io.File;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import particlelab.demo.DemoState;
+
+/**
+ * The Particle Lab window: a jME {@link SimpleApplication} hosting the lecture demos, one
+ * enabled at a time (see {@link DemoSwitcher}).
+ *
+ * <p>Audio is never started: no demo plays a sound, and on machines without a sound card
+ * jME's OpenAL start throws. So the settings ask for no audio renderer and the application
+ * leaves out jME's audio listener state; nothing is lost and nothing needs a warning. When a
+ * demo first plays sound, start audio in a try block and fall back to this with one warning.
+ *
+ * <p>Options for scripted runs: quit after a number of frames, save the last frame as a PNG,
+ * and feed a constant frame time ({@link FixedTimer}) so the picture is reproducible.
+ */
+public final class ParticleLabApp extends SimpleApplication {
+
+    /** The window's size (in pixels). */
+    public static final int WIDTH = 1280;
+    public static final int HEIGHT = 720;
+    /** The window's title. */
+    public static final String TITLE = "Particle Lab - game particle physics, lecture demos";
+    private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
+
+    private final DemoSwitcher switcher;
+    private final int frameLimit;
+    private final ScreenshotCapture capture;
+    private final CountDownLatch finished = new CountDownLatch(1);
+    private int frames;
+    private volatile String failure;
+
+    /**
+     * Create the application.
+     *
+     * @param demos the demos, in menu order (not null, not empty)
+     * @param firstDemo the index of the demo to open on (&ge;0, &lt;demos.size())
+     * @param frameLimit quit after this many frames (&gt;0), or 0 to run until closed
+     * @param screenshot where to save the last frame as a PNG, or null for none; needs a
+     *     frame limit
+     * @param fixedFrameSeconds a constant frame time to feed the demos (in seconds, &ge;0),
+     *     or NaN to use the real clock
+     */
+    public ParticleLabApp(List<DemoState> demos, int firstDemo, int frameLimit,
+            File screenshot, float fixedFrameSeconds) {
+        super(new FlyCamAppState(), new DebugKeysAppState(), new StatsAppState());
+        if (frameLimit < 0) {
+            throw new IllegalArgumentException("frame limit must be >= 0, but was "
+                    + frameLimit);
+        }
+        if (screenshot != null && frameLimit == 0) {
+            throw new IllegalArgumentException("a screenshot needs a frame limit (--frames N)");
+        }
+        this.switcher = new DemoSwitcher(demos, firstDemo);
+        this.frameLimit = frameLimit;
+        this.capture = screenshot == null ? null : new ScreenshotCapture(screenshot);
+        if (!Float.isNaN(fixedFrameSeconds)) {
+            setTimer(new FixedTimer(fixedFrameSeconds));
+        }
+        setShowSettings(false);
+        setSettings(createSettings(fixedFrameSeconds));
+    }
+
+    /**
+     * Create the settings every run uses: the window size and title, no audio, and a frame
+     * rate cap of 60 Hz (none with a fixed frame time, so scripted runs finish quickly).
+     *
+     * @param fixedFrameSeconds the fixed frame time, or NaN
+     * @return new settings (not null)
+     */
+    public static AppSettings createSettings(float fixedFrameSeconds) {
+        AppSettings settings = new AppSettings(true);
+        settings.setResolution(WIDTH, HEIGHT);
+        settings.setTitle(TITLE);
+        settings.setAudioRenderer(null);
+        settings.setVSync(false);
+        settings.setFrameRate(Float.isNaN(fixedFrameSeconds) ? 60 : -1);
+        settings.setSamples(4);
+        // Colours as written (a dark background, bright particles): no sRGB conversion.
+        settings.setGammaCorrection(false);
+        return settings;
+    }
+
+    /**
+     * Access the demo switcher.
+     *
+     * @return the live switcher (not null)
+     */
+    public DemoSwitcher getSwitcher() {
+        return switcher;
+    }
+
+    /**
+     * Wait until the application has stopped (or failed to start).
+     *
+     * @param timeoutSeconds the longest wait (in seconds, &gt;0)
+     * @return true if it stopped within the wait
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public boolean awaitFinished(long timeoutSeconds) throws InterruptedException {
+        return finished.await(timeoutSeconds, TimeUnit.SECONDS);
+    }
+
+    /**
+     * Return why the application could not run, if it could not.
+     *
+     * @return a one-line reason, or null if it ran
+     */
+    public String getFailure() {
+        return failure;
+    }
+
+    /**
+     * Access the screenshot capture.
+     *
+     * @return the capture, or null if no screenshot was asked for
+     */
+    public ScreenshotCapture getCapture() {
+        return capture;
+    }
+
+    /**
+     * Return how many frames have been updated.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countFrames() {
+        return frames;
+    }
+
+    @Override
+    public void simpleInitApp() {
+        setDisplayFps(false);
+        setDisplayStatView(false);
+        setPauseOnLostFocus(false);
+        viewPort.setBackgroundColor(BACKGROUND);
+        if (flyCam != null) {
+            flyCam.setDragToRotate(true);
+            flyCam.setMoveSpeed(15f);
+            flyCam.setZoomSpeed(5f);
+        }
+        if (capture != null) {
+            guiViewPort.addProcessor(capture);
+        }
+        stateManager.attach(switcher);
+    }
+
+    @Override
+    public void simpleUpdate(float tpf) {
+        ++frames;
+        if (frames == frameLimit && capture != null) {
+            capture.request();
+        }
+    }
+
+    @Override
+    public void simpleRender(RenderManager renderManager) {
+        if (frameLimit > 0 && frames >= frameLimit) {
+            stop();
+        }
+    }
+
+    @Override
+    public void handleError(String errorMessage, Throwable cause) {
+        // One line for the user; jME's own handler would print the whole stack trace.
+        String reason = cause == null || cause.getMessage() == null ? ""
+                : ": " + cause.getMessage().trim().replace('\n', ' ');
+        failure = errorMessage + reason;
+        stop();
+        finished.countDown();
+    }
+
+    @Override
+    public void destroy() {
+        try {
+            super.destroy();
+        } finally {
+            finished.countDown();
+        }
+    }
+}

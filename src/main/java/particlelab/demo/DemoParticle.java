@@ -1,0 +1,216 @@
+package particlelab.demo;
+
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.view.ParticleView;
+
+/**
+ * One particle of a demo with everything the base class needs to run and draw it: the
+ * particle, the integrator holding the forces that act on it, its launch state (for reset), a
+ * label and a colour. Create them with {@link DemoState#addParticle}.
+ *
+ * <p>A particle can be <em>held</em>: it is not stepped (a bullet still in the gun, or one
+ * that has landed). A particle told to {@link #stopAtGround() stop at the ground} is held at
+ * the point where it crossed {@code y = 0}, interpolated inside the step, as in the lecture.
+ */
+public final class DemoParticle {
+
+    private final String label;
+    private final ColorRGBA color;
+    private final Particle particle;
+    private final ParticleIntegrator integrator;
+    private final Vector3f launchPosition = new Vector3f();
+    private final Vector3f launchVelocity = new Vector3f();
+    private boolean stopsAtGround;
+    private boolean held;
+    private boolean landed;
+    private float landingX = Float.NaN;
+    private double landingSeconds = Double.NaN;
+    private double flightSeconds;
+    /** Created by the base class at initialisation. */
+    ParticleView view;
+
+    DemoParticle(String label, ColorRGBA color, Particle particle,
+            ParticleIntegrator integrator) {
+        this.label = label;
+        this.color = color.clone();
+        this.particle = particle;
+        this.integrator = integrator;
+        launchPosition.set(particle.position);
+        launchVelocity.set(particle.velocity);
+    }
+
+    /**
+     * Make the particle stop where it comes down through the ground {@code y = 0}.
+     *
+     * @return this
+     */
+    public DemoParticle stopAtGround() {
+        stopsAtGround = true;
+        return this;
+    }
+
+    /**
+     * Test whether the particle stops at the ground.
+     *
+     * @return true if it does
+     */
+    public boolean stopsAtGround() {
+        return stopsAtGround;
+    }
+
+    /**
+     * Return the label shown next to the particle.
+     *
+     * @return the label (not null)
+     */
+    public String getLabel() {
+        return label;
+    }
+
+    /**
+     * Access the colour.
+     *
+     * @return the live colour (not null, do not modify)
+     */
+    public ColorRGBA getColor() {
+        return color;
+    }
+
+    /**
+     * Access the particle that the integrator moves.
+     *
+     * @return the live particle (not null)
+     */
+    public Particle getParticle() {
+        return particle;
+    }
+
+    /**
+     * Access the integrator with this particle's forces.
+     *
+     * @return the live integrator (not null)
+     */
+    public ParticleIntegrator getIntegrator() {
+        return integrator;
+    }
+
+    /**
+     * Copy the launch position into storeResult.
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyLaunchPosition(Vector3f storeResult) {
+        return storeResult.set(launchPosition);
+    }
+
+    /**
+     * Copy the launch velocity into storeResult.
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyLaunchVelocity(Vector3f storeResult) {
+        return storeResult.set(launchVelocity);
+    }
+
+    /**
+     * Alter the launch state used by resets (and by {@link DemoState#launch}).
+     *
+     * @param position the launch position (in metres, finite, not null, not modified)
+     * @param velocity the launch velocity (in m/s, finite, not null, not modified)
+     */
+    public void setLaunch(Vector3f position, Vector3f velocity) {
+        particle.setState(position, velocity);
+        launchPosition.set(position);
+        launchVelocity.set(velocity);
+    }
+
+    /**
+     * Test whether the particle is held (not stepped).
+     *
+     * @return true if held
+     */
+    public boolean isHeld() {
+        return held;
+    }
+
+    /**
+     * Hold the particle where it is, or release it.
+     *
+     * @param newHeld true to stop stepping it
+     */
+    public void setHeld(boolean newHeld) {
+        held = newHeld;
+    }
+
+    /**
+     * Test whether the particle has come down through the ground since its launch.
+     *
+     * @return true if it landed
+     */
+    public boolean hasLanded() {
+        return landed;
+    }
+
+    /**
+     * Return where the particle crossed the ground, interpolated inside the step.
+     *
+     * @return x (in metres; NaN if it has not landed)
+     */
+    public float getLandingX() {
+        return landingX;
+    }
+
+    /**
+     * Return the simulated time of the landing since the launch.
+     *
+     * @return the time (in seconds; NaN if it has not landed)
+     */
+    public double getLandingSeconds() {
+        return landingSeconds;
+    }
+
+    /**
+     * Return the simulated time this particle has been stepped since its launch.
+     *
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getFlightSeconds() {
+        return flightSeconds;
+    }
+
+    /** Count one step of flight. */
+    void addFlightSeconds(float stepSeconds) {
+        flightSeconds += stepSeconds;
+    }
+
+    /** Put the particle back to its launch state, not held, not landed. */
+    void restart() {
+        particle.position.set(launchPosition);
+        particle.velocity.set(launchVelocity);
+        held = false;
+        landed = false;
+        landingX = Float.NaN;
+        landingSeconds = Double.NaN;
+        flightSeconds = 0.0;
+    }
+
+    /**
+     * Record a landing and hold the particle on the ground.
+     *
+     * @param x where it crossed (in metres)
+     * @param seconds when it crossed since the launch (in seconds)
+     */
+    void land(float x, double seconds) {
+        landed = true;
+        held = true;
+        landingX = x;
+        landingSeconds = seconds;
+        particle.position.set(x, 0f, particle.position.z);
+        particle.velocity.zero();
+    }
+}

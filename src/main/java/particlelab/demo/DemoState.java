@@ -1,0 +1,866 @@
+package particlelab.demo;
+
+import com.jme3.app.Application;
+import com.jme3.app.state.BaseAppState;
+import com.jme3.asset.AssetManager;
+import com.jme3.font.BitmapFont;
+import com.jme3.input.InputManager;
+import com.jme3.input.KeyInput;
+import com.jme3.input.controls.ActionListener;
+import com.jme3.input.controls.KeyTrigger;
+import com.jme3.light.AmbientLight;
+import com.jme3.light.DirectionalLight;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.SimulationClock;
+import particlelab.view.CameraFraming;
+import particlelab.view.DistanceGrid;
+import particlelab.view.HelpText;
+import particlelab.view.HudView;
+import particlelab.view.ParticleView;
+import particlelab.view.TextFormat;
+
+/**
+ * The one base class of every demo. A demo declares its particles and their forces, its keys
+ * and its HUD lines; this class owns the rest: the lifecycle, the stepping clock, the shared
+ * keys, the views (spheres, trails, velocity arrows, distance grid, camera) and the HUD.
+ *
+ * <h2>Writing a demo</h2>
+ * <ul>
+ * <li>{@link #createScene()} (required): call {@link #addParticle} once per particle, with an
+ * integrator holding the forces that act on it, and {@link #setView} to frame the region the
+ * demo plays in.</li>
+ * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
+ * <li>{@link #writeHudLines(StringBuilder)}: append the demo's own HUD lines (use
+ * {@link TextFormat} for numbers: it allocates nothing).</li>
+ * <li>{@link #afterStep(float)} and {@link #onRestart()}: react to each step, and to a
+ * reset.</li>
+ * </ul>
+ *
+ * <h2>Once per frame</h2>
+ * {@link #update} hands the frame time to the {@link SimulationClock}, which decides the steps
+ * (pause, single step, time scale, raw tpf or fixed h); each step moves every particle with
+ * its own integrator ({@link ParticleIntegrator#step}, the lecture's Euler step). Nothing else
+ * moves a particle. Then the views read the particles. None of this allocates; the HUD text is
+ * rebuilt in a reused {@link StringBuilder} ten times a second and handed to jME only when it
+ * changed (jME's text mesh allocates on each change).
+ *
+ * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
+ * scene and shows why, instead of crashing the window.
+ */
+public abstract class DemoState extends BaseAppState {
+
+    /** The frame time injected by the hitch key (in seconds). */
+    public static final float HITCH_SECONDS = 0.5f;
+    /** How often the HUD text is rebuilt (in seconds of real time). */
+    public static final float HUD_REFRESH_SECONDS = 0.1f;
+    /** How long a warning stays up after its cause (in seconds of real time). */
+    private static final float WARNING_SECONDS = 4f;
+    /** How many recent positions each trail keeps: 10 s at 60 steps per second. */
+    private static final int TRAIL_POINTS = 600;
+    /** Keys the application or jME itself use, which a demo may not bind. */
+    private static final int[] RESERVED_KEYS = {KeyInput.KEY_ESCAPE, KeyInput.KEY_F5,
+        KeyInput.KEY_C, KeyInput.KEY_M, KeyInput.KEY_W, KeyInput.KEY_A, KeyInput.KEY_S,
+        KeyInput.KEY_D, KeyInput.KEY_Q, KeyInput.KEY_Z, KeyInput.KEY_TAB, KeyInput.KEY_SYSRQ,
+        KeyInput.KEY_1, KeyInput.KEY_2, KeyInput.KEY_3, KeyInput.KEY_4, KeyInput.KEY_5,
+        KeyInput.KEY_6, KeyInput.KEY_7, KeyInput.KEY_8, KeyInput.KEY_9};
+    private static final String FOOTER =
+            "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
+
+    /** What the warning line currently reports. */
+    private enum Warning {
+        NONE, REVERSING, UNSTABLE, BLOW_UP, HITCH
+    }
+
+    private final String title;
+    private final SimulationClock clock = new SimulationClock();
+    private final List<DemoParticle> particles = new ArrayList<>();
+    private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
+    private final List<KeyBinding> sharedBindings = new ArrayList<>();
+    private final List<KeyBinding> demoBindings = new ArrayList<>();
+    private final List<KeyBinding> appBindings = new ArrayList<>();
+    private final Map<String, KeyBinding> bindingsByMapping = new HashMap<>();
+    private final List<String> mappingNames = new ArrayList<>();
+    private final ActionListener keyListener = this::onKey;
+    private final SimulationClock.Stepper stepper = this::stepParticles;
+    private final Node sceneNode;
+    private final StringBuilder hudText = new StringBuilder(2048);
+    private final StringBuilder warningText = new StringBuilder(256);
+    private final StringBuilder titleText = new StringBuilder(64);
+    /** Scratch: a particle's position before its step (m). */
+    private final Vector3f previousPosition = new Vector3f();
+
+    private final List<Marker> markers = new ArrayList<>();
+    private boolean sceneCreated;
+    private HudView hud;
+    private Node guiRoot;
+    private Node sceneRoot;
+    private String equations = "";
+    private String helpText = "";
+    private float viewXMin = -2f;
+    private float viewXMax = 22f;
+    private float viewYMin = -1.5f;
+    private float viewYMax = 8f;
+    private float gridSpacing = 1f;
+    private int gridLabelEvery = 5;
+    private float sphereRadius = 0.35f;
+    private boolean arrowsVisible = true;
+    private float hudAgeSeconds;
+    private boolean hudDirty = true;
+    private float pendingHitchSeconds;
+    private float attemptedStepSeconds;
+    /** The worst h·λ of any step since the last HUD refresh, and that step and limit. */
+    private float worstStepRate;
+    private float worstStepSeconds;
+    private Warning warning = Warning.NONE;
+    private float warningAgeSeconds;
+    private float warningStepSeconds;
+    private float warningLimitSeconds;
+    private double droppedAtHitch;
+    private String blowUpMessage = "";
+    private int blowUps;
+
+    /**
+     * Create a demo.
+     *
+     * @param title the name shown in the HUD and the demo list (not null, not empty)
+     */
+    protected DemoState(String title) {
+        if (title == null || title.isEmpty()) {
+            throw new IllegalArgumentException("demo title must be a non-empty text");
+        }
+        this.title = title;
+        this.sceneNode = new Node(title + " scene");
+        titleText.append(title);
+    }
+
+    // ---------------------------------------------------------------- hooks for a demo ----
+
+    /**
+     * Declare the particles ({@link #addParticle}) and the view ({@link #setView}). Called once,
+     * from {@link #initialize(Application)}.
+     */
+    protected abstract void createScene();
+
+    /**
+     * Declare the demo's own keys with {@link #bindKey}. Called once, after
+     * {@link #createScene()}. The default declares none.
+     */
+    protected void declareKeys() {
+    }
+
+    /**
+     * Describe the equations the demo runs, with their current numbers, one line each; shown
+     * at the top of the HUD. Called at initialisation and by {@link #refreshEquations()}, so
+     * it may allocate. The default prints each particle's forces.
+     *
+     * @param text where to append (not null, modified)
+     */
+    protected void describeEquations(StringBuilder text) {
+        text.append("Euler step: a = g + F/m,  V += h*a,  P += h*V\n");
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            text.append(particle.getLabel()).append(":  ")
+                    .append(particle.getIntegrator().describe()).append('\n');
+        }
+    }
+
+    /**
+     * Append the demo's own HUD lines, each ending in a newline. Called ten times a second:
+     * append with {@link TextFormat} and constant strings, so nothing is allocated.
+     *
+     * @param text where to append (not null, modified)
+     */
+    protected void writeHudLines(StringBuilder text) {
+    }
+
+    /**
+     * React to one simulation step, after every particle moved. The default does nothing.
+     *
+     * @param stepSeconds h of the step just taken (in seconds, &gt;0)
+     */
+    protected void afterStep(float stepSeconds) {
+    }
+
+    /**
+     * React to a reset, after the particles went back to their launch states and the clock
+     * to zero. The default does nothing.
+     */
+    protected void onRestart() {
+    }
+
+    // ------------------------------------------------------- tools for createScene etc. ----
+
+    /**
+     * Add a particle to the scene.
+     *
+     * @param label its label, shown next to it and in the HUD (not null)
+     * @param color its colour (not null, not modified)
+     * @param position its launch position (in metres, finite, not null, not modified)
+     * @param velocity its launch velocity (in m/s, finite, not null, not modified)
+     * @param massKg its mass (in kilograms, finite, &gt;0)
+     * @param integrator the integrator holding the forces that act on it (not null)
+     * @return the new demo particle, e.g. to call {@link DemoParticle#stopAtGround()}
+     */
+    protected DemoParticle addParticle(String label, ColorRGBA color, Vector3f position,
+            Vector3f velocity, float massKg, ParticleIntegrator integrator) {
+        if (sceneCreated) {
+            throw new IllegalStateException("add particles in createScene(), not later");
+        }
+        if (label == null || color == null || integrator == null) {
+            throw new IllegalArgumentException("label, color and integrator must not be null");
+        }
+        DemoParticle particle = new DemoParticle(label, color,
+                new Particle(position, velocity, massKg), integrator);
+        particles.add(particle);
+        return particle;
+    }
+
+    /**
+     * Choose the region of the x-y plane the camera frames, the grid and the sphere size.
+     *
+     * @param xMin the left edge (in metres)
+     * @param xMax the right edge (in metres, &gt;xMin)
+     * @param yMax the top edge (in metres, &gt;0); the ground band below y = 0 is added
+     * @param gridSpacingMetres the distance between grid lines (in metres, &gt;0)
+     * @param labelEvery a distance mark every this many grid lines (&ge;1)
+     * @param sphereRadiusMetres the particles' radius as drawn (in metres, &gt;0)
+     */
+    protected void setView(float xMin, float xMax, float yMax, float gridSpacingMetres,
+            int labelEvery, float sphereRadiusMetres) {
+        if (!(xMax > xMin && yMax > 0f && gridSpacingMetres > 0f && labelEvery >= 1
+                && sphereRadiusMetres > 0f)) {
+            throw new IllegalArgumentException("view needs xMin < xMax, yMax > 0, spacing > 0,"
+                    + " labelEvery >= 1 and radius > 0, but got x " + xMin + ".." + xMax
+                    + ", yMax " + yMax + ", spacing " + gridSpacingMetres + ", labelEvery "
+                    + labelEvery + ", radius " + sphereRadiusMetres);
+        }
+        viewXMin = xMin;
+        viewXMax = xMax;
+        viewYMax = yMax;
+        viewYMin = -1.5f * gridSpacingMetres;
+        gridSpacing = gridSpacingMetres;
+        gridLabelEvery = labelEvery;
+        sphereRadius = sphereRadiusMetres;
+    }
+
+    /**
+     * Add a labelled post standing on the ground, such as a gun or a target. Call from
+     * {@link #createScene()}.
+     *
+     * @param label the text above the post (not null)
+     * @param x where it stands (in metres)
+     * @param heightMetres how tall it is (in metres, &gt;0)
+     * @param color its colour (not null, not modified)
+     */
+    protected void addMarker(String label, float x, float heightMetres, ColorRGBA color) {
+        if (!(heightMetres > 0f) || Float.isInfinite(heightMetres)) {
+            throw new IllegalArgumentException(
+                    "marker height (m) must be finite and > 0, but was " + heightMetres);
+        }
+        markers.add(new Marker(label, x, heightMetres, color.clone()));
+    }
+
+    /**
+     * Declare a key. Call from {@link #declareKeys()}.
+     *
+     * @param keyCode the key, a {@link KeyInput} code, not used by jME, the app or the shared
+     *     controls
+     * @param keyLabel the key as printed for the help overlay (not null)
+     * @param description what it does (not null)
+     * @param action run once per press, on the jME thread (not null)
+     */
+    protected void bindKey(int keyCode, String keyLabel, String description, Runnable action) {
+        addBinding(demoBindings, new KeyBinding(keyCode, keyLabel, description, action));
+    }
+
+    /**
+     * Launch a particle again from its launch position with a new velocity: release it,
+     * forget its landing and clear its trail.
+     *
+     * @param particle the particle (one of this demo's, not null)
+     * @param velocity the launch velocity (in m/s, finite, not null, not modified)
+     */
+    protected void launch(DemoParticle particle, Vector3f velocity) {
+        particle.copyLaunchPosition(previousPosition);
+        particle.setLaunch(previousPosition, velocity);
+        particle.restart();
+        if (particle.view != null) {
+            particle.view.getTrail().clear();
+            particle.view.getTrail().add(particle.getParticle().position);
+        }
+        hudDirty = true;
+    }
+
+    /**
+     * Rebuild the equations shown in the HUD, after a demo changed a coefficient.
+     */
+    protected void refreshEquations() {
+        StringBuilder text = new StringBuilder();
+        describeEquations(text);
+        equations = text.toString();
+        hudDirty = true;
+    }
+
+    /**
+     * Access the node holding the demo's scene, to attach extra geometry (targets, markers).
+     *
+     * @return the live node (not null)
+     */
+    protected Node getSceneNode() {
+        return sceneNode;
+    }
+
+    // ----------------------------------------------------------------------- public API ----
+
+    /**
+     * Return the demo's name.
+     *
+     * @return the title (not null)
+     */
+    public String getTitle() {
+        return title;
+    }
+
+    /**
+     * Set the number shown before the title, the demo's place in the catalogue.
+     *
+     * @param number the number (&ge;1)
+     */
+    public void setCatalogNumber(int number) {
+        titleText.setLength(0);
+        titleText.append(number).append(".  ").append(title);
+        if (hud != null) {
+            hud.setTitle(titleText);
+        }
+    }
+
+    /**
+     * Tell the demo about keys the application handles (choosing demos), so that its help
+     * overlay lists them too. Call before the demo is initialised.
+     *
+     * @param bindings the application's keys (not null, copied)
+     */
+    public void setApplicationBindings(List<KeyBinding> bindings) {
+        appBindings.clear();
+        appBindings.addAll(bindings);
+    }
+
+    /**
+     * Access the stepping clock: pause, single step, time scale, raw tpf or fixed step.
+     *
+     * @return the live clock (not null)
+     */
+    public SimulationClock getClock() {
+        return clock;
+    }
+
+    /**
+     * Access the particles in the order they were added.
+     *
+     * @return an unmodifiable live list (not null)
+     */
+    public List<DemoParticle> getParticles() {
+        return particlesView;
+    }
+
+    /**
+     * Return every key the demo responds to: the shared controls, then the demo's own.
+     *
+     * @return a new list (not null)
+     */
+    public List<KeyBinding> getBindings() {
+        List<KeyBinding> all = new ArrayList<>(sharedBindings);
+        all.addAll(demoBindings);
+        return all;
+    }
+
+    /**
+     * Return the help overlay's text, generated from the bindings.
+     *
+     * @return the text (not null, empty before initialisation)
+     */
+    public String getHelpText() {
+        return helpText;
+    }
+
+    /**
+     * Access the HUD.
+     *
+     * @return the live HUD (null before initialisation)
+     */
+    public HudView getHud() {
+        return hud;
+    }
+
+    /**
+     * Test whether velocity arrows are shown.
+     *
+     * @return true if shown
+     */
+    public boolean areArrowsVisible() {
+        return arrowsVisible;
+    }
+
+    /**
+     * Count the steps that blew up (and reset the scene) since the demo was created.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countBlowUps() {
+        return blowUps;
+    }
+
+    /**
+     * Put every particle back to its launch state and the clock to zero; keeps the stepping
+     * mode, time scale and pause, and the camera. Allocates nothing, so a demo may call it
+     * from {@link #afterStep}. The R key also reframes the camera.
+     */
+    public void restart() {
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            particle.restart();
+            if (particle.view != null) {
+                particle.view.getTrail().clear();
+                particle.view.getTrail().add(particle.getParticle().position);
+            }
+        }
+        clock.reset();
+        warning = Warning.NONE;
+        worstStepRate = 0f;
+        onRestart();
+        hudDirty = true;
+    }
+
+    /**
+     * Make the next frame last {@link #HITCH_SECONDS}, as if the game had stalled: in raw-tpf
+     * mode that is one long Euler step; in fixed-step mode the clock clamps it.
+     */
+    public void injectHitch() {
+        pendingHitchSeconds = HITCH_SECONDS;
+        droppedAtHitch = clock.getDroppedSeconds();
+    }
+
+    /**
+     * Advance the simulation by one frame and move the views: the allocation-free part of
+     * {@link #update}, without the HUD.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advance(float tpf) {
+        float frameSeconds = tpf;
+        if (pendingHitchSeconds > 0f) {
+            frameSeconds = pendingHitchSeconds;
+            pendingHitchSeconds = 0f;
+            raise(Warning.HITCH, frameSeconds, 0f);
+        }
+        try {
+            clock.advance(frameSeconds, stepper);
+        } catch (IllegalStateException blowUp) {
+            recoverFromBlowUp();
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            particle.view.update(particle.getParticle().position,
+                    particle.getParticle().velocity);
+        }
+        warningAgeSeconds += tpf;
+    }
+
+    /**
+     * Rebuild the HUD's body text into storeResult, without allocating.
+     *
+     * @param storeResult storage for the text (not null, cleared and modified)
+     * @return storeResult
+     */
+    public StringBuilder formatHud(StringBuilder storeResult) {
+        StringBuilder text = storeResult;
+        text.setLength(0);
+        text.append(equations);
+        text.append("t = ");
+        TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s\n");
+        for (int i = 0; i < particles.size(); ++i) {
+            appendParticleLine(text, particles.get(i));
+        }
+        appendSteppingLine(text);
+        writeHudLines(text);
+        return text;
+    }
+
+    // ------------------------------------------------------------- framework overrides ----
+
+    @Override
+    protected void initialize(Application app) {
+        createScene();
+        sceneCreated = true;
+        declareSharedKeys();
+        declareKeys();
+        AssetManager assets = app.getAssetManager();
+        BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
+
+        sceneNode.attachChild(new DistanceGrid(assets, font, viewXMin, viewXMax, viewYMin,
+                viewYMax, gridSpacing, gridLabelEvery).getNode());
+        for (int i = 0; i < markers.size(); ++i) {
+            Marker marker = markers.get(i);
+            sceneNode.attachChild(ParticleView.createPost(assets, font, marker.label,
+                    marker.x, marker.height, 0.6f * sphereRadius, marker.color));
+        }
+        DirectionalLight sun = new DirectionalLight(
+                new Vector3f(-0.4f, -0.6f, -0.7f).normalizeLocal(), ColorRGBA.White.clone());
+        sceneNode.addLight(sun);
+        sceneNode.addLight(new AmbientLight(new ColorRGBA(0.45f, 0.45f, 0.5f, 1f)));
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            particle.view = new ParticleView(assets, font, particle.getLabel(),
+                    particle.getColor(), sphereRadius, TRAIL_POINTS, i);
+            particle.view.getTrail().add(particle.getParticle().position);
+            particle.view.getArrow().setVisible(arrowsVisible);
+            sceneNode.attachChild(particle.view.getNode());
+        }
+
+        hud = new HudView(assets, font, app.getCamera().getWidth(),
+                app.getCamera().getHeight());
+        hud.setTitle(titleText);
+        hud.setFooter(FOOTER);
+        refreshEquations();
+        helpText = buildHelp();
+        hud.setHelp(helpText);
+        sceneRoot = (Node) app.getViewPort().getScenes().get(0);
+        guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            particle.view.update(particle.getParticle().position,
+                    particle.getParticle().velocity);
+        }
+    }
+
+    @Override
+    protected void cleanup(Application app) {
+        sceneNode.detachAllChildren();
+    }
+
+    @Override
+    protected void onEnable() {
+        sceneRoot.attachChild(sceneNode);
+        guiRoot.attachChild(hud.getNode());
+        InputManager input = getApplication().getInputManager();
+        List<KeyBinding> all = getBindings();
+        for (int i = 0; i < all.size(); ++i) {
+            KeyBinding binding = all.get(i);
+            String name = "particlelab/" + title + "/" + i + " " + binding.getDescription();
+            input.addMapping(name, new KeyTrigger(binding.getKeyCode()));
+            bindingsByMapping.put(name, binding);
+            mappingNames.add(name);
+        }
+        input.addListener(keyListener, mappingNames.toArray(new String[0]));
+        frameCamera();
+        hudDirty = true;
+    }
+
+    @Override
+    protected void onDisable() {
+        InputManager input = getApplication().getInputManager();
+        input.removeListener(keyListener);
+        for (int i = 0; i < mappingNames.size(); ++i) {
+            input.deleteMapping(mappingNames.get(i));
+        }
+        mappingNames.clear();
+        bindingsByMapping.clear();
+        sceneNode.removeFromParent();
+        hud.getNode().removeFromParent();
+    }
+
+    @Override
+    public void update(float tpf) {
+        advance(tpf);
+        hudAgeSeconds += tpf;
+        if (hudDirty || hudAgeSeconds >= HUD_REFRESH_SECONDS) {
+            hudAgeSeconds = 0f;
+            hudDirty = false;
+            hud.setBody(formatHud(hudText));
+            hud.setWarning(formatWarning(warningText));
+        }
+    }
+
+    // ---------------------------------------------------------------- private helpers ----
+
+    private void declareSharedKeys() {
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
+                () -> hud.setHelpVisible(!hud.isHelpVisible())));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_SPACE, "Space",
+                "pause / resume the simulation (the camera keeps moving)",
+                () -> clock.setPaused(!clock.isPaused())));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_N, "N",
+                "single step of h (pauses first)", this::singleStep));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_R, "R",
+                "reset: launch again, reframe the camera", this::restartAndReframe));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_T, "T",
+                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_K, "K",
+                "inject one 0.5 s frame (a hitch)", this::injectHitch));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_EQUALS, "+",
+                "time scale x2", () -> scaleTime(2f)));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_ADD, "+ (keypad)",
+                "time scale x2", () -> scaleTime(2f)));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_MINUS, "-",
+                "time scale /2", () -> scaleTime(0.5f)));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_SUBTRACT, "- (keypad)",
+                "time scale /2", () -> scaleTime(0.5f)));
+        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_V, "V",
+                "show / hide velocity arrows", this::toggleArrows));
+    }
+
+    private void addBinding(List<KeyBinding> list, KeyBinding binding) {
+        int code = binding.getKeyCode();
+        for (int reserved : RESERVED_KEYS) {
+            if (code == reserved) {
+                throw new IllegalArgumentException("key " + binding.getKeyLabel()
+                        + " is used by jME or the application; choose another for \""
+                        + binding.getDescription() + "\"");
+            }
+        }
+        List<KeyBinding> all = getBindings();
+        for (int i = 0; i < all.size(); ++i) {
+            if (all.get(i).getKeyCode() == code) {
+                throw new IllegalArgumentException("key " + binding.getKeyLabel()
+                        + " is already bound to \"" + all.get(i).getDescription() + "\"");
+            }
+        }
+        list.add(binding);
+    }
+
+    private String buildHelp() {
+        HelpText help = new HelpText();
+        help.section(title + " - keys");
+        for (int i = 0; i < demoBindings.size(); ++i) {
+            help.key(demoBindings.get(i).getKeyLabel(), demoBindings.get(i).getDescription());
+        }
+        help.section("Every demo");
+        for (int i = 0; i < sharedBindings.size(); ++i) {
+            help.key(sharedBindings.get(i).getKeyLabel(),
+                    sharedBindings.get(i).getDescription());
+        }
+        if (!appBindings.isEmpty()) {
+            help.section("Choosing a demo");
+            for (int i = 0; i < appBindings.size(); ++i) {
+                help.key(appBindings.get(i).getKeyLabel(), appBindings.get(i).getDescription());
+            }
+        }
+        help.section("Camera (jME)");
+        help.key("drag mouse / wheel", "look around / zoom;  W A S D Q Z  fly;  R  reframes");
+        return help.toString();
+    }
+
+    private void onKey(String name, boolean isPressed, float tpf) {
+        if (!isPressed) {
+            return;
+        }
+        KeyBinding binding = bindingsByMapping.get(name);
+        if (binding != null) {
+            binding.getAction().run();
+            hudDirty = true;
+        }
+    }
+
+    private void restartAndReframe() {
+        restart();
+        frameCamera();
+    }
+
+    private void singleStep() {
+        clock.setPaused(true);
+        clock.requestSingleStep();
+    }
+
+    private void scaleTime(float factor) {
+        float scale = clock.getTimeScale() * factor;
+        scale = Math.max(SimulationClock.MIN_TIME_SCALE,
+                Math.min(SimulationClock.MAX_TIME_SCALE, scale));
+        clock.setTimeScale(scale);
+    }
+
+    private void toggleArrows() {
+        arrowsVisible = !arrowsVisible;
+        for (int i = 0; i < particles.size(); ++i) {
+            particles.get(i).view.getArrow().setVisible(arrowsVisible);
+        }
+    }
+
+    private void frameCamera() {
+        CameraFraming.frame(getApplication().getCamera(), viewXMin, viewXMax, viewYMin,
+                viewYMax);
+    }
+
+    /** One step of h for every particle not held: the clock's stepper. */
+    private void stepParticles(float stepSeconds) {
+        attemptedStepSeconds = stepSeconds;
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle demoParticle = particles.get(i);
+            if (demoParticle.isHeld()) {
+                continue;
+            }
+            Particle particle = demoParticle.getParticle();
+            ParticleIntegrator integrator = demoParticle.getIntegrator();
+            float stepRate = stepSeconds * integrator.dampingRate(particle);
+            if (stepRate > worstStepRate) {
+                worstStepRate = stepRate;
+                worstStepSeconds = stepSeconds;
+            }
+            previousPosition.set(particle.position);
+            integrator.step(particle, stepSeconds);
+            demoParticle.addFlightSeconds(stepSeconds);
+            if (demoParticle.stopsAtGround() && particle.position.y < 0f
+                    && previousPosition.y >= 0f) {
+                // The lecture stops the ball at the ground: find the crossing inside the step.
+                float fraction = previousPosition.y / (previousPosition.y - particle.position.y);
+                float landingX = previousPosition.x
+                        + fraction * (particle.position.x - previousPosition.x);
+                double seconds = demoParticle.getFlightSeconds() - stepSeconds
+                        + fraction * stepSeconds;
+                demoParticle.land(landingX, seconds);
+            }
+            demoParticle.view.getTrail().add(particle.position);
+        }
+        afterStep(stepSeconds);
+        checkStability();
+    }
+
+    /** Raise a warning when the worst step so far passed a limit (h·λ &gt; 1 or 2). */
+    private void checkStability() {
+        if (worstStepRate > 2f) {
+            raise(Warning.UNSTABLE, worstStepSeconds, 2f * worstStepSeconds / worstStepRate);
+        } else if (worstStepRate > 1f && warning != Warning.UNSTABLE) {
+            raise(Warning.REVERSING, worstStepSeconds, worstStepSeconds / worstStepRate);
+        }
+        worstStepRate = 0f;
+    }
+
+    private void raise(Warning newWarning, float stepSeconds, float limitSeconds) {
+        if (warning == Warning.BLOW_UP && warningAgeSeconds < WARNING_SECONDS) {
+            return;
+        }
+        warning = newWarning;
+        warningAgeSeconds = 0f;
+        warningStepSeconds = stepSeconds;
+        warningLimitSeconds = limitSeconds;
+        hudDirty = true;
+    }
+
+    private void recoverFromBlowUp() {
+        ++blowUps;
+        float step = attemptedStepSeconds;
+        restart();
+        blowUpMessage = "The Euler step h = " + step + " s blew up (beyond the stability"
+                + " limit): the scene was reset.";
+        warning = Warning.BLOW_UP;
+        warningAgeSeconds = 0f;
+        hudDirty = true;
+    }
+
+    private StringBuilder formatWarning(StringBuilder text) {
+        text.setLength(0);
+        if (warning == Warning.NONE || warningAgeSeconds > WARNING_SECONDS) {
+            return text;
+        }
+        switch (warning) {
+            case BLOW_UP:
+                text.append(blowUpMessage);
+                break;
+            case UNSTABLE:
+                text.append("UNSTABLE: h = ");
+                TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1)
+                        .append(" ms is beyond the stability limit 2/k = ");
+                TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1)
+                        .append(" ms: the Euler step amplifies the velocity");
+                break;
+            case REVERSING:
+                text.append("h = ");
+                TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1)
+                        .append(" ms is beyond 1/k = ");
+                TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1)
+                        .append(" ms: drag overshoots and reverses the velocity each step");
+                break;
+            case HITCH:
+                text.append("Hitch: one ");
+                TextFormat.appendFixed(text, warningStepSeconds, 2).append(" s frame. ");
+                if (clock.getMode() == SimulationClock.Mode.RAW_TPF) {
+                    text.append("Raw tpf took it as ONE Euler step.");
+                } else {
+                    text.append("Fixed step clamped it; dropped ");
+                    TextFormat.appendFixed(text, clock.getDroppedSeconds() - droppedAtHitch, 2)
+                            .append(" s of simulated time.");
+                }
+                break;
+            default:
+                break;
+        }
+        return text;
+    }
+
+    private void appendParticleLine(StringBuilder text, DemoParticle demoParticle) {
+        Particle particle = demoParticle.getParticle();
+        text.append(demoParticle.getLabel()).append(":  P = ");
+        TextFormat.appendVector(text, particle.position, 2).append(" m   V = ");
+        TextFormat.appendVector(text, particle.velocity, 2).append(" m/s   |V| = ");
+        TextFormat.appendFixed(text, particle.velocity.length(), 2).append(" m/s");
+        if (demoParticle.hasLanded()) {
+            text.append("   landed at x = ");
+            TextFormat.appendFixed(text, demoParticle.getLandingX(), 2).append(" m");
+        }
+        text.append('\n');
+    }
+
+    private void appendSteppingLine(StringBuilder text) {
+        text.append("Stepping: ");
+        if (clock.getMode() == SimulationClock.Mode.FIXED_STEP) {
+            text.append("fixed h = ");
+            TextFormat.appendFixed(text, clock.getStepSeconds() * 1000f, 1).append(" ms");
+        } else {
+            text.append("raw tpf, last h = ");
+            TextFormat.appendFixed(text, clock.getCurrentStepSeconds() * 1000f, 1)
+                    .append(" ms");
+        }
+        text.append("   time x");
+        TextFormat.appendFixed(text, clock.getTimeScale(), 2);
+        float limit = Float.POSITIVE_INFINITY;
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            limit = Math.min(limit, particle.getIntegrator().maxStableStep(
+                    particle.getParticle()));
+        }
+        if (limit < Float.POSITIVE_INFINITY) {
+            text.append("   stable while h < ");
+            TextFormat.appendFixed(text, limit, 3).append(" s");
+        } else {
+            text.append("   no drag: any h is stable");
+        }
+        if (clock.isPaused()) {
+            text.append("   PAUSED (Space resumes, N steps)");
+        }
+        text.append('\n');
+    }
+
+    /** A post declared by {@link #addMarker}, built at initialisation. */
+    private static final class Marker {
+        final String label;
+        final float x;
+        final float height;
+        final ColorRGBA color;
+
+        Marker(String label, float x, float height, ColorRGBA color) {
+            this.label = label;
+            this.x = x;
+            this.height = height;
+            this.color = color;
+        }
+    }
+}

@@ -1,0 +1,238 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import particlelab.aiming.Landing;
+import particlelab.aiming.LevelAim;
+import particlelab.aiming.ShotSimulator;
+import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.view.TextFormat;
+
+/**
+ * Demo 5, HelloAiming: a gun at the origin, a target on the same level at {@code S = 100} m,
+ * the horizontal speed {@code vx} given (20 m/s to start). Builds upon gravitational pull.
+ *
+ * <p>The lecture's formula: the flight time is {@code T = S/vx}, and a level shot needs
+ * {@code vy = g·T/2 = g·S/(2·vx)}. That is exact for the continuous parabola, but the bullet
+ * the game flies is stepped by the Euler method: its samples lie on the parabola launched with
+ * {@code vy − g·h/2}, so it lands {@code vx·h} short (a third of a metre at 20 m/s and
+ * 60 steps per second). The cure aims for the stepped bullet:
+ * {@code vy = g·(S/vx + h)/2} ({@link LevelAim#discreteVy}). With raw tpf the step changes
+ * from frame to frame and so does the landing: aim for the h you will actually step with.
+ *
+ * <p>What to watch for: the HUD predicts the landing under the current stepping (a simulated
+ * shot with the same integrator) and shows where the shot actually landed; press L to switch
+ * formulas and F to fire. The bullet stops at the ground, as in the lecture.
+ */
+public final class HelloAimingDemo extends DemoState {
+
+    /** The distance to the target (m). */
+    public static final float TARGET_DISTANCE = 100f;
+    /** The starting horizontal speed (m/s). */
+    public static final float DEFAULT_VX = 20f;
+    /** The horizontal speed's range and step for the keys (m/s). */
+    public static final float MIN_VX = 12f;
+    public static final float MAX_VX = 60f;
+    private static final float VX_STEP = 1f;
+    /** Shots in the air longer than this count as lost (s). */
+    private static final float MAX_FLIGHT_SECONDS = 60f;
+    private static final float GRAVITY = Gravity.STANDARD_G;
+
+    /** Which formula aims the gun. */
+    public enum Aim {
+        /** The lecture's {@code vy = g·S/(2·vx)}: lands {@code vx·h} short when stepped. */
+        LECTURE,
+        /** Corrected for the stepped bullet: {@code vy = g·(S/vx + h)/2}. */
+        DISCRETE
+    }
+
+    private final ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+    private final Landing predicted = new Landing();
+    private final Vector3f launchVelocity = new Vector3f();
+    private DemoParticle bullet;
+    private Aim aim = Aim.LECTURE;
+    private float vx = DEFAULT_VX;
+    private ShotSimulator simulator;
+    /** The step, vx and aim the prediction was made for. */
+    private float predictedStep = Float.NaN;
+    private float predictedVx = Float.NaN;
+    private Aim predictedAim;
+    private int shots;
+    private boolean landingRecorded;
+    private float lastLandingX = Float.NaN;
+    private float lastShotVx;
+    private Aim lastShotAim = Aim.LECTURE;
+    /** The vx and formula of the shot in the air. */
+    private float shotVx;
+    private Aim shotAim = Aim.LECTURE;
+
+    /** Create the demo. */
+    public HelloAimingDemo() {
+        super("HelloAiming");
+    }
+
+    /**
+     * Return the formula in use.
+     *
+     * @return the aim (not null)
+     */
+    public Aim getAim() {
+        return aim;
+    }
+
+    /**
+     * Choose the formula; the next shot uses it.
+     *
+     * @param newAim the aim (not null)
+     */
+    public void setAim(Aim newAim) {
+        if (newAim == null) {
+            throw new IllegalArgumentException("aim must be LECTURE or DISCRETE, but was null");
+        }
+        aim = newAim;
+    }
+
+    /**
+     * Return the horizontal speed the gun fires with.
+     *
+     * @return vx (in m/s)
+     */
+    public float getHorizontalSpeed() {
+        return vx;
+    }
+
+    /**
+     * Return the vertical speed the current formula gives for the current step.
+     *
+     * @return vy (in m/s)
+     */
+    public float getVerticalSpeed() {
+        if (aim == Aim.LECTURE) {
+            return (float) LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, vx);
+        }
+        return (float) LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, vx,
+                getClock().getCurrentStepSeconds());
+    }
+
+    /**
+     * Return where the last shot landed.
+     *
+     * @return x (in metres; NaN until a shot lands)
+     */
+    public float getLastLandingX() {
+        return lastLandingX;
+    }
+
+    /**
+     * Fire a shot from the gun with the current vx and formula.
+     */
+    public void fire() {
+        launchVelocity.set(vx, getVerticalSpeed(), 0f);
+        launch(bullet, launchVelocity);
+        shotVx = vx;
+        shotAim = aim;
+        landingRecorded = false;
+        ++shots;
+    }
+
+    @Override
+    protected void createScene() {
+        launchVelocity.set(vx, (float) LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, vx), 0f);
+        // The gun fires once as the demo starts: the first shot is in the air at t = 0.
+        bullet = addParticle("bullet", ColorRGBA.Yellow, Vector3f.ZERO, launchVelocity, 1f,
+                integrator).stopAtGround();
+        shots = 1;
+        shotVx = vx;
+        shotAim = aim;
+        addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
+        addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
+        setView(-6f, 116f, 34f, 5f, 2, 1.1f);
+    }
+
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
+        bindKey(KeyInput.KEY_UP, "Up", "vx + 1 m/s", () -> changeVx(VX_STEP));
+        bindKey(KeyInput.KEY_DOWN, "Down", "vx - 1 m/s", () -> changeVx(-VX_STEP));
+        bindKey(KeyInput.KEY_L, "L", "aim: lecture formula <-> discrete correction",
+                () -> setAim(aim == Aim.LECTURE ? Aim.DISCRETE : Aim.LECTURE));
+    }
+
+    @Override
+    protected void onRestart() {
+        shots = 0;
+        fire();
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        if (bullet.hasLanded() && !landingRecorded) {
+            landingRecorded = true;
+            lastLandingX = bullet.getLandingX();
+            lastShotVx = shotVx;
+            lastShotAim = shotAim;
+        }
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("Level target: T = S/vx,  lecture vy = g*S/(2*vx);  Euler lands vx*h short;"
+                + "  discrete vy = g*(S/vx + h)/2\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        float step = getClock().getCurrentStepSeconds();
+        updatePrediction(step);
+        text.append(aim == Aim.LECTURE ? "Aim: LECTURE vy = g*S/(2*vx)"
+                : "Aim: DISCRETE vy = g*(S/vx + h)/2");
+        text.append("   (L switches, F fires, Up/Down change vx)\n");
+        text.append("S = 100 m,  vx = ");
+        TextFormat.appendFixed(text, vx, 1).append(" m/s,  vy = ");
+        TextFormat.appendFixed(text, getVerticalSpeed(), 3).append(" m/s,  flight S/vx = ");
+        TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3).append(" s\n");
+        text.append("Predicted landing with h = ");
+        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms:  x = ");
+        if (predicted.hasLanded()) {
+            TextFormat.appendFixed(text, predicted.getX(), 3).append(" m,  miss ");
+            TextFormat.appendFixed(text, predicted.getX() - TARGET_DISTANCE, 3);
+            text.append(" m   (vx*h = ");
+            TextFormat.appendFixed(text, vx * step, 3).append(" m)\n");
+        } else {
+            text.append("never lands\n");
+        }
+        text.append("Shot ").append(shots).append(": ");
+        if (Float.isNaN(lastLandingX)) {
+            text.append("in the air\n");
+        } else {
+            text.append("last landed at x = ");
+            TextFormat.appendFixed(text, lastLandingX, 3).append(" m,  miss ");
+            TextFormat.appendFixed(text, lastLandingX - TARGET_DISTANCE, 3).append(" m  (");
+            text.append(lastShotAim == Aim.LECTURE ? "lecture" : "discrete").append(", vx ");
+            TextFormat.appendFixed(text, lastShotVx, 1).append(" m/s)\n");
+        }
+    }
+
+    private void changeVx(float delta) {
+        vx = Math.max(MIN_VX, Math.min(MAX_VX, vx + delta));
+    }
+
+    /**
+     * Simulate the shot the gun would fire now, with the current step; only when the step, vx
+     * or the formula changed (a new simulator is made only when the step changed).
+     */
+    private void updatePrediction(float step) {
+        if (step == predictedStep && vx == predictedVx && aim == predictedAim) {
+            return;
+        }
+        if (simulator == null || simulator.getStepSeconds() != step) {
+            simulator = new ShotSimulator(integrator, 1f, step, MAX_FLIGHT_SECONDS);
+        }
+        simulator.fire(vx, getVerticalSpeed(), predicted);
+        predictedStep = step;
+        predictedVx = vx;
+        predictedAim = aim;
+    }
+}

@@ -1,0 +1,41 @@
+package particlelab.view;
+
+/**
+ * Builds the help overlay's text from key bindings, so the help can never drift from the keys
+ * actually bound: headings, then one line per key.
+ */
+public final class HelpText {
+
+    private final StringBuilder text = new StringBuilder();
+
+    /**
+     * Start a section.
+     *
+     * @param heading the section's heading (not null)
+     * @return this
+     */
+    public HelpText section(String heading) {
+        if (text.length() > 0) {
+            text.append('\n');
+        }
+        text.append(heading).append('\n');
+        return this;
+    }
+
+    /**
+     * Add one key's line.
+     *
+     * @param keyLabel the key as printed on the keyboard, e.g. "Space" (not null)
+     * @param description what it does (not null)
+     * @return this
+     */
+    public HelpText key(String keyLabel, String description) {
+        text.append("   ").append(keyLabel).append("  -  ").append(description).append('\n');
+        return this;
+    }
+
+    @Override
+    public String toString() {
+        return text.toString();
+    }
+}

@@ -1,0 +1,209 @@
+package particlelab.view;
+
+import com.jme3.material.Material;
+import com.jme3.material.RenderState;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.renderer.queue.RenderQueue;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Mesh;
+import com.jme3.scene.Spatial;
+import com.jme3.scene.VertexBuffer;
+import com.jme3.util.BufferUtils;
+import java.nio.FloatBuffer;
+
+/**
+ * The recent path of one particle: a bounded ring buffer of points drawn as a flat ribbon in
+ * the x-y plane (wide enough to read on a projector, unlike a 1-pixel line), fading from the
+ * oldest point to the newest.
+ *
+ * <p>All storage is allocated up front. {@link #add} writes one point into the ring;
+ * {@link #refresh} copies the ring, oldest first, into the mesh's preallocated vertex buffer.
+ * Slots not yet filled repeat the oldest point, which makes zero-area triangles.
+ */
+public final class Trail {
+
+    private static final int FLOATS_PER_POINT = 3;
+    /** Opacity of the oldest point; the newest is opaque. */
+    private static final float OLDEST_ALPHA = 0.05f;
+
+    private final int capacity;
+    private final float halfWidth;
+    /** The ring: x, y, z of each point (in metres). */
+    private final float[] ring;
+    /** Index of the newest point in the ring (-1 when empty). */
+    private int newest = -1;
+    private int count;
+    private boolean changed;
+    private final FloatBuffer positions;
+    private final VertexBuffer positionBuffer;
+    private final Geometry geometry;
+
+    /**
+     * Create an empty trail.
+     *
+     * @param name the geometry's name (not null)
+     * @param capacity how many points it remembers (&ge;2)
+     * @param widthMetres the ribbon's width (in metres, &gt;0)
+     * @param color the colour of the newest point (not null, not modified)
+     * @param material an Unshaded material to copy the settings from (not null, cloned)
+     */
+    public Trail(String name, int capacity, float widthMetres, ColorRGBA color,
+            Material material) {
+        if (capacity < 2) {
+            throw new IllegalArgumentException("trail capacity must be >= 2, but was " + capacity);
+        }
+        if (!(widthMetres > 0f) || Float.isInfinite(widthMetres)) {
+            throw new IllegalArgumentException(
+                    "trail width (m) must be finite and > 0, but was " + widthMetres);
+        }
+        this.capacity = capacity;
+        this.halfWidth = widthMetres / 2f;
+        this.ring = new float[capacity * FLOATS_PER_POINT];
+        int vertices = 2 * capacity;
+        this.positions = BufferUtils.createFloatBuffer(vertices * FLOATS_PER_POINT);
+        FloatBuffer colors = BufferUtils.createFloatBuffer(vertices * 4);
+        for (int slot = 0; slot < capacity; ++slot) {
+            // Slots are drawn oldest first, so a fixed ramp fades the tail.
+            float alpha = OLDEST_ALPHA + (1f - OLDEST_ALPHA) * slot / (capacity - 1);
+            for (int side = 0; side < 2; ++side) {
+                colors.put(color.r).put(color.g).put(color.b).put(alpha * color.a);
+            }
+        }
+        colors.flip();
+        Mesh mesh = new Mesh();
+        mesh.setMode(Mesh.Mode.TriangleStrip);
+        mesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_POINT, positions);
+        mesh.setBuffer(VertexBuffer.Type.Color, 4, colors);
+        mesh.setStreamed();
+        this.positionBuffer = mesh.getBuffer(VertexBuffer.Type.Position);
+        this.geometry = new Geometry(name, mesh);
+        Material ribbon = material.clone();
+        ribbon.setBoolean("VertexColor", true);
+        ribbon.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        ribbon.getAdditionalRenderState().setFaceCullMode(RenderState.FaceCullMode.Off);
+        ribbon.getAdditionalRenderState().setDepthWrite(false);
+        geometry.setMaterial(ribbon);
+        geometry.setQueueBucket(RenderQueue.Bucket.Transparent);
+        // The ribbon moves every frame; skip bounds and culling instead of recomputing them.
+        geometry.setCullHint(Spatial.CullHint.Always);
+    }
+
+    /**
+     * Access the geometry to attach to a scene.
+     *
+     * @return the live geometry (not null)
+     */
+    public Geometry getGeometry() {
+        return geometry;
+    }
+
+    /**
+     * Return how many points the trail holds.
+     *
+     * @return the count (from 0 to the capacity)
+     */
+    public int size() {
+        return count;
+    }
+
+    /**
+     * Return the most points the trail remembers.
+     *
+     * @return the capacity (&ge;2)
+     */
+    public int getCapacity() {
+        return capacity;
+    }
+
+    /**
+     * Forget every point.
+     */
+    public void clear() {
+        newest = -1;
+        count = 0;
+        changed = true;
+    }
+
+    /**
+     * Remember a point, dropping the oldest when full.
+     *
+     * @param point the position (in metres, not null, not modified)
+     */
+    public void add(Vector3f point) {
+        newest = (newest + 1) % capacity;
+        int base = newest * FLOATS_PER_POINT;
+        ring[base] = point.x;
+        ring[base + 1] = point.y;
+        ring[base + 2] = point.z;
+        if (count < capacity) {
+            ++count;
+        }
+        changed = true;
+    }
+
+    /**
+     * Copy the i-th oldest point into storeResult.
+     *
+     * @param age 0 for the oldest point held, {@code size() − 1} for the newest
+     * @param storeResult storage for the point (not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyPoint(int age, Vector3f storeResult) {
+        if (age < 0 || age >= count) {
+            throw new IllegalArgumentException(
+                    "age must be from 0 to " + (count - 1) + ", but was " + age);
+        }
+        int base = ringIndex(age) * FLOATS_PER_POINT;
+        return storeResult.set(ring[base], ring[base + 1], ring[base + 2]);
+    }
+
+    /**
+     * Write the points into the mesh if they changed since the last refresh.
+     */
+    public void refresh() {
+        if (!changed) {
+            return;
+        }
+        changed = false;
+        if (count < 2) {
+            geometry.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
+        geometry.setCullHint(Spatial.CullHint.Never);
+        int padding = capacity - count;
+        for (int slot = 0; slot < capacity; ++slot) {
+            int age = slot < padding ? 0 : slot - padding;
+            writeSlot(slot, age);
+        }
+        positions.rewind();
+        positionBuffer.updateData(positions);
+    }
+
+    /** Write the two ribbon vertices of one slot, offset sideways from the point. */
+    private void writeSlot(int slot, int age) {
+        int here = ringIndex(age) * FLOATS_PER_POINT;
+        int before = ringIndex(Math.max(age - 1, 0)) * FLOATS_PER_POINT;
+        int after = ringIndex(Math.min(age + 1, count - 1)) * FLOATS_PER_POINT;
+        float dx = ring[after] - ring[before];
+        float dy = ring[after + 1] - ring[before + 1];
+        float length = (float) Math.sqrt(dx * dx + dy * dy);
+        float nx = 0f;
+        float ny = halfWidth;
+        if (length > 1e-6f) {
+            // Perpendicular to the path, in the x-y plane.
+            nx = -dy / length * halfWidth;
+            ny = dx / length * halfWidth;
+        }
+        int out = slot * 2 * FLOATS_PER_POINT;
+        float x = ring[here];
+        float y = ring[here + 1];
+        float z = ring[here + 2];
+        positions.put(out, x + nx).put(out + 1, y + ny).put(out + 2, z);
+        positions.put(out + 3, x - nx).put(out + 4, y - ny).put(out + 5, z);
+    }
+
+    private int ringIndex(int age) {
+        return (newest - (count - 1) + age + capacity) % capacity;
+    }
+}
