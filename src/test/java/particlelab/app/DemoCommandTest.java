@@ -1,0 +1,60 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
+
+class DemoCommandTest {
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    @Test
+    void listPrintsTheDemoNamesOnePerLine() {
+        assertEquals(DemoCommand.OK, run("--list"));
+        assertEquals(String.join(System.lineSeparator(), DemoCatalog.names())
+                + System.lineSeparator(), text(out));
+    }
+
+    @Test
+    void badArgumentsAreUsageErrorsThatSayWhy() {
+        assertEquals(DemoCommand.USAGE, run("--frames", "zero"));
+        assertTrue(text(err).contains("--frames must be a whole number >= 1, but was 'zero'"));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("--fixed-tpf", "-1"));
+        assertTrue(text(err).contains("--fixed-tpf must be a time in seconds"));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("rotation"));
+        assertTrue(text(err).contains("no demo named 'rotation'; the demos are uniform,"));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("aiming", "--screenshot", "x.png"));
+        assertTrue(text(err).contains("--screenshot needs --frames N"));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("aiming", "--frames"));
+        assertTrue(text(err).contains("--frames needs a value"));
+    }
+
+    @Test
+    void withoutADisplayItSaysSoInOneLineAndFails() {
+        assumeTrue(DemoCommand.checkDisplay() != null, "a display is present");
+        assertEquals(DemoCommand.FAILED, run("aiming", "--frames", "1"));
+        String message = text(err);
+        assertTrue(message.startsWith("particle-lab: cannot open the window: no display"),
+                message);
+        assertEquals(1, message.split("\\R").length, message);
+    }
+
+    private int run(String... args) {
+        return DemoCommand.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    private static String text(ByteArrayOutputStream stream) {
+        return stream.toString(StandardCharsets.UTF_8);
+    }
+}
