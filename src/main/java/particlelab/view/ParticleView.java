@@ -47,7 +47,9 @@ public final class ParticleView {
     public ParticleView(AssetManager assetManager, BitmapFont font, String name,
             ColorRGBA color, float radiusMetres, int trailPoints, int labelRow) {
         this.radius = radiusMetres;
-        this.labelLift = (4.5f + 2.6f * labelRow) * radiusMetres;
+        // Row 0 floats just above the sphere, row 1 hangs below it, row 2 higher above, ...
+        float rowOffset = (labelRow % 2 == 0) ? 1.6f + 1.6f * labelRow : -3.4f - 1.6f * labelRow;
+        this.labelLift = rowOffset * radiusMetres;
         this.node = new Node(name);
         Material lit = new Material(assetManager, "Common/MatDefs/Light/Lighting.j3md");
         lit.setBoolean("UseMaterialColors", true);
@@ -68,7 +70,7 @@ public final class ParticleView {
         node.attachChild(arrow.getGeometry());
 
         label = new BitmapText(font);
-        label.setSize(2.2f * radiusMetres);
+        label.setSize(1.9f * radiusMetres);
         label.setColor(color.clone());
         label.setText(name);
         label.setQueueBucket(RenderQueue.Bucket.Transparent);
@@ -151,7 +153,8 @@ public final class ParticleView {
      */
     public void update(Vector3f position, Vector3f velocity) {
         sphere.setLocalTranslation(position.x, position.y, position.z);
-        label.setLocalTranslation(position.x - radius, position.y + labelLift, position.z);
+        label.setLocalTranslation(position.x + radius, position.y + labelLift + 1.9f * radius,
+                position.z);
         arrow.update(position, velocity);
         trail.refresh();
     }
