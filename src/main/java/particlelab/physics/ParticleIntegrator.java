@@ -126,9 +126,10 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Return the largest step for which the Euler step does not blow up at the particle's
-     * current state: {@code 2/λ} (linear drag: {@code 2m/b}; quadratic drag:
-     * {@code 2m/(c·|V|)}).
+     * Return the largest step for which the Euler step is stable at the particle's current
+     * state, small changes of the velocity dying out rather than growing: {@code 2/λ} (linear
+     * drag: {@code 2m/b}; quadratic drag: {@code m/(c·|V|)}, which at the terminal speed
+     * {@code v_t} is {@code v_t/g}).
      *
      * @param particle the particle (not null, not modified)
      * @return the limit (in seconds, &gt;0; infinite when nothing damps)
@@ -138,8 +139,10 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Return the largest step for which the Euler step never reverses the velocity (no
-     * oscillation): {@code 1/λ} (linear drag: {@code m/b}; quadratic drag: {@code m/(c·|V|)}).
+     * Return the largest step for which the Euler step does not overshoot at the particle's
+     * current state: {@code 1/λ} (linear drag: {@code m/b}, beyond which the velocity flips
+     * sign every step; quadratic drag: {@code m/(2c·|V|)}, beyond which the speed swings about
+     * its terminal value; drag alone reverses the velocity only beyond {@code m/(c·|V|)}).
      *
      * @param particle the particle (not null, not modified)
      * @return the limit (in seconds, &gt;0; infinite when nothing damps)
