@@ -310,7 +310,7 @@ public final class SimulationClock {
     private int advanceFixed(float scaledSeconds, Stepper stepper) {
         float accepted = scaledSeconds;
         if (accepted > maxFrameSeconds) {
-            // In double, where the difference of two floats is exact.
+            // In double: exact for any frame under 2^29 times the limit.
             droppedSeconds += (double) accepted - maxFrameSeconds;
             accepted = maxFrameSeconds;
         }
