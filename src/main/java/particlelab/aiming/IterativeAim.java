@@ -17,9 +17,9 @@ import particlelab.physics.Validate;
  * <p>With drag the reach at fixed vx has a maximum (linear drag: no launch passes
  * {@code vx·m/b}). When the reach stops growing while still short, or the bullet stops coming
  * down within the allowed flight time, the answer is "out of reach" with the farthest shot
- * found. When the shots run out first (a tolerance finer than the float round-off of the
- * stepped shot, about {@code 1e-5} m at 100 m, cannot be met), the answer is "no hit" with the
- * closest shot found. Of the two arcs that may hit with drag, the search finds the low one.
+ * found. When the shots run out first, the answer is "no hit" with the closest shot found:
+ * a tolerance finer than the float round-off of the stepped shot (vy is fired as a float, one
+ * ulp of vy moves a 100 m shot by about 1e-5 m) cannot be met. Of the two arcs that may hit with drag, the search finds the low one.
  */
 public final class IterativeAim {
 
@@ -209,7 +209,7 @@ public final class IterativeAim {
     }
 
     /**
-     * Fire one shot, counting it and remembering the farthest.
+     * Fire one shot, counting it and remembering the farthest and the closest.
      *
      * @return the miss {@code landing − S} (in metres)
      * @throws ShotsRanOut if the shots run out

@@ -86,7 +86,8 @@ public final class AimCommand {
                         + " drag). Default lecture.")
                 .value(TOLERANCE, "METRES", "iterative only: stop once the landing is this"
                         + " close to S (m, > 0). Default " + DEFAULT_TOLERANCE_METRES + ". Float"
-                        + " round-off limits it to about 1e-5 m at 100 m.")
+                        + " round-off (vy is fired as a float) limits it to about 1e-5 m at"
+                        + " 100 m.")
                 .flag(CSV, "print one CSV row under the header " + HEADER + " instead of text.")
                 .note("Every method's shot is fired from the origin and stepped at h with the"
                         + " given forces until it crosses y = 0; landing_x and flight_time are"
@@ -149,7 +150,9 @@ public final class AimCommand {
                     new ShotSimulator(integrator, mass, step, MAX_FLIGHT_SECONDS);
             AimResult result;
             try {
-                result = aim(method, simulator, gravity, distance, vx, step, tolerance);
+                // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
+                double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
+                result = aim(method, simulator, gravity, distance, vx, step, toleranceMetres);
             } catch (IllegalStateException nonFinite) {
                 float limit = integrator.maxStableStep(launch(vx,
                         (float) LevelAim.lectureVy(gravity, distance, vx), mass));
@@ -175,7 +178,7 @@ public final class AimCommand {
      * @throws UsageException if the target is out of reach or the shot never lands
      */
     private static AimResult aim(String method, ShotSimulator simulator, float gravity,
-            float distance, float vx, float step, float tolerance) {
+            float distance, float vx, float step, double tolerance) {
         if (IterativeAim.METHOD.equals(method)) {
             AimResult result = new IterativeAim(simulator, gravity, tolerance, MAX_SHOTS)
                     .aim(distance, vx);
