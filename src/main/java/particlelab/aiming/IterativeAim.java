@@ -19,7 +19,8 @@ import particlelab.physics.Validate;
  * down within the allowed flight time, the answer is "out of reach" with the farthest shot
  * found. When the shots run out first, the answer is "no hit" with the closest shot found:
  * a tolerance finer than the float round-off of the stepped shot (vy is fired as a float, one
- * ulp of vy moves a 100 m shot by about 1e-5 m) cannot be met. Of the two arcs that may hit with drag, the search finds the low one.
+ * ulp of vy moves a 100 m shot by about 1e-5 m) cannot be met. Of the two arcs that may hit
+ * with drag, the search finds the low one.
  */
 public final class IterativeAim {
 
