@@ -56,9 +56,10 @@ final class CommandSupport {
 
     /**
      * Warn on err when the step exceeds a stability limit at the particle's state: the Euler
-     * step diverges beyond {@code 2/λ} and reverses the velocity every step beyond
-     * {@code 1/λ}, where {@code λ = b/m + c·|V|/m} is the damping rate. Quadratic drag damps
-     * faster as the speed grows, so the check holds only at this state.
+     * step diverges beyond {@code 2/λ} and overshoots beyond {@code 1/λ}, where λ is the
+     * forces' damping rate ({@link particlelab.physics.Force#dampingRate}: {@code b/m} for
+     * linear drag, {@code 2c·|V|/m} for quadratic drag). Quadratic drag damps faster as the
+     * speed grows, so the check holds only at this state.
      *
      * @param integrator the scene's forces (not null)
      * @param particle the state to check (not null, not modified)
@@ -77,7 +78,7 @@ final class CommandSupport {
         } else if (stepSeconds > monotone) {
             err.println("warning: --tpf " + stepSeconds + " s exceeds 1/lambda = " + monotone
                     + " s at the initial state (damping rate lambda = " + rate + " /s): the"
-                    + " velocity will reverse every step; carrying on as asked");
+                    + " velocity will overshoot and oscillate; carrying on as asked");
         }
     }
 
