@@ -165,11 +165,11 @@ class TrajectoryCommandTest {
 
     @Test
     void quadraticDragLimitIsCheckedAtTheInitialSpeed() {
-        // c·|V0|/m = 0.5·10/1 = 5 /s: 2/lambda = 0.4 s.
+        // lambda = 2c·|V0|/m = 2·0.5·10/1 = 10 /s: 2/lambda = 0.2 s.
         CommandRun run = ok("--v0", "10,0,0", "--quadratic-drag", "0.5", "--tpf", "0.5",
                 "--steps", "2");
         assertTrue(run.err.startsWith("warning: --tpf 0.5 s exceeds the stability limit"
-                + " 2/lambda = 0.4 s"), run.err);
+                + " 2/lambda = 0.2 s"), run.err);
     }
 
     @Test
