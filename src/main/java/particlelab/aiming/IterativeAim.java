@@ -16,8 +16,11 @@ import particlelab.physics.Validate;
  *
  * <p>With drag the reach at fixed vx has a maximum (linear drag: no launch passes
  * {@code vx·m/b}). When the reach stops growing while still short, or the bullet stops coming
- * down within the allowed flight time, or the shots run out, the answer is "out of reach" with
- * the best shot found. Of the two arcs that may hit with drag, the search finds the low one.
+ * down within the allowed flight time, the answer is "out of reach" with the farthest shot
+ * found. When the shots run out first, the answer is "no hit" with the closest shot found:
+ * a tolerance finer than the float round-off of the stepped shot (vy is fired as a float, one
+ * ulp of vy moves a 100 m shot by about 1e-5 m) cannot be met. Of the two arcs that may hit
+ * with drag, the search finds the low one.
  */
 public final class IterativeAim {
 
@@ -40,6 +43,9 @@ public final class IterativeAim {
     /** The farthest shot so far in the current search: its vy and miss. */
     private double bestVy;
     private double bestMiss;
+    /** The shot so far that landed closest to S: its vy and miss. */
+    private double closestVy;
+    private double closestMiss;
     /** The miss of the shot before the current low end of the bracket. */
     private double lastShortfall;
 
@@ -71,7 +77,8 @@ public final class IterativeAim {
      *
      * @param distance S (in metres, finite, &gt;0)
      * @param horizontalSpeed vx (in m/s, finite, &gt;0)
-     * @return the result: a hit, or out of reach with the best shot (not null)
+     * @return the result (not null): a hit; or no hit, either out of reach (with the farthest
+     *     shot) or out of shots (with the closest shot), as its explanation says
      */
     public AimResult aim(double distance, double horizontalSpeed) {
         Validate.positive(distance, "distance S (m)");
@@ -83,6 +90,13 @@ public final class IterativeAim {
             return new AimResult(METHOD, false, horizontalSpeed, bestVy, Double.NaN, landingX,
                     distance, shots, "target at S=" + distance + " m is out of reach at vx="
                             + horizontalSpeed + " m/s: " + reason.getMessage());
+        } catch (ShotsRanOut reason) {
+            // Not out of reach: the search did not converge. Report the closest shot.
+            return new AimResult(METHOD, false, horizontalSpeed, closestVy, Double.NaN,
+                    distance + closestMiss, distance, shots, "no hit within " + maxShots
+                            + " shots at tolerance " + toleranceMetres + " m; the closest landed "
+                            + (float) closestMiss + " m from S with vy=" + (float) closestVy
+                            + " m/s (a larger tolerance may help)");
         }
     }
 
@@ -90,6 +104,8 @@ public final class IterativeAim {
         shots = 0;
         bestVy = Double.NaN;
         bestMiss = Double.NEGATIVE_INFINITY;
+        closestVy = Double.NaN;
+        closestMiss = Double.POSITIVE_INFINITY;
         lastShortfall = -distance;
 
         // Bracket: lowVy falls short on the rising branch of the reach, highVy overshoots.
@@ -194,14 +210,15 @@ public final class IterativeAim {
     }
 
     /**
-     * Fire one shot, counting it and remembering the farthest.
+     * Fire one shot, counting it and remembering the farthest and the closest.
      *
      * @return the miss {@code landing − S} (in metres)
-     * @throws OutOfReach if the shots run out or the shot does not come down in time
+     * @throws ShotsRanOut if the shots run out
+     * @throws OutOfReach if the shot does not come down in time
      */
     private double shoot(double horizontalSpeed, double vy, double distance) {
         if (shots == maxShots) {
-            throw new OutOfReach("no hit within " + maxShots + " shots");
+            throw new ShotsRanOut();
         }
         ++shots;
         if (!simulator.fire((float) horizontalSpeed, (float) vy, landing)) {
@@ -213,12 +230,25 @@ public final class IterativeAim {
             bestMiss = miss;
             bestVy = vy;
         }
+        if (Math.abs(miss) < Math.abs(closestMiss)) {
+            closestMiss = miss;
+            closestVy = vy;
+        }
         return miss;
     }
 
     private AimResult hit(double horizontalSpeed, double vy, double distance) {
         return new AimResult(METHOD, true, horizontalSpeed, vy, landing.getTimeSeconds(),
                 landing.getX(), distance, shots, "hit");
+    }
+
+    /** Ends a search that used up its shots without a hit; caught in {@link #aim}. */
+    private static final class ShotsRanOut extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        ShotsRanOut() {
+            super(null, null, false, false);
+        }
     }
 
     /** Ends a search that cannot hit; caught in {@link #aim}. */

@@ -14,6 +14,8 @@ public final class ShotSimulator {
 
     private final ParticleIntegrator integrator;
     private final Particle bullet;
+    /** The mass of the bullets fired by {@link #fire(float, float, Landing)}. */
+    private final float massKg;
     private final float stepSeconds;
     private final int maxSteps;
 
@@ -34,6 +36,7 @@ public final class ShotSimulator {
         this.integrator = integrator;
         this.bullet = new Particle();
         bullet.setMass(massKg);
+        this.massKg = massKg;
         this.stepSeconds = Validate.positive(stepSeconds, "step h (s)");
         Validate.positive(maxFlightSeconds, "max flight time (s)");
         this.maxSteps = (int) Math.min(Integer.MAX_VALUE - 1L,
@@ -50,7 +53,7 @@ public final class ShotSimulator {
     }
 
     /**
-     * Fire one shot from the origin with velocity {@code (vx, vy, 0)}.
+     * Fire one shot of the simulator's mass from the origin with velocity {@code (vx, vy, 0)}.
      *
      * @param horizontalSpeed vx (in m/s, finite)
      * @param verticalSpeed vy (in m/s, finite)
@@ -60,13 +63,16 @@ public final class ShotSimulator {
     public boolean fire(float horizontalSpeed, float verticalSpeed, Landing storeResult) {
         Validate.finite(horizontalSpeed, "horizontal speed vx (m/s)");
         Validate.finite(verticalSpeed, "vertical speed vy (m/s)");
+        // fire(Particle, Landing) may have left another mass in the reused bullet.
+        bullet.setMass(massKg);
         bullet.position.zero();
         bullet.velocity.set(horizontalSpeed, verticalSpeed, 0f);
         return flyUntilGround(storeResult);
     }
 
     /**
-     * Fire one shot from a given state and step it until it comes down through {@code y = 0}.
+     * Fire one shot from a given state (its mass included) and step it until it comes down
+     * through {@code y = 0}.
      *
      * @param start the bullet's initial state (its y should be &ge;0; not null, not modified)
      * @param storeResult storage for where it landed (not null, modified)

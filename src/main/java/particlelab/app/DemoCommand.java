@@ -2,6 +2,7 @@ package particlelab.app;
 
 import java.io.File;
 import java.io.PrintStream;
+import java.util.Arrays;
 import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -27,18 +28,16 @@ public final class DemoCommand {
     /** Exit status: the window could not run. */
     public static final int FAILED = 1;
     /** Exit status: bad command line. */
-    public static final int USAGE = 2;
+    public static final int USAGE = UsageException.EXIT_CODE;
 
-    private static final String HELP = String.join("\n",
-            "usage: particle-lab demo [NAME] [options]",
-            "  NAME                the demo to open on (see --list; default: the first)",
-            "  --demo NAME         the same, as an option",
-            "  --list              print the demo names, one per line, and exit",
-            "  --frames N          quit after N frames (N >= 1)",
-            "  --screenshot FILE   save the last frame as a PNG (needs --frames)",
-            "  --fixed-tpf H       feed every frame the same time H seconds (0 < H <= 1),",
-            "                      so a run and its screenshot are reproducible",
-            "  --help              print this help");
+    /** The subcommand's name. */
+    public static final String NAME = "demo";
+    private static final String DEMO = "--demo";
+    private static final String LIST = "--list";
+    private static final String FRAMES = "--frames";
+    private static final String SCREENSHOT = "--screenshot";
+    private static final String FIXED_TPF = "--fixed-tpf";
+    private static final float MAX_FIXED_TPF = 1f;
     /** Kept so the level set on jME's loggers is not lost to garbage collection. */
     private static final Logger JME_LOGGER = Logger.getLogger("com.jme3");
     private static final Logger WINDOW_LOGGER = Logger.getLogger("com.jme3.system.lwjgl");
@@ -66,61 +65,77 @@ public final class DemoCommand {
      * @return the exit status: {@link #OK}, {@link #FAILED} or {@link #USAGE}
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        Options options = declareOptions();
+        String[] optionArgs = args;
         String name = null;
-        int frames = 0;
-        File screenshot = null;
-        float fixedTpf = Float.NaN;
+        if (args.length > 0 && !args[0].startsWith("-")) {
+            // "particle-lab demo aiming ...": the demo's name may come first, without --demo.
+            name = args[0];
+            optionArgs = Arrays.copyOfRange(args, 1, args.length);
+        }
+        int frames;
+        File screenshot;
+        float fixedTpf;
         try {
-            for (int i = 0; i < args.length; ++i) {
-                String arg = args[i];
-                switch (arg) {
-                    case "--help":
-                    case "-h":
-                        out.println(HELP);
-                        return OK;
-                    case "--list":
-                        for (String demo : DemoCatalog.names()) {
-                            out.println(demo);
-                        }
-                        return OK;
-                    case "--demo":
-                        name = value(args, ++i, arg);
-                        break;
-                    case "--frames":
-                        frames = parseFrames(value(args, ++i, arg));
-                        break;
-                    case "--screenshot":
-                        screenshot = new File(value(args, ++i, arg));
-                        break;
-                    case "--fixed-tpf":
-                        fixedTpf = parseTpf(value(args, ++i, arg));
-                        break;
-                    default:
-                        if (arg.startsWith("-") || name != null) {
-                            throw new IllegalArgumentException("unknown argument '" + arg
-                                    + "'");
-                        }
-                        name = arg;
-                        break;
+            options.parse(optionArgs);
+            if (options.isHelpRequested()) {
+                out.print(options.help());
+                return OK;
+            }
+            if (options.has(LIST)) {
+                for (String demo : DemoCatalog.names()) {
+                    out.println(demo);
                 }
+                return OK;
+            }
+            if (name != null && options.has(DEMO)) {
+                throw new UsageException(DEMO + ": the demo was already named " + name
+                        + "; give it once");
+            }
+            name = options.string(DEMO, name);
+            frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
+            String file = options.string(SCREENSHOT, null);
+            screenshot = file == null ? null : new File(file);
+            fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF) : Float.NaN;
+            if (fixedTpf > MAX_FIXED_TPF) {
+                throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
+                        + " s, but was " + fixedTpf);
             }
             if (screenshot != null && frames == 0) {
-                throw new IllegalArgumentException("--screenshot needs --frames N, so the"
-                        + " app knows which frame to save");
+                throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
+                        + " knows which frame to save");
             }
-        } catch (IllegalArgumentException e) {
-            err.println("particle-lab demo: " + e.getMessage());
-            err.println("try 'particle-lab demo --help'");
+        } catch (UsageException e) {
+            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
         }
         int index = name == null ? 0 : DemoCatalog.indexOf(name);
         if (index < 0) {
-            err.println("particle-lab demo: no demo named '" + name + "'; the demos are "
-                    + String.join(", ", DemoCatalog.names()));
+            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + name
+                    + "'; the demos are " + String.join(", ", DemoCatalog.names()));
             return USAGE;
         }
         return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
                 err);
+    }
+
+    /**
+     * Declare the command's options, for parsing and for its help.
+     *
+     * @return new options (not null)
+     */
+    static Options declareOptions() {
+        return new Options(Main.PROGRAM + " " + NAME + " [NAME]",
+                "Open the window on one of the lecture's demos (NAME or --demo NAME;"
+                        + " default: the first).")
+                .value(DEMO, "NAME", "the demo to open on; see --list")
+                .flag(LIST, "print the demo names, one per line, and exit")
+                .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
+                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames)")
+                .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
+                        + " (0 < H <= 1), so a run and its screenshot are reproducible")
+                .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
+                        + " no OpenGL), 2 on a bad command line.");
     }
 
     /**
@@ -199,38 +214,5 @@ public final class DemoCommand {
 
     private static boolean isBlank(String value) {
         return value == null || value.isBlank();
-    }
-
-    private static String value(String[] args, int index, String option) {
-        if (index >= args.length) {
-            throw new IllegalArgumentException(option + " needs a value");
-        }
-        return args[index];
-    }
-
-    private static int parseFrames(String text) {
-        try {
-            int frames = Integer.parseInt(text);
-            if (frames >= 1) {
-                return frames;
-            }
-        } catch (NumberFormatException e) {
-            // reported below
-        }
-        throw new IllegalArgumentException("--frames must be a whole number >= 1, but was '"
-                + text + "'");
-    }
-
-    private static float parseTpf(String text) {
-        try {
-            float tpf = Float.parseFloat(text);
-            if (tpf > 0f && tpf <= 1f) {
-                return tpf;
-            }
-        } catch (NumberFormatException e) {
-            // reported below
-        }
-        throw new IllegalArgumentException("--fixed-tpf must be a time in seconds, > 0 and"
-                + " <= 1, but was '" + text + "'");
     }
 }

@@ -1,30 +1,121 @@
 package particlelab.app;
 
+import java.io.BufferedOutputStream;
+import java.io.FileDescriptor;
+import java.io.FileOutputStream;
+import java.io.PrintStream;
 import java.util.Arrays;
 
 /**
- * The {@code particle-lab} command: no arguments open the window on the first demo (what
- * {@code gradle run} does); {@code demo ...} opens it with options (see {@link DemoCommand}).
+ * The {@code particle-lab} launcher: with no arguments it opens the window; otherwise the first
+ * argument names a subcommand ({@code trajectory}, {@code aim}, {@code demo}, {@code report},
+ * {@code help}). Each subcommand returns an exit code; {@link #main} exits with it only when it
+ * is not zero, so a window keeps running after {@code main} returns.
  */
 public final class Main {
+
+    /** The launcher's name, as the installed script calls it. */
+    public static final String PROGRAM = "particle-lab";
+    /** The help subcommand: alone, or followed by a command whose help to show. */
+    public static final String HELP = "help";
+
+    private static final String DEMO = DemoCommand.NAME;
+    private static final String REPORT = "report";
+    private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
+            + ", " + DEMO + ", " + REPORT + ", " + HELP;
 
     private Main() {
     }
 
     /**
-     * Run the command.
+     * Run the launcher and exit with the subcommand's code when it is not zero.
      *
-     * @param args the command line
+     * @param args the command line (not null)
      */
     public static void main(String[] args) {
+        // Buffer stdout: a trajectory may print a million rows.
+        PrintStream out = new PrintStream(
+                new BufferedOutputStream(new FileOutputStream(FileDescriptor.out)), false);
+        int code = run(args, out, System.err);
+        out.flush();
+        if (code != 0) {
+            System.exit(code);
+        }
+    }
+
+    /**
+     * Run the launcher without exiting: what tests call.
+     *
+     * @param args the command line (not null)
+     * @param out where results and help go (not null)
+     * @param err where warnings and error lines go (not null)
+     * @return the exit code: 0 on success, 2 on a bad command line
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
         if (args.length == 0) {
-            System.exit(DemoCommand.run(args, System.out, System.err));
+            // What gradle run does: the window on the first demo, until it is closed.
+            return DemoCommand.run(args, out, err);
         }
-        if ("demo".equals(args[0])) {
-            System.exit(DemoCommand.run(Arrays.copyOfRange(args, 1, args.length), System.out,
-                    System.err));
+        String command = args[0];
+        String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        switch (command) {
+            case TrajectoryCommand.NAME:
+                return TrajectoryCommand.run(rest, out, err);
+            case AimCommand.NAME:
+                return AimCommand.run(rest, out, err);
+            case DEMO:
+                return DemoCommand.run(rest, out, err);
+            case REPORT:
+                return notWiredYet(REPORT, err);
+            case HELP:
+                if (rest.length == 1 && !rest[0].startsWith("-")) {
+                    // "help COMMAND" is "COMMAND --help".
+                    return run(new String[] {rest[0], Options.HELP}, out, err);
+                }
+                out.print(help());
+                return 0;
+            case Options.HELP:
+            case Options.SHORT_HELP:
+                out.print(help());
+                return 0;
+            default:
+                err.println(PROGRAM + ": unknown command " + command + "; the commands are "
+                        + COMMANDS + " (see " + PROGRAM + " --help)");
+                return UsageException.EXIT_CODE;
         }
-        System.err.println("particle-lab: unknown command '" + args[0] + "'; try 'demo'");
-        System.exit(2);
+    }
+
+    /**
+     * Describe the launcher and its subcommands.
+     *
+     * @return the help text, lines ending in '\n' (not null)
+     */
+    public static String help() {
+        return "Usage: " + PROGRAM + " [COMMAND [OPTIONS]]\n"
+                + "Particle Lab: the lecture's game particle physics, every particle moved by\n"
+                + "the same semi-implicit Euler step.\n"
+                + "\n"
+                + "With no command, opens the window with the lecture's demos.\n"
+                + "\n"
+                + "Commands:\n"
+                + "  trajectory  print one particle's stepped trajectory as CSV\n"
+                + "  aim         find vy that lands a level shot at distance S (lecture,\n"
+                + "              discrete or iterative) and fire it\n"
+                + "  demo        open the window on one demo (--list, --frames, --screenshot)\n"
+                + "  report      write the accuracy and speed report\n"
+                + "  help        show this help; help COMMAND shows that command's help\n"
+                + "\n"
+                + "Every option of a command, with defaults and units: " + PROGRAM
+                + " COMMAND --help.\n"
+                + "The demo and report commands are described by " + PROGRAM + " demo --help\n"
+                + "and " + PROGRAM + " report --help.\n"
+                + "\n"
+                + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr.\n";
+    }
+
+    /** A subcommand that lives on another branch: wired in at merge. */
+    private static int notWiredYet(String command, PrintStream err) {
+        err.println(PROGRAM + ": the " + command + " command is not wired yet");
+        return UsageException.EXIT_CODE;
     }
 }

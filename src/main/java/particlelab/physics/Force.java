@@ -32,10 +32,13 @@ public interface Force {
     }
 
     /**
-     * Return how fast this force damps the particle's speed at its current state, the rate
-     * {@code λ} (per second) for which the Euler step scales the speed by {@code 1 − λh}.
-     * The integrator stays stable while {@code h < 2/λ} and never reverses the velocity while
-     * {@code h < 1/λ}. Forces that do not depend on velocity return 0.
+     * Return how fast this force damps a small change of the particle's velocity at its
+     * current state: the rate {@code λ} (per second) for which the Euler step scales such a
+     * change by {@code 1 − λh}, the largest eigenvalue of {@code −(∂F/∂V)/m}. The integrator
+     * stays stable (small changes die out) while {@code h < 2/λ} and does not overshoot
+     * (reverse the velocity, or swing about a terminal velocity) while {@code h < 1/λ}.
+     * Linear drag gives {@code b/m}; quadratic drag {@code 2c·|V|/m}. Rates of several forces
+     * add. Forces that do not depend on velocity return 0.
      *
      * @param particle the particle (not null, not modified)
      * @return the damping rate (in 1/s, &ge;0)

@@ -27,6 +27,10 @@ public final class ParticleIntegrator {
     private final Vector3f netForce = new Vector3f();
     /** Scratch: a = g + F/m (m/s²). */
     private final Vector3f acceleration = new Vector3f();
+    /** Scratch: the velocity after the step (m/s), committed only if finite. */
+    private final Vector3f nextVelocity = new Vector3f();
+    /** Scratch: the position after the step (m), committed only if finite. */
+    private final Vector3f nextPosition = new Vector3f();
 
     /**
      * Create an integrator for a scene's forces.
@@ -40,7 +44,8 @@ public final class ParticleIntegrator {
         }
         for (int i = 0; i < forces.length; ++i) {
             if (forces[i] == null) {
-                throw new IllegalArgumentException("forces[" + i + "] must be a force, but was null");
+                throw new IllegalArgumentException(
+                        "forces[" + i + "] must be a force, but was null");
             }
         }
         this.forces = forces.clone();
@@ -49,10 +54,11 @@ public final class ParticleIntegrator {
     /**
      * Advance one particle by one Euler step.
      *
-     * @param particle the particle to move (not null, modified)
+     * @param particle the particle to move (not null, modified unless the step fails)
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0; 0 does nothing)
-     * @throws IllegalStateException if the step leaves the particle with a NaN or infinite
-     *     component (the step was far beyond the stability limit): stop rather than spread NaN
+     * @throws IllegalStateException if the step would leave the particle with a NaN or
+     *     infinite component (the step was far beyond the stability limit): stop rather than
+     *     spread NaN. The particle then keeps its last finite state.
      */
     public void step(Particle particle, float stepSeconds) {
         checkStep(stepSeconds);
@@ -61,13 +67,16 @@ public final class ParticleIntegrator {
         }
         acceleration(particle, acceleration);
         // V ← V + h·a, then P ← P + h·V with the new V
-        particle.velocity.scaleAdd(stepSeconds, acceleration, particle.velocity);
-        particle.position.scaleAdd(stepSeconds, particle.velocity, particle.position);
-        if (!particle.isFinite()) {
+        nextVelocity.set(particle.velocity).scaleAdd(stepSeconds, acceleration, nextVelocity);
+        nextPosition.set(particle.position).scaleAdd(stepSeconds, nextVelocity, nextPosition);
+        if (!Validate.isFinite(nextVelocity) || !Validate.isFinite(nextPosition)) {
             throw new IllegalStateException("the Euler step h=" + stepSeconds
-                    + " s left the particle non-finite: " + particle
-                    + "; the largest stable step is " + maxStableStep(particle) + " s");
+                    + " s would leave the particle non-finite: " + particle
+                    + " would get P=" + nextPosition + ", V=" + nextVelocity
+                    + "; the largest stable step here is " + maxStableStep(particle) + " s");
         }
+        particle.velocity.set(nextVelocity);
+        particle.position.set(nextPosition);
     }
 
     /**
@@ -117,9 +126,10 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Return the largest step for which the Euler step does not blow up at the particle's
-     * current state: {@code 2/λ} (linear drag: {@code 2m/b}; quadratic drag:
-     * {@code 2m/(c·|V|)}).
+     * Return the largest step for which the Euler step is stable at the particle's current
+     * state, small changes of the velocity dying out rather than growing: {@code 2/λ} (linear
+     * drag: {@code 2m/b}; quadratic drag: {@code m/(c·|V|)}, which at the terminal speed
+     * {@code v_t} is {@code v_t/g}).
      *
      * @param particle the particle (not null, not modified)
      * @return the limit (in seconds, &gt;0; infinite when nothing damps)
@@ -129,8 +139,10 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Return the largest step for which the Euler step never reverses the velocity (no
-     * oscillation): {@code 1/λ} (linear drag: {@code m/b}; quadratic drag: {@code m/(c·|V|)}).
+     * Return the largest step for which the Euler step does not overshoot at the particle's
+     * current state: {@code 1/λ} (linear drag: {@code m/b}, beyond which the velocity flips
+     * sign every step; quadratic drag: {@code m/(2c·|V|)}, beyond which the speed swings about
+     * its terminal value; drag alone reverses the velocity only beyond {@code m/(c·|V|)}).
      *
      * @param particle the particle (not null, not modified)
      * @return the limit (in seconds, &gt;0; infinite when nothing damps)

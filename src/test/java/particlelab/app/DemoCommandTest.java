@@ -24,19 +24,27 @@ class DemoCommandTest {
     @Test
     void badArgumentsAreUsageErrorsThatSayWhy() {
         assertEquals(DemoCommand.USAGE, run("--frames", "zero"));
-        assertTrue(text(err).contains("--frames must be a whole number >= 1, but was 'zero'"));
+        assertTrue(text(err).startsWith("particle-lab demo: --frames: must be a whole number"),
+                text(err));
         err.reset();
         assertEquals(DemoCommand.USAGE, run("--fixed-tpf", "-1"));
-        assertTrue(text(err).contains("--fixed-tpf must be a time in seconds"));
+        assertTrue(text(err).contains("--fixed-tpf"), text(err));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("--fixed-tpf", "2"));
+        assertTrue(text(err).contains("--fixed-tpf: must be at most 1.0 s, but was 2.0"),
+                text(err));
         err.reset();
         assertEquals(DemoCommand.USAGE, run("rotation"));
         assertTrue(text(err).contains("no demo named 'rotation'; the demos are uniform,"));
         err.reset();
         assertEquals(DemoCommand.USAGE, run("aiming", "--screenshot", "x.png"));
-        assertTrue(text(err).contains("--screenshot needs --frames N"));
+        assertTrue(text(err).contains("--screenshot: needs --frames N"), text(err));
         err.reset();
         assertEquals(DemoCommand.USAGE, run("aiming", "--frames"));
-        assertTrue(text(err).contains("--frames needs a value"));
+        assertTrue(text(err).contains("--frames: needs a value"), text(err));
+        err.reset();
+        assertEquals(DemoCommand.USAGE, run("aiming", "--demo", "drag"));
+        assertTrue(text(err).contains("already named aiming"), text(err));
     }
 
     @Test

@@ -1,0 +1,249 @@
+package particlelab.app;
+
+import com.jme3.math.Vector3f;
+import java.io.PrintStream;
+import particlelab.aiming.AimResult;
+import particlelab.aiming.IterativeAim;
+import particlelab.aiming.Landing;
+import particlelab.aiming.LevelAim;
+import particlelab.aiming.ShotSimulator;
+import particlelab.physics.Gravity;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+
+/**
+ * {@code particle-lab aim}: HelloAiming on the command line. Gun and target are level, S
+ * apart; vx is given; the command finds vy by the lecture's formula, the discrete correction
+ * or iterative shoot-and-adjust, then fires that shot with the shared integrator at the given
+ * step and forces and reports where it lands.
+ *
+ * <p>Decisions the issue left open, also stated in the help text:
+ * <ul>
+ * <li>Every method's shot is stepped with the given drag, so {@code lecture} and
+ * {@code discrete} (closed forms for gravity alone) show how far drag makes them miss.</li>
+ * <li>The flight time reported is the stepped shot's, at its interpolated ground crossing,
+ * the same shot as the landing; the readable output also shows the formula's {@code S/vx}.</li>
+ * <li>vy is reported as fired: the float the bullet was launched with.</li>
+ * <li>With linear drag a target at {@code S ≥ vx·m/b} is out of reach for every method; the
+ * iterative method also finds out by itself, for the slightly shorter reach of the stepped
+ * bullet and for quadratic drag.</li>
+ * </ul>
+ */
+public final class AimCommand {
+
+    /** The subcommand's name. */
+    public static final String NAME = "aim";
+    /** The CSV header, exactly. */
+    public static final String HEADER = "method,vx,vy,flight_time,landing_x,miss,shots";
+    /** The default tolerance of the iterative method (in metres). */
+    public static final float DEFAULT_TOLERANCE_METRES = 0.001f;
+    /** The most shots the iterative method fires. */
+    public static final int MAX_SHOTS = 100;
+    /** A shot still in the air after this long never lands (in seconds). */
+    public static final float MAX_FLIGHT_SECONDS = 3600f;
+
+    private static final String COMMAND = "particle-lab " + NAME;
+    private static final String LECTURE = "lecture";
+    private static final String DISCRETE = "discrete";
+    private static final String DISTANCE = "--distance";
+    private static final String VX = "--vx";
+    private static final String G = "--g";
+    private static final String TPF = "--tpf";
+    private static final String MASS = "--mass";
+    private static final String LINEAR_DRAG = "--linear-drag";
+    private static final String QUADRATIC_DRAG = "--quadratic-drag";
+    private static final String METHOD = "--method";
+    private static final String TOLERANCE = "--tolerance";
+    private static final String CSV = "--csv";
+
+    private AimCommand() {
+    }
+
+    /**
+     * Declare this command's options (also the source of its help text).
+     *
+     * @return new, unparsed options (not null)
+     */
+    public static Options options() {
+        return new Options(COMMAND, "Find the vertical launch speed vy that lands a shot on a"
+                + " level target at distance S, vx given, then step that shot with the shared"
+                + " Euler integrator and report where it lands.")
+                .value(DISTANCE, "S", "distance to the target S (m, > 0). Required.")
+                .value(VX, "VX", "horizontal launch speed vx (m/s, > 0). Required.")
+                .value(G, "G", "magnitude of gravity g, pointing down (m/s^2, > 0). Default"
+                        + " 9.8.")
+                .value(TPF, "H", "time step h of the stepped shot (s, > 0), a decimal or a"
+                        + " fraction such as 1/60. Default 1/60.")
+                .value(MASS, "KG", "bullet mass m (kg, > 0). Default 1.")
+                .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
+                        + " Default 0: none.")
+                .value(QUADRATIC_DRAG, "C", "quadratic drag c in F = -c*|V|*V (kg/m, >= 0)."
+                        + " Default 0: none.")
+                .value(METHOD, "NAME", "lecture: vy = g*S/(2*vx), exact for the continuous"
+                        + " parabola, lands vx*h short when stepped; discrete: the correction"
+                        + " that makes the stepped shot land at S (g*(S/vx + h)/2 when S/(vx*h)"
+                        + " is whole); iterative: shoot, see where it lands, adjust vy (handles"
+                        + " drag). Default lecture.")
+                .value(TOLERANCE, "METRES", "iterative only: stop once the landing is this"
+                        + " close to S (m, > 0). Default " + DEFAULT_TOLERANCE_METRES + ". Float"
+                        + " round-off (vy is fired as a float) limits it to about 1e-5 m at"
+                        + " 100 m.")
+                .flag(CSV, "print one CSV row under the header " + HEADER + " instead of text.")
+                .note("Every method's shot is fired from the origin and stepped at h with the"
+                        + " given forces until it crosses y = 0; landing_x and flight_time are"
+                        + " read at the crossing, interpolated inside the last step; miss is"
+                        + " landing_x - S (negative: short); shots counts the simulated shots"
+                        + " (1 for lecture and discrete, which are closed forms for gravity"
+                        + " alone: with drag their shot still flies with drag and shows the"
+                        + " miss). vy is printed as fired, a float.")
+                .note("Out of reach: with linear drag no launch passes vx*m/b, so S >= vx*m/b"
+                        + " is refused for every method; the iterative method also reports a"
+                        + " target it cannot reach (the stepped bullet's reach, quadratic drag's"
+                        + " peak reach) or cannot hit within " + MAX_SHOTS + " shots.")
+                .note("Stability: when h exceeds 2/lambda or 1/lambda at the launch, lambda ="
+                        + " b/m + c*|V|/m, a warning goes to stderr and the shot flies as"
+                        + " asked.")
+                .note("Exit status: 0 on success; 2 on a bad command line or a target out of"
+                        + " reach, with one line on stderr.");
+    }
+
+    /**
+     * Run the command.
+     *
+     * @param args the arguments after "aim" (not null)
+     * @param out where the result or help goes (not null)
+     * @param err where warnings and the error line go (not null)
+     * @return the exit code: 0 on success, 2 on a bad command line or a target out of reach
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        Options options = options();
+        try {
+            options.parse(args);
+            if (options.isHelpRequested()) {
+                out.print(options.help());
+                return 0;
+            }
+            float distance = options.positiveFloat(DISTANCE);
+            float vx = options.positiveFloat(VX);
+            float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
+            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+            float mass = options.positiveFloat(MASS, CommandSupport.DEFAULT_MASS_KG);
+            float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
+            float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
+            String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,
+                    IterativeAim.METHOD);
+            float tolerance = options.positiveFloat(TOLERANCE, DEFAULT_TOLERANCE_METRES);
+            if (options.has(TOLERANCE) && !IterativeAim.METHOD.equals(method)) {
+                throw new UsageException(TOLERANCE + ": applies only to " + METHOD + " "
+                        + IterativeAim.METHOD + ", but the method is " + method);
+            }
+            if (linearDrag > 0f && distance >= (double) vx * mass / linearDrag) {
+                throw new UsageException(DISTANCE + ": the target at S=" + distance + " m is out"
+                        + " of reach at vx=" + vx + " m/s with linear drag b=" + linearDrag
+                        + " and mass m=" + mass + ": no launch passes vx*m/b = "
+                        + (float) ((double) vx * mass / linearDrag) + " m");
+            }
+
+            ParticleIntegrator integrator = CommandSupport.integrator(
+                    new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
+            ShotSimulator simulator =
+                    new ShotSimulator(integrator, mass, step, MAX_FLIGHT_SECONDS);
+            AimResult result;
+            try {
+                // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
+                double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
+                result = aim(method, simulator, gravity, distance, vx, step, toleranceMetres);
+            } catch (IllegalStateException nonFinite) {
+                float limit = integrator.maxStableStep(launch(vx,
+                        (float) LevelAim.lectureVy(gravity, distance, vx), mass));
+                throw CommandSupport.blewUp(step, "during a shot", limit);
+            }
+            CommandSupport.warnIfUnstable(integrator,
+                    launch(vx, (float) result.getVerticalSpeed(), mass), step, err);
+            if (options.has(CSV)) {
+                printCsv(result, out);
+            } else {
+                printText(result, linearDrag > 0f || quadraticDrag > 0f, tolerance, out);
+            }
+            return 0;
+        } catch (UsageException problem) {
+            return CommandSupport.reportUsage(COMMAND, problem, err);
+        }
+    }
+
+    /**
+     * Aim by the method chosen and fire the shot.
+     *
+     * @return a result whose shot landed (not null)
+     * @throws UsageException if the target is out of reach or the shot never lands
+     */
+    private static AimResult aim(String method, ShotSimulator simulator, float gravity,
+            float distance, float vx, float step, double tolerance) {
+        if (IterativeAim.METHOD.equals(method)) {
+            AimResult result = new IterativeAim(simulator, gravity, tolerance, MAX_SHOTS)
+                    .aim(distance, vx);
+            if (!result.isHit()) {
+                String option = result.getExplanation().contains("out of reach")
+                        ? DISTANCE : TOLERANCE;
+                throw new UsageException(option + ": " + result.getExplanation());
+            }
+            return result;
+        }
+        double vy = LECTURE.equals(method)
+                ? LevelAim.lectureVy(gravity, distance, vx)
+                : LevelAim.discreteVy(gravity, distance, vx, step);
+        float firedVy = (float) vy;
+        Landing landing = new Landing();
+        if (!simulator.fire(vx, firedVy, landing)) {
+            throw new UsageException(DISTANCE + ": the " + method + " shot with vy=" + firedVy
+                    + " m/s is still in the air after " + MAX_FLIGHT_SECONDS + " s; the target"
+                    + " at S=" + distance + " m is out of reach");
+        }
+        double miss = landing.getX() - distance;
+        return new AimResult(method, Math.abs(miss) <= tolerance, vx, firedVy,
+                landing.getTimeSeconds(), landing.getX(), distance, 1, "closed form");
+    }
+
+    private static Particle launch(float vx, float vy, float mass) {
+        return new Particle(Vector3f.ZERO, new Vector3f(vx, vy, 0f), mass);
+    }
+
+    private static void printCsv(AimResult result, PrintStream out) {
+        out.println(HEADER);
+        out.println(result.getMethod() + "," + (float) result.getHorizontalSpeed() + ","
+                + (float) result.getVerticalSpeed() + "," + result.getFlightSeconds() + ","
+                + result.getLandingX() + "," + result.getMiss() + "," + result.getShots());
+    }
+
+    private static void printText(AimResult result, boolean drag, float tolerance,
+            PrintStream out) {
+        String method = result.getMethod();
+        double distance = result.getTargetDistance();
+        double vx = result.getHorizontalSpeed();
+        if (LECTURE.equals(method)) {
+            out.println("method:            lecture, vy = g*S/(2*vx)");
+        } else if (DISCRETE.equals(method)) {
+            out.println("method:            discrete, vy corrected for the stepped shot");
+        } else {
+            out.println("method:            iterative, shoot and adjust (tolerance "
+                    + tolerance + " m)");
+        }
+        out.println("launch:            vx = " + (float) vx + " m/s, vy = "
+                + (float) result.getVerticalSpeed() + " m/s");
+        String flight = "flight time:       " + result.getFlightSeconds() + " s (stepped shot)";
+        if (!IterativeAim.METHOD.equals(method)) {
+            flight += "; formula S/vx = " + LevelAim.flightTime(distance, vx) + " s";
+        }
+        out.println(flight);
+        out.println("predicted landing: " + result.getLandingX() + " m (target S = "
+                + (float) distance + " m)");
+        double miss = result.getMiss();
+        out.println("miss:              " + miss + " m" + (miss < 0.0 ? " (short)"
+                : miss > 0.0 ? " (long)" : ""));
+        out.println("shots simulated:   " + result.getShots());
+        if (drag && !IterativeAim.METHOD.equals(method)) {
+            out.println("note:              the " + method + " formula ignores drag; the"
+                    + " stepped shot includes it");
+        }
+    }
+}

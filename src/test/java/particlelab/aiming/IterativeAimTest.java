@@ -1,0 +1,141 @@
+package particlelab.aiming;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import particlelab.physics.Force;
+import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.QuadraticDrag;
+
+class IterativeAimTest {
+
+    private static final double G = 9.8;
+    private static final float VX = 20f;
+    private static final float H = 1f / 60f;
+    private static final float MAX_FLIGHT_SECONDS = 600f;
+    private static final int MAX_SHOTS = 100;
+    /** A convergent search needs 6 to 9 shots here (measured); 12 leaves room. */
+    private static final int FEW_SHOTS = 12;
+
+    private static IterativeAim aimer(double toleranceMetres, int maxShots, Force... forces) {
+        ShotSimulator simulator = new ShotSimulator(new ParticleIntegrator(forces), 1f, H,
+                MAX_FLIGHT_SECONDS);
+        return new IterativeAim(simulator, G, toleranceMetres, maxShots);
+    }
+
+    private static void assertHit(AimResult result, double toleranceMetres) {
+        assertTrue(result.isHit(), result.toString());
+        assertEquals("hit", result.getExplanation());
+        assertTrue(Math.abs(result.getMiss()) <= toleranceMetres, result.toString());
+        assertTrue(result.getShots() <= FEW_SHOTS, result.toString());
+    }
+
+    /**
+     * Without drag the search must find the discrete correction. The level landing moves by
+     * dS/dvy = 2·vx/g ≈ 4.08 m per m/s, so a landing within the tolerance plus the float
+     * round-off (N·ulp(S), see LevelAimTest) pins vy to that over 4.08.
+     */
+    @Test
+    void gravityOnlyFindsTheDiscreteCorrection() {
+        double tolerance = 1e-3;
+        AimResult result = aimer(tolerance, MAX_SHOTS, new Gravity()).aim(97.3, VX);
+        assertHit(result, tolerance);
+        double roundOff = 97.3 / (VX * H) * Math.ulp(97.3f);
+        assertEquals(LevelAim.discreteVy(G, 97.3, VX, H), result.getVerticalSpeed(),
+                (tolerance + roundOff) / (2.0 * VX / G));
+    }
+
+    /**
+     * Linear drag k = 0.1/s, vx = 20, S = 100: NUMERICS.md gives the discrete-exact vy
+     * 38.07081435156614, whose crossing is found from the closed form at a fractional step
+     * count. The simulator reads the crossing off the chord between two samples instead; the
+     * chord sags below the samples' curve by at most g·h²/8 = 3.4e-4 m, which at the landing
+     * slope |vx/vy| = 15.3/12.5 moves the landing by at most 4.2e-4 m. The landing moves
+     * 1.655 m per m/s of vy here (central difference of stepped shots), so vy may differ by
+     * (4.2e-4 + tolerance)/1.655. Measured in double: the chord's own answer is 6.8e-5 m/s
+     * above the reference.
+     */
+    @Test
+    void linearDragMatchesTheDiscreteExactReference() {
+        double tolerance = 1e-4;
+        AimResult result = aimer(tolerance, MAX_SHOTS, new Gravity(), new LinearDrag(0.1f))
+                .aim(100.0, VX);
+        assertHit(result, tolerance);
+        double landingShift = G * H * H / 8.0 * (15.3 / 12.5);
+        assertEquals(38.07081435156614, result.getVerticalSpeed(),
+                (landingShift + tolerance) / 1.655);
+    }
+
+    @Test
+    void quadraticDragHitsWithinToleranceInFewShots() {
+        double tolerance = 1e-3;
+        // c/m = 0.01: the reach at vx = 20 peaks near 67 m; 50 m is on the rising side.
+        assertHit(aimer(tolerance, MAX_SHOTS, new Gravity(), new QuadraticDrag(0.01f))
+                .aim(50.0, VX), tolerance);
+        assertHit(aimer(tolerance, MAX_SHOTS, new Gravity(), new QuadraticDrag(0.001f))
+                .aim(100.0, VX), tolerance);
+    }
+
+    @Test
+    void hitIsReproducedByFiringItsVyAgain() {
+        ShotSimulator simulator = new ShotSimulator(
+                new ParticleIntegrator(new Gravity(), new QuadraticDrag(0.01f)), 1f, H,
+                MAX_FLIGHT_SECONDS);
+        AimResult result = new IterativeAim(simulator, G, 1e-3, MAX_SHOTS).aim(50.0, VX);
+        Landing landing = new Landing();
+        assertTrue(simulator.fire(VX, (float) result.getVerticalSpeed(), landing));
+        // The same float shot, stepped the same way: identical.
+        assertEquals(result.getLandingX(), landing.getX(), 0.0);
+        assertEquals(result.getFlightSeconds(), landing.getTimeSeconds(), 0.0);
+    }
+
+    /**
+     * Linear drag: no launch passes vx·m/b = 200 m, and the stepped bullet not even
+     * r·vx·m/b = 199.67 m (r = 1 − k·h). Both targets are out of reach.
+     */
+    @Test
+    void linearDragTargetBeyondTheLimitIsOutOfReach() {
+        for (double distance : new double[] {250.0, 199.9}) {
+            AimResult result = aimer(1e-3, MAX_SHOTS, new Gravity(), new LinearDrag(0.1f))
+                    .aim(distance, VX);
+            assertFalse(result.isHit(), result.toString());
+            assertTrue(result.getExplanation().startsWith("target at S=" + distance
+                    + " m is out of reach at vx=20.0 m/s"), result.getExplanation());
+            assertTrue(result.getLandingX() < 199.67, result.toString());
+            assertTrue(result.getShots() < MAX_SHOTS, "found out before the shots ran out");
+        }
+    }
+
+    @Test
+    void quadraticDragTargetBeyondThePeakReachIsOutOfReach() {
+        AimResult result = aimer(1e-3, MAX_SHOTS, new Gravity(), new QuadraticDrag(0.01f))
+                .aim(100.0, VX);
+        assertFalse(result.isHit(), result.toString());
+        assertTrue(result.getExplanation().contains("the reach peaks at about 67.2"),
+                result.getExplanation());
+        // The farthest shot found is the peak reach (about 67.21 m), reported as the landing.
+        assertEquals(67.21, result.getLandingX(), 0.01);
+        assertTrue(result.getShots() <= 40, result.toString());
+    }
+
+    /**
+     * A tolerance finer than the float round-off of a stepped shot cannot be met: the search
+     * runs out of shots and must report its closest shot, not its farthest (which overshoots
+     * by metres).
+     */
+    @Test
+    void toleranceBelowRoundOffRunsOutOfShotsAndReportsTheClosestShot() {
+        int maxShots = 30;
+        AimResult result = aimer(1e-9, maxShots, new Gravity(), new LinearDrag(0.1f))
+                .aim(100.0, VX);
+        assertFalse(result.isHit());
+        assertEquals(maxShots, result.getShots());
+        assertTrue(result.getExplanation().startsWith("no hit within 30 shots"),
+                result.getExplanation());
+        assertEquals(0.0, result.getMiss(), 1e-3, result.toString());
+    }
+}

@@ -1,0 +1,159 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class AimCommandTest {
+
+    private static final double G = 9.8f;
+    private static final double H = 1f / 60f;
+    private static final double VX = 20.0;
+
+    /** One parsed CSV row of {@code aim --csv}. */
+    private static final class Row {
+        final String method;
+        final double vy;
+        final double flightTime;
+        final double landingX;
+        final double miss;
+        final int shots;
+
+        Row(String line) {
+            String[] cells = line.split(",");
+            assertEquals(7, cells.length, line);
+            method = cells[0];
+            vy = Double.parseDouble(cells[2]);
+            flightTime = Double.parseDouble(cells[3]);
+            landingX = Double.parseDouble(cells[4]);
+            miss = Double.parseDouble(cells[5]);
+            shots = Integer.parseInt(cells[6]);
+        }
+    }
+
+    private static Row csv(String... args) {
+        String[] full = new String[args.length + 2];
+        full[0] = "aim";
+        full[1] = "--csv";
+        System.arraycopy(args, 0, full, 2, args.length);
+        CommandRun run = CommandRun.of(full);
+        assertEquals(0, run.code, run.toString());
+        List<String> lines = run.outLines();
+        assertEquals(2, lines.size(), run.toString());
+        assertEquals("method,vx,vy,flight_time,landing_x,miss,shots", lines.get(0));
+        return new Row(lines.get(1));
+    }
+
+    /** N·ulp(S): the float round-off of N steps of position (see LevelAimTest). */
+    private static double roundOff(double distance) {
+        return distance / (VX * H) * Math.ulp((float) distance);
+    }
+
+    /**
+     * The lecture's vy lands vx·h short of S, and a little more: the crossing is read off the
+     * chord between two samples, which moves it short by at most g·h²·vx/(8·vy'), with
+     * vy' = vy − g·h/2 the slope of the samples' parabola (LevelAimTest explains).
+     */
+    @Test
+    void lectureLandsVxHShort() {
+        // The command reads S as a float: 97.3 becomes 97.30000305.
+        for (double distance : new double[] {100.0, 97.3f}) {
+            Row row = csv("--distance", String.valueOf((float) distance), "--vx", "20");
+            assertEquals("lecture", row.method);
+            assertEquals(1, row.shots);
+            double vySamples = row.vy - G * H / 2.0;
+            double sag = G * H * H * VX / (8.0 * vySamples);
+            assertTrue(row.miss <= -VX * H + roundOff(distance)
+                    && row.miss >= -VX * H - sag - roundOff(distance), "miss " + row.miss);
+            assertEquals(row.landingX - distance, row.miss, 1e-12);
+        }
+    }
+
+    /**
+     * The discrete correction lands at S up to the float round-off of the stepped position,
+     * about N·ulp(S) for N = S/(vx·h) steps (measured 1.3e-4 m at S = 100, bound 2.3e-3 m).
+     */
+    @Test
+    void discreteLandsAtSToRoundOff() {
+        for (double distance : new double[] {100.0, 97.3f}) {
+            Row row = csv("--distance", String.valueOf((float) distance), "--vx", "20", "--method",
+                    "discrete");
+            assertEquals("discrete", row.method);
+            assertEquals(0.0, row.miss, roundOff(distance), "miss at S = " + distance);
+        }
+    }
+
+    /**
+     * The flight time of a closed form is the stepped shot's interpolated crossing, as the
+     * help says: with no drag x moves at vx exactly, so landing_x = vx·flight_time up to the
+     * float round-off of x.
+     */
+    @Test
+    void closedFormFlightTimeIsTheSteppedShots() {
+        Row row = csv("--distance", "100", "--vx", "20");
+        assertEquals(row.landingX / VX, row.flightTime, roundOff(100.0) / VX);
+        assertTrue(row.flightTime < 100.0 / VX, "shorter than the formula's S/vx");
+    }
+
+    @Test
+    void iterativeHitsWithinToleranceWithLinearAndQuadraticDrag() {
+        Row linear = csv("--distance", "100", "--vx", "20", "--method", "iterative",
+                "--linear-drag", "0.1", "--tolerance", "0.001");
+        assertEquals("iterative", linear.method);
+        assertTrue(Math.abs(linear.miss) <= 0.001, "miss " + linear.miss);
+        assertTrue(linear.shots >= 2 && linear.shots <= 12, "shots " + linear.shots);
+        Row quadratic = csv("--distance", "50", "--vx", "20", "--method", "iterative",
+                "--quadratic-drag", "0.01", "--tolerance", "0.01", "--mass", "2");
+        assertTrue(Math.abs(quadratic.miss) <= 0.01, "miss " + quadratic.miss);
+        assertTrue(quadratic.shots <= 12, "shots " + quadratic.shots);
+    }
+
+    @Test
+    void closedFormWithDragStillFliesWithDragAndShowsTheMiss() {
+        Row row = csv("--distance", "100", "--vx", "20", "--linear-drag", "0.1");
+        assertTrue(row.miss < -10.0, "drag makes the lecture's shot fall far short: " + row.miss);
+        CommandRun text = CommandRun.of("aim", "--distance", "100", "--vx", "20",
+                "--linear-drag", "0.1");
+        assertTrue(text.out.contains("ignores drag"), text.out);
+    }
+
+    @Test
+    void linearDragTargetAtOrBeyondVxMOverBIsOutOfReach() {
+        for (String method : new String[] {"lecture", "iterative"}) {
+            // vx·m/b = 20·1/0.1 = 200 m.
+            CommandRun run = CommandRun.of("aim", "--distance", "200", "--vx", "20",
+                    "--linear-drag", "0.1", "--method", method);
+            assertEquals(2, run.code);
+            assertEquals("", run.out);
+            assertEquals(List.of("particle-lab aim: --distance: the target at S=200.0 m is out"
+                    + " of reach at vx=20.0 m/s with linear drag b=0.1 and mass m=1.0: no launch"
+                    + " passes vx*m/b = 200.0 m"), run.errLines());
+        }
+    }
+
+    @Test
+    void iterativeReportsATargetBeyondThePeakReachAsOutOfReach() {
+        CommandRun run = CommandRun.of("aim", "--distance", "100", "--vx", "20", "--method",
+                "iterative", "--quadratic-drag", "0.01");
+        assertEquals(2, run.code);
+        assertEquals(1, run.errLines().size(), run.toString());
+        assertTrue(run.err.startsWith("particle-lab aim: --distance: target at S=100.0 m is out"
+                + " of reach at vx=20.0 m/s: the reach peaks at about 67.2"), run.err);
+    }
+
+    @Test
+    void readableOutputNamesMethodVyFlightLandingMissAndShots() {
+        CommandRun run = CommandRun.of("aim", "--distance", "100", "--vx", "20");
+        assertEquals(0, run.code);
+        String[] labels = {"method:", "launch:", "flight time:", "predicted landing:", "miss:",
+                "shots simulated:"};
+        List<String> lines = run.outLines();
+        for (int i = 0; i < labels.length; ++i) {
+            assertTrue(lines.get(i).startsWith(labels[i]), lines.get(i));
+        }
+        assertTrue(lines.get(1).contains("vy = 24.5 m/s"), lines.get(1));
+        assertTrue(lines.get(4).endsWith("(short)"), lines.get(4));
+    }
+}

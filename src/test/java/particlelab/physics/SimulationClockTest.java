@@ -1,0 +1,393 @@
+package particlelab.physics;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * {@link SimulationClock}: frame times in, steps out.
+ *
+ * <p>Time accounting is kept in double from float inputs, so sums of a few hundred frames are
+ * exact to about 1e-16 relative; {@link #ACCOUNTING_TOLERANCE} (1e-12 s) is that with a wide
+ * margin, and far below any step (1/60 s) or the 1e-4·h a step may be taken early.
+ */
+class SimulationClockTest {
+
+    private static final float H = SimulationClock.DEFAULT_STEP_SECONDS;
+    private static final double ACCOUNTING_TOLERANCE = 1e-12;
+    /** How far below zero the leftover may go: the documented 1e-4 of a step. */
+    private static final double LEFTOVER_FLOOR = -1e-4 * H;
+
+    @ParameterizedTest
+    @ValueSource(floats = {0.25f, 1f, 5f})
+    void fixedStepModeSurvivesAHitchWithBoundedStepsAndExactTimeAccounting(float hitch) {
+        SimulationClock clock = new SimulationClock();
+        // Stiff enough (k = 5/s) that a raw 0.5 s step would already flip and grow V.
+        RecordingStepper stepper = RecordingStepper.withParticle(
+                new ParticleIntegrator(new Gravity(), new LinearDrag(5f)));
+        double fed = 0.0;
+        for (int i = 0; i < 30; ++i) {
+            fed += feed(clock, H, stepper);
+        }
+        double simulatedBefore = clock.getSimulatedSeconds();
+        double leftoverBefore = clock.getLeftoverSeconds();
+        double droppedBefore = clock.getDroppedSeconds();
+
+        int steps = clock.advance(hitch, stepper);
+        fed += hitch;
+
+        assertTrue(steps <= clock.getMaxStepsPerFrame(), steps + " steps");
+        // 0.25 s is 15 steps of 1/60 s (up to the round-off the clock tolerates).
+        assertEquals(15, steps);
+        assertTrue(stepper.particle.isFinite(), stepper.particle.toString());
+        // What the frame gave the simulation: exactly the clamped frame, no more.
+        double accepted = clock.getSimulatedSeconds() - simulatedBefore
+                + clock.getLeftoverSeconds() - leftoverBefore;
+        assertEquals(SimulationClock.DEFAULT_MAX_FRAME_SECONDS, accepted, ACCOUNTING_TOLERANCE);
+        // And the rest, exactly: the difference of two floats is exact in double.
+        assertEquals(hitch - (double) SimulationClock.DEFAULT_MAX_FRAME_SECONDS,
+                clock.getDroppedSeconds() - droppedBefore, 0.0);
+
+        for (int i = 0; i < 30; ++i) {
+            fed += feed(clock, H, stepper);
+        }
+        assertConserved(clock, fed);
+        assertEquals(clock.getSimulatedSeconds(), stepper.totalSeconds, ACCOUNTING_TOLERANCE);
+        assertTrue(stepper.particle.isFinite(), stepper.particle.toString());
+    }
+
+    @Test
+    void stepCapLimitsStepsPerFrameAndDropsTheWholeStepsItCannotTake() {
+        SimulationClock clock = new SimulationClock();
+        clock.setMaxStepsPerFrame(4);
+        RecordingStepper stepper = new RecordingStepper();
+
+        int steps = clock.advance(0.25f, stepper);
+
+        assertEquals(4, steps);
+        // 0.25 s is 15 steps: 4 taken, 11 dropped, the leftover within round-off of zero.
+        assertEquals(11.0 * H, clock.getDroppedSeconds(), ACCOUNTING_TOLERANCE);
+        assertLeftoverInRange(clock);
+        assertConserved(clock, 0.25);
+    }
+
+    @Test
+    void framesLongerThanAStepButWithinTheCapsLoseNoTime() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        float[] frames = {0.1f, 0.003f, 0.2f, 0.05f, 0.011f, 0.24f, 0.0167f};
+        double fed = 0.0;
+
+        for (float frame : frames) {
+            fed += feed(clock, frame, stepper);
+            assertLeftoverInRange(clock);
+        }
+
+        assertEquals(0.0, clock.getDroppedSeconds(), 0.0);
+        assertConserved(clock, fed);
+    }
+
+    @Test
+    void rawModeTakesOneStepOfExactlyTheScaledFrameTime() {
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(SimulationClock.Mode.RAW_TPF);
+        clock.setTimeScale(0.5f);
+        RecordingStepper stepper = new RecordingStepper();
+
+        int steps = clock.advance(0.037f, stepper);
+
+        assertEquals(1, steps);
+        assertEquals(1, stepper.steps);
+        assertEquals(0.037f * 0.5f, stepper.lastSeconds, 0f);
+        assertEquals(0.037f * 0.5f, clock.getCurrentStepSeconds(), 0f);
+        assertEquals(0.037f * 0.5f, clock.getLastStepSeconds(), 0f);
+    }
+
+    @Test
+    void rawModePassesAHitchStraightIntoThePhysics() {
+        // That is what the mode is for: one 0.5 s frame at k = 5/s multiplies V by 1 − 2.5.
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(SimulationClock.Mode.RAW_TPF);
+        RecordingStepper stepper = RecordingStepper.withParticle(
+                new ParticleIntegrator(new LinearDrag(5f)));
+        stepper.particle.velocity.set(1f, 0f, 0f);
+
+        assertEquals(1, clock.advance(0.5f, stepper));
+
+        assertEquals(0.5f, stepper.lastSeconds, 0f);
+        assertEquals(-1.5f, stepper.particle.velocity.x, 1e-6f);
+        assertEquals(0.0, clock.getDroppedSeconds(), 0.0);
+    }
+
+    @ParameterizedTest(name = "{1} frames of 1/{0} s take {2} steps of 1/60 s")
+    @CsvSource({"90, 3, 2", "100, 5, 3", "120, 2, 1", "144, 12, 5", "50, 5, 6", "30, 1, 2",
+        "240, 4, 1", "75, 5, 4"})
+    void leftoverIsCarriedAcrossFrames(int framesPerSecond, int frames, int expectedSteps) {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        float tpf = 1f / framesPerSecond;
+        double fed = 0.0;
+
+        for (int i = 0; i < frames; ++i) {
+            fed += feed(clock, tpf, stepper);
+        }
+
+        // The frames add up to whole steps; in float only to round-off, which must not delay
+        // the last step to the next frame.
+        assertEquals(expectedSteps, stepper.steps);
+        assertEquals(0.0, clock.getLeftoverSeconds(), -LEFTOVER_FLOOR);
+        assertConserved(clock, fed);
+    }
+
+    @Test
+    void ninetyHertzFramesAtSixtyHertzStepsFollowTheZeroOneOnePattern() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        int[] stepsPerFrame = new int[9];
+
+        for (int i = 0; i < stepsPerFrame.length; ++i) {
+            stepsPerFrame[i] = clock.advance(1f / 90f, stepper);
+        }
+
+        assertArrayEquals(new int[] {0, 1, 1, 0, 1, 1, 0, 1, 1}, stepsPerFrame);
+        assertEquals(H, stepper.lastSeconds, 0f);
+    }
+
+    @Test
+    void pausedClockTakesNoStepAndCountsNoTime() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        clock.advance(0.01f, stepper);
+        double leftover = clock.getLeftoverSeconds();
+        clock.setPaused(true);
+
+        for (int i = 0; i < 10; ++i) {
+            assertEquals(0, clock.advance(0.1f, stepper));
+        }
+
+        assertTrue(clock.isPaused());
+        assertEquals(0, stepper.steps);
+        assertEquals(0.0, clock.getSimulatedSeconds(), 0.0);
+        assertEquals(leftover, clock.getLeftoverSeconds(), 0.0);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"FIXED_STEP", "RAW_TPF"})
+    void singleStepWhilePausedTakesExactlyOneStepOfH(SimulationClock.Mode mode) {
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(mode);
+        clock.setStepSeconds(0.02f);
+        clock.setPaused(true);
+        RecordingStepper stepper = new RecordingStepper();
+
+        clock.requestSingleStep();
+        int first = clock.advance(0.5f, stepper);
+        int second = clock.advance(0.5f, stepper);
+
+        assertEquals(1, first);
+        assertEquals(0, second);
+        assertEquals(1, stepper.steps);
+        assertEquals(0.02f, stepper.lastSeconds, 0f);
+        assertEquals(0.02f, clock.getSimulatedSeconds(), 0.0);
+    }
+
+    @Test
+    void singleStepRequestWhileRunningIsIgnored() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+
+        clock.requestSingleStep();
+        assertEquals(1, clock.advance(H, stepper));
+        clock.setPaused(true);
+        assertEquals(0, clock.advance(H, stepper));
+
+        assertEquals(1, stepper.steps);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"FIXED_STEP", "RAW_TPF"})
+    void zeroFrameTimeTakesNoStep(SimulationClock.Mode mode) {
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(mode);
+        RecordingStepper stepper = new RecordingStepper();
+
+        assertEquals(0, clock.advance(0f, stepper));
+        assertEquals(0, clock.advance(-0f, stepper));
+
+        assertEquals(0, stepper.steps);
+        assertEquals(0.0, clock.getSimulatedSeconds(), 0.0);
+    }
+
+    @ParameterizedTest
+    @ValueSource(floats = {-1e-3f, -1f, Float.NaN, Float.POSITIVE_INFINITY,
+        Float.NEGATIVE_INFINITY})
+    void rejectsFrameTimeThatIsNegativeOrNotFinite(float bad) {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+
+        IllegalArgumentException thrown = assertThrows(IllegalArgumentException.class,
+                () -> clock.advance(bad, stepper));
+
+        String message = thrown.getMessage();
+        assertTrue(message.contains("tpf") && message.contains(String.valueOf(bad))
+                && message.contains("finite") && message.contains(">= 0"), message);
+        assertEquals(0, stepper.steps);
+        assertEquals(0.0, clock.getLeftoverSeconds(), 0.0);
+    }
+
+    @Test
+    void timeScaleMultipliesEveryFrame() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+
+        clock.setTimeScale(2f);
+        assertEquals(2, clock.advance(H, stepper));
+        clock.setTimeScale(0.5f);
+        assertEquals(0, clock.advance(H, stepper));
+        assertEquals(1, clock.advance(H, stepper));
+
+        assertEquals(3.0 * H, clock.getSimulatedSeconds(), ACCOUNTING_TOLERANCE);
+    }
+
+    @Test
+    void timeScaleAcceptsItsLimits() {
+        SimulationClock clock = new SimulationClock();
+
+        clock.setTimeScale(SimulationClock.MIN_TIME_SCALE);
+        assertEquals(SimulationClock.MIN_TIME_SCALE, clock.getTimeScale(), 0f);
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        assertEquals(SimulationClock.MAX_TIME_SCALE, clock.getTimeScale(), 0f);
+    }
+
+    @ParameterizedTest
+    @ValueSource(floats = {0f, -1f, 1f / 128f, 65f, Float.NaN, Float.POSITIVE_INFINITY})
+    void timeScaleRejectsValuesOutsideItsLimitsNamingThem(float bad) {
+        SimulationClock clock = new SimulationClock();
+
+        IllegalArgumentException thrown = assertThrows(IllegalArgumentException.class,
+                () -> clock.setTimeScale(bad));
+
+        String message = thrown.getMessage();
+        assertTrue(message.contains("time scale") && message.contains(String.valueOf(bad))
+                && message.contains(String.valueOf(SimulationClock.MIN_TIME_SCALE))
+                && message.contains(String.valueOf(SimulationClock.MAX_TIME_SCALE)), message);
+        assertEquals(1f, clock.getTimeScale(), 0f);
+    }
+
+    @ParameterizedTest
+    @ValueSource(floats = {0f, -0.01f, Float.NaN, Float.POSITIVE_INFINITY})
+    void secondsSettersRejectValuesThatAreNotFiniteAndPositive(float bad) {
+        SimulationClock clock = new SimulationClock();
+
+        IllegalArgumentException step = assertThrows(IllegalArgumentException.class,
+                () -> clock.setStepSeconds(bad));
+        IllegalArgumentException frame = assertThrows(IllegalArgumentException.class,
+                () -> clock.setMaxFrameSeconds(bad));
+
+        assertTrue(step.getMessage().contains("fixed step h")
+                && step.getMessage().contains(String.valueOf(bad)), step.getMessage());
+        assertTrue(frame.getMessage().contains("max frame time")
+                && frame.getMessage().contains("> 0"), frame.getMessage());
+        assertEquals(H, clock.getStepSeconds(), 0f);
+        assertEquals(SimulationClock.DEFAULT_MAX_FRAME_SECONDS, clock.getMaxFrameSeconds(), 0f);
+    }
+
+    @Test
+    void otherSettersRejectBadValues() {
+        SimulationClock clock = new SimulationClock();
+
+        IllegalArgumentException cap = assertThrows(IllegalArgumentException.class,
+                () -> clock.setMaxStepsPerFrame(0));
+        assertTrue(cap.getMessage().contains("max steps per frame")
+                && cap.getMessage().contains(">= 1"), cap.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> clock.setMode(null));
+
+        assertEquals(SimulationClock.DEFAULT_MAX_STEPS_PER_FRAME, clock.getMaxStepsPerFrame());
+        assertSame(SimulationClock.Mode.FIXED_STEP, clock.getMode());
+    }
+
+    @Test
+    void toggleModeSwitchesAndResetForgetsTimeButKeepsSettings() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        clock.setStepSeconds(0.01f);
+        clock.setTimeScale(2f);
+        clock.advance(5f, stepper);
+        clock.setPaused(true);
+
+        clock.toggleMode();
+        assertSame(SimulationClock.Mode.RAW_TPF, clock.getMode());
+        clock.reset();
+
+        assertEquals(0.0, clock.getSimulatedSeconds(), 0.0);
+        assertEquals(0.0, clock.getDroppedSeconds(), 0.0);
+        assertEquals(0.0, clock.getLeftoverSeconds(), 0.0);
+        assertEquals(0f, clock.getLastStepSeconds(), 0f);
+        assertSame(SimulationClock.Mode.RAW_TPF, clock.getMode());
+        assertEquals(0.01f, clock.getStepSeconds(), 0f);
+        assertEquals(2f, clock.getTimeScale(), 0f);
+        assertTrue(clock.isPaused());
+        clock.toggleMode();
+        assertSame(SimulationClock.Mode.FIXED_STEP, clock.getMode());
+    }
+
+    /** Advance one frame and return the scaled time fed, for the accounting checks. */
+    private static double feed(SimulationClock clock, float tpf, RecordingStepper stepper) {
+        int steps = clock.advance(tpf, stepper);
+        assertTrue(steps <= clock.getMaxStepsPerFrame(), steps + " steps in one frame");
+        return tpf * clock.getTimeScale();
+    }
+
+    /** Simulated + dropped + leftover == fed, in fixed-step mode without single steps. */
+    private static void assertConserved(SimulationClock clock, double fedSeconds) {
+        double accounted = clock.getSimulatedSeconds() + clock.getDroppedSeconds()
+                + clock.getLeftoverSeconds();
+        assertEquals(fedSeconds, accounted, ACCOUNTING_TOLERANCE, "simulated + dropped + leftover");
+    }
+
+    private static void assertLeftoverInRange(SimulationClock clock) {
+        double leftover = clock.getLeftoverSeconds();
+        assertTrue(leftover >= LEFTOVER_FLOOR && leftover < clock.getStepSeconds(),
+                "leftover " + leftover);
+    }
+
+    /** Counts the steps it is given and, if it has one, steps a particle with them. */
+    private static final class RecordingStepper implements SimulationClock.Stepper {
+        final Particle particle = new Particle();
+        private final ParticleIntegrator integrator;
+        int steps;
+        float lastSeconds;
+        double totalSeconds;
+
+        RecordingStepper() {
+            this(null);
+        }
+
+        private RecordingStepper(ParticleIntegrator integrator) {
+            this.integrator = integrator;
+            particle.velocity.set(10f, 10f, 0f);
+        }
+
+        static RecordingStepper withParticle(ParticleIntegrator integrator) {
+            return new RecordingStepper(integrator);
+        }
+
+        @Override
+        public void step(float stepSeconds) {
+            ++steps;
+            lastSeconds = stepSeconds;
+            totalSeconds += stepSeconds;
+            if (integrator != null) {
+                integrator.step(particle, stepSeconds);
+            }
+        }
+    }
+}
