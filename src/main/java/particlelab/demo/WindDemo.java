@@ -86,7 +86,7 @@ public final class WindDemo extends DemoState {
     /** How strongly the air grips the ball, b (N·s/m). */
     public static final float WIND_B = 0.3f;
     /** The starting wind: a headwind blowing back toward the gun (m/s). */
-    public static final Vector3f DEFAULT_WIND = new Vector3f(-6f, 0f, 0f);
+    private static final Vector3f DEFAULT_WIND = new Vector3f(-6f, 0f, 0f);
     /** How much one key press changes the wind (m/s). */
     private static final float WIND_STEP = 2f;
     private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
