@@ -23,6 +23,9 @@ import particlelab.demo.DemoState;
  */
 public final class DemoCommand {
 
+    /** Set to true by the build's run task, so advice can mention the Gradle daemon. */
+    static final String GRADLE_RUN_PROPERTY = "particlelab.gradleRun";
+
     /** Exit status: success. */
     public static final int OK = 0;
     /** Exit status: the window could not run. */
@@ -206,8 +209,14 @@ public final class DemoCommand {
             return null;
         }
         if (isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))) {
-            return "no display (neither DISPLAY nor WAYLAND_DISPLAY is set); on a machine"
+            String why = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set); on a machine"
                     + " without a screen run it under xvfb-run -a -s \"-screen 0 1280x720x24\"";
+            if (Boolean.getBoolean(GRADLE_RUN_PROPERTY)) {
+                // A Gradle daemon keeps the environment of the shell that started it.
+                why += "; under gradle run, a Gradle daemon started without a display may"
+                        + " be in use: run gradle --stop, then try again";
+            }
+            return why;
         }
         return null;
     }
