@@ -171,7 +171,12 @@ public final class DemoCommand {
             // GLFW would try Wayland first and print an error about XDG_RUNTIME_DIR.
             GLFW.glfwInitHint(GLFW.GLFW_PLATFORM, GLFW.GLFW_PLATFORM_X11);
         }
-        ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf);
+        String noAudio = AudioProbe.findProblem();
+        if (noAudio != null) {
+            err.println("particle-lab: warning: " + noAudio + "; running without sound");
+        }
+        ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
+                noAudio == null);
         app.start();
         try {
             app.awaitFinished(Long.MAX_VALUE);

@@ -4,6 +4,7 @@ import com.jme3.app.DebugKeysAppState;
 import com.jme3.app.FlyCamAppState;
 import com.jme3.app.SimpleApplication;
 import com.jme3.app.StatsAppState;
+import com.jme3.audio.AudioListenerState;
 import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import com.jme3.system.AppSettings;
@@ -17,10 +18,10 @@ import particlelab.demo.DemoState;
  * The Particle Lab window: a jME {@link SimpleApplication} hosting the lecture demos, one
  * enabled at a time (see {@link DemoSwitcher}).
  *
- * <p>Audio is never started: no demo plays a sound, and on machines without a sound card
- * jME's OpenAL start throws. So the settings ask for no audio renderer and the application
- * leaves out jME's audio listener state; nothing is lost and nothing needs a warning. When a
- * demo first plays sound, start audio in a try block and fall back to this with one warning.
+ * <p>Audio: jME's OpenAL start throws on a machine without a sound card, so the launcher asks
+ * {@link AudioProbe} first and, when there is no device, starts the window without an audio
+ * renderer (and without jME's audio listener state), after one warning. No demo plays sound
+ * yet; later demos (collision effects) can.
  *
  * <p>Options for scripted runs: quit after a number of frames, save the last frame as a PNG,
  * and feed a constant frame time ({@link FixedTimer}) so the picture is reproducible.
@@ -54,7 +55,27 @@ public final class ParticleLabApp extends SimpleApplication {
      */
     public ParticleLabApp(List<DemoState> demos, int firstDemo, int frameLimit,
             File screenshot, float fixedFrameSeconds) {
+        this(demos, firstDemo, frameLimit, screenshot, fixedFrameSeconds, false);
+    }
+
+    /**
+     * Create the application, with or without audio.
+     *
+     * @param demos the demos, in menu order (not null, not empty)
+     * @param firstDemo the index of the demo to open on (&ge;0, &lt;demos.size())
+     * @param frameLimit quit after this many frames (&gt;0), or 0 to run until closed
+     * @param screenshot where to save the last frame as a PNG, or null for none; needs a
+     *     frame limit
+     * @param fixedFrameSeconds a constant frame time to feed the demos (in seconds, &ge;0),
+     *     or NaN to use the real clock
+     * @param audio true to start OpenAL audio (only when {@link AudioProbe} found a device)
+     */
+    public ParticleLabApp(List<DemoState> demos, int firstDemo, int frameLimit,
+            File screenshot, float fixedFrameSeconds, boolean audio) {
         super(new FlyCamAppState(), new DebugKeysAppState(), new StatsAppState());
+        if (audio) {
+            stateManager.attach(new AudioListenerState());
+        }
         if (frameLimit < 0) {
             throw new IllegalArgumentException("frame limit must be >= 0, but was "
                     + frameLimit);
@@ -69,11 +90,16 @@ public final class ParticleLabApp extends SimpleApplication {
             setTimer(new FixedTimer(fixedFrameSeconds));
         }
         setShowSettings(false);
-        setSettings(createSettings(fixedFrameSeconds));
+        AppSettings settings = createSettings(fixedFrameSeconds);
+        if (audio) {
+            settings.setAudioRenderer(AppSettings.LWJGL_OPENAL);
+        }
+        setSettings(settings);
     }
 
     /**
-     * Create the settings every run uses: the window size and title, no audio, and a frame
+     * Create the settings every run uses: the window size and title, no audio (the
+     * constructor adds it when asked), and a frame
      * rate cap of 60 Hz (none with a fixed frame time, so scripted runs finish quickly).
      *
      * @param fixedFrameSeconds the fixed frame time, or NaN
