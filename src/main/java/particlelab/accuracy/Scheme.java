@@ -8,34 +8,38 @@ package particlelab.accuracy;
 public enum Scheme {
 
     /** Forward (explicit) Euler: {@code P ← P + h·V} with the old V, then {@code V ← V + h·a}. */
-    FORWARD_EULER("forward-euler", "forward Euler", 1.0, 2.0),
+    FORWARD_EULER("forward-euler", "forward Euler", "forward Euler", 1.0, 2.0),
     /**
      * The lecture's semi-implicit Euler: the shared {@code ParticleIntegrator} itself, in float
      * (jME) precision.
      */
-    SEMI_IMPLICIT_EULER("semi-implicit-euler", "semi-implicit Euler (shared, float)", 1.0, 2.0),
+    SEMI_IMPLICIT_EULER("semi-implicit-euler", "semi-implicit Euler (shared, float)",
+            "SIE (shared, float)", 1.0, 2.0),
     /**
      * Velocity Verlet as games write it: half kick, drift, forces at the half-kicked velocity,
      * half kick. Second order for forces of position only, first order once a force depends on
      * the velocity; stable to {@code 4m/b}.
      */
-    VELOCITY_VERLET("velocity-verlet", "velocity Verlet (as games write it)", 2.0, 4.0),
+    VELOCITY_VERLET("velocity-verlet", "velocity Verlet (as games write it)",
+            "Verlet (games)", 2.0, 4.0),
     /** The explicit midpoint method (a second-order Runge–Kutta method). */
-    MIDPOINT("midpoint", "midpoint (RK2)", 2.0, 2.0),
+    MIDPOINT("midpoint", "midpoint (RK2)", "midpoint", 2.0, 2.0),
     /** The classic fourth-order Runge–Kutta method. */
-    RUNGE_KUTTA_4("rk4", "classic RK4", 4.0, 2.785293563405282),
+    RUNGE_KUTTA_4("rk4", "classic RK4", "RK4", 4.0, 2.785293563405282),
     /** The exact exponential step for gravity plus linear drag: no truncation error. */
-    EXACT("exact", "exact step (gravity + linear drag)", Double.POSITIVE_INFINITY,
+    EXACT("exact", "exact step (gravity + linear drag)", "exact", Double.POSITIVE_INFINITY,
             Double.POSITIVE_INFINITY);
 
     private final String id;
     private final String label;
+    private final String shortLabel;
     private final double order;
     private final double stabilityFactor;
 
-    Scheme(String id, String label, double order, double stabilityFactor) {
+    Scheme(String id, String label, String shortLabel, double order, double stabilityFactor) {
         this.id = id;
         this.label = label;
+        this.shortLabel = shortLabel;
         this.order = order;
         this.stabilityFactor = stabilityFactor;
     }
@@ -92,6 +96,15 @@ public enum Scheme {
      */
     public String label() {
         return label;
+    }
+
+    /**
+     * Return a short name for chart legends.
+     *
+     * @return e.g. {@code "RK4"}
+     */
+    public String shortLabel() {
+        return shortLabel;
     }
 
     /**
