@@ -88,8 +88,8 @@ public final class ClosedForms {
      */
     public static double landingTime(ForceModel forces, MotionState launch) {
         if (!(launch.velocity[1] > 0.0) || !(forces.gravity(1) < 0.0)) {
-            throw new IllegalArgumentException("a level shot needs V.y > 0 and g.y < 0, but V.y was "
-                    + launch.velocity[1] + " and g.y " + forces.gravity(1));
+            throw new IllegalArgumentException("a level shot needs V.y > 0 and g.y < 0, but V.y"
+                    + " was " + launch.velocity[1] + " and g.y " + forces.gravity(1));
         }
         MotionState at = new MotionState();
         double height = launch.position[1];

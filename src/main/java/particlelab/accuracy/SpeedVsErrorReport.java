@@ -524,7 +524,10 @@ public final class SpeedVsErrorReport {
         }
         md.append("\nAll times in ns per particle-step. \"bytes/step\" is heap allocated per "
                 + "particle-step (0 = nothing; the JVM's counters round to a few bytes per "
-                + "measured round).\n\n");
+                + "measured round). The lecture style's time depends on the garbage "
+                + "collector's state (new vectors stored into long-lived particles), so it "
+                + "moves by several times from run to run; the allocation-free forms are "
+                + "steady.\n\n");
     }
 
     private void appendAiming(StringBuilder md, AimingStudy aiming) {
@@ -572,7 +575,8 @@ public final class SpeedVsErrorReport {
                         hitch);
                 md.append("| ").append(num(k)).append(" | ")
                         .append(hitch == 0.0 ? "none" : num(hitch)).append(" | ")
-                        .append(landingText(raw)).append(" | ").append(raw.finite ? "yes" : "**no**")
+                        .append(landingText(raw)).append(" | ")
+                        .append(raw.finite ? "yes" : "**no**")
                         .append(" | ").append(landingText(fixed)).append(" | ")
                         .append(fixed.finite ? "yes" : "**no**").append(" | ")
                         .append(fix(fixed.droppedSeconds, 2)).append(" |\n");

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import java.lang.management.ManagementFactory;
+import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -39,7 +40,7 @@ class SteppersTest {
         double theory = scheme.theoreticalOrder(forces);
         // The acceptance band: pre-asymptotic terms move a slope fitted over a factor
         // of 32 in h by a few hundredths, well inside 0.15.
-        assertEquals(theory, measured, 0.15, scheme + " errors " + java.util.Arrays.toString(errors));
+        assertEquals(theory, measured, 0.15, scheme + " errors " + Arrays.toString(errors));
     }
 
     @Test
