@@ -1,0 +1,184 @@
+package particlelab.accuracy;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The rows of {@code benchmarks.csv}, written by the JMH runner and by the report's own
+ * timing loop alike, with the fixed header {@value #HEADER}. Row names:
+ * each scheme's {@link Scheme#id()} (one particle), {@value #LECTURE_STYLE} and
+ * {@value #PRIMITIVE_LOOP} (one particle), and {@code bulk/KIND/N} for N particles, KIND one of
+ * {@value #BULK_LECTURE}, {@value #BULK_OBJECTS}, {@value #BULK_BATCH}, {@value #BULK_PRIMITIVE}.
+ */
+public final class BenchmarkTable {
+
+    /** The CSV header, fixed so other tools can read the file. */
+    public static final String HEADER = "benchmark,ns_per_particle_step,bytes_per_step";
+    /** The lecture's allocating Vector3f code, one particle. */
+    public static final String LECTURE_STYLE = "lecture-style";
+    /** The hand-written primitive float loop, one particle. */
+    public static final String PRIMITIVE_LOOP = "primitive-loop";
+    /** Bulk: lecture-style objects. */
+    public static final String BULK_LECTURE = "lecture-style";
+    /** Bulk: an array of Particle objects through ParticleIntegrator.step(Particle[], h). */
+    public static final String BULK_OBJECTS = "shared-objects";
+    /** Bulk: ParticleIntegrator.stepPacked over planar float arrays. */
+    public static final String BULK_BATCH = "shared-batch";
+    /** Bulk: the hand-written primitive loop. */
+    public static final String BULK_PRIMITIVE = "primitive-loop";
+
+    private final List<Row> rows = new ArrayList<>();
+
+    /** One measured benchmark. */
+    public static final class Row {
+        private final String name;
+        private final double nanosPerParticleStep;
+        private final double bytesPerStep;
+
+        /**
+         * Create a row.
+         *
+         * @param name the benchmark's name (not null, no comma)
+         * @param nanosPerParticleStep the time per particle-step (in ns)
+         * @param bytesPerStep the heap allocated per particle-step (in bytes; NaN if unknown)
+         */
+        public Row(String name, double nanosPerParticleStep, double bytesPerStep) {
+            if (name == null || name.indexOf(',') >= 0) {
+                throw new IllegalArgumentException(
+                        "benchmark name must be text without commas, but was " + name);
+            }
+            this.name = name;
+            this.nanosPerParticleStep = nanosPerParticleStep;
+            this.bytesPerStep = bytesPerStep;
+        }
+
+        /**
+         * Return the benchmark's name.
+         *
+         * @return e.g. {@code "rk4"} or {@code "bulk/shared-batch/1000"}
+         */
+        public String name() {
+            return name;
+        }
+
+        /**
+         * Return the time per particle-step.
+         *
+         * @return the time (in nanoseconds)
+         */
+        public double nanosPerParticleStep() {
+            return nanosPerParticleStep;
+        }
+
+        /**
+         * Return the heap allocated per particle-step.
+         *
+         * @return the allocation (in bytes; NaN if unknown)
+         */
+        public double bytesPerStep() {
+            return bytesPerStep;
+        }
+    }
+
+    /**
+     * Name a bulk benchmark.
+     *
+     * @param kind one of the {@code BULK_*} kinds (not null)
+     * @param particles N (&gt;0)
+     * @return {@code bulk/KIND/N}
+     */
+    public static String bulkName(String kind, int particles) {
+        return "bulk/" + kind + "/" + particles;
+    }
+
+    /**
+     * Add a row.
+     *
+     * @param row the row (not null)
+     */
+    public void add(Row row) {
+        rows.add(row);
+    }
+
+    /**
+     * Access the rows in the order added.
+     *
+     * @return an unmodifiable view
+     */
+    public List<Row> rows() {
+        return Collections.unmodifiableList(rows);
+    }
+
+    /**
+     * Find a row by name.
+     *
+     * @param name the benchmark's name (not null)
+     * @return the row, or null if absent
+     */
+    public Row find(String name) {
+        for (Row row : rows) {
+            if (row.name.equals(name)) {
+                return row;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * Write the table as CSV.
+     *
+     * @param file where to write (not null; parent folders are created)
+     * @throws IOException if the file cannot be written
+     */
+    public void write(Path file) throws IOException {
+        StringBuilder text = new StringBuilder(HEADER).append('\n');
+        for (Row row : rows) {
+            text.append(row.name).append(',')
+                    .append(String.format(Locale.ROOT, "%.4f", row.nanosPerParticleStep))
+                    .append(',')
+                    .append(String.format(Locale.ROOT, "%.2f", row.bytesPerStep)).append('\n');
+        }
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.write(file, text.toString().getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * Read a table written by {@link #write}.
+     *
+     * @param file the CSV file (not null)
+     * @return a new table
+     * @throws IOException if the file cannot be read
+     * @throws IllegalArgumentException if the header or a row is malformed
+     */
+    public static BenchmarkTable read(Path file) throws IOException {
+        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        if (lines.isEmpty() || !lines.get(0).trim().equals(HEADER)) {
+            throw new IllegalArgumentException(file + " must start with the header " + HEADER
+                    + ", but began " + (lines.isEmpty() ? "empty" : lines.get(0)));
+        }
+        BenchmarkTable table = new BenchmarkTable();
+        for (int i = 1; i < lines.size(); ++i) {
+            String line = lines.get(i).trim();
+            if (line.isEmpty()) {
+                continue;
+            }
+            String[] cells = line.split(",");
+            if (cells.length != 3) {
+                throw new IllegalArgumentException(file + " line " + (i + 1)
+                        + " must have 3 cells, but was " + line);
+            }
+            table.add(new Row(cells[0], Double.parseDouble(cells[1]),
+                    Double.parseDouble(cells[2])));
+        }
+        return table;
+    }
+}

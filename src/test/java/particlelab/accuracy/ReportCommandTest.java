@@ -1,0 +1,182 @@
+package particlelab.accuracy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ReportCommandTest {
+
+    /** One tiny report shared by the tests that read its files (about two seconds). */
+    @TempDir
+    static Path shared;
+    private static Path folder;
+    private static int exitCode;
+    private static String output;
+
+    @BeforeAll
+    static void writeTinyReport() {
+        folder = shared.resolve("report");
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        exitCode = ReportCommand.run(new String[] {"--tiny", "--out", folder.toString()},
+                new PrintStream(out, true), new PrintStream(new ByteArrayOutputStream(), true));
+        output = out.toString();
+    }
+
+    @Test
+    void tinyReportWritesEveryFileItPromises() throws IOException {
+        assertEquals(ReportCommand.EXIT_OK, exitCode, output);
+        for (String name : SpeedVsErrorReport.FILES) {
+            Path file = folder.resolve(name);
+            assertTrue(Files.isRegularFile(file), "missing " + name);
+            assertTrue(Files.size(file) > 0, "empty " + name);
+            if (name.endsWith(".png")) {
+                BufferedImage image = ImageIO.read(file.toFile());
+                assertNotNull(image, name + " is not a readable PNG");
+                assertTrue(image.getWidth() >= Charts.WIDTH, name + " is too small");
+            }
+        }
+        String index = read("index.md");
+        for (String name : SpeedVsErrorReport.FILES) {
+            if (name.endsWith(".png")) {
+                assertTrue(index.contains(name), "index.md does not show " + name);
+            }
+        }
+    }
+
+    @Test
+    void ordersCsvHasItsFixedHeaderAndARowPerCaseAndStepper() throws IOException {
+        List<String> lines = lines("orders.csv");
+        assertEquals("case,stepper,measured_order,theoretical_order", lines.get(0));
+        int expected = 0;
+        for (CanonicalCase scene : CanonicalCase.all()) {
+            for (Scheme scheme : Scheme.values()) {
+                if (scheme.supports(scene.forces())) {
+                    ++expected;
+                    assertTrue(lines.contains(lines.stream().filter(l -> l.startsWith(
+                            scene.id() + "," + scheme.id() + ",")).findFirst().orElse("?")),
+                            "no row for " + scene.id() + ", " + scheme.id());
+                }
+            }
+        }
+        assertEquals(expected, lines.size() - 1);
+        // even the tiny sweep (h down to 1/120 s) measures forward Euler's order on drag
+        String row = lines.stream().filter(l -> l.startsWith("drag-0.5,forward-euler,"))
+                .findFirst().orElseThrow(AssertionError::new);
+        double measured = Double.parseDouble(row.split(",")[2]);
+        assertEquals(1.0, measured, 0.15, row);
+    }
+
+    @Test
+    void stabilityCsvHasItsFixedHeaderAndTheEulerLimit() throws IOException {
+        List<String> lines = lines("stability.csv");
+        assertEquals("stepper,b_over_m,max_stable_h,theory_h", lines.get(0));
+        assertEquals(Scheme.values().length * ReportConfig.of(ReportConfig.Size.TINY)
+                .linearRates().length, lines.size() - 1);
+        String row = lines.stream().filter(l -> l.startsWith("forward-euler,10,"))
+                .findFirst().orElseThrow(AssertionError::new);
+        String[] cells = row.split(",");
+        // 2m/b at b/m = 10 /s, to the bisection's tolerance (well inside 1%)
+        assertEquals(0.2, Double.parseDouble(cells[2]), 0.002, row);
+        assertEquals(0.2, Double.parseDouble(cells[3]), 1e-12, row);
+    }
+
+    @Test
+    void benchmarksCsvHasItsFixedHeaderAndEveryRow() throws IOException {
+        List<String> lines = lines("benchmarks.csv");
+        assertEquals("benchmark,ns_per_particle_step,bytes_per_step", lines.get(0));
+        BenchmarkTable table = BenchmarkTable.read(folder.resolve("benchmarks.csv"));
+        for (Scheme scheme : Scheme.values()) {
+            assertNotNull(table.find(scheme.id()), "no row for " + scheme.id());
+        }
+        BenchmarkTable.Row lecture = table.find(BenchmarkTable.LECTURE_STYLE);
+        assertNotNull(lecture);
+        assertNotNull(table.find(BenchmarkTable.PRIMITIVE_LOOP));
+        assertNotNull(table.find(BenchmarkTable.bulkName(BenchmarkTable.BULK_BATCH, 1000)));
+        // the lecture style replaces position and velocity with new Vector3fs every step:
+        // at least two 24-byte objects, whatever escape analysis removes
+        assertTrue(lecture.bytesPerStep() >= 40.0, "lecture style allocated "
+                + lecture.bytesPerStep());
+    }
+
+    @Test
+    void jmhResultsReplaceTheInProcessBenchmarks(@TempDir Path temp) throws IOException {
+        Path jmh = temp.resolve("jmh.csv");
+        Files.write(jmh, ("benchmark,ns_per_particle_step,bytes_per_step\n"
+                + "rk4,40.5,0.00\nbulk/shared-batch/1000,0.4,0.00\n")
+                .getBytes(StandardCharsets.UTF_8));
+        Path out = temp.resolve("report");
+        int code = ReportCommand.run(new String[] {"--tiny", "--out=" + out, "--jmh", jmh
+                .toString()}, new PrintStream(new ByteArrayOutputStream(), true),
+                new PrintStream(new ByteArrayOutputStream(), true));
+        assertEquals(ReportCommand.EXIT_OK, code);
+        BenchmarkTable table = BenchmarkTable.read(out.resolve("benchmarks.csv"));
+        assertEquals(2, table.rows().size());
+        assertEquals(40.5, table.find("rk4").nanosPerParticleStep(), 0.0);
+        String index = new String(Files.readAllBytes(out.resolve("index.md")),
+                StandardCharsets.UTF_8);
+        assertTrue(index.contains("comes from JMH"), "index.md does not say the source");
+    }
+
+    @Test
+    void unknownOptionExitsWithTwoAndNamesIt() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = ReportCommand.run(new String[] {"--quik"}, new PrintStream(
+                new ByteArrayOutputStream(), true), new PrintStream(err, true));
+        assertEquals(ReportCommand.EXIT_USAGE, code);
+        String message = err.toString();
+        assertTrue(message.contains("'--quik'"), message);
+        assertEquals(1, message.trim().split("\n").length, "one line, no stack trace: "
+                + message);
+    }
+
+    @Test
+    void missingValuesAndBadFilesExitWithTwo() throws IOException {
+        assertUsage("--out needs a folder", "--out");
+        assertUsage("'nowhere/benchmarks.csv' does not exist", "--jmh",
+                "nowhere/benchmarks.csv");
+        assertUsage("not both", "--quick", "--tiny");
+        Path bad = Files.createTempFile("not-benchmarks", ".csv");
+        Files.write(bad, "a,b\n".getBytes(StandardCharsets.UTF_8));
+        assertUsage("is not a benchmarks.csv", "--jmh", bad.toString());
+        Files.delete(bad);
+    }
+
+    @Test
+    void helpExitsWithZero() {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        assertEquals(ReportCommand.EXIT_OK, ReportCommand.run(new String[] {"--help"},
+                new PrintStream(out, true), new PrintStream(new ByteArrayOutputStream(), true)));
+        assertTrue(out.toString().contains("--quick"));
+    }
+
+    private static void assertUsage(String expected, String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = ReportCommand.run(args, new PrintStream(new ByteArrayOutputStream(), true),
+                new PrintStream(err, true));
+        assertEquals(ReportCommand.EXIT_USAGE, code, String.join(" ", args));
+        assertTrue(err.toString().contains(expected), err.toString());
+        assertFalse(err.toString().contains("Exception"), err.toString());
+    }
+
+    private static String read(String name) throws IOException {
+        return new String(Files.readAllBytes(folder.resolve(name)), StandardCharsets.UTF_8);
+    }
+
+    private static List<String> lines(String name) throws IOException {
+        return Files.readAllLines(folder.resolve(name), StandardCharsets.UTF_8);
+    }
+}

@@ -1,0 +1,141 @@
+package particlelab.physics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import java.lang.management.ManagementFactory;
+import org.junit.jupiter.api.Test;
+
+/** The packed batch form {@link ParticleIntegrator#stepPacked}. */
+class ParticleIntegratorBatchTest {
+
+    private static final int COUNT = 37;
+    private static final float H = 1f / 60f;
+
+    @Test
+    void gravityAndLinearDragBatchFollowsTheOneParticleStep() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), new LinearDrag(0.9f));
+        Particle[] particles = launch(2f);
+        float[] positions = new float[3 * COUNT];
+        float[] velocities = new float[3 * COUNT];
+        pack(particles, positions, velocities);
+        for (int n = 0; n < 240; ++n) {
+            integrator.step(particles, H);
+            integrator.stepPacked(positions, velocities, COUNT, 2f, H);
+        }
+        // The batch rearranges a = g − (b/m)·V into V·(1 − h·b/m) + h·g: a few ulp per step.
+        // Drag damps old differences (factor 0.9925 per step), so they stay near 1e-6 relative;
+        // positions near 100 m accumulate ~240 steps of them: 1e-4 m covers both.
+        for (int i = 0; i < COUNT; ++i) {
+            assertEquals(particles[i].velocity.x, velocities[i], 1e-4f);
+            assertEquals(particles[i].velocity.y, velocities[COUNT + i], 1e-4f);
+            assertEquals(particles[i].velocity.z, velocities[2 * COUNT + i], 1e-4f);
+            assertEquals(particles[i].position.x, positions[i], 1e-4f);
+            assertEquals(particles[i].position.y, positions[COUNT + i], 1e-4f);
+            assertEquals(particles[i].position.z, positions[2 * COUNT + i], 1e-4f);
+        }
+    }
+
+    @Test
+    void otherForcesGoThroughTheOneParticleStepBitForBit() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(),
+                new QuadraticDrag(0.02f), new Thrust(3f), new LinearDrag(0.1f));
+        Particle[] particles = launch(1.5f);
+        float[] positions = new float[3 * COUNT];
+        float[] velocities = new float[3 * COUNT];
+        pack(particles, positions, velocities);
+        for (int n = 0; n < 100; ++n) {
+            integrator.step(particles, H);
+            integrator.stepPacked(positions, velocities, COUNT, 1.5f, H);
+        }
+        for (int i = 0; i < COUNT; ++i) {
+            // the same code on the same floats: identical
+            assertEquals(particles[i].position.y, positions[COUNT + i], 0f);
+            assertEquals(particles[i].velocity.x, velocities[i], 0f);
+        }
+    }
+
+    @Test
+    void batchAllocatesNothing() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), new LinearDrag(0.5f));
+        float[] positions = new float[3 * 1000];
+        float[] velocities = new float[3 * 1000];
+        for (int n = 0; n < 2000; ++n) {
+            integrator.stepPacked(positions, velocities, 1000, 1f, H);
+        }
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long before = threads.getCurrentThreadAllocatedBytes();
+        for (int n = 0; n < 1000; ++n) {
+            integrator.stepPacked(positions, velocities, 1000, 1f, H);
+        }
+        long allocated = threads.getCurrentThreadAllocatedBytes() - before;
+        // one object per call would already be 16 kB
+        assertTrue(allocated < 1024, "allocated " + allocated + " bytes");
+    }
+
+    @Test
+    void batchFarBeyondTheLimitStopsInsteadOfSpreadingNaN() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), new LinearDrag(10f));
+        float[] positions = new float[3 * 4];
+        float[] velocities = {1f, 2f, 3f, 4f, 1f, 1f, 1f, 1f, 0f, 0f, 0f, 0f};
+        // h = 5 s with b/m = 10/s: the velocity factor is 1 − 50 = −49 per step; float
+        // overflows after about 23 steps
+        IllegalStateException failure = assertThrows(IllegalStateException.class, () -> {
+            for (int n = 0; n < 100; ++n) {
+                integrator.stepPacked(positions, velocities, 4, 1f, 5f);
+            }
+        });
+        assertTrue(failure.getMessage().contains("-49"), failure.getMessage());
+    }
+
+    @Test
+    void zeroStepOrNoParticlesChangeNothing() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+        float[] positions = {1f, 2f, 3f};
+        float[] velocities = {4f, 5f, 6f};
+        integrator.stepPacked(positions, velocities, 1, 1f, 0f);
+        integrator.stepPacked(positions, velocities, 0, 1f, H);
+        assertEquals(2f, positions[1], 0f);
+        assertEquals(5f, velocities[1], 0f);
+    }
+
+    @Test
+    void badBatchArgumentsAreRejectedNamingTheValue() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+        float[] six = new float[6];
+        IllegalArgumentException shortArray = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(six, new float[9], 3, 1f, H));
+        assertTrue(shortArray.getMessage().contains("held 6"), shortArray.getMessage());
+        IllegalArgumentException negative = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(six, six, -1, 1f, H));
+        assertTrue(negative.getMessage().contains("-1"), negative.getMessage());
+        IllegalArgumentException mass = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(six, six, 2, 0f, H));
+        assertTrue(mass.getMessage().contains("mass"), mass.getMessage());
+        assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(six, six, 2, 1f, Float.NaN));
+    }
+
+    private static Particle[] launch(float massKg) {
+        Particle[] particles = new Particle[COUNT];
+        for (int i = 0; i < COUNT; ++i) {
+            particles[i] = new Particle(new Vector3f(i, 0f, -i),
+                    new Vector3f(20f + i % 5, 30f - i % 3, i % 4), massKg);
+        }
+        return particles;
+    }
+
+    private static void pack(Particle[] particles, float[] positions, float[] velocities) {
+        for (int i = 0; i < COUNT; ++i) {
+            positions[i] = particles[i].position.x;
+            positions[COUNT + i] = particles[i].position.y;
+            positions[2 * COUNT + i] = particles[i].position.z;
+            velocities[i] = particles[i].velocity.x;
+            velocities[COUNT + i] = particles[i].velocity.y;
+            velocities[2 * COUNT + i] = particles[i].velocity.z;
+        }
+    }
+}
