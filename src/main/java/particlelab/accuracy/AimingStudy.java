@@ -1,16 +1,20 @@
 package particlelab.accuracy;
 
-import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import particlelab.physics.Particle;
+import particlelab.aiming.IterativeAim;
+import particlelab.aiming.Landing;
+import particlelab.aiming.LevelAim;
+import particlelab.aiming.ShotSimulator;
 import particlelab.physics.ParticleIntegrator;
 
 /**
- * Aiming: the level shot of HelloAiming (S = 100 m, vx = 20 m/s) aimed by the lecture's formula
- * and by the discrete correction, flown by the shared integrator at a fixed h, and the miss
- * distance measured at the ground crossing, interpolated inside the last step. Swept against h
- * without drag, and against linear drag at h = 1/60 s (neither formula knows about drag).
+ * Aiming: the level shot of HelloAiming (S = 100 m, vx = 20 m/s) aimed three ways — the
+ * lecture's formula, the discrete correction (both from {@link LevelAim}) and iterative
+ * shoot-and-adjust ({@link IterativeAim}) — each flown by the shared integrator at a fixed h
+ * through a {@link ShotSimulator}, its miss read at the ground crossing interpolated inside the
+ * last step. Swept against h without drag, and against linear drag at h = 1/60 s (the closed
+ * forms know nothing of drag; iterative aiming does, until the target is out of reach).
  */
 final class AimingStudy {
 
@@ -22,79 +26,71 @@ final class AimingStudy {
     static final double[] DRAG_RATES = {0.0, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5};
     /** The fixed step of the drag sweep (in seconds). */
     static final double DRAG_SWEEP_STEP = 1.0 / 60.0;
-    private static final int MAX_STEPS = 10_000_000;
+    /** How close iterative aiming must land (in metres). */
+    static final double TOLERANCE = 1e-3;
+    /** The most shots iterative aiming may fire. */
+    static final int MAX_SHOTS = 100;
+    /** A shot still in the air after this long never lands (in seconds). */
+    private static final float MAX_FLIGHT_SECONDS = 3600f;
 
-    /** One shot. */
+    /** One aimed shot. */
     static final class Shot {
         final String sweep;
         final String formula;
         final double stepSeconds;
         final double linearRate;
         final double vy;
+        /** landing x − S (in metres); NaN when the target was out of reach. */
         final double missMetres;
+        final int shots;
 
         Shot(String sweep, String formula, double stepSeconds, double linearRate, double vy,
-                double missMetres) {
+                double missMetres, int shots) {
             this.sweep = sweep;
             this.formula = formula;
             this.stepSeconds = stepSeconds;
             this.linearRate = linearRate;
             this.vy = vy;
             this.missMetres = missMetres;
+            this.shots = shots;
         }
     }
 
     final List<Shot> shots = new ArrayList<>();
+    private final Landing landing = new Landing();
 
     private AimingStudy() {
     }
 
     static AimingStudy run(ReportConfig config) {
         AimingStudy study = new AimingStudy();
-        double g = CanonicalCase.G;
         for (double h : config.steps()) {
-            ForceModel forces = ForceModel.perUnitMass(g, 0.0, 0.0, 0.0);
-            study.add("step", "lecture", h, 0.0, AimingFormulas.lectureVy(g, DISTANCE, VX), forces);
-            study.add("step", "discrete", h, 0.0,
-                    AimingFormulas.discreteVy(g, DISTANCE, VX, h), forces);
+            study.aimAllWays("step", h, 0.0);
         }
         for (double k : DRAG_RATES) {
-            ForceModel forces = ForceModel.perUnitMass(g, k, 0.0, 0.0);
-            double h = DRAG_SWEEP_STEP;
-            study.add("drag", "lecture", h, k, AimingFormulas.lectureVy(g, DISTANCE, VX), forces);
-            study.add("drag", "discrete", h, k,
-                    AimingFormulas.discreteVy(g, DISTANCE, VX, h), forces);
+            study.aimAllWays("drag", DRAG_SWEEP_STEP, k);
         }
         return study;
     }
 
-    private void add(String sweep, String formula, double h, double k, double vy,
-            ForceModel forces) {
-        double landing = landingX(forces, VX, vy, h);
-        shots.add(new Shot(sweep, formula, h, k, vy, landing - DISTANCE));
+    private void aimAllWays(String sweep, double h, double k) {
+        double g = CanonicalCase.G;
+        ForceModel forces = ForceModel.perUnitMass(g, k, 0.0, 0.0);
+        ShotSimulator simulator = new ShotSimulator(new ParticleIntegrator(forces.toForces()),
+                (float) forces.getMassKg(), (float) h, MAX_FLIGHT_SECONDS);
+        fire(simulator, sweep, "lecture", h, k, LevelAim.lectureVy(g, DISTANCE, VX));
+        fire(simulator, sweep, "discrete", h, k, LevelAim.discreteVy(g, DISTANCE, VX, h));
+        IterativeAim aimer = new IterativeAim(simulator, g, TOLERANCE, MAX_SHOTS);
+        particlelab.aiming.AimResult result = aimer.aim(DISTANCE, VX);
+        double miss = result.isHit() ? result.getMiss() : Double.NaN;
+        shots.add(new Shot(sweep, "iterative", h, k, result.getVerticalSpeed(), miss,
+                result.getShots()));
     }
 
-    /**
-     * Fly a shot from the origin with the shared integrator and find where it comes back to
-     * y = 0, interpolating linearly inside the step that crosses.
-     *
-     * @return the landing x (in metres), NaN if it never lands
-     */
-    static double landingX(ForceModel forces, double vx, double vy, double stepSeconds) {
-        ParticleIntegrator integrator = new ParticleIntegrator(forces.toForces());
-        Particle particle = new Particle(new Vector3f(),
-                new Vector3f((float) vx, (float) vy, 0f), (float) forces.getMassKg());
-        float h = (float) stepSeconds;
-        for (int n = 0; n < MAX_STEPS; ++n) {
-            float x0 = particle.position.x;
-            float y0 = particle.position.y;
-            integrator.step(particle, h);
-            float y1 = particle.position.y;
-            if (y1 <= 0f && n > 0) {
-                float x1 = particle.position.x;
-                return x0 + (x1 - x0) * (double) y0 / ((double) y0 - y1);
-            }
-        }
-        return Double.NaN;
+    private void fire(ShotSimulator simulator, String sweep, String formula, double h,
+            double k, double vy) {
+        boolean landed = simulator.fire((float) VX, (float) vy, landing);
+        double miss = landed ? landing.getX() - DISTANCE : Double.NaN;
+        shots.add(new Shot(sweep, formula, h, k, vy, miss, 1));
     }
 }

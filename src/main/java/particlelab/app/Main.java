@@ -20,7 +20,7 @@ public final class Main {
     public static final String HELP = "help";
 
     private static final String DEMO = DemoCommand.NAME;
-    private static final String REPORT = "report";
+    private static final String REPORT = ReportCommand.NAME;
     private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
             + ", " + DEMO + ", " + REPORT + ", " + HELP;
 
@@ -66,7 +66,7 @@ public final class Main {
             case DEMO:
                 return DemoCommand.run(rest, out, err);
             case REPORT:
-                return notWiredYet(REPORT, err);
+                return ReportCommand.run(rest, out, err);
             case HELP:
                 if (rest.length == 1 && !rest[0].startsWith("-")) {
                     // "help COMMAND" is "COMMAND --help".
@@ -111,11 +111,5 @@ public final class Main {
                 + "and " + PROGRAM + " report --help.\n"
                 + "\n"
                 + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr.\n";
-    }
-
-    /** A subcommand that lives on another branch: wired in at merge. */
-    private static int notWiredYet(String command, PrintStream err) {
-        err.println(PROGRAM + ": the " + command + " command is not wired yet");
-        return UsageException.EXIT_CODE;
     }
 }

@@ -1,7 +1,6 @@
 package particlelab.accuracy;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -18,27 +17,22 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-class ReportCommandTest {
+/** The report's files, written by {@link SpeedVsErrorReport} on the tiny sweep. */
+class SpeedVsErrorReportTest {
 
     /** One tiny report shared by the tests that read its files (about two seconds). */
     @TempDir
     static Path shared;
     private static Path folder;
-    private static int exitCode;
-    private static String output;
 
     @BeforeAll
-    static void writeTinyReport() {
+    static void writeTinyReport() throws IOException {
         folder = shared.resolve("report");
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        exitCode = ReportCommand.run(new String[] {"--tiny", "--out", folder.toString()},
-                new PrintStream(out, true), new PrintStream(new ByteArrayOutputStream(), true));
-        output = out.toString();
+        write(folder, null);
     }
 
     @Test
     void tinyReportWritesEveryFileItPromises() throws IOException {
-        assertEquals(ReportCommand.EXIT_OK, exitCode, output);
         for (String name : SpeedVsErrorReport.FILES) {
             Path file = folder.resolve(name);
             assertTrue(Files.isRegularFile(file), "missing " + name);
@@ -119,10 +113,7 @@ class ReportCommandTest {
                 + "rk4,40.5,0.00\nbulk/shared-batch/1000,0.4,0.00\n")
                 .getBytes(StandardCharsets.UTF_8));
         Path out = temp.resolve("report");
-        int code = ReportCommand.run(new String[] {"--tiny", "--out=" + out, "--jmh", jmh
-                .toString()}, new PrintStream(new ByteArrayOutputStream(), true),
-                new PrintStream(new ByteArrayOutputStream(), true));
-        assertEquals(ReportCommand.EXIT_OK, code);
+        write(out, jmh);
         BenchmarkTable table = BenchmarkTable.read(out.resolve("benchmarks.csv"));
         assertEquals(2, table.rows().size());
         assertEquals(40.5, table.find("rk4").nanosPerParticleStep(), 0.0);
@@ -131,45 +122,9 @@ class ReportCommandTest {
         assertTrue(index.contains("comes from JMH"), "index.md does not say the source");
     }
 
-    @Test
-    void unknownOptionExitsWithTwoAndNamesIt() {
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = ReportCommand.run(new String[] {"--quik"}, new PrintStream(
-                new ByteArrayOutputStream(), true), new PrintStream(err, true));
-        assertEquals(ReportCommand.EXIT_USAGE, code);
-        String message = err.toString();
-        assertTrue(message.contains("'--quik'"), message);
-        assertEquals(1, message.trim().split("\n").length, "one line, no stack trace: "
-                + message);
-    }
-
-    @Test
-    void missingValuesAndBadFilesExitWithTwo() throws IOException {
-        assertUsage("--out needs a folder", "--out");
-        assertUsage("'nowhere/benchmarks.csv' does not exist", "--jmh",
-                "nowhere/benchmarks.csv");
-        assertUsage("not both", "--quick", "--tiny");
-        Path bad = Files.createTempFile("not-benchmarks", ".csv");
-        Files.write(bad, "a,b\n".getBytes(StandardCharsets.UTF_8));
-        assertUsage("is not a benchmarks.csv", "--jmh", bad.toString());
-        Files.delete(bad);
-    }
-
-    @Test
-    void helpExitsWithZero() {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        assertEquals(ReportCommand.EXIT_OK, ReportCommand.run(new String[] {"--help"},
-                new PrintStream(out, true), new PrintStream(new ByteArrayOutputStream(), true)));
-        assertTrue(out.toString().contains("--quick"));
-    }
-
-    private static void assertUsage(String expected, String... args) {
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = ReportCommand.run(args, new PrintStream(new ByteArrayOutputStream(), true),
-                new PrintStream(err, true));
-        assertEquals(ReportCommand.EXIT_USAGE, code, String.join(" ", args));
-        assertTrue(err.toString().contains(expected), err.toString());
-        assertFalse(err.toString().contains("Exception"), err.toString());
+    private static void write(Path out, Path jmh) throws IOException {
+        new SpeedVsErrorReport(ReportConfig.of(ReportConfig.Size.TINY), out, jmh)
+                .write(new PrintStream(new ByteArrayOutputStream(), true), false);
     }
 
     private static String read(String name) throws IOException {

@@ -1,0 +1,129 @@
+package particlelab.app;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import particlelab.accuracy.BenchmarkTable;
+import particlelab.accuracy.ReportConfig;
+import particlelab.accuracy.SpeedVsErrorReport;
+
+/**
+ * {@code particle-lab report}: writes the speed-against-error report (see
+ * {@link SpeedVsErrorReport}) to a folder. A progress bar goes to stderr, the summary to
+ * stdout. The Gradle task {@code report} runs this command.
+ */
+public final class ReportCommand {
+
+    /** The subcommand's name. */
+    public static final String NAME = "report";
+    /** The default output folder, relative to the working directory. */
+    public static final String DEFAULT_OUT = "build/reports/speed-vs-error";
+    /** Exit status: the report was written. */
+    public static final int OK = 0;
+    /** Exit status: the files could not be written. */
+    public static final int FAILED = 1;
+
+    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String OUT = "--out";
+    private static final String QUICK = "--quick";
+    private static final String TINY = "--tiny";
+    private static final String JMH = "--jmh";
+
+    private ReportCommand() {
+    }
+
+    /**
+     * Declare the command's options, for parsing and for the help text.
+     *
+     * @return new, unparsed options (not null)
+     */
+    public static Options options() {
+        return new Options(COMMAND, "Write the speed-against-error report: the shared Euler"
+                + " integrator against forward Euler, Verlet, midpoint, RK4 and the exact step;"
+                + " work-precision plots, measured orders, the stability map, benchmarks,"
+                + " aiming misses and frame hitches, as index.md, CSV files and PNG plots.")
+                .value(OUT, "DIR", "the folder to write (created if missing). Default "
+                        + DEFAULT_OUT + ".")
+                .flag(QUICK, "a smaller sweep, in well under a minute.")
+                .flag(TINY, "the smallest sweep (a few seconds): every file, rough numbers.")
+                .value(JMH, "FILE", "take the benchmark rows from this benchmarks.csv, written"
+                        + " by gradle jmh, instead of timing in-process.")
+                .note("Without " + QUICK + " or " + TINY + " the full report takes about a"
+                        + " minute on 2 cores.")
+                .note("Exit status: 0 when written; 1 when the folder could not be written; 2"
+                        + " on a bad command line, with one line on stderr.");
+    }
+
+    /**
+     * Run the command.
+     *
+     * @param args the arguments after "report" (not null)
+     * @param out where the summary or help goes (not null)
+     * @param err where the progress bar and the error line go (not null)
+     * @return the exit status: {@link #OK}, {@link #FAILED} or {@link UsageException#EXIT_CODE}
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        Options options = options();
+        Path folder;
+        Path jmh;
+        ReportConfig.Size size;
+        try {
+            options.parse(args);
+            if (options.isHelpRequested()) {
+                out.print(options.help());
+                return OK;
+            }
+            options.atMostOneOf(QUICK, TINY);
+            size = options.has(QUICK) ? ReportConfig.Size.QUICK
+                    : options.has(TINY) ? ReportConfig.Size.TINY : ReportConfig.Size.FULL;
+            folder = path(OUT, options.string(OUT, DEFAULT_OUT));
+            if (Files.exists(folder) && !Files.isDirectory(folder)) {
+                throw new UsageException(OUT + ": " + folder + " is a file, not a folder");
+            }
+            jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
+        } catch (UsageException problem) {
+            return CommandSupport.reportUsage(COMMAND, problem, err);
+        }
+        if (System.getProperty("java.awt.headless") == null) {
+            System.setProperty("java.awt.headless", "true");
+        }
+        long start = System.nanoTime();
+        try {
+            new SpeedVsErrorReport(ReportConfig.of(size), folder, jmh)
+                    .write(err, System.console() != null);
+        } catch (IOException failure) {
+            err.println(COMMAND + ": could not write to " + folder + ": "
+                    + failure.getMessage());
+            return FAILED;
+        }
+        out.printf("Wrote the speed-vs-error report (%d files) to %s in %.0f s; open index.md%n",
+                SpeedVsErrorReport.FILES.size(), folder.toAbsolutePath(),
+                (System.nanoTime() - start) / 1e9);
+        return OK;
+    }
+
+    private static Path path(String option, String text) {
+        try {
+            return Paths.get(text);
+        } catch (InvalidPathException bad) {
+            throw new UsageException(option + ": not a valid path, but was " + text);
+        }
+    }
+
+    private static Path benchmarks(String text) {
+        Path file = path(JMH, text);
+        if (!Files.isRegularFile(file)) {
+            throw new UsageException(JMH + ": the file " + text + " does not exist");
+        }
+        try {
+            BenchmarkTable.read(file);
+        } catch (IllegalArgumentException | IOException bad) {
+            throw new UsageException(JMH + ": " + text + " is not a benchmarks.csv ("
+                    + bad.getMessage() + ")");
+        }
+        return file;
+    }
+}

@@ -1,0 +1,62 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import particlelab.accuracy.SpeedVsErrorReport;
+
+/** {@code particle-lab report} through the launcher: options, errors, and a tiny run. */
+class ReportCommandTest {
+
+    @Test
+    void tinyRunWritesEveryPromisedFileAndSaysWhere(@TempDir Path temp) {
+        Path out = temp.resolve("report");
+        CommandRun run = CommandRun.of("report", "--tiny", "--out", out.toString());
+        assertEquals(0, run.code, run.toString());
+        assertTrue(run.out.startsWith("Wrote the speed-vs-error report"), run.out);
+        for (String name : SpeedVsErrorReport.FILES) {
+            assertTrue(Files.isRegularFile(out.resolve(name)), "missing " + name);
+        }
+    }
+
+    @Test
+    void badCommandLinesAreOneLineNamingTheOptionAndExitTwo(@TempDir Path temp)
+            throws IOException {
+        Path notBenchmarks = temp.resolve("not-benchmarks.csv");
+        Files.write(notBenchmarks, "a,b\n".getBytes(StandardCharsets.UTF_8));
+        Path aFile = temp.resolve("a-file");
+        Files.write(aFile, new byte[] {1});
+        String[][] cases = {
+            {"--quik", "report", "--quik"},
+            {"--out", "report", "--out"},
+            {"--quick", "report", "--quick", "--tiny"},
+            {"--jmh", "report", "--jmh", temp.resolve("nowhere.csv").toString()},
+            {"--jmh", "report", "--jmh", notBenchmarks.toString()},
+            {"--out", "report", "--out", aFile.toString()},
+        };
+        for (String[] c : cases) {
+            String[] args = java.util.Arrays.copyOfRange(c, 1, c.length);
+            CommandRun run = CommandRun.of(args);
+            assertEquals(2, run.code, run.toString());
+            assertEquals(1, run.errLines().size(), run.toString());
+            assertTrue(run.err.startsWith("particle-lab report: " + c[0]), run.toString());
+            assertFalse(run.err.contains("Exception"), run.toString());
+        }
+    }
+
+    @Test
+    void helpDescribesEveryOption() {
+        CommandRun run = CommandRun.of("report", "--help");
+        assertEquals(0, run.code);
+        for (String option : ReportCommand.options().names()) {
+            assertTrue(run.out.contains("\n  " + option), option + " in\n" + run.out);
+        }
+    }
+}
