@@ -18,6 +18,13 @@ import com.jme3.scene.shape.Sphere;
  */
 public final class ParticleView {
 
+    /** The label's text height, in sphere radii. */
+    private static final float LABEL_SIZE_RADII = 1.9f;
+    /** The lowest label row's lift above the sphere, in sphere radii. */
+    private static final float LABEL_BASE_RADII = 1.6f;
+    /** The height of one label row, in sphere radii: a little more than the text. */
+    private static final float LABEL_SLOT_RADII = 2.0f;
+
     private static final int SPHERE_SAMPLES = 24;
     /** Velocity arrows show this much travel (in seconds). */
     private static final float ARROW_SECONDS = 0.4f;
@@ -30,6 +37,8 @@ public final class ParticleView {
     private final float radius;
     /** The label's height above the sphere (in metres): rows keep labels apart. */
     private final float labelLift;
+    /** The label's height above the sphere when its row would put it under the ground. */
+    private final float labelLiftAboveGround;
 
     /**
      * Create the views of one particle.
@@ -48,8 +57,11 @@ public final class ParticleView {
             ColorRGBA color, float radiusMetres, int trailPoints, int labelRow) {
         this.radius = radiusMetres;
         // Row 0 floats just above the sphere, row 1 hangs below it, row 2 higher above, ...
-        float rowOffset = (labelRow % 2 == 0) ? 1.6f + 1.6f * labelRow : -3.4f - 1.6f * labelRow;
+        // Near the ground a hanging label moves up to a slot of its own: 1.6 + 2·row radii.
+        float aboveOffset = LABEL_BASE_RADII + LABEL_SLOT_RADII * labelRow;
+        float rowOffset = (labelRow % 2 == 0) ? aboveOffset : -3.4f - 1.6f * labelRow;
         this.labelLift = rowOffset * radiusMetres;
+        this.labelLiftAboveGround = aboveOffset * radiusMetres;
         this.node = new Node(name);
         Material lit = new Material(assetManager, "Common/MatDefs/Light/Lighting.j3md");
         lit.setBoolean("UseMaterialColors", true);
@@ -70,7 +82,7 @@ public final class ParticleView {
         node.attachChild(arrow.getGeometry());
 
         label = new BitmapText(font);
-        label.setSize(1.9f * radiusMetres);
+        label.setSize(LABEL_SIZE_RADII * radiusMetres);
         label.setColor(color.clone());
         label.setText(name);
         label.setQueueBucket(RenderQueue.Bucket.Transparent);
@@ -153,8 +165,10 @@ public final class ParticleView {
      */
     public void update(Vector3f position, Vector3f velocity) {
         sphere.setLocalTranslation(position.x, position.y, position.z);
-        label.setLocalTranslation(position.x + radius, position.y + labelLift + 1.9f * radius,
-                position.z);
+        // The label's bottom edge sits at y + lift; it hangs no lower than the ground.
+        float lift = position.y + labelLift < 0f ? labelLiftAboveGround : labelLift;
+        label.setLocalTranslation(position.x + radius,
+                position.y + lift + LABEL_SIZE_RADII * radius, position.z);
         arrow.update(position, velocity);
         trail.refresh();
     }
