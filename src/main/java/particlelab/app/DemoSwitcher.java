@@ -2,14 +2,12 @@ package particlelab.app;
 
 import com.jme3.app.Application;
 import com.jme3.app.state.BaseAppState;
-import com.jme3.input.InputManager;
 import com.jme3.input.KeyInput;
-import com.jme3.input.controls.ActionListener;
-import com.jme3.input.controls.KeyTrigger;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import particlelab.demo.DemoState;
+import particlelab.demo.KeyMappings;
 import particlelab.demo.KeyBinding;
 
 /**
@@ -28,8 +26,7 @@ public final class DemoSwitcher extends BaseAppState {
 
     private final List<DemoState> demos;
     private final List<KeyBinding> bindings = new ArrayList<>();
-    private final List<String> mappingNames = new ArrayList<>();
-    private final ActionListener keyListener = this::onKey;
+    private final KeyMappings keyMappings = new KeyMappings("particlelab/switcher/", null);
     private int selected;
     private int requested;
 
@@ -120,23 +117,12 @@ public final class DemoSwitcher extends BaseAppState {
 
     @Override
     protected void onEnable() {
-        InputManager input = getApplication().getInputManager();
-        for (int i = 0; i < bindings.size(); ++i) {
-            String name = "particlelab/switcher/" + bindings.get(i).getKeyLabel();
-            input.addMapping(name, new KeyTrigger(bindings.get(i).getKeyCode()));
-            mappingNames.add(name);
-        }
-        input.addListener(keyListener, mappingNames.toArray(new String[0]));
+        keyMappings.map(getApplication().getInputManager(), bindings);
     }
 
     @Override
     protected void onDisable() {
-        InputManager input = getApplication().getInputManager();
-        input.removeListener(keyListener);
-        for (int i = 0; i < mappingNames.size(); ++i) {
-            input.deleteMapping(mappingNames.get(i));
-        }
-        mappingNames.clear();
+        keyMappings.unmap(getApplication().getInputManager());
     }
 
     @Override
@@ -145,18 +131,6 @@ public final class DemoSwitcher extends BaseAppState {
             demos.get(selected).setEnabled(false);
             selected = requested;
             demos.get(selected).setEnabled(true);
-        }
-    }
-
-    private void onKey(String name, boolean isPressed, float tpf) {
-        if (!isPressed) {
-            return;
-        }
-        for (int i = 0; i < mappingNames.size(); ++i) {
-            if (mappingNames.get(i).equals(name)) {
-                bindings.get(i).getAction().run();
-                return;
-            }
         }
     }
 }

@@ -4,21 +4,15 @@ import com.jme3.app.Application;
 import com.jme3.app.state.BaseAppState;
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.input.InputManager;
 import com.jme3.input.KeyInput;
-import com.jme3.input.controls.ActionListener;
-import com.jme3.input.controls.KeyTrigger;
 import com.jme3.light.AmbientLight;
 import com.jme3.light.DirectionalLight;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
-import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.Collections;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -88,9 +82,7 @@ public abstract class DemoState extends BaseAppState {
     private final List<KeyBinding> sharedBindings = new ArrayList<>();
     private final List<KeyBinding> demoBindings = new ArrayList<>();
     private final List<KeyBinding> appBindings = new ArrayList<>();
-    private final Map<String, KeyBinding> bindingsByMapping = new HashMap<>();
-    private final List<String> mappingNames = new ArrayList<>();
-    private final ActionListener keyListener = this::onKey;
+    private final KeyMappings keyMappings;
     private final SimulationClock.Stepper stepper = this::stepParticles;
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
@@ -140,6 +132,7 @@ public abstract class DemoState extends BaseAppState {
         }
         this.title = title;
         this.sceneNode = new Node(title + " scene");
+        this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
     }
 
@@ -552,29 +545,14 @@ public abstract class DemoState extends BaseAppState {
     protected void onEnable() {
         sceneRoot.attachChild(sceneNode);
         guiRoot.attachChild(hud.getNode());
-        InputManager input = getApplication().getInputManager();
-        List<KeyBinding> all = getBindings();
-        for (int i = 0; i < all.size(); ++i) {
-            KeyBinding binding = all.get(i);
-            String name = "particlelab/" + title + "/" + i + " " + binding.getDescription();
-            input.addMapping(name, new KeyTrigger(binding.getKeyCode()));
-            bindingsByMapping.put(name, binding);
-            mappingNames.add(name);
-        }
-        input.addListener(keyListener, mappingNames.toArray(new String[0]));
+        keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
         hudDirty = true;
     }
 
     @Override
     protected void onDisable() {
-        InputManager input = getApplication().getInputManager();
-        input.removeListener(keyListener);
-        for (int i = 0; i < mappingNames.size(); ++i) {
-            input.deleteMapping(mappingNames.get(i));
-        }
-        mappingNames.clear();
-        bindingsByMapping.clear();
+        keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
         hud.getNode().removeFromParent();
     }
@@ -660,15 +638,9 @@ public abstract class DemoState extends BaseAppState {
         return help.toString();
     }
 
-    private void onKey(String name, boolean isPressed, float tpf) {
-        if (!isPressed) {
-            return;
-        }
-        KeyBinding binding = bindingsByMapping.get(name);
-        if (binding != null) {
-            binding.getAction().run();
-            hudDirty = true;
-        }
+
+    private void markHudDirty() {
+        hudDirty = true;
     }
 
     private void restartAndReframe() {
