@@ -7,8 +7,8 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import particlelab.demo.DemoState;
-import particlelab.demo.KeyMappings;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.KeyMappings;
 
 /**
  * Keeps exactly one demo enabled: keys 1–9 choose a demo, Tab the next one. The others stay

@@ -72,17 +72,28 @@ public final class ParticleIntegrator {
             return;
         }
         acceleration(particle, acceleration);
-        // V ← V + h·a, then P ← P + h·V with the new V
-        nextVelocity.set(particle.velocity).scaleAdd(stepSeconds, acceleration, nextVelocity);
-        nextPosition.set(particle.position).scaleAdd(stepSeconds, nextVelocity, nextPosition);
-        if (!Validate.isFinite(nextVelocity) || !Validate.isFinite(nextPosition)) {
+        Vector3f velocity = particle.velocity;
+        Vector3f position = particle.position;
+        // V ← V + h·a, then P ← P + h·V with the new V (in locals: nothing is written
+        // until the result is known to be finite)
+        float vx = velocity.x + stepSeconds * acceleration.x;
+        float vy = velocity.y + stepSeconds * acceleration.y;
+        float vz = velocity.z + stepSeconds * acceleration.z;
+        float px = position.x + stepSeconds * vx;
+        float py = position.y + stepSeconds * vy;
+        float pz = position.z + stepSeconds * vz;
+        nextVelocity.set(vx, vy, vz);
+        nextPosition.set(px, py, pz);
+        // One test for the usual case: a finite sum means six finite terms.
+        if (!Float.isFinite(vx + vy + vz + px + py + pz)
+                && (!Validate.isFinite(nextVelocity) || !Validate.isFinite(nextPosition))) {
             throw new IllegalStateException("the Euler step h=" + stepSeconds
                     + " s would leave the particle non-finite: " + particle
                     + " would get P=" + nextPosition + ", V=" + nextVelocity
                     + "; the largest stable step here is " + maxStableStep(particle) + " s");
         }
-        particle.velocity.set(nextVelocity);
-        particle.position.set(nextPosition);
+        velocity.set(vx, vy, vz);
+        position.set(px, py, pz);
     }
 
     /**
