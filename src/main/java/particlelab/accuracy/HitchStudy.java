@@ -3,6 +3,7 @@ package particlelab.accuracy;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -79,10 +80,10 @@ final class HitchStudy {
             integrator.step(particle, stepSeconds);
             ++steps;
             float y1 = particle.position.y;
-            if (y1 <= 0f) {
+            if (Landing.crossesGround(y0, y1)) {
                 landed = true;
                 float x1 = particle.position.x;
-                landingX = x0 + (x1 - x0) * (double) y0 / ((double) y0 - y1);
+                landingX = x0 + (x1 - x0) * Landing.crossingFraction(y0, y1);
             }
         }
     }

@@ -89,9 +89,9 @@ public final class ShotSimulator {
             float previousX = position.x;
             float previousY = position.y;
             integrator.step(bullet, stepSeconds);
-            if (position.y < 0f && previousY >= 0f) {
+            if (Landing.crossesGround(previousY, position.y)) {
                 // Interpolate the crossing inside this step.
-                double fraction = previousY / ((double) previousY - position.y);
+                double fraction = Landing.crossingFraction(previousY, position.y);
                 double x = previousX + fraction * ((double) position.x - previousX);
                 double time = (step - 1 + fraction) * stepSeconds;
                 storeResult.set(true, x, time, step);

@@ -13,6 +13,7 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -690,12 +691,13 @@ public abstract class DemoState extends BaseAppState {
             previousPosition.set(particle.position);
             integrator.step(particle, stepSeconds);
             demoParticle.addFlightSeconds(stepSeconds);
-            if (demoParticle.stopsAtGround() && particle.position.y < 0f
-                    && previousPosition.y >= 0f) {
+            if (demoParticle.stopsAtGround()
+                    && Landing.crossesGround(previousPosition.y, particle.position.y)) {
                 // The lecture stops the ball at the ground: find the crossing inside the step.
-                float fraction = previousPosition.y / (previousPosition.y - particle.position.y);
-                float landingX = previousPosition.x
-                        + fraction * (particle.position.x - previousPosition.x);
+                double fraction = Landing.crossingFraction(previousPosition.y,
+                        particle.position.y);
+                float landingX = (float) (previousPosition.x
+                        + fraction * (particle.position.x - previousPosition.x));
                 double seconds = demoParticle.getFlightSeconds() - stepSeconds
                         + fraction * stepSeconds;
                 demoParticle.land(landingX, seconds);
