@@ -58,8 +58,6 @@ public abstract class DemoState extends BaseAppState {
     public static final float HITCH_SECONDS = 0.5f;
     /** How often the HUD text is rebuilt (in seconds of real time). */
     public static final float HUD_REFRESH_SECONDS = 0.1f;
-    /** How long a warning stays up after its cause (in seconds of real time). */
-    private static final float WARNING_SECONDS = 4f;
     /** How many recent positions each trail keeps: 10 s at 60 steps per second. */
     private static final int TRAIL_POINTS = 600;
     /** Keys the application or jME itself use, which a demo may not bind. */
@@ -71,11 +69,6 @@ public abstract class DemoState extends BaseAppState {
     private static final String FOOTER =
             "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
 
-    /** What the warning line currently reports. */
-    private enum Warning {
-        NONE, REVERSING, UNSTABLE, BLOW_UP, HITCH
-    }
-
     private final String title;
     private final SimulationClock clock = new SimulationClock();
     private final List<DemoParticle> particles = new ArrayList<>();
@@ -85,6 +78,7 @@ public abstract class DemoState extends BaseAppState {
     private final List<KeyBinding> appBindings = new ArrayList<>();
     private final KeyMappings keyMappings;
     private final SimulationClock.Stepper stepper = this::stepParticles;
+    private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -110,16 +104,6 @@ public abstract class DemoState extends BaseAppState {
     private float hudAgeSeconds;
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
-    private float attemptedStepSeconds;
-    /** The worst h·λ of any step since the last HUD refresh, and that step and limit. */
-    private float worstStepRate;
-    private float worstStepSeconds;
-    private Warning warning = Warning.NONE;
-    private float warningAgeSeconds;
-    private float warningStepSeconds;
-    private float warningLimitSeconds;
-    private double droppedAtHitch;
-    private String blowUpMessage = "";
     private int blowUps;
 
     /**
@@ -429,8 +413,7 @@ public abstract class DemoState extends BaseAppState {
             }
         }
         clock.reset();
-        warning = Warning.NONE;
-        worstStepRate = 0f;
+        warnings.clear();
         onRestart();
         hudDirty = true;
     }
@@ -441,7 +424,7 @@ public abstract class DemoState extends BaseAppState {
      */
     public void injectHitch() {
         pendingHitchSeconds = HITCH_SECONDS;
-        droppedAtHitch = clock.getDroppedSeconds();
+        warnings.hitchInjected();
     }
 
     /**
@@ -455,7 +438,7 @@ public abstract class DemoState extends BaseAppState {
         if (pendingHitchSeconds > 0f) {
             frameSeconds = pendingHitchSeconds;
             pendingHitchSeconds = 0f;
-            raise(Warning.HITCH, frameSeconds, 0f);
+            warnings.hitchApplied(frameSeconds);
         }
         try {
             clock.advance(frameSeconds, stepper);
@@ -467,7 +450,7 @@ public abstract class DemoState extends BaseAppState {
             particle.view.update(particle.getParticle().position,
                     particle.getParticle().velocity);
         }
-        warningAgeSeconds += tpf;
+        warnings.age(tpf);
     }
 
     /**
@@ -566,7 +549,7 @@ public abstract class DemoState extends BaseAppState {
             hudAgeSeconds = 0f;
             hudDirty = false;
             hud.setBody(formatHud(hudText));
-            hud.setWarning(formatWarning(warningText));
+            hud.setWarning(warnings.format(warningText));
         }
     }
 
@@ -675,7 +658,7 @@ public abstract class DemoState extends BaseAppState {
 
     /** One step of h for every particle not held: the clock's stepper. */
     private void stepParticles(float stepSeconds) {
-        attemptedStepSeconds = stepSeconds;
+        warnings.beginStep(stepSeconds);
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
             if (demoParticle.isHeld()) {
@@ -683,11 +666,7 @@ public abstract class DemoState extends BaseAppState {
             }
             Particle particle = demoParticle.getParticle();
             ParticleIntegrator integrator = demoParticle.getIntegrator();
-            float stepRate = stepSeconds * integrator.dampingRate(particle);
-            if (stepRate > worstStepRate) {
-                worstStepRate = stepRate;
-                worstStepSeconds = stepSeconds;
-            }
+            warnings.observe(integrator.dampingRate(particle));
             previousPosition.set(particle.position);
             integrator.step(particle, stepSeconds);
             demoParticle.addFlightSeconds(stepSeconds);
@@ -705,79 +684,13 @@ public abstract class DemoState extends BaseAppState {
             demoParticle.view.getTrail().add(particle.position);
         }
         afterStep(stepSeconds);
-        checkStability();
-    }
-
-    /** Raise a warning when the worst step so far passed a limit (h·λ &gt; 1 or 2). */
-    private void checkStability() {
-        if (worstStepRate > 2f) {
-            raise(Warning.UNSTABLE, worstStepSeconds, 2f * worstStepSeconds / worstStepRate);
-        } else if (worstStepRate > 1f && warning != Warning.UNSTABLE) {
-            raise(Warning.REVERSING, worstStepSeconds, worstStepSeconds / worstStepRate);
-        }
-        worstStepRate = 0f;
-    }
-
-    private void raise(Warning newWarning, float stepSeconds, float limitSeconds) {
-        if (warning == Warning.BLOW_UP && warningAgeSeconds < WARNING_SECONDS) {
-            return;
-        }
-        warning = newWarning;
-        warningAgeSeconds = 0f;
-        warningStepSeconds = stepSeconds;
-        warningLimitSeconds = limitSeconds;
-        hudDirty = true;
+        warnings.endStep();
     }
 
     private void recoverFromBlowUp() {
         ++blowUps;
-        float step = attemptedStepSeconds;
         restart();
-        blowUpMessage = "The Euler step h = " + step + " s blew up (beyond the stability"
-                + " limit): the scene was reset.";
-        warning = Warning.BLOW_UP;
-        warningAgeSeconds = 0f;
-        hudDirty = true;
-    }
-
-    private StringBuilder formatWarning(StringBuilder text) {
-        text.setLength(0);
-        if (warning == Warning.NONE || warningAgeSeconds > WARNING_SECONDS) {
-            return text;
-        }
-        switch (warning) {
-            case BLOW_UP:
-                text.append(blowUpMessage);
-                break;
-            case UNSTABLE:
-                text.append("UNSTABLE: h = ");
-                TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1)
-                        .append(" ms is beyond the stability limit 2/k = ");
-                TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1)
-                        .append(" ms: the Euler step amplifies the velocity");
-                break;
-            case REVERSING:
-                text.append("h = ");
-                TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1)
-                        .append(" ms is beyond 1/k = ");
-                TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1)
-                        .append(" ms: drag overshoots and reverses the velocity each step");
-                break;
-            case HITCH:
-                text.append("Hitch: one ");
-                TextFormat.appendFixed(text, warningStepSeconds, 2).append(" s frame. ");
-                if (clock.getMode() == SimulationClock.Mode.RAW_TPF) {
-                    text.append("Raw tpf took it as ONE Euler step.");
-                } else {
-                    text.append("Fixed step clamped it; dropped ");
-                    TextFormat.appendFixed(text, clock.getDroppedSeconds() - droppedAtHitch, 2)
-                            .append(" s of simulated time.");
-                }
-                break;
-            default:
-                break;
-        }
-        return text;
+        warnings.blewUp();
     }
 
     private void appendParticleLine(StringBuilder text, DemoParticle demoParticle) {
