@@ -79,6 +79,7 @@ public abstract class DemoState extends BaseAppState {
     private final KeyMappings keyMappings;
     private final SimulationClock.Stepper stepper = this::stepParticles;
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
+    private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -91,7 +92,6 @@ public abstract class DemoState extends BaseAppState {
     private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
-    private String equations = "";
     private String helpText = "";
     private float viewXMin = -2f;
     private float viewXMax = 22f;
@@ -285,7 +285,7 @@ public abstract class DemoState extends BaseAppState {
     protected void refreshEquations() {
         StringBuilder text = new StringBuilder();
         describeEquations(text);
-        equations = text.toString();
+        hudWriter.setEquations(text.toString());
         hudDirty = true;
     }
 
@@ -460,17 +460,9 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
-        StringBuilder text = storeResult;
-        text.setLength(0);
-        text.append(equations);
-        text.append("t = ");
-        TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s\n");
-        for (int i = 0; i < particles.size(); ++i) {
-            appendParticleLine(text, particles.get(i));
-        }
-        appendSteppingLine(text);
-        writeHudLines(text);
-        return text;
+        hudWriter.write(storeResult);
+        writeHudLines(storeResult);
+        return storeResult;
     }
 
     // ------------------------------------------------------------- framework overrides ----
@@ -691,49 +683,6 @@ public abstract class DemoState extends BaseAppState {
         ++blowUps;
         restart();
         warnings.blewUp();
-    }
-
-    private void appendParticleLine(StringBuilder text, DemoParticle demoParticle) {
-        Particle particle = demoParticle.getParticle();
-        text.append(demoParticle.getLabel()).append(":  P = ");
-        TextFormat.appendVector(text, particle.position, 2).append(" m   V = ");
-        TextFormat.appendVector(text, particle.velocity, 2).append(" m/s   |V| = ");
-        TextFormat.appendFixed(text, particle.velocity.length(), 2).append(" m/s");
-        if (demoParticle.hasLanded()) {
-            text.append("   landed at x = ");
-            TextFormat.appendFixed(text, demoParticle.getLandingX(), 2).append(" m");
-        }
-        text.append('\n');
-    }
-
-    private void appendSteppingLine(StringBuilder text) {
-        text.append("Stepping: ");
-        if (clock.getMode() == SimulationClock.Mode.FIXED_STEP) {
-            text.append("fixed h = ");
-            TextFormat.appendFixed(text, clock.getStepSeconds() * 1000f, 1).append(" ms");
-        } else {
-            text.append("raw tpf, last h = ");
-            TextFormat.appendFixed(text, clock.getCurrentStepSeconds() * 1000f, 1)
-                    .append(" ms");
-        }
-        text.append("   time x");
-        TextFormat.appendFixed(text, clock.getTimeScale(), 2);
-        float limit = Float.POSITIVE_INFINITY;
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            limit = Math.min(limit, particle.getIntegrator().maxStableStep(
-                    particle.getParticle()));
-        }
-        if (limit < Float.POSITIVE_INFINITY) {
-            text.append("   stable while h < ");
-            TextFormat.appendFixed(text, limit, 3).append(" s");
-        } else {
-            text.append("   no drag: any h is stable");
-        }
-        if (clock.isPaused()) {
-            text.append("   PAUSED (Space resumes, N steps)");
-        }
-        text.append('\n');
     }
 
     /** A post declared by {@link #addMarker}, built at initialisation. */
