@@ -19,7 +19,6 @@ import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.CameraFraming;
 import particlelab.view.DistanceGrid;
-import particlelab.view.HelpText;
 import particlelab.view.HudView;
 import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
@@ -60,12 +59,6 @@ public abstract class DemoState extends BaseAppState {
     public static final float HUD_REFRESH_SECONDS = 0.1f;
     /** How many recent positions each trail keeps: 10 s at 60 steps per second. */
     private static final int TRAIL_POINTS = 600;
-    /** Keys the application or jME itself use, which a demo may not bind. */
-    private static final int[] RESERVED_KEYS = {KeyInput.KEY_ESCAPE, KeyInput.KEY_F5,
-        KeyInput.KEY_C, KeyInput.KEY_M, KeyInput.KEY_W, KeyInput.KEY_A, KeyInput.KEY_S,
-        KeyInput.KEY_D, KeyInput.KEY_Q, KeyInput.KEY_Z, KeyInput.KEY_TAB, KeyInput.KEY_SYSRQ,
-        KeyInput.KEY_1, KeyInput.KEY_2, KeyInput.KEY_3, KeyInput.KEY_4, KeyInput.KEY_5,
-        KeyInput.KEY_6, KeyInput.KEY_7, KeyInput.KEY_8, KeyInput.KEY_9};
     private static final String FOOTER =
             "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
 
@@ -73,9 +66,7 @@ public abstract class DemoState extends BaseAppState {
     private final SimulationClock clock = new SimulationClock();
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
-    private final List<KeyBinding> sharedBindings = new ArrayList<>();
-    private final List<KeyBinding> demoBindings = new ArrayList<>();
-    private final List<KeyBinding> appBindings = new ArrayList<>();
+    private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
     private final SimulationClock.Stepper stepper = this::stepParticles;
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
@@ -258,7 +249,7 @@ public abstract class DemoState extends BaseAppState {
      * @param action run once per press, on the jME thread (not null)
      */
     protected void bindKey(int keyCode, String keyLabel, String description, Runnable action) {
-        addBinding(demoBindings, new KeyBinding(keyCode, keyLabel, description, action));
+        keys.addOwn(keyCode, keyLabel, description, action);
     }
 
     /**
@@ -329,8 +320,7 @@ public abstract class DemoState extends BaseAppState {
      * @param bindings the application's keys (not null, copied)
      */
     public void setApplicationBindings(List<KeyBinding> bindings) {
-        appBindings.clear();
-        appBindings.addAll(bindings);
+        keys.setApplication(bindings);
     }
 
     /**
@@ -357,9 +347,7 @@ public abstract class DemoState extends BaseAppState {
      * @return a new list (not null)
      */
     public List<KeyBinding> getBindings() {
-        List<KeyBinding> all = new ArrayList<>(sharedBindings);
-        all.addAll(demoBindings);
-        return all;
+        return keys.copyMapped();
     }
 
     /**
@@ -501,7 +489,7 @@ public abstract class DemoState extends BaseAppState {
         hud.setTitle(titleText);
         hud.setFooter(FOOTER);
         refreshEquations();
-        helpText = buildHelp();
+        helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
@@ -548,72 +536,25 @@ public abstract class DemoState extends BaseAppState {
     // ---------------------------------------------------------------- private helpers ----
 
     private void declareSharedKeys() {
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
-                () -> hud.setHelpVisible(!hud.isHelpVisible())));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_SPACE, "Space",
+        keys.addShared(KeyInput.KEY_H, "H", "show / hide this help",
+                () -> hud.setHelpVisible(!hud.isHelpVisible()));
+        keys.addShared(KeyInput.KEY_SPACE, "Space",
                 "pause / resume the simulation (the camera keeps moving)",
-                () -> clock.setPaused(!clock.isPaused())));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_N, "N",
-                "single step of h (pauses first)", this::singleStep));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_R, "R",
-                "reset: launch again, reframe the camera", this::restartAndReframe));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_T, "T",
-                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_K, "K",
-                "inject one 0.5 s frame (a hitch)", this::injectHitch));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_EQUALS, "+",
-                "time scale x2", () -> scaleTime(2f)));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_ADD, "+ (keypad)",
-                "time scale x2", () -> scaleTime(2f)));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_MINUS, "-",
-                "time scale /2", () -> scaleTime(0.5f)));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_SUBTRACT, "- (keypad)",
-                "time scale /2", () -> scaleTime(0.5f)));
-        addBinding(sharedBindings, new KeyBinding(KeyInput.KEY_V, "V",
-                "show / hide velocity arrows", this::toggleArrows));
+                () -> clock.setPaused(!clock.isPaused()));
+        keys.addShared(KeyInput.KEY_N, "N", "single step of h (pauses first)", this::singleStep);
+        keys.addShared(KeyInput.KEY_R, "R", "reset: launch again, reframe the camera",
+                this::restartAndReframe);
+        keys.addShared(KeyInput.KEY_T, "T",
+                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode);
+        keys.addShared(KeyInput.KEY_K, "K", "inject one 0.5 s frame (a hitch)",
+                this::injectHitch);
+        keys.addShared(KeyInput.KEY_EQUALS, "+", "time scale x2", () -> scaleTime(2f));
+        keys.addShared(KeyInput.KEY_ADD, "+ (keypad)", "time scale x2", () -> scaleTime(2f));
+        keys.addShared(KeyInput.KEY_MINUS, "-", "time scale /2", () -> scaleTime(0.5f));
+        keys.addShared(KeyInput.KEY_SUBTRACT, "- (keypad)", "time scale /2",
+                () -> scaleTime(0.5f));
+        keys.addShared(KeyInput.KEY_V, "V", "show / hide velocity arrows", this::toggleArrows);
     }
-
-    private void addBinding(List<KeyBinding> list, KeyBinding binding) {
-        int code = binding.getKeyCode();
-        for (int reserved : RESERVED_KEYS) {
-            if (code == reserved) {
-                throw new IllegalArgumentException("key " + binding.getKeyLabel()
-                        + " is used by jME or the application; choose another for \""
-                        + binding.getDescription() + "\"");
-            }
-        }
-        List<KeyBinding> all = getBindings();
-        for (int i = 0; i < all.size(); ++i) {
-            if (all.get(i).getKeyCode() == code) {
-                throw new IllegalArgumentException("key " + binding.getKeyLabel()
-                        + " is already bound to \"" + all.get(i).getDescription() + "\"");
-            }
-        }
-        list.add(binding);
-    }
-
-    private String buildHelp() {
-        HelpText help = new HelpText();
-        help.section(title + " - keys");
-        for (int i = 0; i < demoBindings.size(); ++i) {
-            help.key(demoBindings.get(i).getKeyLabel(), demoBindings.get(i).getDescription());
-        }
-        help.section("Every demo");
-        for (int i = 0; i < sharedBindings.size(); ++i) {
-            help.key(sharedBindings.get(i).getKeyLabel(),
-                    sharedBindings.get(i).getDescription());
-        }
-        if (!appBindings.isEmpty()) {
-            help.section("Choosing a demo");
-            for (int i = 0; i < appBindings.size(); ++i) {
-                help.key(appBindings.get(i).getKeyLabel(), appBindings.get(i).getDescription());
-            }
-        }
-        help.section("Camera (jME)");
-        help.key("drag mouse / wheel", "look around / zoom;  W A S D Q Z  fly;  R  reframes");
-        return help.toString();
-    }
-
 
     private void markHudDirty() {
         hudDirty = true;
