@@ -5,8 +5,6 @@ import com.jme3.app.state.BaseAppState;
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
 import com.jme3.input.KeyInput;
-import com.jme3.light.AmbientLight;
-import com.jme3.light.DirectionalLight;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
@@ -17,10 +15,7 @@ import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
-import particlelab.view.CameraFraming;
-import particlelab.view.DistanceGrid;
 import particlelab.view.HudView;
-import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
 
 /**
@@ -57,8 +52,6 @@ public abstract class DemoState extends BaseAppState {
     public static final float HITCH_SECONDS = 0.5f;
     /** How often the HUD text is rebuilt (in seconds of real time). */
     public static final float HUD_REFRESH_SECONDS = 0.1f;
-    /** How many recent positions each trail keeps: 10 s at 60 steps per second. */
-    private static final int TRAIL_POINTS = 600;
     private static final String FOOTER =
             "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
 
@@ -78,20 +71,12 @@ public abstract class DemoState extends BaseAppState {
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
 
-    private final List<Marker> markers = new ArrayList<>();
+    private final DemoScene scene = new DemoScene(particles);
     private boolean sceneCreated;
     private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
     private String helpText = "";
-    private float viewXMin = -2f;
-    private float viewXMax = 22f;
-    private float viewYMin = -1.5f;
-    private float viewYMax = 8f;
-    private float gridSpacing = 1f;
-    private int gridLabelEvery = 5;
-    private float sphereRadius = 0.35f;
-    private boolean arrowsVisible = true;
     private float hudAgeSeconds;
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
@@ -206,20 +191,7 @@ public abstract class DemoState extends BaseAppState {
      */
     protected void setView(float xMin, float xMax, float yMax, float gridSpacingMetres,
             int labelEvery, float sphereRadiusMetres) {
-        if (!(xMax > xMin && yMax > 0f && gridSpacingMetres > 0f && labelEvery >= 1
-                && sphereRadiusMetres > 0f)) {
-            throw new IllegalArgumentException("view needs xMin < xMax, yMax > 0, spacing > 0,"
-                    + " labelEvery >= 1 and radius > 0, but got x " + xMin + ".." + xMax
-                    + ", yMax " + yMax + ", spacing " + gridSpacingMetres + ", labelEvery "
-                    + labelEvery + ", radius " + sphereRadiusMetres);
-        }
-        viewXMin = xMin;
-        viewXMax = xMax;
-        viewYMax = yMax;
-        viewYMin = -1.5f * gridSpacingMetres;
-        gridSpacing = gridSpacingMetres;
-        gridLabelEvery = labelEvery;
-        sphereRadius = sphereRadiusMetres;
+        scene.setRegion(xMin, xMax, yMax, gridSpacingMetres, labelEvery, sphereRadiusMetres);
     }
 
     /**
@@ -232,11 +204,7 @@ public abstract class DemoState extends BaseAppState {
      * @param color its colour (not null, not modified)
      */
     protected void addMarker(String label, float x, float heightMetres, ColorRGBA color) {
-        if (!(heightMetres > 0f) || Float.isInfinite(heightMetres)) {
-            throw new IllegalArgumentException(
-                    "marker height (m) must be finite and > 0, but was " + heightMetres);
-        }
-        markers.add(new Marker(label, x, heightMetres, color.clone()));
+        scene.addMarker(label, x, heightMetres, color);
     }
 
     /**
@@ -263,10 +231,7 @@ public abstract class DemoState extends BaseAppState {
         particle.copyLaunchPosition(previousPosition);
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
-        if (particle.view != null) {
-            particle.view.getTrail().clear();
-            particle.view.getTrail().add(particle.getParticle().position);
-        }
+        scene.restartTrail(particle);
         hudDirty = true;
     }
 
@@ -374,7 +339,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if shown
      */
     public boolean areArrowsVisible() {
-        return arrowsVisible;
+        return scene.areArrowsVisible();
     }
 
     /**
@@ -395,10 +360,7 @@ public abstract class DemoState extends BaseAppState {
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             particle.restart();
-            if (particle.view != null) {
-                particle.view.getTrail().clear();
-                particle.view.getTrail().add(particle.getParticle().position);
-            }
+            scene.restartTrail(particle);
         }
         clock.reset();
         warnings.clear();
@@ -433,11 +395,7 @@ public abstract class DemoState extends BaseAppState {
         } catch (IllegalStateException blowUp) {
             recoverFromBlowUp();
         }
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            particle.view.update(particle.getParticle().position,
-                    particle.getParticle().velocity);
-        }
+        scene.updateViews();
         warnings.age(tpf);
     }
 
@@ -464,26 +422,7 @@ public abstract class DemoState extends BaseAppState {
         AssetManager assets = app.getAssetManager();
         BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
 
-        sceneNode.attachChild(new DistanceGrid(assets, font, viewXMin, viewXMax, viewYMin,
-                viewYMax, gridSpacing, gridLabelEvery).getNode());
-        for (int i = 0; i < markers.size(); ++i) {
-            Marker marker = markers.get(i);
-            sceneNode.attachChild(ParticleView.createPost(assets, font, marker.label,
-                    marker.x, marker.height, 0.6f * sphereRadius, marker.color));
-        }
-        DirectionalLight sun = new DirectionalLight(
-                new Vector3f(-0.4f, -0.6f, -0.7f).normalizeLocal(), ColorRGBA.White.clone());
-        sceneNode.addLight(sun);
-        sceneNode.addLight(new AmbientLight(new ColorRGBA(0.45f, 0.45f, 0.5f, 1f)));
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            particle.view = new ParticleView(assets, font, particle.getLabel(),
-                    particle.getColor(), sphereRadius, TRAIL_POINTS, i);
-            particle.view.getTrail().add(particle.getParticle().position);
-            particle.view.getArrow().setVisible(arrowsVisible);
-            sceneNode.attachChild(particle.view.getNode());
-        }
-
+        scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         hud.setTitle(titleText);
@@ -493,11 +432,7 @@ public abstract class DemoState extends BaseAppState {
         hud.setHelp(helpText);
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            particle.view.update(particle.getParticle().position,
-                    particle.getParticle().velocity);
-        }
+        scene.updateViews();
     }
 
     @Override
@@ -553,7 +488,7 @@ public abstract class DemoState extends BaseAppState {
         keys.addShared(KeyInput.KEY_MINUS, "-", "time scale /2", () -> scaleTime(0.5f));
         keys.addShared(KeyInput.KEY_SUBTRACT, "- (keypad)", "time scale /2",
                 () -> scaleTime(0.5f));
-        keys.addShared(KeyInput.KEY_V, "V", "show / hide velocity arrows", this::toggleArrows);
+        keys.addShared(KeyInput.KEY_V, "V", "show / hide velocity arrows", scene::toggleArrows);
     }
 
     private void markHudDirty() {
@@ -577,16 +512,8 @@ public abstract class DemoState extends BaseAppState {
         clock.setTimeScale(scale);
     }
 
-    private void toggleArrows() {
-        arrowsVisible = !arrowsVisible;
-        for (int i = 0; i < particles.size(); ++i) {
-            particles.get(i).view.getArrow().setVisible(arrowsVisible);
-        }
-    }
-
     private void frameCamera() {
-        CameraFraming.frame(getApplication().getCamera(), viewXMin, viewXMax, viewYMin,
-                viewYMax);
+        scene.frame(getApplication().getCamera());
     }
 
     /** One step of h for every particle not held: the clock's stepper. */
@@ -624,20 +551,5 @@ public abstract class DemoState extends BaseAppState {
         ++blowUps;
         restart();
         warnings.blewUp();
-    }
-
-    /** A post declared by {@link #addMarker}, built at initialisation. */
-    private static final class Marker {
-        final String label;
-        final float x;
-        final float height;
-        final ColorRGBA color;
-
-        Marker(String label, float x, float height, ColorRGBA color) {
-            this.label = label;
-            this.x = x;
-            this.height = height;
-            this.color = color;
-        }
     }
 }
