@@ -2,6 +2,7 @@ package particlelab.demo;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.ParticleView;
@@ -183,9 +184,23 @@ public final class DemoParticle {
         return flightSeconds;
     }
 
-    /** Count one step of flight. */
-    void addFlightSeconds(float stepSeconds) {
+    /**
+     * Count a step the particle just took and, if it stops at the ground and came down
+     * through {@code y = 0} in that step, land it where it crossed: the lecture's rule, with
+     * the crossing interpolated linearly inside the step ({@link Landing}). Allocates nothing.
+     *
+     * @param previousPosition its position before the step (in metres, not null, not
+     *     modified)
+     * @param stepSeconds h of the step (in seconds, &gt;0)
+     */
+    void recordStep(Vector3f previousPosition, float stepSeconds) {
         flightSeconds += stepSeconds;
+        if (stopsAtGround && Landing.crossesGround(previousPosition.y, particle.position.y)) {
+            double fraction = Landing.crossingFraction(previousPosition.y, particle.position.y);
+            float x = (float) (previousPosition.x
+                    + fraction * (particle.position.x - previousPosition.x));
+            land(x, flightSeconds - stepSeconds + fraction * stepSeconds);
+        }
     }
 
     /** Put the particle back to its launch state, not held, not landed. */
@@ -205,7 +220,7 @@ public final class DemoParticle {
      * @param x where it crossed (in metres)
      * @param seconds when it crossed since the launch (in seconds)
      */
-    void land(float x, double seconds) {
+    private void land(float x, double seconds) {
         landed = true;
         held = true;
         landingX = x;

@@ -11,7 +11,6 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -529,18 +528,8 @@ public abstract class DemoState extends BaseAppState {
             warnings.observe(integrator.dampingRate(particle));
             previousPosition.set(particle.position);
             integrator.step(particle, stepSeconds);
-            demoParticle.addFlightSeconds(stepSeconds);
-            if (demoParticle.stopsAtGround()
-                    && Landing.crossesGround(previousPosition.y, particle.position.y)) {
-                // The lecture stops the ball at the ground: find the crossing inside the step.
-                double fraction = Landing.crossingFraction(previousPosition.y,
-                        particle.position.y);
-                float landingX = (float) (previousPosition.x
-                        + fraction * (particle.position.x - previousPosition.x));
-                double seconds = demoParticle.getFlightSeconds() - stepSeconds
-                        + fraction * stepSeconds;
-                demoParticle.land(landingX, seconds);
-            }
+            // Flight time, and the lecture's stop at the ground, inside the step.
+            demoParticle.recordStep(previousPosition, stepSeconds);
             demoParticle.view.getTrail().add(particle.position);
         }
         afterStep(stepSeconds);
