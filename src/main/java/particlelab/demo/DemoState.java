@@ -44,6 +44,12 @@ import particlelab.view.TextFormat;
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
  * scene and shows why, instead of crashing the window.
+ *
+ * <h2>Inside</h2>
+ * This class coordinates; the details live in small classes of this package:
+ * {@code DemoScene} (the region, grid, posts, lights and particle views), {@code DemoKeys}
+ * (the bindings, their checks and the help text), {@code HudWriter} (the HUD lines every demo
+ * shows) and {@code StepWarnings} (the stability, hitch and blow-up warning).
  */
 public abstract class DemoState extends BaseAppState {
 
@@ -58,11 +64,12 @@ public abstract class DemoState extends BaseAppState {
     private final SimulationClock clock = new SimulationClock();
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
+    private final DemoScene scene = new DemoScene(particles);
     private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
-    private final SimulationClock.Stepper stepper = this::stepParticles;
-    private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final HudWriter hudWriter = new HudWriter(clock, particles);
+    private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
+    private final SimulationClock.Stepper stepper = this::stepParticles;
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -70,7 +77,6 @@ public abstract class DemoState extends BaseAppState {
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
 
-    private final DemoScene scene = new DemoScene(particles);
     private boolean sceneCreated;
     private HudView hud;
     private Node guiRoot;
