@@ -30,7 +30,7 @@ public final class DragDemo extends DemoState {
     /** The quadratic drag coefficient c (kg/m), chosen to bite as hard as b at launch. */
     public static final float QUADRATIC_C = 0.064f;
     /** The common launch velocity (m/s). */
-    public static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
     private static final float MASS_KG = 1f;
 
     /** Create the demo. */

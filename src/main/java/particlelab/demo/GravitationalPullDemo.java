@@ -19,7 +19,7 @@ import particlelab.physics.ParticleIntegrator;
 public final class GravitationalPullDemo extends DemoState {
 
     /** The lecture's launch velocity (m/s). */
-    public static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
 
     /** Create the demo. */
     public GravitationalPullDemo() {

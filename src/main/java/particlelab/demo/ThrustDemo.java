@@ -24,7 +24,7 @@ public final class ThrustDemo extends DemoState {
     /** The lecture's linear drag coefficient b (N·s/m). */
     public static final float LINEAR_B = 0.9f;
     /** The common launch velocity (m/s). */
-    public static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
 
     /** Create the demo. */
     public ThrustDemo() {
