@@ -2,9 +2,6 @@ package particlelab.accuracy;
 
 import com.jme3.math.Vector3f;
 import particlelab.physics.Gravity;
-import particlelab.physics.LinearDrag;
-import particlelab.physics.Particle;
-import particlelab.physics.ParticleIntegrator;
 
 /**
  * The report's own benchmarks, timed in this JVM one after another (side by side): every
@@ -62,55 +59,26 @@ final class BenchmarkStudy {
         }, STEPS_PER_CALL));
         progress.advance();
         for (int count : config.particleCounts()) {
-            bulk(table, count, meter, progress, gravity, gravityPerAxis);
+            bulk(table, count, meter, progress);
         }
         return table;
     }
 
     private static void bulk(BenchmarkTable table, int count, CostMeter meter,
-            ProgressBar progress, Vector3f gravity, float[] gravityPerAxis) {
+            ProgressBar progress) {
         progress.phase("benchmarks: " + count + " particles");
-        float rate = (float) LINEAR_RATE;
-        LectureStyleParticle[] lecture = new LectureStyleParticle[count];
-        Particle[] objects = new Particle[count];
-        float[] positions = new float[3 * count];
-        float[] velocities = new float[3 * count];
-        for (int i = 0; i < count; ++i) {
-            Vector3f velocity = new Vector3f(20f + i % 7, 30f + i % 11, i % 5);
-            lecture[i] = new LectureStyleParticle(new Vector3f(), velocity, 1f);
-            objects[i] = new Particle(new Vector3f(), velocity, 1f);
-            velocities[i] = velocity.x;
-            velocities[count + i] = velocity.y;
-            velocities[2 * count + i] = velocity.z;
-        }
-        ParticleIntegrator integrator =
-                new ParticleIntegrator(new Gravity(), new LinearDrag(rate));
+        BulkScene scene = new BulkScene(count);
         add(table, BenchmarkTable.bulkName(BenchmarkTable.BULK_LECTURE, count),
-                meter.measure(units -> {
-                    for (int i = 0; i < count; ++i) {
-                        lecture[i].step(gravity, rate, STEP_FLOAT);
-                    }
-                    return lecture;
-                }, count));
+                meter.measure(units -> scene.stepLectureStyle(), count));
         progress.advance();
         add(table, BenchmarkTable.bulkName(BenchmarkTable.BULK_OBJECTS, count),
-                meter.measure(units -> {
-                    integrator.step(objects, STEP_FLOAT);
-                    return objects;
-                }, count));
+                meter.measure(units -> scene.stepSharedObjects(), count));
         progress.advance();
         add(table, BenchmarkTable.bulkName(BenchmarkTable.BULK_BATCH, count),
-                meter.measure(units -> {
-                    integrator.stepPacked(positions, velocities, count, 1f, STEP_FLOAT);
-                    return positions;
-                }, count));
+                meter.measure(units -> scene.stepSharedBatch(), count));
         progress.advance();
         add(table, BenchmarkTable.bulkName(BenchmarkTable.BULK_PRIMITIVE, count),
-                meter.measure(units -> {
-                    PrimitiveLoop.step(positions, velocities, count, gravityPerAxis, rate,
-                            STEP_FLOAT);
-                    return positions;
-                }, count));
+                meter.measure(units -> scene.stepPrimitiveLoop(), count));
         progress.advance();
     }
 
