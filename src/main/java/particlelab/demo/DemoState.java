@@ -292,7 +292,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Tell the demo about keys the application handles (choosing demos), so that its help
-     * overlay lists them too. Call before the demo is initialised.
+     * overlay and footer list them too and the demo may not bind them. Call before the demo
+     * is initialised.
      *
      * @param bindings the application's keys (not null, copied)
      */

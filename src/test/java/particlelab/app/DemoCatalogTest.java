@@ -47,6 +47,9 @@ class DemoCatalogTest {
                 demoClasses.toString());
         assertEquals(catalogued.size(), new HashSet<>(catalogued).size(),
                 "a demo class listed twice: " + catalogued);
+        Set<String> missing = new TreeSet<>(demoClasses);
+        missing.removeAll(catalogued);
+        assertTrue(missing.isEmpty(), "add to DemoCatalog's list: " + missing);
         assertEquals(demoClasses, new TreeSet<>(catalogued));
     }
 

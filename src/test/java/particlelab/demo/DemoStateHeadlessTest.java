@@ -343,25 +343,6 @@ class DemoStateHeadlessTest {
     }
 
     @Test
-    void aDigitWithNoDemoSaysSoOnTheHud() throws Exception {
-        int count = demos().size();
-        assertTrue(count < 9, "the test needs a digit with no demo");
-        String notice = harness.call(() -> {
-            for (KeyBinding key : harness.app().getSwitcher().getBindings()) {
-                for (int i = 0; i < key.countKeys(); ++i) {
-                    if (key.getKeyLabel(i).equals(Integer.toString(count + 1))) {
-                        key.press(i);
-                    }
-                }
-            }
-            return harness.app().getSwitcher().getSelected().getNotice();
-        });
-        assertEquals("no demo " + (count + 1) + ": there are " + count + "; Tab cycles", notice);
-        String help = demos().get(0).getHelpText();
-        assertTrue(help.contains("no demo (there are " + count + "; Tab cycles)"), help);
-    }
-
-    @Test
     void timeKeysDoubleHalveAndGoBackToRealTimeWithinTheLimits() throws Exception {
         DemoState demo = demos().get(DemoCatalog.indexOf("pull"));
         float[] scales = harness.call(() -> {
