@@ -142,6 +142,9 @@ public final class SimulationClock {
         if (newMode == null) {
             throw new IllegalArgumentException("mode must be RAW_TPF or FIXED_STEP, but was null");
         }
+        if (newMode != mode) {
+            restartMeasurement();
+        }
         mode = newMode;
         if (accumulatorSeconds > 0.0) {
             droppedSeconds += accumulatorSeconds;
@@ -172,6 +175,7 @@ public final class SimulationClock {
      */
     public void setStepSeconds(float newStepSeconds) {
         stepSeconds = Validate.positive(newStepSeconds, "fixed step h (s)");
+        restartMeasurement();
     }
 
     /**
@@ -190,6 +194,7 @@ public final class SimulationClock {
      */
     public void setMaxFrameSeconds(float seconds) {
         maxFrameSeconds = Validate.positive(seconds, "max frame time (s)");
+        restartMeasurement();
     }
 
     /**
@@ -212,6 +217,7 @@ public final class SimulationClock {
                     "max steps per frame must be >= 1, but was " + steps);
         }
         maxStepsPerFrame = steps;
+        restartMeasurement();
     }
 
     /**
@@ -234,6 +240,9 @@ public final class SimulationClock {
             throw new IllegalArgumentException("time scale must be from " + MIN_TIME_SCALE
                     + " to " + MAX_TIME_SCALE + ", but was " + scale);
         }
+        if (scale != timeScale) {
+            restartMeasurement();
+        }
         timeScale = scale;
     }
 
@@ -252,6 +261,9 @@ public final class SimulationClock {
      * @param newPaused true to pause
      */
     public void setPaused(boolean newPaused) {
+        if (newPaused != paused) {
+            restartMeasurement();
+        }
         paused = newPaused;
         singleStepRequested = false;
     }
@@ -324,9 +336,10 @@ public final class SimulationClock {
      * over the last complete window of at least {@link #RATE_WINDOW_SECONDS} of frame time.
      * It is below the asked-for {@link #getTimeScale()} when the clamp or the step cap drop
      * time, 0 while paused, and it wobbles by up to one step per window in fixed-step mode
-     * (steps are whole).
+     * (steps are whole). Changing the scale, pause, mode, h or a limit starts the
+     * measurement again, so a rate measured under other settings is never shown.
      *
-     * @return the scale (&ge;0), or NaN until the first window is complete
+     * @return the scale (&ge;0), or NaN until a window under the current settings is complete
      */
     public float getMeasuredTimeScale() {
         return measuredTimeScale;
@@ -409,6 +422,16 @@ public final class SimulationClock {
             return 1;
         }
         return advanceFixed(scaled, stepper);
+    }
+
+    /** Forget the window under way and the last result: the settings changed. */
+    private void restartMeasurement() {
+        windowFrameSeconds = 0.0;
+        windowFrames = 0;
+        windowSimulatedSeconds = 0.0;
+        windowDroppedSeconds = 0.0;
+        measuredTimeScale = Float.NaN;
+        measuredDropping = false;
     }
 
     /** Add one frame to the measuring window and close the window once it is long enough. */

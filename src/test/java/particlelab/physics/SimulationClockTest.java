@@ -451,6 +451,27 @@ class SimulationClockTest {
     }
 
     @Test
+    void changingTheScaleStartsTheMeasurementAgain() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        for (int i = 0; i < 60; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertTrue(clock.isDroppingTime());
+
+        clock.setTimeScale(1f);
+
+        // Neither x15 nor "dropping" outlives the settings they were measured under.
+        assertTrue(Float.isNaN(clock.getMeasuredTimeScale()));
+        assertFalse(clock.isDroppingTime());
+        for (int i = 0; i < 30; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertEquals(1f, clock.getMeasuredTimeScale(), H / SimulationClock.RATE_WINDOW_SECONDS);
+    }
+
+    @Test
     void rawModeHasNoFrameLimitAndDropsNothing() {
         SimulationClock clock = new SimulationClock();
         clock.setMode(SimulationClock.Mode.RAW_TPF);
