@@ -12,7 +12,8 @@ import particlelab.demo.KeyMappings;
 
 /**
  * Keeps exactly one demo enabled: keys 1–9 choose a demo, Tab the next one. The others stay
- * attached but disabled (scene detached, keys unmapped), so switching back resumes them.
+ * attached but disabled (scene detached, keys unmapped), so switching back resumes them. A
+ * digit with no demo behind it says so on the HUD instead of doing nothing.
  *
  * <p>A key press only records the choice; the switch happens in {@link #update}, outside jME's
  * input dispatch, because disabling a demo deletes the very mappings being dispatched.
@@ -53,8 +54,13 @@ public final class DemoSwitcher extends BaseAppState {
             bindings.add(new KeyBinding(DIGIT_KEYS[i], Integer.toString(i + 1),
                     demos.get(i).getTitle(), () -> select(index)));
         }
+        String range = numbered == 1 ? "1" : "1-" + numbered;
         bindings.add(new KeyBinding(KeyInput.KEY_TAB, "Tab", "next demo",
-                () -> select((requested + 1) % this.demos.size())));
+                () -> select((requested + 1) % this.demos.size()))
+                .withSummary("next demo (" + range + " by number)"));
+        if (numbered < MAX_NUMBERED) {
+            bindings.add(unusedDigits(numbered));
+        }
     }
 
     /**
@@ -132,5 +138,27 @@ public final class DemoSwitcher extends BaseAppState {
             selected = requested;
             demos.get(selected).setEnabled(true);
         }
+    }
+
+    /**
+     * Bind the digits beyond the last demo to a notice on the HUD, e.g. "no demo 7: there
+     * are 6; Tab cycles".
+     *
+     * @param numbered how many digits choose a demo (&ge;1, &lt;{@link #MAX_NUMBERED})
+     * @return one binding for the remaining digits (not null)
+     */
+    private KeyBinding unusedDigits(int numbered) {
+        int unused = MAX_NUMBERED - numbered;
+        int[] codes = new int[unused];
+        String[] labels = new String[unused];
+        String[] notices = new String[unused];
+        String count = numbered == 1 ? "there is 1" : "there are " + numbered;
+        for (int i = 0; i < unused; ++i) {
+            codes[i] = DIGIT_KEYS[numbered + i];
+            labels[i] = Integer.toString(numbered + i + 1);
+            notices[i] = "no demo " + labels[i] + ": " + count + "; Tab cycles";
+        }
+        return new KeyBinding(codes, labels, "no demo (" + count + "; Tab cycles)", null,
+                key -> getSelected().showNotice(notices[key]));
     }
 }

@@ -9,16 +9,17 @@ import particlelab.view.HelpText;
  * The keys of one demo, in three groups: the controls every demo shares, the demo's own, and
  * the application's (choosing a demo), which the application maps and the help only lists.
  * Refuses a key that jME or the application uses, or one already bound, with a message naming
- * both; and writes the help overlay from the bindings, so that it never drifts from them.
+ * both; and writes the help overlay and the footer from the bindings, so that neither drifts
+ * from them.
  */
 final class DemoKeys {
 
-    /** Keys the application or jME itself use, which a demo may not bind. */
+    /** Keys jME itself uses (quit, stats, camera, memory, flying), which a demo may not bind. */
     private static final int[] RESERVED_KEYS = {KeyInput.KEY_ESCAPE, KeyInput.KEY_F5,
         KeyInput.KEY_C, KeyInput.KEY_M, KeyInput.KEY_W, KeyInput.KEY_A, KeyInput.KEY_S,
-        KeyInput.KEY_D, KeyInput.KEY_Q, KeyInput.KEY_Z, KeyInput.KEY_TAB, KeyInput.KEY_SYSRQ,
-        KeyInput.KEY_1, KeyInput.KEY_2, KeyInput.KEY_3, KeyInput.KEY_4, KeyInput.KEY_5,
-        KeyInput.KEY_6, KeyInput.KEY_7, KeyInput.KEY_8, KeyInput.KEY_9};
+        KeyInput.KEY_D, KeyInput.KEY_Q, KeyInput.KEY_Z, KeyInput.KEY_SYSRQ};
+    /** Between two entries of the footer. */
+    private static final String FOOTER_GAP = "     ";
 
     private final List<KeyBinding> shared = new ArrayList<>();
     private final List<KeyBinding> own = new ArrayList<>();
@@ -27,13 +28,12 @@ final class DemoKeys {
     /**
      * Declare a key every demo has.
      *
-     * @param keyCode the key, a {@link KeyInput} code, not reserved nor bound yet
-     * @param keyLabel the key as printed for the help overlay (not null)
-     * @param description what it does (not null)
-     * @param action run once per press (not null)
+     * @param binding the action and its keys, none reserved nor bound yet (not null)
+     * @return binding
      */
-    void addShared(int keyCode, String keyLabel, String description, Runnable action) {
-        add(shared, new KeyBinding(keyCode, keyLabel, description, action));
+    KeyBinding addShared(KeyBinding binding) {
+        add(shared, binding);
+        return binding;
     }
 
     /**
@@ -43,13 +43,17 @@ final class DemoKeys {
      * @param keyLabel the key as printed for the help overlay (not null)
      * @param description what it does (not null)
      * @param action run once per press (not null)
+     * @return the new binding (not null)
      */
-    void addOwn(int keyCode, String keyLabel, String description, Runnable action) {
-        add(own, new KeyBinding(keyCode, keyLabel, description, action));
+    KeyBinding addOwn(int keyCode, String keyLabel, String description, Runnable action) {
+        KeyBinding binding = new KeyBinding(keyCode, keyLabel, description, action);
+        add(own, binding);
+        return binding;
     }
 
     /**
-     * Replace the application's keys, listed in the help overlay only.
+     * Replace the application's keys, listed in the help overlay only; the demo may not bind
+     * them. Call before the demo declares its keys.
      *
      * @param bindings the application's keys (not null, copied)
      */
@@ -91,6 +95,29 @@ final class DemoKeys {
         return help.toString();
     }
 
+    /**
+     * Write the footer: every shared and application binding that has a summary, as
+     * "keys  summary", in declaration order.
+     *
+     * @return the text (not null)
+     */
+    String buildFooter() {
+        StringBuilder footer = new StringBuilder();
+        appendFooter(footer, shared);
+        appendFooter(footer, application);
+        return footer.toString();
+    }
+
+    private static void appendFooter(StringBuilder footer, List<KeyBinding> bindings) {
+        for (int i = 0; i < bindings.size(); ++i) {
+            KeyBinding binding = bindings.get(i);
+            if (binding.getSummary() != null) {
+                footer.append(footer.length() == 0 ? "" : FOOTER_GAP)
+                        .append(binding.getKeyLabel()).append("  ").append(binding.getSummary());
+            }
+        }
+    }
+
     private static void addSection(HelpText help, List<KeyBinding> bindings) {
         for (int i = 0; i < bindings.size(); ++i) {
             help.key(bindings.get(i).getKeyLabel(), bindings.get(i).getDescription());
@@ -98,21 +125,39 @@ final class DemoKeys {
     }
 
     private void add(List<KeyBinding> list, KeyBinding binding) {
-        int code = binding.getKeyCode();
-        for (int reserved : RESERVED_KEYS) {
-            if (code == reserved) {
-                throw new IllegalArgumentException("key " + binding.getKeyLabel()
-                        + " is used by jME or the application; choose another for \""
-                        + binding.getDescription() + "\"");
+        for (int key = 0; key < binding.countKeys(); ++key) {
+            int code = binding.getKeyCode(key);
+            String label = binding.getKeyLabel(key);
+            for (int reserved : RESERVED_KEYS) {
+                if (code == reserved) {
+                    throw new IllegalArgumentException("key " + label + " is used by jME;"
+                            + " choose another for \"" + binding.getDescription() + "\"");
+                }
             }
-        }
-        List<KeyBinding> all = copyMapped();
-        for (int i = 0; i < all.size(); ++i) {
-            if (all.get(i).getKeyCode() == code) {
-                throw new IllegalArgumentException("key " + binding.getKeyLabel()
-                        + " is already bound to \"" + all.get(i).getDescription() + "\"");
+            KeyBinding owner = findOwner(application, code);
+            if (owner != null) {
+                throw new IllegalArgumentException("key " + label + " is used by the"
+                        + " application for \"" + owner.getDescription()
+                        + "\"; choose another for \"" + binding.getDescription() + "\"");
+            }
+            owner = findOwner(copyMapped(), code);
+            if (owner != null) {
+                throw new IllegalArgumentException("key " + label + " is already bound to \""
+                        + owner.getDescription() + "\"");
             }
         }
         list.add(binding);
+    }
+
+    private static KeyBinding findOwner(List<KeyBinding> bindings, int code) {
+        for (int i = 0; i < bindings.size(); ++i) {
+            KeyBinding binding = bindings.get(i);
+            for (int key = 0; key < binding.countKeys(); ++key) {
+                if (binding.getKeyCode(key) == code) {
+                    return binding;
+                }
+            }
+        }
+        return null;
     }
 }

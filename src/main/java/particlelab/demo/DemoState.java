@@ -43,7 +43,9 @@ import particlelab.view.TextFormat;
  * changed (jME's text mesh allocates on each change).
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
- * scene and shows why, instead of crashing the window.
+ * scene and shows why, instead of crashing the window. Once every particle has landed the
+ * scene is over: the clock stops, so {@code t} stays at the last landing's step, until a
+ * launch or a reset.
  *
  * <h2>Inside</h2>
  * This class coordinates; the details live in small classes of this package:
@@ -57,8 +59,8 @@ public abstract class DemoState extends BaseAppState {
     public static final float HITCH_SECONDS = 0.5f;
     /** How often the HUD text is rebuilt (in seconds of real time). */
     public static final float HUD_REFRESH_SECONDS = 0.1f;
-    private static final String FOOTER =
-            "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
+    /** What the time scale keys multiply or divide by. */
+    private static final float TIME_SCALE_FACTOR = 2f;
 
     private final String title;
     private final SimulationClock clock = new SimulationClock();
@@ -86,6 +88,9 @@ public abstract class DemoState extends BaseAppState {
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
     private int blowUps;
+    /** True while the clock runs the step loop: a restart then waits for the frame's end. */
+    private boolean stepping;
+    private boolean restartRequested;
 
     /**
      * Create a demo.
@@ -220,9 +225,11 @@ public abstract class DemoState extends BaseAppState {
      * @param keyLabel the key as printed for the help overlay (not null)
      * @param description what it does (not null)
      * @param action run once per press, on the jME thread (not null)
+     * @return the binding, e.g. to name its key in a HUD line (not null)
      */
-    protected void bindKey(int keyCode, String keyLabel, String description, Runnable action) {
-        keys.addOwn(keyCode, keyLabel, description, action);
+    protected KeyBinding bindKey(int keyCode, String keyLabel, String description,
+            Runnable action) {
+        return keys.addOwn(keyCode, keyLabel, description, action);
     }
 
     /**
@@ -285,7 +292,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Tell the demo about keys the application handles (choosing demos), so that its help
-     * overlay lists them too. Call before the demo is initialised.
+     * overlay and footer list them too and the demo may not bind them. Call before the demo
+     * is initialised.
      *
      * @param bindings the application's keys (not null, copied)
      */
@@ -359,9 +367,17 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Put every particle back to its launch state and the clock to zero; keeps the stepping
      * mode, time scale and pause, and the camera. Allocates nothing, so a demo may call it
-     * from {@link #afterStep}. The R key also reframes the camera.
+     * from {@link #afterStep}: there it is recorded and done once the frame's steps are over
+     * (the rest of them do nothing), so the clock is never reset in the middle of its own
+     * step and {@code t} reads 0 with every particle at its launch point. The R key also
+     * reframes the camera.
      */
     public void restart() {
+        if (stepping) {
+            restartRequested = true;
+            return;
+        }
+        restartRequested = false;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             particle.restart();
@@ -371,6 +387,47 @@ public abstract class DemoState extends BaseAppState {
         warnings.clear();
         onRestart();
         hudDirty = true;
+    }
+
+    /**
+     * Test whether the scene is over: every particle has landed, so nothing moves and the
+     * clock is stopped until a launch or a reset.
+     *
+     * @return true if over
+     */
+    public boolean isSceneOver() {
+        if (particles.isEmpty()) {
+            return false;
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            if (!particles.get(i).hasLanded()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Show a short notice on the HUD for a few seconds, e.g. why a key did nothing.
+     *
+     * @param text the notice, one line (not null, not empty)
+     */
+    public void showNotice(String text) {
+        if (text == null || text.isEmpty() || text.indexOf('\n') >= 0) {
+            throw new IllegalArgumentException("a notice must be one non-empty line, but was "
+                    + (text == null ? "null" : "\"" + text + "\""));
+        }
+        hudWriter.showNotice(text);
+        hudDirty = true;
+    }
+
+    /**
+     * Return the notice on the HUD now.
+     *
+     * @return the notice, or null if none is up
+     */
+    public String getNotice() {
+        return hudWriter.getNotice();
     }
 
     /**
@@ -395,13 +452,19 @@ public abstract class DemoState extends BaseAppState {
             pendingHitchSeconds = 0f;
             warnings.hitchApplied(frameSeconds);
         }
-        try {
-            clock.advance(frameSeconds, stepper);
-        } catch (IllegalStateException blowUp) {
-            recoverFromBlowUp();
+        if (!isSceneOver()) {
+            try {
+                clock.advance(frameSeconds, stepper);
+            } catch (IllegalStateException blowUp) {
+                recoverFromBlowUp();
+            }
+            if (restartRequested) {
+                restart();
+            }
         }
         scene.updateViews();
         warnings.age(tpf);
+        hudWriter.age(tpf);
     }
 
     /**
@@ -411,7 +474,7 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
-        hudWriter.write(storeResult);
+        hudWriter.write(storeResult, isSceneOver());
         writeHudLines(storeResult);
         return storeResult;
     }
@@ -431,7 +494,7 @@ public abstract class DemoState extends BaseAppState {
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         hud.setTitle(titleText);
-        hud.setFooter(FOOTER);
+        hud.setFooter(keys.buildFooter());
         refreshEquations();
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
@@ -475,25 +538,43 @@ public abstract class DemoState extends BaseAppState {
 
     // ---------------------------------------------------------------- private helpers ----
 
+    /**
+     * The controls every demo shares. The footer, the help and the HUD's key hints are all
+     * written from these bindings, so renaming a key here renames it everywhere.
+     */
     private void declareSharedKeys() {
-        keys.addShared(KeyInput.KEY_H, "H", "show / hide this help",
-                () -> hud.setHelpVisible(!hud.isHelpVisible()));
-        keys.addShared(KeyInput.KEY_SPACE, "Space",
+        keys.addShared(new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
+                () -> hud.setHelpVisible(!hud.isHelpVisible())).withSummary("help"));
+        KeyBinding pause = keys.addShared(new KeyBinding(KeyInput.KEY_SPACE, "Space",
                 "pause / resume the simulation (the camera keeps moving)",
-                () -> clock.setPaused(!clock.isPaused()));
-        keys.addShared(KeyInput.KEY_N, "N", "single step of h (pauses first)", this::singleStep);
-        keys.addShared(KeyInput.KEY_R, "R", "reset: launch again, reframe the camera",
-                this::restartAndReframe);
-        keys.addShared(KeyInput.KEY_T, "T",
-                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode);
-        keys.addShared(KeyInput.KEY_K, "K", "inject one 0.5 s frame (a hitch)",
-                this::injectHitch);
-        keys.addShared(KeyInput.KEY_EQUALS, "+", "time scale x2", () -> scaleTime(2f));
-        keys.addShared(KeyInput.KEY_ADD, "+ (keypad)", "time scale x2", () -> scaleTime(2f));
-        keys.addShared(KeyInput.KEY_MINUS, "-", "time scale /2", () -> scaleTime(0.5f));
-        keys.addShared(KeyInput.KEY_SUBTRACT, "- (keypad)", "time scale /2",
-                () -> scaleTime(0.5f));
-        keys.addShared(KeyInput.KEY_V, "V", "show / hide velocity arrows", scene::toggleArrows);
+                () -> clock.setPaused(!clock.isPaused())).withSummary("pause"));
+        KeyBinding step = keys.addShared(new KeyBinding(KeyInput.KEY_N, "N",
+                "single step of h (pauses first)", this::singleStep).withSummary("step"));
+        KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
+                "reset: launch again, reframe the camera", this::restartAndReframe)
+                .withSummary("reset"));
+        keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
+                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
+        StringBuilder hitch = new StringBuilder("inject one ");
+        TextFormat.appendFixed(hitch, HITCH_SECONDS, 1).append(" s frame (a hitch)");
+        keys.addShared(new KeyBinding(KeyInput.KEY_K, "K", hitch.toString(), this::injectHitch));
+        StringBuilder up = new StringBuilder("time scale x2, up to ");
+        HudWriter.appendScale(up, SimulationClock.MAX_TIME_SCALE)
+                .append(" (the HUD shows the speed reached)");
+        KeyBinding faster = keys.addShared(new KeyBinding(
+                new int[] {KeyInput.KEY_EQUALS, KeyInput.KEY_ADD}, new String[] {"+", "keypad +"},
+                up.toString(), null, key -> scaleTime(TIME_SCALE_FACTOR)));
+        StringBuilder down = new StringBuilder("time scale /2, down to ");
+        HudWriter.appendScale(down, SimulationClock.MIN_TIME_SCALE);
+        KeyBinding slower = keys.addShared(new KeyBinding(
+                new int[] {KeyInput.KEY_MINUS, KeyInput.KEY_SUBTRACT},
+                new String[] {"-", "keypad -"}, down.toString(), null,
+                key -> scaleTime(1f / TIME_SCALE_FACTOR)));
+        KeyBinding realTime = keys.addShared(new KeyBinding(KeyInput.KEY_X, "X",
+                "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
+        keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
+                scene::toggleArrows));
+        hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
     }
 
     private void markHudDirty() {
@@ -521,8 +602,23 @@ public abstract class DemoState extends BaseAppState {
         scene.frame(getApplication().getCamera());
     }
 
-    /** One step of h for every particle not held: the clock's stepper. */
+    /**
+     * One step of h for every particle not held: the clock's stepper. After a restart was
+     * requested in this frame the remaining steps do nothing; the restart follows them.
+     */
     private void stepParticles(float stepSeconds) {
+        if (restartRequested) {
+            return;
+        }
+        stepping = true;
+        try {
+            stepEveryParticle(stepSeconds);
+        } finally {
+            stepping = false;
+        }
+    }
+
+    private void stepEveryParticle(float stepSeconds) {
         warnings.beginStep(stepSeconds);
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);

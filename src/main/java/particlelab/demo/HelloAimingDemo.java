@@ -24,7 +24,10 @@ import particlelab.view.TextFormat;
  *
  * <p>What to watch for: the HUD predicts the landing under the current stepping (a simulated
  * shot with the same integrator) and shows where the shot actually landed; press L to switch
- * formulas and F to fire. The bullet stops at the ground, as in the lecture.
+ * formulas and F to fire. The bullet stops at the ground, as in the lecture. {@code t} is the
+ * flight time of the shot in the air: firing starts it again from 0, and it stops when the
+ * shot lands. The shot line names the shot it describes: while shot N flies, it shows shot N
+ * in the air and where shot N−1 landed.
  */
 public final class HelloAimingDemo extends DemoState {
 
@@ -59,14 +62,25 @@ public final class HelloAimingDemo extends DemoState {
     private float predictedStep = Float.NaN;
     private float predictedVx = Float.NaN;
     private Aim predictedAim;
+    /** The number of the shot in the air, or of the last one fired (1 for the first). */
     private int shots;
     private boolean landingRecorded;
+    /** The last shot that landed: its number (0 if none yet), where, when, vx and formula. */
+    private int landedShot;
     private float lastLandingX = Float.NaN;
+    private double lastFlightSeconds = Double.NaN;
     private float lastShotVx;
     private Aim lastShotAim = Aim.LECTURE;
     /** The vx and formula of the shot in the air. */
     private float shotVx;
     private Aim shotAim = Aim.LECTURE;
+    /** The demo's keys, named in the HUD. */
+    private KeyBinding fireKey;
+    private KeyBinding fasterKey;
+    private KeyBinding slowerKey;
+    private KeyBinding aimKey;
+    /** The target's distance as printed, e.g. "S = 100 m". */
+    private final String distanceText = "S = " + Math.round(TARGET_DISTANCE) + " m";
 
     /** Create the demo. */
     public HelloAimingDemo() {
@@ -126,11 +140,41 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Fire a shot from the gun with the current vx and formula.
+     * Return the number of the shot in the air, or of the last one fired.
+     *
+     * @return the number (&ge;1 once the demo has started)
+     */
+    public int getShotNumber() {
+        return shots;
+    }
+
+    /**
+     * Return the number of the last shot that landed.
+     *
+     * @return the number (0 until a shot lands)
+     */
+    public int getLandedShotNumber() {
+        return landedShot;
+    }
+
+    /**
+     * Return the flight time of the last shot that landed, its ground crossing interpolated
+     * inside the step.
+     *
+     * @return the time (in seconds; NaN until a shot lands)
+     */
+    public double getLastFlightSeconds() {
+        return lastFlightSeconds;
+    }
+
+    /**
+     * Fire a shot from the gun with the current vx and formula, and start {@code t} again:
+     * the HUD's time is this shot's flight time.
      */
     public void fire() {
         launchVelocity.set(vx, getVerticalSpeed(), 0f);
         launch(bullet, launchVelocity);
+        getClock().reset();
         shotVx = vx;
         shotAim = aim;
         landingRecorded = false;
@@ -153,16 +197,21 @@ public final class HelloAimingDemo extends DemoState {
 
     @Override
     protected void declareKeys() {
-        bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
-        bindKey(KeyInput.KEY_UP, "Up", "vx + 1 m/s", () -> changeVx(VX_STEP));
-        bindKey(KeyInput.KEY_DOWN, "Down", "vx - 1 m/s", () -> changeVx(-VX_STEP));
-        bindKey(KeyInput.KEY_L, "L", "aim: lecture formula <-> discrete correction",
+        fireKey = bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
+        String step = Math.round(VX_STEP) + " m/s";
+        fasterKey = bindKey(KeyInput.KEY_UP, "Up", "vx + " + step, () -> changeVx(VX_STEP));
+        slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
+                () -> changeVx(-VX_STEP));
+        aimKey = bindKey(KeyInput.KEY_L, "L", "aim: lecture formula <-> discrete correction",
                 () -> setAim(aim == Aim.LECTURE ? Aim.DISCRETE : Aim.LECTURE));
     }
 
     @Override
     protected void onRestart() {
         shots = 0;
+        landedShot = 0;
+        lastLandingX = Float.NaN;
+        lastFlightSeconds = Double.NaN;
         fire();
     }
 
@@ -170,7 +219,9 @@ public final class HelloAimingDemo extends DemoState {
     protected void afterStep(float stepSeconds) {
         if (bullet.hasLanded() && !landingRecorded) {
             landingRecorded = true;
+            landedShot = shots;
             lastLandingX = bullet.getLandingX();
+            lastFlightSeconds = bullet.getLandingSeconds();
             lastShotVx = shotVx;
             lastShotAim = shotAim;
         }
@@ -188,8 +239,11 @@ public final class HelloAimingDemo extends DemoState {
         updatePrediction(step);
         text.append(aim == Aim.LECTURE ? "Aim: LECTURE vy = g*S/(2*vx)"
                 : "Aim: DISCRETE vy = g*(S/vx + h)/2");
-        text.append("   (L switches, F fires, Up/Down change vx)\n");
-        text.append("S = 100 m,  vx = ");
+        text.append("   (").append(aimKey.getKeyLabel()).append(" switches, ")
+                .append(fireKey.getKeyLabel()).append(" fires, ")
+                .append(fasterKey.getKeyLabel()).append('/').append(slowerKey.getKeyLabel())
+                .append(" change vx)\n");
+        text.append(distanceText).append(",  vx = ");
         TextFormat.appendFixed(text, vx, 1).append(" m/s,  vy = ");
         TextFormat.appendFixed(text, getVerticalSpeed(), 3).append(" m/s,  flight S/vx = ");
         TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3).append(" s\n");
@@ -203,16 +257,23 @@ public final class HelloAimingDemo extends DemoState {
         } else {
             text.append("never lands\n");
         }
-        text.append("Shot ").append(shots).append(": ");
-        if (Float.isNaN(lastLandingX)) {
-            text.append("in the air\n");
-        } else {
-            text.append("last landed at x = ");
-            TextFormat.appendFixed(text, lastLandingX, 3).append(" m,  miss ");
-            TextFormat.appendFixed(text, lastLandingX - TARGET_DISTANCE, 3).append(" m  (");
-            text.append(lastShotAim == Aim.LECTURE ? "lecture" : "discrete").append(", vx ");
-            TextFormat.appendFixed(text, lastShotVx, 1).append(" m/s)\n");
+        if (landedShot != shots) {
+            text.append("Shot ").append(shots).append(": in the air for ");
+            TextFormat.appendFixed(text, bullet.getFlightSeconds(), 2).append(" s  (");
+            appendShot(text, shotAim, shotVx).append(")\n");
         }
+        if (landedShot > 0) {
+            text.append("Shot ").append(landedShot).append(": landed at x = ");
+            TextFormat.appendFixed(text, lastLandingX, 3).append(" m after ");
+            TextFormat.appendFixed(text, lastFlightSeconds, 3).append(" s,  miss ");
+            TextFormat.appendFixed(text, lastLandingX - TARGET_DISTANCE, 3).append(" m  (");
+            appendShot(text, lastShotAim, lastShotVx).append(")\n");
+        }
+    }
+
+    private static StringBuilder appendShot(StringBuilder text, Aim shotAim, float shotVx) {
+        text.append(shotAim == Aim.LECTURE ? "lecture" : "discrete").append(", vx ");
+        return TextFormat.appendFixed(text, shotVx, 1).append(" m/s");
     }
 
     private void changeVx(float delta) {

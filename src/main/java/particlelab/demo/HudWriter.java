@@ -6,16 +6,29 @@ import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
 
 /**
- * The part of a demo's HUD body that every demo shows: the equations it runs, the simulated
- * time, one line per particle (position, velocity, speed and where it landed) and the stepping
- * line (fixed h or raw tpf, time scale, the stability limit, pause). The demo's own lines
- * follow, from {@link DemoState#writeHudLines}. Writing allocates nothing.
+ * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
+ * (simulated time, pause, the time scale asked for and the one measured, whether time is being
+ * dropped, and the keys that change it), a short notice if one is up, one line per particle
+ * (position, velocity, speed and where and when it landed) and the stepping line (fixed h or
+ * raw tpf, the stability limit). The demo's own lines follow, from
+ * {@link DemoState#writeHudLines}. Key names come from the bindings. Writing allocates nothing.
  */
 final class HudWriter {
+
+    /** How long a notice stays up (in seconds of real time). */
+    static final float NOTICE_SECONDS = 3f;
 
     private final SimulationClock clock;
     private final List<DemoParticle> particles;
     private String equations = "";
+    private KeyBinding pauseKey;
+    private KeyBinding stepKey;
+    private KeyBinding resetKey;
+    private KeyBinding fasterKey;
+    private KeyBinding slowerKey;
+    private KeyBinding realTimeKey;
+    private String notice;
+    private float noticeAgeSeconds;
 
     /**
      * Create a writer for one demo.
@@ -38,22 +51,150 @@ final class HudWriter {
     }
 
     /**
+     * Name the keys the time line mentions.
+     *
+     * @param pause pause / resume (not null)
+     * @param step single step (not null)
+     * @param reset reset the scene (not null)
+     * @param faster time scale x2 (not null)
+     * @param slower time scale /2 (not null)
+     * @param realTime time scale back to x1 (not null)
+     */
+    void setTimeKeys(KeyBinding pause, KeyBinding step, KeyBinding reset, KeyBinding faster,
+            KeyBinding slower, KeyBinding realTime) {
+        pauseKey = pause;
+        stepKey = step;
+        resetKey = reset;
+        fasterKey = faster;
+        slowerKey = slower;
+        realTimeKey = realTime;
+    }
+
+    /**
+     * Show a short notice below the time line for {@link #NOTICE_SECONDS}.
+     *
+     * @param text the notice, one line (not null)
+     */
+    void showNotice(String text) {
+        notice = text;
+        noticeAgeSeconds = 0f;
+    }
+
+    /**
+     * Return the notice shown now.
+     *
+     * @return the notice, or null if none is up
+     */
+    String getNotice() {
+        return notice;
+    }
+
+    /**
+     * Let real time pass for the notice.
+     *
+     * @param realSeconds the frame time (in seconds, &ge;0)
+     */
+    void age(float realSeconds) {
+        if (notice != null) {
+            noticeAgeSeconds += realSeconds;
+            if (noticeAgeSeconds >= NOTICE_SECONDS) {
+                notice = null;
+            }
+        }
+    }
+
+    /**
      * Write the shared body text into storeResult, without allocating.
      *
      * @param storeResult storage for the text (not null, cleared and modified)
+     * @param sceneOver true if every particle has landed, so the clock has stopped
      * @return storeResult
      */
-    StringBuilder write(StringBuilder storeResult) {
+    StringBuilder write(StringBuilder storeResult, boolean sceneOver) {
         StringBuilder text = storeResult;
         text.setLength(0);
         text.append(equations);
-        text.append("t = ");
-        TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s\n");
+        appendTimeLines(text, sceneOver);
+        if (notice != null) {
+            text.append(notice).append('\n');
+        }
         for (int i = 0; i < particles.size(); ++i) {
             appendParticleLine(text, particles.get(i));
         }
         appendSteppingLine(text);
         return text;
+    }
+
+    /**
+     * Append a time scale as the keys make it: x64, x2, x1, x1/2, x1/64 (or with decimals if
+     * it is not a whole number or the inverse of one).
+     *
+     * @param text where to append (not null, modified)
+     * @param scale the scale (&gt;0)
+     * @return text
+     */
+    static StringBuilder appendScale(StringBuilder text, float scale) {
+        text.append('x');
+        if (scale >= 1f) {
+            return TextFormat.appendFixed(text, scale, scale == Math.rint(scale) ? 0 : 2);
+        }
+        float inverse = 1f / scale;
+        if (inverse == Math.rint(inverse)) {
+            return TextFormat.appendFixed(text.append("1/"), inverse, 0);
+        }
+        return TextFormat.appendFixed(text, scale, 3);
+    }
+
+    /** A measured rate: two decimals below 10 (x5.75, x0.25), one above (x15.0). */
+    private static StringBuilder appendRate(StringBuilder text, float rate) {
+        return TextFormat.appendFixed(text, rate, rate < 10f ? 2 : 1);
+    }
+
+    /**
+     * The time line: t, then what stops it (pause, a finished scene), the time scale asked
+     * for and, when it matters, the one measured and why they differ; then, unless the scale
+     * is x1 and nothing is dropped, the keys that change it and its limits.
+     */
+    private void appendTimeLines(StringBuilder text, boolean sceneOver) {
+        text.append("t = ");
+        TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s");
+        boolean running = !sceneOver && !clock.isPaused();
+        if (sceneOver) {
+            text.append("   stopped: every particle has landed (").append(resetKey.getKeyLabel())
+                    .append(" launches again)");
+        } else if (clock.isPaused()) {
+            text.append("   PAUSED: ").append(pauseKey.getKeyLabel()).append(" resumes, ")
+                    .append(stepKey.getKeyLabel()).append(" takes one step");
+        }
+        float scale = clock.getTimeScale();
+        float measured = clock.getMeasuredTimeScale();
+        boolean dropping = running && clock.isDroppingTime();
+        text.append("   time ");
+        appendScale(text, scale);
+        if (running && (scale != 1f || dropping) && !Float.isNaN(measured)) {
+            text.append(" asked, x");
+            appendRate(text, measured).append(" measured");
+        }
+        if (dropping) {
+            text.append(": DROPPING TIME (a frame simulates at most ");
+            TextFormat.appendFixed(text, clock.getMaxSimulatedSecondsPerFrame(), 3)
+                    .append(" s");
+            float frameSeconds = clock.getMeasuredFrameSeconds();
+            if (!Float.isNaN(frameSeconds)) {
+                text.append("; at ");
+                TextFormat.appendFixed(text, 1f / frameSeconds, 0).append(" fps that is x");
+                appendRate(text, clock.getMaxMeasurableTimeScale());
+            }
+            text.append(')');
+        }
+        text.append('\n');
+        if (scale != 1f || dropping) {
+            text.append("   ").append(fasterKey.getKeyLabel()).append("  x2,   ")
+                    .append(slowerKey.getKeyLabel()).append("  /2   (");
+            appendScale(text, SimulationClock.MIN_TIME_SCALE).append(" to ");
+            appendScale(text, SimulationClock.MAX_TIME_SCALE).append("),   ")
+                    .append(realTimeKey.getKeyLabel()).append("  back to x1\n");
+        }
     }
 
     private static void appendParticleLine(StringBuilder text, DemoParticle demoParticle) {
@@ -64,7 +205,8 @@ final class HudWriter {
         TextFormat.appendFixed(text, particle.velocity.length(), 2).append(" m/s");
         if (demoParticle.hasLanded()) {
             text.append("   landed at x = ");
-            TextFormat.appendFixed(text, demoParticle.getLandingX(), 2).append(" m");
+            TextFormat.appendFixed(text, demoParticle.getLandingX(), 2).append(" m after ");
+            TextFormat.appendFixed(text, demoParticle.getLandingSeconds(), 2).append(" s");
         }
         text.append('\n');
     }
@@ -79,8 +221,6 @@ final class HudWriter {
             TextFormat.appendFixed(text, clock.getCurrentStepSeconds() * 1000f, 1)
                     .append(" ms");
         }
-        text.append("   time x");
-        TextFormat.appendFixed(text, clock.getTimeScale(), 2);
         float limit = Float.POSITIVE_INFINITY;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
@@ -92,9 +232,6 @@ final class HudWriter {
             TextFormat.appendFixed(text, limit, 3).append(" s");
         } else {
             text.append("   no drag: any h is stable");
-        }
-        if (clock.isPaused()) {
-            text.append("   PAUSED (Space resumes, N steps)");
         }
         text.append('\n');
     }

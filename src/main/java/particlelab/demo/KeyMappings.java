@@ -8,8 +8,9 @@ import java.util.List;
 
 /**
  * The input mappings of a list of {@link KeyBinding}s, added when an AppState is enabled and
- * removed when it is disabled, so that toggling it leaves no mapping or listener behind. A key
- * press runs its binding's action (key releases are ignored).
+ * removed when it is disabled, so that toggling it leaves no mapping or listener behind. Each
+ * key of a binding gets its own mapping, so the action learns which key was pressed; a press
+ * runs the action (key releases are ignored).
  */
 public final class KeyMappings {
 
@@ -17,6 +18,8 @@ public final class KeyMappings {
     private final Runnable afterAction;
     private final List<String> names = new ArrayList<>();
     private final List<KeyBinding> mapped = new ArrayList<>();
+    /** For each mapping, which key of its binding it is. */
+    private final List<Integer> keyIndexes = new ArrayList<>();
     private final ActionListener listener = this::onAction;
 
     /**
@@ -40,10 +43,13 @@ public final class KeyMappings {
     public void map(InputManager input, List<KeyBinding> bindings) {
         for (int i = 0; i < bindings.size(); ++i) {
             KeyBinding binding = bindings.get(i);
-            String name = prefix + i + " " + binding.getDescription();
-            input.addMapping(name, new KeyTrigger(binding.getKeyCode()));
-            names.add(name);
-            mapped.add(binding);
+            for (int key = 0; key < binding.countKeys(); ++key) {
+                String name = prefix + i + "." + key + " " + binding.getDescription();
+                input.addMapping(name, new KeyTrigger(binding.getKeyCode(key)));
+                names.add(name);
+                mapped.add(binding);
+                keyIndexes.add(key);
+            }
         }
         input.addListener(listener, names.toArray(new String[0]));
     }
@@ -60,6 +66,7 @@ public final class KeyMappings {
         }
         names.clear();
         mapped.clear();
+        keyIndexes.clear();
     }
 
     /**
@@ -77,7 +84,7 @@ public final class KeyMappings {
         }
         for (int i = 0; i < names.size(); ++i) {
             if (names.get(i).equals(name)) {
-                mapped.get(i).getAction().run();
+                mapped.get(i).press(keyIndexes.get(i));
                 if (afterAction != null) {
                     afterAction.run();
                 }

@@ -37,7 +37,9 @@ public final class UniformMotionDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
-        // Leaving the screen: start over so the demo loops in front of the class.
+        // Leaving the screen: start over so the demo loops in front of the class. Called
+        // from a step, restart() waits until the frame's steps are over, so t starts again
+        // from 0 together with P.
         if (sphere.getParticle().position.x > RIGHT_EDGE) {
             restart();
         }

@@ -17,6 +17,17 @@ package particlelab.physics;
  *
  * Pause freezes only the simulation: the caller keeps rendering and reading input. While
  * paused, {@link #requestSingleStep()} makes the next frame take exactly one step of h.
+ *
+ * <p>The time scale asks for a speed; the clamp and the step cap decide what a frame can give.
+ * The clock measures what it gave: {@link #getMeasuredTimeScale()} is simulated seconds per
+ * frame-time second over the last window of at least {@link #RATE_WINDOW_SECONDS}, and
+ * {@link #isDroppingTime()} says whether the clamp or the cap dropped time in that window or
+ * the one under way. At 60 frames per second the defaults give at most x15 (0.25 s a frame);
+ * {@link #getMaxMeasurableTimeScale()} gives that ceiling for the frames just measured.
+ *
+ * <p>A {@link #reset()} from inside the stepper (a scene that restarts itself during a step)
+ * wins over the step that asked for it: that step is not counted and the rest of the frame is
+ * forgotten, so {@code t} reads 0 with the scene at its start and the leftover stays in range.
  */
 public final class SimulationClock {
 
@@ -50,6 +61,12 @@ public final class SimulationClock {
     /** Largest time scale accepted. */
     public static final float MAX_TIME_SCALE = 64f;
     /**
+     * The shortest stretch of frame time over which the clock measures its effective time
+     * scale (in seconds): long enough to hold many frames and steps, short enough that the HUD
+     * follows a key press within a second.
+     */
+    public static final float RATE_WINDOW_SECONDS = 0.5f;
+    /**
      * A fixed step is due once the leftover reaches h less this fraction of h. Float frame
      * times and steps add up to whole steps only to round-off (three frames of 1/90 s fall
      * 9e-10 s short of two steps of 1/60 s; 0.25 s falls 1.3e-8 s short of 15 such steps), and
@@ -72,6 +89,19 @@ public final class SimulationClock {
     private double simulatedSeconds;
     private double droppedSeconds;
     private float lastStepSeconds;
+    /** True while the stepper runs, so that a reset from inside it is noticed. */
+    private boolean stepping;
+    /** Set by a reset while the stepper runs: the step under way is not counted. */
+    private boolean resetWhileStepping;
+    /** The window being measured: frame time, frames, simulated and dropped time (s). */
+    private double windowFrameSeconds;
+    private int windowFrames;
+    private double windowSimulatedSeconds;
+    private double windowDroppedSeconds;
+    /** The last complete window's results; NaN before the first. */
+    private float measuredTimeScale = Float.NaN;
+    private float measuredFrameSeconds = Float.NaN;
+    private boolean measuredDropping;
 
     /**
      * Turn one frame into steps and take them.
@@ -85,23 +115,9 @@ public final class SimulationClock {
             throw new IllegalArgumentException(
                     "frame time tpf (s) must be finite and >= 0, but was " + tpf);
         }
-        if (paused) {
-            if (singleStepRequested) {
-                singleStepRequested = false;
-                take(stepper, stepSeconds);
-                return 1;
-            }
-            return 0;
-        }
-        float scaled = tpf * timeScale;
-        if (scaled == 0f) {
-            return 0;
-        }
-        if (mode == Mode.RAW_TPF) {
-            take(stepper, scaled);
-            return 1;
-        }
-        return advanceFixed(scaled, stepper);
+        int steps = takeSteps(tpf, stepper);
+        measure(tpf);
+        return steps;
     }
 
     /**
@@ -114,7 +130,11 @@ public final class SimulationClock {
     }
 
     /**
-     * Choose the stepping mode. Switching clears the fixed-step leftover.
+     * Choose the stepping mode. Switching ends the fixed-step leftover: raw mode has none, and
+     * a fresh fixed-step run starts from zero. The leftover (frame time accepted but not yet
+     * simulated, less than h) is counted as dropped, so that {@code fed = simulated + dropped
+     * + leftover} holds across switches too; a leftover below zero (a step taken up to h·1e-4
+     * early on round-off) is simply forgotten, so dropped time never goes below zero.
      *
      * @param newMode the mode (not null)
      */
@@ -122,7 +142,13 @@ public final class SimulationClock {
         if (newMode == null) {
             throw new IllegalArgumentException("mode must be RAW_TPF or FIXED_STEP, but was null");
         }
+        if (newMode != mode) {
+            restartMeasurement();
+        }
         mode = newMode;
+        if (accumulatorSeconds > 0.0) {
+            droppedSeconds += accumulatorSeconds;
+        }
         accumulatorSeconds = 0.0;
     }
 
@@ -149,6 +175,7 @@ public final class SimulationClock {
      */
     public void setStepSeconds(float newStepSeconds) {
         stepSeconds = Validate.positive(newStepSeconds, "fixed step h (s)");
+        restartMeasurement();
     }
 
     /**
@@ -167,6 +194,7 @@ public final class SimulationClock {
      */
     public void setMaxFrameSeconds(float seconds) {
         maxFrameSeconds = Validate.positive(seconds, "max frame time (s)");
+        restartMeasurement();
     }
 
     /**
@@ -189,6 +217,7 @@ public final class SimulationClock {
                     "max steps per frame must be >= 1, but was " + steps);
         }
         maxStepsPerFrame = steps;
+        restartMeasurement();
     }
 
     /**
@@ -211,6 +240,9 @@ public final class SimulationClock {
             throw new IllegalArgumentException("time scale must be from " + MIN_TIME_SCALE
                     + " to " + MAX_TIME_SCALE + ", but was " + scale);
         }
+        if (scale != timeScale) {
+            restartMeasurement();
+        }
         timeScale = scale;
     }
 
@@ -229,6 +261,9 @@ public final class SimulationClock {
      * @param newPaused true to pause
      */
     public void setPaused(boolean newPaused) {
+        if (newPaused != paused) {
+            restartMeasurement();
+        }
         paused = newPaused;
         singleStepRequested = false;
     }
@@ -252,10 +287,10 @@ public final class SimulationClock {
     }
 
     /**
-     * Return the frame time dropped by the clamp and the step cap since the last reset. In
-     * fixed-step mode, the scaled frame time fed while running equals
-     * {@code simulated + dropped + leftover} (up to double round-off), as long as no single step
-     * was taken and the mode was not switched (switching discards the leftover).
+     * Return the frame time dropped since the last reset: by the clamp and the step cap, and
+     * the leftover ended by a mode switch. In fixed-step mode, the scaled frame time fed while
+     * running equals {@code simulated + dropped + leftover} (up to double round-off, and up to
+     * h·1e-4 per mode switch), as long as no single step was taken.
      *
      * @return the time (in seconds, &ge;0)
      */
@@ -297,7 +332,66 @@ public final class SimulationClock {
     }
 
     /**
-     * Forget the time counters and the leftover; keep mode, step, scale and pause.
+     * Return the effective time scale: simulated seconds per second of frame time, measured
+     * over the last complete window of at least {@link #RATE_WINDOW_SECONDS} of frame time.
+     * It is below the asked-for {@link #getTimeScale()} when the clamp or the step cap drop
+     * time, 0 while paused, and it wobbles by up to one step per window in fixed-step mode
+     * (steps are whole). Changing the scale, pause, mode, h or a limit starts the
+     * measurement again, so a rate measured under other settings is never shown.
+     *
+     * @return the scale (&ge;0), or NaN until a window under the current settings is complete
+     */
+    public float getMeasuredTimeScale() {
+        return measuredTimeScale;
+    }
+
+    /**
+     * Return the mean frame time of the last complete measuring window.
+     *
+     * @return the time (in seconds, &gt;0), or NaN until the first window is complete
+     */
+    public float getMeasuredFrameSeconds() {
+        return measuredFrameSeconds;
+    }
+
+    /**
+     * Test whether the clamp or the step cap dropped simulated time in the last complete
+     * measuring window or in the one under way: the simulation then runs slower than asked.
+     *
+     * @return true if time is being dropped
+     */
+    public boolean isDroppingTime() {
+        return measuredDropping || windowDroppedSeconds > 0.0;
+    }
+
+    /**
+     * Return the most simulated time one frame can give: in fixed-step mode the smaller of the
+     * frame clamp and the step cap times h; raw tpf has no limit.
+     *
+     * @return the time (in seconds, &gt;0; infinite in raw mode)
+     */
+    public float getMaxSimulatedSecondsPerFrame() {
+        if (mode == Mode.RAW_TPF) {
+            return Float.POSITIVE_INFINITY;
+        }
+        return Math.min(maxFrameSeconds, maxStepsPerFrame * stepSeconds);
+    }
+
+    /**
+     * Return the highest effective time scale the frames just measured allow: the most a frame
+     * can simulate over the mean frame time (x15 for the defaults at 60 frames per second,
+     * about x6 at 23).
+     *
+     * @return the scale (&gt;0; infinite in raw mode), or NaN until a window is complete
+     */
+    public float getMaxMeasurableTimeScale() {
+        return getMaxSimulatedSecondsPerFrame() / measuredFrameSeconds;
+    }
+
+    /**
+     * Forget the time counters and the leftover; keep mode, step, scale, pause and the
+     * measured time scale. Called from inside the stepper, it also ends the frame: the step
+     * under way is not counted and the frame's remaining time is forgotten.
      */
     public void reset() {
         accumulatorSeconds = 0.0;
@@ -305,36 +399,109 @@ public final class SimulationClock {
         droppedSeconds = 0.0;
         lastStepSeconds = 0f;
         singleStepRequested = false;
+        if (stepping) {
+            resetWhileStepping = true;
+        }
+    }
+
+    private int takeSteps(float tpf, Stepper stepper) {
+        if (paused) {
+            if (singleStepRequested) {
+                singleStepRequested = false;
+                take(stepper, stepSeconds);
+                return 1;
+            }
+            return 0;
+        }
+        float scaled = tpf * timeScale;
+        if (scaled == 0f) {
+            return 0;
+        }
+        if (mode == Mode.RAW_TPF) {
+            take(stepper, scaled);
+            return 1;
+        }
+        return advanceFixed(scaled, stepper);
+    }
+
+    /** Forget the window under way and the last result: the settings changed. */
+    private void restartMeasurement() {
+        windowFrameSeconds = 0.0;
+        windowFrames = 0;
+        windowSimulatedSeconds = 0.0;
+        windowDroppedSeconds = 0.0;
+        measuredTimeScale = Float.NaN;
+        measuredDropping = false;
+    }
+
+    /** Add one frame to the measuring window and close the window once it is long enough. */
+    private void measure(float tpf) {
+        windowFrameSeconds += tpf;
+        ++windowFrames;
+        if (windowFrameSeconds >= RATE_WINDOW_SECONDS) {
+            measuredTimeScale = (float) (windowSimulatedSeconds / windowFrameSeconds);
+            measuredFrameSeconds = (float) (windowFrameSeconds / windowFrames);
+            measuredDropping = windowDroppedSeconds > 0.0;
+            windowFrameSeconds = 0.0;
+            windowFrames = 0;
+            windowSimulatedSeconds = 0.0;
+            windowDroppedSeconds = 0.0;
+        }
     }
 
     private int advanceFixed(float scaledSeconds, Stepper stepper) {
         float accepted = scaledSeconds;
         if (accepted > maxFrameSeconds) {
             // In double: exact for any frame under 2^29 times the limit.
-            droppedSeconds += (double) accepted - maxFrameSeconds;
+            drop((double) accepted - maxFrameSeconds);
             accepted = maxFrameSeconds;
         }
         accumulatorSeconds += accepted;
         double dueSeconds = stepSeconds * (1.0 - STEP_DUE_FRACTION);
         int steps = 0;
         while (accumulatorSeconds >= dueSeconds && steps < maxStepsPerFrame) {
-            take(stepper, stepSeconds);
-            accumulatorSeconds -= stepSeconds;
             ++steps;
+            if (!take(stepper, stepSeconds)) {
+                // The stepper reset the clock: the frame ends with the reset's zeros.
+                return steps;
+            }
+            accumulatorSeconds -= stepSeconds;
         }
         if (accumulatorSeconds >= dueSeconds) {
             // The cap stopped us: drop the whole steps we could not take, keep the leftover.
             double wholeSteps = Math.floor(accumulatorSeconds / stepSeconds + STEP_DUE_FRACTION);
             double excess = wholeSteps * stepSeconds;
-            droppedSeconds += excess;
+            drop(excess);
             accumulatorSeconds -= excess;
         }
         return steps;
     }
 
-    private void take(Stepper stepper, float seconds) {
-        stepper.step(seconds);
+    private void drop(double seconds) {
+        droppedSeconds += seconds;
+        windowDroppedSeconds += seconds;
+    }
+
+    /**
+     * Take one step and count it, unless the stepper reset the clock meanwhile.
+     *
+     * @return true if the step was counted, false if a reset from inside the stepper won
+     */
+    private boolean take(Stepper stepper, float seconds) {
+        stepping = true;
+        resetWhileStepping = false;
+        try {
+            stepper.step(seconds);
+        } finally {
+            stepping = false;
+        }
+        windowSimulatedSeconds += seconds;
+        if (resetWhileStepping) {
+            resetWhileStepping = false;
+            return false;
+        }
         simulatedSeconds += seconds;
         lastStepSeconds = seconds;
+        return true;
     }
 }

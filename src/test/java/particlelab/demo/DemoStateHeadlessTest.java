@@ -14,6 +14,8 @@ import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.app.ParticleLabApp;
@@ -220,6 +222,7 @@ class DemoStateHeadlessTest {
     void hudHandsTextToJmeAtMostTenTimesASecond() throws Exception {
         DemoState demo = demos().get(DemoCatalog.indexOf("aiming"));
         int changes = harness.call(() -> {
+            demo.restart(); // a shot in the air: the HUD has something to follow
             int before = demo.getHud().countTextChanges();
             for (int frame = 0; frame < 600; ++frame) {
                 demo.update(H);
@@ -269,6 +272,107 @@ class DemoStateHeadlessTest {
         });
         assertTrue(warning.startsWith("UNSTABLE: h = 250.0 ms"), warning);
         assertTrue(warning.contains("2/k = 200.0 ms"), warning);
+    }
+
+    @ParameterizedTest(name = "time x{0}")
+    @ValueSource(floats = {1f, 8f})
+    void afterUniformMotionLoopsItsClockAgreesWithItsPosition(float scale) throws Exception {
+        // Demo 1 restarts itself from afterStep when the sphere passes x = 30 m. The restart
+        // waits for the end of the frame's steps, so t and P describe the same motion after
+        // the loop: P.x = 4 m/s · t (uniform motion from x = 0), and t = the flight time.
+        DemoState uniform = demos().get(DemoCatalog.indexOf("uniform"));
+        double[] result = harness.call(() -> {
+            uniform.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            uniform.restart();
+            uniform.getClock().setTimeScale(scale);
+            double firstLoop = Double.NaN;
+            double previous = 0.0;
+            // 7.5 s to the edge; run 12 s of simulated time, through at least one loop.
+            for (int frame = 0; frame < Math.round(12f / scale / H); ++frame) {
+                uniform.advance(H);
+                double t = uniform.getClock().getSimulatedSeconds();
+                if (t < previous && Double.isNaN(firstLoop)) {
+                    firstLoop = t;
+                }
+                previous = t;
+            }
+            uniform.getClock().setTimeScale(1f);
+            DemoParticle sphere = uniform.getParticles().get(0);
+            return new double[] {firstLoop, uniform.getClock().getSimulatedSeconds(),
+                sphere.getFlightSeconds(), sphere.getParticle().position.x,
+                uniform.getClock().getLeftoverSeconds()};
+        });
+        assertFalse(Double.isNaN(result[0]), "the demo never looped");
+        // The frame that looped ends at t = 0: no step is counted before the restart.
+        assertEquals(0.0, result[0], 0.0);
+        // Both sums of the same float h in double: equal to round-off.
+        assertEquals(result[2], result[1], 1e-9);
+        // x = n·h·4 in float: ~300 additions of 0.067 m, rounding well below 1e-3 m.
+        assertEquals(4.0 * result[1], result[3], 1e-3);
+        assertTrue(result[4] >= -1e-4 * H, "leftover " + result[4]);
+    }
+
+    @Test
+    void whenEveryParticleHasLandedTheClockStopsAndTheHudSaysSo() throws Exception {
+        DemoState drag = demos().get(DemoCatalog.indexOf("drag"));
+        Object[] result = harness.call(() -> {
+            drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            drag.restart();
+            // The three spheres land within 2.1 s (gravity only: 2.04 s).
+            for (int frame = 0; frame < 200; ++frame) {
+                drag.advance(H);
+            }
+            double t = drag.getClock().getSimulatedSeconds();
+            for (int frame = 0; frame < 100; ++frame) {
+                drag.advance(H);
+            }
+            double latest = 0.0;
+            for (DemoParticle particle : drag.getParticles()) {
+                latest = Math.max(latest, particle.getLandingSeconds());
+            }
+            return new Object[] {drag.isSceneOver(), t, drag.getClock().getSimulatedSeconds(),
+                latest, drag.formatHud(new StringBuilder()).toString()};
+        });
+        assertTrue((Boolean) result[0]);
+        assertEquals((Double) result[1], (Double) result[2], 0.0);
+        // t stopped at the end of the step in which the last sphere landed.
+        assertEquals((Double) result[3], (Double) result[2], H);
+        String hud = (String) result[4];
+        assertTrue(hud.contains("stopped: every particle has landed (R launches again)"), hud);
+        assertEquals(3, hud.split(" m after ", -1).length - 1, hud);
+    }
+
+    @Test
+    void timeKeysDoubleHalveAndGoBackToRealTimeWithinTheLimits() throws Exception {
+        DemoState demo = demos().get(DemoCatalog.indexOf("pull"));
+        float[] scales = harness.call(() -> {
+            KeyBinding faster = binding(demo, "time scale x2");
+            KeyBinding slower = binding(demo, "time scale /2");
+            KeyBinding realTime = binding(demo, "time scale back to x1");
+            for (int i = 0; i < 10; ++i) {
+                faster.press(i % 2); // both keys: + and the keypad's +
+            }
+            float top = demo.getClock().getTimeScale();
+            realTime.press(0);
+            float back = demo.getClock().getTimeScale();
+            for (int i = 0; i < 10; ++i) {
+                slower.press(i % 2);
+            }
+            float bottom = demo.getClock().getTimeScale();
+            realTime.press(0);
+            return new float[] {top, back, bottom};
+        });
+        assertArrayEquals(new float[] {SimulationClock.MAX_TIME_SCALE, 1f,
+            SimulationClock.MIN_TIME_SCALE}, scales, 0f);
+    }
+
+    private static KeyBinding binding(DemoState demo, String descriptionStart) {
+        for (KeyBinding key : demo.getBindings()) {
+            if (key.getDescription().startsWith(descriptionStart)) {
+                return key;
+            }
+        }
+        throw new AssertionError("no key for " + descriptionStart);
     }
 
     private static int countZeros(long[] values) {

@@ -37,7 +37,42 @@ class HelloAimingDemoTest {
         assertEquals(100.0, discrete, 1e-3);
         String hud = harness.call(() -> aiming.formatHud(new StringBuilder()).toString());
         assertTrue(hud.contains("Predicted landing with h = 16.7 ms:  x = 100.000 m"), hud);
-        assertTrue(hud.contains("last landed at x = 100.000 m"), hud);
+        int shot = harness.call(aiming::getShotNumber);
+        assertTrue(hud.contains("Shot " + shot + ": landed at x = 100.000 m after "), hud);
+    }
+
+    @Test
+    void tAndTheShotLinesDescribeTheShotInTheAir() throws Exception {
+        Object[] inTheAir = harness.call(() -> {
+            aiming.restart(); // shot 1 in the air at t = 0
+            aiming.setAim(HelloAimingDemo.Aim.LECTURE);
+            for (int frame = 0; frame < 400; ++frame) {
+                aiming.advance(H);
+            }
+            double landedAt = aiming.getClock().getSimulatedSeconds();
+            aiming.fire(); // shot 2
+            for (int frame = 0; frame < 60; ++frame) {
+                aiming.advance(H);
+            }
+            return new Object[] {landedAt, aiming.getClock().getSimulatedSeconds(),
+                aiming.getShotNumber(), aiming.getLandedShotNumber(),
+                aiming.getLastFlightSeconds(),
+                aiming.formatHud(new StringBuilder()).toString()};
+        });
+        double flight = (Double) inTheAir[4];
+        // Shot 1 flew about S/vx − h = 4.983 s (the stepped parabola lands a step early), and
+        // t stopped within a step of its landing.
+        assertEquals(100.0 / 20.0 - H, flight, 1e-3);
+        assertEquals(flight, (Double) inTheAir[0], H);
+        // Firing shot 2 started t again: 60 frames of h.
+        assertEquals(60.0 * H, (Double) inTheAir[1], 1e-9);
+        assertEquals(2, inTheAir[2]);
+        assertEquals(1, inTheAir[3]);
+        String hud = (String) inTheAir[5];
+        assertTrue(hud.contains("t = 1.00 s"), hud);
+        assertTrue(hud.contains("Shot 2: in the air for 1.00 s  (lecture, vx 20.0 m/s)"), hud);
+        assertTrue(hud.contains("Shot 1: landed at x = 99.667 m after 4.983 s,  miss -0.333 m"),
+                hud);
     }
 
     private float fireAndLand(HelloAimingDemo.Aim aim) throws Exception {

@@ -2,6 +2,7 @@ package particlelab.physics;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -337,6 +338,151 @@ class SimulationClockTest {
         assertTrue(clock.isPaused());
         clock.toggleMode();
         assertSame(SimulationClock.Mode.FIXED_STEP, clock.getMode());
+    }
+
+    @Test
+    void aResetFromInsideTheStepperInItsThirdStepLeavesTheClockAtZero() {
+        // A scene that restarts itself during a step (demo 1 at the screen's edge).
+        SimulationClock clock = new SimulationClock();
+        int[] calls = {0};
+        SimulationClock.Stepper resetsInThirdStep = seconds -> {
+            if (++calls[0] == 3) {
+                clock.reset();
+            }
+        };
+
+        // Five steps' worth of frame time: the reset in the third ends the frame.
+        int steps = clock.advance(5 * H, resetsInThirdStep);
+
+        assertEquals(3, steps);
+        assertEquals(3, calls[0]);
+        assertEquals(0.0, clock.getSimulatedSeconds(), 0.0);
+        assertEquals(0.0, clock.getLeftoverSeconds(), 0.0);
+        assertEquals(0.0, clock.getDroppedSeconds(), 0.0);
+        assertEquals(0f, clock.getLastStepSeconds(), 0f);
+        assertLeftoverInRange(clock);
+        // The next frame of h takes exactly one step, counted from zero.
+        assertEquals(1, clock.advance(H, resetsInThirdStep));
+        assertEquals(H, clock.getSimulatedSeconds(), 0.0);
+        assertEquals(0.0, clock.getLeftoverSeconds(), -LEFTOVER_FLOOR);
+    }
+
+    @Test
+    void aResetFromInsideARawStepIsNotCountedEither() {
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(SimulationClock.Mode.RAW_TPF);
+
+        assertEquals(1, clock.advance(0.04f, seconds -> clock.reset()));
+
+        assertEquals(0.0, clock.getSimulatedSeconds(), 0.0);
+        assertEquals(0f, clock.getLastStepSeconds(), 0f);
+        assertEquals(1, clock.advance(0.04f, new RecordingStepper()));
+        assertEquals(0.04f, clock.getSimulatedSeconds(), 0.0);
+    }
+
+    @Test
+    void switchingModesCountsTheLeftoverAsDropped() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        double fed = feed(clock, 0.03f, stepper); // one step of 1/60 s, 0.0133 s left over
+        double leftover = clock.getLeftoverSeconds();
+        assertTrue(leftover > 0.0, "leftover " + leftover);
+
+        clock.toggleMode();
+
+        assertEquals(0.0, clock.getLeftoverSeconds(), 0.0);
+        assertEquals(leftover, clock.getDroppedSeconds(), 0.0);
+        clock.toggleMode();
+        for (int i = 0; i < 7; ++i) {
+            fed += feed(clock, 0.021f, stepper);
+        }
+        assertConserved(clock, fed);
+    }
+
+    @ParameterizedTest(name = "x64 asked at {0} fps runs at x{1}")
+    @CsvSource({"23, 5.75", "60, 15"})
+    void measuredTimeScaleShowsWhatTheClampLeavesOfTheAskedScale(int framesPerSecond,
+            float expected) {
+        // The numbers: a frame simulates at most 0.25 s, so x64 becomes 0.25 s per
+        // frame time (0.25·23 = 5.75, 0.25·60 = 15). Every clamped frame is 15 whole steps
+        // (up to the round-off the clock tolerates), so the ratio is exact to float.
+        SimulationClock clock = new SimulationClock();
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        RecordingStepper stepper = new RecordingStepper();
+        float tpf = 1f / framesPerSecond;
+        assertTrue(Float.isNaN(clock.getMeasuredTimeScale()));
+
+        for (int i = 0; i < 2 * framesPerSecond; ++i) {
+            clock.advance(tpf, stepper);
+        }
+
+        assertEquals(expected, clock.getMeasuredTimeScale(), 1e-4f);
+        assertEquals(expected, clock.getMaxMeasurableTimeScale(), 1e-4f);
+        assertEquals(tpf, clock.getMeasuredFrameSeconds(), 1e-6f);
+        assertTrue(clock.isDroppingTime());
+    }
+
+    @Test
+    void measuredTimeScaleFollowsTheAskedScaleWithinItsLimitsAndIsZeroWhilePaused() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        clock.setTimeScale(4f);
+        for (int i = 0; i < 120; ++i) {
+            clock.advance(H, stepper);
+        }
+        // Four whole steps a frame: exact to float.
+        assertEquals(4f, clock.getMeasuredTimeScale(), 1e-4f);
+        assertFalse(clock.isDroppingTime());
+
+        // 144 Hz frames at x1: steps are whole, so a window of ~0.5 s may hold one step more
+        // or less than its frame time; the ratio is off by at most h / 0.5 s.
+        clock.setTimeScale(1f);
+        for (int i = 0; i < 144; ++i) {
+            clock.advance(1f / 144f, stepper);
+        }
+        assertEquals(1f, clock.getMeasuredTimeScale(), H / SimulationClock.RATE_WINDOW_SECONDS);
+        assertFalse(clock.isDroppingTime());
+
+        clock.setPaused(true);
+        for (int i = 0; i < 60; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertEquals(0f, clock.getMeasuredTimeScale(), 0f);
+    }
+
+    @Test
+    void changingTheScaleStartsTheMeasurementAgain() {
+        SimulationClock clock = new SimulationClock();
+        RecordingStepper stepper = new RecordingStepper();
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        for (int i = 0; i < 60; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertTrue(clock.isDroppingTime());
+
+        clock.setTimeScale(1f);
+
+        // Neither x15 nor "dropping" outlives the settings they were measured under.
+        assertTrue(Float.isNaN(clock.getMeasuredTimeScale()));
+        assertFalse(clock.isDroppingTime());
+        for (int i = 0; i < 30; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertEquals(1f, clock.getMeasuredTimeScale(), H / SimulationClock.RATE_WINDOW_SECONDS);
+    }
+
+    @Test
+    void rawModeHasNoFrameLimitAndDropsNothing() {
+        SimulationClock clock = new SimulationClock();
+        clock.setMode(SimulationClock.Mode.RAW_TPF);
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        RecordingStepper stepper = new RecordingStepper();
+        for (int i = 0; i < 60; ++i) {
+            clock.advance(H, stepper);
+        }
+        assertEquals(SimulationClock.MAX_TIME_SCALE, clock.getMeasuredTimeScale(), 1e-3f);
+        assertEquals(Float.POSITIVE_INFINITY, clock.getMaxMeasurableTimeScale(), 0f);
+        assertFalse(clock.isDroppingTime());
     }
 
     /** Advance one frame and return the scaled time fed, for the accounting checks. */
