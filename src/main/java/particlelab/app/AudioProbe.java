@@ -4,16 +4,31 @@ import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Paths;
 import java.util.Locale;
+import java.util.logging.Logger;
 import org.lwjgl.openal.ALC10;
 
 /**
  * Checks, before the window starts, whether OpenAL can open an audio device. jME's own audio
  * start throws on a machine without a sound card and takes the whole application down with
- * it; asking first lets the app run silent instead, with one warning.
+ * it; asking first lets the app run silent instead. No demo plays sound yet, so a silent start
+ * is not worth a warning on every launch: it is noted at {@code CONFIG} level, which
+ * java.util.logging does not print unless asked to.
  */
 final class AudioProbe {
 
+    /** Where a silent start is noted (at CONFIG level). */
+    static final Logger LOGGER = Logger.getLogger(AudioProbe.class.getName());
+
     private AudioProbe() {
+    }
+
+    /**
+     * Note that the window starts without sound, in a log line that is hidden by default.
+     *
+     * @param problem why there is no audio, as {@link #findProblem} said (not null)
+     */
+    static void noteSilentStart(String problem) {
+        LOGGER.config(() -> "no audio (" + problem + "): the window runs without sound");
     }
 
     /**

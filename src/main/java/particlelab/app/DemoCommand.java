@@ -173,7 +173,7 @@ public final class DemoCommand {
         }
         String noAudio = AudioProbe.findProblem();
         if (noAudio != null) {
-            err.println("particle-lab: warning: " + noAudio + "; running without sound");
+            AudioProbe.noteSilentStart(noAudio);
         }
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);

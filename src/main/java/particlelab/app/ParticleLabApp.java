@@ -20,8 +20,8 @@ import particlelab.demo.DemoState;
  *
  * <p>Audio: jME's OpenAL start throws on a machine without a sound card, so the launcher asks
  * {@link AudioProbe} first and, when there is no device, starts the window without an audio
- * renderer (and without jME's audio listener state), after one warning. No demo plays sound
- * yet; later demos (collision effects) can.
+ * renderer (and without jME's audio listener state), noting it only in a hidden log line.
+ * No demo plays sound yet; later demos (collision effects) can.
  *
  * <p>Options for scripted runs: quit after a number of frames, save the last frame as a PNG,
  * and feed a constant frame time ({@link FixedTimer}) so the picture is reproducible.

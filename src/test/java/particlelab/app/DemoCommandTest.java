@@ -2,7 +2,6 @@ package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -45,16 +44,6 @@ class DemoCommandTest {
         err.reset();
         assertEquals(DemoCommand.USAGE, run("aiming", "--demo", "drag"));
         assertTrue(text(err).contains("already named aiming"), text(err));
-    }
-
-    @Test
-    void withoutADisplayItSaysSoInOneLineAndFails() {
-        assumeTrue(DemoCommand.checkDisplay() != null, "a display is present");
-        assertEquals(DemoCommand.FAILED, run("aiming", "--frames", "1"));
-        String message = text(err);
-        assertTrue(message.startsWith("particle-lab: cannot open the window: no display"),
-                message);
-        assertEquals(1, message.split("\\R").length, message);
     }
 
     private int run(String... args) {
