@@ -7,9 +7,10 @@ import particlelab.view.TextFormat;
 
 /**
  * The part of a demo's HUD body that every demo shows: the equations it runs, the simulated
- * time, one line per particle (position, velocity, speed and where it landed) and the stepping
- * line (fixed h or raw tpf, time scale, the stability limit, pause). The demo's own lines
- * follow, from {@link DemoState#writeHudLines}. Writing allocates nothing.
+ * time, one line per particle (position, velocity, speed and where it landed), the stepping
+ * line (fixed h or raw tpf, time scale, pause) and the stability line (the smallest limit and
+ * the particle it belongs to). The demo's own lines follow, from
+ * {@link DemoState#writeHudLines}. Writing allocates nothing.
  */
 final class HudWriter {
 
@@ -53,6 +54,7 @@ final class HudWriter {
             appendParticleLine(text, particles.get(i));
         }
         appendSteppingLine(text);
+        appendStabilityLine(text);
         return text;
     }
 
@@ -81,21 +83,46 @@ final class HudWriter {
         }
         text.append("   time x");
         TextFormat.appendFixed(text, clock.getTimeScale(), 2);
-        float limit = Float.POSITIVE_INFINITY;
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            limit = Math.min(limit, particle.getIntegrator().maxStableStep(
-                    particle.getParticle()));
-        }
-        if (limit < Float.POSITIVE_INFINITY) {
-            text.append("   stable while h < ");
-            TextFormat.appendFixed(text, limit, 3).append(" s");
-        } else {
-            text.append("   no drag: any h is stable");
-        }
         if (clock.isPaused()) {
             text.append("   PAUSED (Space resumes, N steps)");
         }
         text.append('\n');
+    }
+
+    /**
+     * The stability line: the smallest stability limit of the particles still moving, at their
+     * current states, naming the particle it belongs to with its damping rate (lambda) and, for
+     * a spring, its angular frequency omega = sqrt(k/m). Plain ASCII: the HUD font has no Greek.
+     */
+    private void appendStabilityLine(StringBuilder text) {
+        float limit = Float.POSITIVE_INFINITY;
+        DemoParticle limiting = null;
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            if (particle.isHeld()) {
+                continue;
+            }
+            float particleLimit = particle.getIntegrator().maxStableStep(particle.getParticle());
+            if (particleLimit < limit) {
+                limit = particleLimit;
+                limiting = particle;
+            }
+        }
+        if (limiting == null) {
+            text.append("Stability: any h is stable (nothing moving is damped or sprung)\n");
+            return;
+        }
+        Particle particle = limiting.getParticle();
+        text.append("Stability: h < ");
+        TextFormat.appendFixed(text, limit, 3).append(" s for '").append(limiting.getLabel())
+                .append("' (lambda = ");
+        TextFormat.appendFixed(text, limiting.getIntegrator().dampingRate(particle), 2)
+                .append(" /s");
+        float stiffness = limiting.getIntegrator().stiffness(particle);
+        if (stiffness > 0f) {
+            text.append(", omega = ");
+            TextFormat.appendFixed(text, (float) Math.sqrt(stiffness), 2).append(" /s");
+        }
+        text.append(")\n");
     }
 }
