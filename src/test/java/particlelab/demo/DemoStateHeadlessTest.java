@@ -92,7 +92,7 @@ class DemoStateHeadlessTest {
             }
             return pull.getParticles().get(0).getParticle().position.clone();
         });
-        // NUMERICS.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).
+        // docs/numerics.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).
         double h = H;
         double y = steps * h * 10.0 - Gravity.STANDARD_G * h * h * steps * (steps + 1) / 2.0;
         double x = steps * h * 10.0;
