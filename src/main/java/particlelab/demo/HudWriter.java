@@ -97,19 +97,25 @@ final class HudWriter {
     private void appendStabilityLine(StringBuilder text) {
         float limit = Float.POSITIVE_INFINITY;
         DemoParticle limiting = null;
+        int moving = 0;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             if (particle.isHeld()) {
                 continue;
             }
+            ++moving;
             float particleLimit = particle.getIntegrator().maxStableStep(particle.getParticle());
             if (particleLimit < limit) {
                 limit = particleLimit;
                 limiting = particle;
             }
         }
+        if (moving == 0) {
+            text.append("Stability: nothing is moving, so no step limit applies\n");
+            return;
+        }
         if (limiting == null) {
-            text.append("Stability: any h is stable (nothing moving is damped or sprung)\n");
+            text.append("Stability: any h is stable (no drag or spring on a moving particle)\n");
             return;
         }
         Particle particle = limiting.getParticle();

@@ -96,6 +96,21 @@ class StabilityHudHeadlessTest {
                 texts[1]);
     }
 
+    @Test
+    void landedParticlesAreLeftOutOfTheLine() throws Exception {
+        String body = harness.call(() -> {
+            drag.restart();
+            for (int frame = 0; frame < 600; ++frame) {
+                drag.advance(H);
+            }
+            return drag.formatHud(new StringBuilder()).toString();
+        });
+        // After 10 s all three spheres have landed and stopped: no limit to show, and not
+        // the landed quadratic sphere's (infinite) one as "any h is stable".
+        assertTrue(body.contains("Stability: nothing is moving, so no step limit applies\n"),
+                body);
+    }
+
     /** Feed frames of H until the clock has taken its first (long) step from the launch. */
     private static void takeOneStep(DemoState demo) {
         for (int frame = 0; frame < 1000 && demo.getClock().getSimulatedSeconds() == 0.0;
