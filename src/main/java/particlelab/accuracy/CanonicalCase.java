@@ -6,7 +6,8 @@ import java.util.List;
 
 /**
  * One of the report's canonical scenes: the forces, the launch and how long to fly. All start
- * from the origin at (20, 30) m/s under g = 9.8 m/s² on 1 kg, as NUMERICS' reference table.
+ * from the origin at (20, 30) m/s under g = 9.8 m/s² on 1 kg, as the reference table of
+ * docs/numerics.md.
  */
 public final class CanonicalCase {
 

@@ -3,7 +3,7 @@ package particlelab.accuracy;
 /**
  * The stepping methods compared, with what theory says about each: the order of the global
  * error and the stability limit under linear drag ({@code h < factor·m/b}; gravity does not
- * change it). Values from the project's NUMERICS notes.
+ * change it). Values from docs/numerics.md.
  */
 public enum Scheme {
 

@@ -199,7 +199,7 @@ public final class SpeedVsErrorReport {
         }
         Charts.saveGrid(grid, 2, 3, folder.resolve(MAIN_PLOT));
 
-        XYChart map = Charts.create("Stability: largest stable step under linear drag",
+        XYChart map = Charts.create("Stability: largest stable step, linear drag and a spring",
                 "b/m (1/s)", "largest stable h (s)", true, true);
         map.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
         map.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Vertical);
@@ -229,6 +229,16 @@ public final class SpeedVsErrorReport {
             }
             Charts.dashed(map, names[f], rates, theory, styles[f]);
         }
+        double[] springMeasured = new double[rates.length];
+        double[] springTheory = new double[rates.length];
+        for (StabilityStudy.Limit l : stability.springLimits) {
+            springMeasured[indexOf(rates, l.linearRate)] = l.measuredSeconds;
+            springTheory[indexOf(rates, l.linearRate)] = l.theorySeconds;
+        }
+        String spring = "SIE + spring k/m = " + num(StabilityMap.SPRING_STIFFNESS);
+        Charts.markers(map, spring + " (measured)", rates, springMeasured, Scheme.EXACT.ordinal());
+        Charts.dashed(map, "theory 4/(b/m + sqrt((b/m)^2 + 4k/m))", rates, springTheory,
+                Scheme.EXACT.ordinal());
         Charts.save(map, folder.resolve("stability.png"));
 
         XYChart bulk = Charts.create("Cost per particle-step as N grows (gravity + linear drag)",
@@ -469,6 +479,19 @@ public final class SpeedVsErrorReport {
             }
             md.append('\n');
         }
+        md.append("| ").append(Scheme.SEMI_IMPLICIT_EULER.label()).append(" + spring k/m = ")
+                .append(num(StabilityMap.SPRING_STIFFNESS)).append(" /s² | 4/(b/m + sqrt((b/m)²"
+                + " + 4k/m)) |");
+        for (StabilityStudy.Limit l : stability.springLimits) {
+            md.append(' ').append(sig(l.measuredSeconds)).append(" s (")
+                    .append(fix(l.measuredSeconds / l.theorySeconds, 5)).append(") |");
+        }
+        md.append("\n\nThe spring row is the damped oscillator x'' = −ω²x − (b/m)·x' stepped by the"
+                + " shared integrator with a `Spring` (a trial: ").append(StabilityMap.TRIAL_STEPS)
+                .append(" steps from 1 m off rest; stable if the swing sqrt(ω²x² + v²) did not "
+                + "grow): 2/ω = ").append(sig(2 / Math.sqrt(StabilityMap.SPRING_STIFFNESS)))
+                .append(" s without drag, 2m/b with strong drag (docs/numerics.md derives it). "
+                + "It is not in `stability.csv`, whose rows stay one per stepper and b/m.\n");
         md.append("\nIn `stability.csv`, `Infinity` means stable at every step tried, up to ")
                 .append(num(StabilityMap.CEILING_FACTOR)).append("·m/b.\n\n");
     }

@@ -2,10 +2,13 @@ package particlelab.accuracy;
 
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.physics.ParticleIntegrator;
 
 /**
  * The stability map: the largest stable step of every stepper at each damping rate b/m,
- * measured by {@link StabilityMap} and set beside theory.
+ * measured by {@link StabilityMap} and set beside theory; and of the shared integrator on a
+ * spring of stiffness {@link StabilityMap#SPRING_STIFFNESS} damped at each of those rates,
+ * beside the damped oscillator's limit {@link ParticleIntegrator#stableStepLimit}.
  */
 final class StabilityStudy {
 
@@ -25,12 +28,14 @@ final class StabilityStudy {
     }
 
     final List<Limit> limits = new ArrayList<>();
+    /** The spring series: the shared integrator, λ = b/m, ω² = SPRING_STIFFNESS. */
+    final List<Limit> springLimits = new ArrayList<>();
 
     private StabilityStudy() {
     }
 
     static int units(ReportConfig config) {
-        return Scheme.values().length * config.linearRates().length;
+        return (Scheme.values().length + 1) * config.linearRates().length;
     }
 
     static StabilityStudy run(ReportConfig config, ProgressBar progress) {
@@ -42,6 +47,13 @@ final class StabilityStudy {
                 study.limits.add(new Limit(scheme, rate, measured, scheme.theoryStableStep(rate)));
                 progress.advance();
             }
+        }
+        progress.phase("stability map: semi-implicit Euler with a spring");
+        for (double rate : config.linearRates()) {
+            double measured = StabilityMap.maxStableStepSpring(rate, StabilityMap.SPRING_STIFFNESS);
+            study.springLimits.add(new Limit(Scheme.SEMI_IMPLICIT_EULER, rate, measured,
+                    ParticleIntegrator.stableStepLimit(rate, StabilityMap.SPRING_STIFFNESS)));
+            progress.advance();
         }
         return study;
     }

@@ -100,9 +100,7 @@ public final class AimCommand {
                         + " is refused for every method; the iterative method also reports a"
                         + " target it cannot reach (the stepped bullet's reach, quadratic drag's"
                         + " peak reach) or cannot hit within " + MAX_SHOTS + " shots.")
-                .note("Stability: when h exceeds 2/lambda or 1/lambda at the launch, lambda ="
-                        + " b/m + 2c*|V|/m, a warning goes to stderr and the shot flies as"
-                        + " asked.")
+                .note(CommandSupport.STABILITY_NOTE)
                 .note("Exit status: 0 on success; 2 on a bad command line or a target out of"
                         + " reach, with one line on stderr.");
     }

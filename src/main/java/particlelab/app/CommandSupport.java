@@ -11,7 +11,9 @@ import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.physics.SimulationClock;
+import particlelab.physics.StepRegime;
 import particlelab.physics.Thrust;
+import particlelab.physics.Validate;
 
 /**
  * What the physics subcommands share: the scene's forces from the options, the stability check
@@ -23,6 +25,21 @@ final class CommandSupport {
     static final float DEFAULT_STEP_SECONDS = SimulationClock.DEFAULT_STEP_SECONDS;
     /** The default mass (in kg). */
     static final float DEFAULT_MASS_KG = 1f;
+    /** The help texts' statement of the limits that {@link #warnIfUnstable} checks. */
+    static final String STABILITY_NOTE = "Stability: with sigma = b/m + c*|V|/m at the start,"
+            + " h > 2/sigma makes drag grow the speed every step (the run blows up) and"
+            + " h > 1/sigma makes it reverse the velocity every step while still shrinking it."
+            + " With lambda = b/m + 2c*|V|/m (how fast a small change of speed dies out;"
+            + " quadratic drag's force grows with the square of the speed) at the terminal"
+            + " speed v_t, where drag balances the pull, h > 2/lambda means the run never"
+            + " settles there (quadratic drag alone: h > v_t/g, v_t = sqrt(m*g/c)) and"
+            + " h > 1/lambda that it swings about v_t before settling. Linear drag has"
+            + " sigma = lambda = b/m. A step past a limit gives one warning on stderr and the"
+            + " run goes on as asked.";
+    /** The most halvings of the bracket in the terminal-speed search (from 1 m/s to 1e-45). */
+    private static final int TERMINAL_BISECTIONS = 300;
+    /** The terminal-speed search stops at this relative width: float resolution. */
+    private static final double TERMINAL_TOLERANCE = 1e-7;
 
     private CommandSupport() {
     }
@@ -55,11 +72,18 @@ final class CommandSupport {
     }
 
     /**
-     * Warn on err when the step exceeds a stability limit at the particle's state: the Euler
-     * step diverges beyond {@code 2/λ} and overshoots beyond {@code 1/λ}, where λ is the
-     * forces' damping rate ({@link particlelab.physics.Force#dampingRate}: {@code b/m} for
-     * linear drag, {@code 2c·|V|/m} for quadratic drag). Quadratic drag damps faster as the
-     * speed grows, so the check holds only at this state.
+     * Warn on err, in one line, when the step passes a limit of the Euler step (see
+     * {@link StepRegime}), checked where each limit means something:
+     * <ul>
+     * <li>at the initial state, the drag rate σ ({@code b/m + c·|V|/m}): drag makes the speed
+     * grow every step (the run blows up) once {@code h > 2/σ}, and reverses the velocity every
+     * step while still shrinking it once {@code h > 1/σ};</li>
+     * <li>at the terminal velocity, if the forces have one, the damping rate λ
+     * ({@code b/m + 2c·v_t/m}): the run cannot settle there once {@code h > 2/λ} (for quadratic
+     * drag alone {@code v_t/g}) and swings about it before settling once {@code h > 1/λ}.</li>
+     * </ul>
+     * The most serious case found is reported. Linear drag has σ = λ everywhere, so its two
+     * checks agree.
      *
      * @param integrator the scene's forces (not null)
      * @param particle the state to check (not null, not modified)
@@ -68,18 +92,97 @@ final class CommandSupport {
      */
     static void warnIfUnstable(ParticleIntegrator integrator, Particle particle,
             float stepSeconds, PrintStream err) {
-        float rate = integrator.dampingRate(particle);
-        float stable = integrator.maxStableStep(particle);
-        float monotone = integrator.maxMonotoneStep(particle);
-        if (stepSeconds > stable) {
-            err.println("warning: --tpf " + stepSeconds + " s exceeds the stability limit 2/lambda"
-                    + " = " + stable + " s at the initial state (damping rate lambda = " + rate
-                    + " /s): the Euler step will blow up; carrying on as asked");
-        } else if (stepSeconds > monotone) {
-            err.println("warning: --tpf " + stepSeconds + " s exceeds 1/lambda = " + monotone
-                    + " s at the initial state (damping rate lambda = " + rate + " /s): the"
-                    + " velocity will overshoot and oscillate; carrying on as asked");
+        String warning = stabilityWarning(integrator, particle, stepSeconds);
+        if (warning != null) {
+            err.println(warning);
         }
+    }
+
+    /**
+     * Word the warning of {@link #warnIfUnstable}.
+     *
+     * @return the line, or null when the step is within every limit
+     */
+    static String stabilityWarning(ParticleIntegrator integrator, Particle particle,
+            float stepSeconds) {
+        float sigma = integrator.dragRate(particle);
+        StepRegime atStart = StepRegime.of(stepSeconds, sigma, Float.POSITIVE_INFINITY,
+                Float.POSITIVE_INFINITY);
+        Particle terminal = terminalState(integrator, particle);
+        StepRegime atTerminal = terminal == null ? StepRegime.STABLE
+                : StepRegime.of(stepSeconds, 0f, integrator.maxStableStep(terminal),
+                        integrator.maxMonotoneStep(terminal));
+        String head = "warning: --tpf " + stepSeconds + " s exceeds ";
+        String tail = "; carrying on as asked";
+        // atStart is STABLE, REVERSES or GROWS, atTerminal STABLE, OVERSHOOTS or UNSTABLE.
+        if (atStart.compareTo(atTerminal) > 0) {
+            float limit = (atStart == StepRegime.GROWS ? 2f : 1f) / sigma;
+            return head + (atStart == StepRegime.GROWS ? "2" : "1") + "/sigma = " + limit
+                    + " s at the initial state (drag rate sigma = " + sigma + " /s): "
+                    + atStart.consequence() + tail;
+        }
+        if (atTerminal == StepRegime.STABLE) {
+            return null;
+        }
+        float lambda = integrator.dampingRate(terminal);
+        boolean unstable = atTerminal == StepRegime.UNSTABLE;
+        float limit = unstable ? integrator.maxStableStep(terminal)
+                : integrator.maxMonotoneStep(terminal);
+        return head + (unstable ? "the stability limit 2/lambda" : "1/lambda") + " = " + limit
+                + " s at the terminal speed " + terminal.velocity.length() + " m/s (damping"
+                + " rate lambda = " + lambda + " /s): " + atTerminal.consequence()
+                + (unstable ? ", so the run never settles there" : "") + tail;
+    }
+
+    /**
+     * Find the terminal velocity of the particle's forces: the speed along the steady pull (the
+     * field acceleration at rest, or else the initial velocity's direction, for thrust) at which
+     * the acceleration along it vanishes, by bisection. The forces of the commands do not
+     * depend on position, so the particle's position is kept.
+     *
+     * @return a particle at the terminal velocity, or null if there is no pull or no drag to
+     *     balance it
+     */
+    static Particle terminalState(ParticleIntegrator integrator, Particle particle) {
+        Particle probe = new Particle();
+        probe.copyFrom(particle);
+        probe.velocity.zero();
+        Vector3f direction = integrator.acceleration(probe, new Vector3f());
+        if (direction.lengthSquared() == 0f) {
+            direction.set(particle.velocity);
+        }
+        if (direction.lengthSquared() == 0f || !Validate.isFinite(direction)) {
+            return null;
+        }
+        direction.normalizeLocal();
+        double low = 0.0;
+        double high = 1.0;
+        while (pullAlong(integrator, probe, direction, high) > 0f) {
+            low = high;
+            high *= 2.0;
+            if (high > Float.MAX_VALUE) {
+                return null;
+            }
+        }
+        for (int i = 0; i < TERMINAL_BISECTIONS && high - low > TERMINAL_TOLERANCE * high; ++i) {
+            double mid = 0.5 * (low + high);
+            if (pullAlong(integrator, probe, direction, mid) > 0f) {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        probe.velocity.set(direction).multLocal((float) (0.5 * (low + high)));
+        return probe;
+    }
+
+    /** The acceleration along the direction at the given speed along it (m/s²). */
+    private static float pullAlong(ParticleIntegrator integrator, Particle probe,
+            Vector3f direction, double speed) {
+        probe.velocity.set(direction).multLocal((float) speed);
+        float along = integrator.acceleration(probe, new Vector3f()).dot(direction);
+        // NaN or infinite forces: no balance to find at this speed or beyond.
+        return Float.isNaN(along) ? -1f : along;
     }
 
     /**

@@ -85,12 +85,7 @@ public final class TrajectoryCommand {
                         + " V += h*a, then P += h*V with the new V. t is n*h computed from the"
                         + " step count n (no drift). Every value is printed with enough digits"
                         + " to read back the same float.")
-                .note("Stability: when h exceeds 2/lambda (the step blows up) or 1/lambda (the"
-                        + " velocity reverses every step), lambda = b/m + c*|V0|/m being the"
-                        + " damping rate at the initial state, a warning goes to stderr and the"
-                        + " run carries on. Quadratic drag damps faster as the particle speeds"
-                        + " up (towards the terminal speed sqrt(m*|g|/c)), so a start below the"
-                        + " limit may still exceed it later.")
+                .note(CommandSupport.STABILITY_NOTE)
                 .note("Exit status: 0 on success; 2 on a bad command line, a particle that"
                         + " never lands with " + UNTIL_GROUND + ", or a step that overflows,"
                         + " with one line on stderr and no CSV.");

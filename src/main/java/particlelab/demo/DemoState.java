@@ -627,7 +627,7 @@ public abstract class DemoState extends BaseAppState {
             }
             Particle particle = demoParticle.getParticle();
             ParticleIntegrator integrator = demoParticle.getIntegrator();
-            warnings.observe(integrator.dampingRate(particle));
+            warnings.observe(demoParticle.getLabel(), integrator, particle);
             previousPosition.set(particle.position);
             integrator.step(particle, stepSeconds);
             // Flight time, and the lecture's stop at the ground, inside the step.

@@ -20,8 +20,10 @@ import particlelab.physics.QuadraticDrag;
  * <p>What to watch for: with drag the path is no longer a parabola: it climbs less, bends down
  * steeper and lands shorter. Linear drag pulls every velocity toward the terminal velocity
  * {@code m·g/b ≈ 10.9} m/s straight down; quadratic drag bites hardest at the start, when the
- * sphere is fastest. The HUD's stability line shows the largest stable step {@code 2m/b};
- * press T (raw tpf) then K (a 0.5 s hitch) to see one long step overshoot.
+ * sphere is fastest. The HUD's stability line names the sphere whose stability limit is the
+ * smallest at its current state ({@code 2m/b} for linear drag, {@code m/(c·|V|)} for quadratic
+ * drag, which grows as the sphere slows); press T (raw tpf) and K (a long hitch, longer still
+ * at a raised time scale) to see a long step pass a limit and the warning name the sphere.
  */
 public final class DragDemo extends DemoState {
 

@@ -9,9 +9,10 @@ import particlelab.view.TextFormat;
  * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
  * dropped, and the keys that change it), a short notice if one is up, one line per particle
- * (position, velocity, speed and where and when it landed) and the stepping line (fixed h or
- * raw tpf, the stability limit). The demo's own lines follow, from
- * {@link DemoState#writeHudLines}. Key names come from the bindings. Writing allocates nothing.
+ * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
+ * tpf) and the stability line (the smallest limit and the particle it belongs to). The demo's
+ * own lines follow, from {@link DemoState#writeHudLines}. Key names come from the bindings.
+ * Writing allocates nothing.
  */
 final class HudWriter {
 
@@ -122,6 +123,7 @@ final class HudWriter {
             appendParticleLine(text, particles.get(i));
         }
         appendSteppingLine(text);
+        appendStabilityLine(text);
         return text;
     }
 
@@ -221,18 +223,49 @@ final class HudWriter {
             TextFormat.appendFixed(text, clock.getCurrentStepSeconds() * 1000f, 1)
                     .append(" ms");
         }
+        text.append('\n');
+    }
+
+    /**
+     * The stability line: the smallest stability limit of the particles still moving, at their
+     * current states, naming the particle it belongs to with its damping rate (lambda) and, for
+     * a spring, its angular frequency omega = sqrt(k/m). Plain ASCII: the HUD font has no Greek.
+     */
+    private void appendStabilityLine(StringBuilder text) {
         float limit = Float.POSITIVE_INFINITY;
+        DemoParticle limiting = null;
+        int moving = 0;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
-            limit = Math.min(limit, particle.getIntegrator().maxStableStep(
-                    particle.getParticle()));
+            if (particle.isHeld()) {
+                continue;
+            }
+            ++moving;
+            float particleLimit = particle.getIntegrator().maxStableStep(particle.getParticle());
+            if (particleLimit < limit) {
+                limit = particleLimit;
+                limiting = particle;
+            }
         }
-        if (limit < Float.POSITIVE_INFINITY) {
-            text.append("   stable while h < ");
-            TextFormat.appendFixed(text, limit, 3).append(" s");
-        } else {
-            text.append("   no drag: any h is stable");
+        if (moving == 0) {
+            text.append("Stability: nothing is moving, so no step limit applies\n");
+            return;
         }
-        text.append('\n');
+        if (limiting == null) {
+            text.append("Stability: any h is stable (no drag or spring on a moving particle)\n");
+            return;
+        }
+        Particle particle = limiting.getParticle();
+        text.append("Stability: h < ");
+        TextFormat.appendFixed(text, limit, 3).append(" s for '").append(limiting.getLabel())
+                .append("' (lambda = ");
+        TextFormat.appendFixed(text, limiting.getIntegrator().dampingRate(particle), 2)
+                .append(" /s");
+        float stiffness = limiting.getIntegrator().stiffness(particle);
+        if (stiffness > 0f) {
+            text.append(", omega = ");
+            TextFormat.appendFixed(text, (float) Math.sqrt(stiffness), 2).append(" /s");
+        }
+        text.append(")\n");
     }
 }

@@ -1,15 +1,18 @@
 package particlelab.demo;
 
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.physics.StepRegime;
 import particlelab.view.TextFormat;
 
 /**
  * The warning line of a demo's HUD: what went wrong with the stepping lately. Each warning
  * stays up for {@link #SHOW_SECONDS} of real time after its cause:
  * <ul>
- * <li>reversing: a step had {@code h·λ > 1} (λ the damping rate of the forces, b/m for linear
- * drag): the drag overshoots and reverses the velocity each step;</li>
- * <li>unstable: a step had {@code h·λ > 2}: the Euler step amplifies the velocity;</li>
+ * <li>a step past a limit of the Euler step ({@link StepRegime}): the most serious case of any
+ * particle in the step, named with the particle, the limit and what it does (λ, "lambda", the
+ * damping rate of small changes; σ, "sigma", the drag rate of the motion itself);</li>
  * <li>blow-up: a step left a particle non-finite and the demo reset its scene; no other
  * warning replaces it while it is up;</li>
  * <li>hitch: one long frame was injected; says what the clock made of it.</li>
@@ -22,26 +25,27 @@ final class StepWarnings {
 
     /** How long a warning stays up after its cause (in seconds of real time). */
     static final float SHOW_SECONDS = 4f;
-    /** Beyond this h·λ the Euler step amplifies the velocity. */
-    private static final float UNSTABLE_RATE = 2f;
-    /** Beyond this h·λ linear drag reverses the velocity each step. */
-    private static final float REVERSING_RATE = 1f;
-
     /** What the warning line currently reports. */
     private enum Warning {
-        NONE, REVERSING, UNSTABLE, BLOW_UP, HITCH
+        NONE, LIMIT, BLOW_UP, HITCH
     }
 
     private final SimulationClock clock;
     private final Runnable onChange;
     /** h of the step being taken, or of the last one (in seconds). */
     private float stepSeconds;
-    /** The worst h·λ of any particle in the step being taken (dimensionless). */
-    private float worstStepRate;
+    /** The most serious regime of any particle in the step being taken. */
+    private StepRegime worstRegime = StepRegime.STABLE;
+    /** The label of the particle in that regime (not null). */
+    private String worstLabel = "";
+    /** The limit that particle passed (in seconds). */
+    private float worstLimitSeconds;
     private Warning warning = Warning.NONE;
     private float warningAgeSeconds;
     private float warningStepSeconds;
     private float warningLimitSeconds;
+    private StepRegime warningRegime = StepRegime.STABLE;
+    private String warningLabel = "";
     /** The clock's dropped time when the hitch was injected (in seconds). */
     private double droppedAtHitch;
     private String blowUpMessage = "";
@@ -67,27 +71,34 @@ final class StepWarnings {
     }
 
     /**
-     * Note the damping rate one particle is stepped with in the current step.
+     * Note one particle about to be stepped in the current step: what the step of h does to
+     * it at its state ({@link ParticleIntegrator#regime}).
      *
-     * @param dampingRate λ of the forces on the particle (in 1/s, &ge;0)
+     * @param label the particle's label, to name it in the warning (not null)
+     * @param integrator the particle's forces (not null)
+     * @param particle its state before the step (not null, not modified)
      */
-    void observe(float dampingRate) {
-        float stepRate = stepSeconds * dampingRate;
-        if (stepRate > worstStepRate) {
-            worstStepRate = stepRate;
+    void observe(String label, ParticleIntegrator integrator, Particle particle) {
+        StepRegime regime = integrator.regime(particle, stepSeconds);
+        if (regime.compareTo(worstRegime) > 0) {
+            worstRegime = regime;
+            worstLabel = label;
+            worstLimitSeconds = limitSeconds(regime, integrator, particle);
         }
     }
 
     /**
-     * Note the end of a step: raise a warning if it passed a limit (h·λ &gt; 1 or 2).
+     * Note the end of a step: raise a warning if it passed a limit.
      */
     void endStep() {
-        if (worstStepRate > UNSTABLE_RATE) {
-            raise(Warning.UNSTABLE, stepSeconds, UNSTABLE_RATE * stepSeconds / worstStepRate);
-        } else if (worstStepRate > REVERSING_RATE && warning != Warning.UNSTABLE) {
-            raise(Warning.REVERSING, stepSeconds, REVERSING_RATE * stepSeconds / worstStepRate);
+        if (worstRegime != StepRegime.STABLE && (warning != Warning.LIMIT
+                || warningAgeSeconds > SHOW_SECONDS
+                || worstRegime.compareTo(warningRegime) >= 0)) {
+            warningRegime = worstRegime;
+            warningLabel = worstLabel;
+            raise(Warning.LIMIT, stepSeconds, worstLimitSeconds);
         }
-        worstStepRate = 0f;
+        worstRegime = StepRegime.STABLE;
     }
 
     /**
@@ -132,7 +143,7 @@ final class StepWarnings {
      */
     void clear() {
         warning = Warning.NONE;
-        worstStepRate = 0f;
+        worstRegime = StepRegime.STABLE;
     }
 
     /**
@@ -152,14 +163,8 @@ final class StepWarnings {
             case BLOW_UP:
                 text.append(blowUpMessage);
                 break;
-            case UNSTABLE:
-                appendStepBeyondLimit(text, "UNSTABLE: h = ",
-                        " ms is beyond the stability limit 2/k = ",
-                        " ms: the Euler step amplifies the velocity");
-                break;
-            case REVERSING:
-                appendStepBeyondLimit(text, "h = ", " ms is beyond 1/k = ",
-                        " ms: drag overshoots and reverses the velocity each step");
+            case LIMIT:
+                appendLimit(text);
                 break;
             case HITCH:
                 text.append("Hitch: one ");
@@ -178,12 +183,47 @@ final class StepWarnings {
         return text;
     }
 
-    /** Append "{before} h {middle} limit {after}", h and the limit in milliseconds. */
-    private void appendStepBeyondLimit(StringBuilder text, String before, String middle,
-            String after) {
-        text.append(before);
-        TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1).append(middle);
-        TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1).append(after);
+    /**
+     * Append e.g. "UNSTABLE: h = 500.0 ms is beyond the stability limit 275.1 ms of 'spring':
+     * small changes of the motion grow every step instead of dying out". Plain ASCII: the HUD
+     * font has no Greek letters.
+     */
+    private void appendLimit(StringBuilder text) {
+        boolean serious = warningRegime.compareTo(StepRegime.UNSTABLE) >= 0;
+        text.append(serious ? "UNSTABLE: h = " : "h = ");
+        TextFormat.appendFixed(text, warningStepSeconds * 1000f, 1).append(" ms is beyond ")
+                .append(limitName(warningRegime));
+        TextFormat.appendFixed(text, warningLimitSeconds * 1000f, 1).append(" ms of '")
+                .append(warningLabel).append("': ").append(warningRegime.consequence());
+    }
+
+    /** The limit a regime passes, as the warning names it. */
+    private static String limitName(StepRegime regime) {
+        switch (regime) {
+            case GROWS:
+                return "2/sigma = ";
+            case UNSTABLE:
+                return "the stability limit ";
+            case REVERSES:
+                return "1/sigma = ";
+            default:
+                return "1/lambda = ";
+        }
+    }
+
+    /** The limit (in seconds) that a particle in the regime has passed. */
+    private static float limitSeconds(StepRegime regime, ParticleIntegrator integrator,
+            Particle particle) {
+        switch (regime) {
+            case GROWS:
+                return 2f / integrator.dragRate(particle);
+            case UNSTABLE:
+                return integrator.maxStableStep(particle);
+            case REVERSES:
+                return 1f / integrator.dragRate(particle);
+            default:
+                return integrator.maxMonotoneStep(particle);
+        }
     }
 
     private void raise(Warning newWarning, float causeSeconds, float limitSeconds) {

@@ -33,17 +33,33 @@ public interface Force {
 
     /**
      * Return how fast this force damps a small change of the particle's velocity at its
-     * current state: the rate {@code λ} (per second) for which the Euler step scales such a
-     * change by {@code 1 − λh}, the largest eigenvalue of {@code −(∂F/∂V)/m}. The integrator
-     * stays stable (small changes die out) while {@code h < 2/λ} and does not overshoot
-     * (reverse the velocity, or swing about a terminal velocity) while {@code h < 1/λ}.
-     * Linear drag gives {@code b/m}; quadratic drag {@code 2c·|V|/m}. Rates of several forces
-     * add. Forces that do not depend on velocity return 0.
+     * current state: the damping rate {@code λ} ("lambda", per second), the largest eigenvalue
+     * of {@code −(∂F/∂V)/m}, for which the Euler step scales such a change by {@code 1 − λh}.
+     * Linear drag gives {@code b/m}; quadratic drag {@code 2c·|V|/m} (its force grows with the
+     * square of the speed, so a change of speed changes it twice as fast). Rates of several
+     * forces add. Forces that do not depend on velocity return 0.
+     *
+     * <p>With {@link #stiffness} it sets the stability limit of the Euler step, see
+     * {@link ParticleIntegrator#stableStepLimit(double, double)}: {@code 2/λ} for drag alone.
      *
      * @param particle the particle (not null, not modified)
-     * @return the damping rate (in 1/s, &ge;0)
+     * @return the damping rate λ (in 1/s, finite, &ge;0)
      */
     default float dampingRate(Particle particle) {
+        return 0f;
+    }
+
+    /**
+     * Return how strongly this force pulls the particle back when its position changes a
+     * little: the stiffness {@code ω²} ("omega squared", per second squared), the largest
+     * eigenvalue of {@code −(∂F/∂P)/m}. A spring of constant k gives {@code k/m}, so
+     * {@code ω} is its angular frequency. Stiffnesses of several forces add. Forces that do
+     * not depend on position return 0.
+     *
+     * @param particle the particle (not null, not modified)
+     * @return the stiffness ω² (in 1/s², finite, &ge;0)
+     */
+    default float stiffness(Particle particle) {
         return 0f;
     }
 

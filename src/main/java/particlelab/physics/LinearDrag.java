@@ -4,8 +4,9 @@ import com.jme3.math.Vector3f;
 
 /**
  * Linear (viscous) drag {@code F = −b·V}: slow flow, small particles. With mass m the speed
- * decays at the rate {@code k = b/m}; the Euler step multiplies the speed by {@code 1 − k·h},
- * so it is stable for {@code h < 2m/b} and never reverses the velocity for {@code h < m/b}.
+ * decays at the damping rate {@code λ = b/m}; the Euler step multiplies the velocity by
+ * {@code 1 − λh}, so it is stable for {@code h < 2m/b} and never reverses the velocity for
+ * {@code h < m/b} (see {@link StepRegime}).
  */
 public final class LinearDrag implements Force {
 
@@ -46,7 +47,8 @@ public final class LinearDrag implements Force {
 
     @Override
     public float dampingRate(Particle particle) {
-        return coefficient / particle.getMass();
+        // In double: b/m may overflow a float for a tiny mass.
+        return (float) Math.min((double) coefficient / particle.getMass(), Float.MAX_VALUE);
     }
 
     @Override

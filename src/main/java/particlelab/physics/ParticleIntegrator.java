@@ -31,6 +31,12 @@ public final class ParticleIntegrator {
     private final Vector3f nextVelocity = new Vector3f();
     /** Scratch: the position after the step (m), committed only if finite. */
     private final Vector3f nextPosition = new Vector3f();
+    /** Scratch for {@link #dragRate}: a at the particle's state (m/s²). */
+    private final Vector3f movingAcceleration = new Vector3f();
+    /** Scratch for {@link #dragRate}: a at the same position at rest (m/s²). */
+    private final Vector3f restingAcceleration = new Vector3f();
+    /** Scratch for {@link #dragRate}: the particle at rest. */
+    private final Particle restingScratch = new Particle();
     /** Scratch for {@link #stepPacked}: one gravity's g (m/s²). */
     private final Vector3f packedGravity = new Vector3f();
     /** Scratch for {@link #stepPacked}: g per axis (m/s²). */
@@ -202,40 +208,127 @@ public final class ParticleIntegrator {
      * {@link Force#dampingRate}).
      *
      * @param particle the particle (not null, not modified)
-     * @return λ (in 1/s, &ge;0)
+     * @return λ (in 1/s, finite, &ge;0; sums beyond the float range give the largest float)
      */
     public float dampingRate(Particle particle) {
-        float rate = 0f;
+        double rate = 0.0;
         for (int i = 0; i < forces.length; ++i) {
             rate += forces[i].dampingRate(particle);
         }
-        return rate;
+        return clampRate(rate);
+    }
+
+    /**
+     * Return the total stiffness ω² of the forces at the particle's state (see
+     * {@link Force#stiffness}).
+     *
+     * @param particle the particle (not null, not modified)
+     * @return ω² (in 1/s², finite, &ge;0; sums beyond the float range give the largest float)
+     */
+    public float stiffness(Particle particle) {
+        double total = 0.0;
+        for (int i = 0; i < forces.length; ++i) {
+            total += forces[i].stiffness(particle);
+        }
+        return clampRate(total);
+    }
+
+    /**
+     * Return the drag rate σ ("sigma") of the forces at the particle's state: how fast the
+     * velocity-dependent forces slow the particle itself, so that through them one Euler step
+     * scales the velocity by {@code 1 − σh}. It is the part of the acceleration that the
+     * velocity adds, per unit of velocity, along V: {@code σ = −(a(V) − a(0))·V/|V|²}.
+     * Linear drag gives {@code b/m} (equal to its λ), quadratic drag {@code c·|V|/m} (half its
+     * λ), thrust {@code −k/(m·|V|)} (it speeds the particle up). The step reverses the velocity
+     * once {@code σh > 1} and makes the speed grow once {@code σh > 2} (see {@link StepRegime}).
+     * Allocates nothing.
+     *
+     * @param particle the particle (not null, not modified)
+     * @return σ (in 1/s; 0 at rest; may be negative; the largest float when the forces
+     *     overflow)
+     */
+    public float dragRate(Particle particle) {
+        Vector3f velocity = particle.velocity;
+        float speedSquared = velocity.lengthSquared();
+        if (speedSquared == 0f) {
+            return 0f;
+        }
+        acceleration(particle, movingAcceleration);
+        restingScratch.copyFrom(particle);
+        restingScratch.velocity.zero();
+        acceleration(restingScratch, restingAcceleration);
+        movingAcceleration.subtractLocal(restingAcceleration);
+        double rate = -((double) movingAcceleration.x * velocity.x
+                + (double) movingAcceleration.y * velocity.y
+                + (double) movingAcceleration.z * velocity.z) / speedSquared;
+        if (Double.isNaN(rate) || rate > Float.MAX_VALUE) {
+            return Float.MAX_VALUE;
+        }
+        return (float) Math.max(rate, -Float.MAX_VALUE);
     }
 
     /**
      * Return the largest step for which the Euler step is stable at the particle's current
-     * state, small changes of the velocity dying out rather than growing: {@code 2/λ} (linear
-     * drag: {@code 2m/b}; quadratic drag: {@code m/(c·|V|)}, which at the terminal speed
-     * {@code v_t} is {@code v_t/g}).
+     * state: small changes of its motion die out rather than grow, so it can settle (at a
+     * terminal velocity, at a spring's rest). With the forces' damping rate λ and stiffness
+     * ω² this is {@link #stableStepLimit(double, double)}: {@code 2/λ} for drag alone (linear
+     * drag {@code 2m/b}; quadratic drag {@code m/(c·|V|)}, which at the terminal speed
+     * {@code v_t = sqrt(m·g/c)} is {@code v_t/g}), {@code 2/ω} for an undamped spring.
      *
      * @param particle the particle (not null, not modified)
-     * @return the limit (in seconds, &gt;0; infinite when nothing damps)
+     * @return the limit (in seconds, &gt;0; infinite when nothing damps or pulls back)
      */
     public float maxStableStep(Particle particle) {
-        return 2f / dampingRate(particle);
+        return (float) stableStepLimit(dampingRate(particle), stiffness(particle));
     }
 
     /**
-     * Return the largest step for which the Euler step does not overshoot at the particle's
-     * current state: {@code 1/λ} (linear drag: {@code m/b}, beyond which the velocity flips
-     * sign every step; quadratic drag: {@code m/(2c·|V|)}, beyond which the speed swings about
-     * its terminal value; drag alone reverses the velocity only beyond {@code m/(c·|V|)}).
+     * Return the largest step for which the damping does not overshoot at the particle's
+     * current state: {@code 1/λ}. Beyond it the step turns a small change of velocity into
+     * one of the opposite sign: linear drag ({@code m/b}) reverses the velocity every step;
+     * with quadratic drag ({@code m/(2c·|V|)}) the speed swings about its terminal value.
      *
      * @param particle the particle (not null, not modified)
      * @return the limit (in seconds, &gt;0; infinite when nothing damps)
      */
     public float maxMonotoneStep(Particle particle) {
         return 1f / dampingRate(particle);
+    }
+
+    /**
+     * Tell what a step of h does at the particle's current state: the most serious of
+     * {@link StepRegime}'s cases that applies (the drag rate σ for the motion itself, the
+     * damping rate λ and stiffness ω² for small changes of it). Allocates nothing.
+     *
+     * @param particle the particle (not null, not modified)
+     * @param stepSeconds h (in seconds, &ge;0)
+     * @return the regime (not null)
+     */
+    public StepRegime regime(Particle particle, float stepSeconds) {
+        return StepRegime.of(stepSeconds, dragRate(particle), maxStableStep(particle),
+                maxMonotoneStep(particle));
+    }
+
+    /**
+     * Return the stability limit of the semi-implicit Euler step for a damped oscillator
+     * {@code x'' = −ω²·x − λ·x'}. One step maps (x, v) by a matrix of determinant
+     * {@code 1 − λh} and trace {@code 2 − λh − ω²h²}; both eigenvalues lie inside the unit
+     * circle (Jury's test) iff {@code λh < 2} and {@code ω²h² + 2λh < 4}, that is iff
+     * {@code h < 4/(λ + sqrt(λ² + 4ω²))}. Without a spring this is {@code 2/λ}, without
+     * damping {@code 2/ω} (there the step is marginally stable: it keeps a modified energy).
+     * Computed in double without squaring λ, so nothing in between overflows.
+     *
+     * @param dampingRate λ (in 1/s, &ge;0, may be infinite)
+     * @param stiffness ω² (in 1/s², &ge;0, may be infinite)
+     * @return the limit (in seconds, &ge;0; infinite when both are 0)
+     */
+    public static double stableStepLimit(double dampingRate, double stiffness) {
+        if (!(dampingRate >= 0.0) || !(stiffness >= 0.0)) {
+            throw new IllegalArgumentException("damping rate lambda (1/s) and stiffness omega^2"
+                    + " (1/s^2) must be >= 0, but were " + dampingRate + " and " + stiffness);
+        }
+        // hypot: sqrt(λ² + 4ω²) without squaring λ, which would overflow for huge rates
+        return 4.0 / (dampingRate + Math.hypot(dampingRate, 2.0 * Math.sqrt(stiffness)));
     }
 
     /**
@@ -274,6 +367,11 @@ public final class ParticleIntegrator {
             text.append(forces[i].describe());
         }
         return text.toString();
+    }
+
+    /** A rate as a float: at most the largest float, never infinite. */
+    private static float clampRate(double rate) {
+        return (float) Math.min(rate, Float.MAX_VALUE);
     }
 
     /** One axis of the folded step: V ← r·V + h·g, then P ← P + h·V with the new V. */

@@ -10,13 +10,15 @@ import com.jme3.math.Vector3f;
  * cubic in speed, which is neither the physical law nor what the slide's "quadratic" means, so
  * we use {@code −c·|V|·V}.
  *
- * <p>Stability. The Euler step scales the speed by {@code 1 − c·h·|V|/m}: drag alone reverses
- * the velocity once {@code h > m/(c·|V|)} and makes the speed grow once
- * {@code h > 2m/(c·|V|)}. Because the force grows with the square of the speed, a small change
- * of speed changes the force twice as fast: it decays at the rate {@code 2c·|V|/m}, which is
- * what {@link #dampingRate} returns. So when another force holds the speed up (gravity, at the
- * terminal speed {@code v_t = sqrt(m·g/c)}), the step swings about {@code v_t} once
- * {@code h > v_t/(2g)} and no longer settles once {@code h > v_t/g}, half the drag-alone limits.
+ * <p>Stability (see {@link StepRegime}). Drag alone: one Euler step scales the velocity by
+ * {@code 1 − c·h·|V|/m}, so it reverses the velocity once {@code c·h·|V|/m > 1} (the speed still
+ * shrinks, and the factor improves as it does) and makes the speed grow once
+ * {@code c·h·|V|/m > 2}, after which the factor worsens every step: it blows up. Because the
+ * force grows with the square of the speed, a small change of speed changes it twice as fast:
+ * it decays at the rate {@code λ = 2c·|V|/m}, which is what {@link #dampingRate} returns. So when
+ * another force holds the speed up (gravity, at the terminal speed {@code v_t = sqrt(m·g/c)},
+ * where {@code λ = 2g/v_t}), the step swings about {@code v_t} once {@code h > v_t/(2g)} and no
+ * longer settles once {@code h > v_t/g}.
  */
 public final class QuadraticDrag implements Force {
 
@@ -63,7 +65,9 @@ public final class QuadraticDrag implements Force {
      */
     @Override
     public float dampingRate(Particle particle) {
-        return 2f * coefficient * particle.velocity.length() / particle.getMass();
+        // In double: 2c·|V| may overflow a float, and overflow times a zero speed is NaN.
+        double rate = 2.0 * coefficient * particle.velocity.length() / particle.getMass();
+        return (float) Math.min(rate, Float.MAX_VALUE);
     }
 
     @Override

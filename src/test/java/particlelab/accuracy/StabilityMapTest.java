@@ -1,9 +1,13 @@
 package particlelab.accuracy;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
+import particlelab.physics.ParticleIntegrator;
 
 class StabilityMapTest {
 
@@ -22,13 +26,31 @@ class StabilityMapTest {
     @ParameterizedTest
     @EnumSource(value = Scheme.class, names = {"FORWARD_EULER", "SEMI_IMPLICIT_EULER"})
     void bothEulerFormsAreStableToTwoMassesPerDrag(Scheme scheme) {
-        // the headline number of NUMERICS' table, independent of Scheme's own factor
+        // the headline number of docs/numerics.md's table, independent of Scheme's own factor
         assertEquals(2.0 / 0.5, StabilityMap.maxStableStep(scheme, 0.5, 9.8), 0.01 * 4.0);
     }
 
-    @org.junit.jupiter.api.Test
+    @Test
     void exactStepIsStableAtEveryStepTried() {
         assertEquals(Double.POSITIVE_INFINITY,
                 StabilityMap.maxStableStep(Scheme.EXACT, 2.0, 9.8));
+    }
+
+    @Test
+    void springBisectionFindsTheDampedOscillatorLimit() {
+        // Theory 4/(λ + sqrt(λ² + 4ω²)) with ω² = 100: from 2/ω = 0.2 s (weak drag) to 2/λ
+        // (strong drag). Near the limit one eigenvalue is −(1 + ε), ε ~ Δh/h: 2000 steps
+        // resolve about 1e-3 of h; float h rounds at 6e-8. So 0.5 % is a safe bound.
+        for (double lambda : new double[] {0.1, 2.0, 10.0, 100.0}) {
+            double theory =
+                    ParticleIntegrator.stableStepLimit(lambda, StabilityMap.SPRING_STIFFNESS);
+            double measured = StabilityMap.maxStableStepSpring(lambda,
+                    StabilityMap.SPRING_STIFFNESS);
+            assertEquals(theory, measured, 0.005 * theory, "b/m = " + lambda);
+        }
+        // Just below decays, just above grows.
+        double limit = ParticleIntegrator.stableStepLimit(2.0, 100.0);
+        assertTrue(StabilityMap.isSpringStable(2.0, 100.0, 0.99 * limit));
+        assertFalse(StabilityMap.isSpringStable(2.0, 100.0, 1.01 * limit));
     }
 }

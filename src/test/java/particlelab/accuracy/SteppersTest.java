@@ -121,8 +121,9 @@ class SteppersTest {
 
     @Test
     void forwardAndSemiImplicitEulerFollowTheirDiscreteSolutions() {
-        // NUMERICS: SIE gives y_n = n·h·vy − g·h²·n(n+1)/2; forward Euler uses the old V, so
-        // y_n = n·h·vy − g·h²·n(n−1)/2. Both land vx·h from the true point, on opposite sides.
+        // docs/numerics.md: SIE gives y_n = n·h·vy − g·h²·n(n+1)/2; forward Euler uses the old
+        // V, so y_n = n·h·vy − g·h²·n(n−1)/2. Both land vx·h from the true point, on opposite
+        // sides.
         ForceModel forces = ForceModel.perUnitMass(G, 0.0, 0.0, 0.0);
         double h = 1.0 / 64; // a power of two: the double run below is exact up to round-off
         int n = 200;
@@ -170,7 +171,7 @@ class SteppersTest {
 
     @Test
     void referenceMatchesThePublishedQuadraticDragState() {
-        // NUMERICS, quadratic c/m = 0.01 from (20, 30): the state at t = 1
+        // docs/numerics.md, quadratic c/m = 0.01 from (20, 30): the state at t = 1
         ForceModel forces = ForceModel.perUnitMass(G, 0.0, 0.01, 0.0);
         MotionState at = ClosedForms.reference(forces, LAUNCH, 1.0, new MotionState());
         // RK4 at h = 1/30720 s: truncation ~1e-18, round-off of 30720 steps ~1e-13
@@ -182,7 +183,7 @@ class SteppersTest {
 
     @Test
     void landingTimeMatchesThePublishedFlightTimes() {
-        // NUMERICS reference table, linear drag from (20, 30): flight time and range
+        // docs/numerics.md reference table, linear drag from (20, 30): flight time and range
         double[][] table = {{0.1, 5.602104945629903, 85.78223197995789},
             {0.5, 4.53774969651613, 35.86286050472426}, {2.0, 3.558334680938495, 9.99188535048632}};
         for (double[] row : table) {

@@ -50,7 +50,7 @@ class IterativeAimTest {
     }
 
     /**
-     * Linear drag k = 0.1/s, vx = 20, S = 100: NUMERICS.md gives the discrete-exact vy
+     * Linear drag k = 0.1/s, vx = 20, S = 100: docs/numerics.md gives the discrete-exact vy
      * 38.07081435156614, whose crossing is found from the closed form at a fractional step
      * count. The simulator reads the crossing off the chord between two samples instead; the
      * chord sags below the samples' curve by at most g·h²/8 = 3.4e-4 m, which at the landing

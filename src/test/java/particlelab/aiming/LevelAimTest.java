@@ -33,7 +33,7 @@ class LevelAimTest {
 
     @Test
     void discreteCorrectionMatchesNumericsReference() {
-        // NUMERICS.md: vx = 20, S = 100, h = 1/60 gives 24.58166666666667.
+        // docs/numerics.md: vx = 20, S = 100, h = 1/60 gives 24.58166666666667.
         assertEquals(24.58166666666667, LevelAim.discreteVy(G, 100.0, 20.0, 1.0 / 60.0),
                 ROUND_OFF);
         // Whole N = S/(vx·h): the lecture's correction g·(S/vx + h)/2.
@@ -65,7 +65,7 @@ class LevelAimTest {
      * chord between two samples, which sags below the parabola by at most g·h²/8 in height;
      * at the landing slope |dy/dx| = (vy − g·h/2)/vx that moves the landing by at most
      * g·h²·vx/(8·(vy − g·h/2)), about 5e-4 m here, always shorter. Float round-off adds up to
-     * N·ulp(S) as above. S = 100 is the NUMERICS.md hazard (y_299 = 0 exactly): the
+     * N·ulp(S) as above. S = 100 is the docs/numerics.md hazard (y_299 = 0 exactly): the
      * interpolated crossing does not care.
      */
     @ParameterizedTest

@@ -156,4 +156,11 @@ class AimCommandTest {
         assertTrue(lines.get(1).contains("vy = 24.5 m/s"), lines.get(1));
         assertTrue(lines.get(4).endsWith("(short)"), lines.get(4));
     }
+
+    @Test
+    void helpStatesTheSameLimitsAsTrajectoryAndTheWarning() {
+        CommandRun run = CommandRun.of("aim", "--help");
+        String help = run.out.replaceAll("\\s+", " ");
+        assertTrue(help.contains(CommandSupport.STABILITY_NOTE), help);
+    }
 }

@@ -17,6 +17,11 @@ class TrajectoryCommandTest {
 
     private static final float H = 1f / 60f;
 
+    /** vx of CSV row n (0 = the initial state). */
+    private static float velocityX(CommandRun run, int n) {
+        return Float.parseFloat(run.outLines().get(1 + n).split(",")[4]);
+    }
+
     private static CommandRun ok(String... args) {
         String[] full = new String[args.length + 1];
         full[0] = "trajectory";
@@ -100,7 +105,7 @@ class TrajectoryCommandTest {
 
     /**
      * Gravity only: the lecture's step has the exact discrete solution
-     * {@code y_n = n·h·vy − g·h²·n(n+1)/2} (NUMERICS.md), evaluated here in double with the
+     * {@code y_n = n·h·vy − g·h²·n(n+1)/2} (docs/numerics.md), evaluated here in double with the
      * float h and g the command uses. The float run rounds y at each of n steps by at most
      * ulp(y)/2, and y stays below 8 m, so it may drift by up to n·ulp(8).
      */
@@ -120,7 +125,7 @@ class TrajectoryCommandTest {
 
     /**
      * The default launch (10, 10) m/s: by the exact discrete solution y_n < 0 first when
-     * n + 1 > 2·vy/(g·h) = 122.45, at n = 122, not on the NUMERICS.md hazard of a sample at
+     * n + 1 > 2·vy/(g·h) = 122.45, at n = 122, not on the docs/numerics.md hazard of a sample at
      * y = 0 exactly. So 123 rows after the header, the last one below ground.
      */
     @Test
@@ -151,25 +156,82 @@ class TrajectoryCommandTest {
 
     @Test
     void stepBeyondTheStabilityLimitWarnsAndCarriesOn() {
-        // Linear drag b = 10, m = 1: stable for h < 2m/b = 0.2 s, no reversal for h < 0.1 s.
+        // Linear drag b = 10, m = 1: sigma = lambda = 10 /s; the speed grows for h > 0.2 s,
+        // the velocity reverses for h > 0.1 s.
         CommandRun diverging = ok("--linear-drag", "10", "--tpf", "0.25", "--steps", "5");
         assertEquals(1, diverging.errLines().size(), diverging.toString());
-        assertTrue(diverging.err.startsWith("warning: --tpf 0.25 s exceeds the stability limit"
-                + " 2/lambda = 0.2 s"), diverging.err);
+        assertEquals("warning: --tpf 0.25 s exceeds 2/sigma = 0.2 s at the initial state (drag"
+                + " rate sigma = 10.0 /s): drag makes the speed grow every step: the Euler step"
+                + " blows up; carrying on as asked", diverging.errLines().get(0));
         assertEquals(1 + 5 + 1, diverging.outLines().size());
         CommandRun reversing = ok("--linear-drag", "10", "--tpf", "0.15", "--steps", "5");
-        assertTrue(reversing.err.startsWith("warning: --tpf 0.15 s exceeds 1/lambda = 0.1 s"),
-                reversing.err);
+        assertEquals("warning: --tpf 0.15 s exceeds 1/sigma = 0.1 s at the initial state (drag"
+                + " rate sigma = 10.0 /s): drag reverses the velocity every step but still"
+                + " shrinks it; carrying on as asked", reversing.errLines().get(0));
         assertEquals("", ok("--linear-drag", "10", "--tpf", "0.05", "--steps", "5").err);
     }
 
     @Test
-    void quadraticDragLimitIsCheckedAtTheInitialSpeed() {
-        // lambda = 2c·|V0|/m = 2·0.5·10/1 = 10 /s: 2/lambda = 0.2 s.
-        CommandRun run = ok("--v0", "10,0,0", "--quadratic-drag", "0.5", "--tpf", "0.5",
-                "--steps", "2");
-        assertTrue(run.err.startsWith("warning: --tpf 0.5 s exceeds the stability limit"
-                + " 2/lambda = 0.2 s"), run.err);
+    void quadraticDragThatGrowsTheSpeedAtTheStartWarnsOfABlowUp() {
+        // sigma = c·|V0|/m = 0.5·10/1 = 5 /s: h = 0.5 s > 2/sigma = 0.4 s, V1 = −1.5·V0, and
+        // the factor only worsens from there.
+        CommandRun run = ok("--v0", "10,0,0", "--g", "0,0,0", "--quadratic-drag", "0.5",
+                "--tpf", "0.5", "--steps", "2");
+        assertTrue(run.err.startsWith("warning: --tpf 0.5 s exceeds 2/sigma = 0.4 s"), run.err);
+        assertTrue(run.err.contains("blows up"), run.err);
+        assertTrue(Math.abs(velocityX(run, 2)) > Math.abs(velocityX(run, 1)), run.out);
+    }
+
+    @Test
+    void quadraticDragThatReversesButDecaysDoesNotSayItBlowsUp() {
+        // The case: c·h·|V0|/m = 1.5: V1 = −0.5·V0, after which c·h·|V|/m < 1 and the
+        // speed only falls. The old check (h > 2/lambda = 0.1 s) said "will blow up".
+        CommandRun run = ok("--steps", "6", "--quadratic-drag", "1", "--v0", "10,0,0", "--g",
+                "0,0,0", "--tpf", "0.15");
+        assertEquals(1, run.errLines().size(), run.toString());
+        assertTrue(run.err.contains("drag reverses the velocity every step but still shrinks"
+                + " it"), run.err);
+        assertTrue(!run.err.contains("blow"), run.err);
+        for (int n = 1; n <= 6; ++n) {
+            assertTrue(Math.abs(velocityX(run, n)) < Math.abs(velocityX(run, n - 1)),
+                    "speed falls at step " + n + ": " + run.out);
+        }
+    }
+
+    @Test
+    void quadraticDragWithGravityIsCheckedAtTheTerminalSpeed() {
+        // c = 0.1, m = 1, g = 9.8: v_t = sqrt(98) = 9.899 m/s, lambda there = 2g/v_t, the
+        // limits v_t/g = 1.0102 s (settling) and v_t/(2g) = 0.5051 s (swinging). The start
+        // at rest gives sigma = 0: only the terminal check can see these.
+        CommandRun never = ok("--v0", "0,0,0", "--quadratic-drag", "0.1", "--tpf", "1.1",
+                "--steps", "3");
+        assertTrue(never.err.startsWith("warning: --tpf 1.1 s exceeds the stability limit"
+                + " 2/lambda = 1.01015"), never.err);
+        assertTrue(never.err.contains("at the terminal speed 9.89949"), never.err);
+        assertTrue(never.err.contains("never settles"), never.err);
+        CommandRun swings = ok("--v0", "0,0,0", "--quadratic-drag", "0.1", "--tpf", "0.7",
+                "--steps", "3");
+        assertTrue(swings.err.startsWith("warning: --tpf 0.7 s exceeds 1/lambda = 0.50507"),
+                swings.err);
+        assertTrue(!swings.err.contains("blow") && swings.err.contains("swings"), swings.err);
+        assertEquals("", ok("--v0", "0,0,0", "--quadratic-drag", "0.1", "--tpf", "0.4",
+                "--steps", "3").err);
+    }
+
+    @Test
+    void hugeQuadraticDragFromRestStillWarns() {
+        // c = 3e38: 2c overflows a float; the rate at rest was NaN, which silenced the check.
+        CommandRun run = CommandRun.of("trajectory", "--quadratic-drag", "3e38", "--v0",
+                "0,0,0", "--tpf", "0.1", "--steps", "1");
+        assertTrue(run.err.startsWith("warning: --tpf 0.1 s exceeds the stability limit"),
+                run.toString());
+    }
+
+    @Test
+    void helpStatesTheLimitsTheWarningChecks() {
+        String help = ok("--help").out.replaceAll("\\s+", " ");
+        assertTrue(help.contains(CommandSupport.STABILITY_NOTE), help);
+        assertTrue(!help.contains("|V0|"), help);
     }
 
     @Test

@@ -94,7 +94,7 @@ class DemoStateHeadlessTest {
             }
             return pull.getParticles().get(0).getParticle().position.clone();
         });
-        // NUMERICS.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).
+        // docs/numerics.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).
         double h = H;
         double y = steps * h * 10.0 - Gravity.STANDARD_G * h * h * steps * (steps + 1) / 2.0;
         double x = steps * h * 10.0;
@@ -271,7 +271,9 @@ class DemoStateHeadlessTest {
             return stiff.getHud().getWarningText();
         });
         assertTrue(warning.startsWith("UNSTABLE: h = 250.0 ms"), warning);
-        assertTrue(warning.contains("2/k = 200.0 ms"), warning);
+        // Linear drag b/m = 10 /s: sigma = lambda, and h > 2/sigma grows the speed.
+        assertTrue(warning.contains("2/sigma = 200.0 ms of 'stiff': drag makes the speed grow"),
+                warning);
     }
 
     @ParameterizedTest(name = "time x{0}")

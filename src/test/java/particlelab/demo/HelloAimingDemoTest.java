@@ -30,7 +30,7 @@ class HelloAimingDemoTest {
     @Test
     void lectureFormulaLandsVxTimesHShortAndTheCorrectionHits() throws Exception {
         float lecture = fireAndLand(HelloAimingDemo.Aim.LECTURE);
-        // NUMERICS.md: the stepped shot lands exactly vx·h = 20/60 m short; float rounding
+        // docs/numerics.md: the stepped shot lands exactly vx·h = 20/60 m short; float rounding
         // over 300 steps moves the interpolated crossing by well under 1 mm.
         assertEquals(100.0 - 20.0 / 60.0, lecture, 1e-3);
         float discrete = fireAndLand(HelloAimingDemo.Aim.DISCRETE);

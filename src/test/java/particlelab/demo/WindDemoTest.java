@@ -50,7 +50,7 @@ class WindDemoTest {
         assertEquals(frames * H, state[2], 1e-6f);
         // Wind is linear drag relative to the air: with k = b/m and r = 1 − k·h, the lecture's
         // step gives V_n = V* + (V0 − V*)·rⁿ with the terminal velocity V* = W + g/k
-        // (NUMERICS.md, "Linear drag", with the air moving at W).
+        // (docs/numerics.md, "Linear drag", with the air moving at W).
         double k = WindDemo.WIND_B / 1.0;
         double r = 1.0 - k * H;
         double decay = Math.pow(r, frames);
@@ -74,7 +74,7 @@ class WindDemoTest {
                 wind.getParticles().get(1).getLandingX()};
         });
         // Still air is demo 2's shot: the stepped parabola lands exactly vx·h short of
-        // 2·vx·vy/g (NUMERICS.md); the interpolated crossing adds under 1 mm here.
+        // 2·vx·vy/g (docs/numerics.md); the interpolated crossing adds under 1 mm here.
         assertEquals(2.0 * 10 * 10 / G - 10.0 * H, landings[0], 2e-3);
         // A 6 m/s headwind with b = 0.3 takes metres off a 20 m shot.
         assertTrue(landings[1] < landings[0] - 3f, "headwind landing " + landings[1]);

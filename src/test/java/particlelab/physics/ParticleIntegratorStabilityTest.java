@@ -14,8 +14,9 @@ import org.junit.jupiter.api.Test;
  *
  * <p>Linear drag {@code b} on mass {@code m} makes one Euler step multiply the velocity by
  * {@code r = 1 − b·h/m}: monotone decay for {@code b·h/m < 1}, decay with alternating sign for
- * {@code 1 < b·h/m < 2}, growth beyond 2 (NUMERICS.md, "Stability"). Gravity adds a constant
- * to each step and does not change {@code r}.
+ * {@code 1 < b·h/m < 2}, growth beyond 2 (docs/numerics.md, "Stability"). Gravity adds a
+ * constant to each step and does not change {@code r}. A spring adds the stiffness
+ * {@code ω² = k/m}: the damped oscillator's limit {@code 4/(λ + sqrt(λ² + 4ω²))}.
  */
 class ParticleIntegratorStabilityTest {
 
@@ -144,7 +145,7 @@ class ParticleIntegratorStabilityTest {
     @Test
     void quadraticDragWithGravityIsStableUpToTerminalSpeedOverG() {
         // Near terminal speed v_t a small change of speed decays at 2c·v_t/m = 2g/v_t, so the
-        // Euler step settles for h < v_t/g and not beyond (NUMERICS.md), the limit the
+        // Euler step settles for h < v_t/g and not beyond (docs/numerics.md), the limit the
         // integrator reports there.
         float m = 1f;
         float c = 0.1f;
@@ -165,6 +166,117 @@ class ParticleIntegratorStabilityTest {
         float[] above = fallWithQuadraticDrag(integrator, m, 1.1f * limit, 0.9f * terminal);
         assertTrue(Math.abs(above[0] - above[1]) > 0.1f * terminal,
                 "still swinging: " + above[0] + ", " + above[1]);
+    }
+
+    @Test
+    void dampedOscillatorLimitReducesToTwoOverLambdaAndTwoOverOmega() {
+        assertEquals(2.0 / 5.0, ParticleIntegrator.stableStepLimit(5.0, 0.0), 1e-15);
+        assertEquals(2.0 / 3.0, ParticleIntegrator.stableStepLimit(0.0, 9.0), 1e-15);
+        assertEquals(Double.POSITIVE_INFINITY, ParticleIntegrator.stableStepLimit(0.0, 0.0));
+        // λ = 2, ω² = 4: 4/(2 + sqrt(20)), where ω²h² + 2λh = 4 exactly.
+        double h = ParticleIntegrator.stableStepLimit(2.0, 4.0);
+        assertEquals(4.0 / (2.0 + Math.sqrt(20.0)), h, 1e-15);
+        assertEquals(4.0, 4.0 * h * h + 2.0 * 2.0 * h, 1e-14);
+        // No overflow in between: λ² and 4ω² would overflow a float (and λ² a double here).
+        assertEquals(2.0 / 1e200, ParticleIntegrator.stableStepLimit(1e200, 1.0), 1e-214);
+        assertThrows(IllegalArgumentException.class,
+                () -> ParticleIntegrator.stableStepLimit(-1.0, 0.0));
+    }
+
+    @Test
+    void springAndDampingTogetherGiveTheOscillatorLimitTheIntegratorReports() {
+        Particle particle = new Particle(new Vector3f(3f, 0f, 0f), Vector3f.ZERO, 2f);
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(),
+                new Spring(Vector3f.ZERO, 1f, 8f, 2f), new LinearDrag(2f));
+
+        assertEquals(4f, integrator.stiffness(particle), 0f);
+        assertEquals(2f, integrator.dampingRate(particle), 0f);
+        assertEquals((float) (4.0 / (2.0 + Math.sqrt(20.0))), integrator.maxStableStep(particle),
+                0f);
+    }
+
+    @Test
+    void dampedSpringLimitMatchesAMeasuredBisection() {
+        // (λ, ω²) from drag-dominated to spring-dominated. Bisection in float on the shared
+        // integrator; a trial is stable if the swing did not grow in 2000 steps. Near the
+        // limit the factor per step is 1 ± O(Δh/h), so 2000 steps resolve about 1e-3 of h.
+        double[][] cases = {{0.5, 100.0}, {2.0, 4.0}, {4.0, 1.0}, {1.0, 0.01}};
+        for (double[] c : cases) {
+            double theory = ParticleIntegrator.stableStepLimit(c[0], c[1]);
+            double stable = 0.5 * theory;
+            double unstable = 2.0 * theory;
+            assertTrue(springDecays(c[0], c[1], (float) stable), "decays at " + stable);
+            assertTrue(!springDecays(c[0], c[1], (float) unstable), "grows at " + unstable);
+            for (int i = 0; i < 30; ++i) {
+                double mid = 0.5 * (stable + unstable);
+                if (springDecays(c[0], c[1], (float) mid)) {
+                    stable = mid;
+                } else {
+                    unstable = mid;
+                }
+            }
+            assertEquals(theory, stable, 2e-3 * theory, "lambda = " + c[0] + ", omega^2 = " + c[1]);
+            // Just below decays, just above grows.
+            assertTrue(springDecays(c[0], c[1], (float) (0.99 * theory)));
+            assertTrue(!springDecays(c[0], c[1], (float) (1.01 * theory)));
+        }
+    }
+
+    @Test
+    void undampedSpringStaysBoundedBelowTwoOverOmegaAndGrowsAbove() {
+        // λ = 0: the step is marginally stable below 2/ω (the modified energy is kept, see
+        // SpringTest), so "stable" here means bounded. E = ω²x² + v² − ωh·(ωx)·v lies between
+        // (1 ∓ ωh/2) times the squared swing, so from v = 0 the swing stays within
+        // 1/sqrt(1 − ωh/2) = 10 times its start at ωh = 1.98 (1 % added for float round-off).
+        float omegaSquared = 16f;
+        float limit = new ParticleIntegrator(new Spring(Vector3f.ZERO, 1f, omegaSquared))
+                .maxStableStep(new Particle());
+        assertEquals(0.5f, limit, 0f);
+        assertTrue(springSwing(0.0, omegaSquared, 0.99f * limit, 5000) < 10.1 * 0.04);
+        // Beyond, one eigenvalue is −1.33 (1.33^20 ≈ 290): 20 steps grow it over 100 times.
+        assertTrue(springSwing(0.0, omegaSquared, 1.01f * limit, 20) > 100 * 0.04);
+    }
+
+    @Test
+    void dragRateIsWhatTheDragDoesToTheVelocityItself() {
+        Particle particle = new Particle(Vector3f.ZERO, new Vector3f(3f, 4f, 0f), 2f);
+
+        assertEquals(1.5f, new ParticleIntegrator(new LinearDrag(3f)).dragRate(particle),
+                1.5f * 4 * EPS);
+        // c·|V|/m = 0.4·5/2, half of quadratic drag's damping rate.
+        assertEquals(1f, new ParticleIntegrator(new QuadraticDrag(0.4f)).dragRate(particle),
+                4 * EPS);
+        // Thrust speeds the particle up: −k/(m·|V|). Gravity and a spring add nothing.
+        assertEquals(-0.6f, new ParticleIntegrator(new Gravity(), new Thrust(6f),
+                new Spring(Vector3f.UNIT_Y, 0f, 5f)).dragRate(particle), 0.6f * 4 * EPS);
+        assertEquals(0f, new ParticleIntegrator(new LinearDrag(3f)).dragRate(new Particle()),
+                0f);
+    }
+
+    @Test
+    void regimeSeparatesReversingFromGrowing() {
+        // Quadratic drag alone at 10 m/s, c = 1, m = 1: σ = 10 /s, λ = 20 /s.
+        Particle particle = new Particle(Vector3f.ZERO, new Vector3f(10f, 0f, 0f), 1f);
+        ParticleIntegrator integrator = new ParticleIntegrator(new QuadraticDrag(1f));
+
+        assertEquals(StepRegime.STABLE, integrator.regime(particle, 0.04f));
+        assertEquals(StepRegime.OVERSHOOTS, integrator.regime(particle, 0.07f));
+        // σh = 1.5: the velocity reverses but shrinks; one step of small changes grows.
+        assertEquals(StepRegime.UNSTABLE, integrator.regime(particle, 0.15f));
+        assertEquals(StepRegime.GROWS, integrator.regime(particle, 0.25f));
+        // Linear drag, σ = λ: reversing and growing come with the λ limits.
+        assertEquals(StepRegime.REVERSES, StepRegime.of(0.15f, 10f, Float.POSITIVE_INFINITY,
+                0.1f));
+        assertEquals(StepRegime.GROWS, StepRegime.of(0.25f, 10f, 0.2f, 0.1f));
+
+        // What the steps really do: at σh = 1.5, V1 = −0.5·V0, and the speed keeps falling.
+        integrator.step(particle, 0.15f);
+        assertEquals(-5f, particle.velocity.x, 5f * 4 * EPS);
+        for (int n = 0; n < 20; ++n) {
+            float before = particle.velocity.length();
+            integrator.step(particle, 0.15f);
+            assertTrue(particle.velocity.length() < before, "shrinks at step " + n);
+        }
     }
 
     @Test
@@ -250,6 +362,35 @@ class ParticleIntegratorStabilityTest {
         assertTrue(particle.isFinite(), particle.toString());
         float terminal = (m * G + thrust) / b;
         assertVectorEquals(new Vector3f(0f, -terminal, 0f), particle.velocity, terminal * 1e-5f);
+    }
+
+    /**
+     * Step a damped spring (λ = c/m, ω² = k/m, m = 1) 2000 times from 0.01 m off its rest
+     * length and tell whether the swing, measured as {@code sqrt(ω²x² + v²)}, has shrunk. A
+     * step that overflows counts as growing.
+     */
+    private static boolean springDecays(double lambda, double omegaSquared, float h) {
+        float start = 0.01f * (float) Math.sqrt(omegaSquared);
+        try {
+            return springSwing(lambda, omegaSquared, h, 2000) < start;
+        } catch (IllegalStateException overflow) {
+            return false;
+        }
+    }
+
+    /** The swing sqrt(ω²x² + v²) after the given steps of the spring in springDecays. */
+    private static double springSwing(double lambda, double omegaSquared, float h, int steps) {
+        // Rest length 10 m: the particle never reaches the anchor, so the force stays linear.
+        float rest = 10f;
+        Particle particle = new Particle(new Vector3f(rest + 0.01f, 0f, 0f), Vector3f.ZERO, 1f);
+        ParticleIntegrator integrator = new ParticleIntegrator(
+                new Spring(Vector3f.ZERO, rest, (float) omegaSquared, (float) lambda));
+        for (int n = 0; n < steps; ++n) {
+            integrator.step(particle, h);
+        }
+        double x = particle.position.x - rest;
+        double v = particle.velocity.x;
+        return Math.sqrt(omegaSquared * x * x + v * v);
     }
 
     /** Velocities x_0..x_steps of a particle under stiff linear drag at b·h/m = ratio. */

@@ -13,7 +13,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * {@link ParticleIntegrator}: the lecture's Euler step against its exact discrete solutions
- * and against the continuous solutions it converges to (see NUMERICS.md).
+ * and against the continuous solutions it converges to (see docs/numerics.md).
  *
  * <p>Tolerances. Each float operation rounds with a relative error of at most EPS/2, where
  * {@link #EPS} = 2^-23 ≈ 1.2e-7. After n steps the rounding in a quantity of size up to M is at
@@ -77,7 +77,7 @@ class ParticleIntegratorTest {
 
     @Test
     void gravityFollowsTheExactDiscreteSolutionAtEveryStep() {
-        // y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (NUMERICS.md), with the float values of
+        // y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (docs/numerics.md), with the float values of
         // h and g so that only the integrator's own round-off remains.
         float vx = 10f;
         float vy = 10f;
@@ -108,7 +108,7 @@ class ParticleIntegratorTest {
     @Test
     void gravityErrorIsExactlyMinusGHTOverTwoAndHalvesWithTheStep() {
         // The samples lie on the parabola launched with vy − g·h/2, so the error at time t is
-        // −g·h·t/2: first order, exactly halved when h halves (NUMERICS.md).
+        // −g·h·t/2: first order, exactly halved when h halves (docs/numerics.md).
         float vy = 10f;
         double t = 2.0;
         double errorCoarse = gravityErrorAt(t, vy, 1f / 50f);
@@ -166,7 +166,7 @@ class ParticleIntegratorTest {
 
     @Test
     void thrustWithLinearDragReachesTerminalSpeedThrustOverDrag() {
-        // Terminal speed k/b where thrust balances drag (NUMERICS.md); it is also the exact
+        // Terminal speed k/b where thrust balances drag (docs/numerics.md); it is also the exact
         // fixed point of the Euler step. Time constant m/b = 2 s; after 40 s the remaining
         // transient is e^{-20} ≈ 2e-9 relative. In float the step stops moving V once h·|a|
         // is under half a unit in the last place of V, that is within ulp(V)/(2·b·h/m) = 60

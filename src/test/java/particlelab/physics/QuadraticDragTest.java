@@ -102,6 +102,21 @@ class QuadraticDragTest {
     }
 
     @Test
+    void dampingRateOfAHugeCoefficientIsZeroAtRestAndFiniteWhenFast() {
+        // In float 2c overflows for c = 3e38, and Infinity·0 would be NaN: a NaN rate made
+        // every stability comparison false and silenced the warnings.
+        QuadraticDrag drag = new QuadraticDrag(3e38f);
+        Particle atRest = new Particle(Vector3f.ZERO, Vector3f.ZERO, 1f);
+        Particle fast = new Particle(Vector3f.ZERO, VELOCITY, 1f);
+
+        assertEquals(0f, drag.dampingRate(atRest), 0f);
+        assertEquals(Float.MAX_VALUE, drag.dampingRate(fast), 0f);
+        assertEquals(Float.POSITIVE_INFINITY,
+                new ParticleIntegrator(drag).maxStableStep(atRest));
+        assertTrue(new ParticleIntegrator(drag).maxStableStep(fast) < 1e-37f);
+    }
+
+    @Test
     void describeGivesTheEquationWithItsCoefficient() {
         assertEquals("F = -0.5·|V|·V", new QuadraticDrag(0.5f).describe());
     }

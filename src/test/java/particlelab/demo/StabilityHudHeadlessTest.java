@@ -1,0 +1,136 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.SimulationClock;
+import particlelab.physics.Spring;
+
+/**
+ * The HUD's stability line and warning in a real headless application: one statement, naming
+ * the particle it is about, with the limits of drag and of springs (docs/numerics.md,
+ * "Stability").
+ */
+class StabilityHudHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    /** The sprung ball: k = 16 N/m on 1 kg, so omega = 4 /s and the limit 2/omega = 0.5 s. */
+    private static final float SPRING_K = 16f;
+
+    private static HeadlessHarness harness;
+    private static DragDemo drag;
+    private static SprungDemo sprung;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        drag = new DragDemo();
+        sprung = new SprungDemo();
+        harness = HeadlessHarness.start(List.of(drag, sprung));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void dragDemoLineNamesTheSphereWithTheSmallestLimit() throws Exception {
+        String body = harness.call(() -> {
+            drag.restart();
+            return drag.formatHud(new StringBuilder()).toString();
+        });
+        // At launch |V| = sqrt(200): quadratic lambda = 2·0.064·14.142 = 1.810 /s, limit
+        // 2/lambda = 1.105 s, below linear drag's 2m/b = 2.222 s. No "k", no second limit.
+        assertTrue(body.contains("Stability: h < 1.105 s for 'quadratic drag  F = -0.064 |V|V'"
+                + " (lambda = 1.81 /s)\n"), body);
+        assertTrue(!body.contains("2.222") && !body.contains("any h"), body);
+    }
+
+    @Test
+    void dragDemoWarningNamesTheSameSphereAndSaysWhatTheStepDoes() throws Exception {
+        String[] texts = harness.call(() -> {
+            drag.restart();
+            drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            // 1.2 s: beyond the quadratic sphere's 1.105 s, within the linear one's 2.222 s.
+            drag.getClock().setStepSeconds(1.2f);
+            takeOneStep(drag);
+            String warning = drag.getHud().getWarningText();
+            drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
+            drag.restart();
+            return new String[] {warning, drag.formatHud(new StringBuilder()).toString()};
+        });
+        String warning = texts[0];
+        assertTrue(warning.startsWith("UNSTABLE: h = 1200.0 ms is beyond the stability limit"
+                + " 1104.9 ms of 'quadratic drag  F = -0.064 |V|V': small changes of the motion"
+                + " grow every step"), warning);
+        assertTrue(texts[1].contains("for 'quadratic drag  F = -0.064 |V|V'"), texts[1]);
+    }
+
+    @Test
+    void springShowsItsLimitTwoOverOmegaAndWarnsBeyondIt() throws Exception {
+        String[] texts = harness.call(() -> {
+            sprung.restart();
+            String body = sprung.formatHud(new StringBuilder()).toString();
+            sprung.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            sprung.getClock().setStepSeconds(0.55f);
+            takeOneStep(sprung);
+            String warning = sprung.getHud().getWarningText();
+            sprung.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
+            sprung.restart();
+            return new String[] {body, warning};
+        });
+        // Before: "no drag: any h is stable" beside a blow-up at 2/omega.
+        assertTrue(texts[0].contains("Stability: h < 0.500 s for 'sprung' (lambda = 0.00 /s,"
+                + " omega = 4.00 /s)\n"), texts[0]);
+        assertEquals("UNSTABLE: h = 550.0 ms is beyond the stability limit 500.0 ms of"
+                + " 'sprung': small changes of the motion grow every step instead of dying out",
+                texts[1]);
+    }
+
+    @Test
+    void landedParticlesAreLeftOutOfTheLine() throws Exception {
+        String body = harness.call(() -> {
+            drag.restart();
+            for (int frame = 0; frame < 600; ++frame) {
+                drag.advance(H);
+            }
+            return drag.formatHud(new StringBuilder()).toString();
+        });
+        // After 10 s all three spheres have landed and stopped: no limit to show, and not
+        // the landed quadratic sphere's (infinite) one as "any h is stable".
+        assertTrue(body.contains("Stability: nothing is moving, so no step limit applies\n"),
+                body);
+    }
+
+    /** Feed frames of H until the clock has taken its first (long) step from the launch. */
+    private static void takeOneStep(DemoState demo) {
+        for (int frame = 0; frame < 1000 && demo.getClock().getSimulatedSeconds() == 0.0;
+                ++frame) {
+            demo.update(H);
+        }
+        assertTrue(demo.getClock().getSimulatedSeconds() > 0.0, "no step taken");
+    }
+
+    /** A test-only demo: a ball on an undamped spring under gravity. */
+    static final class SprungDemo extends DemoState {
+        SprungDemo() {
+            super("Spring (test)");
+        }
+
+        @Override
+        protected void createScene() {
+            addParticle("sprung", ColorRGBA.Green, new Vector3f(0f, 3f, 0f), Vector3f.ZERO, 1f,
+                    new ParticleIntegrator(new Gravity(),
+                            new Spring(new Vector3f(0f, 5f, 0f), 1f, SPRING_K)));
+        }
+    }
+}
