@@ -184,7 +184,12 @@ public final class ImpulseResponse implements ContactResponse {
             contact.penetrationNow = 0f;
         }
         contact.closingNow = 0f;
-        contact.resolution = decision;
+        // An overlap contact may be resolved again for its penetration alone: keep what its
+        // velocity resolution decided.
+        if (decision != Contact.Resolution.SEPARATING
+                || contact.resolution == Contact.Resolution.NONE) {
+            contact.resolution = decision;
+        }
     }
 
     @Override

@@ -23,8 +23,9 @@ import particlelab.physics.SimulationClock;
  * time of impact ahead of every body on its segment; the earliest contact goes through the
  * prologue and, if accepted, its bodies are put where they are at that moment, resolved, and
  * sent on along new straight segments with their new velocities for the rest of the step.
- * Then the rules look again, up to {@link #getMaxImpactsPerStep()} impacts a step (reaching
- * the cap is counted, {@link #getCapHits()});</li>
+ * Then the rules look again, up to {@link #getMaxImpactsPerStep()} impacts a step; at the
+ * cap, bodies with an impact still ahead stay at their last contact for the rest of the step,
+ * and the cap is counted ({@link #getCapHits()});</li>
  * <li><b>overlap contacts</b>: the {@link Detection#OVERLAP} rules list every touching pair at
  * the step's end; each goes through the prologue; the accepted ones are resolved worst
  * first (the fastest closing, then the deepest), refreshing the others after each, up to
@@ -50,8 +51,12 @@ public final class World implements SimulationClock.Stepper {
     public static final int DEFAULT_MAX_RESOLUTION_ITERATIONS = 64;
     /** Overlap contacts closing slower than this are done (in m/s): float round-off. */
     static final float CLOSING_TOLERANCE = 1e-6f;
-    /** Overlap contacts shallower than this are done (in metres): float round-off. */
-    static final float PENETRATION_TOLERANCE = 1e-7f;
+    /**
+     * Overlap contacts shallower than this are done (in metres): the "slop" that stops the
+     * position corrections of a row of touching balls from bouncing back and forth between
+     * neighbours for ever (Box2D's slop is 5 mm).
+     */
+    static final float PENETRATION_TOLERANCE = 1e-4f;
 
     private static final CollisionRule[] NO_RULES = {};
     private static final ContactListener[] NO_CONTACT_LISTENERS = {};
@@ -520,6 +525,7 @@ public final class World implements SimulationClock.Stepper {
             }
             if (impactsHandled == maxImpactsPerStep) {
                 noteCapHit();
+                holdAtLastContact();
                 break;
             }
             ++impactsHandled;
@@ -539,6 +545,22 @@ public final class World implements SimulationClock.Stepper {
             finishSegment(contact.bodyB, contact.fraction, stepSeconds);
         }
         candidates.clear();
+    }
+
+    /**
+     * At the impact cap: every body with an impact still ahead stays where its last contact
+     * left it for the rest of the step, rather than passing through what it would hit.
+     */
+    private void holdAtLastContact() {
+        for (int i = 0; i < candidates.size(); ++i) {
+            Contact candidate = candidates.get(i);
+            if (!settled(candidate)) {
+                candidate.bodyA.particle.position.set(candidate.bodyA.sweepStart);
+                if (candidate.bodyB != null) {
+                    candidate.bodyB.particle.position.set(candidate.bodyB.sweepStart);
+                }
+            }
+        }
     }
 
     /**
