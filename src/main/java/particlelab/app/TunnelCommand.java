@@ -76,7 +76,9 @@ public final class TunnelCommand {
                         + " within r + D/2 of the wall's centre plane: with v*h > 2r + D it can"
                         + " jump over, with probability max(0, 1 - (2r+D)/(v*h)) for a random"
                         + " phase (the predicted_miss_probability column; 0 for the swept test,"
-                        + " which never misses).")
+                        + " which never misses). A hit is a shot the test saw; the overlap test"
+                        + " pushes a shot out of the nearer face, so one seen more than half-way"
+                        + " through still leaves by the far side.")
                 .note("Exit status: 0 on success; 2 on a bad command line, with one line on"
                         + " stderr.");
     }

@@ -12,7 +12,8 @@ import particlelab.physics.Validate;
  * step ends with its centre inside the band of width {@code 2r + D}; a sphere that travels
  * {@code v·h > 2r + D} in a step can jump over the band, and for a uniformly random phase it
  * does so with probability {@code max(0, 1 − (2r + D)/(v·h))}. The swept test checks the whole
- * segment and never misses.
+ * segment and never misses. The overlap test also pushes a sphere out of the nearer face, so a
+ * sphere caught more than half-way through is seen but leaves by the far side.
  */
 public final class ThinWall implements Surface {
 
