@@ -58,7 +58,8 @@ public final class CollideCommand {
     public static Options options() {
         return new Options(COMMAND, "Fly two spheres without forces until their first impact,"
                 + " resolve it with the impulse j = -(1+e)*v_rel.n/(1/m1+1/m2) and print one CSV"
-                + " row: " + HEADER + ".")
+                + " row under the header t_impact, v1x..v2z, px_before..pz_before, px_after.."
+                + "pz_after, ke_before, ke_after (written without spaces).")
                 .value(M1, "KG", "mass of sphere 1 (kg, > 0). Required.")
                 .value(M2, "KG", "mass of sphere 2 (kg, > 0). Required.")
                 .value(P1, "X,Y,Z", "centre of sphere 1 at t = 0 (m). Required.")
