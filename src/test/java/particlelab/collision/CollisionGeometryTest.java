@@ -2,6 +2,7 @@ package particlelab.collision;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import org.junit.jupiter.api.Test;
@@ -60,8 +61,8 @@ class CollisionGeometryTest {
         assertEquals((1.0 - 0.15) / 2.0, u, TOLERANCE);
         VectorAssert.assertVectorEquals(Vector3f.UNIT_X, normal, 0f);
         // Both end points clear of the wall: the overlap test sees nothing at either.
-        assertEquals(true, wall.overlap(new Vector3f(-1f, 0f, 0f), 0.1f, normal) < 0.0);
-        assertEquals(true, wall.overlap(new Vector3f(1f, 0f, 0f), 0.1f, normal) < 0.0);
+        assertTrue(wall.overlap(new Vector3f(-1f, 0f, 0f), 0.1f, normal) < 0.0);
+        assertTrue(wall.overlap(new Vector3f(1f, 0f, 0f), 0.1f, normal) < 0.0);
     }
 
     @Test
