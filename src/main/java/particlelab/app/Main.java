@@ -22,6 +22,7 @@ public final class Main {
     private static final String DEMO = DemoCommand.NAME;
     private static final String REPORT = ReportCommand.NAME;
     private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
+            + ", " + BounceCommand.NAME + ", " + CollideCommand.NAME + ", " + TunnelCommand.NAME
             + ", " + DEMO + ", " + REPORT + ", " + HELP;
 
     private Main() {
@@ -63,6 +64,12 @@ public final class Main {
                 return TrajectoryCommand.run(rest, out, err);
             case AimCommand.NAME:
                 return AimCommand.run(rest, out, err);
+            case BounceCommand.NAME:
+                return BounceCommand.run(rest, out, err);
+            case CollideCommand.NAME:
+                return CollideCommand.run(rest, out, err);
+            case TunnelCommand.NAME:
+                return TunnelCommand.run(rest, out, err);
             case DEMO:
                 return DemoCommand.run(rest, out, err);
             case REPORT:
@@ -101,6 +108,11 @@ public final class Main {
                 + "  trajectory  print one particle's stepped trajectory as CSV\n"
                 + "  aim         find vy that lands a level shot at distance S (lecture,\n"
                 + "              discrete or iterative) and fire it\n"
+                + "  bounce      drop a ball on the ground; one CSV row per impact\n"
+                + "  collide     two spheres until their first impact: velocities, momentum,\n"
+                + "              kinetic energy before and after, as CSV\n"
+                + "  tunnel      fire shots at a thin wall: how many the overlap or swept test\n"
+                + "              misses, as CSV\n"
                 + "  demo        open the window on one demo (--list, --frames, --screenshot)\n"
                 + "  report      write the accuracy and speed report\n"
                 + "  help        show this help; help COMMAND shows that command's help\n"
