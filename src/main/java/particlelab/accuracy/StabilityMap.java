@@ -1,12 +1,14 @@
 package particlelab.accuracy;
 
+import particlelab.physics.NonFiniteStepException;
+
 /**
  * Measures the largest stable step of a method under gravity plus linear drag, by bisection.
  *
  * <p>A trial starts the particle away from its terminal velocity {@code V* = g/k} and takes a
  * fixed number of steps; it is stable if the distance from V* has not grown. Divergence is thus
  * detected by growth, long before any value becomes NaN; a shared-integrator step that does go
- * non-finite throws {@link IllegalStateException}, which counts as unstable too. Every method
+ * non-finite throws {@link NonFiniteStepException}, which counts as unstable too. Every method
  * here is stable below its limit and unstable above it, so bisection applies.
  */
 public final class StabilityMap {
@@ -72,7 +74,7 @@ public final class StabilityMap {
         double before = Math.hypot(state.velocity[0] - terminalX, state.velocity[1] - terminalY);
         try {
             stepper.advance(state, stepSeconds, TRIAL_STEPS);
-        } catch (IllegalStateException nonFinite) {
+        } catch (NonFiniteStepException nonFinite) {
             return false;
         }
         double after = Math.hypot(state.velocity[0] - terminalX, state.velocity[1] - terminalY);

@@ -8,6 +8,7 @@ import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.Gravity;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 
@@ -153,7 +154,7 @@ public final class AimCommand {
                 // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
                 double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
                 result = aim(method, simulator, gravity, distance, vx, step, toleranceMetres);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 float limit = integrator.maxStableStep(launch(vx,
                         (float) LevelAim.lectureVy(gravity, distance, vx), mass));
                 throw CommandSupport.blewUp(step, "during a shot", limit);

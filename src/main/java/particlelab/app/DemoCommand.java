@@ -92,8 +92,8 @@ public final class DemoCommand {
                 return OK;
             }
             if (name != null && options.has(DEMO)) {
-                throw new UsageException(DEMO + ": the demo was already named " + name
-                        + "; give it once");
+                throw new UsageException(DEMO + ": the demo was already named "
+                        + Options.show(name) + "; give it once");
             }
             name = options.string(DEMO, name);
             frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
@@ -114,7 +114,7 @@ public final class DemoCommand {
         }
         int index = name == null ? 0 : DemoCatalog.indexOf(name);
         if (index < 0) {
-            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + name
+            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + Options.show(name)
                     + "'; the demos are " + String.join(", ", DemoCatalog.names()));
             return USAGE;
         }

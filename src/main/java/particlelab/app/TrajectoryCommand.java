@@ -3,6 +3,7 @@ package particlelab.app;
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import particlelab.physics.Gravity;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 
@@ -181,7 +182,7 @@ public final class TrajectoryCommand {
         for (int n = 1; n <= maxSteps; ++n) {
             try {
                 integrator.step(particle, stepSeconds);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(stepSeconds, "at step " + n,
                         integrator.maxStableStep(start));
             }

@@ -11,6 +11,7 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -397,7 +398,7 @@ public abstract class DemoState extends BaseAppState {
         }
         try {
             clock.advance(frameSeconds, stepper);
-        } catch (IllegalStateException blowUp) {
+        } catch (NonFiniteStepException blowUp) {
             recoverFromBlowUp();
         }
         scene.updateViews();
