@@ -60,9 +60,7 @@ public final class IterativeAim {
      */
     public IterativeAim(ShotSimulator simulator, double gravity, double toleranceMetres,
             int maxShots) {
-        if (simulator == null) {
-            throw new IllegalArgumentException("simulator must not be null");
-        }
+        Validate.notNull(simulator, "simulator");
         if (maxShots < 2) {
             throw new IllegalArgumentException("max shots must be >= 2, but was " + maxShots);
         }

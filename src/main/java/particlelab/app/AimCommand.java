@@ -75,7 +75,8 @@ public final class AimCommand {
                         + " 9.8.")
                 .value(TPF, "H", "time step h of the stepped shot (s, > 0), a decimal or a"
                         + " fraction such as 1/60. Default 1/60.")
-                .value(MASS, "KG", "bullet mass m (kg, > 0). Default 1.")
+                .value(MASS, "KG", "bullet mass m (kg, > 0, at least " + Particle.MIN_MASS_KG
+                        + " so that 1/m is a finite float). Default 1.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
                         + " Default 0: none.")
                 .value(QUADRATIC_DRAG, "C", "quadratic drag c in F = -c*|V|*V (kg/m, >= 0)."
@@ -128,7 +129,8 @@ public final class AimCommand {
             float vx = options.positiveFloat(VX);
             float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
             float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            float mass = options.positiveFloat(MASS, CommandSupport.DEFAULT_MASS_KG);
+            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
             float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
             float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
             String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,

@@ -301,6 +301,28 @@ public final class Options {
     }
 
     /**
+     * Read an optional number of at least a minimum.
+     *
+     * @param name a declared option with a value
+     * @param defaultValue the value when the option is absent
+     * @param min the smallest value allowed (finite)
+     * @param why why that is the minimum, for the message, e.g. "so that 1/m is finite"
+     * @return the value given (finite, &ge;min), or defaultValue
+     * @throws UsageException if the value given is not a finite number &ge;min
+     */
+    public float floatAtLeast(String name, float defaultValue, float min, String why) {
+        String text = raw(name);
+        if (text == null) {
+            return defaultValue;
+        }
+        float value = parseNumber(name, text);
+        if (!(Float.isFinite(value) && value >= min)) {
+            throw bad(name, "must be a finite number >= " + min + " (" + why + ")", text);
+        }
+        return value;
+    }
+
+    /**
      * Read an optional number of at least zero.
      *
      * @param name a declared option with a value

@@ -62,7 +62,8 @@ public final class TrajectoryCommand {
                 .value(P0, "X,Y,Z", "initial position P0 (m). Default 0,0,0.")
                 .value(V0, "X,Y,Z", "initial velocity V0 (m/s). Default 10,10,0, the lecture's"
                         + " gravitational-pull example.")
-                .value(MASS, "KG", "mass m (kg, > 0). Default 1.")
+                .value(MASS, "KG", "mass m (kg, > 0, at least " + Particle.MIN_MASS_KG
+                        + " so that 1/m is a finite float). Default 1.")
                 .value(G, "X,Y,Z", "gravitational acceleration g (m/s^2), a vector. Default"
                         + " 0,-9.8,0; 0,0,0 leaves gravity out.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
@@ -115,7 +116,8 @@ public final class TrajectoryCommand {
             }
             Vector3f p0 = options.vector(P0, Vector3f.ZERO);
             Vector3f v0 = options.vector(V0, new Vector3f(10f, 10f, 0f));
-            float mass = options.positiveFloat(MASS, CommandSupport.DEFAULT_MASS_KG);
+            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
             Vector3f gravity = options.vector(G, new Vector3f(0f, -Gravity.STANDARD_G, 0f));
             float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
             float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
