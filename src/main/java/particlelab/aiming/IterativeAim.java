@@ -218,6 +218,10 @@ public final class IterativeAim {
         if (shots == maxShots) {
             throw new ShotsRanOut();
         }
+        if (Float.isInfinite((float) vy)) {
+            throw new OutOfReach("the search needs vy=" + vy + " m/s, beyond the float range"
+                    + " the shots are fired in");
+        }
         ++shots;
         if (!simulator.fire((float) horizontalSpeed, (float) vy, landing)) {
             throw new OutOfReach("a shot with vy=" + (float) vy

@@ -33,6 +33,8 @@ public final class TrajectoryCommand {
     public static final String HEADER = "t,x,y,z,vx,vy,vz";
     /** The most steps one run takes, whichever way its length is given. */
     public static final int MAX_STEPS = 1_000_000;
+    /** While printing, rows between checks that stdout still takes them. */
+    private static final int ROWS_PER_OUTPUT_CHECK = 1024;
 
     private static final String COMMAND = "particle-lab " + NAME;
     private static final String P0 = "--p0";
@@ -73,7 +75,8 @@ public final class TrajectoryCommand {
                 .value(THRUST, "K", "thrust k in F = k*V/|V|, along the particle's own"
                         + " velocity, none at rest (N, >= 0). Default 0: none.")
                 .value(TPF, "H", "time step h (s, > 0), a decimal or a fraction such as 1/60."
-                        + " Default 1/60.")
+                        + " Default 1/60. A step too small to move the particle (h*|V0| below"
+                        + " half the float spacing at P0 on some axis) is refused.")
                 .value(STEPS, "N", "take N steps (0 to " + MAX_STEPS + "): N+1 rows.")
                 .value(DURATION, "T", "simulate T seconds (> 0): T/h rounded to the nearest"
                         + " whole number of steps, at least 1, at most " + MAX_STEPS + "; the"
@@ -141,8 +144,10 @@ public final class TrajectoryCommand {
                 }
                 steps = MAX_STEPS;
             }
-            CommandSupport.warnIfUnstable(integrator, start, step, err);
+            checkStepMoves(p0, v0, step);
             int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null);
+            // Only a run that succeeded gets the warning: a blow-up is its one error line.
+            CommandSupport.warnIfUnstable(integrator, start, step, err);
             fly(integrator, start, step, taken, false, out);
             return 0;
         } catch (UsageException problem) {
@@ -162,6 +167,28 @@ public final class TrajectoryCommand {
                     + durationSeconds);
         }
         return Math.max(1, (int) steps);
+    }
+
+    /**
+     * Refuse a step too small to move the particle at all: on an axis where it starts moving,
+     * {@code h·|V0|} below half the float spacing at P0 rounds every step's move to nothing,
+     * and the CSV would show a particle standing still.
+     */
+    private static void checkStepMoves(Vector3f p0, Vector3f v0, float stepSeconds) {
+        String[] axes = {"x", "y", "z"};
+        for (int axis = 0; axis < 3; ++axis) {
+            float position = p0.get(axis);
+            double move = Math.abs((double) stepSeconds * v0.get(axis));
+            double halfSpacing = Math.ulp(position) / 2.0;
+            if (move > 0.0 && move < halfSpacing) {
+                String name = axes[axis];
+                throw new UsageException(TPF + ": a step of " + stepSeconds + " s moves "
+                        + name + " by h*|v" + name + "| = " + (float) move + " m, less than half"
+                        + " the float spacing at " + name + " = " + position + " m ("
+                        + (float) halfSpacing + " m), so " + name + " could never change; use"
+                        + " --tpf >= " + (float) (2.0 * halfSpacing / Math.abs(v0.get(axis))));
+            }
+        }
     }
 
     /**
@@ -190,6 +217,11 @@ public final class TrajectoryCommand {
             }
             if (out != null) {
                 printRow(n, stepSeconds, particle, row, out);
+                if (n % ROWS_PER_OUTPUT_CHECK == 0 && out.checkError()) {
+                    // The reader has gone (a closed pipe) or the disk is full: stop here;
+                    // Main reports it in one line.
+                    return n;
+                }
             }
             if (untilGround && particle.position.y < 0f) {
                 return n;
