@@ -1,7 +1,13 @@
 package particlelab.app;
 
 import java.io.File;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.nio.file.StandardOpenOption;
 import java.util.Arrays;
 import java.util.List;
 import java.util.logging.Level;
@@ -108,6 +114,9 @@ public final class DemoCommand {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
             }
+            if (screenshot != null) {
+                checkScreenshotPath(file);
+            }
         } catch (UsageException e) {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
@@ -120,6 +129,51 @@ public final class DemoCommand {
         }
         return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
                 err);
+    }
+
+    /**
+     * Check, before the window opens, that the screenshot can be written there: not a folder
+     * (which is never replaced), not under a file, and writable (a probe file is created and
+     * deleted, a file already there is opened for appending and left as it was). Missing
+     * folders on the way are created.
+     *
+     * @param text the path as given (not null)
+     * @throws UsageException if the PNG could not be written there
+     */
+    static void checkScreenshotPath(String text) {
+        String shown = Options.show(text);
+        Path path;
+        try {
+            path = Paths.get(text).toAbsolutePath();
+        } catch (InvalidPathException bad) {
+            throw new UsageException(SCREENSHOT + ": not a valid path, but was " + shown);
+        }
+        if (Files.isDirectory(path)) {
+            throw new UsageException(SCREENSHOT + ": " + shown + " is a folder; give a file"
+                    + " name such as " + Options.show(path.resolve("shot.png").toString()));
+        }
+        Path ancestor = path.getParent();
+        while (ancestor != null && !Files.exists(ancestor)) {
+            ancestor = ancestor.getParent();
+        }
+        if (ancestor != null && !Files.isDirectory(ancestor)) {
+            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
+                    + Options.show(ancestor.toString()) + " is a file, not a folder");
+        }
+        try {
+            if (path.getParent() != null) {
+                Files.createDirectories(path.getParent());
+            }
+            if (Files.exists(path)) {
+                Files.newOutputStream(path, StandardOpenOption.APPEND).close();
+            } else {
+                Files.createFile(path);
+                Files.delete(path);
+            }
+        } catch (IOException failure) {
+            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
+                    + UsageException.reason(failure));
+        }
     }
 
     /**
@@ -172,11 +226,13 @@ public final class DemoCommand {
             GLFW.glfwInitHint(GLFW.GLFW_PLATFORM, GLFW.GLFW_PLATFORM_X11);
         }
         String noAudio = AudioProbe.findProblem();
-        if (noAudio != null) {
-            err.println("particle-lab: warning: " + noAudio + "; running without sound");
-        }
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
+        if (noAudio != null) {
+            // Printed once the window is up: a display that cannot be used is the one line.
+            app.warnOnceRunning(err, "particle-lab: warning: " + noAudio
+                    + "; running without sound");
+        }
         app.start();
         try {
             app.awaitFinished(Long.MAX_VALUE);
@@ -193,12 +249,14 @@ public final class DemoCommand {
         ScreenshotCapture capture = app.getCapture();
         if (capture != null) {
             if (!capture.isWritten()) {
-                err.println("particle-lab: the screenshot " + screenshot + " was not written"
+                err.println("particle-lab: the screenshot "
+                        + Options.show(screenshot.toString()) + " was not written"
                         + (capture.getFailure() == null ? ""
-                                : ": " + capture.getFailure().getMessage()));
+                                : ": " + UsageException.reason(capture.getFailure())));
                 return FAILED;
             }
-            out.println("screenshot " + screenshot + ": " + capture.getStatistics());
+            out.println("screenshot " + Options.show(screenshot.toString()) + ": "
+                    + capture.getStatistics());
         }
         return OK;
     }

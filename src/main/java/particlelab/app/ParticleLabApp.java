@@ -9,6 +9,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import com.jme3.system.AppSettings;
 import java.io.File;
+import java.io.PrintStream;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -41,6 +42,9 @@ public final class ParticleLabApp extends SimpleApplication {
     private final CountDownLatch finished = new CountDownLatch(1);
     private int frames;
     private volatile String failure;
+    /** Printed to warningOut once the window is up, or null. */
+    private String startupWarning;
+    private PrintStream warningOut;
 
     /**
      * Create the application.
@@ -165,8 +169,23 @@ public final class ParticleLabApp extends SimpleApplication {
         return frames;
     }
 
+    /**
+     * Print a warning once the window has opened, and not at all if it cannot open, so that
+     * a failure to start is the only line the user sees.
+     *
+     * @param out where to print (not null)
+     * @param line the warning, one line (not null)
+     */
+    void warnOnceRunning(PrintStream out, String line) {
+        warningOut = out;
+        startupWarning = line;
+    }
+
     @Override
     public void simpleInitApp() {
+        if (startupWarning != null) {
+            warningOut.println(startupWarning);
+        }
         setDisplayFps(false);
         setDisplayStatView(false);
         setPauseOnLostFocus(false);
@@ -184,6 +203,11 @@ public final class ParticleLabApp extends SimpleApplication {
 
     @Override
     public void simpleUpdate(float tpf) {
+        if (!switcher.getSelected().isInitialized()) {
+            // The demo initialises on the frame after it is attached: until then the frame is
+            // blank, so it neither counts nor is captured.
+            return;
+        }
         ++frames;
         if (frames == frameLimit && capture != null) {
             capture.request();
@@ -200,7 +224,8 @@ public final class ParticleLabApp extends SimpleApplication {
     @Override
     public void handleError(String errorMessage, Throwable cause) {
         // One line for the user; jME's own handler would print the whole stack trace.
-        String reason = cause == null || cause.getMessage() == null ? ""
+        String reason = cause == null || cause.getMessage() == null
+                || cause.getMessage().trim().equals(errorMessage) ? ""
                 : ": " + cause.getMessage().trim().replace('\n', ' ');
         failure = errorMessage + reason;
         stop();
