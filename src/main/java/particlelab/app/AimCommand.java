@@ -234,11 +234,16 @@ public final class AimCommand {
     private static void checkStepCount(float distance, float vx, float step) {
         double steps = distance / ((double) vx * step);
         if (steps > MAX_STEPS_PER_SHOT) {
+            double smallest = distance / ((double) vx * MAX_STEPS_PER_SHOT);
+            float suggested = (float) smallest;
+            if (suggested < smallest) {
+                suggested = Math.nextUp(suggested);
+            }
             throw new UsageException(TPF + ": a step of " + step + " s needs S/(vx*h) = "
                     + (float) steps + " steps to reach S=" + distance + " m at vx=" + vx
                     + " m/s, more than the limit " + MAX_STEPS_PER_SHOT + " (each step would"
                     + " move x by less than 8 float round-off units); use --tpf >= "
-                    + (float) (distance / ((double) vx * MAX_STEPS_PER_SHOT)));
+                    + suggested);
         }
     }
 
