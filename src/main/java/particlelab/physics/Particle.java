@@ -103,8 +103,8 @@ public final class Particle {
      */
     static float checkMass(float massKg) {
         if (!(Float.isFinite(massKg) && massKg >= MIN_MASS_KG)) {
-            throw new IllegalArgumentException("mass (kg) must be finite and >= " + MIN_MASS_KG
-                    + " (so that 1/m is a finite float), but was " + massKg);
+            throw new IllegalArgumentException("mass (kg) must be finite and > 0, at least "
+                    + MIN_MASS_KG + " so that 1/m is a finite float, but was " + massKg);
         }
         return massKg;
     }
