@@ -92,8 +92,8 @@ public final class AimCommand {
                 .value(TPF, "H", "time step h of the stepped shot (s, > 0), a decimal or a"
                         + " fraction such as 1/60. Default 1/60. A step that needs more than "
                         + MAX_STEPS_PER_SHOT + " steps to cover S (S/(vx*h)) is refused.")
-                .value(MASS, "KG", "bullet mass m (kg, > 0, at least " + Particle.MIN_MASS_KG
-                        + " so that 1/m is a finite float). Default 1.")
+                .value(MASS, "KG", "bullet mass m (kg, > 0). At least " + Particle.MIN_MASS_KG
+                        + ", so that 1/m is a finite float. Default 1.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
                         + " Default 0: none.")
                 .value(QUADRATIC_DRAG, "C", "quadratic drag c in F = -c*|V|*V (kg/m, >= 0)."
@@ -249,7 +249,8 @@ public final class AimCommand {
 
     /**
      * Refuse a shot whose drag-free vy, {@code g·S/(2·vx)}, is beyond the float range the
-     * bullet flies in (every method starts from it).
+     * bullet flies in, or so small that it rounds to a subnormal or to 0 (every method starts
+     * from it).
      */
     private static void checkFloatRange(float gravity, float distance, float vx) {
         double vy = gravity * (double) distance / (2.0 * vx);
@@ -258,6 +259,12 @@ public final class AimCommand {
                     + " m/s, beyond the float range (" + Float.MAX_VALUE + ") the shot is"
                     + " stepped in; choose a larger " + VX + " or a smaller " + G + " or "
                     + DISTANCE);
+        }
+        if (vy < Float.MIN_NORMAL) {
+            throw new UsageException(VX + ": the launch needs vy = g*S/(2*vx) = " + vy
+                    + " m/s, below the smallest normal float (" + Float.MIN_NORMAL + "): the"
+                    + " shot would be fired flat; choose a smaller " + VX + " or a larger "
+                    + G + " or " + DISTANCE);
         }
     }
 

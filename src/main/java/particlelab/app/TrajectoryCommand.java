@@ -64,8 +64,8 @@ public final class TrajectoryCommand {
                 .value(P0, "X,Y,Z", "initial position P0 (m). Default 0,0,0.")
                 .value(V0, "X,Y,Z", "initial velocity V0 (m/s). Default 10,10,0, the lecture's"
                         + " gravitational-pull example.")
-                .value(MASS, "KG", "mass m (kg, > 0, at least " + Particle.MIN_MASS_KG
-                        + " so that 1/m is a finite float). Default 1.")
+                .value(MASS, "KG", "mass m (kg, > 0). At least " + Particle.MIN_MASS_KG
+                        + ", so that 1/m is a finite float. Default 1.")
                 .value(G, "X,Y,Z", "gravitational acceleration g (m/s^2), a vector. Default"
                         + " 0,-9.8,0; 0,0,0 leaves gravity out.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
