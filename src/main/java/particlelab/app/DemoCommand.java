@@ -188,7 +188,9 @@ public final class DemoCommand {
                 .value(DEMO, "NAME", "the demo to open on; see --list")
                 .flag(LIST, "print the demo names, one per line, and exit")
                 .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
-                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames)")
+                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames);"
+                        + " checked before the window opens: a folder, a path under a file or"
+                        + " an unwritable place is refused")
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
