@@ -339,9 +339,11 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Find the first non-finite value: one pass with eight independent sums of {@code x·0},
-     * which is 0 for every finite x and NaN otherwise (eight sums keep the additions in
-     * flight; one running sum would wait on each), then a search only if a sum is not 0.
+     * Find the first non-finite value: one pass with eight independent sums (eight keep the
+     * additions in flight; one running sum would wait on each), then a search only if the
+     * total is not finite. A finite total means every value is finite (an infinity or NaN
+     * makes the sum infinite or NaN); a total that overflows although every value is finite
+     * costs only the search.
      *
      * @return its index, or -1 if every value is finite
      */
@@ -356,17 +358,17 @@ public final class ParticleIntegrator {
         float sum7 = 0f;
         int i = 0;
         for (; i + 8 <= length; i += 8) {
-            sum0 += values[i] * 0f;
-            sum1 += values[i + 1] * 0f;
-            sum2 += values[i + 2] * 0f;
-            sum3 += values[i + 3] * 0f;
-            sum4 += values[i + 4] * 0f;
-            sum5 += values[i + 5] * 0f;
-            sum6 += values[i + 6] * 0f;
-            sum7 += values[i + 7] * 0f;
+            sum0 += values[i];
+            sum1 += values[i + 1];
+            sum2 += values[i + 2];
+            sum3 += values[i + 3];
+            sum4 += values[i + 4];
+            sum5 += values[i + 5];
+            sum6 += values[i + 6];
+            sum7 += values[i + 7];
         }
         for (; i < length; ++i) {
-            sum0 += values[i] * 0f;
+            sum0 += values[i];
         }
         if (sum0 + sum1 + sum2 + sum3 + sum4 + sum5 + sum6 + sum7 == 0f) {
             return -1;
