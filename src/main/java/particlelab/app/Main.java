@@ -18,6 +18,8 @@ public final class Main {
     public static final String PROGRAM = "particle-lab";
     /** Exit status: the output could not be written (stdout closed or full). */
     public static final int OUTPUT_FAILED = 1;
+    /** Exit status: a bug, reported in one line. */
+    public static final int INTERNAL_ERROR = 1;
     /** The help subcommand: alone, or followed by a command whose help to show. */
     public static final String HELP = "help";
 
@@ -51,10 +53,19 @@ public final class Main {
      * @param out where results and help go (not null)
      * @param err where warnings and error lines go (not null)
      * @return the exit code: 0 on success, 2 on a bad command line, {@link #OUTPUT_FAILED} when
-     *     out could not be written (closed, full), 1 when a window could not run
+     *     out could not be written (closed, full), 1 when a window could not run or on a bug
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        int code = runCommand(args, out, err);
+        int code;
+        try {
+            code = runCommand(args, out, err);
+        } catch (RuntimeException bug) {
+            // Every bad input has its own message; this is a bug. One line, still.
+            err.println(PROGRAM + ": internal error, please report it with the command line: "
+                    + bug.getClass().getSimpleName() + ": "
+                    + Options.show(String.valueOf(bug.getMessage())));
+            return INTERNAL_ERROR;
+        }
         // checkError flushes out and tells whether any write to it failed.
         if (out.checkError()) {
             err.println(PROGRAM + ": could not write the output (stdout is closed or full);"
