@@ -89,8 +89,8 @@ public final class ReportCommand {
                 throw new UsageException(OUT + ": " + Options.show(folder.toString())
                         + " is a file, not a folder");
             }
-            checkWritable(folder);
             jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
+            checkWritable(folder);
         } catch (UsageException problem) {
             return CommandSupport.reportUsage(COMMAND, problem, err);
         }
