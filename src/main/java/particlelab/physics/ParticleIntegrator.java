@@ -339,11 +339,11 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Find the first non-finite value: one pass with eight independent sums (eight keep the
-     * additions in flight; one running sum would wait on each), then a search only if the
-     * total is not finite. A finite total means every value is finite (an infinity or NaN
-     * makes the sum infinite or NaN); a total that overflows although every value is finite
-     * costs only the search.
+     * Find the first non-finite value: one pass summing the values, sixteen at a time as a
+     * tree into four independent sums (short chains keep the additions in flight), then a
+     * search only if the total is not finite. A finite total means every value is finite (an
+     * infinity or NaN makes the sum infinite or NaN); a total that overflows although every
+     * value is finite costs only the search.
      *
      * @return its index, or -1 if every value is finite
      */
@@ -352,25 +352,17 @@ public final class ParticleIntegrator {
         float sum1 = 0f;
         float sum2 = 0f;
         float sum3 = 0f;
-        float sum4 = 0f;
-        float sum5 = 0f;
-        float sum6 = 0f;
-        float sum7 = 0f;
         int i = 0;
-        for (; i + 8 <= length; i += 8) {
-            sum0 += values[i];
-            sum1 += values[i + 1];
-            sum2 += values[i + 2];
-            sum3 += values[i + 3];
-            sum4 += values[i + 4];
-            sum5 += values[i + 5];
-            sum6 += values[i + 6];
-            sum7 += values[i + 7];
+        for (; i + 16 <= length; i += 16) {
+            sum0 += (values[i] + values[i + 1]) + (values[i + 2] + values[i + 3]);
+            sum1 += (values[i + 4] + values[i + 5]) + (values[i + 6] + values[i + 7]);
+            sum2 += (values[i + 8] + values[i + 9]) + (values[i + 10] + values[i + 11]);
+            sum3 += (values[i + 12] + values[i + 13]) + (values[i + 14] + values[i + 15]);
         }
         for (; i < length; ++i) {
             sum0 += values[i];
         }
-        if (sum0 + sum1 + sum2 + sum3 + sum4 + sum5 + sum6 + sum7 == 0f) {
+        if (Float.isFinite((sum0 + sum1) + (sum2 + sum3))) {
             return -1;
         }
         for (int j = 0; j < length; ++j) {
