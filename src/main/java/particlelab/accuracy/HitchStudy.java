@@ -4,6 +4,7 @@ import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.aiming.Landing;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -122,7 +123,7 @@ final class HitchStudy {
                         && frame % (FRAMES_BETWEEN_HITCHES + 1) == FRAMES_BETWEEN_HITCHES;
                 clock.advance(hitchFrame ? (float) hitch : FRAME_SECONDS, flight);
             }
-        } catch (IllegalStateException nonFinite) {
+        } catch (NonFiniteStepException nonFinite) {
             finite = false;
         }
         finite = finite && flight.particle.isFinite();

@@ -1,6 +1,7 @@
 package particlelab.accuracy;
 
 import com.jme3.math.Vector3f;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Spring;
@@ -12,7 +13,7 @@ import particlelab.physics.Spring;
  * <p>A trial starts the particle away from its terminal velocity {@code V* = g/k} and takes a
  * fixed number of steps; it is stable if the distance from V* has not grown. Divergence is thus
  * detected by growth, long before any value becomes NaN; a shared-integrator step that does go
- * non-finite throws {@link IllegalStateException}, which counts as unstable too. Every method
+ * non-finite throws {@link NonFiniteStepException}, which counts as unstable too. Every method
  * here is stable below its limit and unstable above it, so bisection applies.
  *
  * <p>The spring series steps the demos' own {@link ParticleIntegrator} (float) with a
@@ -89,7 +90,7 @@ public final class StabilityMap {
         double before = Math.hypot(state.velocity[0] - terminalX, state.velocity[1] - terminalY);
         try {
             stepper.advance(state, stepSeconds, TRIAL_STEPS);
-        } catch (IllegalStateException nonFinite) {
+        } catch (NonFiniteStepException nonFinite) {
             return false;
         }
         double after = Math.hypot(state.velocity[0] - terminalX, state.velocity[1] - terminalY);
@@ -145,7 +146,7 @@ public final class StabilityMap {
             for (int n = 0; n < TRIAL_STEPS; ++n) {
                 integrator.step(particle, (float) stepSeconds);
             }
-        } catch (IllegalStateException nonFinite) {
+        } catch (NonFiniteStepException nonFinite) {
             return false;
         }
         return swing(particle, stiffness) <= before;

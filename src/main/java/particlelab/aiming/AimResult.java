@@ -1,5 +1,7 @@
 package particlelab.aiming;
 
+import particlelab.physics.Validate;
+
 /**
  * The outcome of aiming: the launch chosen, where the stepped shot landed, and how many shots
  * it took. Immutable.
@@ -34,7 +36,7 @@ public final class AimResult {
     public AimResult(String method, boolean hit, double horizontalSpeed, double verticalSpeed,
             double flightSeconds, double landingX, double targetDistance, int shots,
             String explanation) {
-        this.method = method;
+        this.method = Validate.notNull(method, "method");
         this.hit = hit;
         this.horizontalSpeed = horizontalSpeed;
         this.verticalSpeed = verticalSpeed;
@@ -42,7 +44,7 @@ public final class AimResult {
         this.landingX = landingX;
         this.targetDistance = targetDistance;
         this.shots = shots;
-        this.explanation = explanation;
+        this.explanation = Validate.notNull(explanation, "explanation");
     }
 
     /** @return the aiming method's name (not null) */

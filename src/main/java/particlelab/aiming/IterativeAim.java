@@ -60,9 +60,7 @@ public final class IterativeAim {
      */
     public IterativeAim(ShotSimulator simulator, double gravity, double toleranceMetres,
             int maxShots) {
-        if (simulator == null) {
-            throw new IllegalArgumentException("simulator must not be null");
-        }
+        Validate.notNull(simulator, "simulator");
         if (maxShots < 2) {
             throw new IllegalArgumentException("max shots must be >= 2, but was " + maxShots);
         }
@@ -219,6 +217,10 @@ public final class IterativeAim {
     private double shoot(double horizontalSpeed, double vy, double distance) {
         if (shots == maxShots) {
             throw new ShotsRanOut();
+        }
+        if (Float.isInfinite((float) vy)) {
+            throw new OutOfReach("the search needs vy=" + vy + " m/s, beyond the float range"
+                    + " the shots are fired in");
         }
         ++shots;
         if (!simulator.fire((float) horizontalSpeed, (float) vy, landing)) {

@@ -6,6 +6,13 @@ import particlelab.physics.Validate;
  * The two launch angles that hit a target at any height with a fixed launch speed s, no drag:
  * {@code tan θ = (s² ∓ sqrt(s⁴ − g·(g·x² + 2·y·s²)))/(g·x)}. A negative discriminant means
  * the target is out of reach at that speed.
+ *
+ * <p>Computed without overflow or cancellation: with {@code u = s²/(g·x)} and
+ * {@code k = y/x} the two tangents are the roots of {@code t² − 2u·t + (1 + 2k·u) = 0}, so
+ * {@code q = (1/u + 2k)/u}, {@code tan θ_high = u·(1 + sqrt(1 − q))} and
+ * {@code tan θ_low = (1/u + 2k)/(1 + sqrt(1 − q))} (their product is {@code 1 + 2k·u}). A
+ * speed so large that u overflows gives the true limits, 90° and the straight line
+ * {@code atan(y/x)}, never a −90° "solution".
  */
 public final class LaunchAngles {
 
@@ -30,6 +37,8 @@ public final class LaunchAngles {
      * @param targetHeight y, the target's height above the gun (in metres, finite)
      * @param gravity g (in m/s², finite, &gt;0)
      * @return the low and high angles, or an out-of-reach answer (not null)
+     * @throws IllegalArgumentException if an input is out of its range, or the target's
+     *     proportions ({@code s²/(g·x)}, {@code y/x}) are out of the double range
      */
     public static LaunchAngles solve(double launchSpeed, double targetDistance,
             double targetHeight, double gravity) {
@@ -37,19 +46,27 @@ public final class LaunchAngles {
         Validate.positive(targetDistance, "target distance x (m)");
         Validate.finite(targetHeight, "target height y (m)");
         Validate.positive(gravity, "gravity g (m/s^2)");
-        double s2 = launchSpeed * launchSpeed;
-        double discriminant = s2 * s2 - gravity
-                * (gravity * targetDistance * targetDistance + 2.0 * targetHeight * s2);
-        if (discriminant < 0.0) {
+        double u = launchSpeed / gravity * (launchSpeed / targetDistance);
+        double k = targetHeight / targetDistance;
+        double inverseU = 1.0 / u;
+        double q = (inverseU + 2.0 * k) / u;
+        if (Double.isNaN(u) || Double.isInfinite(k) || Double.isNaN(q)) {
+            throw new IllegalArgumentException(String.format("the target at (%s m, %s m) with"
+                    + " launch speed %s m/s and g = %s m/s^2 is out of the double range:"
+                    + " s^2/(g x) = %s, y/x = %s", targetDistance, targetHeight, launchSpeed,
+                    gravity, u, k));
+        }
+        // 1 − q is the discriminant divided by (g·x)²·u², so it has the same sign.
+        double scaledDiscriminant = 1.0 - q;
+        if (scaledDiscriminant < 0.0) {
             return new LaunchAngles(false, Double.NaN, Double.NaN, String.format(
                     "target at (%s m, %s m) is out of reach at launch speed %s m/s"
-                            + " (no real angle: s^4 - g(g x^2 + 2 y s^2) = %s < 0)",
-                    targetDistance, targetHeight, launchSpeed, discriminant));
+                            + " (no real angle: 1 - g(g x^2 + 2 y s^2)/s^4 = %s < 0)",
+                    targetDistance, targetHeight, launchSpeed, scaledDiscriminant));
         }
-        double root = Math.sqrt(discriminant);
-        double gx = gravity * targetDistance;
-        double low = Math.atan((s2 - root) / gx);
-        double high = Math.atan((s2 + root) / gx);
+        double root = 1.0 + Math.sqrt(scaledDiscriminant);
+        double low = Math.atan((inverseU + 2.0 * k) / root);
+        double high = Math.atan(u * root);
         return new LaunchAngles(true, low, high, "reachable");
     }
 

@@ -22,11 +22,18 @@ public final class LevelAim {
      * @param gravity g (in m/s², finite, &gt;0)
      * @param distance S (in metres, finite, &gt;0)
      * @param horizontalSpeed vx (in m/s, finite, &gt;0)
-     * @return vy (in m/s)
+     * @return vy (in m/s, finite, &gt;0)
+     * @throws IllegalArgumentException if an input is not finite and positive, or vy is out
+     *     of the double range
      */
     public static double lectureVy(double gravity, double distance, double horizontalSpeed) {
         check(gravity, distance, horizontalSpeed);
-        return gravity * distance / (2.0 * horizontalSpeed);
+        double vy = gravity * distance / (2.0 * horizontalSpeed);
+        if (Double.isInfinite(vy)) {
+            // g·S alone may overflow where the quotient does not.
+            vy = gravity / (2.0 * horizontalSpeed) * distance;
+        }
+        return inRange(vy, "vy = g*S/(2*vx)", gravity, distance, horizontalSpeed);
     }
 
     /**
@@ -34,12 +41,19 @@ public final class LevelAim {
      *
      * @param distance S (in metres, finite, &gt;0)
      * @param horizontalSpeed vx (in m/s, finite, &gt;0)
-     * @return T (in seconds)
+     * @return T (in seconds, finite, &gt;0)
+     * @throws IllegalArgumentException if an input is not finite and positive, or T is out
+     *     of the double range
      */
     public static double flightTime(double distance, double horizontalSpeed) {
         Validate.positive(distance, "distance S (m)");
         Validate.positive(horizontalSpeed, "horizontal speed vx (m/s)");
-        return distance / horizontalSpeed;
+        double time = distance / horizontalSpeed;
+        if (!(Double.isFinite(time) && time > 0.0)) {
+            throw new IllegalArgumentException("flight time S/vx is out of the double range"
+                    + " for S = " + distance + " m, vx = " + horizontalSpeed + " m/s: " + time);
+        }
+        return time;
     }
 
     /**
@@ -56,7 +70,9 @@ public final class LevelAim {
      * @param distance S (in metres, finite, &gt;0)
      * @param horizontalSpeed vx (in m/s, finite, &gt;0)
      * @param stepSeconds h (in seconds, finite, &gt;0)
-     * @return vy (in m/s)
+     * @return vy (in m/s, finite, &gt;0)
+     * @throws IllegalArgumentException if an input is not finite and positive, or vy is out
+     *     of the double range
      */
     public static double discreteVy(double gravity, double distance, double horizontalSpeed,
             double stepSeconds) {
@@ -65,11 +81,29 @@ public final class LevelAim {
         double steps = distance / (horizontalSpeed * stepSeconds);
         double whole = Math.floor(steps);
         double fraction = steps - whole;
+        double vy;
         if (fraction < 1e-9 * steps) {
             // N whole (to round-off): vy = g·(S/vx + h)/2 exactly.
-            return gravity * (distance / horizontalSpeed + stepSeconds) / 2.0;
+            vy = gravity * (distance / horizontalSpeed + stepSeconds) / 2.0;
+        } else {
+            vy = gravity * stepSeconds * (whole + 1.0) * (whole + 2.0 * fraction) / (2.0 * steps);
         }
-        return gravity * stepSeconds * (whole + 1.0) * (whole + 2.0 * fraction) / (2.0 * steps);
+        return inRange(vy, "the discrete vy", gravity, distance, horizontalSpeed);
+    }
+
+    /**
+     * Refuse a result that overflowed (or underflowed to 0) in double arithmetic.
+     *
+     * @return vy, finite and &gt;0
+     */
+    private static double inRange(double vy, String what, double gravity, double distance,
+            double horizontalSpeed) {
+        if (!(Double.isFinite(vy) && vy > 0.0)) {
+            throw new IllegalArgumentException(what + " is out of the double range for g = "
+                    + gravity + " m/s^2, S = " + distance + " m, vx = " + horizontalSpeed
+                    + " m/s: " + vy);
+        }
+        return vy;
     }
 
     private static void check(double gravity, double distance, double horizontalSpeed) {

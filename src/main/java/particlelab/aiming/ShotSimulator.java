@@ -30,10 +30,7 @@ public final class ShotSimulator {
      */
     public ShotSimulator(ParticleIntegrator integrator, float massKg, float stepSeconds,
             float maxFlightSeconds) {
-        if (integrator == null) {
-            throw new IllegalArgumentException("integrator must not be null");
-        }
-        this.integrator = integrator;
+        this.integrator = Validate.notNull(integrator, "integrator");
         this.bullet = new Particle();
         bullet.setMass(massKg);
         this.massKg = massKg;
@@ -61,6 +58,7 @@ public final class ShotSimulator {
      * @return true if it landed within the time allowed
      */
     public boolean fire(float horizontalSpeed, float verticalSpeed, Landing storeResult) {
+        Validate.notNull(storeResult, "storeResult");
         Validate.finite(horizontalSpeed, "horizontal speed vx (m/s)");
         Validate.finite(verticalSpeed, "vertical speed vy (m/s)");
         // fire(Particle, Landing) may have left another mass in the reused bullet.
@@ -79,6 +77,8 @@ public final class ShotSimulator {
      * @return true if it landed within the time allowed
      */
     public boolean fire(Particle start, Landing storeResult) {
+        Validate.notNull(start, "start");
+        Validate.notNull(storeResult, "storeResult");
         bullet.copyFrom(start);
         return flyUntilGround(storeResult);
     }

@@ -2,12 +2,16 @@ package particlelab.app;
 
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+import java.util.Locale;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.Gravity;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 
@@ -41,8 +45,21 @@ public final class AimCommand {
     public static final int MAX_SHOTS = 100;
     /** A shot still in the air after this long never lands (in seconds). */
     public static final float MAX_FLIGHT_SECONDS = 3600f;
+    /**
+     * The most steps one shot may take. A step so small that the shot needs more (S/(vx·h)
+     * steps to cover S) is refused: it would take minutes, and each step would move x by
+     * fewer than 8 units of float round-off at S ({@code S/1e6 ≥ 8·ulp(S)} since
+     * {@code S/ulp(S) ≥ 2^23}), until x stops moving altogether.
+     */
+    public static final int MAX_STEPS_PER_SHOT = 1_000_000;
 
     private static final String COMMAND = "particle-lab " + NAME;
+    /** The decimals of the readable output. */
+    private static final int READABLE_DECIMALS = 4;
+    /** Smaller magnitudes are shown with significant digits instead of decimals. */
+    private static final double SMALL_READABLE = 1e-3;
+    /** Larger magnitudes are shown in scientific notation. */
+    private static final double LARGE_READABLE = 1e7;
     private static final String LECTURE = "lecture";
     private static final String DISCRETE = "discrete";
     private static final String DISTANCE = "--distance";
@@ -73,8 +90,10 @@ public final class AimCommand {
                 .value(G, "G", "magnitude of gravity g, pointing down (m/s^2, > 0). Default"
                         + " 9.8.")
                 .value(TPF, "H", "time step h of the stepped shot (s, > 0), a decimal or a"
-                        + " fraction such as 1/60. Default 1/60.")
-                .value(MASS, "KG", "bullet mass m (kg, > 0). Default 1.")
+                        + " fraction such as 1/60. Default 1/60. A step that needs more than "
+                        + MAX_STEPS_PER_SHOT + " steps to cover S (S/(vx*h)) is refused.")
+                .value(MASS, "KG", "bullet mass m (kg, > 0). At least " + Particle.MIN_MASS_KG
+                        + ", so that 1/m is a finite float. Default 1.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
                         + " Default 0: none.")
                 .value(QUADRATIC_DRAG, "C", "quadratic drag c in F = -c*|V|*V (kg/m, >= 0)."
@@ -125,7 +144,8 @@ public final class AimCommand {
             float vx = options.positiveFloat(VX);
             float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
             float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            float mass = options.positiveFloat(MASS, CommandSupport.DEFAULT_MASS_KG);
+            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
             float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
             float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
             String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,
@@ -142,16 +162,19 @@ public final class AimCommand {
                         + (float) ((double) vx * mass / linearDrag) + " m");
             }
 
+            checkFloatRange(gravity, distance, vx);
+            checkStepCount(distance, vx, step);
+
             ParticleIntegrator integrator = CommandSupport.integrator(
                     new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
-            ShotSimulator simulator =
-                    new ShotSimulator(integrator, mass, step, MAX_FLIGHT_SECONDS);
+            ShotSimulator simulator = new ShotSimulator(integrator, mass, step,
+                    maxFlightSeconds(step));
             AimResult result;
             try {
                 // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
                 double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
                 result = aim(method, simulator, gravity, distance, vx, step, toleranceMetres);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 float limit = integrator.maxStableStep(launch(vx,
                         (float) LevelAim.lectureVy(gravity, distance, vx), mass));
                 throw CommandSupport.blewUp(step, "during a shot", limit);
@@ -194,12 +217,58 @@ public final class AimCommand {
         Landing landing = new Landing();
         if (!simulator.fire(vx, firedVy, landing)) {
             throw new UsageException(DISTANCE + ": the " + method + " shot with vy=" + firedVy
-                    + " m/s is still in the air after " + MAX_FLIGHT_SECONDS + " s; the target"
-                    + " at S=" + distance + " m is out of reach");
+                    + " m/s is still in the air after " + maxFlightSeconds(step) + " s; the"
+                    + " target at S=" + distance + " m is out of reach");
         }
         double miss = landing.getX() - distance;
         return new AimResult(method, Math.abs(miss) <= tolerance, vx, firedVy,
                 landing.getTimeSeconds(), landing.getX(), distance, 1, "closed form");
+    }
+
+    /**
+     * Refuse a step so small that the shot would need more than {@link #MAX_STEPS_PER_SHOT}
+     * steps just to cover S at vx.
+     */
+    private static void checkStepCount(float distance, float vx, float step) {
+        double steps = distance / ((double) vx * step);
+        if (steps > MAX_STEPS_PER_SHOT) {
+            double smallest = distance / ((double) vx * MAX_STEPS_PER_SHOT);
+            float suggested = (float) smallest;
+            if (suggested < smallest) {
+                suggested = Math.nextUp(suggested);
+            }
+            throw new UsageException(TPF + ": a step of " + step + " s needs S/(vx*h) = "
+                    + (float) steps + " steps to reach S=" + distance + " m at vx=" + vx
+                    + " m/s, more than the limit " + MAX_STEPS_PER_SHOT + " (each step would"
+                    + " move x by less than 8 float round-off units); use --tpf >= "
+                    + suggested);
+        }
+    }
+
+    /**
+     * Refuse a shot whose drag-free vy, {@code g·S/(2·vx)}, is beyond the float range the
+     * bullet flies in, or so small that it rounds to a subnormal or to 0 (every method starts
+     * from it).
+     */
+    private static void checkFloatRange(float gravity, float distance, float vx) {
+        double vy = gravity * (double) distance / (2.0 * vx);
+        if (vy > Float.MAX_VALUE) {
+            throw new UsageException(VX + ": the launch needs vy = g*S/(2*vx) = " + vy
+                    + " m/s, beyond the float range (" + Float.MAX_VALUE + ") the shot is"
+                    + " stepped in; choose a larger " + VX + " or a smaller " + G + " or "
+                    + DISTANCE);
+        }
+        if (vy < Float.MIN_NORMAL) {
+            throw new UsageException(VX + ": the launch needs vy = g*S/(2*vx) = " + vy
+                    + " m/s, below the smallest normal float (" + Float.MIN_NORMAL + "): the"
+                    + " shot would be fired flat; choose a smaller " + VX + " or a larger "
+                    + G + " or " + DISTANCE);
+        }
+    }
+
+    /** The flight time allowed: {@link #MAX_FLIGHT_SECONDS}, or fewer at a tiny step. */
+    private static float maxFlightSeconds(float step) {
+        return (float) Math.min(MAX_FLIGHT_SECONDS, (double) MAX_STEPS_PER_SHOT * step);
     }
 
     private static Particle launch(float vx, float vy, float mass) {
@@ -224,24 +293,44 @@ public final class AimCommand {
             out.println("method:            discrete, vy corrected for the stepped shot");
         } else {
             out.println("method:            iterative, shoot and adjust (tolerance "
-                    + tolerance + " m)");
+                    + readable(tolerance) + " m)");
         }
-        out.println("launch:            vx = " + (float) vx + " m/s, vy = "
-                + (float) result.getVerticalSpeed() + " m/s");
-        String flight = "flight time:       " + result.getFlightSeconds() + " s (stepped shot)";
+        out.println("launch:            vx = " + readable(vx) + " m/s, vy = "
+                + readable(result.getVerticalSpeed()) + " m/s");
+        String flight = "flight time:       " + readable(result.getFlightSeconds())
+                + " s (stepped shot)";
         if (!IterativeAim.METHOD.equals(method)) {
-            flight += "; formula S/vx = " + LevelAim.flightTime(distance, vx) + " s";
+            flight += "; formula S/vx = " + readable(LevelAim.flightTime(distance, vx)) + " s";
         }
         out.println(flight);
-        out.println("predicted landing: " + result.getLandingX() + " m (target S = "
-                + (float) distance + " m)");
+        out.println("predicted landing: " + readable(result.getLandingX()) + " m (target S = "
+                + readable(distance) + " m)");
         double miss = result.getMiss();
-        out.println("miss:              " + miss + " m" + (miss < 0.0 ? " (short)"
+        out.println("miss:              " + readable(miss) + " m" + (miss < 0.0 ? " (short)"
                 : miss > 0.0 ? " (long)" : ""));
         out.println("shots simulated:   " + result.getShots());
         if (drag && !IterativeAim.METHOD.equals(method)) {
             out.println("note:              the " + method + " formula ignores drag; the"
                     + " stepped shot includes it");
         }
+    }
+
+    /**
+     * Format a number for a person: at most {@value #READABLE_DECIMALS} decimals, trailing
+     * zeros dropped ({@code 99.6668}, {@code 24.5}, {@code 5}); below 0.001 or from 1e7 on,
+     * three significant digits ({@code 0.000127}, {@code 2.50e+38}). {@code --csv} keeps
+     * every digit.
+     *
+     * @param value the number (finite)
+     * @return the text (not null)
+     */
+    static String readable(double value) {
+        double magnitude = Math.abs(value);
+        if (value != 0.0 && (magnitude < SMALL_READABLE || magnitude >= LARGE_READABLE)) {
+            return String.format(Locale.ROOT, "%.3g", value);
+        }
+        String text = new BigDecimal(value).setScale(READABLE_DECIMALS, RoundingMode.HALF_EVEN)
+                .stripTrailingZeros().toPlainString();
+        return "-0".equals(text) ? "0" : text;
     }
 }

@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.physics.Gravity;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.world.Body;
 import particlelab.world.Contact;
@@ -202,7 +203,7 @@ public final class BounceCommand {
         for (int n = 1; n <= steps; ++n) {
             try {
                 world.step(step);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(step, "at step " + n,
                         integrator.maxStableStep(ball.getParticle()));
             }

@@ -2,6 +2,7 @@ package particlelab.app;
 
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.world.Body;
 import particlelab.world.Contact;
@@ -202,7 +203,7 @@ public final class CollideCommand {
         for (int n = 0; n < steps && !recorder.done; ++n) {
             try {
                 world.step(step);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(step, "at step " + (n + 1), Float.POSITIVE_INFINITY);
             }
         }

@@ -1,7 +1,13 @@
 package particlelab.app;
 
 import java.io.File;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.nio.file.StandardOpenOption;
 import java.util.Arrays;
 import java.util.List;
 import java.util.logging.Level;
@@ -92,8 +98,8 @@ public final class DemoCommand {
                 return OK;
             }
             if (name != null && options.has(DEMO)) {
-                throw new UsageException(DEMO + ": the demo was already named " + name
-                        + "; give it once");
+                throw new UsageException(DEMO + ": the demo was already named "
+                        + Options.show(name) + "; give it once");
             }
             name = options.string(DEMO, name);
             frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
@@ -108,18 +114,66 @@ public final class DemoCommand {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
             }
+            if (screenshot != null) {
+                checkScreenshotPath(file);
+            }
         } catch (UsageException e) {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
         }
         int index = name == null ? 0 : DemoCatalog.indexOf(name);
         if (index < 0) {
-            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + name
+            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + Options.show(name)
                     + "'; the demos are " + String.join(", ", DemoCatalog.names()));
             return USAGE;
         }
         return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
                 err);
+    }
+
+    /**
+     * Check, before the window opens, that the screenshot can be written there: not a folder
+     * (which is never replaced), not under a file, and writable (a probe file is created and
+     * deleted, a file already there is opened for appending and left as it was). Missing
+     * folders on the way are created.
+     *
+     * @param text the path as given (not null)
+     * @throws UsageException if the PNG could not be written there
+     */
+    static void checkScreenshotPath(String text) {
+        String shown = Options.show(text);
+        Path path;
+        try {
+            path = Paths.get(text).toAbsolutePath();
+        } catch (InvalidPathException bad) {
+            throw new UsageException(SCREENSHOT + ": not a valid path, but was " + shown);
+        }
+        if (Files.isDirectory(path)) {
+            throw new UsageException(SCREENSHOT + ": " + shown + " is a folder; give a file"
+                    + " name such as " + Options.show(path.resolve("shot.png").toString()));
+        }
+        Path ancestor = path.getParent();
+        while (ancestor != null && !Files.exists(ancestor)) {
+            ancestor = ancestor.getParent();
+        }
+        if (ancestor != null && !Files.isDirectory(ancestor)) {
+            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
+                    + Options.show(ancestor.toString()) + " is a file, not a folder");
+        }
+        try {
+            if (path.getParent() != null) {
+                Files.createDirectories(path.getParent());
+            }
+            if (Files.exists(path)) {
+                Files.newOutputStream(path, StandardOpenOption.APPEND).close();
+            } else {
+                Files.createFile(path);
+                Files.delete(path);
+            }
+        } catch (IOException failure) {
+            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
+                    + UsageException.reason(failure));
+        }
     }
 
     /**
@@ -134,7 +188,9 @@ public final class DemoCommand {
                 .value(DEMO, "NAME", "the demo to open on; see --list")
                 .flag(LIST, "print the demo names, one per line, and exit")
                 .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
-                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames)")
+                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames);"
+                        + " checked before the window opens: a folder, a path under a file or"
+                        + " an unwritable place is refused")
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
@@ -193,12 +249,14 @@ public final class DemoCommand {
         ScreenshotCapture capture = app.getCapture();
         if (capture != null) {
             if (!capture.isWritten()) {
-                err.println("particle-lab: the screenshot " + screenshot + " was not written"
+                err.println("particle-lab: the screenshot "
+                        + Options.show(screenshot.toString()) + " was not written"
                         + (capture.getFailure() == null ? ""
-                                : ": " + capture.getFailure().getMessage()));
+                                : ": " + UsageException.reason(capture.getFailure())));
                 return FAILED;
             }
-            out.println("screenshot " + screenshot + ": " + capture.getStatistics());
+            out.println("screenshot " + Options.show(screenshot.toString()) + ": "
+                    + capture.getStatistics());
         }
         return OK;
     }

@@ -16,6 +16,10 @@ public final class Main {
 
     /** The launcher's name, as the installed script calls it. */
     public static final String PROGRAM = "particle-lab";
+    /** Exit status: the output could not be written (stdout closed or full). */
+    public static final int OUTPUT_FAILED = 1;
+    /** Exit status: a bug, reported in one line. */
+    public static final int INTERNAL_ERROR = 1;
     /** The help subcommand: alone, or followed by a command whose help to show. */
     public static final String HELP = "help";
 
@@ -38,7 +42,6 @@ public final class Main {
         PrintStream out = new PrintStream(
                 new BufferedOutputStream(new FileOutputStream(FileDescriptor.out)), false);
         int code = run(args, out, System.err);
-        out.flush();
         if (code != 0) {
             System.exit(code);
         }
@@ -50,9 +53,30 @@ public final class Main {
      * @param args the command line (not null)
      * @param out where results and help go (not null)
      * @param err where warnings and error lines go (not null)
-     * @return the exit code: 0 on success, 2 on a bad command line
+     * @return the exit code: 0 on success, 2 on a bad command line, {@link #OUTPUT_FAILED} when
+     *     out could not be written (closed, full), 1 when a window could not run or on a bug
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        int code;
+        try {
+            code = runCommand(args, out, err);
+        } catch (RuntimeException bug) {
+            // Every bad input has its own message; this is a bug. One line, still.
+            err.println(PROGRAM + ": internal error, please report it with the command line: "
+                    + bug.getClass().getSimpleName() + ": "
+                    + Options.show(String.valueOf(bug.getMessage())));
+            return INTERNAL_ERROR;
+        }
+        // checkError flushes out and tells whether any write to it failed.
+        if (out.checkError()) {
+            err.println(PROGRAM + ": could not write the output (stdout is closed or full);"
+                    + " the output is incomplete");
+            return OUTPUT_FAILED;
+        }
+        return code;
+    }
+
+    private static int runCommand(String[] args, PrintStream out, PrintStream err) {
         if (args.length == 0) {
             // What gradle run does: the window on the first demo, until it is closed.
             return DemoCommand.run(args, out, err);
@@ -86,7 +110,8 @@ public final class Main {
                 out.print(help());
                 return 0;
             default:
-                err.println(PROGRAM + ": unknown command " + command + "; the commands are "
+                err.println(PROGRAM + ": unknown command " + Options.show(command)
+                        + "; the commands are "
                         + COMMANDS + " (see " + PROGRAM + " --help)");
                 return UsageException.EXIT_CODE;
         }
@@ -122,6 +147,8 @@ public final class Main {
                 + "The demo and report commands are described by " + PROGRAM + " demo --help\n"
                 + "and " + PROGRAM + " report --help.\n"
                 + "\n"
-                + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr.\n";
+                + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr;\n"
+                + "1 when the output cannot be written (stdout closed or full) or the window\n"
+                + "cannot run.\n";
     }
 }

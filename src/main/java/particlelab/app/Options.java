@@ -48,9 +48,14 @@ public final class Options {
     private static final int HELP_WIDTH = 79;
     /** Where option descriptions start in the help text, unless a name is longer. */
     private static final int HELP_DESCRIPTION_COLUMN = 24;
-    private static final Pattern DECIMAL =
-            Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
     private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
+    /**
+     * The longest number accepted, in characters: far more than a float's 9 significant
+     * digits need, short enough that no argument can make parsing slow.
+     */
+    static final int MAX_NUMBER_LENGTH = 64;
+    /** Messages show at most this many characters of a value, then its length. */
+    private static final int MAX_SHOWN_LENGTH = 40;
 
     private final String command;
     private final String summary;
@@ -288,9 +293,31 @@ public final class Options {
         if (text == null) {
             return defaultValue;
         }
-        float value = parseNumber(text);
+        float value = parseNumber(name, text);
         if (!(Float.isFinite(value) && value > 0f)) {
             throw bad(name, "must be a finite number > 0", text);
+        }
+        return value;
+    }
+
+    /**
+     * Read an optional number of at least a minimum.
+     *
+     * @param name a declared option with a value
+     * @param defaultValue the value when the option is absent
+     * @param min the smallest value allowed (finite)
+     * @param why why that is the minimum, for the message, e.g. "so that 1/m is finite"
+     * @return the value given (finite, &ge;min), or defaultValue
+     * @throws UsageException if the value given is not a finite number &ge;min
+     */
+    public float floatAtLeast(String name, float defaultValue, float min, String why) {
+        String text = raw(name);
+        if (text == null) {
+            return defaultValue;
+        }
+        float value = parseNumber(name, text);
+        if (!(Float.isFinite(value) && value >= min)) {
+            throw bad(name, "must be a finite number >= " + min + " (" + why + ")", text);
         }
         return value;
     }
@@ -308,7 +335,7 @@ public final class Options {
         if (text == null) {
             return defaultValue;
         }
-        float value = parseNumber(text);
+        float value = parseNumber(name, text);
         if (!(Float.isFinite(value) && value >= 0f)) {
             throw bad(name, "must be a finite number >= 0", text);
         }
@@ -328,7 +355,7 @@ public final class Options {
         if (text == null) {
             return defaultValue;
         }
-        float value = parseNumber(text);
+        float value = parseNumber(name, text);
         if (!Float.isFinite(value)) {
             throw bad(name, "must be a finite number", text);
         }
@@ -378,9 +405,9 @@ public final class Options {
         }
         String[] parts = text.split(",", -1);
         if (parts.length == 3) {
-            float x = parseNumber(parts[0].trim());
-            float y = parseNumber(parts[1].trim());
-            float z = parseNumber(parts[2].trim());
+            float x = parseNumber(name, parts[0].trim());
+            float y = parseNumber(name, parts[1].trim());
+            float z = parseNumber(name, parts[2].trim());
             if (Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(z)) {
                 return new Vector3f(x, y, z);
             }
@@ -468,35 +495,93 @@ public final class Options {
     }
 
     /**
-     * Parse a decimal or a fraction {@code A/B} of two decimals.
+     * Parse a decimal or a fraction {@code A/B} of two decimals, in time linear in its length.
      *
+     * @param name the option, for the message when the text is too long
      * @return the value, or NaN if the text is neither
+     * @throws UsageException if the text is longer than {@link #MAX_NUMBER_LENGTH}
      */
-    private static float parseNumber(String text) {
+    private static float parseNumber(String name, String text) {
+        if (text.length() > MAX_NUMBER_LENGTH) {
+            throw bad(name, "a number has at most " + MAX_NUMBER_LENGTH + " characters", text);
+        }
         int slash = text.indexOf('/');
         if (slash < 0) {
-            return DECIMAL.matcher(text).matches() ? Float.parseFloat(text) : Float.NaN;
+            return isDecimal(text) ? Float.parseFloat(text) : Float.NaN;
         }
         String numerator = text.substring(0, slash);
         String denominator = text.substring(slash + 1);
-        if (!DECIMAL.matcher(numerator).matches() || !DECIMAL.matcher(denominator).matches()) {
+        if (!isDecimal(numerator) || !isDecimal(denominator)) {
             return Float.NaN;
         }
         return (float) (Double.parseDouble(numerator) / Double.parseDouble(denominator));
     }
 
-    /** Show a value in a one-line message: control characters (line breaks) made visible. */
-    private static String show(String text) {
-        StringBuilder shown = new StringBuilder(text.length());
-        for (int i = 0; i < text.length(); ++i) {
-            char c = text.charAt(i);
-            if (Character.isISOControl(c)) {
-                shown.append(String.format("\\u%04x", (int) c));
-            } else {
-                shown.append(c);
+    /**
+     * Test for a decimal {@code [+-]digits[.digits][(e|E)[+-]digits]} with at least one digit
+     * before the exponent ({@code 5.} and {@code .5} are decimals, {@code .} is not), in one
+     * pass over the characters (a regular expression backtracks on long digit runs).
+     */
+    private static boolean isDecimal(String text) {
+        int length = text.length();
+        int i = skipSign(text, 0);
+        int end = skipDigits(text, i);
+        int digits = end - i;
+        i = end;
+        if (i < length && text.charAt(i) == '.') {
+            end = skipDigits(text, i + 1);
+            digits += end - (i + 1);
+            i = end;
+        }
+        if (digits == 0) {
+            return false;
+        }
+        if (i < length && (text.charAt(i) == 'e' || text.charAt(i) == 'E')) {
+            int start = skipSign(text, i + 1);
+            i = skipDigits(text, start);
+            if (i == start) {
+                return false;
             }
         }
-        return shown.toString();
+        return i == length;
+    }
+
+    private static int skipSign(String text, int i) {
+        return i < text.length() && (text.charAt(i) == '+' || text.charAt(i) == '-') ? i + 1 : i;
+    }
+
+    private static int skipDigits(String text, int i) {
+        int j = i;
+        while (j < text.length() && text.charAt(j) >= '0' && text.charAt(j) <= '9') {
+            ++j;
+        }
+        return j;
+    }
+
+    /**
+     * Show a value in a one-line message: control characters (line breaks, terminal escapes)
+     * made visible as four-digit Unicode escapes, and a long value cut to its first
+     * {@value #MAX_SHOWN_LENGTH} characters followed by its length.
+     *
+     * @param text the value as given (not null)
+     * @return the text to print (not null, no control characters)
+     */
+    static String show(String text) {
+        int shown = Math.min(text.length(), MAX_SHOWN_LENGTH);
+        StringBuilder result = new StringBuilder(shown + 32);
+        for (int i = 0; i < shown; ++i) {
+            char c = text.charAt(i);
+            if (Character.isISOControl(c) || Character.getType(c) == Character.LINE_SEPARATOR
+                    || Character.getType(c) == Character.PARAGRAPH_SEPARATOR) {
+                result.append(String.format("\\u%04x", (int) c));
+            } else {
+                result.append(c);
+            }
+        }
+        if (shown < text.length()) {
+            result.append("... (").append(text.length()).append(" characters)");
+        }
+        return result.toString();
     }
 
     private static void appendEntry(String left, String description, StringBuilder text) {

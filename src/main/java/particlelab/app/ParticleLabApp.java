@@ -184,6 +184,11 @@ public final class ParticleLabApp extends SimpleApplication {
 
     @Override
     public void simpleUpdate(float tpf) {
+        if (!switcher.getSelected().isInitialized()) {
+            // The demo initialises on the frame after it is attached: until then the frame is
+            // blank, so it neither counts nor is captured.
+            return;
+        }
         ++frames;
         if (frames == frameLimit && capture != null) {
             capture.request();
@@ -200,7 +205,8 @@ public final class ParticleLabApp extends SimpleApplication {
     @Override
     public void handleError(String errorMessage, Throwable cause) {
         // One line for the user; jME's own handler would print the whole stack trace.
-        String reason = cause == null || cause.getMessage() == null ? ""
+        String reason = cause == null || cause.getMessage() == null
+                || cause.getMessage().trim().equals(errorMessage) ? ""
                 : ": " + cause.getMessage().trim().replace('\n', ' ');
         failure = errorMessage + reason;
         stop();

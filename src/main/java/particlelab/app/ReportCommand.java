@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.List;
 import particlelab.accuracy.BenchmarkTable;
 import particlelab.accuracy.ReportConfig;
 import particlelab.accuracy.SpeedVsErrorReport;
@@ -23,8 +24,11 @@ public final class ReportCommand {
     public static final String DEFAULT_OUT = "build/reports/speed-vs-error";
     /** Exit status: the report was written. */
     public static final int OK = 0;
-    /** Exit status: the files could not be written. */
-    public static final int FAILED = 1;
+    /**
+     * Exit status: the files could not be written. It is the usage code, as the help has
+     * always promised: an unwritable {@code --out} is a bad command line.
+     */
+    public static final int FAILED = UsageException.EXIT_CODE;
 
     private static final String COMMAND = Main.PROGRAM + " " + NAME;
     private static final String OUT = "--out";
@@ -53,8 +57,9 @@ public final class ReportCommand {
                         + " by gradle jmh, instead of timing in-process.")
                 .note("Without " + QUICK + " or " + TINY + " the full report takes about a"
                         + " minute on 2 cores.")
-                .note("Exit status: 0 when written; 1 when the folder could not be written; 2"
-                        + " on a bad command line, with one line on stderr.");
+                .note("Exit status: 0 when written; 2 on a bad command line or a folder that"
+                        + " cannot be written (checked before the work starts), with one line"
+                        + " on stderr.");
     }
 
     /**
@@ -81,9 +86,11 @@ public final class ReportCommand {
                     : options.has(TINY) ? ReportConfig.Size.TINY : ReportConfig.Size.FULL;
             folder = path(OUT, options.string(OUT, DEFAULT_OUT));
             if (Files.exists(folder) && !Files.isDirectory(folder)) {
-                throw new UsageException(OUT + ": " + folder + " is a file, not a folder");
+                throw new UsageException(OUT + ": " + Options.show(folder.toString())
+                        + " is a file, not a folder");
             }
             jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
+            checkWritable(folder);
         } catch (UsageException problem) {
             return CommandSupport.reportUsage(COMMAND, problem, err);
         }
@@ -95,8 +102,8 @@ public final class ReportCommand {
             new SpeedVsErrorReport(ReportConfig.of(size), folder, jmh)
                     .write(err, System.console() != null);
         } catch (IOException failure) {
-            err.println(COMMAND + ": could not write to " + folder + ": "
-                    + failure.getMessage());
+            err.println(COMMAND + ": " + OUT + ": could not write to "
+                    + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
             return FAILED;
         }
         out.printf("Wrote the speed-vs-error report (%d files) to %s in %.0f s; open index.md%n",
@@ -109,20 +116,52 @@ public final class ReportCommand {
         try {
             return Paths.get(text);
         } catch (InvalidPathException bad) {
-            throw new UsageException(option + ": not a valid path, but was " + text);
+            throw new UsageException(option + ": not a valid path, but was "
+                    + Options.show(text));
+        }
+    }
+
+    /**
+     * Create the folder and a probe file in it, so that an unwritable folder is refused in
+     * one line before a minute of work, with the system's reason.
+     */
+    private static void checkWritable(Path folder) {
+        try {
+            Files.createDirectories(folder);
+            Path probe = Files.createTempFile(folder, ".write-check", ".tmp");
+            Files.delete(probe);
+        } catch (IOException failure) {
+            throw new UsageException(OUT + ": cannot write to "
+                    + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
         }
     }
 
     private static Path benchmarks(String text) {
         Path file = path(JMH, text);
+        String shown = Options.show(text);
         if (!Files.isRegularFile(file)) {
-            throw new UsageException(JMH + ": the file " + text + " does not exist");
+            throw new UsageException(JMH + ": the file " + shown + " does not exist");
         }
+        BenchmarkTable table;
         try {
-            BenchmarkTable.read(file);
+            table = BenchmarkTable.read(file);
         } catch (IllegalArgumentException | IOException bad) {
-            throw new UsageException(JMH + ": " + text + " is not a benchmarks.csv ("
-                    + bad.getMessage() + ")");
+            throw new UsageException(JMH + ": " + shown + " is not a benchmarks.csv ("
+                    + Options.show(String.valueOf(bad.getMessage())) + ")");
+        }
+        List<BenchmarkTable.Row> rows = table.rows();
+        for (int i = 0; i < rows.size(); ++i) {
+            BenchmarkTable.Row row = rows.get(i);
+            double nanos = row.nanosPerParticleStep();
+            double bytes = row.bytesPerStep();
+            // bytes_per_step may be NaN: unknown. A time must be a measurement.
+            if (!(Double.isFinite(nanos) && nanos > 0.0) || Double.isInfinite(bytes)
+                    || bytes < 0.0) {
+                throw new UsageException(JMH + ": " + shown + " row " + (i + 1) + " ("
+                        + Options.show(row.name()) + ") must have a finite time > 0 and"
+                        + " bytes >= 0 or NaN, but has ns_per_particle_step=" + nanos
+                        + ", bytes_per_step=" + bytes);
+            }
         }
         return file;
     }

@@ -12,7 +12,9 @@ import com.jme3.util.BufferUtils;
 import java.awt.image.BufferedImage;
 import java.io.File;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.ByteBuffer;
+import java.nio.file.Files;
 import java.util.HashMap;
 import java.util.Map;
 import javax.imageio.ImageIO;
@@ -115,12 +117,19 @@ public final class ScreenshotCapture implements SceneProcessor {
         statistics = String.format("%dx%d pixels, %d distinct colours,"
                 + " the most common covers %.1f%%", width, height, counts.size(),
                 100.0 * most / (width * height));
+        // Our own stream: ImageIO.write(File) deletes what is at the path first (an empty
+        // folder included) and prints a stack trace when it cannot open the file.
+        ImageIO.setUseCache(false);
         try {
             File parent = file.getAbsoluteFile().getParentFile();
             if (parent != null) {
-                parent.mkdirs();
+                Files.createDirectories(parent.toPath());
             }
-            ImageIO.write(image, "png", file);
+            try (OutputStream stream = Files.newOutputStream(file.toPath())) {
+                if (!ImageIO.write(image, "png", stream)) {
+                    throw new IOException("no PNG writer is installed");
+                }
+            }
             written = true;
         } catch (IOException e) {
             failure = e;

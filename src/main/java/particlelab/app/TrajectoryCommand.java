@@ -3,6 +3,7 @@ package particlelab.app;
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import particlelab.physics.Gravity;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 
@@ -32,6 +33,8 @@ public final class TrajectoryCommand {
     public static final String HEADER = "t,x,y,z,vx,vy,vz";
     /** The most steps one run takes, whichever way its length is given. */
     public static final int MAX_STEPS = 1_000_000;
+    /** While printing, rows between checks that stdout still takes them. */
+    private static final int ROWS_PER_OUTPUT_CHECK = 1024;
 
     private static final String COMMAND = "particle-lab " + NAME;
     private static final String P0 = "--p0";
@@ -61,7 +64,8 @@ public final class TrajectoryCommand {
                 .value(P0, "X,Y,Z", "initial position P0 (m). Default 0,0,0.")
                 .value(V0, "X,Y,Z", "initial velocity V0 (m/s). Default 10,10,0, the lecture's"
                         + " gravitational-pull example.")
-                .value(MASS, "KG", "mass m (kg, > 0). Default 1.")
+                .value(MASS, "KG", "mass m (kg, > 0). At least " + Particle.MIN_MASS_KG
+                        + ", so that 1/m is a finite float. Default 1.")
                 .value(G, "X,Y,Z", "gravitational acceleration g (m/s^2), a vector. Default"
                         + " 0,-9.8,0; 0,0,0 leaves gravity out.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
@@ -71,7 +75,8 @@ public final class TrajectoryCommand {
                 .value(THRUST, "K", "thrust k in F = k*V/|V|, along the particle's own"
                         + " velocity, none at rest (N, >= 0). Default 0: none.")
                 .value(TPF, "H", "time step h (s, > 0), a decimal or a fraction such as 1/60."
-                        + " Default 1/60.")
+                        + " Default 1/60. A step too small to move the particle (h*|V0| below"
+                        + " half the float spacing at P0 on some axis) is refused.")
                 .value(STEPS, "N", "take N steps (0 to " + MAX_STEPS + "): N+1 rows.")
                 .value(DURATION, "T", "simulate T seconds (> 0): T/h rounded to the nearest"
                         + " whole number of steps, at least 1, at most " + MAX_STEPS + "; the"
@@ -109,7 +114,8 @@ public final class TrajectoryCommand {
             }
             Vector3f p0 = options.vector(P0, Vector3f.ZERO);
             Vector3f v0 = options.vector(V0, new Vector3f(10f, 10f, 0f));
-            float mass = options.positiveFloat(MASS, CommandSupport.DEFAULT_MASS_KG);
+            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
             Vector3f gravity = options.vector(G, new Vector3f(0f, -Gravity.STANDARD_G, 0f));
             float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
             float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
@@ -133,8 +139,10 @@ public final class TrajectoryCommand {
                 }
                 steps = MAX_STEPS;
             }
-            CommandSupport.warnIfUnstable(integrator, start, step, err);
+            checkStepMoves(p0, v0, step);
             int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null);
+            // Only a run that succeeded gets the warning: a blow-up is its one error line.
+            CommandSupport.warnIfUnstable(integrator, start, step, err);
             fly(integrator, start, step, taken, false, out);
             return 0;
         } catch (UsageException problem) {
@@ -157,6 +165,28 @@ public final class TrajectoryCommand {
     }
 
     /**
+     * Refuse a step too small to move the particle at all: on an axis where it starts moving,
+     * {@code h·|V0|} below half the float spacing at P0 rounds every step's move to nothing,
+     * and the CSV would show a particle standing still.
+     */
+    private static void checkStepMoves(Vector3f p0, Vector3f v0, float stepSeconds) {
+        String[] axes = {"x", "y", "z"};
+        for (int axis = 0; axis < 3; ++axis) {
+            float position = p0.get(axis);
+            double move = Math.abs((double) stepSeconds * v0.get(axis));
+            double halfSpacing = Math.ulp(position) / 2.0;
+            if (move > 0.0 && move < halfSpacing) {
+                String name = axes[axis];
+                throw new UsageException(TPF + ": a step of " + stepSeconds + " s moves "
+                        + name + " by h*|v" + name + "| = " + (float) move + " m, less than half"
+                        + " the float spacing at " + name + " = " + position + " m ("
+                        + (float) halfSpacing + " m), so " + name + " could never change; use"
+                        + " --tpf >= " + (float) (2.0 * halfSpacing / Math.abs(v0.get(axis))));
+            }
+        }
+    }
+
+    /**
      * Step a copy of the start, printing each state to out if out is not null.
      *
      * @param maxSteps the steps to take, or the most to take until the ground
@@ -176,12 +206,17 @@ public final class TrajectoryCommand {
         for (int n = 1; n <= maxSteps; ++n) {
             try {
                 integrator.step(particle, stepSeconds);
-            } catch (IllegalStateException nonFinite) {
+            } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(stepSeconds, "at step " + n,
                         integrator.maxStableStep(start));
             }
             if (out != null) {
                 printRow(n, stepSeconds, particle, row, out);
+                if (n % ROWS_PER_OUTPUT_CHECK == 0 && out.checkError()) {
+                    // The reader has gone (a closed pipe) or the disk is full: stop here;
+                    // Main reports it in one line.
+                    return n;
+                }
             }
             if (untilGround && particle.position.y < 0f) {
                 return n;

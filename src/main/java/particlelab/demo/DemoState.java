@@ -11,6 +11,7 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -455,7 +456,7 @@ public abstract class DemoState extends BaseAppState {
         if (!isSceneOver()) {
             try {
                 clock.advance(frameSeconds, stepper);
-            } catch (IllegalStateException blowUp) {
+            } catch (NonFiniteStepException blowUp) {
                 recoverFromBlowUp();
             }
             if (restartRequested) {

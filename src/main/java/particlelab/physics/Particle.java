@@ -10,6 +10,12 @@ import com.jme3.math.Vector3f;
  */
 public final class Particle {
 
+    /**
+     * The smallest mass allowed (in kilograms): the smallest normal float, about 1.2e-38, so
+     * that {@code 1/m} is a finite float (about 8.5e37).
+     */
+    public static final float MIN_MASS_KG = Float.MIN_NORMAL;
+
     /** Position P (in metres; live, modified in place by the integrator). */
     public final Vector3f position = new Vector3f();
     /** Velocity V (in metres per second; live, modified in place by the integrator). */
@@ -29,7 +35,7 @@ public final class Particle {
      *
      * @param position the initial position (in metres, finite, not null, copied)
      * @param velocity the initial velocity (in metres per second, finite, not null, copied)
-     * @param massKg the mass (in kilograms, finite, &gt;0)
+     * @param massKg the mass (in kilograms, finite, &ge;{@link #MIN_MASS_KG})
      */
     public Particle(Vector3f position, Vector3f velocity, float massKg) {
         setMass(massKg);
@@ -48,10 +54,10 @@ public final class Particle {
     /**
      * Alter the mass.
      *
-     * @param massKg the new mass (in kilograms, finite, &gt;0)
+     * @param massKg the new mass (in kilograms, finite, &ge;{@link #MIN_MASS_KG})
      */
     public void setMass(float massKg) {
-        this.massKg = Validate.positive(massKg, "mass (kg)");
+        this.massKg = checkMass(massKg);
     }
 
     /**
@@ -73,6 +79,7 @@ public final class Particle {
      * @param source the particle to copy (not null, not modified)
      */
     public void copyFrom(Particle source) {
+        Validate.notNull(source, "source");
         position.set(source.position);
         velocity.set(source.velocity);
         massKg = source.massKg;
@@ -85,6 +92,21 @@ public final class Particle {
      */
     public boolean isFinite() {
         return Validate.isFinite(position) && Validate.isFinite(velocity);
+    }
+
+    /**
+     * Require a mass this class accepts.
+     *
+     * @param massKg the mass to check (in kilograms)
+     * @return massKg
+     * @throws IllegalArgumentException unless finite and &ge;{@link #MIN_MASS_KG}
+     */
+    static float checkMass(float massKg) {
+        if (!(Float.isFinite(massKg) && massKg >= MIN_MASS_KG)) {
+            throw new IllegalArgumentException("mass (kg) must be finite and > 0, at least "
+                    + MIN_MASS_KG + " so that 1/m is a finite float, but was " + massKg);
+        }
+        return massKg;
     }
 
     @Override

@@ -17,6 +17,10 @@ import com.jme3.math.Vector3f;
  *
  * <p>An integrator holds the forces of one scene (or of one particle in a side-by-side scene)
  * and a few scratch vectors, so it is not thread-safe and {@link #step} allocates nothing.
+ *
+ * <p>Every method that takes an object refuses null with an {@link IllegalArgumentException}
+ * naming the parameter; a step that would make a particle non-finite throws
+ * {@link NonFiniteStepException}.
  */
 public final class ParticleIntegrator {
 
@@ -68,38 +72,31 @@ public final class ParticleIntegrator {
      *
      * @param particle the particle to move (not null, modified unless the step fails)
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0; 0 does nothing)
-     * @throws IllegalStateException if the step would leave the particle with a NaN or
-     *     infinite component (the step was far beyond the stability limit): stop rather than
-     *     spread NaN. The particle then keeps its last finite state.
+     * @throws NonFiniteStepException if the step would leave the particle with a NaN or
+     *     infinite component (the step was far beyond the stability limit, the numbers
+     *     overflowed the float range, or the particle was already non-finite): stop rather than
+     *     spread NaN. The particle then keeps its state from before the step.
      */
     public void step(Particle particle, float stepSeconds) {
+        Validate.notNull(particle, "particle");
         checkStep(stepSeconds);
         if (stepSeconds == 0f) {
             return;
         }
-        acceleration(particle, acceleration);
-        Vector3f velocity = particle.velocity;
-        Vector3f position = particle.position;
-        // V ← V + h·a, then P ← P + h·V with the new V (in locals: nothing is written
-        // until the result is known to be finite)
-        float vx = velocity.x + stepSeconds * acceleration.x;
-        float vy = velocity.y + stepSeconds * acceleration.y;
-        float vz = velocity.z + stepSeconds * acceleration.z;
-        float px = position.x + stepSeconds * vx;
-        float py = position.y + stepSeconds * vy;
-        float pz = position.z + stepSeconds * vz;
-        nextVelocity.set(vx, vy, vz);
-        nextPosition.set(px, py, pz);
+        computeStep(particle, stepSeconds);
         // One test for the usual case: a finite sum means six finite terms.
-        if (!Float.isFinite(vx + vy + vz + px + py + pz)
+        if (!Float.isFinite(nextVelocity.x + nextVelocity.y + nextVelocity.z
+                + nextPosition.x + nextPosition.y + nextPosition.z)
                 && (!Validate.isFinite(nextVelocity) || !Validate.isFinite(nextPosition))) {
-            throw new IllegalStateException("the Euler step h=" + stepSeconds
+            String why = particle.isFinite()
+                    ? "; the largest stable step here is " + maxStableStep(particle) + " s"
+                    : "; it was already non-finite before the step";
+            throw new NonFiniteStepException("the Euler step h=" + stepSeconds
                     + " s would leave the particle non-finite: " + particle
-                    + " would get P=" + nextPosition + ", V=" + nextVelocity
-                    + "; the largest stable step here is " + maxStableStep(particle) + " s");
+                    + " would get P=" + nextPosition + ", V=" + nextVelocity + why);
         }
-        velocity.set(vx, vy, vz);
-        position.set(px, py, pz);
+        particle.velocity.set(nextVelocity);
+        particle.position.set(nextPosition);
     }
 
     /**
@@ -109,7 +106,11 @@ public final class ParticleIntegrator {
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0)
      */
     public void step(Particle[] particles, float stepSeconds) {
+        Validate.notNull(particles, "particles");
         for (int i = 0; i < particles.length; ++i) {
+            if (particles[i] == null) {
+                throw new IllegalArgumentException("particles[" + i + "] must not be null");
+            }
             step(particles[i], stepSeconds);
         }
     }
@@ -127,25 +128,34 @@ public final class ParticleIntegrator {
      * <p>When the forces are only {@link Gravity} and {@link LinearDrag} (the usual scene),
      * they fold into two numbers per step, {@code r = 1 − h·b/m} and {@code h·g}, and the step
      * is {@code V ← r·V + h·g}, {@code P ← P + h·V}: the same arithmetic as the per-particle
-     * step, rearranged, so results agree to float rounding (a few ulp per step), and no
-     * particle is checked for NaN while {@code |r| ≤ 1}, where none can appear from finite
-     * input. Any other force is applied through a scratch particle, one particle at a time,
-     * with results identical to {@link #step(Particle, float)}. Allocates nothing.
+     * step, rearranged, so results agree to float rounding (a few ulp per step). Any other
+     * force is applied through a scratch particle, one particle at a time, with results
+     * identical to {@link #step(Particle, float)}. Allocates nothing.
+     *
+     * <p>Like {@link #step(Particle, float)} it refuses to spread NaN: after the step one pass
+     * over the positions checks that every particle is finite (a position is finite only if
+     * the velocity that moved it is), and otherwise it throws. It keeps no copy of the states
+     * (that would double the cost of every step), so on that failure the arrays hold the
+     * result of the step for every particle, the non-finite ones included: reset them before
+     * stepping again.
      *
      * @param positions P of every particle, planar (in metres, finite, length &ge; 3·count,
      *     modified)
      * @param velocities V of every particle, planar (in m/s, finite, length &ge; 3·count,
      *     modified)
      * @param count the number of particles (&ge;0)
-     * @param massKg the mass of each particle (in kilograms, finite, &gt;0)
+     * @param massKg the mass of each particle (in kilograms, finite,
+     *     &ge;{@link Particle#MIN_MASS_KG})
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0; 0 does nothing)
-     * @throws IllegalStateException if the step leaves a particle with a NaN or infinite
-     *     component (the step was far beyond the stability limit)
+     * @throws NonFiniteStepException if after the step a particle has a NaN or infinite
+     *     component (its state was already non-finite, the step was far beyond the stability
+     *     limit, or the numbers overflowed the float range); the message names the first such
+     *     particle and its state, and every particle has been stepped
      */
     public void stepPacked(float[] positions, float[] velocities, int count, float massKg,
             float stepSeconds) {
         checkPacked(positions, velocities, count);
-        Validate.positive(massKg, "mass (kg)");
+        Particle.checkMass(massKg);
         checkStep(stepSeconds);
         if (stepSeconds == 0f || count == 0) {
             return;
@@ -169,18 +179,20 @@ public final class ParticleIntegrator {
                 onlyGravityAndLinearDrag = false;
             }
         }
-        if (!onlyGravityAndLinearDrag) {
-            stepPackedOneByOne(positions, velocities, count, massKg, stepSeconds);
-            return;
-        }
         // a = g − (b/m)·V, so V + h·a = r·V + h·g with r = 1 − h·b/m
         float factor = 1f - stepSeconds * linearDrag * (1f / massKg);
-        for (int axis = 0; axis < 3; ++axis) {
-            stepAxis(positions, velocities, axis * count, count, factor,
-                    stepSeconds * g[axis], stepSeconds);
+        if (onlyGravityAndLinearDrag) {
+            for (int axis = 0; axis < 3; ++axis) {
+                stepAxis(positions, velocities, axis * count, count, factor,
+                        stepSeconds * g[axis], stepSeconds);
+            }
+        } else {
+            stepPackedOneByOne(positions, velocities, count, massKg, stepSeconds);
         }
-        if (Math.abs(factor) > 1f) {
-            checkPackedFinite(positions, velocities, count, stepSeconds, factor);
+        int bad = firstNonFinite(positions, 3 * count);
+        if (bad >= 0) {
+            throw packedFailure(positions, velocities, count, bad % count, stepSeconds,
+                    onlyGravityAndLinearDrag && factor < -1f ? factor : Float.NaN);
         }
     }
 
@@ -192,6 +204,8 @@ public final class ParticleIntegrator {
      * @return storeResult
      */
     public Vector3f acceleration(Particle particle, Vector3f storeResult) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(storeResult, "storeResult");
         fieldAcceleration.zero();
         netForce.zero();
         for (int i = 0; i < forces.length; ++i) {
@@ -385,6 +399,24 @@ public final class ParticleIntegrator {
         }
     }
 
+    /**
+     * Compute one Euler step of a particle into {@link #nextVelocity} and
+     * {@link #nextPosition}, without checking or committing it.
+     */
+    private void computeStep(Particle particle, float stepSeconds) {
+        acceleration(particle, acceleration);
+        Vector3f velocity = particle.velocity;
+        Vector3f position = particle.position;
+        // V ← V + h·a, then P ← P + h·V with the new V
+        float vx = velocity.x + stepSeconds * acceleration.x;
+        float vy = velocity.y + stepSeconds * acceleration.y;
+        float vz = velocity.z + stepSeconds * acceleration.z;
+        nextVelocity.set(vx, vy, vz);
+        nextPosition.set(position.x + stepSeconds * vx, position.y + stepSeconds * vy,
+                position.z + stepSeconds * vz);
+    }
+
+    /** The general packed path: every particle through {@link #computeStep}, unchecked. */
     private void stepPackedOneByOne(float[] positions, float[] velocities, int count,
             float massKg, float stepSeconds) {
         Particle particle = packedParticle;
@@ -394,26 +426,65 @@ public final class ParticleIntegrator {
             int z = 2 * count + i;
             particle.position.set(positions[i], positions[y], positions[z]);
             particle.velocity.set(velocities[i], velocities[y], velocities[z]);
-            step(particle, stepSeconds);
-            positions[i] = particle.position.x;
-            positions[y] = particle.position.y;
-            positions[z] = particle.position.z;
-            velocities[i] = particle.velocity.x;
-            velocities[y] = particle.velocity.y;
-            velocities[z] = particle.velocity.z;
+            computeStep(particle, stepSeconds);
+            positions[i] = nextPosition.x;
+            positions[y] = nextPosition.y;
+            positions[z] = nextPosition.z;
+            velocities[i] = nextVelocity.x;
+            velocities[y] = nextVelocity.y;
+            velocities[z] = nextVelocity.z;
         }
     }
 
-    private static void checkPackedFinite(float[] positions, float[] velocities, int count,
-            float stepSeconds, float factor) {
-        for (int i = 0; i < 3 * count; ++i) {
-            if (!Float.isFinite(positions[i]) || !Float.isFinite(velocities[i])) {
-                int particle = i % count;
-                throw new IllegalStateException("the Euler step h=" + stepSeconds
-                        + " s left packed particle " + particle + " non-finite: the velocity"
-                        + " factor 1 - h*b/m = " + factor + " is beyond -1 (h > 2m/b)");
+    /**
+     * Find the first non-finite value: one pass summing the values, sixteen at a time as a
+     * tree into four independent sums (short chains keep the additions in flight), then a
+     * search only if the total is not finite. A finite total means every value is finite (an
+     * infinity or NaN makes the sum infinite or NaN); a total that overflows although every
+     * value is finite costs only the search.
+     *
+     * @return its index, or -1 if every value is finite
+     */
+    private static int firstNonFinite(float[] values, int length) {
+        float sum0 = 0f;
+        float sum1 = 0f;
+        float sum2 = 0f;
+        float sum3 = 0f;
+        int i = 0;
+        for (; i + 16 <= length; i += 16) {
+            sum0 += (values[i] + values[i + 1]) + (values[i + 2] + values[i + 3]);
+            sum1 += (values[i + 4] + values[i + 5]) + (values[i + 6] + values[i + 7]);
+            sum2 += (values[i + 8] + values[i + 9]) + (values[i + 10] + values[i + 11]);
+            sum3 += (values[i + 12] + values[i + 13]) + (values[i + 14] + values[i + 15]);
+        }
+        for (; i < length; ++i) {
+            sum0 += values[i];
+        }
+        if (Float.isFinite((sum0 + sum1) + (sum2 + sum3))) {
+            return -1;
+        }
+        for (int j = 0; j < length; ++j) {
+            if (!Float.isFinite(values[j])) {
+                return j;
             }
         }
+        return -1;
+    }
+
+    private static NonFiniteStepException packedFailure(float[] positions, float[] velocities,
+            int count, int particle, float stepSeconds, float unstableFactor) {
+        int y = count + particle;
+        int z = 2 * count + particle;
+        String why = Float.isNaN(unstableFactor)
+                ? "its state was already non-finite or the numbers overflowed the float range"
+                : "the velocity factor 1 - h*b/m = " + unstableFactor + " is beyond -1"
+                        + " (h > 2m/b)";
+        return new NonFiniteStepException("the Euler step h=" + stepSeconds + " s left"
+                + " packed particle " + particle + " of " + count + " non-finite: P=("
+                + positions[particle] + ", " + positions[y] + ", " + positions[z] + "), V=("
+                + velocities[particle] + ", " + velocities[y] + ", " + velocities[z] + "); "
+                + why + "; every particle was stepped, so reset the arrays before stepping"
+                + " again");
     }
 
     private static void checkPacked(float[] positions, float[] velocities, int count) {

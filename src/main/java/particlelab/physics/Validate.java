@@ -5,10 +5,28 @@ import com.jme3.math.Vector3f;
 /**
  * Boundary checks shared by the physics and aiming code: each failure is an
  * {@link IllegalArgumentException} that names the parameter, the bad value and what is allowed.
+ * A null object is refused the same way, never with a {@link NullPointerException}:
+ * {@code "particle must not be null"}. This is the convention of every public method of
+ * {@code particlelab.physics} and {@code particlelab.aiming} that takes an object.
  */
 public final class Validate {
 
     private Validate() {
+    }
+
+    /**
+     * Require an object.
+     *
+     * @param <T> the object's type
+     * @param object the object to check
+     * @param name the parameter's name, for the message
+     * @return object
+     */
+    public static <T> T notNull(T object, String name) {
+        if (object == null) {
+            throw new IllegalArgumentException(name + " must not be null");
+        }
+        return object;
     }
 
     /**
@@ -126,6 +144,7 @@ public final class Validate {
      * @return true if no component is NaN or infinite
      */
     public static boolean isFinite(Vector3f vector) {
+        notNull(vector, "vector");
         return Float.isFinite(vector.x) && Float.isFinite(vector.y) && Float.isFinite(vector.z);
     }
 }

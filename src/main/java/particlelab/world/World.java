@@ -3,6 +3,7 @@ package particlelab.world;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 
@@ -39,7 +40,7 @@ import particlelab.physics.SimulationClock;
  * one-way surfaces), then each {@link ContactListener#accept}; an accepted contact faster
  * than the hit threshold queues an event in {@link #getImpacts()}.
  *
- * <p>A step that would leave a body non-finite throws an {@link IllegalStateException} (from
+ * <p>A step that would leave a body non-finite throws a {@link NonFiniteStepException} (from
  * the integrator, or from the world after a contact); the bodies already stepped keep their
  * new state. Not thread-safe.
  */
@@ -435,8 +436,8 @@ public final class World implements SimulationClock.Stepper {
      * comment).
      *
      * @param stepSeconds h (in seconds, finite, &ge;0; 0 does nothing)
-     * @throws IllegalStateException if the step would leave a body non-finite, or if called
-     *     from inside a step
+     * @throws NonFiniteStepException if the step would leave a body non-finite
+     * @throws IllegalStateException if called from inside a step
      */
     @Override
     public void step(float stepSeconds) {
@@ -713,7 +714,7 @@ public final class World implements SimulationClock.Stepper {
 
     private static void checkFinite(Body body) {
         if (body != null && !body.particle.isFinite()) {
-            throw new IllegalStateException("a contact left body " + body.getId()
+            throw new NonFiniteStepException("a contact left body " + body.getId()
                     + " non-finite: " + body);
         }
     }

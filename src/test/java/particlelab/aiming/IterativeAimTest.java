@@ -138,4 +138,20 @@ class IterativeAimTest {
                 result.getExplanation());
         assertEquals(0.0, result.getMiss(), 1e-3, result.toString());
     }
+
+    /**
+     * A search whose vy leaves the float range (g = 1e38: the lecture's 2.5e38 m/s lands
+     * short, doubling it overflows) once threw from the simulator; it is out of reach.
+     */
+    @Test
+    void aSearchBeyondTheFloatRangeIsOutOfReach() {
+        ParticleIntegrator integrator =
+                new ParticleIntegrator(new Gravity(new com.jme3.math.Vector3f(0f, -1e38f, 0f)));
+        IterativeAim aim = new IterativeAim(new ShotSimulator(integrator, 1f, 1f / 60f, 3600f),
+                1e38, 0.001, 100);
+        AimResult result = aim.aim(100.0, 20.0);
+        assertFalse(result.isHit());
+        assertTrue(result.getExplanation().contains("beyond the float range"),
+                result.getExplanation());
+    }
 }

@@ -63,4 +63,32 @@ class LaunchAnglesTest {
         double time = x / (speed * Math.cos(radians));
         return speed * Math.sin(radians) * time - G * time * time / 2.0;
     }
+
+    /**
+     * A huge launch speed once overflowed s⁴ and gave a −90° "solution". The angles tend to
+     * their true limits: the lob straight up, the flat shot along the line of sight atan(y/x).
+     */
+    @Test
+    void aHugeSpeedGivesTheLimitingAnglesNotMinusNinetyDegrees() {
+        for (double height : new double[] {0.0, 30.0, -30.0}) {
+            LaunchAngles angles = LaunchAngles.solve(1e100, 100.0, height, G);
+            assertTrue(angles.isReachable());
+            // u = s²/(g·x) ≈ 1e197: tan θ_high = 2u is far beyond 1e16, so θ_high rounds to
+            // π/2; tan θ_low = k + (1 + k²)/(2u) equals k = y/x to round-off.
+            assertEquals(Math.PI / 2.0, angles.getHighRadians(), 1e-15);
+            assertEquals(Math.atan(height / 100.0), angles.getLowRadians(), 1e-15);
+        }
+        // s = 1e200: s² overflows the double range, u itself is infinite, the limits hold.
+        LaunchAngles beyond = LaunchAngles.solve(1e200, 100.0, 30.0, G);
+        assertEquals(Math.atan(0.3), beyond.getLowRadians(), 1e-15);
+        assertEquals(Math.PI / 2.0, beyond.getHighRadians(), 0.0);
+    }
+
+    @Test
+    void proportionsBeyondTheDoubleRangeAreRefused() {
+        IllegalArgumentException thrown = org.junit.jupiter.api.Assertions.assertThrows(
+                IllegalArgumentException.class,
+                () -> LaunchAngles.solve(10.0, Double.MIN_VALUE, 1e300, G));
+        assertTrue(thrown.getMessage().contains("out of the double range"), thrown.getMessage());
+    }
 }

@@ -90,4 +90,18 @@ class LevelAimTest {
                 () -> LevelAim.discreteVy(G, 100.0, 20.0, 0.0));
         assertTrue(e.getMessage().contains("step h (s)"), e.getMessage());
     }
+
+    /** Closed forms that overflow the double range once returned Infinity. */
+    @Test
+    void resultsBeyondTheDoubleRangeAreRefused() {
+        IllegalArgumentException vy = assertThrows(IllegalArgumentException.class,
+                () -> LevelAim.lectureVy(1e300, 1e300, 1.0));
+        assertTrue(vy.getMessage().contains("out of the double range"), vy.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> LevelAim.flightTime(1e300, 1e-300));
+        assertThrows(IllegalArgumentException.class,
+                () -> LevelAim.discreteVy(1e300, 1e300, 1.0, 1.0 / 60.0));
+        // g·S overflows, g·S/(2·vx) does not: computed in the other order.
+        assertEquals(2.5e300, LevelAim.lectureVy(1e300, 100.0, 20.0), 1e286);
+        assertEquals(5e299, LevelAim.lectureVy(1e300, 1e300, 1e300), 1e285);
+    }
 }

@@ -155,6 +155,22 @@ class AimCommandTest {
         }
         assertTrue(lines.get(1).contains("vy = 24.5 m/s"), lines.get(1));
         assertTrue(lines.get(4).endsWith("(short)"), lines.get(4));
+        // What a person reads: 4 decimals (the CSV keeps every digit). The stepped shot's
+        // landing 99.66678946... m and miss -0.33321053... m.
+        assertEquals("flight time:       4.9833 s (stepped shot); formula S/vx = 5 s",
+                lines.get(2));
+        assertEquals("predicted landing: 99.6668 m (target S = 100 m)", lines.get(3));
+        assertEquals("miss:              -0.3332 m (short)", lines.get(4));
+    }
+
+    @Test
+    void readableNumbersHaveFourDecimalsOrThreeSignificantDigits() {
+        assertEquals("24.5", AimCommand.readable(24.5));
+        assertEquals("5", AimCommand.readable(5.0));
+        assertEquals("-0.3332", AimCommand.readable(-0.3332105352385639));
+        assertEquals("0.000127", AimCommand.readable(1.2658293799461262E-4));
+        assertEquals("2.50e+38", AimCommand.readable(2.4999999E38));
+        assertEquals("0", AimCommand.readable(-0.0));
     }
 
     @Test

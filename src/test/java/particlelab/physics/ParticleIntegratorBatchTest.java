@@ -83,12 +83,80 @@ class ParticleIntegratorBatchTest {
         float[] velocities = {1f, 2f, 3f, 4f, 1f, 1f, 1f, 1f, 0f, 0f, 0f, 0f};
         // h = 5 s with b/m = 10/s: the velocity factor is 1 − 50 = −49 per step; float
         // overflows after about 23 steps
-        IllegalStateException failure = assertThrows(IllegalStateException.class, () -> {
+        NonFiniteStepException failure = assertThrows(NonFiniteStepException.class, () -> {
             for (int n = 0; n < 100; ++n) {
                 integrator.stepPacked(positions, velocities, 4, 1f, 5f);
             }
         });
         assertTrue(failure.getMessage().contains("-49"), failure.getMessage());
+    }
+
+    /**
+     * Finite input that overflows the float range, and NaN input, are refused on both paths,
+     * as {@link ParticleIntegrator#step(Particle, float)} refuses them: the exception names
+     * the first non-finite particle, and every particle has been stepped.
+     */
+    @Test
+    void batchRefusesOverflowAndNonFiniteInputOnBothPaths() {
+        ParticleIntegrator folded = new ParticleIntegrator(new Gravity(), new LinearDrag(0.1f));
+        ParticleIntegrator general = new ParticleIntegrator(new Gravity(),
+                new QuadraticDrag(0.001f));
+        ParticleIntegrator strongGravity =
+                new ParticleIntegrator(new Gravity(new Vector3f(0f, -3e38f, 0f)));
+        for (ParticleIntegrator integrator : new ParticleIntegrator[] {folded, general}) {
+            // P near the top of the float range plus h·V overflows: particle 2's x
+            assertRefused(integrator, 2, 0, Float.MAX_VALUE, 1e37f);
+            // the same at the bottom of the range, P moved down by h·V
+            assertRefused(integrator, 1, 3, -Float.MAX_VALUE, -3e38f);
+            // NaN in the input is not passed through
+            assertRefused(integrator, 3, 5, 0f, Float.NaN);
+        }
+        // h·g finite, but V + h·g and then P overflow after a few steps
+        float[] positions = new float[3 * 2];
+        float[] velocities = new float[3 * 2];
+        NonFiniteStepException failure = assertThrows(NonFiniteStepException.class, () -> {
+            for (int n = 0; n < 100; ++n) {
+                strongGravity.stepPacked(positions, velocities, 2, 1f, 1f);
+            }
+        });
+        assertTrue(failure.getMessage().contains("packed particle 0 of 2"),
+                failure.getMessage());
+    }
+
+    @Test
+    void batchRefusesAMassWhoseInverseIsNotAFiniteFloat() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+        float[] three = new float[3];
+        IllegalArgumentException tiny = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(three, three, 1, 1e-39f, H));
+        assertTrue(tiny.getMessage().contains(String.valueOf(Particle.MIN_MASS_KG)),
+                tiny.getMessage());
+        integrator.stepPacked(three, three, 1, Particle.MIN_MASS_KG, H);
+        assertTrue(Float.isFinite(three[1]));
+    }
+
+    /**
+     * Step 6 particles whose one component (at index {@code particle + axis·6}) is set to
+     * position and velocity; expect a refusal naming that particle, and all others stepped.
+     */
+    private static void assertRefused(ParticleIntegrator integrator, int particle, int axisIndex,
+            float position, float velocity) {
+        int count = 6;
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        int axis = axisIndex % 3;
+        positions[axis * count + particle] = position;
+        velocities[axis * count + particle] = velocity;
+        // one more finite particle after the bad one, to see that it was stepped too
+        velocities[count + 5] = 1f;
+        NonFiniteStepException failure = assertThrows(NonFiniteStepException.class,
+                () -> integrator.stepPacked(positions, velocities, count, 1f, H));
+        assertTrue(failure.getMessage().contains("packed particle " + particle + " of 6"),
+                failure.getMessage());
+        assertTrue(failure.getMessage().contains("every particle was stepped"),
+                failure.getMessage());
+        // particle 5 rose by h·(1 + h·g_y) (plus drag, under 1%): it was stepped
+        assertEquals(H * (1f - 9.8f * H), positions[count + 5], 0.01f * H);
     }
 
     @Test

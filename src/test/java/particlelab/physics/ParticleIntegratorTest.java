@@ -307,4 +307,22 @@ class ParticleIntegratorTest {
         double exact = vx * (1 - Math.exp(-k * time)) / k;
         return particle.position.x - exact;
     }
+
+    /** The named exception, so callers can catch "the step blew up" and nothing else. */
+    @Test
+    void aNonFiniteStepThrowsNonFiniteStepExceptionAndKeepsTheState() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new LinearDrag(10f));
+        Particle particle = new Particle(new Vector3f(1f, 2f, 3f),
+                new Vector3f(3e38f, 0f, 0f), 1f);
+        // h·b/m = 50: V ← (1 − 50)·V overflows at once
+        NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
+                () -> integrator.step(particle, 5f));
+        assertTrue(thrown.getMessage().contains("largest stable step"), thrown.getMessage());
+        assertVectorEquals(new Vector3f(1f, 2f, 3f), particle.position, 0f);
+        assertVectorEquals(new Vector3f(3e38f, 0f, 0f), particle.velocity, 0f);
+        particle.velocity.x = Float.NaN;
+        NonFiniteStepException nan = assertThrows(NonFiniteStepException.class,
+                () -> integrator.step(particle, 1f / 60f));
+        assertTrue(nan.getMessage().contains("already non-finite"), nan.getMessage());
+    }
 }

@@ -73,8 +73,9 @@ class ParticleTest {
     void acceptsTinyAndHugeFiniteMasses() {
         Particle particle = new Particle();
 
-        particle.setMass(Float.MIN_VALUE);
-        assertEquals(Float.MIN_VALUE, particle.getMass(), 0f);
+        // The smallest mass whose 1/m is a finite float (Float.MIN_VALUE's is not).
+        particle.setMass(Particle.MIN_MASS_KG);
+        assertEquals(Particle.MIN_MASS_KG, particle.getMass(), 0f);
         particle.setMass(Float.MAX_VALUE);
         assertEquals(Float.MAX_VALUE, particle.getMass(), 0f);
     }
@@ -148,5 +149,16 @@ class ParticleTest {
         particle.velocity.x = 0f;
         particle.position.z = Float.NaN;
         assertFalse(particle.isFinite());
+    }
+
+    /** Below the smallest normal float, 1/m overflows and every step failed later. */
+    @Test
+    void aMassWhoseInverseIsNotAFiniteFloatIsRefused() {
+        IllegalArgumentException thrown = assertThrows(IllegalArgumentException.class,
+                () -> new Particle(POSITION, VELOCITY, 3e-39f));
+        assertTrue(thrown.getMessage().contains(String.valueOf(Particle.MIN_MASS_KG)),
+                thrown.getMessage());
+        Particle lightest = new Particle(POSITION, VELOCITY, Particle.MIN_MASS_KG);
+        assertTrue(Float.isFinite(1f / lightest.getMass()));
     }
 }
