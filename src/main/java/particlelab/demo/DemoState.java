@@ -14,6 +14,7 @@ import java.util.List;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.view.HudFont;
 import particlelab.view.HudView;
 import particlelab.view.TextFormat;
 
@@ -425,7 +426,7 @@ public abstract class DemoState extends BaseAppState {
         declareSharedKeys();
         declareKeys();
         AssetManager assets = app.getAssetManager();
-        BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
+        BitmapFont font = HudFont.load(assets);
 
         scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
