@@ -8,10 +8,9 @@ import com.jme3.texture.Texture;
 /**
  * The font of every text the app draws: DejaVu Sans Condensed (narrow, so long HUD lines fit)
  * rendered at {@value FontGenerator#RENDER_SIZE} px into {@code assets/Fonts} by
- * {@link FontGenerator}.
- * jME's own {@code Default.fnt} has no {@code λ} and only blank placeholders for {@code ²} and
- * {@code ·} ("m/s²" came out as
- * "m/s "); this one has every character of {@link #CHARACTERS}.
+ * {@link FontGenerator}. jME's own {@code Default.fnt} has no {@code λ} and only blank
+ * placeholders for {@code ²} and {@code ·} ("m/s²" came out as "m/s "); this one has every
+ * character of {@link #CHARACTERS}.
  */
 public final class HudFont {
 
