@@ -31,8 +31,8 @@ public final class HudView {
     private static final ColorRGBA BODY_COLOR = new ColorRGBA(0.88f, 0.92f, 1f, 1f);
     private static final ColorRGBA WARNING_COLOR = new ColorRGBA(1f, 0.42f, 0.3f, 1f);
     private static final ColorRGBA FOOTER_COLOR = new ColorRGBA(0.7f, 0.76f, 0.86f, 1f);
-    /** The help panel hides the scene and the HUD below the title (nearly opaque). */
-    private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 0.97f);
+    /** The help panel hides the scene and the HUD below the title (opaque). */
+    private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
 
     /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
     private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);

@@ -2,8 +2,7 @@ package particlelab.view;
 
 /**
  * How the side view maps the x-y plane (z = 0) onto the window: a region of the plane fills a
- * screen area at one scale, {@link #getPixelsPerMetre()}, centred across and standing on the
- * area's bottom edge (the ground stays just above the footer). Pure arithmetic, shared by the
+ * screen area at one scale, {@link #getPixelsPerMetre()}, as large as fits, centred in it. Pure arithmetic, shared by the
  * camera ({@link CameraFraming}) and the label layout, so labels are placed in pixels for
  * exactly the picture the camera shows.
  */
@@ -40,11 +39,12 @@ public final class PlaneView {
                 area.getHeight() / (yMax - yMin));
         windowWidth = width;
         windowHeight = height;
-        // The region's centre column goes to the area's centre column, its bottom to the
-        // area's bottom; then find the plane point that lands on the window's centre.
+        // The region's centre goes to the area's centre; then find the plane point that
+        // lands on the window's centre.
         float areaCentreX = area.getX() + area.getWidth() / 2f;
+        float areaCentreY = area.getY() + area.getHeight() / 2f;
         centreX = (xMin + xMax) / 2f + (width / 2f - areaCentreX) / pixelsPerMetre;
-        centreY = yMin + (height / 2f - area.getY()) / pixelsPerMetre;
+        centreY = (yMin + yMax) / 2f + (height / 2f - areaCentreY) / pixelsPerMetre;
         return this;
     }
 
