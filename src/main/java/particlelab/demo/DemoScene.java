@@ -46,6 +46,10 @@ final class DemoScene {
     /** Slot scores: covering text or leaving the window, covering a sphere, a trail point. */
     private static final int TEXT_PENALTY = 1_000_000;
     private static final int SPHERE_PENALTY = 1_000;
+    /** The least ground shown below y = 0, in scene label heights. */
+    private static final float GROUND_LABEL_ROOM = 1.8f;
+    /** Points sampled along each velocity arrow, which a label avoids like a trail. */
+    private static final int ARROW_SAMPLES = 16;
     /** A trail point counts as covered this close to a label (in pixels at HUD scale 1). */
     private static final float TRAIL_CLEARANCE = 3f;
 
@@ -198,8 +202,8 @@ final class DemoScene {
         labelWidths = new float[count];
         sphereX = new float[count];
         sphereY = new float[count];
-        nearX = new float[count * TRAIL_POINTS];
-        nearY = new float[count * TRAIL_POINTS];
+        nearX = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
+        nearY = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
     }
 
     /**
@@ -212,7 +216,19 @@ final class DemoScene {
     void layOut(HudLayout hud) {
         ScreenRect window = hud.getWindow();
         ScreenRect area = hud.getScene();
-        plane.fit(xMin, xMax, yMin, frameTop, area, window.getWidth(), window.getHeight());
+        labelSize = hud.getSceneLabelSize();
+        labelHeight = measure.lineHeight(labelSize);
+        // Frame enough ground below y = 0 for the distance marks: at least the declared band,
+        // and at least GROUND_LABEL_ROOM label heights on the screen (refined as the scale
+        // settles).
+        float bottom = yMin;
+        for (int pass = 0; pass < 3; ++pass) {
+            plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(),
+                    window.getHeight());
+            bottom = Math.min(yMin, -GROUND_LABEL_ROOM * labelHeight
+                    / plane.getPixelsPerMetre());
+        }
+        plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(), window.getHeight());
         float margin = hud.getMargin();
         textArea.set(margin, margin, window.getWidth() - 2f * margin,
                 window.getHeight() - 2f * margin);
@@ -220,8 +236,6 @@ final class DemoScene {
         fixedArea.set(Math.max(area.getX(), margin), area.getY(),
                 Math.min(area.getRight(), window.getWidth() - margin)
                         - Math.max(area.getX(), margin), area.getHeight());
-        labelSize = hud.getSceneLabelSize();
-        labelHeight = measure.lineHeight(labelSize);
         trailClearance = TRAIL_CLEARANCE * hud.getScale();
         hudRects.clear();
         hudRects.add(hud.getTitle());
@@ -375,7 +389,7 @@ final class DemoScene {
         }
     }
 
-    /** Collect the trail points within reach of any slot of one label, on the screen. */
+    /** Collect the trail and arrow points within reach of any slot of a label, on screen. */
     private void gatherTrailPoints(float centreX, float centreY, float radius, float width) {
         float far = LabelSlots.extent(radius, width, labelHeight);
         reach.set(centreX - far - trailClearance, centreY - far - trailClearance,
@@ -387,12 +401,25 @@ final class DemoScene {
                 trail.copyPoint(age, trailPoint);
                 float x = plane.screenX(trailPoint.x);
                 float y = plane.screenY(trailPoint.y);
-                if (reach.contains(x, y)) {
-                    nearX[nearCount] = x;
-                    nearY[nearCount] = y;
-                    ++nearCount;
+                keepIfNear(x, y);
+            }
+            if (arrowsVisible) {
+                Vector3f position = particles.get(i).getParticle().position;
+                Vector3f velocity = particles.get(i).getParticle().velocity;
+                for (int sample = 1; sample <= ARROW_SAMPLES; ++sample) {
+                    float along = ParticleView.ARROW_SECONDS * sample / ARROW_SAMPLES;
+                    keepIfNear(plane.screenX(position.x + along * velocity.x),
+                            plane.screenY(position.y + along * velocity.y));
                 }
             }
+        }
+    }
+
+    private void keepIfNear(float x, float y) {
+        if (reach.contains(x, y)) {
+            nearX[nearCount] = x;
+            nearY[nearCount] = y;
+            ++nearCount;
         }
     }
 

@@ -235,9 +235,22 @@ public final class HelloAimingDemo extends DemoState {
         }
     }
 
-    private void changeVx(float delta) {
-        vx = Math.max(MIN_VX, Math.min(MAX_VX, vx + delta));
+    /**
+     * Choose the horizontal speed of the next shot; the camera frames its arc.
+     *
+     * @param newVx the speed (in m/s, from {@link #MIN_VX} to {@link #MAX_VX})
+     */
+    public void setHorizontalSpeed(float newVx) {
+        if (!(newVx >= MIN_VX && newVx <= MAX_VX)) {
+            throw new IllegalArgumentException("vx must be from " + MIN_VX + " to " + MAX_VX
+                    + " m/s, but was " + newVx);
+        }
+        vx = newVx;
         frameArcs();
+    }
+
+    private void changeVx(float delta) {
+        setHorizontalSpeed(Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
     }
 
     /**

@@ -63,11 +63,14 @@ public final class DistanceGrid {
                 lastColumn, lastRow, spacing, xMin, xMax, yMax, labelEvery, true));
 
         float width = xMax - xMin;
-        Geometry ground = new Geometry("ground", new Quad(width, -yMin));
+        // The band reaches far below yMin: a frame that needs more ground for the distance
+        // marks (a tall region on a short screen) still finds ground there.
+        float groundDepth = -yMin + (yMax - yMin);
+        Geometry ground = new Geometry("ground", new Quad(width, groundDepth));
         Material groundMaterial = unshaded.clone();
         groundMaterial.setColor("Color", GROUND_COLOR);
         ground.setMaterial(groundMaterial);
-        ground.setLocalTranslation(xMin, yMin, BACK_Z);
+        ground.setLocalTranslation(xMin, -groundDepth, BACK_Z);
         node.attachChild(ground);
 
         float edgeHeight = spacing * 0.06f;

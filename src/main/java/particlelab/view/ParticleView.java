@@ -14,13 +14,14 @@ import com.jme3.scene.shape.Sphere;
 
 /**
  * Everything drawn for one particle: a lit sphere, its trail, its velocity arrow and a label
- * that follows it in a free slot beside it. {@link #update} moves them all in place and allocates nothing.
+ * that follows it in a free slot beside it ({@link #placeLabel}). {@link #update} moves them in
+ * place and allocates nothing.
  */
 public final class ParticleView {
 
     private static final int SPHERE_SAMPLES = 24;
-    /** Velocity arrows show this much travel (in seconds). */
-    private static final float ARROW_SECONDS = 0.4f;
+    /** Velocity arrows show this much travel (in seconds); labels keep clear of them. */
+    public static final float ARROW_SECONDS = 0.4f;
 
     private final Node node;
     private final Geometry sphere;

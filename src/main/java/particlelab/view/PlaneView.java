@@ -2,9 +2,9 @@ package particlelab.view;
 
 /**
  * How the side view maps the x-y plane (z = 0) onto the window: a region of the plane fills a
- * screen area at one scale, {@link #getPixelsPerMetre()}, as large as fits, centred in it. Pure arithmetic, shared by the
- * camera ({@link CameraFraming}) and the label layout, so labels are placed in pixels for
- * exactly the picture the camera shows.
+ * screen area at one scale, {@link #getPixelsPerMetre()}, as large as fits, centred in it.
+ * Pure arithmetic, shared by the camera ({@link CameraFraming}) and the label layout, so
+ * labels are placed in pixels for exactly the picture the camera shows.
  */
 public final class PlaneView {
 

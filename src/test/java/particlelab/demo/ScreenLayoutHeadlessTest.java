@@ -1,7 +1,6 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.font.BitmapCharacterSet;
 import com.jme3.font.BitmapText;
@@ -91,6 +90,46 @@ class ScreenLayoutHeadlessTest {
                 });
                 assertEquals(List.of(), problems, window[0] + "x" + window[1]);
             }
+        }
+    }
+
+    @Test
+    void theHighestArcTheKeysAllowStaysInTheSceneAreaAtEverySize() throws Exception {
+        HelloAimingDemo aiming = (HelloAimingDemo) demos().get(DemoCatalog.indexOf("aiming"));
+        for (int[] window : WINDOWS) {
+            List<String> problems = harness.call(() -> {
+                List<String> found = new ArrayList<>();
+                aiming.layOut(window[0], window[1]);
+                for (HelloAimingDemo.Aim aim : HelloAimingDemo.Aim.values()) {
+                    aiming.setAim(aim);
+                    aiming.setHorizontalSpeed(HelloAimingDemo.MIN_VX);
+                    aiming.fire();
+                    // The lowest vx flies S/vx = 8.3 s: 600 frames see it land.
+                    DemoParticle bullet = aiming.getParticles().get(0);
+                    ScreenRect area = aiming.getHud().getLayout().getScene();
+                    for (int frame = 0; frame < 600; ++frame) {
+                        aiming.update(H);
+                        PlaneView plane = aiming.getPlaneView();
+                        Vector3f p = bullet.getParticle().position;
+                        float radius = bullet.view.getRadius() * plane.getPixelsPerMetre();
+                        ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
+                                plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
+                        if (!area.contains(sphere)) {
+                            found.add(window[0] + "x" + window[1] + " " + aim + " frame "
+                                    + frame + ": bullet " + sphere + " leaves " + area);
+                            break;
+                        }
+                    }
+                    if (!bullet.hasLanded()) {
+                        found.add(aim + ": the shot did not land");
+                    }
+                }
+                aiming.setHorizontalSpeed(HelloAimingDemo.DEFAULT_VX);
+                aiming.setAim(HelloAimingDemo.Aim.LECTURE);
+                aiming.layOut(1280, 720);
+                return found;
+            });
+            assertEquals(List.of(), problems);
         }
     }
 
