@@ -80,6 +80,7 @@ final class DemoScene {
     private final ScreenRect reach = new ScreenRect();
     private final Vector3f trailPoint = new Vector3f();
     private TextMeasure measure;
+    private DistanceGrid grid;
     private float labelSize = HudLayout.SCENE_LABEL_SIZE;
     private float labelHeight;
     private float trailClearance = TRAIL_CLEARANCE;
@@ -173,8 +174,8 @@ final class DemoScene {
      */
     void build(AssetManager assets, BitmapFont font, Node sceneNode) {
         measure = TextMeasure.of(font);
-        DistanceGrid grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax,
-                gridSpacing, gridLabelEvery);
+        grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax, gridSpacing,
+                gridLabelEvery);
         sceneNode.attachChild(grid.getNode());
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
@@ -229,6 +230,7 @@ final class DemoScene {
                     / plane.getPixelsPerMetre());
         }
         plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(), window.getHeight());
+        grid.setGroundDepth(-bottom);
         float margin = hud.getMargin();
         textArea.set(margin, margin, window.getWidth() - 2f * margin,
                 window.getHeight() - 2f * margin);

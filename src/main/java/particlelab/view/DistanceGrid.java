@@ -32,6 +32,8 @@ public final class DistanceGrid {
 
     private final Node node = new Node("distance grid");
     private final List<SceneLabel> labels = new ArrayList<>();
+    private final Geometry ground;
+    private final float left;
 
     /**
      * Build a grid.
@@ -63,14 +65,13 @@ public final class DistanceGrid {
                 lastColumn, lastRow, spacing, xMin, xMax, yMax, labelEvery, true));
 
         float width = xMax - xMin;
-        // The band reaches far below yMin: a frame that needs more ground for the distance
-        // marks (a tall region on a short screen) still finds ground there.
-        float groundDepth = -yMin + (yMax - yMin);
-        Geometry ground = new Geometry("ground", new Quad(width, groundDepth));
+        left = xMin;
+        // A unit-high band, scaled to the depth the frame shows (setGroundDepth).
+        ground = new Geometry("ground", new Quad(width, 1f));
         Material groundMaterial = unshaded.clone();
         groundMaterial.setColor("Color", GROUND_COLOR);
         ground.setMaterial(groundMaterial);
-        ground.setLocalTranslation(xMin, -groundDepth, BACK_Z);
+        setGroundDepth(-yMin);
         node.attachChild(ground);
 
         float edgeHeight = spacing * 0.06f;
@@ -89,6 +90,16 @@ public final class DistanceGrid {
         for (int row = labelEvery; row <= lastRow; row += labelEvery) {
             addLabel(font, xMin, row * spacing, SceneLabel.Anchor.ABOVE_RIGHT);
         }
+    }
+
+    /**
+     * Make the ground band as deep as the frame shows below {@code y = 0}.
+     *
+     * @param depthMetres the band's depth (in metres, &gt;0)
+     */
+    public void setGroundDepth(float depthMetres) {
+        ground.setLocalScale(1f, depthMetres, 1f);
+        ground.setLocalTranslation(left, -depthMetres, BACK_Z);
     }
 
     /**

@@ -170,7 +170,11 @@ public final class ParticleView {
     public void placeLabel(PlaneView view, float size, int slot, ScreenRect where) {
         labelRect.set(where);
         labelSlot = slot;
-        label.setSize(size / view.getPixelsPerMetre());
+        float worldSize = size / view.getPixelsPerMetre();
+        if (label.getSize() != worldSize) {
+            // A new size makes jME rebuild the text's quads: only after a new layout.
+            label.setSize(worldSize);
+        }
         label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
     }
 
