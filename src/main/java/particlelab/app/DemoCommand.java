@@ -47,6 +47,11 @@ public final class DemoCommand {
     private static final String SCREENSHOT = "--screenshot";
     private static final String FIXED_TPF = "--fixed-tpf";
     private static final float MAX_FIXED_TPF = 1f;
+    private static final String WINDOW = "--window";
+    /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
+    private static final int MIN_WINDOW_WIDTH = 640;
+    private static final int MIN_WINDOW_HEIGHT = 360;
+    private static final int MAX_WINDOW_SIDE = 7680;
     /** Kept so the level set on jME's loggers is not lost to garbage collection. */
     private static final Logger JME_LOGGER = Logger.getLogger("com.jme3");
     private static final Logger WINDOW_LOGGER = Logger.getLogger("com.jme3.system.lwjgl");
@@ -85,6 +90,7 @@ public final class DemoCommand {
         int frames;
         File screenshot;
         float fixedTpf;
+        int[] window;
         try {
             options.parse(optionArgs);
             if (options.isHelpRequested()) {
@@ -110,6 +116,7 @@ public final class DemoCommand {
                 throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
                         + " s, but was " + fixedTpf);
             }
+            window = parseWindow(options.string(WINDOW, null));
             if (screenshot != null && frames == 0) {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
@@ -126,6 +133,9 @@ public final class DemoCommand {
             err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + Options.show(name)
                     + "'; the demos are " + String.join(", ", DemoCatalog.names()));
             return USAGE;
+        }
+        if (window != null) {
+            System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
         return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
                 err);
@@ -177,6 +187,35 @@ public final class DemoCommand {
     }
 
     /**
+     * Read a window size such as {@code 1920x1080}.
+     *
+     * @param value the option's value, or null if not given
+     * @return {width, height} in pixels, or null if not given
+     * @throws UsageException if it is not WIDTHxHEIGHT within the sizes accepted
+     */
+    static int[] parseWindow(String value) {
+        if (value == null) {
+            return null;
+        }
+        String problem = WINDOW + ": must be WIDTHxHEIGHT in pixels, from " + MIN_WINDOW_WIDTH
+                + "x" + MIN_WINDOW_HEIGHT + " to " + MAX_WINDOW_SIDE + "x" + MAX_WINDOW_SIDE
+                + ", e.g. 1920x1080, but was " + Options.show(value);
+        int x = value.indexOf('x');
+        if (x < 1 || x > 4 || value.length() - x - 1 < 1 || value.length() - x - 1 > 4
+                || !value.substring(0, x).chars().allMatch(Character::isDigit)
+                || !value.substring(x + 1).chars().allMatch(Character::isDigit)) {
+            throw new UsageException(problem);
+        }
+        int width = Integer.parseInt(value.substring(0, x));
+        int height = Integer.parseInt(value.substring(x + 1));
+        if (width < MIN_WINDOW_WIDTH || height < MIN_WINDOW_HEIGHT || width > MAX_WINDOW_SIDE
+                || height > MAX_WINDOW_SIDE) {
+            throw new UsageException(problem);
+        }
+        return new int[] {width, height};
+    }
+
+    /**
      * Declare the command's options, for parsing and for its help.
      *
      * @return new options (not null)
@@ -193,6 +232,7 @@ public final class DemoCommand {
                         + " an unwritable place is refused")
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
+                .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720)")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }

@@ -31,6 +31,8 @@ public final class ParticleLabApp extends SimpleApplication {
     /** The window's size (in pixels). */
     public static final int WIDTH = 1280;
     public static final int HEIGHT = 720;
+    /** A system property "WIDTHxHEIGHT" that overrides the window's size (set by --window). */
+    public static final String WINDOW_SIZE_PROPERTY = "particlelab.window";
     /** The window's title. */
     public static final String TITLE = "Particle Lab - game particle physics, lecture demos";
     private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
@@ -108,6 +110,11 @@ public final class ParticleLabApp extends SimpleApplication {
     public static AppSettings createSettings(float fixedFrameSeconds) {
         AppSettings settings = new AppSettings(true);
         settings.setResolution(WIDTH, HEIGHT);
+        String size = System.getProperty(WINDOW_SIZE_PROPERTY);
+        if (size != null) {
+            int[] window = DemoCommand.parseWindow(size);
+            settings.setResolution(window[0], window[1]);
+        }
         settings.setTitle(TITLE);
         settings.setAudioRenderer(null);
         settings.setVSync(false);

@@ -90,8 +90,7 @@ final class DemoKeys {
             help.section("Choosing a demo");
             addSection(help, application);
         }
-        help.section("Camera (jME)");
-        help.key("drag mouse / wheel", "look around / zoom;  W A S D Q Z  fly;  R  reframes");
+        help.jmeKeys();
         return help.toString();
     }
 

@@ -12,7 +12,14 @@ import java.util.ArrayList;
 import java.util.List;
 import particlelab.view.CameraFraming;
 import particlelab.view.DistanceGrid;
+import particlelab.view.HudLayout;
+import particlelab.view.LabelSlots;
 import particlelab.view.ParticleView;
+import particlelab.view.PlaneView;
+import particlelab.view.SceneLabel;
+import particlelab.view.ScreenRect;
+import particlelab.view.TextMeasure;
+import particlelab.view.Trail;
 
 /**
  * What a demo's scene shows and where the camera looks: the region of the x-y plane the camera
@@ -21,6 +28,12 @@ import particlelab.view.ParticleView;
  * while it creates its scene ({@link DemoState#setView}, {@link DemoState#addMarker}); the
  * scene is built once, at initialisation; then the views follow the particles each frame,
  * allocating nothing.
+ *
+ * <p>The layout ({@link #layOut}) fits the region into the screen area the HUD leaves free and
+ * places every text in pixels: the posts' names and the distance marks are shifted inside the
+ * window or hidden where they would cover the HUD or each other; each frame, every particle's
+ * label takes the first slot beside its sphere ({@link LabelSlots}) that covers no HUD text,
+ * no other label, no other sphere and no trail, keeping its slot while that stays free.
  */
 final class DemoScene {
 
@@ -30,6 +43,15 @@ final class DemoScene {
     private static final float GROUND_BAND_SPACINGS = 1.5f;
     /** A post's radius (as a fraction of the particles' radius). */
     private static final float POST_RADIUS_FRACTION = 0.6f;
+    /** Slot scores: covering text or leaving the window, covering a sphere, a trail point. */
+    private static final int TEXT_PENALTY = 1_000_000;
+    private static final int SPHERE_PENALTY = 1_000;
+    /** The least ground shown below y = 0, in scene label heights. */
+    private static final float GROUND_LABEL_ROOM = 1.8f;
+    /** Points sampled along each velocity arrow, which a label avoids like a trail. */
+    private static final int ARROW_SAMPLES = 16;
+    /** A trail point counts as covered this close to a label (in pixels at HUD scale 1). */
+    private static final float TRAIL_CLEARANCE = 3f;
 
     private final List<DemoParticle> particles;
     private final List<Marker> markers = new ArrayList<>();
@@ -37,10 +59,40 @@ final class DemoScene {
     private float xMax = 22f;
     private float yMin = -1.5f;
     private float yMax = 8f;
+    /** The top of what the camera frames (in metres, at most yMax). */
+    private float frameTop = 8f;
     private float gridSpacing = 1f;
     private int gridLabelEvery = 5;
     private float sphereRadius = 0.35f;
     private boolean arrowsVisible = true;
+
+    private final PlaneView plane = new PlaneView();
+    /** The posts' names, then the distance marks: placed once per layout, in this order. */
+    private final List<SceneLabel> fixedLabels = new ArrayList<>();
+    /** The HUD's text rectangles, which no scene text may cover. */
+    private final List<ScreenRect> hudRects = new ArrayList<>();
+    /** The window less its margin: where every text must stay. */
+    private final ScreenRect textArea = new ScreenRect();
+    /** The scene's area within the margins: where the fixed labels must stay. */
+    private final ScreenRect fixedArea = new ScreenRect();
+    private final ScreenRect candidate = new ScreenRect();
+    private final ScreenRect chosen = new ScreenRect();
+    private final ScreenRect reach = new ScreenRect();
+    private final Vector3f trailPoint = new Vector3f();
+    private TextMeasure measure;
+    private DistanceGrid grid;
+    private float labelSize = HudLayout.SCENE_LABEL_SIZE;
+    private float labelHeight;
+    private float trailClearance = TRAIL_CLEARANCE;
+    private boolean laidOut;
+    /** Per particle: its label's width (px), and its sphere's centre on the screen (px). */
+    private float[] labelWidths = new float[0];
+    private float[] sphereX = new float[0];
+    private float[] sphereY = new float[0];
+    /** Scratch: the trail points near the label being placed, on the screen (px). */
+    private float[] nearX = new float[0];
+    private float[] nearY = new float[0];
+    private int nearCount;
 
     /**
      * Create the scene of one demo, with the default region.
@@ -74,10 +126,26 @@ final class DemoScene {
         this.xMin = xMin;
         this.xMax = xMax;
         this.yMax = yMax;
+        this.frameTop = yMax;
         this.yMin = -GROUND_BAND_SPACINGS * gridSpacingMetres;
         gridSpacing = gridSpacingMetres;
         gridLabelEvery = labelEvery;
         sphereRadius = sphereRadiusMetres;
+    }
+
+    /**
+     * Choose how high the camera frames, within the region: e.g. the apex of the highest shot
+     * in the air. Takes effect at the next {@link #layOut}.
+     *
+     * @param top the top edge to frame (in metres, &gt;0; more than the region's top frames
+     *     the region's top)
+     */
+    void setFrameTop(float top) {
+        if (!(top > 0f) || Float.isInfinite(top)) {
+            throw new IllegalArgumentException("frame top (m) must be finite and > 0, but was "
+                    + top);
+        }
+        frameTop = Math.min(top, yMax);
     }
 
     /**
@@ -105,14 +173,20 @@ final class DemoScene {
      * @param sceneNode where to attach everything (not null, modified)
      */
     void build(AssetManager assets, BitmapFont font, Node sceneNode) {
-        sceneNode.attachChild(new DistanceGrid(assets, font, xMin, xMax, yMin, yMax,
-                gridSpacing, gridLabelEvery).getNode());
+        measure = TextMeasure.of(font);
+        grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax, gridSpacing,
+                gridLabelEvery);
+        sceneNode.attachChild(grid.getNode());
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
-            sceneNode.attachChild(ParticleView.createPost(assets, font, marker.label,
-                    marker.x, marker.height, POST_RADIUS_FRACTION * sphereRadius,
-                    marker.color));
+            sceneNode.attachChild(ParticleView.createPost(assets, marker.label, marker.x,
+                    marker.height, POST_RADIUS_FRACTION * sphereRadius, marker.color));
+            SceneLabel name = new SceneLabel(font, marker.label, marker.color, marker.x,
+                    marker.height, SceneLabel.Anchor.ABOVE);
+            fixedLabels.add(name);
+            sceneNode.attachChild(name.getText());
         }
+        fixedLabels.addAll(grid.getLabels());
         DirectionalLight sun = new DirectionalLight(
                 new Vector3f(-0.4f, -0.6f, -0.7f).normalizeLocal(), ColorRGBA.White.clone());
         sceneNode.addLight(sun);
@@ -120,11 +194,75 @@ final class DemoScene {
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             particle.view = new ParticleView(assets, font, particle.getLabel(),
-                    particle.getColor(), sphereRadius, TRAIL_POINTS, i);
+                    particle.getColor(), sphereRadius, TRAIL_POINTS);
             particle.view.getTrail().add(particle.getParticle().position);
             particle.view.getArrow().setVisible(arrowsVisible);
             sceneNode.attachChild(particle.view.getNode());
         }
+        int count = particles.size();
+        labelWidths = new float[count];
+        sphereX = new float[count];
+        sphereY = new float[count];
+        nearX = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
+        nearY = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
+    }
+
+    /**
+     * Fit the region into the screen area the HUD leaves free, and place the fixed labels
+     * (posts' names, distance marks) and the particles' labels for that layout. Call after
+     * {@link #build}, and again whenever the HUD's layout changed.
+     *
+     * @param hud the HUD's layout (not null, not modified)
+     */
+    void layOut(HudLayout hud) {
+        ScreenRect window = hud.getWindow();
+        ScreenRect area = hud.getScene();
+        labelSize = hud.getSceneLabelSize();
+        labelHeight = measure.lineHeight(labelSize);
+        // Frame enough ground below y = 0 for the distance marks: at least the declared band,
+        // and at least GROUND_LABEL_ROOM label heights on the screen (refined as the scale
+        // settles).
+        float bottom = yMin;
+        for (int pass = 0; pass < 3; ++pass) {
+            plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(),
+                    window.getHeight());
+            bottom = Math.min(yMin, -GROUND_LABEL_ROOM * labelHeight
+                    / plane.getPixelsPerMetre());
+        }
+        plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(), window.getHeight());
+        grid.setGroundDepth(-bottom);
+        float margin = hud.getMargin();
+        textArea.set(margin, margin, window.getWidth() - 2f * margin,
+                window.getHeight() - 2f * margin);
+        // The fixed labels stay inside the scene's area (marks above the frame are hidden).
+        fixedArea.set(Math.max(area.getX(), margin), area.getY(),
+                Math.min(area.getRight(), window.getWidth() - margin)
+                        - Math.max(area.getX(), margin), area.getHeight());
+        trailClearance = TRAIL_CLEARANCE * hud.getScale();
+        hudRects.clear();
+        hudRects.add(hud.getTitle());
+        hudRects.add(hud.getBody());
+        hudRects.add(hud.getWarning());
+        hudRects.add(hud.getFooter());
+        for (int i = 0; i < fixedLabels.size(); ++i) {
+            SceneLabel label = fixedLabels.get(i);
+            label.preferredRect(plane, measure, labelSize, candidate);
+            // Shift a mark that would stick out of the window ("14 m" at the right edge).
+            float x = Math.max(fixedArea.getX(),
+                    Math.min(candidate.getX(), fixedArea.getRight() - candidate.getWidth()));
+            candidate.set(x, candidate.getY(), candidate.getWidth(), candidate.getHeight());
+            boolean free = fixedArea.contains(candidate) && !coversHud(candidate);
+            for (int j = 0; j < i && free; ++j) {
+                SceneLabel other = fixedLabels.get(j);
+                free = !(other.isVisible() && other.getRect().intersects(candidate));
+            }
+            label.apply(plane, labelSize, candidate, free);
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            labelWidths[i] = measure.width(particles.get(i).getLabel(), labelSize);
+        }
+        laidOut = true;
+        placeParticleLabels(true);
     }
 
     /**
@@ -136,6 +274,37 @@ final class DemoScene {
             particle.view.update(particle.getParticle().position,
                     particle.getParticle().velocity);
         }
+        if (laidOut) {
+            placeParticleLabels(false);
+        }
+    }
+
+    /**
+     * Access the plane's mapping to the window of the last layout.
+     *
+     * @return the live mapping (not null, do not modify)
+     */
+    PlaneView getPlaneView() {
+        return plane;
+    }
+
+    /**
+     * Copy the screen rectangle of every scene text shown (posts' names, distance marks,
+     * particles' labels) into a list, for tests of the layout.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
+        for (int i = 0; i < fixedLabels.size(); ++i) {
+            if (fixedLabels.get(i).isVisible()) {
+                storeResult.add(new ScreenRect().set(fixedLabels.get(i).getRect()));
+            }
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            storeResult.add(new ScreenRect().set(particles.get(i).view.getLabelRect()));
+        }
+        return storeResult;
     }
 
     /**
@@ -176,7 +345,131 @@ final class DemoScene {
      * @param camera the application's camera (not null, modified)
      */
     void frame(Camera camera) {
-        CameraFraming.frame(camera, xMin, xMax, yMin, yMax);
+        CameraFraming.frame(camera, plane);
+    }
+
+    /**
+     * Give every particle's label the best slot beside its sphere, in the particles' order:
+     * keep the slot it has while that stays free (unless a nearer one is free), else take the
+     * slot that covers least. Allocates nothing.
+     *
+     * @param fresh true to choose again from scratch (after a new layout)
+     */
+    private void placeParticleLabels(boolean fresh) {
+        int count = particles.size();
+        for (int i = 0; i < count; ++i) {
+            Vector3f position = particles.get(i).getParticle().position;
+            sphereX[i] = plane.screenX(position.x);
+            sphereY[i] = plane.screenY(position.y);
+        }
+        float radius = sphereRadius * plane.getPixelsPerMetre();
+        for (int i = 0; i < count; ++i) {
+            ParticleView view = particles.get(i).view;
+            float width = labelWidths[i];
+            gatherTrailPoints(sphereX[i], sphereY[i], radius, width);
+            int current = fresh ? -1 : view.getLabelSlot();
+            int best = -1;
+            int bestScore = Integer.MAX_VALUE;
+            int currentScore = Integer.MAX_VALUE;
+            for (int slot = 0; slot < LabelSlots.COUNT; ++slot) {
+                LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight,
+                        candidate);
+                int score = score(candidate, i, radius);
+                if (slot == current) {
+                    currentScore = score;
+                }
+                if (score < bestScore) {
+                    bestScore = score;
+                    best = slot;
+                }
+            }
+            boolean keep = current >= 0 && currentScore == 0
+                    && LabelSlots.ring(best) >= LabelSlots.ring(current);
+            int slot = keep ? current : best;
+            LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
+            view.placeLabel(plane, labelSize, slot, chosen);
+        }
+    }
+
+    /** Collect the trail and arrow points within reach of any slot of a label, on screen. */
+    private void gatherTrailPoints(float centreX, float centreY, float radius, float width) {
+        float far = LabelSlots.extent(radius, width, labelHeight);
+        reach.set(centreX - far - trailClearance, centreY - far - trailClearance,
+                2f * (far + trailClearance), 2f * (far + trailClearance));
+        nearCount = 0;
+        for (int i = 0; i < particles.size(); ++i) {
+            Trail trail = particles.get(i).view.getTrail();
+            for (int age = 0; age < trail.size(); ++age) {
+                trail.copyPoint(age, trailPoint);
+                float x = plane.screenX(trailPoint.x);
+                float y = plane.screenY(trailPoint.y);
+                keepIfNear(x, y);
+            }
+            if (arrowsVisible) {
+                Vector3f position = particles.get(i).getParticle().position;
+                Vector3f velocity = particles.get(i).getParticle().velocity;
+                for (int sample = 1; sample <= ARROW_SAMPLES; ++sample) {
+                    float along = ParticleView.ARROW_SECONDS * sample / ARROW_SAMPLES;
+                    keepIfNear(plane.screenX(position.x + along * velocity.x),
+                            plane.screenY(position.y + along * velocity.y));
+                }
+            }
+        }
+    }
+
+    private void keepIfNear(float x, float y) {
+        if (reach.contains(x, y)) {
+            nearX[nearCount] = x;
+            nearY[nearCount] = y;
+            ++nearCount;
+        }
+    }
+
+    /** Score a place for particle self's label: 0 when it covers nothing. */
+    private int score(ScreenRect place, int self, float radius) {
+        int score = 0;
+        if (!textArea.contains(place) || coversHud(place)) {
+            score += TEXT_PENALTY;
+        }
+        for (int i = 0; i < fixedLabels.size(); ++i) {
+            SceneLabel label = fixedLabels.get(i);
+            if (label.isVisible() && label.getRect().intersects(place)) {
+                score += TEXT_PENALTY;
+            }
+        }
+        for (int i = 0; i < self; ++i) {
+            if (particles.get(i).view.getLabelRect().intersects(place)) {
+                score += TEXT_PENALTY;
+            }
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            if (i != self && sphereX[i] + radius > place.getX()
+                    && sphereX[i] - radius < place.getRight()
+                    && sphereY[i] + radius > place.getY()
+                    && sphereY[i] - radius < place.getTop()) {
+                score += SPHERE_PENALTY;
+            }
+        }
+        float left = place.getX() - trailClearance;
+        float right = place.getRight() + trailClearance;
+        float bottom = place.getY() - trailClearance;
+        float top = place.getTop() + trailClearance;
+        for (int i = 0; i < nearCount; ++i) {
+            if (nearX[i] >= left && nearX[i] <= right && nearY[i] >= bottom
+                    && nearY[i] <= top) {
+                ++score;
+            }
+        }
+        return score;
+    }
+
+    private boolean coversHud(ScreenRect place) {
+        for (int i = 0; i < hudRects.size(); ++i) {
+            if (hudRects.get(i).intersects(place)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** A post declared by {@link #addMarker}, built by {@link #build}. */

@@ -15,7 +15,11 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.view.HudFont;
+import particlelab.view.HudLayout;
 import particlelab.view.HudView;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 
 /**
@@ -206,6 +210,23 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Frame less than the whole region: up to a height (e.g. the apex of the shot in the
+     * air), at most the region's top. Call from {@link #createScene()} or later; the camera
+     * is reframed at once.
+     *
+     * @param topMetres the top edge to frame (in metres, finite, &gt;0)
+     */
+    protected void setViewTop(float topMetres) {
+        scene.setFrameTop(topMetres);
+        if (hud != null) {
+            scene.layOut(hud.getLayout());
+            if (isEnabled()) {
+                frameCamera();
+            }
+        }
+    }
+
+    /**
      * Add a labelled post standing on the ground, such as a gun or a target. Call from
      * {@link #createScene()}.
      *
@@ -357,6 +378,49 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
+     * suits it, and frame the camera for it if it has that size. Call on the jME thread,
+     * after initialisation.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     */
+    public void layOut(int width, int height) {
+        hud.layOut(width, height, HudLayout.scaleFor(width, height));
+        hud.takeLayoutChange();
+        scene.layOut(hud.getLayout());
+        scene.updateViews();
+        if (isEnabled() && getApplication().getCamera().getWidth() == width
+                && getApplication().getCamera().getHeight() == height) {
+            frameCamera();
+        }
+    }
+
+    /**
+     * Copy the screen rectangle of every text shown, HUD and scene, into a list: what a test
+     * checks for overlaps. The scene's texts are left out while the help hides them.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
+        hud.copyTextRects(storeResult);
+        if (!hud.isHelpVisible()) {
+            scene.copyTextRects(storeResult);
+        }
+        return storeResult;
+    }
+
+    /**
+     * Access the mapping of the scene's plane to the window, as last laid out.
+     *
+     * @return the live mapping (not null, do not modify)
+     */
+    public PlaneView getPlaneView() {
+        return scene.getPlaneView();
+    }
+
+    /**
      * Count the steps that blew up (and reset the scene) since the demo was created.
      *
      * @return the count (&ge;0)
@@ -489,7 +553,7 @@ public abstract class DemoState extends BaseAppState {
         declareSharedKeys();
         declareKeys();
         AssetManager assets = app.getAssetManager();
-        BitmapFont font = assets.loadFont("Interface/Fonts/Default.fnt");
+        BitmapFont font = HudFont.load(assets);
 
         scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
@@ -499,6 +563,10 @@ public abstract class DemoState extends BaseAppState {
         refreshEquations();
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
+        // The body's lines size the HUD's band, and the band the scene's area.
+        hud.setBody(formatHud(hudText));
+        hud.takeLayoutChange();
+        scene.layOut(hud.getLayout());
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
         scene.updateViews();
@@ -534,6 +602,11 @@ public abstract class DemoState extends BaseAppState {
             hudDirty = false;
             hud.setBody(formatHud(hudText));
             hud.setWarning(warnings.format(warningText));
+            if (hud.takeLayoutChange()) {
+                // The body needed a line more: the scene's area shrank.
+                scene.layOut(hud.getLayout());
+                frameCamera();
+            }
         }
     }
 

@@ -8,6 +8,7 @@ import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
 
 /**
@@ -39,6 +40,16 @@ public final class HelloAimingDemo extends DemoState {
     public static final float MIN_VX = 12f;
     public static final float MAX_VX = 60f;
     private static final float VX_STEP = 1f;
+    /**
+     * The longest step a shot can be aimed for (s): the hitch key's frame, taken as one raw
+     * step; the clock caps other frames at less.
+     */
+    private static final float LONGEST_STEP = Math.max(DemoState.HITCH_SECONDS,
+            SimulationClock.DEFAULT_MAX_FRAME_SECONDS);
+    /** Room kept above the apex, as a fraction of it. */
+    private static final float HEADROOM = 0.12f;
+    /** The view never frames less than this height (m): the target and the gun stay clear. */
+    private static final float MIN_VIEW_TOP = 20f;
     /** Shots in the air longer than this count as lost (s). */
     private static final float MAX_FLIGHT_SECONDS = 60f;
     private static final float GRAVITY = Gravity.STANDARD_G;
@@ -73,6 +84,7 @@ public final class HelloAimingDemo extends DemoState {
     private Aim lastShotAim = Aim.LECTURE;
     /** The vx and formula of the shot in the air. */
     private float shotVx;
+    private float shotVy;
     private Aim shotAim = Aim.LECTURE;
     /** The demo's keys, named in the HUD. */
     private KeyBinding fireKey;
@@ -176,7 +188,9 @@ public final class HelloAimingDemo extends DemoState {
         launch(bullet, launchVelocity);
         getClock().reset();
         shotVx = vx;
+        shotVy = launchVelocity.y;
         shotAim = aim;
+        frameArcs();
         landingRecorded = false;
         ++shots;
     }
@@ -189,10 +203,16 @@ public final class HelloAimingDemo extends DemoState {
                 integrator).stopAtGround();
         shots = 1;
         shotVx = vx;
+        shotVy = launchVelocity.y;
         shotAim = aim;
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
-        setView(-6f, 116f, 34f, 5f, 2, 1.1f);
+        // The grid reaches the highest arc the keys allow: the slowest vx, aimed for the
+        // longest step. The camera frames only as high as the arcs in play (frameArcs).
+        float highestVy = (float) LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, MIN_VX,
+                LONGEST_STEP);
+        setView(-6f, 116f, (1f + HEADROOM) * apex(highestVy), 5f, 2, 1.1f);
+        frameArcs();
     }
 
     @Override
@@ -276,8 +296,41 @@ public final class HelloAimingDemo extends DemoState {
         return TextFormat.appendFixed(text, shotVx, 1).append(" m/s");
     }
 
+    /**
+     * Choose the horizontal speed of the next shot; the camera frames its arc.
+     *
+     * @param newVx the speed (in m/s, from {@link #MIN_VX} to {@link #MAX_VX})
+     */
+    public void setHorizontalSpeed(float newVx) {
+        if (!(newVx >= MIN_VX && newVx <= MAX_VX)) {
+            throw new IllegalArgumentException("vx must be from " + MIN_VX + " to " + MAX_VX
+                    + " m/s, but was " + newVx);
+        }
+        vx = newVx;
+        frameArcs();
+    }
+
     private void changeVx(float delta) {
-        vx = Math.max(MIN_VX, Math.min(MAX_VX, vx + delta));
+        setHorizontalSpeed(Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
+    }
+
+    /**
+     * Frame both the shot in the air and the one the gun would fire now, apex and all.
+     */
+    private void frameArcs() {
+        float highest = Math.max(apex(shotVy), apex(getVerticalSpeed()));
+        setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
+    }
+
+    /**
+     * Return the apex of a level shot's continuous parabola, {@code vy²/(2g)}: the stepped
+     * shot's samples lie on the parabola launched with {@code vy − g·h/2}, just below it.
+     *
+     * @param vy the launch's vertical speed (in m/s)
+     * @return the height (in metres)
+     */
+    private static float apex(float vy) {
+        return vy * vy / (2f * GRAVITY);
     }
 
     /**

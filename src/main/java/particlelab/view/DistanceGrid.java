@@ -2,10 +2,8 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.font.BitmapText;
 import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
-import com.jme3.renderer.queue.RenderQueue;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Mesh;
 import com.jme3.scene.Node;
@@ -13,11 +11,14 @@ import com.jme3.scene.VertexBuffer;
 import com.jme3.scene.shape.Quad;
 import com.jme3.util.BufferUtils;
 import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * The backdrop of a side view: graph paper in the x-y plane behind the particles, the ground
  * as a band below {@code y = 0}, and distance marks ("20 m") along the ground and up the left
- * edge. Built once; nothing in it changes per frame.
+ * edge, which the scene's layout sizes and places ({@link #getLabels}). Built once; nothing in
+ * it changes per frame.
  */
 public final class DistanceGrid {
 
@@ -30,6 +31,9 @@ public final class DistanceGrid {
     private static final float BACK_Z = -0.05f;
 
     private final Node node = new Node("distance grid");
+    private final List<SceneLabel> labels = new ArrayList<>();
+    private final Geometry ground;
+    private final float left;
 
     /**
      * Build a grid.
@@ -61,11 +65,13 @@ public final class DistanceGrid {
                 lastColumn, lastRow, spacing, xMin, xMax, yMax, labelEvery, true));
 
         float width = xMax - xMin;
-        Geometry ground = new Geometry("ground", new Quad(width, -yMin));
+        left = xMin;
+        // A unit-high band, scaled to the depth the frame shows (setGroundDepth).
+        ground = new Geometry("ground", new Quad(width, 1f));
         Material groundMaterial = unshaded.clone();
         groundMaterial.setColor("Color", GROUND_COLOR);
         ground.setMaterial(groundMaterial);
-        ground.setLocalTranslation(xMin, yMin, BACK_Z);
+        setGroundDepth(-yMin);
         node.attachChild(ground);
 
         float edgeHeight = spacing * 0.06f;
@@ -76,21 +82,34 @@ public final class DistanceGrid {
         edge.setLocalTranslation(xMin, -edgeHeight / 2f, BACK_Z / 2f);
         node.attachChild(edge);
 
-        float labelSize = spacing * 0.45f;
         for (int column = firstColumn; column <= lastColumn; ++column) {
             if (column % labelEvery == 0) {
-                BitmapText mark = label(font, labelSize, metres(column * spacing));
-                mark.setLocalTranslation(column * spacing - mark.getLineWidth() / 2f,
-                        -labelSize * 0.3f, 0f);
-                node.attachChild(mark);
+                addLabel(font, column * spacing, 0f, SceneLabel.Anchor.BELOW);
             }
         }
         for (int row = labelEvery; row <= lastRow; row += labelEvery) {
-            BitmapText mark = label(font, labelSize, metres(row * spacing));
-            mark.setLocalTranslation(xMin + labelSize * 0.3f, row * spacing + labelSize * 1.1f,
-                    0f);
-            node.attachChild(mark);
+            addLabel(font, xMin, row * spacing, SceneLabel.Anchor.ABOVE_RIGHT);
         }
+    }
+
+    /**
+     * Make the ground band as deep as the frame shows below {@code y = 0}.
+     *
+     * @param depthMetres the band's depth (in metres, &gt;0)
+     */
+    public void setGroundDepth(float depthMetres) {
+        ground.setLocalScale(1f, depthMetres, 1f);
+        ground.setLocalTranslation(left, -depthMetres, BACK_Z);
+    }
+
+    /**
+     * Access the distance marks, along the ground first, then up the left edge; the scene's
+     * layout sizes and places them.
+     *
+     * @return the live list (not null, do not modify)
+     */
+    public List<SceneLabel> getLabels() {
+        return labels;
     }
 
     /**
@@ -106,13 +125,11 @@ public final class DistanceGrid {
         return Math.round(value) + " m";
     }
 
-    private static BitmapText label(BitmapFont font, float size, String text) {
-        BitmapText label = new BitmapText(font);
-        label.setSize(size);
-        label.setColor(LABEL_COLOR);
-        label.setText(text);
-        label.setQueueBucket(RenderQueue.Bucket.Transparent);
-        return label;
+    private void addLabel(BitmapFont font, float x, float y, SceneLabel.Anchor anchor) {
+        float value = anchor == SceneLabel.Anchor.BELOW ? x : y;
+        SceneLabel label = new SceneLabel(font, metres(value), LABEL_COLOR, x, y, anchor);
+        labels.add(label);
+        node.attachChild(label.getText());
     }
 
     private static Geometry lines(String name, Material unshaded, ColorRGBA color,

@@ -34,6 +34,21 @@ public final class HelpText {
         return this;
     }
 
+    /**
+     * Add the section of jME's own keys and the camera's, which every window has.
+     *
+     * @return this
+     */
+    public HelpText jmeKeys() {
+        section("jME's keys and the camera");
+        key("Esc", "quit the app");
+        key("F5", "show / hide jME's frame statistics");
+        key("C", "print the camera's position to the console");
+        key("M", "print memory use to the console");
+        key("drag mouse / wheel", "turn / zoom the camera;  W A S D Q Z  fly;  R  reframes");
+        return this;
+    }
+
     @Override
     public String toString() {
         return text.toString();

@@ -11,10 +11,14 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import com.jme3.scene.shape.Quad;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * The screen-space text of a demo: a title, a body (equations and live numbers), a warning
- * line, a footer with the main keys, and a help panel shown on request. Sized for a projector.
+ * line, a footer with the main keys, and a help panel shown on request. Where each goes is
+ * decided by a {@link HudLayout} from the window's size and the text's measured size, so no
+ * text covers another at any window size; text wider than the window is wrapped.
  *
  * <p>Text is only handed to jME when it differs from what is shown: {@code BitmapText.setText}
  * copies the text into a new String and rebuilds its glyph quads, so each change allocates.
@@ -23,31 +27,40 @@ import com.jme3.scene.shape.Quad;
  */
 public final class HudView {
 
-    /** Text sizes (in pixels). */
-    private static final float TITLE_SIZE = 32f;
-    private static final float BODY_SIZE = 21f;
-    private static final float FOOTER_SIZE = 19f;
-    private static final float MARGIN = 14f;
     private static final ColorRGBA TITLE_COLOR = new ColorRGBA(1f, 0.93f, 0.6f, 1f);
     private static final ColorRGBA BODY_COLOR = new ColorRGBA(0.88f, 0.92f, 1f, 1f);
     private static final ColorRGBA WARNING_COLOR = new ColorRGBA(1f, 0.42f, 0.3f, 1f);
     private static final ColorRGBA FOOTER_COLOR = new ColorRGBA(0.7f, 0.76f, 0.86f, 1f);
-    private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 0.88f);
+    /** The help panel hides the scene and the HUD below the title (opaque). */
+    private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
+
+    /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
+    private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
 
     private final Node node = new Node("HUD");
+    private final Geometry backdrop;
+    private final BitmapFont font;
+    private final TextMeasure measure;
+    private final HudLayout layout;
     private final BitmapText title;
     private final BitmapText body;
     private final BitmapText warning;
     private final BitmapText footer;
     private final Node helpPanel = new Node("help panel");
-    private final BitmapText helpText;
+    private final List<BitmapText> helpColumns = new ArrayList<>();
     private final Geometry helpBackground;
-    private final float screenWidth;
-    private final float screenHeight;
+    private float screenWidth;
+    private float screenHeight;
+    private float scale;
+    private String titleSource = "";
+    private String footerSource = "";
+    private String helpSource = "";
+    private boolean layoutChanged;
     private int textChanges;
 
     /**
-     * Create the HUD for a screen.
+     * Create the HUD for a screen, at the HUD scale that suits it
+     * ({@link HudLayout#scaleFor}).
      *
      * @param assetManager loads materials (not null)
      * @param font the font (not null)
@@ -56,20 +69,25 @@ public final class HudView {
      */
     public HudView(AssetManager assetManager, BitmapFont font, int screenWidth,
             int screenHeight) {
-        this.screenWidth = screenWidth;
-        this.screenHeight = screenHeight;
-        title = text(font, TITLE_SIZE, TITLE_COLOR);
-        title.setLocalTranslation(MARGIN, screenHeight - MARGIN, 1f);
-        body = text(font, BODY_SIZE, BODY_COLOR);
-        body.setLocalTranslation(MARGIN, screenHeight - MARGIN - TITLE_SIZE * 1.3f, 1f);
-        footer = text(font, FOOTER_SIZE, FOOTER_COLOR);
-        footer.setLocalTranslation(MARGIN, MARGIN + FOOTER_SIZE, 1f);
-        warning = text(font, BODY_SIZE * 1.15f, WARNING_COLOR);
-        warning.setLocalTranslation(MARGIN, MARGIN + FOOTER_SIZE * 3.4f, 1f);
+        this.font = font;
+        this.measure = TextMeasure.of(font);
+        this.layout = new HudLayout(measure);
+        title = text(font, TITLE_COLOR);
+        body = text(font, BODY_COLOR);
+        footer = text(font, FOOTER_COLOR);
+        warning = text(font, WARNING_COLOR);
         node.attachChild(title);
         node.attachChild(body);
         node.attachChild(footer);
         node.attachChild(warning);
+
+        Material shade = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
+        shade.setColor("Color", BACKDROP_COLOR);
+        shade.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        backdrop = new Geometry("HUD backdrop", new Quad(1f, 1f));
+        backdrop.setMaterial(shade);
+        backdrop.setQueueBucket(RenderQueue.Bucket.Gui);
+        node.attachChild(backdrop);
 
         Material panel = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
         panel.setColor("Color", PANEL_COLOR);
@@ -77,11 +95,67 @@ public final class HudView {
         helpBackground = new Geometry("help background", new Quad(1f, 1f));
         helpBackground.setMaterial(panel);
         helpBackground.setQueueBucket(RenderQueue.Bucket.Gui);
-        helpText = text(font, BODY_SIZE, BODY_COLOR);
         helpPanel.attachChild(helpBackground);
-        helpPanel.attachChild(helpText);
         helpPanel.setCullHint(Spatial.CullHint.Always);
         node.attachChild(helpPanel);
+        layOut(screenWidth, screenHeight, HudLayout.scaleFor(screenWidth, screenHeight));
+    }
+
+    /**
+     * Lay the HUD out again, for a window of another size or another HUD scale.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param hudScale the text scale (&gt;0; {@link HudLayout#scaleFor} suits the window)
+     */
+    public void layOut(float width, float height, float hudScale) {
+        screenWidth = width;
+        screenHeight = height;
+        scale = hudScale;
+        relayOut();
+    }
+
+    /**
+     * Access the layout: where each text block goes, and the area left to the scene.
+     *
+     * @return the live layout (not null, do not modify)
+     */
+    public HudLayout getLayout() {
+        return layout;
+    }
+
+    /**
+     * Test, and forget, whether the layout changed since the last call (the body grew a line
+     * the band had no room for), so the scene must be laid out again.
+     *
+     * @return true if it changed
+     */
+    public boolean takeLayoutChange() {
+        boolean changed = layoutChanged;
+        layoutChanged = false;
+        return changed;
+    }
+
+    /**
+     * Copy the screen rectangle of every HUD text shown into a list, for tests of the layout:
+     * the title, body, warning and footer, or with the help shown, the title and the help's
+     * columns (the panel hides the rest).
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
+        storeResult.add(rectOf(title));
+        if (isHelpVisible()) {
+            for (BitmapText column : helpColumns) {
+                storeResult.add(rectOf(column));
+            }
+        } else {
+            storeResult.add(rectOf(body));
+            storeResult.add(rectOf(warning));
+            storeResult.add(rectOf(footer));
+        }
+        return storeResult;
     }
 
     /**
@@ -99,7 +173,10 @@ public final class HudView {
      * @param text the title (not null)
      */
     public void setTitle(CharSequence text) {
-        set(title, text);
+        if (!TextFormat.sameText(text, titleSource)) {
+            titleSource = text.toString();
+            relayOut();
+        }
     }
 
     /**
@@ -109,7 +186,12 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setBody(CharSequence text) {
-        return set(body, text);
+        boolean changed = setWrapped(body, text, layout.getBodySize());
+        if (changed && body.getLineCount() > layout.getBodyLines()) {
+            relayOut();
+            layoutChanged = true;
+        }
+        return changed;
     }
 
     /**
@@ -119,7 +201,7 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setWarning(CharSequence text) {
-        return set(warning, text);
+        return setWrapped(warning, text, layout.getWarningSize());
     }
 
     /**
@@ -128,23 +210,22 @@ public final class HudView {
      * @param text the footer (not null)
      */
     public void setFooter(CharSequence text) {
-        set(footer, text);
+        if (!TextFormat.sameText(text, footerSource)) {
+            footerSource = text.toString();
+            relayOut();
+        }
     }
 
     /**
-     * Set the help panel's text and size the panel to it, centred on the screen.
+     * Set the help panel's text: it covers the window below the title, in as many columns as
+     * it needs, its text shrunk until every column fits.
      *
-     * @param text the help lines (not null)
+     * @param text the help: sections separated by blank lines, the demo's own keys first
+     *     (not null)
      */
     public void setHelp(CharSequence text) {
-        set(helpText, text);
-        float width = helpText.getLineWidth() + 2f * MARGIN;
-        float height = helpText.getHeight() + 2f * MARGIN;
-        float left = Math.max(0f, (screenWidth - width) / 2f);
-        float bottom = Math.max(0f, (screenHeight - height) / 2f);
-        helpBackground.setLocalScale(width, height, 1f);
-        helpBackground.setLocalTranslation(left, bottom, 2f);
-        helpText.setLocalTranslation(left + MARGIN, bottom + height - MARGIN, 3f);
+        helpSource = text.toString();
+        relayOut();
     }
 
     /**
@@ -175,6 +256,15 @@ public final class HudView {
     }
 
     /**
+     * Return the footer shown.
+     *
+     * @return the text (not null)
+     */
+    public String getFooterText() {
+        return footer.getText();
+    }
+
+    /**
      * Return the text shown in the body.
      *
      * @return the text (not null)
@@ -184,12 +274,12 @@ public final class HudView {
     }
 
     /**
-     * Return the warning shown.
+     * Return the warning shown, as one line (without the breaks it was wrapped at).
      *
      * @return the text, empty if none (not null)
      */
     public String getWarningText() {
-        return warning.getText();
+        return unwrap(warning.getText());
     }
 
     /**
@@ -198,7 +288,20 @@ public final class HudView {
      * @return the text (not null)
      */
     public String getHelpText() {
-        return helpText.getText();
+        return helpSource;
+    }
+
+    /**
+     * Return the help as shown, one text per column, in reading order.
+     *
+     * @return a new list (not null)
+     */
+    public List<String> getHelpColumnTexts() {
+        List<String> texts = new ArrayList<>();
+        for (BitmapText column : helpColumns) {
+            texts.add(column.getText());
+        }
+        return texts;
     }
 
     /**
@@ -210,6 +313,69 @@ public final class HudView {
         return textChanges;
     }
 
+    private void relayOut() {
+        layout.layOut(screenWidth, screenHeight, scale, titleSource, body.getText(),
+                footerSource, helpSource);
+        place(title, layout.getTitle(), layout.getTitleSize(), 1f);
+        set(title, layout.getTitleText());
+        place(body, layout.getBody(), layout.getBodySize(), 1f);
+        place(warning, layout.getWarning(), layout.getWarningSize(), 1f);
+        place(footer, layout.getFooter(), layout.getFooterSize(), 1f);
+        set(footer, layout.getFooterText());
+        // Text set before this layout was wrapped for the old width: wrap it again.
+        setWrapped(body, body.getText(), layout.getBodySize());
+        setWrapped(warning, warning.getText(), layout.getWarningSize());
+
+        ScreenRect scene = layout.getScene();
+        backdrop.setLocalScale(screenWidth, screenHeight - scene.getTop(), 1f);
+        backdrop.setLocalTranslation(0f, scene.getTop(), 0f);
+
+        ScreenRect panel = layout.getHelpPanel();
+        helpBackground.setLocalScale(panel.getWidth(), panel.getHeight(), 1f);
+        helpBackground.setLocalTranslation(panel.getX(), panel.getY(), 2f);
+        List<ScreenRect> rects = layout.getHelpColumns();
+        List<String> texts = layout.getHelpColumnTexts();
+        while (helpColumns.size() < rects.size()) {
+            BitmapText column = text(font, BODY_COLOR);
+            helpColumns.add(column);
+            helpPanel.attachChild(column);
+        }
+        while (helpColumns.size() > rects.size()) {
+            helpColumns.remove(helpColumns.size() - 1).removeFromParent();
+        }
+        for (int i = 0; i < rects.size(); ++i) {
+            place(helpColumns.get(i), rects.get(i), layout.getHelpSize(), 3f);
+            set(helpColumns.get(i), texts.get(i));
+        }
+    }
+
+    /** Set a text wrapped to the HUD's width, if it differs from what is shown. */
+    private boolean setWrapped(BitmapText target, CharSequence text, float size) {
+        float maxWidth = screenWidth - 2f * layout.getMargin();
+        if (measure.width(text, size) <= maxWidth) {
+            return set(target, text);
+        }
+        return set(target, layout.wrap(unwrap(text), size, maxWidth));
+    }
+
+    /** Undo an earlier wrap: a newline followed by the continuation indent becomes a space. */
+    private static String unwrap(CharSequence text) {
+        return text.toString().replace("\n    ", " ");
+    }
+
+    private static void place(BitmapText text, ScreenRect where, float size, float z) {
+        text.setSize(size);
+        text.setLocalTranslation(where.getX(), where.getTop(), z);
+    }
+
+    private ScreenRect rectOf(BitmapText text) {
+        // The text's own measure: its top-left corner, its widest line, its lines.
+        return new ScreenRect(text.getLocalTranslation().x,
+                text.getLocalTranslation().y - text.getLineCount() * text.getLineHeight(),
+                measure.width(text.getText(), text.getSize()),
+                text.getText().isEmpty() ? 0f : text.getLineCount() * text.getLineHeight());
+    }
+
     private boolean set(BitmapText target, CharSequence text) {
         if (TextFormat.sameText(text, target.getText())) {
             return false;
@@ -219,9 +385,8 @@ public final class HudView {
         return true;
     }
 
-    private static BitmapText text(BitmapFont font, float size, ColorRGBA color) {
+    private static BitmapText text(BitmapFont font, ColorRGBA color) {
         BitmapText text = new BitmapText(font);
-        text.setSize(size);
         text.setColor(color);
         text.setText("");
         return text;

@@ -14,20 +14,14 @@ import com.jme3.scene.shape.Sphere;
 
 /**
  * Everything drawn for one particle: a lit sphere, its trail, its velocity arrow and a label
- * that follows it. {@link #update} moves them all in place and allocates nothing.
+ * that follows it in a free slot beside it ({@link #placeLabel}). {@link #update} moves them in
+ * place and allocates nothing.
  */
 public final class ParticleView {
 
-    /** The label's text height, in sphere radii. */
-    private static final float LABEL_SIZE_RADII = 1.9f;
-    /** The lowest label row's lift above the sphere, in sphere radii. */
-    private static final float LABEL_BASE_RADII = 1.6f;
-    /** The height of one label row, in sphere radii: a little more than the text. */
-    private static final float LABEL_SLOT_RADII = 2.0f;
-
     private static final int SPHERE_SAMPLES = 24;
-    /** Velocity arrows show this much travel (in seconds). */
-    private static final float ARROW_SECONDS = 0.4f;
+    /** Velocity arrows show this much travel (in seconds); labels keep clear of them. */
+    public static final float ARROW_SECONDS = 0.4f;
 
     private final Node node;
     private final Geometry sphere;
@@ -35,10 +29,9 @@ public final class ParticleView {
     private final VelocityArrow arrow;
     private final BitmapText label;
     private final float radius;
-    /** The label's height above the sphere (in metres): rows keep labels apart. */
-    private final float labelLift;
-    /** The label's height above the sphere when its row would put it under the ground. */
-    private final float labelLiftAboveGround;
+    /** Where the label is on the screen (in pixels), and which slot it took. */
+    private final ScreenRect labelRect = new ScreenRect();
+    private int labelSlot = -1;
 
     /**
      * Create the views of one particle.
@@ -50,18 +43,10 @@ public final class ParticleView {
      * @param radiusMetres the sphere's radius, which also sizes the trail, arrow and label (in
      *     metres, &gt;0)
      * @param trailPoints how many recent positions the trail keeps (&ge;2)
-     * @param labelRow which row the label floats in above the sphere (&ge;0), so labels of
-     *     particles that meet do not overwrite each other
      */
     public ParticleView(AssetManager assetManager, BitmapFont font, String name,
-            ColorRGBA color, float radiusMetres, int trailPoints, int labelRow) {
+            ColorRGBA color, float radiusMetres, int trailPoints) {
         this.radius = radiusMetres;
-        // Row 0 floats just above the sphere, row 1 hangs below it, row 2 higher above, ...
-        // Near the ground a hanging label moves up to a slot of its own: 1.6 + 2·row radii.
-        float aboveOffset = LABEL_BASE_RADII + LABEL_SLOT_RADII * labelRow;
-        float rowOffset = (labelRow % 2 == 0) ? aboveOffset : -3.4f - 1.6f * labelRow;
-        this.labelLift = rowOffset * radiusMetres;
-        this.labelLiftAboveGround = aboveOffset * radiusMetres;
         this.node = new Node(name);
         Material lit = new Material(assetManager, "Common/MatDefs/Light/Lighting.j3md");
         lit.setBoolean("UseMaterialColors", true);
@@ -82,7 +67,6 @@ public final class ParticleView {
         node.attachChild(arrow.getGeometry());
 
         label = new BitmapText(font);
-        label.setSize(LABEL_SIZE_RADII * radiusMetres);
         label.setColor(color.clone());
         label.setText(name);
         label.setQueueBucket(RenderQueue.Bucket.Transparent);
@@ -126,49 +110,83 @@ public final class ParticleView {
     }
 
     /**
-     * Build a labelled post standing on the ground at {@code (x, 0)}, e.g. a gun or a target.
+     * Build a post standing on the ground at {@code (x, 0)}, e.g. a gun or a target; its name
+     * is a {@link SceneLabel} of the layout's.
      *
      * @param assetManager loads the material (not null)
-     * @param font the label font (not null)
-     * @param label the text above the post (not null)
+     * @param name the post's name (not null)
      * @param x where the post stands (in metres)
      * @param heightMetres its height (in metres, &gt;0)
      * @param widthMetres its width (in metres, &gt;0)
      * @param color its colour (not null, not modified)
-     * @return a new node (not null)
+     * @return a new geometry (not null)
      */
-    public static Node createPost(AssetManager assetManager, BitmapFont font, String label,
-            float x, float heightMetres, float widthMetres, ColorRGBA color) {
-        Node post = new Node(label);
+    public static Geometry createPost(AssetManager assetManager, String name, float x,
+            float heightMetres, float widthMetres, ColorRGBA color) {
         Material material = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
         material.setColor("Color", color);
-        Geometry bar = new Geometry(label + " bar", new Quad(widthMetres, heightMetres));
+        Geometry bar = new Geometry(name + " post", new Quad(widthMetres, heightMetres));
         bar.setMaterial(material);
         bar.setLocalTranslation(x - widthMetres / 2f, 0f, -0.02f);
-        post.attachChild(bar);
-        BitmapText text = new BitmapText(font);
-        text.setSize(3.5f * widthMetres);
-        text.setColor(color.clone());
-        text.setText(label);
-        text.setQueueBucket(RenderQueue.Bucket.Transparent);
-        text.setLocalTranslation(x - text.getLineWidth() / 2f, heightMetres + 4f * widthMetres,
-                0f);
-        post.attachChild(text);
-        return post;
+        return bar;
     }
 
     /**
-     * Move the sphere, label and arrow to the particle's state and push the trail to its mesh.
+     * Return the sphere's radius.
+     *
+     * @return the radius (in metres)
+     */
+    public float getRadius() {
+        return radius;
+    }
+
+    /**
+     * Access the label's place on the screen, as last put by {@link #placeLabel}.
+     *
+     * @return the live rectangle (in pixels, do not modify)
+     */
+    public ScreenRect getLabelRect() {
+        return labelRect;
+    }
+
+    /**
+     * Return the slot the label last took ({@link LabelSlots}).
+     *
+     * @return the slot, or -1 before the first placement
+     */
+    public int getLabelSlot() {
+        return labelSlot;
+    }
+
+    /**
+     * Put the label into a rectangle of the screen, through the plane's mapping. Allocates
+     * nothing.
+     *
+     * @param view the plane's mapping (not null, not modified)
+     * @param size the text size (in pixels, &gt;0)
+     * @param slot the slot taken ({@link LabelSlots})
+     * @param where the rectangle (in pixels, not null, copied)
+     */
+    public void placeLabel(PlaneView view, float size, int slot, ScreenRect where) {
+        labelRect.set(where);
+        labelSlot = slot;
+        float worldSize = size / view.getPixelsPerMetre();
+        if (label.getSize() != worldSize) {
+            // A new size makes jME rebuild the text's quads: only after a new layout.
+            label.setSize(worldSize);
+        }
+        label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
+    }
+
+    /**
+     * Move the sphere and arrow to the particle's state and push the trail to its mesh; the
+     * label is placed by the scene's layout ({@link #placeLabel}).
      *
      * @param position the particle's position (in metres, not null, not modified)
      * @param velocity the particle's velocity (in m/s, not null, not modified)
      */
     public void update(Vector3f position, Vector3f velocity) {
         sphere.setLocalTranslation(position.x, position.y, position.z);
-        // The label's bottom edge sits at y + lift; it hangs no lower than the ground.
-        float lift = position.y + labelLift < 0f ? labelLiftAboveGround : labelLift;
-        label.setLocalTranslation(position.x + radius,
-                position.y + lift + LABEL_SIZE_RADII * radius, position.z);
         arrow.update(position, velocity);
         trail.refresh();
     }

@@ -1,0 +1,401 @@
+package particlelab.view;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Where the HUD's text goes on a window of a given size: pure arithmetic on the window's size
+ * and the text's measured size, so it is tested without rendering. Top to bottom: the title,
+ * the body (equations and live numbers), the warning band (kept even when empty, so the scene
+ * does not jump when a warning comes and goes), the scene, and the footer at the bottom. The
+ * help overlay covers everything below the title and is set in columns, its first section (the
+ * demo's own keys) first; it shrinks its text until every column fits the window.
+ *
+ * <p>Text wider than the window is wrapped at spaces, continuation lines indented. The body
+ * keeps the most lines it has needed so far ({@link #getBodyLines()}), so that the numbers
+ * changing from one refresh to the next never move the scene.
+ */
+public final class HudLayout {
+
+    /** Text sizes at HUD scale 1 (in pixels). */
+    public static final float TITLE_SIZE = 32f;
+    public static final float BODY_SIZE = 21f;
+    public static final float WARNING_SIZE = 22f;
+    public static final float FOOTER_SIZE = 19f;
+    public static final float HELP_SIZE = 21f;
+    /** Scene labels: grid distances, particle and post labels (pixels at scale 1). */
+    public static final float SCENE_LABEL_SIZE = 19f;
+    /** The smallest help text the shrinking goes to (pixels at scale 1). */
+    public static final float MIN_HELP_SIZE = 11f;
+    /** The space between the window's edge and any text (pixels at scale 1). */
+    public static final float MARGIN = 14f;
+    /** How many lines the warning band holds. */
+    public static final int WARNING_LINES = 2;
+    /** The window size at which the HUD scale is 1 (in pixels). */
+    public static final float REFERENCE_WIDTH = 1280f;
+    public static final float REFERENCE_HEIGHT = 720f;
+    /** The HUD scale's range: text stays legible and leaves room for the scene. */
+    public static final float MIN_SCALE = 0.75f;
+    public static final float MAX_SCALE = 4f;
+    private static final String CONTINUATION = "    ";
+    private static final float HELP_SHRINK = 0.92f;
+
+    private final TextMeasure measure;
+    private final ScreenRect window = new ScreenRect();
+    private final ScreenRect title = new ScreenRect();
+    private final ScreenRect body = new ScreenRect();
+    private final ScreenRect warning = new ScreenRect();
+    private final ScreenRect footer = new ScreenRect();
+    private final ScreenRect scene = new ScreenRect();
+    private final ScreenRect helpPanel = new ScreenRect();
+    private final List<ScreenRect> helpColumns = new ArrayList<>();
+    private final List<String> helpColumnTexts = new ArrayList<>();
+    private float scale = 1f;
+    private float helpSize = HELP_SIZE;
+    private int bodyLines = 1;
+    private String titleText = "";
+    private String footerText = "";
+
+    /**
+     * Create a layout.
+     *
+     * @param measure measures text as it will be drawn (not null)
+     */
+    public HudLayout(TextMeasure measure) {
+        if (measure == null) {
+            throw new IllegalArgumentException("measure must not be null");
+        }
+        this.measure = measure;
+    }
+
+    /**
+     * Return the HUD scale that suits a window: 1 at 1280x720, growing with the window's
+     * smaller relative side, within [{@value #MIN_SCALE}, {@value #MAX_SCALE}].
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @return the scale
+     */
+    public static float scaleFor(float width, float height) {
+        float fit = Math.min(width / REFERENCE_WIDTH, height / REFERENCE_HEIGHT);
+        return Math.max(MIN_SCALE, Math.min(MAX_SCALE, fit));
+    }
+
+    /**
+     * Lay the HUD out on a window.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param hudScale the text scale ({@link #scaleFor} suits the window; &gt;0)
+     * @param titleLine the title (not null)
+     * @param bodyText the body as it is now (not null); the band keeps at least as many lines
+     *     as it had before
+     * @param footerLine the footer (not null)
+     * @param helpText the help overlay's text: sections separated by blank lines (not null)
+     */
+    public void layOut(float width, float height, float hudScale, CharSequence titleLine,
+            CharSequence bodyText, CharSequence footerLine, CharSequence helpText) {
+        if (!(width > 0f && height > 0f && hudScale > 0f)) {
+            throw new IllegalArgumentException("window " + width + "x" + height + " and scale "
+                    + hudScale + " must all be > 0");
+        }
+        window.set(0f, 0f, width, height);
+        scale = hudScale;
+        float margin = getMargin();
+        float textWidth = width - 2f * margin;
+
+        titleText = wrap(titleLine, getTitleSize(), textWidth);
+        float titleHeight = countLines(titleText) * measure.lineHeight(getTitleSize());
+        title.set(margin, height - margin - titleHeight,
+                measure.width(titleText, getTitleSize()), titleHeight);
+
+        float bodyLineHeight = measure.lineHeight(getBodySize());
+        String wrappedBody = wrap(bodyText, getBodySize(), textWidth);
+        bodyLines = Math.max(bodyLines, countLines(wrappedBody));
+        float bodyTop = title.getY() - 0.3f * bodyLineHeight;
+        body.set(margin, bodyTop - bodyLines * bodyLineHeight, textWidth,
+                bodyLines * bodyLineHeight);
+
+        float warningHeight = WARNING_LINES * measure.lineHeight(getWarningSize());
+        warning.set(margin, body.getY() - 0.3f * bodyLineHeight - warningHeight, textWidth,
+                warningHeight);
+
+        footerText = wrap(footerLine, getFooterSize(), textWidth);
+        float footerHeight = countLines(footerText) * measure.lineHeight(getFooterSize());
+        footer.set(margin, margin, measure.width(footerText, getFooterSize()), footerHeight);
+
+        float gap = 0.5f * margin;
+        scene.set(0f, footer.getTop() + gap, width,
+                warning.getY() - gap - (footer.getTop() + gap));
+        layOutHelp(helpText);
+    }
+
+    /**
+     * Wrap a text to a width with the font of this layout: each line wider than the width is
+     * broken at spaces, its continuation lines indented.
+     *
+     * @param text the text (not null)
+     * @param size the text size (in pixels, &gt;0)
+     * @param maxWidth the widest a line may be (in pixels, &gt;0)
+     * @return the wrapped text (not null)
+     */
+    public String wrap(CharSequence text, float size, float maxWidth) {
+        if (measure.width(text, size) <= maxWidth) {
+            return text.toString();
+        }
+        StringBuilder out = new StringBuilder(text.length() + 16);
+        StringBuilder line = new StringBuilder();
+        int start = 0;
+        int length = text.length();
+        while (start <= length) {
+            int end = start;
+            while (end < length && text.charAt(end) != '\n') {
+                ++end;
+            }
+            wrapLine(text.subSequence(start, end), size, maxWidth, line, out);
+            if (end < length) {
+                out.append('\n');
+            }
+            start = end + 1;
+        }
+        return out.toString();
+    }
+
+    /** @return the HUD scale in use */
+    public float getScale() {
+        return scale;
+    }
+
+    /** @return the space kept from the window's edges (in pixels) */
+    public float getMargin() {
+        return MARGIN * scale;
+    }
+
+    /** @return the title's text size (in pixels) */
+    public float getTitleSize() {
+        return TITLE_SIZE * scale;
+    }
+
+    /** @return the body's text size (in pixels) */
+    public float getBodySize() {
+        return BODY_SIZE * scale;
+    }
+
+    /** @return the warning's text size (in pixels) */
+    public float getWarningSize() {
+        return WARNING_SIZE * scale;
+    }
+
+    /** @return the footer's text size (in pixels) */
+    public float getFooterSize() {
+        return FOOTER_SIZE * scale;
+    }
+
+    /** @return the scene labels' text size (in pixels) */
+    public float getSceneLabelSize() {
+        return SCENE_LABEL_SIZE * scale;
+    }
+
+    /** @return the help's text size after shrinking to fit (in pixels) */
+    public float getHelpSize() {
+        return helpSize;
+    }
+
+    /** @return how many body lines the body band holds */
+    public int getBodyLines() {
+        return bodyLines;
+    }
+
+    /** @return the title, wrapped (not null) */
+    public String getTitleText() {
+        return titleText;
+    }
+
+    /** @return the footer, wrapped (not null) */
+    public String getFooterText() {
+        return footerText;
+    }
+
+    /** @return the whole window (live, do not modify) */
+    public ScreenRect getWindow() {
+        return window;
+    }
+
+    /** @return the title's rectangle (live, do not modify) */
+    public ScreenRect getTitle() {
+        return title;
+    }
+
+    /** @return the body band (live, do not modify) */
+    public ScreenRect getBody() {
+        return body;
+    }
+
+    /** @return the warning band (live, do not modify) */
+    public ScreenRect getWarning() {
+        return warning;
+    }
+
+    /** @return the footer's rectangle (live, do not modify) */
+    public ScreenRect getFooter() {
+        return footer;
+    }
+
+    /** @return the area left to the scene, between the warning band and the footer (live) */
+    public ScreenRect getScene() {
+        return scene;
+    }
+
+    /** @return the help panel's background: the window below the title (live) */
+    public ScreenRect getHelpPanel() {
+        return helpPanel;
+    }
+
+    /** @return the help's columns, in reading order (live, do not modify) */
+    public List<ScreenRect> getHelpColumns() {
+        return helpColumns;
+    }
+
+    /** @return the text of each help column, in reading order (live, do not modify) */
+    public List<String> getHelpColumnTexts() {
+        return helpColumnTexts;
+    }
+
+    /**
+     * Set the help in as many columns as it needs, at the largest size that fits the panel.
+     */
+    private void layOutHelp(CharSequence helpText) {
+        float margin = getMargin();
+        helpPanel.set(0f, 0f, window.getWidth(), title.getY() - 0.3f * margin);
+        List<List<String>> sections = splitSections(helpText);
+        float innerWidth = helpPanel.getWidth() - 2f * margin;
+        float innerHeight = helpPanel.getHeight() - 2f * margin;
+        float minSize = MIN_HELP_SIZE * Math.min(1f, scale);
+        float size = HELP_SIZE * scale;
+        while (!flowHelp(sections, size, innerWidth, innerHeight) && size > minSize) {
+            size = Math.max(minSize, size * HELP_SHRINK);
+        }
+        helpSize = size;
+    }
+
+    /**
+     * Flow the sections into columns at one size.
+     *
+     * @return true if every column fits the panel
+     */
+    private boolean flowHelp(List<List<String>> sections, float size, float innerWidth,
+            float innerHeight) {
+        helpColumns.clear();
+        helpColumnTexts.clear();
+        float margin = getMargin();
+        float lineHeight = measure.lineHeight(size);
+        int maxLines = Math.max(1, (int) Math.floor(innerHeight / lineHeight));
+        List<List<String>> columns = new ArrayList<>();
+        List<String> column = new ArrayList<>();
+        columns.add(column);
+        for (List<String> section : sections) {
+            int needed = section.size() + (column.isEmpty() ? 0 : 1);
+            if (!column.isEmpty() && column.size() + needed > maxLines
+                    && section.size() <= maxLines) {
+                column = new ArrayList<>();
+                columns.add(column);
+            }
+            if (!column.isEmpty()) {
+                column.add("");
+            }
+            for (String line : section) {
+                if (column.size() >= maxLines) {
+                    column = new ArrayList<>();
+                    columns.add(column);
+                }
+                column.add(line);
+            }
+        }
+        float left = helpPanel.getX() + margin;
+        float top = helpPanel.getTop() - margin;
+        boolean fits = true;
+        for (List<String> lines : columns) {
+            String text = String.join("\n", lines);
+            float width = measure.width(text, size);
+            float height = lines.size() * lineHeight;
+            ScreenRect rect = new ScreenRect(left, top - height, width, height);
+            helpColumns.add(rect);
+            helpColumnTexts.add(text);
+            left += width + 2f * margin;
+            fits &= rect.getRight() <= helpPanel.getX() + margin + innerWidth
+                    && height <= innerHeight;
+        }
+        return fits;
+    }
+
+    private static List<List<String>> splitSections(CharSequence helpText) {
+        List<List<String>> sections = new ArrayList<>();
+        List<String> section = new ArrayList<>();
+        for (String line : helpText.toString().split("\n", -1)) {
+            if (line.isBlank()) {
+                if (!section.isEmpty()) {
+                    sections.add(section);
+                    section = new ArrayList<>();
+                }
+            } else {
+                section.add(line);
+            }
+        }
+        if (!section.isEmpty()) {
+            sections.add(section);
+        }
+        return sections;
+    }
+
+    private void wrapLine(CharSequence text, float size, float maxWidth, StringBuilder line,
+            StringBuilder out) {
+        if (measure.width(text, size) <= maxWidth) {
+            out.append(text);
+            return;
+        }
+        line.setLength(0);
+        int i = 0;
+        int length = text.length();
+        while (i < length) {
+            // One word with the spaces before it.
+            int wordStart = i;
+            while (wordStart < length && text.charAt(wordStart) == ' ') {
+                ++wordStart;
+            }
+            int wordEnd = wordStart;
+            while (wordEnd < length && text.charAt(wordEnd) != ' ') {
+                ++wordEnd;
+            }
+            int kept = line.length();
+            boolean hasWord = hasWord(line);
+            line.append(text, i, wordEnd);
+            if (hasWord && measure.width(line, size) > maxWidth) {
+                line.setLength(kept);
+                out.append(line).append('\n');
+                line.setLength(0);
+                line.append(CONTINUATION).append(text, wordStart, wordEnd);
+            }
+            i = wordEnd;
+        }
+        out.append(line);
+    }
+
+    private static boolean hasWord(CharSequence line) {
+        for (int i = 0; i < line.length(); ++i) {
+            if (line.charAt(i) != ' ') {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static int countLines(CharSequence text) {
+        int lines = 1;
+        for (int i = 0; i < text.length(); ++i) {
+            if (text.charAt(i) == '\n') {
+                ++lines;
+            }
+        }
+        return lines;
+    }
+}

@@ -1,0 +1,126 @@
+package particlelab.view;
+
+import com.jme3.font.BitmapFont;
+import com.jme3.font.BitmapText;
+import com.jme3.math.ColorRGBA;
+import com.jme3.renderer.queue.RenderQueue;
+import com.jme3.scene.Spatial;
+
+/**
+ * A text standing in the scene's plane at a fixed point: a distance mark of the grid or the
+ * name of a post. Its size is given in pixels, so it reads the same at every zoom; where it
+ * goes is decided in pixels ({@link #preferredRect}) and then applied in metres through the
+ * {@link PlaneView} ({@link #apply}).
+ */
+public final class SceneLabel {
+
+    /** Where the text sits relative to its point. */
+    public enum Anchor {
+        /** Centred below the point (the marks along the ground). */
+        BELOW,
+        /** Right of and above the point (the marks up the left edge). */
+        ABOVE_RIGHT,
+        /** Centred above the point (a post's name). */
+        ABOVE
+    }
+
+    /** The gap between the point and the text (as a fraction of the text size). */
+    private static final float GAP_FRACTION = 0.4f;
+
+    private final BitmapText text;
+    private final float pointX;
+    private final float pointY;
+    private final Anchor anchor;
+    private final ScreenRect rect = new ScreenRect();
+    private boolean visible = true;
+
+    /**
+     * Create a label.
+     *
+     * @param font the font (not null)
+     * @param label the text, one line (not null)
+     * @param color its colour (not null, not modified)
+     * @param pointX the point's x in the plane (in metres)
+     * @param pointY the point's y in the plane (in metres)
+     * @param anchor where the text sits relative to the point (not null)
+     */
+    public SceneLabel(BitmapFont font, String label, ColorRGBA color, float pointX,
+            float pointY, Anchor anchor) {
+        this.text = new BitmapText(font);
+        text.setColor(color.clone());
+        text.setText(label);
+        text.setQueueBucket(RenderQueue.Bucket.Transparent);
+        this.pointX = pointX;
+        this.pointY = pointY;
+        this.anchor = anchor;
+    }
+
+    /**
+     * Access the text, to attach it to the scene.
+     *
+     * @return the live text (not null)
+     */
+    public BitmapText getText() {
+        return text;
+    }
+
+    /**
+     * Compute where the text would go on the screen, before any collision is resolved.
+     *
+     * @param view the plane's mapping (not null, not modified)
+     * @param measure measures the text (not null)
+     * @param size the text size (in pixels, &gt;0)
+     * @param storeResult storage for the rectangle (not null, modified)
+     * @return storeResult
+     */
+    public ScreenRect preferredRect(PlaneView view, TextMeasure measure, float size,
+            ScreenRect storeResult) {
+        float width = measure.width(text.getText(), size);
+        float height = measure.lineHeight(size);
+        float gap = GAP_FRACTION * size;
+        float x = view.screenX(pointX);
+        float y = view.screenY(pointY);
+        switch (anchor) {
+            case BELOW:
+                return storeResult.set(x - width / 2f, y - gap - height, width, height);
+            case ABOVE_RIGHT:
+                return storeResult.set(x + gap, y + gap, width, height);
+            default:
+                return storeResult.set(x - width / 2f, y + gap, width, height);
+        }
+    }
+
+    /**
+     * Put the text where a rectangle says, or hide it.
+     *
+     * @param view the plane's mapping (not null, not modified)
+     * @param size the text size (in pixels, &gt;0)
+     * @param where its rectangle on the screen (in pixels, not null, copied)
+     * @param show false to hide the text
+     */
+    public void apply(PlaneView view, float size, ScreenRect where, boolean show) {
+        rect.set(where);
+        visible = show;
+        text.setSize(size / view.getPixelsPerMetre());
+        text.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
+        text.setCullHint(show ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+    }
+
+    /**
+     * Access the rectangle the text was last put in.
+     *
+     * @return the live rectangle (in pixels, do not modify)
+     */
+    public ScreenRect getRect() {
+        return rect;
+    }
+
+    /**
+     * Test whether the text is shown.
+     *
+     * @return true unless the layout hid it
+     */
+    public boolean isVisible() {
+        return visible;
+    }
+}

@@ -1,0 +1,283 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import com.jme3.font.BitmapCharacterSet;
+import com.jme3.font.BitmapText;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.app.DemoCatalog;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.SimulationClock;
+import particlelab.view.HudFont;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
+import particlelab.view.Trail;
+
+/**
+ * Every catalogue demo laid out for windows of four sizes in a real headless jME application,
+ * with the real font's measures: no text covers another, every text is inside the window, the
+ * particles' labels cover no other sphere and no trail, the help fits with the demo's own keys
+ * first, and every character any text prints is in the font.
+ */
+class ScreenLayoutHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    private static final int[][] WINDOWS = {{1024, 768}, {1280, 720}, {1920, 1080},
+        {3840, 2160}};
+    /** The demos run this long, sampled every few frames: launch, flight and landing. */
+    private static final int FRAMES = 480;
+    private static final int SAMPLE_EVERY = 6;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        harness = HeadlessHarness.start(DemoCatalog.createAll());
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void noTextCoversAnotherOrLeavesTheWindowAtAnySize() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (DemoState demo : demos()) {
+            for (int[] window : WINDOWS) {
+                problems.addAll(harness.call(() -> runAndCheck(demo, window[0], window[1])));
+            }
+            harness.call(() -> {
+                demo.layOut(1280, 720);
+                return true;
+            });
+        }
+        assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
+                problems.size() + " problems");
+    }
+
+    @Test
+    void helpFitsEveryWindowWithTheDemosOwnKeysFirst() throws Exception {
+        for (DemoState demo : demos()) {
+            for (int[] window : WINDOWS) {
+                List<String> problems = harness.call(() -> {
+                    demo.layOut(window[0], window[1]);
+                    demo.getHud().setHelpVisible(true);
+                    List<String> found = check(demo, window[0], window[1], "help");
+                    List<String> columns = demo.getHud().getHelpColumnTexts();
+                    // The first section is the demo's own keys: it opens the first column.
+                    String help = demo.getHelpText();
+                    String ownSection = help.substring(0, help.indexOf("\n\n"));
+                    if (!columns.get(0).startsWith(ownSection)) {
+                        found.add(demo.getTitle() + ": the help does not open with "
+                                + ownSection);
+                    }
+                    String all = String.join("\n", columns);
+                    for (String line : demo.getHelpText().split("\n")) {
+                        if (!all.contains(line)) {
+                            found.add(demo.getTitle() + ": help column lacks " + line);
+                        }
+                    }
+                    demo.getHud().setHelpVisible(false);
+                    demo.layOut(1280, 720);
+                    return found;
+                });
+                assertEquals(List.of(), problems, window[0] + "x" + window[1]);
+            }
+        }
+    }
+
+    @Test
+    void theHighestArcTheKeysAllowStaysInTheSceneAreaAtEverySize() throws Exception {
+        HelloAimingDemo aiming = (HelloAimingDemo) demos().get(DemoCatalog.indexOf("aiming"));
+        for (int[] window : WINDOWS) {
+            List<String> problems = harness.call(() -> {
+                List<String> found = new ArrayList<>();
+                aiming.layOut(window[0], window[1]);
+                for (HelloAimingDemo.Aim aim : HelloAimingDemo.Aim.values()) {
+                    aiming.setAim(aim);
+                    aiming.setHorizontalSpeed(HelloAimingDemo.MIN_VX);
+                    aiming.fire();
+                    // The lowest vx flies S/vx = 8.3 s: 600 frames see it land.
+                    DemoParticle bullet = aiming.getParticles().get(0);
+                    ScreenRect area = aiming.getHud().getLayout().getScene();
+                    for (int frame = 0; frame < 600; ++frame) {
+                        aiming.update(H);
+                        PlaneView plane = aiming.getPlaneView();
+                        Vector3f p = bullet.getParticle().position;
+                        float radius = bullet.view.getRadius() * plane.getPixelsPerMetre();
+                        ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
+                                plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
+                        if (!area.contains(sphere)) {
+                            found.add(window[0] + "x" + window[1] + " " + aim + " frame "
+                                    + frame + ": bullet " + sphere + " leaves " + area);
+                            break;
+                        }
+                    }
+                    if (!bullet.hasLanded()) {
+                        found.add(aim + ": the shot did not land");
+                    }
+                }
+                aiming.setHorizontalSpeed(HelloAimingDemo.DEFAULT_VX);
+                aiming.setAim(HelloAimingDemo.Aim.LECTURE);
+                aiming.layOut(1280, 720);
+                return found;
+            });
+            assertEquals(List.of(), problems);
+        }
+    }
+
+    @Test
+    void everyCharacterShownIsInTheFont() throws Exception {
+        for (DemoState demo : demos()) {
+            List<String> missing = harness.call(() -> {
+                List<String> found = new ArrayList<>();
+                demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+                demo.restart();
+                // Walk through the states that add text: running, raw tpf with a hitch
+                // (warnings), paused; and the help.
+                collectMissing(demo, found);
+                demo.getClock().toggleMode();
+                demo.injectHitch();
+                for (int frame = 0; frame < 30; ++frame) {
+                    demo.update(H);
+                    collectMissing(demo, found);
+                }
+                demo.getClock().toggleMode();
+                demo.getClock().setPaused(true);
+                demo.update(H);
+                collectMissing(demo, found);
+                demo.getClock().setPaused(false);
+                return found;
+            });
+            assertEquals(List.of(), missing, demo.getTitle());
+        }
+    }
+
+    /** Run a demo for a window size and check its texts every few frames. */
+    private static List<String> runAndCheck(DemoState demo, int width, int height) {
+        demo.layOut(width, height);
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        demo.restart();
+        List<String> problems = new ArrayList<>();
+        for (int frame = 0; frame < FRAMES; ++frame) {
+            demo.update(H);
+            if (frame % SAMPLE_EVERY == 0) {
+                problems.addAll(check(demo, width, height, "frame " + frame));
+                problems.addAll(checkParticleLabels(demo, width, height, frame));
+            }
+        }
+        return problems;
+    }
+
+    /** No two texts overlap, and all are inside the window. */
+    private static List<String> check(DemoState demo, int width, int height, String when) {
+        List<String> problems = new ArrayList<>();
+        List<ScreenRect> rects = demo.copyTextRects(new ArrayList<>());
+        ScreenRect window = new ScreenRect(0f, 0f, width, height);
+        String where = demo.getTitle() + " " + width + "x" + height + " " + when + ": ";
+        for (int i = 0; i < rects.size(); ++i) {
+            if (rects.get(i).isEmpty()) {
+                continue;
+            }
+            if (!window.contains(rects.get(i))) {
+                problems.add(where + "text " + i + " " + rects.get(i) + " leaves the window");
+            }
+            for (int j = 0; j < i; ++j) {
+                if (rects.get(i).intersects(rects.get(j))) {
+                    problems.add(where + "text " + i + " " + rects.get(i) + " covers text " + j
+                            + " " + rects.get(j));
+                }
+            }
+        }
+        return problems;
+    }
+
+    /** A particle's label covers no other sphere and no point of any trail. */
+    private static List<String> checkParticleLabels(DemoState demo, int width, int height,
+            int frame) {
+        List<String> problems = new ArrayList<>();
+        PlaneView plane = demo.getPlaneView();
+        List<DemoParticle> particles = demo.getParticles();
+        Vector3f point = new Vector3f();
+        for (int i = 0; i < particles.size(); ++i) {
+            ScreenRect label = particles.get(i).view.getLabelRect();
+            for (int j = 0; j < particles.size(); ++j) {
+                Vector3f other = particles.get(j).getParticle().position;
+                float radius = particles.get(j).view.getRadius() * plane.getPixelsPerMetre();
+                ScreenRect sphere = new ScreenRect(plane.screenX(other.x) - radius,
+                        plane.screenY(other.y) - radius, 2f * radius, 2f * radius);
+                if (j != i && label.intersects(sphere)) {
+                    problems.add(demo.getTitle() + " " + width + "x" + height + " frame "
+                            + frame + ": label of " + particles.get(i).getLabel()
+                            + " covers the sphere of " + particles.get(j).getLabel());
+                }
+                Trail trail = particles.get(j).view.getTrail();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    if (label.contains(plane.screenX(point.x), plane.screenY(point.y))) {
+                        problems.add(demo.getTitle() + " " + width + "x" + height + " frame "
+                                + frame + ": label of " + particles.get(i).getLabel()
+                                + " covers the trail of " + particles.get(j).getLabel());
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
+    private static void collectMissing(DemoState demo, List<String> found) {
+        List<String> texts = new ArrayList<>();
+        texts.add(demo.getHud().getTitleText());
+        texts.add(demo.getHud().getBodyText());
+        texts.add(demo.getHud().getWarningText());
+        texts.add(demo.getHud().getFooterText());
+        texts.addAll(demo.getHud().getHelpColumnTexts());
+        List<BitmapText> shown = new ArrayList<>();
+        collectTexts(demo.getSceneNode(), shown);
+        collectTexts(demo.getHud().getNode(), shown);
+        for (BitmapText text : shown) {
+            texts.add(text.getText());
+            if (!HudFont.BASE_NAME.equals(fontName(text))) {
+                found.add("text '" + text.getText() + "' is not in " + HudFont.ASSET);
+            }
+        }
+        BitmapCharacterSet font = shown.get(0).getFont().getCharSet();
+        for (String text : texts) {
+            for (int i = 0; i < text.length(); ++i) {
+                char c = text.charAt(i);
+                if (c != '\n' && font.getCharacter(c) == null && !found.contains("" + c)) {
+                    found.add("" + c);
+                }
+            }
+        }
+    }
+
+    private static String fontName(BitmapText text) {
+        String key = text.getFont().getPage(0).getTextureParam("ColorMap").getTextureValue()
+                .getKey().getName();
+        String file = key.substring(key.lastIndexOf('/') + 1);
+        return file.substring(0, file.lastIndexOf('.'));
+    }
+
+    private static void collectTexts(Spatial spatial, List<BitmapText> storeResult) {
+        if (spatial instanceof BitmapText) {
+            storeResult.add((BitmapText) spatial);
+        } else if (spatial instanceof Node) {
+            for (Spatial child : ((Node) spatial).getChildren()) {
+                collectTexts(child, storeResult);
+            }
+        }
+    }
+
+    private static List<DemoState> demos() {
+        return harness.app().getSwitcher().getDemos();
+    }
+}

@@ -1,0 +1,136 @@
+package particlelab.view;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The HUD's layout as pure arithmetic, with a monospaced stand-in for the font (every
+ * character 0.5 of the size wide, lines 1.2 of the size high): no jME, no rendering.
+ */
+class HudLayoutTest {
+
+    /** A monospaced measure: width 0.5·size per character, line height 1.2·size. */
+    private static final TextMeasure MONO = new TextMeasure() {
+        @Override
+        public float width(CharSequence text, float size) {
+            int widest = 0;
+            int line = 0;
+            for (int i = 0; i < text.length(); ++i) {
+                line = text.charAt(i) == '\n' ? 0 : line + 1;
+                widest = Math.max(widest, line);
+            }
+            return 0.5f * size * widest;
+        }
+
+        @Override
+        public float lineHeight(float size) {
+            return 1.2f * size;
+        }
+    };
+
+    private static final String BODY = "a = g + F/m,  m = 1 kg,  V0 = (10, 10, 0) m/s;   linear:"
+            + " F = -b V, b = 0.9 N s/m;   quadratic: F = -c |V| V, c = 0.064 kg/m\n"
+            + "t = 1.62 s\nball:  P = (16.17, 3.23, 0.00) m   V = (10.00, -5.84, 0.00) m/s\n"
+            + "Stepping: fixed h = 16.7 ms   time x1.00";
+
+    @ParameterizedTest
+    @CsvSource({"1024, 768", "1280, 720", "1920, 1080", "3840, 2160", "800, 600"})
+    void hudBlocksNeverOverlapAndStayInsideTheWindow(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        layout.layOut(width, height, HudLayout.scaleFor(width, height), "3.  Drag", BODY,
+                "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo",
+                help(40));
+        List<ScreenRect> blocks = List.of(layout.getTitle(), layout.getBody(),
+                layout.getWarning(), layout.getScene(), layout.getFooter());
+        for (int i = 0; i < blocks.size(); ++i) {
+            assertTrue(layout.getWindow().contains(blocks.get(i)), blocks.get(i).toString());
+            assertFalse(blocks.get(i).isEmpty(), "block " + i);
+            for (int j = 0; j < i; ++j) {
+                assertFalse(blocks.get(i).intersects(blocks.get(j)), i + " over " + j);
+            }
+        }
+        // The long equation line was wrapped to the window, not clipped.
+        assertTrue(layout.getBody().getWidth() <= width - 2f * layout.getMargin());
+        assertTrue(MONO.width(layout.wrap(BODY, layout.getBodySize(),
+                layout.getBody().getWidth()), layout.getBodySize())
+                <= layout.getBody().getWidth());
+    }
+
+    @ParameterizedTest
+    @CsvSource({"1024, 768", "1280, 720", "1920, 1080", "3840, 2160", "640, 360"})
+    void helpFitsInColumnsBelowTheTitleWithTheDemosKeysFirst(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        String help = help(45);
+        layout.layOut(width, height, HudLayout.scaleFor(width, height), "5.  HelloAiming",
+                BODY, "H  help", help);
+        List<ScreenRect> columns = layout.getHelpColumns();
+        assertTrue(columns.size() >= 1);
+        for (int i = 0; i < columns.size(); ++i) {
+            ScreenRect column = columns.get(i);
+            assertTrue(layout.getHelpPanel().contains(column), column.toString());
+            assertFalse(column.intersects(layout.getTitle()), column.toString());
+            for (int j = 0; j < i; ++j) {
+                assertFalse(column.intersects(columns.get(j)));
+            }
+        }
+        assertTrue(layout.getWindow().contains(layout.getHelpPanel()));
+        // Reading order: the first column starts with the demo's own section.
+        assertTrue(layout.getHelpColumnTexts().get(0).startsWith("Demo - keys\n   F  -  fire"));
+        // Every line of the help is shown, once.
+        List<String> shown = new ArrayList<>();
+        for (String text : layout.getHelpColumnTexts()) {
+            for (String line : text.split("\n")) {
+                if (!line.isEmpty()) {
+                    shown.add(line);
+                }
+            }
+        }
+        List<String> expected = new ArrayList<>();
+        for (String line : help.split("\n")) {
+            if (!line.isEmpty()) {
+                expected.add(line);
+            }
+        }
+        assertEquals(expected, shown);
+    }
+
+    @Test
+    void wrapBreaksAtSpacesAndIndentsContinuations() {
+        HudLayout layout = new HudLayout(MONO);
+        // 10 px per character at size 20: 12 characters fit in 120 px.
+        String wrapped = layout.wrap("alpha beta gamma delta", 20f, 120f);
+        assertEquals("alpha beta\n    gamma\n    delta", wrapped);
+        assertEquals("short", layout.wrap("short", 20f, 120f));
+        // A word longer than the width stays whole on its own line.
+        assertEquals("abcdefghijklmnop\n    q", layout.wrap("abcdefghijklmnop q", 20f, 120f));
+    }
+
+    @Test
+    void scaleIsOneAtTheReferenceWindowAndGrowsWithIt() {
+        assertEquals(1f, HudLayout.scaleFor(1280, 720), 0f);
+        assertEquals(1.5f, HudLayout.scaleFor(1920, 1080), 0f);
+        assertEquals(3f, HudLayout.scaleFor(3840, 2160), 0f);
+        assertEquals(0.8f, HudLayout.scaleFor(1024, 768), 1e-6f);
+        assertEquals(HudLayout.MIN_SCALE, HudLayout.scaleFor(320, 200), 0f);
+    }
+
+    /** A help text like the demos': the demo's section first, then sections of 8 keys. */
+    private static String help(int keys) {
+        StringBuilder text = new StringBuilder("Demo - keys\n   F  -  fire\n   Up  -  vx + 1\n");
+        for (int i = 0; i < keys; ++i) {
+            if (i % 8 == 0) {
+                text.append("\nSection ").append(i / 8).append('\n');
+            }
+            text.append("   K").append(i).append("  -  a key that does thing number ")
+                    .append(i).append('\n');
+        }
+        return text.toString();
+    }
+}
