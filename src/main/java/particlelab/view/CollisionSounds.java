@@ -7,30 +7,32 @@ import particlelab.world.World;
 
 /**
  * Turns a {@link World}'s collision events into sounds: the lecture's "play a sound" in the
- * prologue (at the moment of impact) and in the epilogue (a destroyed object).
+ * prologue (at the moment of impact) and in the epilogue (a destroyed object). Like the
+ * world's other effects, the sounds are queued during the steps and played after them, once
+ * a frame, by {@link #playFrame}: call it after {@code clock.advance}, before the demo
+ * clears the impact queue.
  * <ul>
- * <li><b>Impacts</b>: {@link #playImpacts} plays {@link SoundCue#IMPACT} for each event of
- * {@link World#getImpacts()}, at the event's loudness {@code (v − v_hit)/(v_full − v_hit)}
- * clamped to 0..1, {@code v} the normal approach speed (only contacts faster than the hit
- * threshold make events). Call it once per frame, after {@code clock.advance}, before the
- * demo clears the queue; at most {@link #MAX_IMPACTS_PER_FRAME} a frame are played (the
- * rest are counted), so a pile of fragments does not take every audio channel.</li>
+ * <li><b>Impacts</b>: {@link SoundCue#IMPACT} for each event of {@link World#getImpacts()},
+ * at the event's loudness {@code (v − v_hit)/(v_full − v_hit)} clamped to 0..1, {@code v}
+ * the normal approach speed (only contacts faster than the hit threshold make events).</li>
  * <li><b>Destroyed bodies</b>: registered with {@link #attach}, it hears bodies leave the
- * world and plays {@link SoundCue#DESTROY} for each one destroyed during a step, that is in
+ * world and queues {@link SoundCue#DESTROY} for each one destroyed during a step, that is in
  * an epilogue. Bodies removed outside a step (a reset, a scene being rebuilt) make no
  * sound.</li>
  * </ul>
- * Allocates nothing per frame or per event.
+ * A frame plays at most {@link #MAX_SOUNDS_PER_FRAME} of each (the rest are counted), so a
+ * pile of fragments does not take every audio channel. Allocates nothing.
  */
 public final class CollisionSounds implements BodyListener {
 
-    /** The most impact sounds played in one frame. */
-    public static final int MAX_IMPACTS_PER_FRAME = 4;
+    /** The most impact sounds, and the most destroy sounds, played in one frame. */
+    public static final int MAX_SOUNDS_PER_FRAME = 4;
     /** The volume of the destroy sound (0 to 1). */
     public static final float DESTROY_VOLUME = 1f;
 
     private final SoundPlayer player;
-    private long skippedImpacts;
+    private int pendingDestroys;
+    private long skipped;
 
     /**
      * Create a bridge to a player.
@@ -69,38 +71,46 @@ public final class CollisionSounds implements BodyListener {
      */
     public void detach(World world) {
         world.removeBodyListener(this);
+        pendingDestroys = 0;
     }
 
     /**
-     * Play the impact sound for the queued impact events, oldest first, up to
-     * {@link #MAX_IMPACTS_PER_FRAME}. Does not clear the queue (the demo does, after its
-     * flashes have read it too).
+     * Play the frame's sounds: the impact sound for each queued impact event, oldest first,
+     * then the destroy sound for each body destroyed in an epilogue since the last frame, up
+     * to {@link #MAX_SOUNDS_PER_FRAME} of each. Does not clear the impact queue (the demo
+     * does, after its flashes have read it too). Call on the jME thread.
      *
-     * @param impacts the world's impact queue (not null)
-     * @return how many sounds were played (0 to {@link #MAX_IMPACTS_PER_FRAME})
+     * @param world the world whose steps this frame took (not null)
+     * @return how many sounds were played (&ge;0)
      */
-    public int playImpacts(Impacts impacts) {
+    public int playFrame(World world) {
+        Impacts impacts = world.getImpacts();
         int count = impacts.size();
-        int played = Math.min(count, MAX_IMPACTS_PER_FRAME);
-        for (int i = 0; i < played; ++i) {
+        int impactSounds = Math.min(count, MAX_SOUNDS_PER_FRAME);
+        for (int i = 0; i < impactSounds; ++i) {
             player.play(SoundCue.IMPACT, impacts.get(i).getLoudness());
         }
-        skippedImpacts += count - played;
-        return played;
+        int destroySounds = Math.min(pendingDestroys, MAX_SOUNDS_PER_FRAME);
+        for (int i = 0; i < destroySounds; ++i) {
+            player.play(SoundCue.DESTROY, DESTROY_VOLUME);
+        }
+        skipped += count - impactSounds + pendingDestroys - destroySounds;
+        pendingDestroys = 0;
+        return impactSounds + destroySounds;
     }
 
     /**
-     * Return how many impact events were not played because a frame had more than
-     * {@link #MAX_IMPACTS_PER_FRAME}.
+     * Return how many sounds were not played because a frame had more than
+     * {@link #MAX_SOUNDS_PER_FRAME} of one kind.
      *
      * @return the count (&ge;0)
      */
-    public long getSkippedImpacts() {
-        return skippedImpacts;
+    public long getSkipped() {
+        return skipped;
     }
 
     /**
-     * Play the destroy sound when a body destroyed during a step (in an epilogue) leaves.
+     * Queue the destroy sound when a body destroyed during a step (in an epilogue) leaves.
      *
      * @param world the world (not null)
      * @param body the body leaving (not null)
@@ -108,7 +118,7 @@ public final class CollisionSounds implements BodyListener {
     @Override
     public void bodyRemoved(World world, Body body) {
         if (world.isStepping()) {
-            player.play(SoundCue.DESTROY, DESTROY_VOLUME);
+            ++pendingDestroys;
         }
     }
 }

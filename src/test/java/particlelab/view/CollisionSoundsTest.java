@@ -43,8 +43,8 @@ class CollisionSoundsTest {
                 assertEquals(expected, impact.getLoudness(), 1e-6f);
             }
             int before = (int) player.getLog().getTotal();
-            assertEquals(Math.min(queue.size(), CollisionSounds.MAX_IMPACTS_PER_FRAME),
-                    sounds.playImpacts(queue));
+            assertEquals(Math.min(queue.size(), CollisionSounds.MAX_SOUNDS_PER_FRAME),
+                    sounds.playFrame(world));
             for (int i = 0; i < queue.size(); ++i) {
                 int entry = player.getLog().size() - queue.size() + i;
                 assertSame(SoundCue.IMPACT, player.getLog().getCue(entry));
@@ -56,13 +56,13 @@ class CollisionSoundsTest {
         // Dropped from 2 m (first impact at about 6 m/s), e = 0.5: impacts at 6.1, 3.0, 1.5,
         // 0.8 m/s are above the 0.5 m/s hit threshold, later ones are not.
         assertTrue(impacts >= 3 && impacts <= 5, "impact sounds: " + impacts);
-        assertEquals(0L, sounds.getSkippedImpacts());
+        assertEquals(0L, sounds.getSkipped());
     }
 
     @Test
     void aCrowdedFramePlaysOnlyTheCapAndCountsTheRest() {
         World world = groundWorld(0.5f);
-        int balls = CollisionSounds.MAX_IMPACTS_PER_FRAME + 3;
+        int balls = CollisionSounds.MAX_SOUNDS_PER_FRAME + 3;
         for (int i = 0; i < balls; ++i) {
             world.addBody(new ParticleIntegrator(new Gravity()),
                     new Vector3f(i, 1f, 0f), Vector3f.ZERO, 1f, RADIUS);
@@ -74,13 +74,13 @@ class CollisionSoundsTest {
         }
         // Same height, same step: every ball hits the ground in the same step.
         assertEquals(balls, world.getImpacts().size());
-        assertEquals(CollisionSounds.MAX_IMPACTS_PER_FRAME, sounds.playImpacts(world.getImpacts()));
-        assertEquals(CollisionSounds.MAX_IMPACTS_PER_FRAME, player.getLog().getTotal());
-        assertEquals(3L, sounds.getSkippedImpacts());
+        assertEquals(CollisionSounds.MAX_SOUNDS_PER_FRAME, sounds.playFrame(world));
+        assertEquals(CollisionSounds.MAX_SOUNDS_PER_FRAME, player.getLog().getTotal());
+        assertEquals(3L, sounds.getSkipped());
     }
 
     @Test
-    void aBodyDestroyedInTheEpiloguePlaysTheDestroySoundButAResetDoesNot() {
+    void aBodyDestroyedInTheEpiloguePlaysTheDestroySoundAfterItsImpactButAResetDoesNot() {
         World world = groundWorld(0.5f);
         ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
         Body target = world.addBody(gravity, new Vector3f(0f, 1f, 0f), Vector3f.ZERO, 1f,
@@ -101,14 +101,19 @@ class CollisionSoundsTest {
         while (world.countBodies() == 2) {
             world.step(H);
         }
-        assertEquals(1, player.getLog().getTotal());
-        assertSame(SoundCue.DESTROY, player.getLog().getCue(0));
-        assertEquals(CollisionSounds.DESTROY_VOLUME, player.getLog().getVolume(0), 0f);
+        assertEquals(0, player.getLog().getTotal(), "nothing is played inside the steps");
+        assertEquals(2, sounds.playFrame(world));
+        // The lecture's order: the impact (prologue), then the destroyed target (epilogue).
+        assertSame(SoundCue.IMPACT, player.getLog().getCue(0));
+        assertSame(SoundCue.DESTROY, player.getLog().getCue(1));
+        assertEquals(CollisionSounds.DESTROY_VOLUME, player.getLog().getVolume(1), 0f);
+        world.getImpacts().clear();
 
         // Removed outside a step (a scene being rebuilt): no sound.
         world.destroy(bystander);
         world.restart();
-        assertEquals(1, player.getLog().getTotal());
+        assertEquals(0, sounds.playFrame(world));
+        assertEquals(2, player.getLog().getTotal());
 
         sounds.detach(world);
         assertEquals(0, world.countBodyListeners());
@@ -126,10 +131,9 @@ class CollisionSoundsTest {
         }
         CollisionSounds sounds =
                 new CollisionSounds(new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE));
-        Impacts queue = world.getImpacts();
         Allocations.assertAllocatesNothing("10_000 frames of impact sounds", () -> {
             for (int i = 0; i < 10_000; ++i) {
-                sounds.playImpacts(queue);
+                sounds.playFrame(world);
             }
         });
     }
