@@ -2,10 +2,12 @@ package particlelab.view;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.app.LegacyApplication;
 import com.jme3.asset.DesktopAssetManager;
 import com.jme3.audio.AudioContext;
 import com.jme3.audio.AudioData;
@@ -115,6 +117,24 @@ class SoundPlayerTest {
         assertEquals(1, records.size());
         assertEquals(Level.FINE, records.get(0).getLevel());
         assertEquals("sound: destroy vol 1.00 (no audio device)", records.get(0).getMessage());
+    }
+
+    @Test
+    void anApplicationWithAnAudioRendererGetsJmesPlayerAndOneWithoutGetsTheSilentOne() {
+        AudioRenderer fakeAudio = (AudioRenderer) Proxy.newProxyInstance(
+                AudioRenderer.class.getClassLoader(), new Class<?>[] {AudioRenderer.class},
+                (proxy, method, args) -> method.getReturnType() == float.class ? 0f : null);
+        LegacyApplication loud = new LegacyApplication() {
+            {
+                audioRenderer = fakeAudio;
+                assetManager = new DesktopAssetManager(true);
+            }
+        };
+        assertInstanceOf(AudioNodeSoundPlayer.class, SoundPlayer.forApplication(loud));
+        LegacyApplication silent = new LegacyApplication();
+        SoundPlayer player = SoundPlayer.forApplication(silent);
+        assertInstanceOf(SilentSoundPlayer.class, player);
+        assertEquals(SoundPlayer.NO_AUDIO_DEVICE, player.getLog().getSilentReason());
     }
 
     @Test
