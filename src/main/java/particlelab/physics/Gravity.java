@@ -36,7 +36,7 @@ public final class Gravity implements Force {
      * @return storeResult
      */
     public Vector3f copyAcceleration(Vector3f storeResult) {
-        return storeResult.set(acceleration);
+        return Validate.notNull(storeResult, "storeResult").set(acceleration);
     }
 
     /**

@@ -115,6 +115,7 @@ public final class SimulationClock {
             throw new IllegalArgumentException(
                     "frame time tpf (s) must be finite and >= 0, but was " + tpf);
         }
+        Validate.notNull(stepper, "stepper");
         int steps = takeSteps(tpf, stepper);
         measure(tpf);
         return steps;

@@ -63,7 +63,9 @@ class NullArgumentTest {
                 new Case("simulator", () -> new IterativeAim(null, 9.8, 0.001, 10)),
                 new Case("method", () -> new AimResult(null, true, 1, 1, 1, 1, 1, 1, "hit")),
                 new Case("explanation", () -> new AimResult("x", true, 1, 1, 1, 1, 1, 1, null)),
-                new Case("vector", () -> Validate.isFinite(null)));
+                new Case("vector", () -> Validate.isFinite(null)),
+                new Case("stepper", () -> new SimulationClock().advance(H, null)),
+                new Case("storeResult", () -> new Gravity().copyAcceleration(null)));
     }
 
     @ParameterizedTest(name = "{0}")
