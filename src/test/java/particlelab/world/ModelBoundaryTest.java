@@ -16,12 +16,12 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The model packages stay free of jME's scene graph: a plain source scan, no library. Files
- * under physics/, world/, collision/ and aiming/ may import only com.jme3.math from jME.
+ * under physics/, world/, collision/, aiming/ and rigid/ may import only com.jme3.math from jME.
  */
 class ModelBoundaryTest {
 
     private static final Path SOURCES = Paths.get("src", "main", "java", "particlelab");
-    private static final String[] MODEL_PACKAGES = {"physics", "world", "collision", "aiming"};
+    private static final String[] MODEL_PACKAGES = {"physics", "world", "collision", "aiming", "rigid"};
     private static final Pattern JME_IMPORT =
             Pattern.compile("^\\s*import\\s+(static\\s+)?(com\\.jme3\\.[\\w.*]+)\\s*;",
                     Pattern.MULTILINE);
