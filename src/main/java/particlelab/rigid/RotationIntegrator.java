@@ -195,7 +195,7 @@ public final class RotationIntegrator {
         float nx = (float) ox;
         float ny = (float) oy;
         float nz = (float) oz;
-        if (!Float.isFinite(nx + ny + nz)) {
+        if (!(Float.isFinite(nx) && Float.isFinite(ny) && Float.isFinite(nz))) {
             throw nonFinite(body, stepSeconds, "angular velocity");
         }
         // Turn with the new ω as it will be stored.

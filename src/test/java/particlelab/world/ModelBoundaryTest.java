@@ -51,6 +51,25 @@ class ModelBoundaryTest {
     }
 
     @Test
+    void rigidBodiesImportNoModelPackageButPhysics() throws IOException {
+        Pattern projectImport = Pattern.compile(
+                "^\\s*import\\s+(static\\s+)?particlelab\\.(\\w+)", Pattern.MULTILINE);
+        List<String> offences = new ArrayList<>();
+        try (Stream<Path> paths = Files.walk(SOURCES.resolve("rigid"))) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))
+                    ::iterator) {
+                Matcher imports = projectImport.matcher(Files.readString(file));
+                while (imports.find()) {
+                    if (!"physics".equals(imports.group(2))) {
+                        offences.add(file + ": particlelab." + imports.group(2));
+                    }
+                }
+            }
+        }
+        assertEquals(List.of(), offences);
+    }
+
+    @Test
     void theScanCatchesASceneGraphImport() {
         Matcher imports = JME_IMPORT.matcher("package x;\nimport com.jme3.scene.Node;\n");
         assertTrue(imports.find());
