@@ -21,7 +21,8 @@ import org.junit.jupiter.api.Test;
 class ModelBoundaryTest {
 
     private static final Path SOURCES = Paths.get("src", "main", "java", "particlelab");
-    private static final String[] MODEL_PACKAGES = {"physics", "world", "collision", "aiming", "rigid"};
+    private static final String[] MODEL_PACKAGES =
+            {"physics", "world", "collision", "aiming", "rigid"};
     private static final Pattern JME_IMPORT =
             Pattern.compile("^\\s*import\\s+(static\\s+)?(com\\.jme3\\.[\\w.*]+)\\s*;",
                     Pattern.MULTILINE);
