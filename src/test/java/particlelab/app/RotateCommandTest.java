@@ -44,7 +44,9 @@ class RotateCommandTest {
         for (int n = 0; n <= 60; ++n) {
             String row = lines.get(n + 1);
             assertEquals(9, cells(row).length);
-            assertEquals((float) (n / 60.0), Float.parseFloat(cells(row)[0]), 0f);
+            // t = n·h with h the float 1/60
+            assertEquals((float) (n * (double) (1f / 60f)), Float.parseFloat(cells(row)[0]),
+                    0f);
             // det (1 + (ωh)²)^n; the nearest rotation lags by n·(ωh − atan(ωh))
             assertEquals(Math.pow(1.0 + wh * wh, n), cell(row, 1), 3 * n * EPS * 2.0);
             assertEquals(n * (wh - Math.atan(wh)), cell(row, 3), 4 * n * EPS);
