@@ -18,10 +18,18 @@ import particlelab.physics.Validate;
  * </ul>
  *
  * <p>The vectors and the matrix are {@code public final} and live, like the particle's: change
- * them in place. In a world (later) a {@code Body} would hold one of these as its optional
- * rotation part, and the world's integration phase would call
- * {@link #step(ParticleIntegrator, RotationIntegrator, float)} instead of
- * the particle step alone.
+ * them in place.
+ *
+ * <p>How a world can hold rigid bodies (not done yet): a world body keeps a nullable rigid
+ * part built with {@link #RigidBody(Particle, Inertia)} on the body's own particle, and the
+ * world's integration phase, after the particle step of that body, calls
+ * {@link RotationIntegrator#step} on the rigid part: the same order as
+ * {@link #step(ParticleIntegrator, RotationIntegrator, float)}. The contact phases are not
+ * changed; an impulse at a contact point would also change ω through the inertia.
+ *
+ * <p>For a view: jME's spatial rotation is a quaternion and would hide the drift of the plain
+ * matrix step, so a view that shows it must move the mesh's vertices by
+ * {@link #bodyToWorld} (or by R itself).
  */
 public final class RigidBody {
 
@@ -44,6 +52,21 @@ public final class RigidBody {
      */
     public RigidBody(float massKg, Inertia inertia) {
         particle = new Particle(Vector3f.ZERO, Vector3f.ZERO, massKg);
+        setInertia(inertia);
+    }
+
+    /**
+     * Create a rigid body around an existing particle (its centre, shared, not copied), with
+     * the identity orientation, at rest.
+     *
+     * @param centre the particle for the centre of mass (not null; live, shared)
+     * @param inertia the principal moments in the body frame (not null)
+     */
+    public RigidBody(Particle centre, Inertia inertia) {
+        if (centre == null) {
+            throw new IllegalArgumentException("centre must be a particle, but was null");
+        }
+        particle = centre;
         setInertia(inertia);
     }
 
@@ -131,6 +154,27 @@ public final class RigidBody {
         double z = (double) r.get(0, 2) * w.x + (double) r.get(1, 2) * w.y
                 + (double) r.get(2, 2) * w.z;
         return storeResult.set((float) x, (float) y, (float) z);
+    }
+
+    /**
+     * Copy where a point fixed in the body is in the world, {@code P + R·b}: a corner's trail,
+     * or a drifting mesh. Allocates nothing.
+     *
+     * @param bodyPoint b, the point in body coordinates (in metres, not null, not modified)
+     * @param storeResult storage for the world point (in metres, not null, modified; may be
+     *     bodyPoint)
+     * @return storeResult
+     */
+    public Vector3f bodyToWorld(Vector3f bodyPoint, Vector3f storeResult) {
+        Matrix3f r = orientation;
+        float x = bodyPoint.x;
+        float y = bodyPoint.y;
+        float z = bodyPoint.z;
+        Vector3f p = particle.position;
+        return storeResult.set(
+                p.x + r.get(0, 0) * x + r.get(0, 1) * y + r.get(0, 2) * z,
+                p.y + r.get(1, 0) * x + r.get(1, 1) * y + r.get(1, 2) * z,
+                p.z + r.get(2, 0) * x + r.get(2, 1) * y + r.get(2, 2) * z);
     }
 
     /**

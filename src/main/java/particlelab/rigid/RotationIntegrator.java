@@ -19,7 +19,12 @@ import particlelab.physics.Validate;
  *       Ṙ = [ω]×·R                                (by the {@link Orientation} method)
  * </pre>
  *
- * The sensitive arithmetic is done in double and rounded into the body's float state once per
+ * Only the change {@code Δω_b} is carried back through R, so a body whose ω does not change
+ * (a sphere, or no gyroscopic term and no torque) keeps ω exactly even while the plain matrix
+ * step lets R drift; an asymmetric body under that step sees the drift in {@code Rᵀ·ω} too,
+ * which is one more reason for a cure.
+ *
+ * <p>The sensitive arithmetic is done in double and rounded into the body's float state once per
  * step. Nothing is written unless the whole result is finite. Each integrator owns scratch
  * arrays, so it is not thread-safe and {@link #step} allocates nothing.
  */
@@ -47,7 +52,9 @@ public final class RotationIntegrator {
         POLAR,
         /**
          * The quaternion step {@code q ← q + (h/2)·(0, ω)·q}, then normalised: turns by
-         * {@code 2·atan(|ω|h/2)} per step, lagging {@code ≈ (|ω|h)³/12}: second order.
+         * {@code 2·atan(|ω|h/2)} per step, lagging {@code ≈ (|ω|h)³/12}: second order. The
+         * body's state stays the matrix: q is read from R (Shepperd's method) and written
+         * back each step, which changes nothing but round-off while R is a rotation.
          */
         QUATERNION,
         /**
@@ -217,6 +224,9 @@ public final class RotationIntegrator {
      */
     public void stepOrientation(Matrix3f matrix, Vector3f omega, float stepSeconds) {
         checkStep(stepSeconds);
+        if (matrix == null) {
+            throw new IllegalArgumentException("orientation must be a matrix, but was null");
+        }
         Validate.finite(omega, "angular velocity (rad/s)");
         Mat3.load(matrix, rotation);
         if (!stepOrientation(rotation, omega.x, omega.y, omega.z, stepSeconds, next)) {

@@ -9,6 +9,7 @@ import org.junit.jupiter.api.Test;
 import particlelab.VectorAssert;
 import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
@@ -23,7 +24,7 @@ class RigidBodyTest {
         RigidBody box = new RigidBody(2f, Inertia.box(2f, 1f, 0.5f, 0.25f));
         box.getParticle().setState(new Vector3f(0f, 1f, 0f), new Vector3f(3f, 8f, 0f));
         box.setAngularVelocity(new Vector3f(1f, 4f, 0.5f));
-        particlelab.physics.Particle lone = new particlelab.physics.Particle(
+        Particle lone = new Particle(
                 new Vector3f(0f, 1f, 0f), new Vector3f(3f, 8f, 0f), 2f);
         RotationIntegrator rotation =
                 new RotationIntegrator(Orientation.EXACT, Angular.EXPLICIT, true);
@@ -50,6 +51,21 @@ class RigidBodyTest {
     }
 
     @Test
+    void aBodyPointIsTheCentrePlusRTimesIt() {
+        Particle centre = new Particle(
+                new Vector3f(1f, 2f, 3f), Vector3f.ZERO, 1f);
+        RigidBody body = new RigidBody(centre, Inertia.of(1f, 1f, 1f));
+        // A quarter turn about z: body x is world y, body y is world -x.
+        body.setOrientation(new Matrix3f(0f, -1f, 0f, 1f, 0f, 0f, 0f, 0f, 1f));
+        VectorAssert.assertVectorEquals(new Vector3f(0f, 2.5f, 3.25f),
+                body.bodyToWorld(new Vector3f(0.5f, 1f, 0.25f), new Vector3f()), 0f);
+        // The centre is shared: moving the particle moves the body.
+        centre.position.set(0f, 0f, 0f);
+        VectorAssert.assertVectorEquals(new Vector3f(-1f, 0.5f, 0.25f),
+                body.bodyToWorld(new Vector3f(0.5f, 1f, 0.25f), new Vector3f()), 0f);
+    }
+
+    @Test
     void badInputIsRefusedWithTheValueNamed() {
         RigidBody body = new RigidBody(1f, Inertia.of(1f, 1f, 1f));
         assertThrows(IllegalArgumentException.class,
@@ -62,6 +78,8 @@ class RigidBodyTest {
         assertThrows(IllegalArgumentException.class, () -> body.setOrientation(bad));
         assertThrows(IllegalArgumentException.class, () -> new RigidBody(0f,
                 Inertia.of(1f, 1f, 1f)));
+        assertThrows(IllegalArgumentException.class,
+                () -> new RigidBody((Particle) null, Inertia.of(1f, 1f, 1f)));
     }
 
     @Test
