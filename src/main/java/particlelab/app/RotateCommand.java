@@ -79,8 +79,8 @@ public final class RotateCommand {
                         + " whole number of steps, at least 1.")
                 .value(ORIENTATION, String.join("|", ORIENTATION_WORDS), "how R follows"
                         + " dR/dt = [omega]x R: euler is the lecture's R += h*[omega]x*R with"
-                        + " no cure (det R grows by 1 + (|omega|h)^2 a step); gram-schmidt"
-                        + " and polar re-orthonormalise after it; quaternion steps"
+                        + " no cure (det R grows by a factor 1 + (|omega|h)^2 a step);"
+                        + " gram-schmidt and polar re-orthonormalise after it; quaternion steps"
                         + " q += (h/2)(0,omega)q and normalises; exact is R = exp(h[omega]x)R."
                         + " Default euler, the lecture's step, whose drift this command is"
                         + " for.")
