@@ -27,7 +27,7 @@ public final class Main {
     private static final String REPORT = ReportCommand.NAME;
     private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
             + ", " + BounceCommand.NAME + ", " + CollideCommand.NAME + ", " + TunnelCommand.NAME
-            + ", " + DEMO + ", " + REPORT + ", " + HELP;
+            + ", " + RotateCommand.NAME + ", " + DEMO + ", " + REPORT + ", " + HELP;
 
     private Main() {
     }
@@ -94,6 +94,8 @@ public final class Main {
                 return CollideCommand.run(rest, out, err);
             case TunnelCommand.NAME:
                 return TunnelCommand.run(rest, out, err);
+            case RotateCommand.NAME:
+                return RotateCommand.run(rest, out, err);
             case DEMO:
                 return DemoCommand.run(rest, out, err);
             case REPORT:
@@ -138,6 +140,8 @@ public final class Main {
                 + "              kinetic energy before and after, as CSV\n"
                 + "  tunnel      fire shots at a thin wall: how many the overlap or swept test\n"
                 + "              misses, as CSV\n"
+                + "  rotate      spin one torque-free rigid body: det R, drift from a rotation,\n"
+                + "              angle error, omega, energy and |L| per step, as CSV\n"
                 + "  demo        open the window on one demo (--list, --frames, --screenshot)\n"
                 + "  report      write the accuracy and speed report\n"
                 + "  help        show this help; help COMMAND shows that command's help\n"

@@ -16,12 +16,13 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The model packages stay free of jME's scene graph: a plain source scan, no library. Files
- * under physics/, world/, collision/ and aiming/ may import only com.jme3.math from jME.
+ * under physics/, world/, collision/, aiming/ and rigid/ may import only com.jme3.math from jME.
  */
 class ModelBoundaryTest {
 
     private static final Path SOURCES = Paths.get("src", "main", "java", "particlelab");
-    private static final String[] MODEL_PACKAGES = {"physics", "world", "collision", "aiming"};
+    private static final String[] MODEL_PACKAGES =
+            {"physics", "world", "collision", "aiming", "rigid"};
     private static final Pattern JME_IMPORT =
             Pattern.compile("^\\s*import\\s+(static\\s+)?(com\\.jme3\\.[\\w.*]+)\\s*;",
                     Pattern.MULTILINE);
@@ -47,6 +48,25 @@ class ModelBoundaryTest {
             }
         }
         assertTrue(files > 20, "scanned only " + files + " files");
+        assertEquals(List.of(), offences);
+    }
+
+    @Test
+    void rigidBodiesImportNoModelPackageButPhysics() throws IOException {
+        Pattern projectImport = Pattern.compile(
+                "^\\s*import\\s+(static\\s+)?particlelab\\.(\\w+)", Pattern.MULTILINE);
+        List<String> offences = new ArrayList<>();
+        try (Stream<Path> paths = Files.walk(SOURCES.resolve("rigid"))) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))
+                    ::iterator) {
+                Matcher imports = projectImport.matcher(Files.readString(file));
+                while (imports.find()) {
+                    if (!"physics".equals(imports.group(2))) {
+                        offences.add(file + ": particlelab." + imports.group(2));
+                    }
+                }
+            }
+        }
         assertEquals(List.of(), offences);
     }
 
