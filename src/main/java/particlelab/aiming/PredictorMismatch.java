@@ -7,8 +7,10 @@ import particlelab.physics.Validate;
  * {@code h_predict}, the game flies them with another, {@code h_fly}. The semi-implicit Euler
  * bullet lands {@code vx·h} short of the continuous parabola (see {@link LevelAim}), so a vy
  * that the predictor lands at S flies to about {@code S + vx·(h_predict − h_fly)}: long when
- * the predictor's step is the larger. With drag the horizontal speed falls during the flight
- * and the miss is smaller, about the landing's vx times the difference.
+ * the predictor's step is the larger. With drag the Euler step also shortens the effective
+ * launch by {@code h/2} times drag's deceleration, and the miss grows: measured 4 % above
+ * {@code vx·|Δh|} with linear drag b/m = 0.1 /s and 26 % with quadratic drag c/m = 0.01 /m
+ * (vx = 20 m/s, S = 50 m).
  */
 public final class PredictorMismatch {
 
