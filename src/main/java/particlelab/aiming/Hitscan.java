@@ -36,6 +36,9 @@ public final class Hitscan {
     private final Vector3f previous = new Vector3f();
     private final Vector3f centre = new Vector3f();
     private final Vector3f normal = new Vector3f();
+    /** The last disc's plane, rebuilt only when the distance changes. */
+    private Plane face;
+    private float faceDistance;
 
     /**
      * Create a projectile range.
@@ -122,8 +125,11 @@ public final class Hitscan {
             TargetImpact storeResult) {
         Validate.notNull(storeResult, "storeResult");
         checkShot(speed, distance, radiusMetres);
-        // The disc's plane n·x = c with n = −x facing the gun: n·x − c = d − x.
-        Plane face = new Plane(new Vector3f(-1f, 0f, 0f), -distance);
+        if (face == null || faceDistance != distance) {
+            // The disc's plane n·x = c with n = −x facing the gun: n·x − c = d − x.
+            face = new Plane(new Vector3f(-1f, 0f, 0f), -distance);
+            faceDistance = distance;
+        }
         launch(speed);
         for (int step = 1; step <= maxSteps; ++step) {
             previous.set(projectile.position);

@@ -4,6 +4,7 @@ import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import particlelab.aiming.Hitscan;
 import particlelab.aiming.TargetImpact;
+import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 
@@ -95,7 +96,7 @@ public final class HitscanCommand {
             }
             float distance = options.positiveFloat(DISTANCE);
             float speed = options.positiveFloat(SPEED);
-            float gravity = options.positiveFloat(G, particlelab.physics.Gravity.STANDARD_G);
+            float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
             float radius = options.positiveFloat(RADIUS, DEFAULT_RADIUS_METRES);
             float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
             double steps = distance / ((double) speed * step);
