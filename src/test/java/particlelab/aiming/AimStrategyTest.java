@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -217,5 +218,23 @@ class AimStrategyTest {
         IllegalArgumentException bad = org.junit.jupiter.api.Assertions.assertThrows(
                 IllegalArgumentException.class, () -> AimStrategy.fromCliName("guess"));
         assertTrue(bad.getMessage().contains("guess"), bad.getMessage());
+    }
+
+    /** Recording a shot into the log allocates nothing. */
+    @Test
+    void recordingShotsAllocatesNothing() {
+        ShotLog log = new ShotLog(10);
+        Landing landing = new Landing();
+        landing.set(true, 99.5, 4.9, 300);
+        log.record(20f, 24.5f, landing, 100.0);
+        Allocations.assertAllocatesNothing("10000 records", () -> {
+            for (int i = 0; i < 10_000; ++i) {
+                if (log.size() == log.capacity()) {
+                    log.clear();
+                }
+                log.record(20f, 24.5f, landing, 100.0);
+            }
+        });
+        assertEquals(-0.5, log.getMiss(0), 1e-12);
     }
 }

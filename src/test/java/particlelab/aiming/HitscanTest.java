@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -127,5 +128,20 @@ class HitscanTest {
         assertFalse(range().fireAtSphere(35f, 100f, RADIUS, impact));
         assertFalse(impact.isHit());
         assertTrue(Double.isNaN(impact.getX()));
+    }
+
+    /** A demo fires every frame: once warm, a shot at either target allocates nothing. */
+    @Test
+    void firingAllocatesNothingOnceWarm() {
+        Hitscan range = range();
+        TargetImpact impact = new TargetImpact();
+        range.fireAtDisc(35f, 100f, RADIUS, impact);
+        range.fireAtSphere(900f, 100f, RADIUS, impact);
+        Allocations.assertAllocatesNothing("1000 shots", () -> {
+            for (int i = 0; i < 500; ++i) {
+                range.fireAtDisc(35f, 100f, RADIUS, impact);
+                range.fireAtSphere(900f, 100f, RADIUS, impact);
+            }
+        });
     }
 }
