@@ -32,7 +32,8 @@ public enum AimStrategy {
      * A computer player a person believes: it works out the right vy first, invisibly (the
      * Illinois search to half the tolerance), then fires a first shot that always misses and
      * moves a seeded random 30–170 % of the way toward the right vy at each later shot. Its
-     * error shrinks by a factor of at most 0.7 per shot.
+     * error shrinks by a factor of at most 0.7 per shot. (A tolerance so large that even a shot
+ * landing at the gun is within it leaves no shot that misses.)
      */
     BELIEVABLE("believable");
 

@@ -384,14 +384,21 @@ public final class IterativeAim {
         random.setSeed(seed);
         double error = BELIEVABLE_FIRST_MIN_ERROR + (BELIEVABLE_FIRST_MAX_ERROR
                 - BELIEVABLE_FIRST_MIN_ERROR) * random.nextDouble();
-        double vy = random.nextBoolean() ? right * (1.0 + error) : right * (1.0 - error);
+        double firstGuess = random.nextBoolean() ? right * (1.0 + error)
+                : right * (1.0 - error);
         // The first shot must miss: a first guess that would hit is shortened, in the head.
-        for (int retry = 0; retry < MAX_FIRST_SHOT_RETRIES; ++retry) {
-            if (!simulator.fire((float) horizontalSpeed, (float) vy, landing)
-                    || Math.abs(landing.getX() - distance) > toleranceMetres) {
-                break;
+        // Only a tolerance of about S leaves no shot that misses: then the first guess hits.
+        double vy = firstGuess;
+        boolean misses = false;
+        for (int retry = 0; retry < MAX_FIRST_SHOT_RETRIES && !misses; ++retry) {
+            misses = !simulator.fire((float) horizontalSpeed, (float) vy, landing)
+                    || Math.abs(landing.getX() - distance) > toleranceMetres;
+            if (!misses) {
+                vy *= 0.5;
             }
-            vy *= 0.5;
+        }
+        if (!misses) {
+            vy = firstGuess;
         }
         resetSearch(distance);
         searchTolerance = toleranceMetres;

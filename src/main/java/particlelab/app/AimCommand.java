@@ -124,7 +124,8 @@ public final class AimCommand {
                 .value(TOLERANCE, "METRES", "iterative only: stop once the landing is this"
                         + " close to S (m, > 0). Default " + DEFAULT_TOLERANCE_METRES + ". Float"
                         + " round-off (vy is fired as a float) limits it to about 1e-5 m at"
-                        + " 100 m.")
+                        + " 100 m. With --strategy believable it must be less than S, so that"
+                        + " a first shot can miss.")
                 .value(STRATEGY, "NAME", "iterative only: how vy is adjusted after each shot."
                         + " lecture: the lecture's rule, undershot -> more power, overshot -> less,"
                         + " vy changed by half the first guess and the change halved at each sign"
@@ -205,6 +206,11 @@ public final class AimCommand {
                         + AimStrategy.BELIEVABLE.cliName() + ", but the strategy is "
                         + strategy.cliName());
             }
+            if (strategy == AimStrategy.BELIEVABLE && tolerance >= distance) {
+                throw new UsageException(TOLERANCE + ": with " + STRATEGY + " "
+                        + AimStrategy.BELIEVABLE.cliName() + " it must be less than S="
+                        + distance + " m, so that a first shot can miss, but was " + tolerance);
+            }
             options.atMostOneOf(CSV, SHOTS_CSV);
             float predictStep = options.positiveFloat(PREDICT_TPF, step);
             if (options.has(PREDICT_TPF) && LECTURE.equals(method)) {
@@ -251,7 +257,13 @@ public final class AimCommand {
             } catch (NonFiniteStepException nonFinite) {
                 float limit = integrator.maxStableStep(launch(vx,
                         (float) LevelAim.lectureVy(gravity, distance, vx), mass));
-                throw CommandSupport.blewUp(blewUpStep, "during a shot", limit);
+                UsageException blewUp = CommandSupport.blewUp(blewUpStep, "during a shot",
+                        limit);
+                if (blewUpStep == step) {
+                    throw blewUp;
+                }
+                // The predictor's step blew up: name its option, not --tpf.
+                throw new UsageException(blewUp.getMessage().replaceFirst(TPF, PREDICT_TPF));
             }
             CommandSupport.warnIfUnstable(integrator,
                     launch(vx, (float) result.getVerticalSpeed(), mass), step, err);

@@ -174,6 +174,9 @@ class AimingCommandsTest {
         "--predict-tpf| aim --distance 100 --vx 20 --predict-tpf 1/30",
         "--predict-tpf| aim --distance 100 --vx 20 --method iterative --predict-tpf 0",
         "--predict-tpf| aim --distance 100 --vx 20 --method iterative --predict-tpf 1e-9",
+        "--predict-tpf| aim --distance 100 --vx 20 --method iterative --predict-tpf 3e38",
+        "--tolerance  | aim --distance 100 --vx 20 --method iterative --strategy believable"
+                + " --tolerance 100",
         "--distance   | hitscan --speed 900",
         "--speed      | hitscan --distance 100",
         "--speed      | hitscan --distance 100 --speed -1",
