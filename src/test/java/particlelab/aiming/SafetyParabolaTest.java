@@ -22,8 +22,10 @@ class SafetyParabolaTest {
     /**
      * Just below the envelope both angles exist and nearly coincide; just above there is none.
      * The margin 1e-6 m is far above the double round-off of the discriminant at these sizes
-     * (about 1e-13 relative). Below it by δ the angles split by about
-     * {@code sqrt(2g·δ)/s ≈ 5e-6} in tan θ times u, well inside 1e-3 rad.
+     * (about 1e-13 relative). Below it by δ the discriminant ratio of
+     * LaunchAngles is {@code 1 − q = 2g·δ/s²}, so {@code tan θ = u·(1 ± sqrt(2g·δ)/s)}: a
+     * relative split of 1.5e-4, at most {@code 1.5e-4·sin θ·cos θ ≤ 7.5e-5} rad in angle,
+     * well inside 1e-3 rad.
      */
     @Test
     void targetsBelowTheEnvelopeAreReachableAndAboveAreNot() {
