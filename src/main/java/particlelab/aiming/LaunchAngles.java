@@ -71,6 +71,26 @@ public final class LaunchAngles {
     }
 
     /**
+     * The reachable envelope at a fixed launch speed s, no drag: the safety parabola
+     * {@code y = s²/(2g) − g·x²/(2s²)}. Targets on or below it are reachable (the discriminant
+     * of {@link #solve} is zero on it), targets above are not; it meets the gun's level at the
+     * maximum range {@code s²/g}.
+     *
+     * @param launchSpeed s (in m/s, finite, &gt;0)
+     * @param targetDistance x, the horizontal distance (in metres, finite, &ge;0)
+     * @param gravity g (in m/s², finite, &gt;0)
+     * @return the highest reachable height above the gun at x (in metres)
+     */
+    public static double envelopeHeight(double launchSpeed, double targetDistance,
+            double gravity) {
+        Validate.positive(launchSpeed, "launch speed s (m/s)");
+        Validate.nonNegative(targetDistance, "target distance x (m)");
+        Validate.positive(gravity, "gravity g (m/s^2)");
+        double reach = launchSpeed / gravity * launchSpeed;
+        return 0.5 * reach - 0.5 * targetDistance * (targetDistance / reach);
+    }
+
+    /**
      * Test whether any angle reaches the target.
      *
      * @return true if reachable

@@ -6,9 +6,12 @@ import java.math.BigDecimal;
 import java.math.RoundingMode;
 import java.util.Locale;
 import particlelab.aiming.AimResult;
+import particlelab.aiming.AimStrategy;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
+import particlelab.aiming.PredictorMismatch;
+import particlelab.aiming.ShotLog;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
@@ -31,6 +34,13 @@ import particlelab.physics.ParticleIntegrator;
  * <li>With linear drag a target at {@code S ≥ vx·m/b} is out of reach for every method; the
  * iterative method also finds out by itself, for the slightly shorter reach of the stepped
  * bullet and for quadratic drag.</li>
+ * <li>Without {@code --strategy} the iterative method keeps the search it has always used,
+ * bracketed regula falsi, named {@code illinois} (also accepted by {@code --strategy}).</li>
+ * <li>The believable player's seed defaults to {@link #DEFAULT_SEED}; its invisible search for
+ * the right vy is not printed or counted, only the shots it fires.</li>
+ * <li>{@code --predict-tpf} works for {@code iterative} and {@code discrete} (the two that use
+ * a step); the reported shot, and the last {@code --shots-csv} row, is the predicted vy flown
+ * at {@code --tpf}, counted as one more shot.</li>
  * </ul>
  */
 public final class AimCommand {
@@ -39,6 +49,10 @@ public final class AimCommand {
     public static final String NAME = "aim";
     /** The CSV header, exactly. */
     public static final String HEADER = "method,vx,vy,flight_time,landing_x,miss,shots";
+    /** The header of {@code --shots-csv}, exactly. */
+    public static final String SHOTS_HEADER = "shot,vy,landing_x,miss";
+    /** The believable player's seed when {@code --seed} is not given. */
+    public static final int DEFAULT_SEED = 1;
     /** The default tolerance of the iterative method (in metres). */
     public static final float DEFAULT_TOLERANCE_METRES = 0.001f;
     /** The most shots the iterative method fires. */
@@ -72,6 +86,10 @@ public final class AimCommand {
     private static final String METHOD = "--method";
     private static final String TOLERANCE = "--tolerance";
     private static final String CSV = "--csv";
+    private static final String STRATEGY = "--strategy";
+    private static final String SEED = "--seed";
+    private static final String SHOTS_CSV = "--shots-csv";
+    private static final String PREDICT_TPF = "--predict-tpf";
 
     private AimCommand() {
     }
@@ -106,8 +124,31 @@ public final class AimCommand {
                 .value(TOLERANCE, "METRES", "iterative only: stop once the landing is this"
                         + " close to S (m, > 0). Default " + DEFAULT_TOLERANCE_METRES + ". Float"
                         + " round-off (vy is fired as a float) limits it to about 1e-5 m at"
-                        + " 100 m.")
+                        + " 100 m. With --strategy believable it must be less than S, so that"
+                        + " a first shot can miss.")
+                .value(STRATEGY, "NAME", "iterative only: how vy is adjusted after each shot."
+                        + " lecture: the lecture's rule, undershot -> more power, overshot -> less,"
+                        + " vy changed by half the first guess and the change halved at each sign"
+                        + " change of the miss; bisection: double vy until a shot overshoots,"
+                        + " then halve the bracket; secant: the same bracket, then the secant"
+                        + " through the last two shots; believable: a computer player that finds"
+                        + " the right vy invisibly, misses with its first shot (off by "
+                        + percent(IterativeAim.BELIEVABLE_FIRST_MIN_ERROR) + "-"
+                        + percent(IterativeAim.BELIEVABLE_FIRST_MAX_ERROR) + "%) and then moves a"
+                        + " seeded random " + percent(IterativeAim.BELIEVABLE_MIN_MOVE) + "-"
+                        + percent(IterativeAim.BELIEVABLE_MAX_MOVE) + "% of the way toward it;"
+                        + " illinois: bracket, then regula falsi. Default illinois.")
+                .value(SEED, "N", "with --strategy believable: the random seed (an integer"
+                        + " 0-" + Integer.MAX_VALUE + "); the same seed gives the same shots."
+                        + " Default " + DEFAULT_SEED + ".")
+                .value(PREDICT_TPF, "H", "iterative and discrete: the aimer predicts its shots"
+                        + " with this step (s, > 0) while the shot flies at --tpf; it then"
+                        + " misses by about vx*(H - h) (long when H > h). Default: --tpf.")
                 .flag(CSV, "print one CSV row under the header " + HEADER + " instead of text.")
+                .flag(SHOTS_CSV, "iterative only: print one CSV row per simulated shot under"
+                        + " the header " + SHOTS_HEADER + " instead of the summary (vy as"
+                        + " fired; miss = landing_x - S; with " + PREDICT_TPF + " the last row is"
+                        + " the shot flown at --tpf).")
                 .note("Every method's shot is fired from the origin and stepped at h with the"
                         + " given forces until it crosses y = 0; landing_x and flight_time are"
                         + " read at the crossing, interpolated inside the last step; miss is"
@@ -151,9 +192,31 @@ public final class AimCommand {
             String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,
                     IterativeAim.METHOD);
             float tolerance = options.positiveFloat(TOLERANCE, DEFAULT_TOLERANCE_METRES);
-            if (options.has(TOLERANCE) && !IterativeAim.METHOD.equals(method)) {
-                throw new UsageException(TOLERANCE + ": applies only to " + METHOD + " "
-                        + IterativeAim.METHOD + ", but the method is " + method);
+            for (String iterativeOnly : new String[] {TOLERANCE, STRATEGY, SEED, SHOTS_CSV}) {
+                if (options.has(iterativeOnly) && !IterativeAim.METHOD.equals(method)) {
+                    throw new UsageException(iterativeOnly + ": applies only to " + METHOD + " "
+                            + IterativeAim.METHOD + ", but the method is " + method);
+                }
+            }
+            AimStrategy strategy = AimStrategy.fromCliName(options.choice(STRATEGY,
+                    AimStrategy.ILLINOIS.cliName(), strategyNames()));
+            int seed = options.intInRange(SEED, DEFAULT_SEED, 0, Integer.MAX_VALUE);
+            if (options.has(SEED) && strategy != AimStrategy.BELIEVABLE) {
+                throw new UsageException(SEED + ": applies only to " + STRATEGY + " "
+                        + AimStrategy.BELIEVABLE.cliName() + ", but the strategy is "
+                        + strategy.cliName());
+            }
+            if (strategy == AimStrategy.BELIEVABLE && tolerance >= distance) {
+                throw new UsageException(TOLERANCE + ": with " + STRATEGY + " "
+                        + AimStrategy.BELIEVABLE.cliName() + " it must be less than S="
+                        + distance + " m, so that a first shot can miss, but was " + tolerance);
+            }
+            options.atMostOneOf(CSV, SHOTS_CSV);
+            float predictStep = options.positiveFloat(PREDICT_TPF, step);
+            if (options.has(PREDICT_TPF) && LECTURE.equals(method)) {
+                throw new UsageException(PREDICT_TPF + ": applies only to " + METHOD + " "
+                        + IterativeAim.METHOD + " or " + DISCRETE + " (the lecture's formula"
+                        + " uses no step), but the method is " + method);
             }
             if (linearDrag > 0f && distance >= (double) vx * mass / linearDrag) {
                 throw new UsageException(DISTANCE + ": the target at S=" + distance + " m is out"
@@ -163,28 +226,61 @@ public final class AimCommand {
             }
 
             checkFloatRange(gravity, distance, vx);
-            checkStepCount(distance, vx, step);
+            checkStepCount(TPF, distance, vx, step);
+            checkStepCount(PREDICT_TPF, distance, vx, predictStep);
 
             ParticleIntegrator integrator = CommandSupport.integrator(
                     new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
             ShotSimulator simulator = new ShotSimulator(integrator, mass, step,
                     maxFlightSeconds(step));
+            boolean mismatch = options.has(PREDICT_TPF);
+            ShotSimulator predictor = mismatch ? new ShotSimulator(integrator, mass,
+                    predictStep, maxFlightSeconds(predictStep)) : simulator;
+            ShotLog log = new ShotLog(MAX_SHOTS + 1);
             AimResult result;
+            float blewUpStep = step;
+            // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
+            double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
             try {
-                // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
-                double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
-                result = aim(method, simulator, gravity, distance, vx, step, toleranceMetres);
+                blewUpStep = predictStep;
+                result = aim(method, strategy, seed, predictor, gravity, distance, vx,
+                        predictStep, toleranceMetres, log);
+                if (mismatch) {
+                    blewUpStep = step;
+                    result = PredictorMismatch.fly(result, simulator, toleranceMetres, log);
+                    if (Double.isNaN(result.getLandingX())) {
+                        throw new UsageException(DISTANCE + ": " + result.getExplanation()
+                                + " (limit " + maxFlightSeconds(step) + " s); the target at S="
+                                + distance + " m is out of reach");
+                    }
+                }
             } catch (NonFiniteStepException nonFinite) {
                 float limit = integrator.maxStableStep(launch(vx,
                         (float) LevelAim.lectureVy(gravity, distance, vx), mass));
-                throw CommandSupport.blewUp(step, "during a shot", limit);
+                UsageException blewUp = CommandSupport.blewUp(blewUpStep, "during a shot",
+                        limit);
+                if (blewUpStep == step) {
+                    throw blewUp;
+                }
+                // The predictor's step blew up: name its option, not --tpf.
+                throw new UsageException(blewUp.getMessage().replaceFirst(TPF, PREDICT_TPF));
             }
             CommandSupport.warnIfUnstable(integrator,
                     launch(vx, (float) result.getVerticalSpeed(), mass), step, err);
             if (options.has(CSV)) {
                 printCsv(result, out);
+            } else if (options.has(SHOTS_CSV)) {
+                printShots(log, out);
             } else {
-                printText(result, linearDrag > 0f || quadraticDrag > 0f, tolerance, out);
+                printText(result, linearDrag > 0f || quadraticDrag > 0f, tolerance,
+                        options.has(STRATEGY) ? strategy : null, out);
+                if (mismatch) {
+                    out.println("predictor:         aimed with h_predict = "
+                            + readable(predictStep) + " s, flown at h = " + readable(step)
+                            + " s; expected miss about vx*(h_predict - h) = "
+                            + readable(PredictorMismatch.expectedMiss(vx, predictStep, step))
+                            + " m");
+                }
             }
             return 0;
         } catch (UsageException problem) {
@@ -198,11 +294,12 @@ public final class AimCommand {
      * @return a result whose shot landed (not null)
      * @throws UsageException if the target is out of reach or the shot never lands
      */
-    private static AimResult aim(String method, ShotSimulator simulator, float gravity,
-            float distance, float vx, float step, double tolerance) {
+    private static AimResult aim(String method, AimStrategy strategy, int seed,
+            ShotSimulator simulator, float gravity, float distance, float vx, float step,
+            double tolerance, ShotLog log) {
         if (IterativeAim.METHOD.equals(method)) {
-            AimResult result = new IterativeAim(simulator, gravity, tolerance, MAX_SHOTS)
-                    .aim(distance, vx);
+            AimResult result = new IterativeAim(simulator, gravity, tolerance, MAX_SHOTS,
+                    strategy, seed).aim(distance, vx, log);
             if (!result.isHit()) {
                 String option = result.getExplanation().contains("out of reach")
                         ? DISTANCE : TOLERANCE;
@@ -215,7 +312,9 @@ public final class AimCommand {
                 : LevelAim.discreteVy(gravity, distance, vx, step);
         float firedVy = (float) vy;
         Landing landing = new Landing();
-        if (!simulator.fire(vx, firedVy, landing)) {
+        boolean landed = simulator.fire(vx, firedVy, landing);
+        log.clear();
+        if (!landed) {
             throw new UsageException(DISTANCE + ": the " + method + " shot with vy=" + firedVy
                     + " m/s is still in the air after " + maxFlightSeconds(step) + " s; the"
                     + " target at S=" + distance + " m is out of reach");
@@ -229,7 +328,7 @@ public final class AimCommand {
      * Refuse a step so small that the shot would need more than {@link #MAX_STEPS_PER_SHOT}
      * steps just to cover S at vx.
      */
-    private static void checkStepCount(float distance, float vx, float step) {
+    private static void checkStepCount(String option, float distance, float vx, float step) {
         double steps = distance / ((double) vx * step);
         if (steps > MAX_STEPS_PER_SHOT) {
             double smallest = distance / ((double) vx * MAX_STEPS_PER_SHOT);
@@ -237,10 +336,10 @@ public final class AimCommand {
             if (suggested < smallest) {
                 suggested = Math.nextUp(suggested);
             }
-            throw new UsageException(TPF + ": a step of " + step + " s needs S/(vx*h) = "
+            throw new UsageException(option + ": a step of " + step + " s needs S/(vx*h) = "
                     + (float) steps + " steps to reach S=" + distance + " m at vx=" + vx
                     + " m/s, more than the limit " + MAX_STEPS_PER_SHOT + " (each step would"
-                    + " move x by less than 8 float round-off units); use --tpf >= "
+                    + " move x by less than 8 float round-off units); use " + option + " >= "
                     + suggested);
         }
     }
@@ -282,8 +381,35 @@ public final class AimCommand {
                 + result.getLandingX() + "," + result.getMiss() + "," + result.getShots());
     }
 
+    private static void printShots(ShotLog log, PrintStream out) {
+        out.println(SHOTS_HEADER);
+        for (int i = 0; i < log.size(); ++i) {
+            out.println((i + 1) + "," + log.getVerticalSpeed(i) + "," + log.getLandingX(i) + ","
+                    + log.getMiss(i));
+        }
+    }
+
+    private static String[] strategyNames() {
+        AimStrategy[] all = AimStrategy.values();
+        String[] names = new String[all.length];
+        for (int i = 0; i < all.length; ++i) {
+            names[i] = all[i].cliName();
+        }
+        return names;
+    }
+
+    /** A fraction as a whole percentage: 0.3 → "30". */
+    private static String percent(double fraction) {
+        return Long.toString(Math.round(100.0 * fraction));
+    }
+
+    /**
+     * Print the readable summary.
+     *
+     * @param strategy the strategy to name, or null to name none
+     */
     private static void printText(AimResult result, boolean drag, float tolerance,
-            PrintStream out) {
+            AimStrategy strategy, PrintStream out) {
         String method = result.getMethod();
         double distance = result.getTargetDistance();
         double vx = result.getHorizontalSpeed();
@@ -292,8 +418,9 @@ public final class AimCommand {
         } else if (DISCRETE.equals(method)) {
             out.println("method:            discrete, vy corrected for the stepped shot");
         } else {
-            out.println("method:            iterative, shoot and adjust (tolerance "
-                    + readable(tolerance) + " m)");
+            out.println("method:            iterative, shoot and adjust ("
+                    + (strategy == null ? "" : "strategy " + strategy.cliName() + ", ")
+                    + "tolerance " + readable(tolerance) + " m)");
         }
         out.println("launch:            vx = " + readable(vx) + " m/s, vy = "
                 + readable(result.getVerticalSpeed()) + " m/s");

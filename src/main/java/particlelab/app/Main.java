@@ -26,6 +26,7 @@ public final class Main {
     private static final String DEMO = DemoCommand.NAME;
     private static final String REPORT = ReportCommand.NAME;
     private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
+            + ", " + HitscanCommand.NAME
             + ", " + BounceCommand.NAME + ", " + CollideCommand.NAME + ", " + TunnelCommand.NAME
             + ", " + RotateCommand.NAME + ", " + DEMO + ", " + REPORT + ", " + HELP;
 
@@ -88,6 +89,8 @@ public final class Main {
                 return TrajectoryCommand.run(rest, out, err);
             case AimCommand.NAME:
                 return AimCommand.run(rest, out, err);
+            case HitscanCommand.NAME:
+                return HitscanCommand.run(rest, out, err);
             case BounceCommand.NAME:
                 return BounceCommand.run(rest, out, err);
             case CollideCommand.NAME:
@@ -135,6 +138,8 @@ public final class Main {
                 + "  trajectory  print one particle's stepped trajectory as CSV\n"
                 + "  aim         find vy that lands a level shot at distance S (lecture,\n"
                 + "              discrete or iterative) and fire it\n"
+                + "  hitscan     the straight-line cheat against a stepped projectile: the\n"
+                + "              drop, and whether it still hits, as CSV\n"
                 + "  bounce      drop a ball on the ground; one CSV row per impact\n"
                 + "  collide     two spheres until their first impact: velocities, momentum,\n"
                 + "              kinetic energy before and after, as CSV\n"
