@@ -507,8 +507,8 @@ public final class SpeedVsErrorReport {
                 + "steps of one particle wait for each other, so this is the latency of a "
                 + "step. The reference steppers work in double precision on plain arrays; the "
                 + "lecture style and the primitive loop in float.\n\n");
-        md.append("| benchmark | ns per particle-step | bytes per step | × lecture style "
-                + "| × primitive loop |\n|---|---|---|---|---|\n");
+        md.append("| benchmark | ns per particle-step | bytes per step | against lecture style "
+                + "| against primitive loop |\n|---|---|---|---|---|\n");
         for (BenchmarkTable.Row row : benchmarks.rows()) {
             if (row.name().startsWith("bulk/")) {
                 continue;
@@ -589,9 +589,11 @@ public final class SpeedVsErrorReport {
                         * OneParticleScene.STEP_SECONDS, OneParticleScene.STEPS_PER_LAUNCH)))
                 .append(" m/s); a relaunch costs about one step in a thousand. A test runs "
                 + "each scene far past the decay point and checks that no component is "
-                + "subnormal. The demos never get there: their particles stop at the ground "
-                + "within seconds and each scene restarts, so velocities are never left to "
-                + "decay for minutes.\n\n");
+                + "subnormal. The demos never get there: every particle they step is under "
+                + "gravity and stops at the ground, where its velocity is set to exactly 0 "
+                + "(zero is not subnormal) and it is no longer stepped, and the uniform-motion "
+                + "sphere feels no force and restarts. A scene of your own with drag and no "
+                + "ground would decay: snap tiny velocities to zero or recycle particles.\n\n");
     }
 
     /** Steps after which 20 m/s decays below the smallest normal float. */
@@ -737,11 +739,11 @@ public final class SpeedVsErrorReport {
                 + "jitters.");
         double reachable = strongestReachableDrag(aiming);
         if (reachable > 0.0) {
+            double dragMiss = miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE,
+                    AimingStudy.DRAG_SWEEP_STEP, reachable);
             md.append(" With drag neither formula hits (b/m = ").append(num(reachable))
-                    .append(" /s: the correction misses by ")
-                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE,
-                            AimingStudy.DRAG_SWEEP_STEP, reachable)))
-                    .append(" m); iterative aiming hits within ").append(AimingStudy.TOLERANCE)
+                    .append(" /s: the correction lands ").append(sig(Math.abs(dragMiss)))
+                    .append(dragMiss < 0 ? " m short" : " m long").append("); iterative aiming hits within ").append(AimingStudy.TOLERANCE)
                     .append(" m in ").append(shotCount(aiming, AimingStudy.DRAG_SWEEP,
                             AimingStudy.DRAG_SWEEP_STEP, reachable))
                     .append(" simulated shots, cheap enough to run when the player changes vx.");
@@ -770,9 +772,12 @@ public final class SpeedVsErrorReport {
                     .append(" /s the Euler limit ")
                     .append(num(Scheme.SEMI_IMPLICIT_EULER.stabilityFactor()))
                     .append("m/b is at least ").append(sig(limit)).append(" s, ")
-                    .append(fix(limit / h, 0)).append(" steps of h; the error after ")
-                    .append(duration).append(" is at most ").append(sig(worstError))
-                    .append(" m (").append(worst.label()).append("). RK4 would cut that to ")
+                    .append(fix(limit / h, 0)).append(" steps of h. In the cases measured (b/m = ")
+                    .append(rateList()).append(" /s) the error after ").append(duration)
+                    .append(" is at most ").append(sig(worstError)).append(" m (")
+                    .append(worst.label()).append("); the error is not monotone in b/m, so a "
+                    + "rate between these cases can be off by somewhat more. RK4 would cut it "
+                    + "to ")
                     .append(sci(rk4.errorMetres)).append(" m at ")
                     .append(fix(rk4.nanosPerStep / sie.nanosPerStep, 1)).append("× the cost "
                     + "per step, which no viewer would notice; keep the lecture's step.\n");
@@ -870,6 +875,15 @@ public final class SpeedVsErrorReport {
             }
         }
         return null;
+    }
+
+    /** The linear-drag cases' rates b/m, as text: 0.1, 0.5, 2. */
+    private static String rateList() {
+        StringBuilder text = new StringBuilder();
+        for (CanonicalCase scene : linearDragCases()) {
+            text.append(text.length() == 0 ? "" : ", ").append(num(scene.forces().linearRate()));
+        }
+        return text.toString();
     }
 
     /** The linear-drag case the one-particle benchmarks fly, or null. */
@@ -1019,7 +1033,8 @@ public final class SpeedVsErrorReport {
         if (reference == null) {
             return "—";
         }
-        return fix(row.nanosPerParticleStep() / reference.nanosPerParticleStep(), 2);
+        return SpeedRatio.describe(row.nanosPerParticleStep(),
+                reference.nanosPerParticleStep());
     }
 
     private static int indexOf(double[] values, double value) {
