@@ -421,9 +421,11 @@ public final class SpeedVsErrorReport {
         md.append("## Convergence orders\n\n");
         md.append("Measured order = least-squares slope of log(error) against log(h) over "
                 + "h = ").append(stepText(config.steps()[0])).append(" … ")
-                .append(stepText(config.steps()[config.steps().length - 1])).append(", from the largest h down while the error is above ")
+                .append(stepText(config.steps()[config.steps().length - 1]))
+                .append(", from the largest h down while the error is above ")
                 .append(sci(WorkPrecisionStudy.ROUND_OFF_FLOOR)).append(" m and still "
-                + "falls at least ").append(num(OrderFit.MIN_DECREASE)).append("× per halving of h (past that it is round-off). "
+                + "falls at least ").append(num(OrderFit.MIN_DECREASE))
+                .append("× per halving of h (past that it is round-off). "
                 + "Theory in brackets; ∞ means exact for that case: only round-off remains, "
                 + "shown as the largest error. "
                 + "Games' velocity Verlet is second order only for forces of position alone: "
@@ -557,7 +559,8 @@ public final class SpeedVsErrorReport {
                     .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
                             lec.nanosPerParticleStep())).append(" | ")
                     .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
-                            prim.nanosPerParticleStep())).append(" | ").append(met ? "met" : "**missed**").append(" |\n");
+                            prim.nanosPerParticleStep())).append(" | ")
+                    .append(met ? "met" : "**missed**").append(" |\n");
         }
         md.append("\nAll times in ns per particle-step. \"bytes/step\" is heap allocated per "
                 + "particle-step (0 = nothing; the JVM's counters round to a few bytes per "
@@ -569,6 +572,9 @@ public final class SpeedVsErrorReport {
     }
 
     private static void appendSubnormalLesson(StringBuilder md) {
+        double leftSpeed = CanonicalCase.launch().velocity[0] * Math.pow(1.0
+                - OneParticleScene.LINEAR_RATE * OneParticleScene.STEP_SECONDS,
+                BulkScene.STEPS_PER_LAUNCH);
         md.append("### Why the benchmark scenes relaunch\n\n");
         md.append("Under drag a velocity component decays as vx·(1 − h·b/m)ⁿ. Left alone it "
                 + "becomes a subnormal float (below ").append(sci(Float.MIN_NORMAL))
@@ -585,9 +591,8 @@ public final class SpeedVsErrorReport {
                 + "its particles: the one-particle scene before every flight of ")
                 .append(OneParticleScene.STEPS_PER_LAUNCH).append(" steps, the bulk scene "
                 + "every ").append(BulkScene.STEPS_PER_LAUNCH).append(" steps (vx is then "
-                + "still about ").append(sci(20.0 * Math.pow(1.0 - OneParticleScene.LINEAR_RATE
-                        * OneParticleScene.STEP_SECONDS, OneParticleScene.STEPS_PER_LAUNCH)))
-                .append(" m/s); a relaunch costs about one step in a thousand. A test runs "
+                + "still about ").append(sci(leftSpeed)).append(" m/s); a relaunch costs "
+                + "about one step in ").append(BulkScene.STEPS_PER_LAUNCH).append(". A test runs "
                 + "each scene far past the decay point and checks that no component is "
                 + "subnormal. The demos never get there: every particle they step is under "
                 + "gravity and stops at the ground, where its velocity is set to exactly 0 "
@@ -596,9 +601,9 @@ public final class SpeedVsErrorReport {
                 + "ground would decay: snap tiny velocities to zero or recycle particles.\n\n");
     }
 
-    /** Steps after which 20 m/s decays below the smallest normal float. */
+    /** Steps after which the canonical launch's vx decays below the smallest normal float. */
     static long stepsToSubnormal(double linearRate, double stepSeconds) {
-        return Math.round(Math.log(Float.MIN_NORMAL / 20.0)
+        return Math.round(Math.log(Float.MIN_NORMAL / CanonicalCase.launch().velocity[0])
                 / Math.log(1.0 - linearRate * stepSeconds));
     }
 
@@ -619,13 +624,17 @@ public final class SpeedVsErrorReport {
                     .append(num(AimingStudy.DISTANCE)).append(" m target is out of reach "
                     + "(shown as —)");
         }
-        md.append(".\n\n| h (s) | lecture miss (m) | discrete miss (m) | iterative miss (m) | shots "
+        md.append(".\n\n| h (s) | lecture miss (m) | discrete miss (m) | iterative miss (m) "
+                + "| shots "
                 + "| vx·h (m) |\n|---|---|---|---|---|---|\n");
         for (double h : config.steps()) {
             md.append("| 1/").append(Math.round(1 / h)).append(" | ")
-                    .append(sig(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.LECTURE, h, 0.0))).append(" | ")
-                    .append(sci(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.DISCRETE, h, 0.0))).append(" | ")
-                    .append(reach(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.ITERATIVE, h, 0.0))).append(" | ")
+                    .append(sig(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.LECTURE, h,
+                            0.0))).append(" | ")
+                    .append(sci(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.DISCRETE, h,
+                            0.0))).append(" | ")
+                    .append(reach(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.ITERATIVE, h,
+                            0.0))).append(" | ")
                     .append(shotCount(aiming, AimingStudy.STEP_SWEEP, h, 0.0)).append(" | ")
                     .append(sig(AimingStudy.VX * h)).append(" |\n");
         }
@@ -635,9 +644,12 @@ public final class SpeedVsErrorReport {
         for (double k : AimingStudy.DRAG_RATES) {
             double h = AimingStudy.DRAG_SWEEP_STEP;
             md.append("| ").append(num(k)).append(" | ")
-                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.LECTURE, h, k))).append(" | ")
-                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE, h, k))).append(" | ")
-                    .append(reach(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.ITERATIVE, h, k))).append(" | ")
+                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.LECTURE, h,
+                            k))).append(" | ")
+                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE, h,
+                            k))).append(" | ")
+                    .append(reach(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.ITERATIVE, h,
+                            k))).append(" | ")
                     .append(shotCount(aiming, AimingStudy.DRAG_SWEEP, h, k)).append(" |\n");
         }
         md.append('\n');
@@ -647,10 +659,12 @@ public final class SpeedVsErrorReport {
         md.append("## Frame hitches\n\n");
         md.append("The canonical shot ").append(launchText()).append(" m/s under linear drag "
                 + "at ").append(Math.round(1.0 / HitchStudy.FRAME_SECONDS)).append(" frames per "
-                + "second, with a long frame after every ").append(HitchStudy.FRAMES_BETWEEN_HITCHES)
+                + "second, with a long frame after every ")
+                .append(HitchStudy.FRAMES_BETWEEN_HITCHES)
                 .append(" ordinary ones. Raw tpf takes one step per frame, however long; the "
                 + "fixed-step clock (defaults: h = ").append(stepText(DEMO_STEP_SECONDS))
-                .append(", frames clamped to ").append(num(SimulationClock.DEFAULT_MAX_FRAME_SECONDS))
+                .append(", frames clamped to ")
+                .append(num(SimulationClock.DEFAULT_MAX_FRAME_SECONDS))
                 .append(" s, at most ").append(SimulationClock.DEFAULT_MAX_STEPS_PER_FRAME)
                 .append(" steps a frame) keeps h and drops the time it cannot take. Landing "
                 + "error against the exact range.\n\n");
@@ -743,7 +757,8 @@ public final class SpeedVsErrorReport {
                     AimingStudy.DRAG_SWEEP_STEP, reachable);
             md.append(" With drag neither formula hits (b/m = ").append(num(reachable))
                     .append(" /s: the correction lands ").append(sig(Math.abs(dragMiss)))
-                    .append(dragMiss < 0 ? " m short" : " m long").append("); iterative aiming hits within ").append(AimingStudy.TOLERANCE)
+                    .append(dragMiss < 0 ? " m short" : " m long")
+                    .append("); iterative aiming hits within ").append(AimingStudy.TOLERANCE)
                     .append(" m in ").append(shotCount(aiming, AimingStudy.DRAG_SWEEP,
                             AimingStudy.DRAG_SWEEP_STEP, reachable))
                     .append(" simulated shots, cheap enough to run when the player changes vx.");
