@@ -19,6 +19,16 @@ import particlelab.physics.ParticleIntegrator;
 final class AimingStudy {
 
     /** Distance to the target (in metres), the HelloAiming default. */
+    /** Sweep name (in aiming.csv): h varies, no drag. */
+    static final String STEP_SWEEP = "step";
+    /** Sweep name (in aiming.csv): drag varies at {@link #DRAG_SWEEP_STEP}. */
+    static final String DRAG_SWEEP = "drag";
+    /** Formula name (in aiming.csv): the lecture's vy = g·S/(2·vx). */
+    static final String LECTURE = "lecture";
+    /** Formula name (in aiming.csv): the discrete correction vy = g·S/(2·vx) + g·h/2. */
+    static final String DISCRETE = "discrete";
+    /** Formula name (in aiming.csv): shoot and adjust. */
+    static final String ITERATIVE = "iterative";
     static final double DISTANCE = 100.0;
     /** Horizontal launch speed (in m/s), the HelloAiming default. */
     static final double VX = 20.0;
@@ -65,10 +75,10 @@ final class AimingStudy {
     static AimingStudy run(ReportConfig config) {
         AimingStudy study = new AimingStudy();
         for (double h : config.steps()) {
-            study.aimAllWays("step", h, 0.0);
+            study.aimAllWays(STEP_SWEEP, h, 0.0);
         }
         for (double k : DRAG_RATES) {
-            study.aimAllWays("drag", DRAG_SWEEP_STEP, k);
+            study.aimAllWays(DRAG_SWEEP, DRAG_SWEEP_STEP, k);
         }
         return study;
     }
@@ -78,12 +88,12 @@ final class AimingStudy {
         ForceModel forces = ForceModel.perUnitMass(g, k, 0.0, 0.0);
         ShotSimulator simulator = new ShotSimulator(new ParticleIntegrator(forces.toForces()),
                 (float) forces.getMassKg(), (float) h, MAX_FLIGHT_SECONDS);
-        fire(simulator, sweep, "lecture", h, k, LevelAim.lectureVy(g, DISTANCE, VX));
-        fire(simulator, sweep, "discrete", h, k, LevelAim.discreteVy(g, DISTANCE, VX, h));
+        fire(simulator, sweep, LECTURE, h, k, LevelAim.lectureVy(g, DISTANCE, VX));
+        fire(simulator, sweep, DISCRETE, h, k, LevelAim.discreteVy(g, DISTANCE, VX, h));
         IterativeAim aimer = new IterativeAim(simulator, g, TOLERANCE, MAX_SHOTS);
         particlelab.aiming.AimResult result = aimer.aim(DISTANCE, VX);
         double miss = result.isHit() ? result.getMiss() : Double.NaN;
-        shots.add(new Shot(sweep, "iterative", h, k, result.getVerticalSpeed(), miss,
+        shots.add(new Shot(sweep, ITERATIVE, h, k, result.getVerticalSpeed(), miss,
                 result.getShots()));
     }
 

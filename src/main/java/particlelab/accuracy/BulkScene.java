@@ -1,6 +1,7 @@
 package particlelab.accuracy;
 
 import com.jme3.math.Vector3f;
+import java.util.Arrays;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
@@ -13,6 +14,13 @@ import particlelab.physics.ParticleIntegrator;
  * lecture-style objects, {@link Particle} objects, and packed planar arrays shared by the
  * integrator's batch form and the primitive loop. Each step method advances all N by one step
  * of {@link #STEP_SECONDS} and allocates nothing except the lecture style's own garbage.
+ *
+ * <p>Each of the three storages is relaunched after every {@value #STEPS_PER_LAUNCH} of its own
+ * steps (from copies of the launch state), so the scene is periodic and no velocity ever decays
+ * far: left alone, the horizontal velocities {@code vx·(1 − k·h)ⁿ} become subnormal floats after
+ * about 10<sup>4</sup> steps, where x86 arithmetic is 30–40× slower, and a measurement at small
+ * N takes far more steps than that. A relaunch costs about one step of all N, once per
+ * {@value #STEPS_PER_LAUNCH}.
  */
 public final class BulkScene {
 
@@ -20,12 +28,20 @@ public final class BulkScene {
     public static final float LINEAR_RATE = 0.5f;
     /** The step h (in seconds). */
     public static final float STEP_SECONDS = 1f / 60f;
+    /** Steps of one storage between relaunches (after them the slowest vx is 5e-3 m/s). */
+    public static final int STEPS_PER_LAUNCH = 1000;
 
     private final int count;
     private final LectureStyleParticle[] lecture;
     private final Particle[] objects;
     private final float[] positions;
     private final float[] velocities;
+    /** The launch velocities, planar like {@link #velocities}. */
+    private final float[] launchVelocities;
+    private int lectureSteps;
+    private int objectSteps;
+    /** Steps of the packed arrays, by the batch form and the primitive loop together. */
+    private int packedSteps;
     private final ParticleIntegrator integrator =
             new ParticleIntegrator(new Gravity(), new LinearDrag(LINEAR_RATE));
     private final Vector3f gravity = new Vector3f(0f, -Gravity.STANDARD_G, 0f);
@@ -45,14 +61,17 @@ public final class BulkScene {
         objects = new Particle[count];
         positions = new float[3 * count];
         velocities = new float[3 * count];
+        launchVelocities = new float[3 * count];
         for (int i = 0; i < count; ++i) {
-            Vector3f velocity = new Vector3f(20f + i % 7, 30f + i % 11, i % 5);
-            lecture[i] = new LectureStyleParticle(new Vector3f(), velocity, 1f);
-            objects[i] = new Particle(new Vector3f(), velocity, 1f);
-            velocities[i] = velocity.x;
-            velocities[count + i] = velocity.y;
-            velocities[2 * count + i] = velocity.z;
+            launchVelocities[i] = 20f + i % 7;
+            launchVelocities[count + i] = 30f + i % 11;
+            launchVelocities[2 * count + i] = i % 5;
+            lecture[i] = new LectureStyleParticle(new Vector3f(), new Vector3f(), 1f);
+            objects[i] = new Particle(new Vector3f(), new Vector3f(), 1f);
         }
+        relaunchLectureStyle();
+        relaunchObjects();
+        relaunchPacked();
     }
 
     /**
@@ -61,6 +80,10 @@ public final class BulkScene {
      * @return something the caller must consume, so the work is not optimised away
      */
     public Object stepLectureStyle() {
+        if (lectureSteps == STEPS_PER_LAUNCH) {
+            relaunchLectureStyle();
+        }
+        ++lectureSteps;
         for (int i = 0; i < count; ++i) {
             lecture[i].step(gravity, LINEAR_RATE, STEP_SECONDS);
         }
@@ -73,6 +96,10 @@ public final class BulkScene {
      * @return something the caller must consume
      */
     public Object stepSharedObjects() {
+        if (objectSteps == STEPS_PER_LAUNCH) {
+            relaunchObjects();
+        }
+        ++objectSteps;
         integrator.step(objects, STEP_SECONDS);
         return objects;
     }
@@ -83,6 +110,7 @@ public final class BulkScene {
      * @return something the caller must consume
      */
     public Object stepSharedBatch() {
+        relaunchPackedIfDue();
         integrator.stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
         return positions;
     }
@@ -93,8 +121,82 @@ public final class BulkScene {
      * @return something the caller must consume
      */
     public Object stepPrimitiveLoop() {
+        relaunchPackedIfDue();
         PrimitiveLoop.step(positions, velocities, count, gravityPerAxis, LINEAR_RATE,
                 STEP_SECONDS);
         return positions;
+    }
+
+    /**
+     * Copy the lecture-style particles' state, for tests.
+     *
+     * @param storeResult planar P then planar V (length &ge; 6·N, modified)
+     */
+    void copyLectureStyle(float[] storeResult) {
+        for (int i = 0; i < count; ++i) {
+            store(lecture[i].position, lecture[i].velocity, i, storeResult);
+        }
+    }
+
+    /**
+     * Copy the Particle objects' state, for tests.
+     *
+     * @param storeResult planar P then planar V (length &ge; 6·N, modified)
+     */
+    void copyObjects(float[] storeResult) {
+        for (int i = 0; i < count; ++i) {
+            store(objects[i].position, objects[i].velocity, i, storeResult);
+        }
+    }
+
+    /**
+     * Copy the packed arrays, for tests.
+     *
+     * @param storeResult planar P then planar V (length &ge; 6·N, modified)
+     */
+    void copyPacked(float[] storeResult) {
+        System.arraycopy(positions, 0, storeResult, 0, 3 * count);
+        System.arraycopy(velocities, 0, storeResult, 3 * count, 3 * count);
+    }
+
+    private void store(Vector3f position, Vector3f velocity, int i, float[] storeResult) {
+        storeResult[i] = position.x;
+        storeResult[count + i] = position.y;
+        storeResult[2 * count + i] = position.z;
+        storeResult[3 * count + i] = velocity.x;
+        storeResult[4 * count + i] = velocity.y;
+        storeResult[5 * count + i] = velocity.z;
+    }
+
+    private void relaunchLectureStyle() {
+        for (int i = 0; i < count; ++i) {
+            // the style replaces both vectors every step, so these are the last step's own
+            lecture[i].position.set(0f, 0f, 0f);
+            lecture[i].velocity.set(launchVelocities[i], launchVelocities[count + i],
+                    launchVelocities[2 * count + i]);
+        }
+        lectureSteps = 0;
+    }
+
+    private void relaunchObjects() {
+        for (int i = 0; i < count; ++i) {
+            objects[i].position.set(0f, 0f, 0f);
+            objects[i].velocity.set(launchVelocities[i], launchVelocities[count + i],
+                    launchVelocities[2 * count + i]);
+        }
+        objectSteps = 0;
+    }
+
+    private void relaunchPackedIfDue() {
+        if (packedSteps == STEPS_PER_LAUNCH) {
+            relaunchPacked();
+        }
+        ++packedSteps;
+    }
+
+    private void relaunchPacked() {
+        Arrays.fill(positions, 0f);
+        System.arraycopy(launchVelocities, 0, velocities, 0, velocities.length);
+        packedSteps = 0;
     }
 }

@@ -24,7 +24,8 @@ final class HitchStudy {
     static final double[] LINEAR_RATES = {0.5, 2.0};
     /** Ordinary frames between two hitches. */
     static final int FRAMES_BETWEEN_HITCHES = 30;
-    private static final float FRAME_SECONDS = 1f / 60f;
+    /** The ordinary frame time (in seconds). */
+    static final float FRAME_SECONDS = 1f / 60f;
     private static final int MAX_FRAMES = 100_000;
 
     /** One run. */

@@ -48,6 +48,14 @@ public final class SpeedVsErrorReport {
         FILES = Collections.unmodifiableList(files);
     }
 
+    /** Target: the batch form at least this many times faster than the lecture style. */
+    static final double TARGET_VS_LECTURE = 3.0;
+    /** Target: the batch form at most this many times slower than the primitive loop. */
+    static final double TARGET_VS_PRIMITIVE = 1.5;
+    /** The demos' step h (in seconds): the clock's default, 1/60 s, exactly as a double. */
+    static final double DEMO_STEP_SECONDS =
+            1.0 / Math.round(1.0 / SimulationClock.DEFAULT_STEP_SECONDS);
+
     private final ReportConfig config;
     private final Path folder;
     private final Path jmhResults;
@@ -243,6 +251,8 @@ public final class SpeedVsErrorReport {
 
         XYChart bulk = Charts.create("Cost per particle-step as N grows (gravity + linear drag)",
                 "particles N", "ns per particle-step", true, true);
+        // four long names: one a line below the plot, so none is cut off at the edges
+        bulk.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Vertical);
         String[] kinds = {BenchmarkTable.BULK_LECTURE, BenchmarkTable.BULK_OBJECTS,
             BenchmarkTable.BULK_BATCH, BenchmarkTable.BULK_PRIMITIVE};
         String[] labels = {"lecture style (new Vector3f each step)",
@@ -265,16 +275,20 @@ public final class SpeedVsErrorReport {
         Charts.save(bulk, folder.resolve("bulk.png"));
 
         List<XYChart> aimCharts = new ArrayList<>();
-        XYChart byStep = Charts.create("Level shot S = 100 m, vx = 20 m/s: miss against h",
+        XYChart byStep = Charts.create("Level shot S = " + num(AimingStudy.DISTANCE)
+                + " m, vx = " + num(AimingStudy.VX) + " m/s: miss against h",
                 "step h (s)", "|miss| (m)", true, true);
-        XYChart byDrag = Charts.create("Miss against linear drag (h = 1/60 s)", "b/m (1/s)",
+        XYChart byDrag = Charts.create("Miss against linear drag (h = "
+                + stepText(AimingStudy.DRAG_SWEEP_STEP) + ")", "b/m (1/s)",
                 "miss: landing x - S (m)", false, false);
-        String[] formulas = {"lecture", "discrete", "iterative"};
+        String[] formulas = {AimingStudy.LECTURE, AimingStudy.DISCRETE, AimingStudy.ITERATIVE};
         String[] formulaLabels = {"lecture vy = gS/(2vx)", "discrete vy = gS/(2vx) + gh/2",
             "iterative (tolerance " + AimingStudy.TOLERANCE + " m)"};
         for (int f = 0; f < formulas.length; ++f) {
-            aimingLine(byStep, aiming, "step", formulas[f], formulaLabels[f], f, true);
-            aimingLine(byDrag, aiming, "drag", formulas[f], formulaLabels[f], f, false);
+            aimingLine(byStep, aiming, AimingStudy.STEP_SWEEP, formulas[f], formulaLabels[f], f,
+                    true);
+            aimingLine(byDrag, aiming, AimingStudy.DRAG_SWEEP, formulas[f], formulaLabels[f], f,
+                    false);
         }
         // log axes label decades only: span three of them
         byStep.getStyler().setXAxisMin(1e-3);
@@ -320,8 +334,10 @@ public final class SpeedVsErrorReport {
                 .append(Runtime.getRuntime().availableProcessors()).append(" cores, ")
                 .append(System.getProperty("os.name")).append(' ')
                 .append(System.getProperty("os.arch")).append(".\n");
-        md.append("- Every case launches from the origin at (20, 30) m/s under g = 9.8 m/s² "
-                + "on 1 kg and flies ").append((int) CanonicalCase.DURATION_SECONDS)
+        md.append("- Every case launches from the origin at ").append(launchText())
+                .append(" m/s under g = ").append(num(CanonicalCase.G)).append(" m/s² on ")
+                .append(num(CanonicalCase.all().get(0).forces().getMassKg()))
+                .append(" kg and flies ").append(num(CanonicalCase.DURATION_SECONDS))
                 .append(" s. Error = distance from the reference position at that time: the "
                 + "closed form for gravity and linear drag, RK4 at h = 1/")
                 .append(ClosedForms.REFERENCE_STEPS_PER_SECOND)
@@ -361,19 +377,21 @@ public final class SpeedVsErrorReport {
         md.append("## Work against precision\n\n");
         md.append("![work-precision plots of every case](").append(MAIN_PLOT).append(")\n\n");
         md.append("How to read it: each line is one stepper, each point one step size h, "
-                + "from 1/15 s (left, cheap, inaccurate) to 1/")
-                .append(Math.round(1 / config.steps()[config.steps().length - 1]))
-                .append(" s (right). Lower is more accurate, further left is cheaper; the best "
+                + "from ").append(stepText(config.steps()[0])).append(" (left, cheap, "
+                + "inaccurate) to ").append(stepText(config.steps()[config.steps().length - 1]))
+                .append(" (right). Lower is more accurate, further left is cheaper; the best "
                 + "method for a given error budget is the line furthest down-left. The slope is "
                 + "minus the order: a first-order method gains one digit of accuracy for ten "
-                + "times the work, RK4 four. Points at the bottom (1e-16 and below) are exact up "
-                + "to round-off. One chart per case: ");
+                + "times the work, RK4 four. Points at the bottom are exact up to round-off (an "
+                + "error of exactly 0 is drawn at ").append(sci(Charts.LOG_FLOOR))
+                .append(" m, where the log axis ends). One chart per case: ");
         for (CanonicalCase scene : CanonicalCase.all()) {
             md.append('[').append(scene.id()).append("](").append(workPrecisionPlot(scene))
                     .append(") ");
         }
-        md.append("\n\nPosition error after ").append((int) CanonicalCase.DURATION_SECONDS)
-                .append(" s at the demos' h = 1/60 s (m):\n\n");
+        md.append("\n\nPosition error after ").append(num(CanonicalCase.DURATION_SECONDS))
+                .append(" s at the demos' h = ").append(stepText(DEMO_STEP_SECONDS))
+                .append(" (m):\n\n");
         md.append("| case | reference |");
         for (Scheme scheme : Scheme.values()) {
             md.append(' ').append(scheme.label()).append(" |");
@@ -387,16 +405,21 @@ public final class SpeedVsErrorReport {
             md.append("| ").append(scene.label()).append(" | ").append(scene.referenceKind())
                     .append(" |");
             for (Scheme scheme : Scheme.values()) {
-                WorkPrecisionStudy.Point p = point(precision, scene, scheme, 1.0 / 60);
+                WorkPrecisionStudy.Point p = point(precision, scene, scheme,
+                        DEMO_STEP_SECONDS);
                 md.append(' ').append(p == null ? "—" : sci(p.errorMetres)).append(" |");
             }
             md.append('\n');
         }
-        md.append("\nCost of one step on one particle (ns, gravity + drag case `drag-0.5`): ");
-        for (Scheme scheme : Scheme.values()) {
-            WorkPrecisionStudy.Point p = point(precision, CanonicalCase.all().get(2), scheme,
-                    1.0 / 60);
-            md.append(scheme.id()).append(' ').append(fix(p.nanosPerStep, 1)).append("; ");
+        CanonicalCase timed = benchmarkCase();
+        if (timed != null) {
+            md.append("\nCost of one step on one particle (ns, case `").append(timed.id())
+                    .append("`): ");
+            for (Scheme scheme : Scheme.values()) {
+                WorkPrecisionStudy.Point p = point(precision, timed, scheme,
+                        WorkPrecisionStudy.TIMING_STEP_SECONDS);
+                md.append(scheme.id()).append(' ').append(fix(p.nanosPerStep, 1)).append("; ");
+            }
         }
         md.append("full table in `work-precision.csv`. These are timed after the "
                 + "benchmarks, with every force type seen, so the shared integrator's calls "
@@ -407,10 +430,12 @@ public final class SpeedVsErrorReport {
     private void appendOrders(StringBuilder md, WorkPrecisionStudy precision) {
         md.append("## Convergence orders\n\n");
         md.append("Measured order = least-squares slope of log(error) against log(h) over "
-                + "h = 1/15 … 1/").append(Math.round(1 / config.steps()[config.steps().length
-                - 1])).append(" s, from the largest h down while the error is above ")
+                + "h = ").append(stepText(config.steps()[0])).append(" … ")
+                .append(stepText(config.steps()[config.steps().length - 1]))
+                .append(", from the largest h down while the error is above ")
                 .append(sci(WorkPrecisionStudy.ROUND_OFF_FLOOR)).append(" m and still "
-                + "falls at least 1.5× per halving of h (past that it is round-off). "
+                + "falls at least ").append(num(OrderFit.MIN_DECREASE))
+                .append("× per halving of h (past that it is round-off). "
                 + "Theory in brackets; ∞ means exact for that case: only round-off remains, "
                 + "shown as the largest error. "
                 + "Games' velocity Verlet is second order only for forces of position alone: "
@@ -500,12 +525,15 @@ public final class SpeedVsErrorReport {
         md.append("## Benchmarks\n\n");
         BenchmarkTable.Row lecture = benchmarks.find(BenchmarkTable.LECTURE_STYLE);
         BenchmarkTable.Row primitive = benchmarks.find(BenchmarkTable.PRIMITIVE_LOOP);
-        md.append("One particle, gravity + linear drag b/m = 0.5 /s, h = 1/60 s. Consecutive "
+        md.append("One particle, gravity + linear drag b/m = ")
+                .append(num(OneParticleScene.LINEAR_RATE)).append(" /s, h = ")
+                .append(stepText(OneParticleScene.STEP_SECONDS)).append(", relaunched every ")
+                .append(OneParticleScene.STEPS_PER_LAUNCH).append(" steps. Consecutive "
                 + "steps of one particle wait for each other, so this is the latency of a "
                 + "step. The reference steppers work in double precision on plain arrays; the "
                 + "lecture style and the primitive loop in float.\n\n");
-        md.append("| benchmark | ns per particle-step | bytes per step | × lecture style "
-                + "| × primitive loop |\n|---|---|---|---|---|\n");
+        md.append("| benchmark | ns per particle-step | bytes per step | against lecture style "
+                + "| against primitive loop |\n|---|---|---|---|---|\n");
         for (BenchmarkTable.Row row : benchmarks.rows()) {
             if (row.name().startsWith("bulk/")) {
                 continue;
@@ -517,10 +545,13 @@ public final class SpeedVsErrorReport {
                     .append(" |\n");
         }
         md.append("\n### Many particles\n\n![cost per particle-step against N](bulk.png)\n\n");
-        md.append("The same scene for N particles, one step of all of them per call. Targets "
-                + "(this run, side by side): the shared integrator allocates 0 bytes per step, "
-                + "is at least 3× faster than the lecture style and within 1.5× of the "
-                + "primitive loop at every N. Objects holding `Vector3f`s cannot get there, so "
+        md.append("The same scene for N particles, one step of all of them per call, each "
+                + "storage relaunched every ").append(BulkScene.STEPS_PER_LAUNCH)
+                .append(" of its steps. Targets (this run, side by side): the shared integrator "
+                + "allocates 0 bytes per step, is at least ").append(num(TARGET_VS_LECTURE))
+                .append("× faster than the lecture style and at most ")
+                .append(num(TARGET_VS_PRIMITIVE)).append("× slower than the primitive loop at "
+                + "every N. Objects holding `Vector3f`s cannot get there, so "
                 + "the integrator has a batch form over packed float arrays, "
                 + "`ParticleIntegrator.stepPacked`.\n\n");
         md.append("| N | lecture style | Particle objects | packed batch | primitive loop "
@@ -540,15 +571,19 @@ public final class SpeedVsErrorReport {
             }
             double faster = lec.nanosPerParticleStep() / batch.nanosPerParticleStep();
             double slower = batch.nanosPerParticleStep() / prim.nanosPerParticleStep();
-            boolean met = faster >= 3.0 && slower <= 1.5 && batch.bytesPerStep() < 0.5;
+            boolean met = faster >= TARGET_VS_LECTURE && slower <= TARGET_VS_PRIMITIVE
+                    && batch.bytesPerStep() < 0.5;
             md.append("| ").append(count).append(" | ")
                     .append(fix(lec.nanosPerParticleStep(), 2)).append(" | ")
                     .append(fix(obj.nanosPerParticleStep(), 2)).append(" | ")
                     .append(fix(batch.nanosPerParticleStep(), 3)).append(" | ")
                     .append(fix(prim.nanosPerParticleStep(), 3)).append(" | ")
                     .append(fix(batch.bytesPerStep(), 2)).append(" | ")
-                    .append(fix(faster, 0)).append("× faster | ").append(fix(slower, 2))
-                    .append("× | ").append(met ? "met" : "**missed**").append(" |\n");
+                    .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
+                            lec.nanosPerParticleStep())).append(" | ")
+                    .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
+                            prim.nanosPerParticleStep())).append(" | ")
+                    .append(met ? "met" : "**missed**").append(" |\n");
         }
         md.append("\nAll times in ns per particle-step. \"bytes/step\" is heap allocated per "
                 + "particle-step (0 = nothing; the JVM's counters round to a few bytes per "
@@ -556,50 +591,106 @@ public final class SpeedVsErrorReport {
                 + "collector's state (new vectors stored into long-lived particles), so it "
                 + "moves by several times from run to run; the allocation-free forms are "
                 + "steady.\n\n");
+        appendSubnormalLesson(md);
+    }
+
+    private static void appendSubnormalLesson(StringBuilder md) {
+        double leftSpeed = CanonicalCase.launch().velocity[0] * Math.pow(1.0
+                - OneParticleScene.LINEAR_RATE * OneParticleScene.STEP_SECONDS,
+                BulkScene.STEPS_PER_LAUNCH);
+        md.append("### Why the benchmark scenes relaunch\n\n");
+        md.append("Under drag a velocity component decays as vx·(1 − h·b/m)ⁿ. Left alone it "
+                + "becomes a subnormal float (below ").append(sci(Float.MIN_NORMAL))
+                .append(") after about ").append(stepsToSubnormal(OneParticleScene.LINEAR_RATE,
+                        OneParticleScene.STEP_SECONDS)).append(" steps at b/m = ")
+                .append(num(OneParticleScene.LINEAR_RATE)).append(" /s, h = ")
+                .append(stepText(OneParticleScene.STEP_SECONDS)).append(" (")
+                .append(fix(stepsToSubnormal(OneParticleScene.LINEAR_RATE,
+                        OneParticleScene.STEP_SECONDS) * OneParticleScene.STEP_SECONDS, 0))
+                .append(" s of flight), and x86 processors do arithmetic on subnormal numbers "
+                + "30–40× slower than on normal ones. A benchmark that never relaunched would "
+                + "time that slow path, not the step; a game loop whose velocities decay to "
+                + "~1e-40 slows down the same way. So every benchmark scene here relaunches "
+                + "its particles: the one-particle scene before every flight of ")
+                .append(OneParticleScene.STEPS_PER_LAUNCH).append(" steps, the bulk scene "
+                + "every ").append(BulkScene.STEPS_PER_LAUNCH).append(" steps (vx is then "
+                + "still about ").append(sci(leftSpeed)).append(" m/s); a relaunch costs "
+                + "about one step in ").append(BulkScene.STEPS_PER_LAUNCH).append(". A test runs "
+                + "each scene far past the decay point and checks that no component is "
+                + "subnormal. The demos never get there: every particle they step is under "
+                + "gravity and stops at the ground, where its velocity is set to exactly 0 "
+                + "(zero is not subnormal) and it is no longer stepped, and the uniform-motion "
+                + "sphere feels no force and restarts. A scene of your own with drag and no "
+                + "ground would decay: snap tiny velocities to zero or recycle particles.\n\n");
+    }
+
+    /** Steps after which the canonical launch's vx decays below the smallest normal float. */
+    static long stepsToSubnormal(double linearRate, double stepSeconds) {
+        return Math.round(Math.log(Float.MIN_NORMAL / CanonicalCase.launch().velocity[0])
+                / Math.log(1.0 - linearRate * stepSeconds));
     }
 
     private void appendAiming(StringBuilder md, AimingStudy aiming) {
         md.append("## Aiming\n\n![miss distance against h and drag](aiming.png)\n\n");
-        md.append("HelloAiming's level shot (S = 100 m, vx = 20 m/s) flown by the shared "
+        md.append("HelloAiming's level shot (S = ").append(num(AimingStudy.DISTANCE))
+                .append(" m, vx = ").append(num(AimingStudy.VX)).append(" m/s) flown by the shared "
                 + "integrator; the landing point is interpolated inside the step that crosses "
                 + "the ground. The lecture's vy = g·S/(2·vx) lands vx·h short; the discrete "
                 + "correction lands on target up to float round-off. Neither knows about drag. "
                 + "Iterative aiming (shoot, see where it lands, adjust vy: bracketing, then "
                 + "regula falsi) flies the scene's own forces and lands within its tolerance of "
                 + AimingStudy.TOLERANCE + " m whenever the target is in reach; with linear drag "
-                + "no launch reaches past vx·(1 − k·h)/k, so at b/m ≥ 0.2 /s the 100 m target "
-                + "is out of reach (shown as —).\n\n"
-                + "| h (s) | lecture miss (m) | discrete miss (m) | iterative miss (m) | shots "
+                + "no launch reaches past vx·(1 − k·h)/k");
+        double unreachable = weakestUnreachableDrag(aiming);
+        if (!Double.isNaN(unreachable)) {
+            md.append(", so at b/m ≥ ").append(num(unreachable)).append(" /s the ")
+                    .append(num(AimingStudy.DISTANCE)).append(" m target is out of reach "
+                    + "(shown as —)");
+        }
+        md.append(".\n\n| h (s) | lecture miss (m) | discrete miss (m) | iterative miss (m) "
+                + "| shots "
                 + "| vx·h (m) |\n|---|---|---|---|---|---|\n");
         for (double h : config.steps()) {
             md.append("| 1/").append(Math.round(1 / h)).append(" | ")
-                    .append(sig(miss(aiming, "step", "lecture", h, 0.0))).append(" | ")
-                    .append(sci(miss(aiming, "step", "discrete", h, 0.0))).append(" | ")
-                    .append(reach(miss(aiming, "step", "iterative", h, 0.0))).append(" | ")
-                    .append(shotCount(aiming, "step", h, 0.0)).append(" | ")
+                    .append(sig(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.LECTURE, h,
+                            0.0))).append(" | ")
+                    .append(sci(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.DISCRETE, h,
+                            0.0))).append(" | ")
+                    .append(reach(miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.ITERATIVE, h,
+                            0.0))).append(" | ")
+                    .append(shotCount(aiming, AimingStudy.STEP_SWEEP, h, 0.0)).append(" | ")
                     .append(sig(AimingStudy.VX * h)).append(" |\n");
         }
-        md.append("\n| b/m (1/s), h = 1/60 s | lecture miss (m) | discrete miss (m) "
+        md.append("\n| b/m (1/s), h = ").append(stepText(AimingStudy.DRAG_SWEEP_STEP))
+                .append(" | lecture miss (m) | discrete miss (m) "
                 + "| iterative miss (m) | shots |\n|---|---|---|---|---|\n");
         for (double k : AimingStudy.DRAG_RATES) {
             double h = AimingStudy.DRAG_SWEEP_STEP;
             md.append("| ").append(num(k)).append(" | ")
-                    .append(sig(miss(aiming, "drag", "lecture", h, k))).append(" | ")
-                    .append(sig(miss(aiming, "drag", "discrete", h, k))).append(" | ")
-                    .append(reach(miss(aiming, "drag", "iterative", h, k))).append(" | ")
-                    .append(shotCount(aiming, "drag", h, k)).append(" |\n");
+                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.LECTURE, h,
+                            k))).append(" | ")
+                    .append(sig(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE, h,
+                            k))).append(" | ")
+                    .append(reach(miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.ITERATIVE, h,
+                            k))).append(" | ")
+                    .append(shotCount(aiming, AimingStudy.DRAG_SWEEP, h, k)).append(" |\n");
         }
         md.append('\n');
     }
 
     private static void appendHitches(StringBuilder md, HitchStudy hitches) {
         md.append("## Frame hitches\n\n");
-        md.append("The canonical shot (20, 30) m/s under linear drag at 60 frames per second, "
-                + "with a long frame after every ").append(HitchStudy.FRAMES_BETWEEN_HITCHES)
+        md.append("The canonical shot ").append(launchText()).append(" m/s under linear drag "
+                + "at ").append(Math.round(1.0 / HitchStudy.FRAME_SECONDS)).append(" frames per "
+                + "second, with a long frame after every ")
+                .append(HitchStudy.FRAMES_BETWEEN_HITCHES)
                 .append(" ordinary ones. Raw tpf takes one step per frame, however long; the "
-                + "fixed-step clock (defaults: h = 1/60 s, frames clamped to 0.25 s, at most "
-                + "16 steps a frame) keeps h and drops the time it cannot take. Landing error "
-                + "against the exact range.\n\n");
+                + "fixed-step clock (defaults: h = ").append(stepText(DEMO_STEP_SECONDS))
+                .append(", frames clamped to ")
+                .append(num(SimulationClock.DEFAULT_MAX_FRAME_SECONDS))
+                .append(" s, at most ").append(SimulationClock.DEFAULT_MAX_STEPS_PER_FRAME)
+                .append(" steps a frame) keeps h and drops the time it cannot take. Landing "
+                + "error against the exact range.\n\n");
         md.append("| b/m (1/s) | long frame (s) | raw tpf: landing error (m) | finite "
                 + "| fixed step: landing error (m) | finite | time dropped in all (s) |\n"
                 + "|---|---|---|---|---|---|---|\n");
@@ -623,76 +714,272 @@ public final class SpeedVsErrorReport {
     private void appendRecommendations(StringBuilder md, WorkPrecisionStudy precision,
             StabilityStudy stability, BenchmarkTable benchmarks, AimingStudy aiming,
             HitchStudy hitches) {
-        List<CanonicalCase> cases = CanonicalCase.all();
-        double h = 1.0 / 60;
+        double h = DEMO_STEP_SECONDS;
+        String duration = num(CanonicalCase.DURATION_SECONDS) + " s";
         md.append("## Recommendations\n\n");
-        md.append("The demos step with the lecture's semi-implicit Euler at a fixed h = 1/60 s "
-                + "through the fixed-step clock. From the numbers above:\n\n");
-        WorkPrecisionStudy.Point gravitySie = point(precision, cases.get(0),
-                Scheme.SEMI_IMPLICIT_EULER, h);
-        md.append("- **Uniform motion, gravitational pull (demos 1–2).** Semi-implicit Euler "
-                + "is off by ").append(sig(gravitySie.errorMetres)).append(" m after 4 s "
-                + "(theory g·h·t/2 = ").append(sig(CanonicalCase.G * h * 4 / 2))
-                .append(" m): the curve is the right parabola launched g·h/2 lower. That "
-                + "offset is what the lecture teaches; keep it, and show the exact step as a "
-                + "ghost if the difference should be seen.\n");
-        double lectureMiss = miss(aiming, "step", "lecture", h, 0.0);
-        double discreteMiss = miss(aiming, "step", "discrete", h, 0.0);
-        md.append("- **HelloAiming (demo 5).** At 1/60 s the lecture's formula lands ")
-                .append(sig(-lectureMiss)).append(" m short (vx·h = ").append(sig(20 * h))
-                .append(" m); the discrete correction lands within ")
-                .append(sci(Math.abs(discreteMiss))).append(" m. Aim with the correction "
-                + "(or show both), and only at a fixed h: with raw tpf the landing jitters. "
-                + "With drag neither formula hits (b/m = 0.1 /s: the correction misses by ")
-                .append(sig(miss(aiming, "drag", "discrete", h, 0.1))).append(" m); "
-                + "iterative aiming hits within ").append(AimingStudy.TOLERANCE)
-                .append(" m in ").append(shotCount(aiming, "drag", h, 0.1))
-                .append(" simulated shots, cheap enough to run when the player changes vx.\n");
-        WorkPrecisionStudy.Point drag2 = point(precision, cases.get(3),
-                Scheme.SEMI_IMPLICIT_EULER, h);
-        WorkPrecisionStudy.Point drag2Rk4 = point(precision, cases.get(3),
-                Scheme.RUNGE_KUTTA_4, h);
-        md.append("- **Drag (demo 3).** Up to b/m = 2 /s the Euler limit 2m/b is at least 1 s, "
-                + "60 steps above h; the error after 4 s is at most ").append(sig(drag2
-                .errorMetres)).append(" m. RK4 would cut it to ").append(sci(drag2Rk4
-                .errorMetres)).append(" m for ").append(fix(drag2Rk4.nanosPerStep
-                / drag2.nanosPerStep, 1)).append("× the cost per step, which no viewer "
-                + "would notice; keep the lecture's step. Quadratic drag: ")
-                .append(sig(point(precision, cases.get(4), Scheme.SEMI_IMPLICIT_EULER, h)
-                        .errorMetres)).append(" m, its limit near terminal speed v_t/g "
-                + "(3.2 s at c/m = 0.01) is far away.\n");
-        md.append("- **Thrust (demo 4).** Error ").append(sig(point(precision, cases.get(5),
-                Scheme.SEMI_IMPLICIT_EULER, h).errorMetres)).append(" m after 4 s at "
-                + "1/60 s: keep the lecture's step.\n");
-        md.append("- **Stiff scenes.** Near b/m = 60 /s the 1/60 s step meets the limit 2m/b "
-                + "of both Euler forms; RK4 only moves it to 2.79m/b. For very strong drag use "
-                + "the exact step (stable at any h), not a higher-order method.\n");
+        md.append("The demos step with the lecture's semi-implicit Euler at a fixed h = ")
+                .append(stepText(h)).append(" through the fixed-step clock. From the numbers "
+                + "above:\n\n");
+        CanonicalCase gravity = gravityCase();
+        if (gravity != null) {
+            WorkPrecisionStudy.Point sie = point(precision, gravity, Scheme.SEMI_IMPLICIT_EULER,
+                    h);
+            md.append("- **Uniform motion, gravitational pull.** Semi-implicit Euler is off by ")
+                    .append(sig(sie.errorMetres)).append(" m after ").append(duration)
+                    .append(" (theory g·h·t/2 = ").append(sig(CanonicalCase.G * h
+                            * CanonicalCase.DURATION_SECONDS / 2)).append(" m): the curve is "
+                    + "the right parabola launched g·h/2 lower. That offset is what the lecture "
+                    + "teaches; keep it, and show the exact step as a ghost if the difference "
+                    + "should be seen.\n");
+        }
+        appendAimingRecommendation(md, aiming, h);
+        appendDragRecommendation(md, precision, h, duration);
+        CanonicalCase thrust = thrustCase();
+        if (thrust != null) {
+            md.append("- **Thrust (").append(thrust.label()).append(").** Error ")
+                    .append(sig(point(precision, thrust, Scheme.SEMI_IMPLICIT_EULER, h)
+                            .errorMetres)).append(" m after ").append(duration).append(" at ")
+                    .append(stepText(h)).append(": keep the lecture's step.\n");
+        }
+        md.append("- **Stiff scenes.** The ").append(stepText(h)).append(" step meets the "
+                + "limit ").append(num(Scheme.SEMI_IMPLICIT_EULER.stabilityFactor()))
+                .append("m/b of both Euler forms at b/m = ")
+                .append(sig(stiffRate(Scheme.SEMI_IMPLICIT_EULER, h))).append(" /s; RK4 only "
+                + "moves it to ").append(fix(Scheme.RUNGE_KUTTA_4.stabilityFactor(), 3))
+                .append("m/b (b/m = ").append(sig(stiffRate(Scheme.RUNGE_KUTTA_4, h)))
+                .append(" /s). For very strong drag use the exact step (stable at any h), "
+                + "not a higher-order method.\n");
+        appendBulkRecommendation(md, benchmarks);
+        double k = max(HitchStudy.LINEAR_RATES);
+        double hitch = max(HitchStudy.HITCH_SECONDS);
+        HitchStudy.Run raw = hitchRun(hitches, k, SimulationClock.Mode.RAW_TPF, hitch);
+        HitchStudy.Run fixed = hitchRun(hitches, k, SimulationClock.Mode.FIXED_STEP, hitch);
+        md.append("- **Frame hitches.** With ").append(num(hitch)).append(" s frames at b/m = ")
+                .append(num(k)).append(" /s, raw tpf lands ").append(landingText(raw))
+                .append(" m off; the fixed-step clock ").append(landingText(fixed))
+                .append(" m, at the price of ").append(fix(fixed.droppedSeconds, 2))
+                .append(" s of dropped time. Demos use the fixed-step clock; raw tpf stays as "
+                + "the lesson's switch (`T`).\n");
+    }
+
+    private static void appendAimingRecommendation(StringBuilder md, AimingStudy aiming,
+            double h) {
+        double lectureMiss = miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.LECTURE, h, 0.0);
+        double discreteMiss = miss(aiming, AimingStudy.STEP_SWEEP, AimingStudy.DISCRETE, h,
+                0.0);
+        md.append("- **HelloAiming.** At ").append(stepText(h)).append(" the lecture's formula "
+                + "lands ").append(sig(Math.abs(lectureMiss)))
+                .append(lectureMiss < 0 ? " m short" : " m long").append(" (vx·h = ")
+                .append(sig(AimingStudy.VX * h)).append(" m); the discrete correction lands "
+                + "within ").append(sci(Math.abs(discreteMiss))).append(" m. Aim with the "
+                + "correction (or show both), and only at a fixed h: with raw tpf the landing "
+                + "jitters.");
+        double reachable = strongestReachableDrag(aiming);
+        if (reachable > 0.0) {
+            double dragMiss = miss(aiming, AimingStudy.DRAG_SWEEP, AimingStudy.DISCRETE,
+                    AimingStudy.DRAG_SWEEP_STEP, reachable);
+            md.append(" With drag neither formula hits (b/m = ").append(num(reachable))
+                    .append(" /s: the correction lands ").append(sig(Math.abs(dragMiss)))
+                    .append(dragMiss < 0 ? " m short" : " m long")
+                    .append("); iterative aiming hits within ").append(AimingStudy.TOLERANCE)
+                    .append(" m in ").append(shotCount(aiming, AimingStudy.DRAG_SWEEP,
+                            AimingStudy.DRAG_SWEEP_STEP, reachable))
+                    .append(" simulated shots, cheap enough to run when the player changes vx.");
+        }
+        md.append('\n');
+    }
+
+    private static void appendDragRecommendation(StringBuilder md, WorkPrecisionStudy precision,
+            double h, String duration) {
+        CanonicalCase worst = null;
+        double worstError = -1.0;
+        double strongest = 0.0;
+        for (CanonicalCase scene : linearDragCases()) {
+            double error = point(precision, scene, Scheme.SEMI_IMPLICIT_EULER, h).errorMetres;
+            if (error > worstError) {
+                worstError = error;
+                worst = scene;
+            }
+            strongest = Math.max(strongest, scene.forces().linearRate());
+        }
+        if (worst != null) {
+            double limit = Scheme.SEMI_IMPLICIT_EULER.stabilityFactor() / strongest;
+            WorkPrecisionStudy.Point sie = point(precision, worst, Scheme.SEMI_IMPLICIT_EULER, h);
+            WorkPrecisionStudy.Point rk4 = point(precision, worst, Scheme.RUNGE_KUTTA_4, h);
+            md.append("- **Linear drag.** Up to b/m = ").append(num(strongest))
+                    .append(" /s the Euler limit ")
+                    .append(num(Scheme.SEMI_IMPLICIT_EULER.stabilityFactor()))
+                    .append("m/b is at least ").append(sig(limit)).append(" s, ")
+                    .append(fix(limit / h, 0)).append(" steps of h. In the cases measured (b/m = ")
+                    .append(rateList()).append(" /s) the error after ").append(duration)
+                    .append(" is at most ").append(sig(worstError)).append(" m (")
+                    .append(worst.label()).append("); the error is not monotone in b/m, so a "
+                    + "rate between these cases can be off by somewhat more. RK4 would cut it "
+                    + "to ")
+                    .append(sci(rk4.errorMetres)).append(" m at ")
+                    .append(fix(rk4.nanosPerStep / sie.nanosPerStep, 1)).append("× the cost "
+                    + "per step, which no viewer would notice; keep the lecture's step.\n");
+        }
+        CanonicalCase quadratic = quadraticCase();
+        if (quadratic != null) {
+            ForceModel forces = quadratic.forces();
+            double rate = forces.getQuadraticDrag() / forces.getMassKg();
+            double terminal = Math.sqrt(CanonicalCase.G / rate);
+            // lambda = 2·c·|V|/m; the Euler limit 2/lambda at terminal speed is 1/(rate·v_t)
+            double limit = Scheme.SEMI_IMPLICIT_EULER.stabilityFactor()
+                    / (2.0 * rate * terminal);
+            md.append("- **Quadratic drag (").append(quadratic.label()).append(").** Error ")
+                    .append(sig(point(precision, quadratic, Scheme.SEMI_IMPLICIT_EULER, h)
+                            .errorMetres)).append(" m after ").append(duration)
+                    .append("; its limit at terminal speed v_t = ").append(sig(terminal))
+                    .append(" m/s is ").append(sig(limit)).append(" s, far above h.\n");
+        }
+    }
+
+    private static void appendBulkRecommendation(StringBuilder md, BenchmarkTable benchmarks) {
         int[] counts = bulkCounts(benchmarks);
-        if (counts.length > 0) {
-            int largest = counts[counts.length - 1];
-            BenchmarkTable.Row lec = benchmarks.find(BenchmarkTable.bulkName(
-                    BenchmarkTable.BULK_LECTURE, largest));
-            BenchmarkTable.Row batch = benchmarks.find(BenchmarkTable.bulkName(
-                    BenchmarkTable.BULK_BATCH, largest));
-            BenchmarkTable.Row obj = benchmarks.find(BenchmarkTable.bulkName(
-                    BenchmarkTable.BULK_OBJECTS, largest));
-            if (lec != null && batch != null && obj != null) {
-                md.append("- **Many particles.** At N = ").append(largest).append(" the "
-                        + "packed batch form costs ").append(fix(batch.nanosPerParticleStep(), 2))
-                        .append(" ns per particle-step, against ")
-                        .append(fix(obj.nanosPerParticleStep(), 1)).append(" ns for Particle "
-                        + "objects and ").append(fix(lec.nanosPerParticleStep(), 1))
-                        .append(" ns for the lecture's style: scenes with thousands of particles "
-                        + "should use `stepPacked`.\n");
+        if (counts.length == 0) {
+            return;
+        }
+        int largest = counts[counts.length - 1];
+        BenchmarkTable.Row lec = benchmarks.find(BenchmarkTable.bulkName(
+                BenchmarkTable.BULK_LECTURE, largest));
+        BenchmarkTable.Row batch = benchmarks.find(BenchmarkTable.bulkName(
+                BenchmarkTable.BULK_BATCH, largest));
+        BenchmarkTable.Row obj = benchmarks.find(BenchmarkTable.bulkName(
+                BenchmarkTable.BULK_OBJECTS, largest));
+        BenchmarkTable.Row prim = benchmarks.find(BenchmarkTable.bulkName(
+                BenchmarkTable.BULK_PRIMITIVE, largest));
+        if (lec == null || batch == null || obj == null || prim == null) {
+            return;
+        }
+        md.append("- **Many particles.** At N = ").append(largest).append(" the packed batch "
+                + "form costs ").append(fix(batch.nanosPerParticleStep(), 2))
+                .append(" ns per particle-step (")
+                .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
+                        prim.nanosPerParticleStep())).append(" than the primitive loop), against ")
+                .append(fix(obj.nanosPerParticleStep(), 1)).append(" ns for Particle objects ("
+                + "the batch is ").append(SpeedRatio.describe(batch.nanosPerParticleStep(),
+                        obj.nanosPerParticleStep())).append(") and ")
+                .append(fix(lec.nanosPerParticleStep(), 1)).append(" ns for the lecture's "
+                + "style (the batch is ").append(SpeedRatio.describe(
+                        batch.nanosPerParticleStep(), lec.nanosPerParticleStep()))
+                .append("). Scenes with thousands of particles should use `stepPacked`.\n");
+    }
+
+    /** The drag rate b/m at which a scheme's stability limit equals the step h (in 1/s). */
+    static double stiffRate(Scheme scheme, double stepSeconds) {
+        return scheme.stabilityFactor() / stepSeconds;
+    }
+
+    /** The case with gravity alone, or null. */
+    static CanonicalCase gravityCase() {
+        for (CanonicalCase scene : CanonicalCase.all()) {
+            ForceModel f = scene.forces();
+            if (f.getLinearDrag() == 0.0 && f.getQuadraticDrag() == 0.0
+                    && f.getThrustNewtons() == 0.0) {
+                return scene;
             }
         }
-        HitchStudy.Run raw = hitchRun(hitches, 2.0, SimulationClock.Mode.RAW_TPF, 2.0);
-        HitchStudy.Run fixed = hitchRun(hitches, 2.0, SimulationClock.Mode.FIXED_STEP, 2.0);
-        md.append("- **Frame hitches.** With 2 s frames at b/m = 2 /s, raw tpf lands ")
-                .append(landingText(raw)).append(" m off; the fixed-step clock ")
-                .append(landingText(fixed)).append(" m, at the price of ")
-                .append(fix(fixed.droppedSeconds, 2)).append(" s of dropped time. Demos use "
-                + "the fixed-step clock; raw tpf stays as the lesson's switch (`T`).\n");
+        return null;
+    }
+
+    /** The cases with gravity and linear drag only. */
+    static List<CanonicalCase> linearDragCases() {
+        List<CanonicalCase> cases = new ArrayList<>();
+        for (CanonicalCase scene : CanonicalCase.all()) {
+            ForceModel f = scene.forces();
+            if (f.getLinearDrag() > 0.0 && f.getQuadraticDrag() == 0.0
+                    && f.getThrustNewtons() == 0.0) {
+                cases.add(scene);
+            }
+        }
+        return cases;
+    }
+
+    private static CanonicalCase quadraticCase() {
+        for (CanonicalCase scene : CanonicalCase.all()) {
+            if (scene.forces().getQuadraticDrag() > 0.0) {
+                return scene;
+            }
+        }
+        return null;
+    }
+
+    private static CanonicalCase thrustCase() {
+        for (CanonicalCase scene : CanonicalCase.all()) {
+            if (scene.forces().getThrustNewtons() > 0.0) {
+                return scene;
+            }
+        }
+        return null;
+    }
+
+    /** The linear-drag cases' rates b/m, as text: 0.1, 0.5, 2. */
+    private static String rateList() {
+        StringBuilder text = new StringBuilder();
+        for (CanonicalCase scene : linearDragCases()) {
+            text.append(text.length() == 0 ? "" : ", ").append(num(scene.forces().linearRate()));
+        }
+        return text.toString();
+    }
+
+    /** The linear-drag case the one-particle benchmarks fly, or null. */
+    private static CanonicalCase benchmarkCase() {
+        for (CanonicalCase scene : linearDragCases()) {
+            if (same(scene.forces().linearRate(), OneParticleScene.LINEAR_RATE)) {
+                return scene;
+            }
+        }
+        return null;
+    }
+
+    /** The strongest drag of the aiming sweep at which iterative aiming still hits, or 0. */
+    private static double strongestReachableDrag(AimingStudy aiming) {
+        double strongest = 0.0;
+        for (AimingStudy.Shot s : aiming.shots) {
+            if (s.sweep.equals(AimingStudy.DRAG_SWEEP) && s.formula.equals(AimingStudy.ITERATIVE)
+                    && !Double.isNaN(s.missMetres)) {
+                strongest = Math.max(strongest, s.linearRate);
+            }
+        }
+        return strongest;
+    }
+
+    /** The weakest drag of the aiming sweep at which the target is out of reach, or NaN. */
+    private static double weakestUnreachableDrag(AimingStudy aiming) {
+        double weakest = Double.NaN;
+        for (AimingStudy.Shot s : aiming.shots) {
+            if (s.sweep.equals(AimingStudy.DRAG_SWEEP) && s.formula.equals(AimingStudy.ITERATIVE)
+                    && Double.isNaN(s.missMetres) && !(s.linearRate >= weakest)) {
+                weakest = s.linearRate;
+            }
+        }
+        return weakest;
+    }
+
+    private static double max(double[] values) {
+        double largest = Double.NEGATIVE_INFINITY;
+        for (double v : values) {
+            largest = Math.max(largest, v);
+        }
+        return largest;
+    }
+
+    /** The canonical launch velocity as text: (20, 30). */
+    private static String launchText() {
+        MotionState launch = CanonicalCase.launch();
+        return "(" + num(launch.velocity[0]) + ", " + num(launch.velocity[1]) + ")";
+    }
+
+    /** A step as the report writes it: 1/60 s. */
+    static String stepText(double stepSeconds) {
+        return "1/" + Math.round(1.0 / stepSeconds) + " s";
+    }
+
+    /** Equal up to round-off of the decimal literals the studies are configured with. */
+    private static boolean same(double a, double b) {
+        return Math.abs(a - b) <= 1e-9 * Math.max(Math.abs(a), Math.abs(b));
     }
 
     // ---- helpers ------------------------------------------------------------------------------
@@ -725,8 +1012,8 @@ public final class SpeedVsErrorReport {
 
     private static int shotCount(AimingStudy aiming, String sweep, double h, double k) {
         for (AimingStudy.Shot s : aiming.shots) {
-            if (s.sweep.equals(sweep) && s.formula.equals("iterative")
-                    && Math.abs(s.stepSeconds - h) < 1e-12 && s.linearRate == k) {
+            if (s.sweep.equals(sweep) && s.formula.equals(AimingStudy.ITERATIVE)
+                    && same(s.stepSeconds, h) && same(s.linearRate, k)) {
                 return s.shots;
             }
         }
@@ -737,7 +1024,7 @@ public final class SpeedVsErrorReport {
             double k) {
         for (AimingStudy.Shot s : aiming.shots) {
             if (s.sweep.equals(sweep) && s.formula.equals(formula)
-                    && Math.abs(s.stepSeconds - h) < 1e-12 && s.linearRate == k) {
+                    && same(s.stepSeconds, h) && same(s.linearRate, k)) {
                 return s.missMetres;
             }
         }
@@ -747,7 +1034,7 @@ public final class SpeedVsErrorReport {
     private static HitchStudy.Run hitchRun(HitchStudy hitches, double k,
             SimulationClock.Mode mode, double hitch) {
         for (HitchStudy.Run r : hitches.runs) {
-            if (r.linearRate == k && r.mode == mode && r.hitchSeconds == hitch) {
+            if (same(r.linearRate, k) && r.mode == mode && same(r.hitchSeconds, hitch)) {
                 return r;
             }
         }
@@ -784,7 +1071,8 @@ public final class SpeedVsErrorReport {
         if (reference == null) {
             return "—";
         }
-        return fix(row.nanosPerParticleStep() / reference.nanosPerParticleStep(), 2);
+        return SpeedRatio.describe(row.nanosPerParticleStep(),
+                reference.nanosPerParticleStep());
     }
 
     private static int indexOf(double[] values, double value) {

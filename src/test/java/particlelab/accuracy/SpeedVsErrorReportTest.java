@@ -12,6 +12,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -120,6 +123,62 @@ class SpeedVsErrorReportTest {
         String index = new String(Files.readAllBytes(out.resolve("index.md")),
                 StandardCharsets.UTF_8);
         assertTrue(index.contains("comes from JMH"), "index.md does not say the source");
+    }
+
+    @Test
+    void stiffRecommendationPutsTheSixtiethSecondLimitAtOneHundredTwentyPerSecond()
+            throws IOException {
+        // h = 2m/b at h = 1/60 s means b/m = 2/h = 120 /s (the old prose said 60 /s)
+        assertEquals(120.0, SpeedVsErrorReport.stiffRate(Scheme.SEMI_IMPLICIT_EULER,
+                SpeedVsErrorReport.DEMO_STEP_SECONDS), 1e-9);
+        String recommendations = recommendations();
+        assertTrue(recommendations.contains("at b/m = 120 /s"), recommendations);
+    }
+
+    @Test
+    void dragRecommendationBoundIsTheLargestErrorOfEveryLinearDragCase() throws IOException {
+        // the old prose quoted one case's error as the bound, below another case's 0.702 m
+        double largest = 0.0;
+        String worst = null;
+        for (String line : lines("work-precision.csv").subList(1,
+                lines("work-precision.csv").size())) {
+            String[] cells = line.split(",");
+            boolean linearDrag = false;
+            for (CanonicalCase scene : SpeedVsErrorReport.linearDragCases()) {
+                linearDrag |= scene.id().equals(cells[0]);
+            }
+            double h = Double.parseDouble(cells[2]);
+            if (linearDrag && cells[1].equals(Scheme.SEMI_IMPLICIT_EULER.id())
+                    && Math.abs(h - SpeedVsErrorReport.DEMO_STEP_SECONDS) < 1e-12) {
+                double error = Double.parseDouble(cells[4]);
+                if (error > largest) {
+                    largest = error;
+                    worst = cells[0];
+                }
+            }
+        }
+        assertNotNull(worst, "no linear-drag case at h = 1/60 s");
+        String bound = String.format(Locale.ROOT, "is at most %.3g m", largest);
+        String recommendations = recommendations();
+        assertTrue(recommendations.contains(bound), "expected '" + bound + "' in "
+                + recommendations);
+    }
+
+    @Test
+    void noRatioInTheReportSaysFasterForAFactorOfOneOrLess() throws IOException {
+        String index = read("index.md");
+        Matcher factor = Pattern.compile("([0-9.]+)× (faster|slower)").matcher(index);
+        while (factor.find()) {
+            assertTrue(Double.parseDouble(factor.group(1)) > 1.0,
+                    "a ratio reads '" + factor.group() + "'");
+        }
+    }
+
+    private static String recommendations() throws IOException {
+        String index = read("index.md");
+        int start = index.indexOf("## Recommendations");
+        assertTrue(start >= 0, "index.md has no Recommendations");
+        return index.substring(start);
     }
 
     private static void write(Path out, Path jmh) throws IOException {
