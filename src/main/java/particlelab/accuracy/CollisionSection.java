@@ -131,11 +131,11 @@ public final class CollisionSection {
         XYChart tunnel = Charts.create("Tunnelling through a thin wall: "
                 + study.tunnels.get(0).shots + " random-phase shots per speed",
                 "v·h / (2r + D)", "miss rate", false, false);
-        Charts.dashed(tunnel, "formula max(0, 1 − (2r+D)/(v·h))", curveX, curveY, 0);
-        Charts.dashed(tunnel, "formula ± 1.96 binomial σ", ratio, low, 7);
+        Charts.dashed(tunnel, "1 − (2r+D)/(v·h)", curveX, curveY, 0);
+        Charts.dashed(tunnel, "± 1.96 binomial σ", ratio, low, 7);
         Charts.dashed(tunnel, " ", ratio, high, 7).setShowInLegend(false);
-        Charts.markers(tunnel, "overlap test (measured)", ratio, overlap, 1);
-        Charts.markers(tunnel, "swept test (measured)", ratio, swept, 2);
+        Charts.markers(tunnel, "overlap test", ratio, overlap, 1);
+        Charts.markers(tunnel, "swept test", ratio, swept, 2);
         Charts.save(tunnel, folder.resolve(TUNNELLING_PLOT));
 
         XYChart bounce = Charts.create("Bouncing ball (h0 = "
@@ -154,11 +154,17 @@ public final class CollisionSection {
                 time[i] = line.get(i).worstTimeError;
                 apex[i] = line.get(i).worstApexError;
             }
-            Charts.line(bounce, name(detection) + ": impact time (s)", h, Charts.floored(time),
+            Charts.line(bounce, name(detection) + ": time (s)", h, Charts.floored(time),
                     style++);
             Charts.line(bounce, name(detection) + ": apex (m)", h, Charts.floored(apex),
                     style++);
         }
+        // first order through the coarsest swept apex error, for the eye
+        List<CollisionStudy.BounceError> sweptLine = errors(study, Detection.SWEPT);
+        CollisionStudy.BounceError coarsest = sweptLine.get(0);
+        double[] ends = {coarsest.stepSeconds, sweptLine.get(sweptLine.size() - 1).stepSeconds};
+        double[] slope = {coarsest.worstApexError, coarsest.worstApexError * ends[1] / ends[0]};
+        Charts.dashed(bounce, "∝ h", ends, slope, 7);
         bounce.getStyler().setXAxisMin(1e-4);
         bounce.getStyler().setXAxisMax(0.1);
         Charts.save(bounce, folder.resolve(BOUNCE_PLOT));
@@ -212,7 +218,7 @@ public final class CollisionSection {
                 .append(" shots. Below v·h = 2r + D every shot has a step end inside the wall, so the "
                 + "overlap test cannot miss; above it the miss rate climbs towards 1.");
         for (CollisionStudy.Tunnel t : study.tunnels) {
-            if (t.predicted == 0.0 && t.overlapMisses > 0) {
+            if (t.travelRatio <= 1.0 && t.overlapMisses > 0) {
                 md.append(" At v·h/(2r+D) = ").append(num(t.travelRatio)).append(", where "
                         + "the formula says 0, ").append(t.overlapMisses).append(" of ")
                         .append(t.shots).append(" shots got through: their only step end "
@@ -234,10 +240,10 @@ public final class CollisionSection {
                 .append(Math.round(1 / CollisionStudy.STEP_SECONDS)).append(" s, restarted "
                 + "from the launch every ").append(CollisionStudy.COST_RESTART_STEPS)
                 .append(" steps. Timed side by side in this JVM; contacts per step counted in "
-                + "a separate untimed run of ").append(CollisionStudy.COST_COUNT_STEPS)
+                + "a separate untimed run of ").append(study.costCountSteps)
                 .append(" steps.\n\n");
         md.append("| detection | ns per world step | bytes per step | contacts per step "
-                + "| steps at the impact cap | cost / overlap |\n|---|---|---|---|---|---|\n");
+                + "| impact cap reached | cost / overlap |\n|---|---|---|---|---|---|\n");
         for (CollisionStudy.Cost c : study.costs) {
             md.append("| ").append(name(c.detection)).append(" | ")
                     .append(fix(c.nanosPerStep, 0)).append(" | ")

@@ -61,8 +61,8 @@ final class CollisionStudy {
     static final float COST_RADIUS_METRES = 0.15f;
     /** The cost scene's walls stand at x = ± this (in metres). */
     static final float COST_HALF_WIDTH_METRES = 2f;
-    /** Steps of the untimed pass that counts the cost scene's contacts. */
-    static final int COST_COUNT_STEPS = 10 * COST_RESTART_STEPS;
+    /** Launches of the cost scene in the untimed pass that counts its contacts. */
+    static final int COST_COUNT_LAUNCHES = 10;
 
     /** Drop height of the bounce scene (in metres). */
     static final float BOUNCE_HEIGHT_METRES = 10f;
@@ -196,6 +196,8 @@ final class CollisionStudy {
     final List<BounceError> bounceErrors = new ArrayList<>();
     final List<BounceOrder> bounceOrders = new ArrayList<>();
     final double[] bounceSteps;
+    /** Untimed steps over which the cost scene's contacts were counted. */
+    int costCountSteps;
 
     /**
      * Prepare a study; {@link #run} runs every part, tests run them one by one.
@@ -257,7 +259,8 @@ final class CollisionStudy {
     static CollisionStudy run(ReportConfig config, CostMeter meter) {
         CollisionStudy study = new CollisionStudy(bounceSteps());
         study.runTunnelling(shotsPerSpeed(config));
-        study.runCost(meter);
+        study.runCost(meter, config.size() == ReportConfig.Size.TINY ? COST_RESTART_STEPS
+                : COST_COUNT_LAUNCHES * COST_RESTART_STEPS);
         study.runBounces();
         return study;
     }
@@ -341,6 +344,8 @@ final class CollisionStudy {
     static final class BouncingBalls implements CostMeter.Workload {
         final World world = new World(1);
         private int stepsSinceRestart;
+        /** Cap hits of the launches before the current one ({@code restart} clears them). */
+        private long earlierCapHits;
 
         BouncingBalls(Detection detection) {
             Random random = new Random(SEED);
@@ -373,6 +378,7 @@ final class CollisionStudy {
         public Object run(int units) {
             for (int i = 0; i < units; ++i) {
                 if (stepsSinceRestart == COST_RESTART_STEPS) {
+                    earlierCapHits += world.getCapHits();
                     world.restart();
                     stepsSinceRestart = 0;
                 }
@@ -381,17 +387,27 @@ final class CollisionStudy {
             }
             return world;
         }
+
+        /** The times a step reached the world's impact cap since this scene was made. */
+        long capHits() {
+            return earlierCapHits + world.getCapHits();
+        }
     }
 
-    void runCost(CostMeter meter) {
+    /**
+     * Count the contacts of the cost scene over {@code countSteps} untimed steps, then time a
+     * step, for each test.
+     */
+    void runCost(CostMeter meter, int countSteps) {
+        this.costCountSteps = countSteps;
         for (Detection detection : new Detection[] {Detection.OVERLAP, Detection.SWEPT}) {
             BouncingBalls counted = new BouncingBalls(detection);
             ContactCounter counter = new ContactCounter();
             counted.world.addContactListener(counter);
-            counted.run(COST_COUNT_STEPS);
+            counted.run(countSteps);
             CostMeter.Measurement m = meter.measure(new BouncingBalls(detection), 100);
             costs.add(new Cost(detection, m.nanosPerUnit(), m.bytesPerUnit(),
-                    (double) counter.count / COST_COUNT_STEPS, counted.world.getCapHits()));
+                    (double) counter.count / countSteps, counted.capHits()));
         }
     }
 
