@@ -189,8 +189,9 @@ public final class CollisionSection {
                 .append(num(CollisionStudy.WALL_THICKNESS_METRES)).append(" m thick (2r + D = ")
                 .append(fix(band, 2)).append(" m), h = 1/")
                 .append(Math.round(1 / CollisionStudy.STEP_SECONDS)).append(" s, ")
-                .append(shots).append(" shots per speed, each from a random phase (seed ")
-                .append(CollisionStudy.SEED).append(" + row index; `particle-lab tunnel "
+                .append(shots).append(" shots per speed, each from a random phase (row i, "
+                + "from 0, uses seed ")
+                .append(CollisionStudy.SEED).append(" + i; `particle-lab tunnel "
                 + "--speed V --radius r --thickness D --shots N --seed S` gives the same "
                 + "counts). Measured overlap miss rate with its 95 % Wilson interval beside "
                 + "the formula `max(0, 1 − (2r+D)/(v·h))`; at 95 % about one row in twenty "
@@ -215,8 +216,9 @@ public final class CollisionSection {
         md.append("\nThe formula lies inside the interval in ").append(inside).append(" of ")
                 .append(study.tunnels.size()).append(" rows; the swept test missed ")
                 .append(sweptTotal).append(" of ").append(shots * study.tunnels.size())
-                .append(" shots. Below v·h = 2r + D every shot has a step end inside the wall, so the "
-                + "overlap test cannot miss; above it the miss rate climbs towards 1.");
+                .append(" shots. Below v·h = 2r + D every shot has a step end inside the "
+                + "wall, so the overlap test cannot miss; above it the miss rate climbs "
+                + "towards 1.");
         for (CollisionStudy.Tunnel t : study.tunnels) {
             if (t.travelRatio <= 1.0 && t.overlapMisses > 0) {
                 md.append(" At v·h/(2r+D) = ").append(num(t.travelRatio)).append(", where "

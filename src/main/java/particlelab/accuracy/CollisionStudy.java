@@ -33,8 +33,8 @@ import particlelab.world.World;
  * steps, before any ball has settled, so every timed step has balls in flight.</li>
  * <li><b>Bounce sequence.</b> A ball dropped from {@value #BOUNCE_HEIGHT_METRES} m with
  * e = {@value #BOUNCE_RESTITUTION} (no threshold, no resting fix), at the full report's step
- * sizes ({@link #bounceSteps}): the first {@value #BOUNCE_IMPACTS} impact times and apexes against the ideal
- * {@code t_1 = t0}, {@code t_{k+1} = t_k + 2·t0·e^k}, apex {@code e^{2k}·h0},
+ * sizes ({@link #bounceSteps}): the first {@value #BOUNCE_IMPACTS} impact times and apexes
+ * against the ideal {@code t_1 = t0}, {@code t_{k+1} = t_k + 2·t0·e^k}, apex {@code e^{2k}·h0},
  * {@code t0 = √(2·h0/g)}, and the fitted order of the worst error.</li>
  * </ol>
  */
