@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
 import particlelab.world.Detection;
+import particlelab.world.World;
 
 /**
  * The report's collision section: runs {@link CollisionStudy}, writes its CSV files and plots
@@ -258,7 +259,14 @@ public final class CollisionSection {
                 / overlap.nanosPerStep, 2)).append("× the overlap test per step here: it solves "
                 + "a quadratic per pair instead of comparing a distance, and after each "
                 + "impact it moves the bodies to that moment and looks again, so its cost "
-                + "grows with the impacts per step. Read the ratio, not the absolute times.\n\n");
+                + "grows with the impacts per step. Read the ratio, not the absolute times.");
+        if (swept.capHits > 0) {
+            md.append(" In the counted run the swept world reached its cap of ")
+                    .append(World.DEFAULT_MAX_IMPACTS_PER_STEP).append(" impacts in one step ")
+                    .append(swept.capHits).append(" times; the bodies with impacts left "
+                    + "then wait at their last contact for the rest of that step.");
+        }
+        md.append("\n\n");
 
         md.append("### Bounce sequence against h\n\n");
         md.append("![bounce errors against h](").append(BOUNCE_PLOT).append(")\n\n");
@@ -295,7 +303,7 @@ public final class CollisionSection {
         }
         md.append("\n\nFitted order: least-squares slope of log(error) against log(h) through "
                 + "all ").append(study.bounceSteps.length).append(" step sizes (the bounce "
-                + "part always uses the full sweep's steps, it takes well under a second). "
+                + "part always uses the full sweep's steps, whatever the report's size). "
                 + "Where in its step each impact falls changes with h, so the errors zigzag "
                 + "around the trend. The orders lie between ").append(fix(lowest, 2))
                 .append(" and ").append(fix(highest, 2)).append(": with either test the "
