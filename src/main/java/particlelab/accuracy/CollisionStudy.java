@@ -30,7 +30,9 @@ import particlelab.world.World;
  * <li><b>Cost per step.</b> {@value #COST_BALLS} balls bouncing on the ground, off two walls
  * and off each other, stepped at 1/60 s with each test, timed side by side by the report's
  * {@link CostMeter}. The scene restarts from its launch every {@value #COST_RESTART_STEPS}
- * steps, before any ball has settled, so every timed step has balls in flight.</li>
+ * steps, while most balls are still bouncing, so every timed step has balls in flight; a
+ * ball that settles before rests exactly (the resting fix: velocity 0, no decaying
+ * subnormals).</li>
  * <li><b>Bounce sequence.</b> A ball dropped from {@value #BOUNCE_HEIGHT_METRES} m with
  * e = {@value #BOUNCE_RESTITUTION} (no threshold, no resting fix), at the full report's step
  * sizes ({@link #bounceSteps}): the first {@value #BOUNCE_IMPACTS} impact times and apexes
