@@ -312,6 +312,10 @@ public final class CollisionSection {
                 + "bounce sequence converges at the first order of the Euler step itself. "
                 + "The swept test finds each impact inside its step; the overlap test finds "
                 + "it at the step's end, inside the ground, and pushes the ball out.\n\n");
+        md.append("Files of this section, with their fixed headers: `tunnelling.csv` (`")
+                .append(TUNNELLING_HEADER).append("`), `collision_cost.csv` (`")
+                .append(COST_HEADER).append("`), `bounce_error.csv` (`").append(BOUNCE_HEADER)
+                .append("`).\n\n");
         return md.toString();
     }
 

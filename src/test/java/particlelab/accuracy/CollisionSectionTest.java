@@ -55,6 +55,8 @@ class CollisionSectionTest {
         assertTrue(index.contains(CollisionSection.HEADING + "\n"));
         assertTrue(index.contains("](" + CollisionSection.TUNNELLING_PLOT + ")"));
         assertTrue(index.contains("](" + CollisionSection.BOUNCE_PLOT + ")"));
+        assertTrue(index.contains("`tunnelling.csv` (`" + CollisionSection.TUNNELLING_HEADER
+                + "`)"), "the section does not state the tunnelling header");
     }
 
     @Test
