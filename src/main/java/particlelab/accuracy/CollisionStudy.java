@@ -64,7 +64,7 @@ final class CollisionStudy {
     /** The cost scene's walls stand at x = ± this (in metres). */
     static final float COST_HALF_WIDTH_METRES = 2f;
     /** Timing passes of the cost scene, alternating the two tests. */
-    static final int COST_PASSES = 5;
+    static final int COST_PASSES = 3;
     /** Launches of the cost scene in the untimed pass that counts its contacts. */
     static final int COST_COUNT_LAUNCHES = 10;
 
@@ -221,7 +221,7 @@ final class CollisionStudy {
     static int shotsPerSpeed(ReportConfig config) {
         switch (config.size()) {
             case FULL:
-                return 20_000;
+                return 10_000;
             case QUICK:
                 return 4_000;
             default:
