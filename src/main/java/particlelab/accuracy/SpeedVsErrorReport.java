@@ -106,6 +106,7 @@ public final class SpeedVsErrorReport {
         writeCsvFiles(precision, stability, benchmarks, aiming, hitches);
         writePlots(precision, stability, benchmarks, aiming);
         writeIndex(precision, stability, benchmarks, aiming, hitches, jmh != null);
+        CollisionSection.write(config, meter, folder);
         progress.advance();
         progress.finish();
     }
