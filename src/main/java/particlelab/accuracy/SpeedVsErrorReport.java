@@ -45,6 +45,7 @@ public final class SpeedVsErrorReport {
         for (CanonicalCase scene : CanonicalCase.all()) {
             files.add(workPrecisionPlot(scene));
         }
+        files.addAll(CollisionSection.FILES);
         FILES = Collections.unmodifiableList(files);
     }
 
