@@ -8,6 +8,7 @@ import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
+import particlelab.demo.RotationDemo;
 import particlelab.demo.ThrustDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
@@ -45,6 +46,7 @@ public final class DemoCatalog {
             new Entry("drag", DragDemo::new),
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
+            new Entry("rotation", RotationDemo::new),
             new Entry("wind", WindDemo::new)));
 
     private DemoCatalog() {
