@@ -9,6 +9,7 @@ import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
 import particlelab.demo.RotationDemo;
+import particlelab.demo.SpinThrowDemo;
 import particlelab.demo.ThrustDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
@@ -47,6 +48,7 @@ public final class DemoCatalog {
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
             new Entry("rotation", RotationDemo::new),
+            new Entry("throw", SpinThrowDemo::new),
             new Entry("wind", WindDemo::new)));
 
     private DemoCatalog() {
