@@ -10,6 +10,7 @@ import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
 import particlelab.demo.RotationDemo;
 import particlelab.demo.SpinThrowDemo;
+import particlelab.demo.TennisRacketDemo;
 import particlelab.demo.ThrustDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
@@ -49,6 +50,7 @@ public final class DemoCatalog {
             new Entry("aiming", HelloAimingDemo::new),
             new Entry("rotation", RotationDemo::new),
             new Entry("throw", SpinThrowDemo::new),
+            new Entry("racket", TennisRacketDemo::new),
             new Entry("wind", WindDemo::new)));
 
     private DemoCatalog() {

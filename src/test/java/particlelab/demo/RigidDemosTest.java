@@ -1,0 +1,193 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.Gravity;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationCheck;
+
+/**
+ * The three rigid-body demos in a real headless application, driven with a fixed frame time
+ * of h (one step per frame): their measured numbers agree with the model's closed forms.
+ */
+class RigidDemosTest {
+
+    private static final float H = 1f / 60f;
+    private static RotationDemo rotation;
+    private static SpinThrowDemo spinThrow;
+    private static TennisRacketDemo racket;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        rotation = new RotationDemo();
+        spinThrow = new SpinThrowDemo();
+        racket = new TennisRacketDemo();
+        harness = HeadlessHarness.start(List.of(rotation, spinThrow, racket));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void plainBoxInflatesByOnePlusOmegaHSquaredPerStepAndTheCuresLagAsPredicted()
+            throws Exception {
+        int steps = 200;
+        double[] measured = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < steps; ++i) {
+                rotation.advance(H);
+            }
+            RotationCheck check = new RotationCheck();
+            Vector3f omega = rotation.copyOmega(new Vector3f());
+            com.jme3.math.Matrix3f exact = check.exactRotation(new com.jme3.math.Matrix3f(),
+                    omega, rotation.getElapsedSeconds(3), new com.jme3.math.Matrix3f());
+            return new double[] {check.determinant(rotation.getOrientation(0)),
+                check.angleError(rotation.getOrientation(1), exact),
+                check.angleError(rotation.getOrientation(2), exact),
+                check.angleError(rotation.getOrientation(3), exact),
+                check.orthogonalityError(rotation.getOrientation(1)), omega.length(),
+                rotation.countPlainRestarts(), rotation.getElapsedSeconds(0)};
+        });
+        assertEquals(0.0, measured[6], 0.0, "no restart within 200 steps");
+        assertEquals(steps * (double) H, measured[7], 1e-9);
+        double wh = measured[5] * H;
+        // det(I + h[ω]×) = 1 + (|ω|h)², so det R_n = (1 + (|ω|h)²)ⁿ; each float step rounds
+        // R's entries at 6e-8 relative, 200 steps at most ~3e-5 relative on det ≈ 1.65.
+        assertEquals(Math.pow(1.0 + wh * wh, steps), measured[0], 1e-4);
+        // The polar box lags by ωh − atan(ωh) per step, the quaternion by ωh − 2·atan(ωh/2)
+        // (docs/numerics.md §9): 8.3e-3 rad and 2.1e-3 rad here; float round-off in R adds
+        // ~1e-7 rad per step, 2e-5 rad in all.
+        assertEquals(steps * (wh - Math.atan(wh)), measured[1], 5e-5);
+        assertEquals(steps * (wh - 2.0 * Math.atan(wh / 2.0)), measured[2], 5e-5);
+        assertEquals(0.0, measured[3], 5e-5);
+        // The cured box stays orthonormal to float round-off.
+        assertTrue(measured[4] < 1e-5, "polar |RᵀR − I| " + measured[4]);
+    }
+
+    @Test
+    void plainBoxStartsAgainAtTheDetLimit() throws Exception {
+        double[] measured = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < 600; ++i) {
+                rotation.advance(H);
+            }
+            return new double[] {rotation.countPlainRestarts(),
+                new RotationCheck().determinant(rotation.getOrientation(0))};
+        });
+        // (1 + 0.05²)ⁿ reaches 1.5³ after 487 steps: one restart within 600.
+        assertEquals(1.0, measured[0], 0.0);
+        assertTrue(measured[1] < RotationDemo.DET_LIMIT);
+    }
+
+    @Test
+    void thrownBoxCentreIsTheParticleTrajectoryAndItsAngleFollowsTheTorqueFormula()
+            throws Exception {
+        int steps = 60;
+        double[] measured = harness.call(() -> {
+            spinThrow.setTorqueChoice(1);
+            for (int i = 0; i < steps; ++i) {
+                spinThrow.advance(H);
+            }
+            RigidBody body = spinThrow.getBody();
+            Particle twin = new Particle(SpinThrowDemo.LAUNCH_POSITION,
+                    SpinThrowDemo.LAUNCH_VELOCITY, SpinThrowDemo.MASS_KG);
+            ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+            for (int i = 0; i < steps; ++i) {
+                gravity.step(twin, H);
+            }
+            Vector3f centre = body.getParticle().position;
+            Vector3f corner = body.bodyToWorld(SpinThrowDemo.CORNER, new Vector3f());
+            Vector3f formula = spinThrow.formulaCorner(steps * (double) H, new Vector3f());
+            return new double[] {centre.x - twin.position.x, centre.y - twin.position.y,
+                spinThrow.getMeasuredAngle(), body.getInertia().getMoment(2),
+                corner.distance(formula)};
+        });
+        // The same particle step on the same floats: exactly the particle's trajectory.
+        assertEquals(0.0, measured[0], 0.0);
+        assertEquals(0.0, measured[1], 0.0);
+        // ω_k = ω0 + k·h·τ/I and each step turns by h·ω_k (the new ω), so
+        // θ_n = ω0·n·h + (τ/I)·h²·n(n + 1)/2 = θ(t) + ½(τ/I)·h·t: float sums of 60 steps
+        // of ~0.17 rad round to ~1e-5 rad.
+        double alpha = SpinThrowDemo.TORQUE / measured[3];
+        double t = steps * (double) H;
+        double stepped = SpinThrowDemo.SPIN * t + alpha * H * H * steps * (steps + 1) / 2.0;
+        assertEquals(stepped, measured[2], 1e-4);
+        assertEquals(spinThrow.formulaAngle(t) + 0.5 * alpha * H * t, measured[2], 1e-4);
+        // The corner's closed form differs by the centre's Euler gap (O(h), ~0.08 m after
+        // 1 s) and the angle gap times the corner's 0.52 m reach: well under 0.3 m.
+        assertTrue(measured[4] < 0.3, "corner gap " + measured[4]);
+        harness.call(() -> {
+            spinThrow.setTorqueChoice(0);
+            // jME's task reads a null result as a time-out.
+            return Boolean.TRUE;
+        });
+    }
+
+    @Test
+    void racketFlipsWithMidpointKeepingEnergyWhileExplicitEulerGainsEnergy() throws Exception {
+        double[] measured = harness.call(() -> {
+            racket.restart();
+            Vector3f scratch = new Vector3f();
+            double e0 = racket.getBody(1).rotationalEnergy(scratch);
+            double l0 = racket.getBody(1).angularMomentum(scratch);
+            double explicit0 = racket.getBody(0).rotationalEnergy(scratch);
+            double previous = explicit0;
+            boolean monotone = true;
+            for (int i = 0; i < 900; ++i) {
+                racket.advance(H);
+                double explicit = racket.getBody(0).rotationalEnergy(scratch);
+                monotone &= explicit > previous;
+                previous = explicit;
+            }
+            return new double[] {racket.countFlips(1),
+                racket.getBody(1).rotationalEnergy(scratch) / e0 - 1.0,
+                racket.getBody(1).angularMomentum(scratch) / l0 - 1.0,
+                monotone ? 1.0 : 0.0, previous / explicit0 - 1.0,
+                racket.countFlips(1) >= 3 ? racket.getFlipSeconds(1, 2)
+                        - racket.getFlipSeconds(1, 0) : Double.NaN};
+        });
+        // 15 s at ω0 = (0.1, 4, 0.1): the flip repeats every few seconds.
+        assertTrue(measured[0] >= 3, "midpoint flips " + measured[0]);
+        // The midpoint keeps E and |L| exactly but for the float storage of ω each step
+        // (~6e-8 relative, 900 steps): under 1e-4.
+        assertEquals(0.0, measured[1], 1e-4);
+        assertEquals(0.0, measured[2], 1e-4);
+        // Explicit Euler multiplies E by 1 + O((ωh)²) each step: it only grows.
+        assertTrue(measured[3] == 1.0, "explicit energy not monotone");
+        assertTrue(measured[4] > 0.01, "explicit drift " + measured[4]);
+        assertTrue(measured[5] > 1.0 && measured[5] < 15.0, "period " + measured[5]);
+    }
+
+    @Test
+    void runningDemosAllocateNothingPerFrame() throws Exception {
+        StringBuilder hud = new StringBuilder(4096);
+        for (DemoState demo : List.<DemoState>of(rotation, spinThrow, racket)) {
+            // Measured on the jME thread, asserted here: a failed assertion must not end it.
+            long[] bytes = harness.call(() -> {
+                demo.restart();
+                long simulation = Allocations.warmBytesAllocatedBy(() -> {
+                    for (int i = 0; i < 30; ++i) {
+                        demo.advance(H);
+                    }
+                });
+                long text = Allocations.warmBytesAllocatedBy(() -> demo.formatHud(hud));
+                return new long[] {simulation, text};
+            });
+            assertEquals(0L, bytes[0], demo.getTitle() + ": 30 frames allocated");
+            assertEquals(0L, bytes[1], demo.getTitle() + ": HUD text allocated");
+        }
+    }
+}
