@@ -70,6 +70,8 @@ public final class SpinThrowDemo extends DemoState {
     /** The angle turned about z, unwrapped from R, and R's last atan2 angle (rad). */
     private double measuredAngle;
     private double lastAtan;
+    /** How long the box has turned since the throw (s): the clock's t until it lands. */
+    private double spinSeconds;
     private KeyBinding torqueKey;
 
     /** Create the demo. */
@@ -116,6 +118,16 @@ public final class SpinThrowDemo extends DemoState {
      */
     public double getMeasuredAngle() {
         return measuredAngle;
+    }
+
+    /**
+     * Return how long the box has turned since the throw: the clock's t while it flies (the
+     * landing step moves the centre only part of h and stops the spin).
+     *
+     * @return t (in seconds, &ge;0)
+     */
+    public double getSpinSeconds() {
+        return spinSeconds;
     }
 
     /**
@@ -175,16 +187,16 @@ public final class SpinThrowDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        double t = getClock().getSimulatedSeconds();
+        double t = spinSeconds;
         text.append("τ = ");
         TextFormat.appendFixed(text, getTorque(), 2).append(" N·m about z (")
                 .append(torqueKey.getKeyLabel()).append("),  θ stepped = ");
         TextFormat.appendFixed(text, measuredAngle, 4).append(" rad,  formula ω0·t + ½(τ/I)t² = ");
         double formula = formulaAngle(t);
-        TextFormat.appendFixed(text, formula, 4).append(" rad,  gap ");
-        TextFormat.appendFixed(text, measuredAngle - formula, 4).append(" = ½(τ/I)·h·t: ");
+        TextFormat.appendFixed(text, formula, 4).append(" rad,  ahead by ");
+        TextFormat.appendFixed(text, measuredAngle - formula, 4).append(" (½(τ/I)·h·t = ");
         TextFormat.appendFixed(text, 0.5 * getTorque() / inertia.getMoment(2)
-                * getClock().getStepSeconds() * t, 4).append('\n');
+                * getClock().getStepSeconds() * t, 4).append(")\n");
         text.append("corner: stepped (bright) vs closed form (faint), apart by ");
         formulaCorner(t, formulaCorner);
         body.bodyToWorld(CORNER, corner);
@@ -202,10 +214,10 @@ public final class SpinThrowDemo extends DemoState {
         double turn = atan - lastAtan;
         measuredAngle += turn - 2.0 * Math.PI * Math.rint(turn / (2.0 * Math.PI));
         lastAtan = atan;
+        spinSeconds += stepSeconds;
         if (cornerTrail != null) {
             cornerTrail.add(body.bodyToWorld(CORNER, corner));
-            formulaTrail.add(formulaCorner(getClock().getSimulatedSeconds() + stepSeconds,
-                    formulaCorner));
+            formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
         }
         updateViews();
     }
@@ -248,6 +260,7 @@ public final class SpinThrowDemo extends DemoState {
         body.torque.set(0f, 0f, TORQUES[torqueChoice]);
         measuredAngle = 0.0;
         lastAtan = 0.0;
+        spinSeconds = 0.0;
     }
 
     private void updateViews() {

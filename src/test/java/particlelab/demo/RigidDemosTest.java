@@ -113,7 +113,7 @@ class RigidDemosTest {
             Vector3f formula = spinThrow.formulaCorner(steps * (double) H, new Vector3f());
             return new double[] {centre.x - twin.position.x, centre.y - twin.position.y,
                 spinThrow.getMeasuredAngle(), body.getInertia().getMoment(2),
-                corner.distance(formula)};
+                corner.distance(formula), spinThrow.getSpinSeconds()};
         });
         // The same particle step on the same floats: exactly the particle's trajectory.
         assertEquals(0.0, measured[0], 0.0);
@@ -123,6 +123,7 @@ class RigidDemosTest {
         // of ~0.17 rad round to ~1e-5 rad.
         double alpha = SpinThrowDemo.TORQUE / measured[3];
         double t = steps * (double) H;
+        assertEquals(t, measured[5], 1e-9);
         double stepped = SpinThrowDemo.SPIN * t + alpha * H * H * steps * (steps + 1) / 2.0;
         assertEquals(stepped, measured[2], 1e-4);
         assertEquals(spinThrow.formulaAngle(t) + 0.5 * alpha * H * t, measured[2], 1e-4);
