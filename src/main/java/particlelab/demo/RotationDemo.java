@@ -60,8 +60,10 @@ public final class RotationDemo extends DemoState {
     /** Where the boxes spin: their x, and the common height (m). */
     private static final float FIRST_X = 2f;
     private static final float SPACING_X = 3.5f;
-    private static final float BOX_Y = 3.2f;
+    private static final float BOX_Y = 3.5f;
     private static final float POST_HEIGHT = 1f;
+    /** The boxes spin in front of the grid's plane, so no grid line shows on them (m). */
+    private static final float BOX_Z = 1.3f;
     private static final float RAD_TO_DEG = (float) (180.0 / Math.PI);
 
     private final Matrix3f[] orientations = new Matrix3f[METHODS.length];
@@ -88,7 +90,7 @@ public final class RotationDemo extends DemoState {
             orientations[i] = new Matrix3f();
             integrators[i] = new RotationIntegrator(METHODS[i],
                     RotationIntegrator.Angular.EXPLICIT, true);
-            centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, 0f);
+            centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, BOX_Z);
         }
         omega.set(AXIS).multLocal(omegaMagnitude);
     }
@@ -148,7 +150,7 @@ public final class RotationDemo extends DemoState {
         for (int i = 0; i < METHODS.length; ++i) {
             addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
         }
-        setView(0f, FIRST_X * 2f + SPACING_X * (METHODS.length - 1), 5f, 1f, 5, 0.3f);
+        setView(0f, FIRST_X * 2f + SPACING_X * (METHODS.length - 1), 5.2f, 1f, 5, 0.3f);
     }
 
     @Override
@@ -165,8 +167,10 @@ public final class RotationDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("dR/dt = [ω]×·R:  plain Euler R += h·[ω]×·R;  polar: then the nearest"
-                + " rotation;  quaternion: q += (h/2)(0,ω)q, q /= |q|;  exact: exp(h[ω]×)·R\n");
+        text.append("dR/dt = [ω]×R, one step of h:  plain Euler R += h[ω]×R;  polar: the same,"
+                + " then the nearest rotation\n");
+        text.append("quaternion: q += (h/2)(0,ω)q, then q /= |q|;  exact: R = exp(h[ω]×)R"
+                + " (Rodrigues)\n");
     }
 
     @Override

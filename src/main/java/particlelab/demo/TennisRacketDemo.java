@@ -53,7 +53,8 @@ public final class TennisRacketDemo extends DemoState {
     private final int[] flips = new int[METHODS.length];
     private final boolean[] positiveWy = new boolean[METHODS.length];
     private final Vector3f bodyOmega = new Vector3f();
-    private final Vector3f centre = new Vector3f(0f, 2.6f, 0f);
+    /** Where the racket spins: in front of the grid's plane, so no grid line shows on it. */
+    private final Vector3f centre = new Vector3f(0f, 2.6f, 1.8f);
     private final Matrix3f tilt = new Matrix3f();
     private int shown = 0;
     private double elapsedSeconds;
