@@ -7,6 +7,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Spatial;
 import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
@@ -29,7 +30,8 @@ import particlelab.view.Trail;
  * the centre plus a turning offset: {@code P(t) = P0 + V0·t + ½·g·t²},
  * {@code θ(t) = ω0·t + ½·(τ/I)·t²}, corner = {@code P(t) + Rz(θ(t))·b}; it is drawn as the
  * faint trail beside the stepped corner's. J cycles the torque (none, +τ, −τ) and throws
- * again.
+ * again; B switches linear drag on the centre (the closed form then has the drag's
+ * exponential, and the spin is not affected: drag through the centre has no torque).
  *
  * <p>What to watch for: the corner's loops ride on the centre's parabola. The stepped angle
  * runs ahead of the formula by {@code ½·(τ/I)·h·t} (the rotation step uses the new ω, as the
@@ -53,6 +55,11 @@ public final class SpinThrowDemo extends DemoState {
     private static final float TRAIL_WIDTH = 0.08f;
     private static final float[] TORQUES = {0f, TORQUE, -TORQUE};
     private static final Vector3f GRAVITY = new Vector3f(0f, -Gravity.STANDARD_G, 0f);
+    /** The linear drag the B key switches on (N·s/m). */
+    public static final float DRAG_B = 0.3f;
+
+    /** Linear drag on the centre, b = 0 while switched off. */
+    private final LinearDrag drag = new LinearDrag(0f);
 
     private final RotationIntegrator rotation = new RotationIntegrator(
             RotationIntegrator.Orientation.EXACT, RotationIntegrator.Angular.EXPLICIT, true);
@@ -112,6 +119,17 @@ public final class SpinThrowDemo extends DemoState {
     }
 
     /**
+     * Switch linear drag {@code b = DRAG_B} on the centre on or off, and throw again.
+     *
+     * @param on true for drag
+     */
+    public void setDrag(boolean on) {
+        drag.setCoefficient(on ? DRAG_B : 0f);
+        refreshEquations();
+        restart();
+    }
+
+    /**
      * Return the angle the box has turned about z since the throw, read from R (unwrapped).
      *
      * @return θ (in radians)
@@ -151,11 +169,10 @@ public final class SpinThrowDemo extends DemoState {
         double theta = formulaAngle(seconds);
         double cos = Math.cos(theta);
         double sin = Math.sin(theta);
-        double half = 0.5 * seconds * seconds;
         return storeResult.set(
-                (float) (LAUNCH_POSITION.x + LAUNCH_VELOCITY.x * seconds + GRAVITY.x * half
+                (float) (centreFormula(LAUNCH_POSITION.x, LAUNCH_VELOCITY.x, GRAVITY.x, seconds)
                         + cos * CORNER.x - sin * CORNER.y),
-                (float) (LAUNCH_POSITION.y + LAUNCH_VELOCITY.y * seconds + GRAVITY.y * half
+                (float) (centreFormula(LAUNCH_POSITION.y, LAUNCH_VELOCITY.y, GRAVITY.y, seconds)
                         + sin * CORNER.x + cos * CORNER.y),
                 CORNER.z);
     }
@@ -163,7 +180,8 @@ public final class SpinThrowDemo extends DemoState {
     @Override
     protected void createScene() {
         centre = addParticle("centre", new ColorRGBA(1f, 0.85f, 0.35f, 1f), LAUNCH_POSITION,
-                LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(new Gravity())).stopAtGround();
+                LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(new Gravity(), drag))
+                .stopAtGround();
         // The rigid body shares the demo particle: translation is the particle's step.
         body = new RigidBody(centre.getParticle(), inertia);
         resetRotation();
@@ -174,15 +192,22 @@ public final class SpinThrowDemo extends DemoState {
 
     @Override
     protected void declareKeys() {
-        torqueKey = bindKey(KeyInput.KEY_J, "J", "torque about z: none -> +0.2 N·m -> -0.2 N·m"
-                + " (throws again)", () -> setTorqueChoice((torqueChoice + 1) % TORQUES.length));
+        torqueKey = bindKey(KeyInput.KEY_J, "J", "torque about z: none -> +" + TORQUE
+                + " N·m -> -" + TORQUE + " N·m (throws again)", () -> setTorqueChoice((torqueChoice + 1) % TORQUES.length));
+        bindKey(KeyInput.KEY_B, "B", "linear drag on the centre: off <-> b = " + DRAG_B
+                + " N·s/m (throws again)", this::toggleDrag);
     }
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("centre: V += h·g,  P += h·V;   spin: ω += h·τ/I,  R = exp(h[ω]×)·R;  corner"
-                + " = P + R·b;   I_z = m(a²+b²)/12 = ");
-        TextFormat.appendFixed(text, inertia.getMoment(2), 4).append(" kg·m²\n");
+        text.append("centre: V += h·(g − (b/m)·V),  P += h·V,  m = ");
+        TextFormat.appendFixed(text, MASS_KG, 1).append(" kg,  b = ");
+        TextFormat.appendFixed(text, drag.getCoefficient(), 1).append(" N·s/m\n");
+        text.append("spin: ω += h·τ/I_z,  R = exp(h[ω]×)·R,  I_z = m(");
+        TextFormat.appendFixed(text, SIDES.x, 1).append("² + ");
+        TextFormat.appendFixed(text, SIDES.y, 1).append("²)/12 = ");
+        TextFormat.appendFixed(text, inertia.getMoment(2), 4).append(" kg·m²;  corner = P + R·");
+        TextFormat.appendVector(text, CORNER, 2).append(" m\n");
     }
 
     @Override
@@ -252,6 +277,24 @@ public final class SpinThrowDemo extends DemoState {
         getSceneNode().attachChild(cornerTrail.getGeometry());
         getSceneNode().attachChild(box.getGeometry());
         onRestart();
+    }
+
+    /**
+     * The centre's closed form along one axis: {@code p0 + v0·t + ½·g·t²} without drag, and
+     * with linear drag ({@code k = b/m}, terminal velocity {@code g/k})
+     * {@code p0 + (g/k)·t + (v0 − g/k)·(1 − e^(−k·t))/k}.
+     */
+    private double centreFormula(double p0, double v0, double g, double seconds) {
+        double k = drag.getCoefficient() / MASS_KG;
+        if (k == 0.0) {
+            return p0 + v0 * seconds + 0.5 * g * seconds * seconds;
+        }
+        double terminal = g / k;
+        return p0 + terminal * seconds + (v0 - terminal) * -Math.expm1(-k * seconds) / k;
+    }
+
+    private void toggleDrag() {
+        setDrag(drag.getCoefficient() == 0f);
     }
 
     private void resetRotation() {

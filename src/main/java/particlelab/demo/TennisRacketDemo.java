@@ -27,6 +27,8 @@ import particlelab.view.TextFormat;
  * seconds. I switches the angular integrator of the racket shown: explicit Euler gains
  * kinetic energy and |L| every step (its HUD drift grows), implicit midpoint keeps both to
  * round-off. Both are stepped all the time (the other one unseen), so the HUD compares them.
+ * G leaves out the gyroscopic term (as some engines do): then ω stays constant and the racket
+ * never flips.
  */
 public final class TennisRacketDemo extends DemoState {
 
@@ -46,7 +48,11 @@ public final class TennisRacketDemo extends DemoState {
     private static final int FLIPS_SHOWN = 6;
 
     private final RigidBody[] bodies = new RigidBody[METHODS.length];
+    /** Per method: the integrator with the gyroscopic term, and without it. */
     private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
+    private final RotationIntegrator[] withoutGyroscopic =
+            new RotationIntegrator[METHODS.length];
+    private boolean gyroscopic = true;
     private final double[] startEnergy = new double[METHODS.length];
     private final double[] startMomentum = new double[METHODS.length];
     private final double[][] flipTimes = new double[METHODS.length][FLIPS_KEPT];
@@ -60,6 +66,7 @@ public final class TennisRacketDemo extends DemoState {
     private double elapsedSeconds;
     private BoxView view;
     private KeyBinding methodKey;
+    private KeyBinding gyroscopicKey;
 
     /** Create the demo. */
     public TennisRacketDemo() {
@@ -68,6 +75,8 @@ public final class TennisRacketDemo extends DemoState {
             bodies[i] = new RigidBody(1f, INERTIA);
             integrators[i] = new RotationIntegrator(RotationIntegrator.Orientation.EXACT,
                     METHODS[i], true);
+            withoutGyroscopic[i] = new RotationIntegrator(
+                    RotationIntegrator.Orientation.EXACT, METHODS[i], false);
         }
         tilt.fromAngleNormalAxis(TILT, Vector3f.UNIT_X);
         resetBodies();
@@ -113,6 +122,16 @@ public final class TennisRacketDemo extends DemoState {
         return shown;
     }
 
+    /**
+     * Keep or leave out the gyroscopic term, and start again.
+     *
+     * @param on true for Euler's equations in full, false to leave out {@code ω × (I·ω)}
+     */
+    public void setGyroscopic(boolean on) {
+        gyroscopic = on;
+        restart();
+    }
+
     @Override
     protected void createScene() {
         setView(-5f, 5f, 5f, 1f, 2, 0.3f);
@@ -123,6 +142,9 @@ public final class TennisRacketDemo extends DemoState {
         methodKey = bindKey(KeyInput.KEY_I, "I",
                 "racket shown: explicit Euler <-> implicit midpoint for ω",
                 () -> shown = 1 - shown);
+        gyroscopicKey = bindKey(KeyInput.KEY_G, "G",
+                "gyroscopic term ω × (I·ω) on <-> off (starts again; off, it never flips)",
+                () -> setGyroscopic(!gyroscopic));
     }
 
     @Override
@@ -134,7 +156,9 @@ public final class TennisRacketDemo extends DemoState {
     @Override
     protected void writeHudLines(StringBuilder text) {
         text.append("shown (").append(methodKey.getKeyLabel()).append("): ")
-                .append(NAMES[shown]).append(",  E0 = ");
+                .append(NAMES[shown]).append(",  gyroscopic term (")
+                .append(gyroscopicKey.getKeyLabel()).append(") ")
+                .append(gyroscopic ? "on" : "off").append(",  E0 = ");
         TextFormat.appendFixed(text, startEnergy[shown], 3).append(" J,  |L0| = ");
         TextFormat.appendFixed(text, startMomentum[shown], 3).append(" kg·m²/s\n");
         for (int i = 0; i < METHODS.length; ++i) {
@@ -167,7 +191,7 @@ public final class TennisRacketDemo extends DemoState {
     protected void afterStep(float stepSeconds) {
         elapsedSeconds += stepSeconds;
         for (int i = 0; i < METHODS.length; ++i) {
-            integrators[i].step(bodies[i], stepSeconds);
+            (gyroscopic ? integrators[i] : withoutGyroscopic[i]).step(bodies[i], stepSeconds);
             boolean positive = bodies[i].bodyAngularVelocity(bodyOmega).y > 0f;
             if (positive != positiveWy[i]) {
                 if (flips[i] < FLIPS_KEPT) {
