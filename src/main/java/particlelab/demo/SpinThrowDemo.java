@@ -193,7 +193,8 @@ public final class SpinThrowDemo extends DemoState {
     @Override
     protected void declareKeys() {
         torqueKey = bindKey(KeyInput.KEY_J, "J", "torque about z: none -> +" + TORQUE
-                + " N·m -> -" + TORQUE + " N·m (throws again)", () -> setTorqueChoice((torqueChoice + 1) % TORQUES.length));
+                + " N·m -> -" + TORQUE + " N·m (throws again)",
+                () -> setTorqueChoice((torqueChoice + 1) % TORQUES.length));
         bindKey(KeyInput.KEY_B, "B", "linear drag on the centre: off <-> b = " + DRAG_B
                 + " N·s/m (throws again)", this::toggleDrag);
     }

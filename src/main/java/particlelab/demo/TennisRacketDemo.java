@@ -132,6 +132,15 @@ public final class TennisRacketDemo extends DemoState {
         restart();
     }
 
+    /**
+     * Access the orientation every run starts from.
+     *
+     * @return the live matrix (not null; do not modify)
+     */
+    public Matrix3f getStartOrientation() {
+        return tilt;
+    }
+
     @Override
     protected void createScene() {
         setView(-5f, 5f, 5f, 1f, 2, 0.3f);
@@ -169,17 +178,22 @@ public final class TennisRacketDemo extends DemoState {
                     .append(" %,  |L| drift ");
             double momentum = body.angularMomentum(bodyOmega);
             TextFormat.appendFixed(text, 100.0 * (momentum / startMomentum[i] - 1.0), 4)
-                    .append(" %,  flips at");
+                    .append(" %,  ");
             int count = flips[i];
-            int first = Math.max(0, Math.min(count, FLIPS_KEPT) - FLIPS_SHOWN);
-            for (int k = first; k < Math.min(count, FLIPS_KEPT); ++k) {
+            if (count == 0) {
+                text.append("no flip yet\n");
+                continue;
+            }
+            text.append("flips at");
+            int kept = Math.min(count, FLIPS_KEPT);
+            for (int k = Math.max(0, kept - FLIPS_SHOWN); k < kept; ++k) {
                 text.append(' ');
                 TextFormat.appendFixed(text, flipTimes[i][k], 2);
             }
-            text.append(" s,  ωy period ");
+            text.append(" s,  ωy period: ");
             if (count >= 3) {
-                int last = Math.min(count, FLIPS_KEPT) - 1;
-                TextFormat.appendFixed(text, flipTimes[i][last] - flipTimes[i][last - 2], 3)
+                // Two flips make one period of ωy: from + to − and back.
+                TextFormat.appendFixed(text, flipTimes[i][kept - 1] - flipTimes[i][kept - 3], 3)
                         .append(" s\n");
             } else {
                 text.append("after 3 flips\n");
