@@ -71,6 +71,7 @@ public final class SpinThrowDemo extends DemoState {
     private DemoParticle centre;
     private RigidBody body;
     private BoxView box;
+    private Trail centreTrail;
     private Trail cornerTrail;
     private Trail formulaTrail;
     private int torqueChoice;
@@ -242,6 +243,7 @@ public final class SpinThrowDemo extends DemoState {
         lastAtan = atan;
         spinSeconds += stepSeconds;
         if (cornerTrail != null) {
+            centreTrail.add(body.getParticle().position);
             cornerTrail.add(body.bodyToWorld(CORNER, corner));
             formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
         }
@@ -252,8 +254,10 @@ public final class SpinThrowDemo extends DemoState {
     protected void onRestart() {
         resetRotation();
         if (cornerTrail != null) {
+            centreTrail.clear();
             cornerTrail.clear();
             formulaTrail.clear();
+            centreTrail.add(body.getParticle().position);
             cornerTrail.add(body.bodyToWorld(CORNER, corner));
             formulaTrail.add(formulaCorner(0.0, formulaCorner));
         }
@@ -263,17 +267,23 @@ public final class SpinThrowDemo extends DemoState {
     @Override
     protected void initialize(Application app) {
         super.initialize(app);
-        // The box is the body now: hide the centre's sphere (its label and trail stay).
-        centre.view.getNode().getChild(centre.getLabel() + " sphere")
-                .setCullHint(Spatial.CullHint.Always);
         Material unshaded = new Material(app.getAssetManager(),
                 "Common/MatDefs/Misc/Unshaded.j3md");
+        // The box is the body now: hide the centre's sphere, and draw its trail thinner
+        // (the shared one is as wide as half the sphere, here the box's half diagonal). The
+        // label stays, placed clear of the box.
+        centre.view.getNode().getChild(centre.getLabel() + " sphere")
+                .setCullHint(Spatial.CullHint.Always);
+        centre.view.getNode().detachChild(centre.view.getTrail().getGeometry());
+        centreTrail = new Trail("centre trail", TRAIL_POINTS, TRAIL_WIDTH,
+                centre.getColor(), unshaded);
         cornerTrail = new Trail("corner trail", TRAIL_POINTS, TRAIL_WIDTH,
                 new ColorRGBA(1f, 0.4f, 0.3f, 1f), unshaded);
         formulaTrail = new Trail("closed-form corner trail", TRAIL_POINTS, 2f * TRAIL_WIDTH,
                 new ColorRGBA(1f, 1f, 1f, 0.3f), unshaded);
         box = new BoxView(app.getAssetManager(), "thrown box", halfExtents,
                 new ColorRGBA(0.35f, 0.8f, 1f, 1f));
+        getSceneNode().attachChild(centreTrail.getGeometry());
         getSceneNode().attachChild(formulaTrail.getGeometry());
         getSceneNode().attachChild(cornerTrail.getGeometry());
         getSceneNode().attachChild(box.getGeometry());
@@ -310,6 +320,7 @@ public final class SpinThrowDemo extends DemoState {
     private void updateViews() {
         if (box != null) {
             box.update(body.orientation, body.getParticle().position);
+            centreTrail.refresh();
             cornerTrail.refresh();
             formulaTrail.refresh();
         }
