@@ -33,7 +33,9 @@ import particlelab.view.TextFormat;
  * and quaternion boxes stay rigid ({@code det R = 1} and {@code |RᵀR − I| ≈ 0} to float
  * round-off) but lag the exact rotation, by {@code ωh − atan(ωh)} and {@code ωh −
  * 2·atan(ωh/2)} per step: a larger h (Right) makes the lag visible. The exact box stays on
- * the exact angle. The boxes are drawn by moving their vertices with R itself, so what you
+ * the exact angle. The plain box's angle error is that of its nearest rotation, which for a
+ * constant ω is the polar box itself (the cure removes the stretch, not the lag), so the two
+ * read the same. The boxes are drawn by moving their vertices with R itself, so what you
  * see is the matrix, drift and all.
  */
 public final class RotationDemo extends DemoState {
