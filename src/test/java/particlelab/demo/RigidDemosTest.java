@@ -17,6 +17,7 @@ import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
+import particlelab.view.BoxView;
 
 /**
  * The three rigid-body demos in a real headless application, driven with a fixed frame time
@@ -77,6 +78,34 @@ class RigidDemosTest {
         assertEquals(0.0, measured[3], 5e-5);
         // The cured box stays orthonormal to float round-off.
         assertTrue(measured[4] < 1e-5, "polar |RᵀR − I| " + measured[4]);
+    }
+
+    @Test
+    void boxesAreDrawnByTheMatrixItselfDriftIncluded() throws Exception {
+        double gap = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < 300; ++i) {
+                rotation.advance(H);
+            }
+            BoxView view = rotation.getView(0);
+            Matrix3f r = rotation.getOrientation(0);
+            // The body vertices are symmetric about the centre: their mean is P.
+            Vector3f centre = new Vector3f();
+            Vector3f vertex = new Vector3f();
+            for (int k = 0; k < 24; ++k) {
+                centre.addLocal(view.copyVertex(k, vertex));
+            }
+            centre.divideLocal(24f);
+            double worst = 0.0;
+            for (int k = 0; k < 24; ++k) {
+                Vector3f expected = r.mult(view.copyBodyVertex(k, new Vector3f()))
+                        .addLocal(centre);
+                worst = Math.max(worst, expected.distance(view.copyVertex(k, vertex)));
+            }
+            return worst;
+        });
+        // P + R·b in float, against the same product: a few ulps of ~4 m.
+        assertEquals(0.0, gap, 1e-5);
     }
 
     @Test
