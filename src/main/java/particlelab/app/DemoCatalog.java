@@ -8,6 +8,9 @@ import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
+import particlelab.demo.RotationDemo;
+import particlelab.demo.SpinThrowDemo;
+import particlelab.demo.TennisRacketDemo;
 import particlelab.demo.ThrustDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
@@ -45,6 +48,9 @@ public final class DemoCatalog {
             new Entry("drag", DragDemo::new),
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
+            new Entry("rotation", RotationDemo::new),
+            new Entry("throw", SpinThrowDemo::new),
+            new Entry("racket", TennisRacketDemo::new),
             new Entry("wind", WindDemo::new)));
 
     private DemoCatalog() {

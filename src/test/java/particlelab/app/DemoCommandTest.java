@@ -33,8 +33,8 @@ class DemoCommandTest {
         assertTrue(text(err).contains("--fixed-tpf: must be at most 1.0 s, but was 2.0"),
                 text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("rotation"));
-        assertTrue(text(err).contains("no demo named 'rotation'; the demos are uniform,"));
+        assertEquals(DemoCommand.USAGE, run("gyroscope"));
+        assertTrue(text(err).contains("no demo named 'gyroscope'; the demos are uniform,"));
         err.reset();
         assertEquals(DemoCommand.USAGE, run("aiming", "--screenshot", "x.png"));
         assertTrue(text(err).contains("--screenshot: needs --frames N"), text(err));

@@ -1,0 +1,267 @@
+package particlelab.demo;
+
+import com.jme3.app.Application;
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Matrix3f;
+import com.jme3.math.Vector3f;
+import particlelab.physics.SimulationClock;
+import particlelab.rigid.RotationCheck;
+import particlelab.rigid.RotationIntegrator;
+import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.view.BoxView;
+import particlelab.view.TextFormat;
+
+/**
+ * Rotation, drift and cures: four identical boxes spin side by side at the same constant ω,
+ * each turned by a different orientation step. Builds upon uniform motion (a constant rate,
+ * integrated by Euler steps) and the rigid-body model of {@code docs/numerics.md} §9.
+ *
+ * <p>The lecture's rotation matrix R holds the body's axes as its columns; a point at body
+ * coordinates b is at {@code R·b}. Spinning at ω, {@code Ṙ = [ω]×·R}, and the lecture's Euler
+ * step is
+ * <pre>
+ *   plain Euler:  R ← R + h·[ω]×·R        (det R grows by 1 + (|ω|h)² per step)
+ *   polar:        the same, then R ← the nearest rotation to R
+ *   quaternion:   q ← q + (h/2)·(0, ω)·q, then q ← q/|q|
+ *   exact:        R ← exp(h·[ω]×)·R        (Rodrigues' formula)
+ * </pre>
+ *
+ * <p>What to watch for: the plain box grows and stretches in the plane across ω, because
+ * {@code I + h·[ω]×} is a rotation times a stretch by {@code √(1 + (|ω|h)²)}; it is started
+ * again when its det reaches {@value #DET_LIMIT} (half as large again across ω). The polar
+ * and quaternion boxes stay rigid ({@code det R = 1} and {@code |RᵀR − I| ≈ 0} to float
+ * round-off) but lag the exact rotation, by {@code ωh − atan(ωh)} and {@code ωh −
+ * 2·atan(ωh/2)} per step: a larger h (Right) makes the lag visible. The exact box stays on
+ * the exact angle. The plain box's angle error is that of its nearest rotation, which for a
+ * constant ω is the polar box itself (the cure removes the stretch, not the lag), so the two
+ * read the same. The boxes are drawn by moving their vertices with R itself, so what you
+ * see is the matrix, drift and all.
+ */
+public final class RotationDemo extends DemoState {
+
+    /** The plain box starts again once its det R reaches this (1.5³). */
+    public static final float DET_LIMIT = 3.375f;
+    /** The starting spin rate |ω| (rad/s), and its range for the keys. */
+    public static final float DEFAULT_OMEGA = 3f;
+    public static final float MIN_OMEGA = 0.75f;
+    public static final float MAX_OMEGA = 12f;
+    /** The range of h for the keys (s). */
+    public static final float MIN_STEP = 1f / 480f;
+    public static final float MAX_STEP = 1f / 15f;
+    /** The spin axis, tilted toward the camera so the boxes tumble (unit vector). */
+    public static final Vector3f AXIS = new Vector3f(0.2f, 0.4f, 0.9f).normalizeLocal();
+    /** The orientation steps, left to right. */
+    public static final Orientation[] METHODS = {Orientation.EULER, Orientation.POLAR,
+        Orientation.QUATERNION, Orientation.EXACT};
+    private static final String[] NAMES = {"plain Euler", "polar", "quaternion", "exact"};
+    private static final ColorRGBA[] COLORS = {new ColorRGBA(1f, 0.45f, 0.3f, 1f),
+        new ColorRGBA(0.35f, 0.8f, 1f, 1f), new ColorRGBA(0.6f, 1f, 0.45f, 1f),
+        new ColorRGBA(1f, 0.85f, 0.35f, 1f)};
+    private static final Vector3f HALF_EXTENTS = new Vector3f(0.7f, 0.45f, 0.3f);
+    /** Where the boxes spin: their x, and the common height (m). */
+    private static final float FIRST_X = 2f;
+    private static final float SPACING_X = 3.5f;
+    private static final float BOX_Y = 3.5f;
+    private static final float POST_HEIGHT = 1f;
+    /** The boxes spin in front of the grid's plane, so no grid line shows on them (m). */
+    private static final float BOX_Z = 1.3f;
+    private static final float RAD_TO_DEG = (float) (180.0 / Math.PI);
+
+    private final Matrix3f[] orientations = new Matrix3f[METHODS.length];
+    private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
+    private final BoxView[] views = new BoxView[METHODS.length];
+    private final Vector3f[] centres = new Vector3f[METHODS.length];
+    /** Per box: the time since it started from the identity (s), for its exact rotation. */
+    private final double[] elapsedSeconds = new double[METHODS.length];
+    private final RotationCheck check = new RotationCheck();
+    private final Matrix3f identity = new Matrix3f();
+    private final Matrix3f exact = new Matrix3f();
+    private final Vector3f omega = new Vector3f();
+    private float omegaMagnitude = DEFAULT_OMEGA;
+    private int plainRestarts;
+    private KeyBinding fasterKey;
+    private KeyBinding slowerKey;
+    private KeyBinding longerKey;
+    private KeyBinding shorterKey;
+
+    /** Create the demo. */
+    public RotationDemo() {
+        super("Rotation (drift and cures)");
+        for (int i = 0; i < METHODS.length; ++i) {
+            orientations[i] = new Matrix3f();
+            integrators[i] = new RotationIntegrator(METHODS[i],
+                    RotationIntegrator.Angular.EXPLICIT, true);
+            centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, BOX_Z);
+        }
+        omega.set(AXIS).multLocal(omegaMagnitude);
+    }
+
+    /**
+     * Access one box's orientation R.
+     *
+     * @param box 0 to 3, in the order of {@link #METHODS}
+     * @return the live matrix (not null; do not modify)
+     */
+    public Matrix3f getOrientation(int box) {
+        return orientations[box];
+    }
+
+    /**
+     * Return how long one box has turned since it last started from the identity.
+     *
+     * @param box 0 to 3, in the order of {@link #METHODS}
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getElapsedSeconds(int box) {
+        return elapsedSeconds[box];
+    }
+
+    /**
+     * Copy the common ω into storeResult.
+     *
+     * @param storeResult storage for ω (in rad/s, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyOmega(Vector3f storeResult) {
+        return storeResult.set(omega);
+    }
+
+    /**
+     * Count how often the plain box reached {@link #DET_LIMIT} and started again.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countPlainRestarts() {
+        return plainRestarts;
+    }
+
+    /**
+     * Access the view of one box.
+     *
+     * @param box 0 to 3, in the order of {@link #METHODS}
+     * @return the view (null before initialisation)
+     */
+    public BoxView getView(int box) {
+        return views[box];
+    }
+
+    @Override
+    protected void createScene() {
+        // No particles: the boxes stand still and only turn. A post names each box.
+        for (int i = 0; i < METHODS.length; ++i) {
+            addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
+        }
+        setView(0f, FIRST_X * 2f + SPACING_X * (METHODS.length - 1), 5.2f, 1f, 5, 0.3f);
+    }
+
+    @Override
+    protected void declareKeys() {
+        fasterKey = bindKey(KeyInput.KEY_UP, "Up", "|ω| x2 (restarts the boxes)",
+                () -> changeOmega(2f));
+        slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "|ω| /2 (restarts the boxes)",
+                () -> changeOmega(0.5f));
+        longerKey = bindKey(KeyInput.KEY_RIGHT, "Right", "h x2 (fixed step)",
+                () -> changeStep(2f));
+        shorterKey = bindKey(KeyInput.KEY_LEFT, "Left", "h /2 (fixed step)",
+                () -> changeStep(0.5f));
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("dR/dt = [ω]×R, one step of h:  plain Euler R += h[ω]×R;  polar: the same,"
+                + " then the nearest rotation\n");
+        text.append("quaternion: q += (h/2)(0,ω)q, then q /= |q|;  exact: R = exp(h[ω]×)R"
+                + " (Rodrigues)\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("|ω| = ");
+        TextFormat.appendFixed(text, omegaMagnitude, 2).append(" rad/s (").append(
+                fasterKey.getKeyLabel()).append('/').append(slowerKey.getKeyLabel())
+                .append("),  h (").append(longerKey.getKeyLabel()).append('/')
+                .append(shorterKey.getKeyLabel()).append("):  |ω|h = ");
+        TextFormat.appendFixed(text, omegaMagnitude * getClock().getStepSeconds(), 4)
+                .append(",  plain det grows x");
+        double growth = 1.0 + square(omegaMagnitude * getClock().getStepSeconds());
+        TextFormat.appendFixed(text, growth, 6).append(" per step\n");
+        for (int i = 0; i < METHODS.length; ++i) {
+            Matrix3f r = orientations[i];
+            check.exactRotation(identity, omega, elapsedSeconds[i], exact);
+            text.append(NAMES[i]).append(":  det R = ");
+            TextFormat.appendFixed(text, check.determinant(r), 6).append(",  |R^T·R − I| = ");
+            TextFormat.appendFixed(text, check.orthogonalityError(r), 6)
+                    .append(",  angle error = ");
+            TextFormat.appendFixed(text, RAD_TO_DEG * check.angleError(r, exact), 4)
+                    .append('°');
+            if (i == 0) {
+                text.append("   (started again at det ");
+                TextFormat.appendFixed(text, DET_LIMIT, 3).append(": ").append(plainRestarts)
+                        .append(" times)");
+            }
+            text.append('\n');
+        }
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        for (int i = 0; i < METHODS.length; ++i) {
+            integrators[i].stepOrientation(orientations[i], omega, stepSeconds);
+            elapsedSeconds[i] += stepSeconds;
+        }
+        if (check.determinant(orientations[0]) >= DET_LIMIT) {
+            orientations[0].loadIdentity();
+            elapsedSeconds[0] = 0.0;
+            ++plainRestarts;
+        }
+        updateBoxes();
+    }
+
+    @Override
+    protected void onRestart() {
+        for (int i = 0; i < METHODS.length; ++i) {
+            orientations[i].loadIdentity();
+            elapsedSeconds[i] = 0.0;
+        }
+        plainRestarts = 0;
+        updateBoxes();
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        for (int i = 0; i < METHODS.length; ++i) {
+            views[i] = new BoxView(app.getAssetManager(), NAMES[i] + " box", HALF_EXTENTS,
+                    COLORS[i]);
+            getSceneNode().attachChild(views[i].getGeometry());
+        }
+        updateBoxes();
+    }
+
+    private void updateBoxes() {
+        for (int i = 0; i < METHODS.length; ++i) {
+            if (views[i] != null) {
+                views[i].update(orientations[i], centres[i]);
+            }
+        }
+    }
+
+    private void changeOmega(float factor) {
+        omegaMagnitude = Math.max(MIN_OMEGA, Math.min(MAX_OMEGA, omegaMagnitude * factor));
+        omega.set(AXIS).multLocal(omegaMagnitude);
+        restart();
+    }
+
+    private void changeStep(float factor) {
+        SimulationClock clock = getClock();
+        float step = Math.max(MIN_STEP, Math.min(MAX_STEP, clock.getStepSeconds() * factor));
+        clock.setStepSeconds(step);
+        // The keys set the fixed step; the HUD's stepping line shows the new h.
+        clock.setMode(SimulationClock.Mode.FIXED_STEP);
+    }
+
+    private static double square(double x) {
+        return x * x;
+    }
+}

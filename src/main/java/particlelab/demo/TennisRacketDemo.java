@@ -1,0 +1,255 @@
+package particlelab.demo;
+
+import com.jme3.app.Application;
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Matrix3f;
+import com.jme3.math.Vector3f;
+import particlelab.rigid.Inertia;
+import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationIntegrator;
+import particlelab.rigid.RotationIntegrator.Angular;
+import particlelab.view.BoxView;
+import particlelab.view.TextFormat;
+
+/**
+ * Tennis racket: the intermediate-axis flip. A torque-free flat box with principal moments
+ * (1, 2, 3) kg·m² is spun almost exactly about its middle axis (body y). Builds upon the
+ * rotation demo; here ω itself changes, by Euler's equations in the body frame,
+ * {@code I·ω̇ = −ω × (I·ω)} (no torque, only the gyroscopic term).
+ *
+ * <p>Spin about the smallest or the largest axis is stable; about the middle one it is not:
+ * the tiny sideways spin grows until the box turns over, half a turn about another axis,
+ * then comes back, again and again. Each flip is a sign change of the body-frame
+ * {@code ωy}; the HUD lists the flip times and the period of {@code ωy} (two flips).
+ *
+ * <p>What to watch for: the racket's front face (bright) and back face (dark) swap every few
+ * seconds. I switches the angular integrator of the racket shown: explicit Euler gains
+ * kinetic energy and |L| every step (its HUD drift grows), implicit midpoint keeps both to
+ * round-off. Both are stepped all the time (the other one unseen), so the HUD compares them.
+ * G leaves out the gyroscopic term (as some engines do): then ω stays constant and the racket
+ * never flips.
+ */
+public final class TennisRacketDemo extends DemoState {
+
+    /** The principal moments (kg·m²): a flat plate, C = A + B. */
+    public static final Inertia INERTIA = Inertia.of(1f, 2f, 3f);
+    /** The starting spin in the body frame: mostly about y, a little about x and z (rad/s). */
+    public static final Vector3f BODY_SPIN = new Vector3f(0.1f, 4f, 0.1f);
+    /** The methods, in the order of the HUD lines. */
+    public static final Angular[] METHODS = {Angular.EXPLICIT, Angular.IMPLICIT_MIDPOINT};
+    private static final String[] NAMES = {"explicit Euler", "implicit midpoint"};
+    /** The starting tilt toward the camera, so the plate's face is seen (rad). */
+    private static final float TILT = -0.45f;
+    /** The plate's half sides, with the proportions that give moments (1, 2, 3) (m). */
+    private static final Vector3f HALF_EXTENTS = new Vector3f(1.414f, 1f, 0.04f);
+    /** How many flip times are kept per method. */
+    private static final int FLIPS_KEPT = 64;
+    private static final int FLIPS_SHOWN = 6;
+
+    private final RigidBody[] bodies = new RigidBody[METHODS.length];
+    /** Per method: the integrator with the gyroscopic term, and without it. */
+    private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
+    private final RotationIntegrator[] withoutGyroscopic =
+            new RotationIntegrator[METHODS.length];
+    private boolean gyroscopic = true;
+    private final double[] startEnergy = new double[METHODS.length];
+    private final double[] startMomentum = new double[METHODS.length];
+    private final double[][] flipTimes = new double[METHODS.length][FLIPS_KEPT];
+    private final int[] flips = new int[METHODS.length];
+    private final boolean[] positiveWy = new boolean[METHODS.length];
+    private final Vector3f bodyOmega = new Vector3f();
+    /** Where the racket spins: in front of the grid's plane, so no grid line shows on it. */
+    private final Vector3f centre = new Vector3f(0f, 2.6f, 1.8f);
+    private final Matrix3f tilt = new Matrix3f();
+    private int shown = 0;
+    private double elapsedSeconds;
+    private BoxView view;
+    private KeyBinding methodKey;
+    private KeyBinding gyroscopicKey;
+
+    /** Create the demo. */
+    public TennisRacketDemo() {
+        super("Tennis racket (intermediate axis)");
+        for (int i = 0; i < METHODS.length; ++i) {
+            bodies[i] = new RigidBody(1f, INERTIA);
+            integrators[i] = new RotationIntegrator(RotationIntegrator.Orientation.EXACT,
+                    METHODS[i], true);
+            withoutGyroscopic[i] = new RotationIntegrator(
+                    RotationIntegrator.Orientation.EXACT, METHODS[i], false);
+        }
+        tilt.fromAngleNormalAxis(TILT, Vector3f.UNIT_X);
+        resetBodies();
+    }
+
+    /**
+     * Access the body stepped by one method.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @return the live body (not null)
+     */
+    public RigidBody getBody(int method) {
+        return bodies[method];
+    }
+
+    /**
+     * Count the flips (sign changes of body-frame ωy) one method's body made.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @return the count (&ge;0)
+     */
+    public int countFlips(int method) {
+        return flips[method];
+    }
+
+    /**
+     * Return the time of one flip.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @param flip 0 for the first (less than {@link #countFlips} and {@value #FLIPS_KEPT})
+     * @return the time (in seconds since the start)
+     */
+    public double getFlipSeconds(int method, int flip) {
+        return flipTimes[method][flip];
+    }
+
+    /**
+     * Return which method's racket is shown.
+     *
+     * @return 0 for explicit Euler, 1 for implicit midpoint
+     */
+    public int getShownMethod() {
+        return shown;
+    }
+
+    /**
+     * Keep or leave out the gyroscopic term, and start again.
+     *
+     * @param on true for Euler's equations in full, false to leave out {@code ω × (I·ω)}
+     */
+    public void setGyroscopic(boolean on) {
+        gyroscopic = on;
+        restart();
+    }
+
+    /**
+     * Access the orientation every run starts from.
+     *
+     * @return the live matrix (not null; do not modify)
+     */
+    public Matrix3f getStartOrientation() {
+        return tilt;
+    }
+
+    @Override
+    protected void createScene() {
+        setView(-5f, 5f, 5f, 1f, 2, 0.3f);
+    }
+
+    @Override
+    protected void declareKeys() {
+        methodKey = bindKey(KeyInput.KEY_I, "I",
+                "racket shown: explicit Euler <-> implicit midpoint for ω",
+                () -> shown = 1 - shown);
+        gyroscopicKey = bindKey(KeyInput.KEY_G, "G",
+                "gyroscopic term ω × (I·ω) on <-> off (starts again; off, it never flips)",
+                () -> setGyroscopic(!gyroscopic));
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("torque-free, body frame: I·dω/dt = −ω × (I·ω),  I = diag(1, 2, 3) kg·m²,"
+                + "  ω0 = (0.1, 4, 0.1) rad/s,  R = exp(h[ω]×)·R\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("shown (").append(methodKey.getKeyLabel()).append("): ")
+                .append(NAMES[shown]).append(",  gyroscopic term (")
+                .append(gyroscopicKey.getKeyLabel()).append(") ")
+                .append(gyroscopic ? "on" : "off").append(",  E0 = ");
+        TextFormat.appendFixed(text, startEnergy[shown], 3).append(" J,  |L0| = ");
+        TextFormat.appendFixed(text, startMomentum[shown], 3).append(" kg·m²/s\n");
+        for (int i = 0; i < METHODS.length; ++i) {
+            RigidBody body = bodies[i];
+            text.append(NAMES[i]).append(":  E drift ");
+            double energy = body.rotationalEnergy(bodyOmega);
+            TextFormat.appendFixed(text, 100.0 * (energy / startEnergy[i] - 1.0), 4)
+                    .append(" %,  |L| drift ");
+            double momentum = body.angularMomentum(bodyOmega);
+            TextFormat.appendFixed(text, 100.0 * (momentum / startMomentum[i] - 1.0), 4)
+                    .append(" %,  ");
+            int count = flips[i];
+            if (count == 0) {
+                text.append("no flip yet\n");
+                continue;
+            }
+            text.append("flips at");
+            int kept = Math.min(count, FLIPS_KEPT);
+            for (int k = Math.max(0, kept - FLIPS_SHOWN); k < kept; ++k) {
+                text.append(' ');
+                TextFormat.appendFixed(text, flipTimes[i][k], 2);
+            }
+            text.append(" s,  ωy period: ");
+            if (count >= 3) {
+                // Two flips make one period of ωy: from + to − and back.
+                TextFormat.appendFixed(text, flipTimes[i][kept - 1] - flipTimes[i][kept - 3], 3)
+                        .append(" s\n");
+            } else {
+                text.append("after 3 flips\n");
+            }
+        }
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        elapsedSeconds += stepSeconds;
+        for (int i = 0; i < METHODS.length; ++i) {
+            (gyroscopic ? integrators[i] : withoutGyroscopic[i]).step(bodies[i], stepSeconds);
+            boolean positive = bodies[i].bodyAngularVelocity(bodyOmega).y > 0f;
+            if (positive != positiveWy[i]) {
+                if (flips[i] < FLIPS_KEPT) {
+                    flipTimes[i][flips[i]] = elapsedSeconds;
+                }
+                ++flips[i];
+                positiveWy[i] = positive;
+            }
+        }
+        updateView();
+    }
+
+    @Override
+    protected void onRestart() {
+        resetBodies();
+        updateView();
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        view = new BoxView(app.getAssetManager(), "racket", HALF_EXTENTS,
+                new ColorRGBA(1f, 0.55f, 0.3f, 1f));
+        getSceneNode().attachChild(view.getGeometry());
+        updateView();
+    }
+
+    private void resetBodies() {
+        elapsedSeconds = 0.0;
+        for (int i = 0; i < METHODS.length; ++i) {
+            RigidBody body = bodies[i];
+            body.setOrientation(tilt);
+            // ω in the world frame = R·ω_b.
+            tilt.mult(BODY_SPIN, body.angularVelocity);
+            startEnergy[i] = body.rotationalEnergy(bodyOmega);
+            startMomentum[i] = body.angularMomentum(bodyOmega);
+            flips[i] = 0;
+            positiveWy[i] = BODY_SPIN.y > 0f;
+        }
+    }
+
+    private void updateView() {
+        if (view != null) {
+            view.update(bodies[shown].orientation, centre);
+        }
+    }
+}

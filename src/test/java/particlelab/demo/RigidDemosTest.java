@@ -1,0 +1,293 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Matrix3f;
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.Gravity;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationCheck;
+import particlelab.rigid.RotationIntegrator;
+import particlelab.view.BoxView;
+
+/**
+ * The three rigid-body demos in a real headless application, driven with a fixed frame time
+ * of h (one step per frame): their measured numbers agree with the model's closed forms.
+ */
+class RigidDemosTest {
+
+    private static final float H = 1f / 60f;
+    private static RotationDemo rotation;
+    private static SpinThrowDemo spinThrow;
+    private static TennisRacketDemo racket;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        rotation = new RotationDemo();
+        spinThrow = new SpinThrowDemo();
+        racket = new TennisRacketDemo();
+        harness = HeadlessHarness.start(List.of(rotation, spinThrow, racket));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void plainBoxInflatesByOnePlusOmegaHSquaredPerStepAndTheCuresLagAsPredicted()
+            throws Exception {
+        int steps = 200;
+        double[] measured = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < steps; ++i) {
+                rotation.advance(H);
+            }
+            RotationCheck check = new RotationCheck();
+            Vector3f omega = rotation.copyOmega(new Vector3f());
+            Matrix3f exact = check.exactRotation(new Matrix3f(),
+                    omega, rotation.getElapsedSeconds(3), new Matrix3f());
+            return new double[] {check.determinant(rotation.getOrientation(0)),
+                check.angleError(rotation.getOrientation(1), exact),
+                check.angleError(rotation.getOrientation(2), exact),
+                check.angleError(rotation.getOrientation(3), exact),
+                check.orthogonalityError(rotation.getOrientation(1)), omega.length(),
+                rotation.countPlainRestarts(), rotation.getElapsedSeconds(0)};
+        });
+        assertEquals(0.0, measured[6], 0.0, "no restart within 200 steps");
+        assertEquals(steps * (double) H, measured[7], 1e-9);
+        double wh = measured[5] * H;
+        // det(I + h[ω]×) = 1 + (|ω|h)², so det R_n = (1 + (|ω|h)²)ⁿ; each float step rounds
+        // R's entries at 6e-8 relative, 200 steps at most ~3e-5 relative on det ≈ 1.65.
+        assertEquals(Math.pow(1.0 + wh * wh, steps), measured[0], 1e-4);
+        // The polar box lags by ωh − atan(ωh) per step, the quaternion by ωh − 2·atan(ωh/2)
+        // (docs/numerics.md §9): 8.3e-3 rad and 2.1e-3 rad here; float round-off in R adds
+        // ~1e-7 rad per step, 2e-5 rad in all.
+        assertEquals(steps * (wh - Math.atan(wh)), measured[1], 5e-5);
+        assertEquals(steps * (wh - 2.0 * Math.atan(wh / 2.0)), measured[2], 5e-5);
+        assertEquals(0.0, measured[3], 5e-5);
+        // The cured box stays orthonormal to float round-off.
+        assertTrue(measured[4] < 1e-5, "polar |RᵀR − I| " + measured[4]);
+    }
+
+    @Test
+    void boxesAreDrawnByTheMatrixItselfDriftIncluded() throws Exception {
+        double gap = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < 300; ++i) {
+                rotation.advance(H);
+            }
+            BoxView view = rotation.getView(0);
+            Matrix3f r = rotation.getOrientation(0);
+            // The body vertices are symmetric about the centre: their mean is P.
+            Vector3f centre = new Vector3f();
+            Vector3f vertex = new Vector3f();
+            for (int k = 0; k < 24; ++k) {
+                centre.addLocal(view.copyVertex(k, vertex));
+            }
+            centre.divideLocal(24f);
+            double worst = 0.0;
+            for (int k = 0; k < 24; ++k) {
+                Vector3f expected = r.mult(view.copyBodyVertex(k, new Vector3f()))
+                        .addLocal(centre);
+                worst = Math.max(worst, expected.distance(view.copyVertex(k, vertex)));
+            }
+            return worst;
+        });
+        // P + R·b in float, against the same product: a few ulps of ~4 m.
+        assertEquals(0.0, gap, 1e-5);
+    }
+
+    @Test
+    void plainBoxStartsAgainAtTheDetLimit() throws Exception {
+        double[] measured = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < 600; ++i) {
+                rotation.advance(H);
+            }
+            return new double[] {rotation.countPlainRestarts(),
+                new RotationCheck().determinant(rotation.getOrientation(0))};
+        });
+        // (1 + 0.05²)ⁿ reaches 1.5³ after 487 steps: one restart within 600.
+        assertEquals(1.0, measured[0], 0.0);
+        assertTrue(measured[1] < RotationDemo.DET_LIMIT);
+    }
+
+    @Test
+    void thrownBoxCentreIsTheParticleTrajectoryAndItsAngleFollowsTheTorqueFormula()
+            throws Exception {
+        int steps = 60;
+        double[] measured = harness.call(() -> {
+            spinThrow.setTorqueChoice(1);
+            for (int i = 0; i < steps; ++i) {
+                spinThrow.advance(H);
+            }
+            RigidBody body = spinThrow.getBody();
+            Particle twin = new Particle(SpinThrowDemo.LAUNCH_POSITION,
+                    SpinThrowDemo.LAUNCH_VELOCITY, SpinThrowDemo.MASS_KG);
+            ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+            for (int i = 0; i < steps; ++i) {
+                gravity.step(twin, H);
+            }
+            Vector3f centre = body.getParticle().position;
+            Vector3f corner = body.bodyToWorld(SpinThrowDemo.CORNER, new Vector3f());
+            Vector3f formula = spinThrow.formulaCorner(steps * (double) H, new Vector3f());
+            return new double[] {centre.x - twin.position.x, centre.y - twin.position.y,
+                spinThrow.getMeasuredAngle(), body.getInertia().getMoment(2),
+                corner.distance(formula), spinThrow.getSpinSeconds()};
+        });
+        // The same particle step on the same floats: exactly the particle's trajectory.
+        assertEquals(0.0, measured[0], 0.0);
+        assertEquals(0.0, measured[1], 0.0);
+        // ω_k = ω0 + k·h·τ/I and each step turns by h·ω_k (the new ω), so
+        // θ_n = ω0·n·h + (τ/I)·h²·n(n + 1)/2 = θ(t) + ½(τ/I)·h·t: float sums of 60 steps
+        // of ~0.17 rad round to ~1e-5 rad.
+        double alpha = SpinThrowDemo.TORQUE / measured[3];
+        double t = steps * (double) H;
+        assertEquals(t, measured[5], 1e-9);
+        double stepped = SpinThrowDemo.SPIN * t + alpha * H * H * steps * (steps + 1) / 2.0;
+        assertEquals(stepped, measured[2], 1e-4);
+        assertEquals(spinThrow.formulaAngle(t) + 0.5 * alpha * H * t, measured[2], 1e-4);
+        // The corner's closed form differs by the centre's Euler gap (O(h), ~0.08 m after
+        // 1 s) and the angle gap times the corner's 0.52 m reach: well under 0.3 m.
+        assertTrue(measured[4] < 0.3, "corner gap " + measured[4]);
+        harness.call(() -> {
+            spinThrow.setTorqueChoice(0);
+            // jME's task reads a null result as a time-out.
+            return Boolean.TRUE;
+        });
+    }
+
+    @Test
+    void racketFlipsWithMidpointKeepingEnergyWhileExplicitEulerGainsEnergy() throws Exception {
+        double[] measured = harness.call(() -> {
+            racket.restart();
+            Vector3f scratch = new Vector3f();
+            double e0 = racket.getBody(1).rotationalEnergy(scratch);
+            double l0 = racket.getBody(1).angularMomentum(scratch);
+            double explicit0 = racket.getBody(0).rotationalEnergy(scratch);
+            double previous = explicit0;
+            boolean monotone = true;
+            for (int i = 0; i < 900; ++i) {
+                racket.advance(H);
+                double explicit = racket.getBody(0).rotationalEnergy(scratch);
+                monotone &= explicit > previous;
+                previous = explicit;
+            }
+            return new double[] {racket.countFlips(1),
+                racket.getBody(1).rotationalEnergy(scratch) / e0 - 1.0,
+                racket.getBody(1).angularMomentum(scratch) / l0 - 1.0,
+                monotone ? 1.0 : 0.0, previous / explicit0 - 1.0,
+                racket.countFlips(1) >= 3 ? racket.getFlipSeconds(1, 2)
+                        - racket.getFlipSeconds(1, 0) : Double.NaN};
+        });
+        // 15 s at ω0 = (0.1, 4, 0.1): the flip repeats every few seconds.
+        assertTrue(measured[0] >= 3, "midpoint flips " + measured[0]);
+        // The midpoint keeps E and |L| exactly but for the float storage of ω each step
+        // (~6e-8 relative, 900 steps): under 1e-4.
+        assertEquals(0.0, measured[1], 1e-4);
+        assertEquals(0.0, measured[2], 1e-4);
+        // Explicit Euler multiplies E by 1 + O((ωh)²) each step: it only grows.
+        assertTrue(measured[3] == 1.0, "explicit energy not monotone");
+        assertTrue(measured[4] > 0.01, "explicit drift " + measured[4]);
+        assertTrue(measured[5] > 1.0 && measured[5] < 15.0, "period " + measured[5]);
+        // A fine-step reference: the same body, implicit midpoint at h/16.
+        double reference = referencePeriod(H / 16f, 16 * 900);
+        // A flip is seen at the first step after ωy changes sign, so each flip time is known
+        // to within one step h, and the period, a difference of two, to within 2h; the
+        // midpoint's O(h²) phase error over 8 s is smaller still (the gap measured: 0.017 s,
+        // one step, on a period of 8.18 s).
+        assertEquals(reference, measured[5], 2.0 * H);
+    }
+
+    /** The ωy period (first to third flip) of the racket stepped alone at a step h. */
+    private static double referencePeriod(float step, int steps) {
+        RigidBody body = new RigidBody(1f, TennisRacketDemo.INERTIA);
+        Matrix3f start = new Matrix3f();
+        start.set(racket.getStartOrientation());
+        body.setOrientation(start);
+        start.mult(TennisRacketDemo.BODY_SPIN, body.angularVelocity);
+        RotationIntegrator midpoint = new RotationIntegrator(
+                RotationIntegrator.Orientation.EXACT,
+                RotationIntegrator.Angular.IMPLICIT_MIDPOINT, true);
+        Vector3f omega = new Vector3f();
+        boolean positive = true;
+        double[] flips = new double[3];
+        int count = 0;
+        for (int i = 1; i <= steps && count < 3; ++i) {
+            midpoint.step(body, step);
+            boolean now = body.bodyAngularVelocity(omega).y > 0f;
+            if (now != positive) {
+                flips[count++] = i * (double) step;
+                positive = now;
+            }
+        }
+        return flips[2] - flips[0];
+    }
+
+    @Test
+    void withoutTheGyroscopicTermTheRacketNeverFlips() throws Exception {
+        double[] measured = harness.call(() -> {
+            racket.setGyroscopic(false);
+            for (int i = 0; i < 900; ++i) {
+                racket.advance(H);
+            }
+            double[] result = {racket.countFlips(0), racket.countFlips(1)};
+            racket.setGyroscopic(true);
+            return result;
+        });
+        assertEquals(0.0, measured[0], 0.0);
+        assertEquals(0.0, measured[1], 0.0);
+    }
+
+    @Test
+    void dragOnTheCentreFollowsTheLinearDragClosedForm() throws Exception {
+        double[] measured = harness.call(() -> {
+            spinThrow.setTorqueChoice(0);
+            spinThrow.setDrag(true);
+            for (int i = 0; i < 60; ++i) {
+                spinThrow.advance(H);
+            }
+            Vector3f corner = spinThrow.getBody().bodyToWorld(SpinThrowDemo.CORNER,
+                    new Vector3f());
+            Vector3f formula = spinThrow.formulaCorner(60 * (double) H, new Vector3f());
+            double[] result = {corner.distance(formula), spinThrow.getMeasuredAngle()};
+            spinThrow.setDrag(false);
+            return result;
+        });
+        // The stepped centre is O(h) off the closed form (~0.1 m after 1 s), the corner adds
+        // nothing: no torque, and the spin is exact for constant ω.
+        assertTrue(measured[0] < 0.2, "corner gap with drag " + measured[0]);
+        assertEquals(SpinThrowDemo.SPIN * 60 * H, measured[1], 1e-4);
+    }
+
+    @Test
+    void runningDemosAllocateNothingPerFrame() throws Exception {
+        StringBuilder hud = new StringBuilder(4096);
+        for (DemoState demo : List.<DemoState>of(rotation, spinThrow, racket)) {
+            // Measured on the jME thread, asserted here: a failed assertion must not end it.
+            long[] bytes = harness.call(() -> {
+                demo.restart();
+                long simulation = Allocations.warmBytesAllocatedBy(() -> {
+                    for (int i = 0; i < 30; ++i) {
+                        demo.advance(H);
+                    }
+                });
+                long text = Allocations.warmBytesAllocatedBy(() -> demo.formatHud(hud));
+                return new long[] {simulation, text};
+            });
+            assertEquals(0L, bytes[0], demo.getTitle() + ": 30 frames allocated");
+            assertEquals(0L, bytes[1], demo.getTitle() + ": HUD text allocated");
+        }
+    }
+}
