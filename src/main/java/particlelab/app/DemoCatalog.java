@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.function.Supplier;
+import particlelab.demo.BounceDemo;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
@@ -45,7 +46,8 @@ public final class DemoCatalog {
             new Entry("drag", DragDemo::new),
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
-            new Entry("wind", WindDemo::new)));
+            new Entry("wind", WindDemo::new),
+            new Entry("bounce", BounceDemo::new)));
 
     private DemoCatalog() {
     }

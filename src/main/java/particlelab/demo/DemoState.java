@@ -182,6 +182,14 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * React to one frame, after the clock's steps and before the views move: play the
+     * frame's sounds, show its flashes. The world's impact queue is cleared after it. Called
+     * once a frame; must allocate nothing. The default does nothing.
+     */
+    protected void afterFrame() {
+    }
+
+    /**
      * React to a reset, after the particles went back to their launch states and the clock
      * to zero. The default does nothing.
      */
@@ -559,6 +567,8 @@ public abstract class DemoState extends BaseAppState {
                 restart();
             }
         }
+        afterFrame();
+        world.getImpacts().clear();
         scene.updateViews();
         warnings.age(tpf);
         hudWriter.age(tpf);
