@@ -10,6 +10,7 @@ import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
 import particlelab.demo.ThrustDemo;
+import particlelab.demo.TunnellingDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
 
@@ -47,7 +48,8 @@ public final class DemoCatalog {
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
             new Entry("wind", WindDemo::new),
-            new Entry("bounce", BounceDemo::new)));
+            new Entry("bounce", BounceDemo::new),
+            new Entry("tunnelling", TunnellingDemo::new)));
 
     private DemoCatalog() {
     }

@@ -299,6 +299,16 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Start with the velocity arrows hidden (for fast balls, whose arrows would leave the
+     * scene); the V key still shows them. Call from {@link #createScene()}.
+     */
+    protected void hideArrowsAtStart() {
+        if (scene.areArrowsVisible()) {
+            scene.toggleArrows();
+        }
+    }
+
+    /**
      * Rebuild the equations shown in the HUD, after a demo changed a coefficient.
      */
     protected void refreshEquations() {

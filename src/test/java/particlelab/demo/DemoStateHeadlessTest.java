@@ -50,6 +50,9 @@ class DemoStateHeadlessTest {
     void everyDemoMovesItsParticlesExactlyAsTheIntegratorSays() throws Exception {
         int steps = 50; // under a second: no particle of any demo lands or wraps yet
         for (DemoState demo : demos()) {
+            if (demo.getWorld().countRules() > 0) {
+                continue; // a collision demo's contacts change velocities: its own tests
+            }
             List<String> failures = harness.call(() -> {
                 demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
                 demo.restart();
