@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.function.Supplier;
 import particlelab.demo.BounceDemo;
+import particlelab.demo.CollisionsDemo;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
@@ -49,6 +50,7 @@ public final class DemoCatalog {
             new Entry("aiming", HelloAimingDemo::new),
             new Entry("wind", WindDemo::new),
             new Entry("bounce", BounceDemo::new),
+            new Entry("collisions", CollisionsDemo::new),
             new Entry("tunnelling", TunnellingDemo::new)));
 
     private DemoCatalog() {

@@ -31,6 +31,7 @@ public final class DemoParticle {
     /** Set by the base class before each step: the world steps this particle in it. */
     boolean steppedThisStep;
     private boolean landed;
+    private boolean parked;
     private float landingX = Float.NaN;
     private double landingSeconds = Double.NaN;
     private double flightSeconds;
@@ -160,6 +161,25 @@ public final class DemoParticle {
      */
     public void setHeld(boolean newHeld) {
         body.setHeld(newHeld);
+    }
+
+    /**
+     * Test whether the particle is parked: not used by the demo's current preset, so the HUD
+     * leaves it out (the demo holds it somewhere out of the way).
+     *
+     * @return true if parked
+     */
+    public boolean isParked() {
+        return parked;
+    }
+
+    /**
+     * Park the particle (leave it out of the HUD) or bring it back.
+     *
+     * @param newParked true to park it
+     */
+    public void setParked(boolean newParked) {
+        parked = newParked;
     }
 
     /**
