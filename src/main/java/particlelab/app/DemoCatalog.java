@@ -10,6 +10,7 @@ import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
+import particlelab.demo.TargetsDemo;
 import particlelab.demo.ThrustDemo;
 import particlelab.demo.TunnellingDemo;
 import particlelab.demo.UniformMotionDemo;
@@ -51,7 +52,8 @@ public final class DemoCatalog {
             new Entry("wind", WindDemo::new),
             new Entry("bounce", BounceDemo::new),
             new Entry("collisions", CollisionsDemo::new),
-            new Entry("tunnelling", TunnellingDemo::new)));
+            new Entry("tunnelling", TunnellingDemo::new),
+            new Entry("targets", TargetsDemo::new)));
 
     private DemoCatalog() {
     }
