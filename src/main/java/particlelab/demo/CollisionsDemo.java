@@ -193,14 +193,10 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(masses, MASSES[i], 1).append(i + 1 < MASSES.length ? " -> "
                     : " kg");
         }
-        bindKey(KeyInput.KEY_LEFT, "Left", "mass m1 of ball 1: " + masses, () -> {
-            mass1 = (mass1 + 1) % MASSES.length;
-            choose(preset);
-        });
-        bindKey(KeyInput.KEY_RIGHT, "Right", "mass m2 of ball 2 (the others too): " + masses, () -> {
-            mass2 = (mass2 + 1) % MASSES.length;
-            choose(preset);
-        });
+        bindKey(KeyInput.KEY_LEFT, "Left", "mass m1 of ball 1: " + masses,
+                () -> setMasses((mass1 + 1) % MASSES.length, mass2));
+        bindKey(KeyInput.KEY_RIGHT, "Right", "mass m2 of ball 2 (the others too): " + masses,
+                () -> setMasses(mass1, (mass2 + 1) % MASSES.length));
     }
 
     @Override

@@ -22,8 +22,8 @@ import particlelab.world.World;
  * upper lane's wall is checked by the overlap test at the end of each step, the lower lane's
  * by the swept (intersection) test over each step's straight segment. Each shot starts at a
  * random phase, a uniformly random fraction of one step's travel {@code v·h} before the start
- * line, the same for both lanes. Builds upon bounce (its
- * two tests) and collisions (the same impulse, e = 1).
+ * line, the same for both lanes. Builds upon bounce (its two tests) and collisions (the same
+ * impulse, here with e = 1 against a static wall).
  *
  * <p>What to watch for: a ball of radius r meets a wall of thickness d only if some step ends
  * with its centre inside the band of width {@code 2r + d}. When a step carries it further than
