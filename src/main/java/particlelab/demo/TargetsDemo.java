@@ -5,6 +5,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
+import com.jme3.scene.Spatial;
 import particlelab.collision.Plane;
 import particlelab.collision.ThinWall;
 import particlelab.physics.Gravity;
@@ -162,6 +163,8 @@ public final class TargetsDemo extends DemoState {
                     "far", WALL_X, 0f, WALL_X + 0.1f, Y_MAX, ColorRGBA.Gray));
             flash = WallView.create(getApplication().getAssetManager(), "flash", -0.3f, -0.3f,
                     0.3f, 0.3f, ColorRGBA.Yellow);
+            flash.setCullHint(Spatial.CullHint.Always);
+            getSceneNode().attachChild(flash);
         }
         spawnTargets();
         setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
@@ -193,11 +196,12 @@ public final class TargetsDemo extends DemoState {
         double now = world.getTimeSeconds();
         if (world.getImpacts().size() > 0 && flash != null) {
             flash.setLocalTranslation(flashPoint);
-            getSceneNode().attachChild(flash);
+            flash.setCullHint(Spatial.CullHint.Inherit);
             flashUntil = now + FLASH_SECONDS;
         }
         if (flash != null && now > flashUntil) {
-            flash.removeFromParent();
+            // Hidden, not detached: attaching copies the scene node's child list.
+            flash.setCullHint(Spatial.CullHint.Always);
         }
         sounds.playFrame(world);
         for (int i = 0; i < MAX_FRAGMENTS; ++i) {

@@ -5,6 +5,7 @@ import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
 import com.jme3.scene.shape.Sphere;
 import particlelab.world.Body;
 import particlelab.world.BodyListener;
@@ -14,9 +15,11 @@ import particlelab.world.World;
  * Plain spheres for bodies a demo adds and destroys while it runs (targets, fragments), from
  * a fixed pool of geometries: {@link #show} gives a body a sphere of its radius, the sphere
  * follows it in {@link #update}, and when the body leaves the world (destroyed in an
- * epilogue, or removed) its sphere is detached and goes back to the pool, so nothing refers
- * to a body the world has recycled. Register it with {@link World#addBodyListener}. Only
- * {@link #show} can allocate (jME's material parameter, when a colour is first set).
+ * epilogue, or removed) its sphere is hidden and goes back to the pool, so nothing refers to
+ * a body the world has recycled. Register it with {@link World#addBodyListener}. The spheres
+ * stay attached to {@link #getNode()} and are shown or hidden by their cull hint, since
+ * attaching and detaching a jME child copies the child list: nothing here allocates once
+ * built.
  */
 public final class BodyViews implements BodyListener {
 
@@ -45,6 +48,8 @@ public final class BodyViews implements BodyListener {
             lit.setColor("Ambient", ColorRGBA.White.clone());
             spheres[i] = new Geometry("body view " + i, mesh);
             spheres[i].setMaterial(lit);
+            spheres[i].setCullHint(Spatial.CullHint.Always);
+            node.attachChild(spheres[i]);
         }
     }
 
@@ -74,7 +79,7 @@ public final class BodyViews implements BodyListener {
                 ((ColorRGBA) material.getParam("Ambient").getValue()).set(color);
                 sphere.setLocalScale(Math.max(body.getRadius(), 1e-3f));
                 sphere.setLocalTranslation(body.getPosition());
-                node.attachChild(sphere);
+                sphere.setCullHint(Spatial.CullHint.Inherit);
                 ++shown;
                 return true;
             }
@@ -120,7 +125,7 @@ public final class BodyViews implements BodyListener {
         for (int i = 0; i < bodies.length; ++i) {
             if (bodies[i] == body) {
                 bodies[i] = null;
-                spheres[i].removeFromParent();
+                spheres[i].setCullHint(Spatial.CullHint.Always);
                 --shown;
                 return;
             }

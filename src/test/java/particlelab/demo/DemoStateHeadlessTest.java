@@ -87,6 +87,31 @@ class DemoStateHeadlessTest {
     }
 
     @Test
+    void everyDemoIsSteppedByItsWorldOneWorldStepPerClockStep() throws Exception {
+        for (DemoState demo : demos()) {
+            Object[] counts = harness.call(() -> {
+                demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+                demo.restart();
+                for (int frame = 0; frame < 30; ++frame) {
+                    demo.advance(H);
+                }
+                boolean shared = true;
+                for (DemoParticle particle : demo.getParticles()) {
+                    shared &= particle.getBody().getParticle() == particle.getParticle()
+                            && particle.getBody().isInWorld();
+                }
+                return new Object[] {demo.getWorld().getStepCount(),
+                    demo.getWorld().getTimeSeconds(), demo.getClock().getSimulatedSeconds(),
+                    shared};
+            });
+            assertEquals(30L, counts[0], demo.getTitle());
+            // The world sums the same float steps in double as the clock does.
+            assertEquals((Double) counts[2], (Double) counts[1], 1e-12, demo.getTitle());
+            assertEquals(true, counts[3], demo.getTitle() + ": a particle outside the world");
+        }
+    }
+
+    @Test
     void pullDemoFollowsTheEulerStepsClosedForm() throws Exception {
         DemoState pull = demos().get(DemoCatalog.indexOf("pull"));
         int steps = 90;
