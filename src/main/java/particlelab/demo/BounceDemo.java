@@ -30,8 +30,10 @@ import particlelab.world.World;
  * slower than it is perfectly inelastic, so the ball stops early instead of hopping for
  * ever.</li>
  * <li>The resting fix (Cyclone's): the rebound leaves out the velocity gravity added during
- * the step, so a ball lying on the ground stays exactly still; with neither fix nor
- * threshold it buzzes at {@code g·h} for ever.</li>
+ * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still; the
+ * price is a slightly lower apex after every impact (press F and compare the apexes with
+ * {@code e^{2n}·h0}). With neither fix nor threshold the ball buzzes at {@code g·h} for
+ * ever.</li>
  * <li>Overlap test against intersection (swept) test: with e = 1 the overlap test finds the
  * ball inside the ground and pushes it out, and its apexes drift; the swept test finds the
  * moment of impact on the step's straight segment. A hidden second world runs the other test
