@@ -4,14 +4,18 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.function.Supplier;
+import particlelab.demo.BounceDemo;
+import particlelab.demo.CollisionsDemo;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
 import particlelab.demo.RotationDemo;
 import particlelab.demo.SpinThrowDemo;
+import particlelab.demo.TargetsDemo;
 import particlelab.demo.TennisRacketDemo;
 import particlelab.demo.ThrustDemo;
+import particlelab.demo.TunnellingDemo;
 import particlelab.demo.UniformMotionDemo;
 import particlelab.demo.WindDemo;
 
@@ -48,6 +52,10 @@ public final class DemoCatalog {
             new Entry("drag", DragDemo::new),
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
+            new Entry("bounce", BounceDemo::new),
+            new Entry("collisions", CollisionsDemo::new),
+            new Entry("tunnelling", TunnellingDemo::new),
+            new Entry("targets", TargetsDemo::new),
             new Entry("rotation", RotationDemo::new),
             new Entry("throw", SpinThrowDemo::new),
             new Entry("racket", TennisRacketDemo::new),

@@ -6,11 +6,13 @@ import particlelab.aiming.Landing;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.ParticleView;
+import particlelab.world.Body;
 
 /**
  * One particle of a demo with everything the base class needs to run and draw it: the
- * particle, the integrator holding the forces that act on it, its launch state (for reset), a
- * label and a colour. Create them with {@link DemoState#addParticle}.
+ * {@link Body} of the demo's world (the particle and the integrator holding the forces that
+ * act on it), its launch state (for reset), a label and a colour. Create them with
+ * {@link DemoState#addParticle}.
  *
  * <p>A particle can be <em>held</em>: it is not stepped (a bullet still in the gun, or one
  * that has landed). A particle told to {@link #stopAtGround() stop at the ground} is held at
@@ -20,25 +22,28 @@ public final class DemoParticle {
 
     private final String label;
     private final ColorRGBA color;
+    private final Body body;
     private final Particle particle;
     private final ParticleIntegrator integrator;
     private final Vector3f launchPosition = new Vector3f();
     private final Vector3f launchVelocity = new Vector3f();
     private boolean stopsAtGround;
-    private boolean held;
+    /** Set by the base class before each step: the world steps this particle in it. */
+    boolean steppedThisStep;
     private boolean landed;
+    private boolean parked;
     private float landingX = Float.NaN;
     private double landingSeconds = Double.NaN;
     private double flightSeconds;
     /** Created by the base class at initialisation. */
     ParticleView view;
 
-    DemoParticle(String label, ColorRGBA color, Particle particle,
-            ParticleIntegrator integrator) {
+    DemoParticle(String label, ColorRGBA color, Body body) {
         this.label = label;
         this.color = color.clone();
-        this.particle = particle;
-        this.integrator = integrator;
+        this.body = body;
+        this.particle = body.getParticle();
+        this.integrator = body.getIntegrator();
         launchPosition.set(particle.position);
         launchVelocity.set(particle.velocity);
     }
@@ -78,6 +83,15 @@ public final class DemoParticle {
      */
     public ColorRGBA getColor() {
         return color;
+    }
+
+    /**
+     * Access the particle's body in the demo's world (collision filters, ghost, radius).
+     *
+     * @return the live body (not null)
+     */
+    public Body getBody() {
+        return body;
     }
 
     /**
@@ -126,6 +140,7 @@ public final class DemoParticle {
      */
     public void setLaunch(Vector3f position, Vector3f velocity) {
         particle.setState(position, velocity);
+        body.setLaunch(position, velocity);
         launchPosition.set(position);
         launchVelocity.set(velocity);
     }
@@ -136,7 +151,7 @@ public final class DemoParticle {
      * @return true if held
      */
     public boolean isHeld() {
-        return held;
+        return body.isHeld();
     }
 
     /**
@@ -145,7 +160,26 @@ public final class DemoParticle {
      * @param newHeld true to stop stepping it
      */
     public void setHeld(boolean newHeld) {
-        held = newHeld;
+        body.setHeld(newHeld);
+    }
+
+    /**
+     * Test whether the particle is parked: not used by the demo's current preset, so the HUD
+     * leaves it out (the demo holds it somewhere out of the way).
+     *
+     * @return true if parked
+     */
+    public boolean isParked() {
+        return parked;
+    }
+
+    /**
+     * Park the particle (leave it out of the HUD) or bring it back.
+     *
+     * @param newParked true to park it
+     */
+    public void setParked(boolean newParked) {
+        parked = newParked;
     }
 
     /**
@@ -207,7 +241,7 @@ public final class DemoParticle {
     void restart() {
         particle.position.set(launchPosition);
         particle.velocity.set(launchVelocity);
-        held = false;
+        body.setHeld(false);
         landed = false;
         landingX = Float.NaN;
         landingSeconds = Double.NaN;
@@ -222,7 +256,7 @@ public final class DemoParticle {
      */
     private void land(float x, double seconds) {
         landed = true;
-        held = true;
+        body.setHeld(true);
         landingX = x;
         landingSeconds = seconds;
         particle.position.set(x, 0f, particle.position.z);

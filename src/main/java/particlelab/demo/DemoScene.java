@@ -326,7 +326,9 @@ final class DemoScene {
     void toggleArrows() {
         arrowsVisible = !arrowsVisible;
         for (int i = 0; i < particles.size(); ++i) {
-            particles.get(i).view.getArrow().setVisible(arrowsVisible);
+            if (particles.get(i).view != null) {
+                particles.get(i).view.getArrow().setVisible(arrowsVisible);
+            }
         }
     }
 

@@ -12,7 +12,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import particlelab.physics.NonFiniteStepException;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
@@ -21,6 +20,9 @@ import particlelab.view.HudView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.world.Body;
+import particlelab.world.StepListener;
+import particlelab.world.World;
 
 /**
  * The one base class of every demo. A demo declares its particles and their forces, its keys
@@ -37,13 +39,20 @@ import particlelab.view.TextFormat;
  * {@link TextFormat} for numbers: it allocates nothing).</li>
  * <li>{@link #afterStep(float)} and {@link #onRestart()}: react to each step, and to a
  * reset.</li>
+ * <li>Collisions: add a rule to {@link #getWorld()} ({@link World#addRule}, e.g. a
+ * {@code SurfaceRule} for the ground with an {@code ImpulseResponse}) and a
+ * {@code ContactListener} for the prologue and epilogue.</li>
  * </ul>
  *
  * <h2>Once per frame</h2>
  * {@link #update} hands the frame time to the {@link SimulationClock}, which decides the steps
- * (pause, single step, time scale, raw tpf or fixed h); each step moves every particle with
- * its own integrator ({@link ParticleIntegrator#step}, the lecture's Euler step). Nothing else
- * moves a particle. Then the views read the particles. None of this allocates; the HUD text is
+ * (pause, single step, time scale, raw tpf or fixed h); the demo's {@link World} takes each
+ * step: it moves every particle with its own integrator ({@link ParticleIntegrator#step}, the
+ * lecture's Euler step), then detects, resolves and propagates the contacts of its rules.
+ * Nothing else moves a particle. This class hears each step as a {@link StepListener}: the
+ * stability warnings look at the particles before it, and after it the lecture's stop at the
+ * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
+ * particles. None of this allocates; the HUD text is
  * rebuilt in a reused {@link StringBuilder} ten times a second and handed to jME only when it
  * changed (jME's text mesh allocates on each change).
  *
@@ -69,6 +78,7 @@ public abstract class DemoState extends BaseAppState {
 
     private final String title;
     private final SimulationClock clock = new SimulationClock();
+    private final World world = new World();
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
     private final DemoScene scene = new DemoScene(particles);
@@ -76,7 +86,18 @@ public abstract class DemoState extends BaseAppState {
     private final KeyMappings keyMappings;
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
-    private final SimulationClock.Stepper stepper = this::stepParticles;
+    private final SimulationClock.Stepper stepper = this::stepWorld;
+    private final StepListener stepListener = new StepListener() {
+        @Override
+        public void beforeStep(World stepping, float stepSeconds) {
+            observeParticles(stepSeconds);
+        }
+
+        @Override
+        public void afterStep(World stepping, float stepSeconds) {
+            finishStep(stepSeconds);
+        }
+    };
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -93,8 +114,7 @@ public abstract class DemoState extends BaseAppState {
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
     private int blowUps;
-    /** True while the clock runs the step loop: a restart then waits for the frame's end. */
-    private boolean stepping;
+    /** A restart asked for inside a step: done once the frame's steps are over. */
     private boolean restartRequested;
 
     /**
@@ -110,6 +130,7 @@ public abstract class DemoState extends BaseAppState {
         this.sceneNode = new Node(title + " scene");
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
+        world.addStepListener(stepListener);
     }
 
     // ---------------------------------------------------------------- hooks for a demo ----
@@ -161,6 +182,14 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * React to one frame, after the clock's steps and before the views move: play the
+     * frame's sounds, show its flashes. The world's impact queue is cleared after it. Called
+     * once a frame; must allocate nothing. The default does nothing.
+     */
+    protected void afterFrame() {
+    }
+
+    /**
      * React to a reset, after the particles went back to their launch states and the clock
      * to zero. The default does nothing.
      */
@@ -188,8 +217,8 @@ public abstract class DemoState extends BaseAppState {
         if (label == null || color == null || integrator == null) {
             throw new IllegalArgumentException("label, color and integrator must not be null");
         }
-        DemoParticle particle = new DemoParticle(label, color,
-                new Particle(position, velocity, massKg), integrator);
+        Body body = world.addBody(integrator, position, velocity, massKg, 0f);
+        DemoParticle particle = new DemoParticle(label, color, body);
         particles.add(particle);
         return particle;
     }
@@ -270,6 +299,16 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Start with the velocity arrows hidden (for fast balls, whose arrows would leave the
+     * scene); the V key still shows them. Call from {@link #createScene()}.
+     */
+    protected void hideArrowsAtStart() {
+        if (scene.areArrowsVisible()) {
+            scene.toggleArrows();
+        }
+    }
+
+    /**
      * Rebuild the equations shown in the HUD, after a demo changed a coefficient.
      */
     protected void refreshEquations() {
@@ -321,6 +360,16 @@ public abstract class DemoState extends BaseAppState {
      */
     public void setApplicationBindings(List<KeyBinding> bindings) {
         keys.setApplication(bindings);
+    }
+
+    /**
+     * Access the world that steps the demo's particles: add collision rules and contact or
+     * step listeners to it in {@link #createScene()}.
+     *
+     * @return the live world (not null)
+     */
+    public World getWorld() {
+        return world;
     }
 
     /**
@@ -438,11 +487,12 @@ public abstract class DemoState extends BaseAppState {
      * reframes the camera.
      */
     public void restart() {
-        if (stepping) {
+        if (world.isStepping()) {
             restartRequested = true;
             return;
         }
         restartRequested = false;
+        world.restart();
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             particle.restart();
@@ -527,6 +577,8 @@ public abstract class DemoState extends BaseAppState {
                 restart();
             }
         }
+        afterFrame();
+        world.getImpacts().clear();
         scene.updateViews();
         warnings.age(tpf);
         hudWriter.age(tpf);
@@ -677,36 +729,40 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * One step of h for every particle not held: the clock's stepper. After a restart was
-     * requested in this frame the remaining steps do nothing; the restart follows them.
+     * One step of h of the world: the clock's stepper. After a restart was requested in this
+     * frame the remaining steps do nothing; the restart follows them.
      */
-    private void stepParticles(float stepSeconds) {
+    private void stepWorld(float stepSeconds) {
         if (restartRequested) {
             return;
         }
-        stepping = true;
-        try {
-            stepEveryParticle(stepSeconds);
-        } finally {
-            stepping = false;
-        }
+        world.step(stepSeconds);
     }
 
-    private void stepEveryParticle(float stepSeconds) {
+    /** Before the world moves anything: which particles it steps, and what h does to them. */
+    private void observeParticles(float stepSeconds) {
         warnings.beginStep(stepSeconds);
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
-            if (demoParticle.isHeld()) {
+            demoParticle.steppedThisStep = !demoParticle.isHeld();
+            if (demoParticle.steppedThisStep) {
+                warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
+                        demoParticle.getParticle());
+            }
+        }
+    }
+
+    /** After the world's step: the stop at the ground, the trails, the demo's hook. */
+    private void finishStep(float stepSeconds) {
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle demoParticle = particles.get(i);
+            if (!demoParticle.steppedThisStep) {
                 continue;
             }
-            Particle particle = demoParticle.getParticle();
-            ParticleIntegrator integrator = demoParticle.getIntegrator();
-            warnings.observe(demoParticle.getLabel(), integrator, particle);
-            previousPosition.set(particle.position);
-            integrator.step(particle, stepSeconds);
+            demoParticle.getBody().copyPreviousPosition(previousPosition);
             // Flight time, and the lecture's stop at the ground, inside the step.
             demoParticle.recordStep(previousPosition, stepSeconds);
-            demoParticle.view.getTrail().add(particle.position);
+            demoParticle.view.getTrail().add(demoParticle.getParticle().position);
         }
         afterStep(stepSeconds);
         warnings.endStep();

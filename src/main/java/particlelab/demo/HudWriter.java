@@ -120,7 +120,9 @@ final class HudWriter {
             text.append(notice).append('\n');
         }
         for (int i = 0; i < particles.size(); ++i) {
-            appendParticleLine(text, particles.get(i));
+            if (!particles.get(i).isParked()) {
+                appendParticleLine(text, particles.get(i));
+            }
         }
         appendSteppingLine(text);
         appendStabilityLine(text);

@@ -11,9 +11,9 @@ import com.jme3.math.Vector3f;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.physics.Gravity;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.world.World;
 
 /** The HUD lines every demo shows, written from a real clock and bindings; no jME app. */
 class HudWriterTest {
@@ -22,8 +22,8 @@ class HudWriterTest {
 
     private final SimulationClock clock = new SimulationClock();
     private final DemoParticle ball = new DemoParticle("ball", ColorRGBA.White,
-            new Particle(new Vector3f(0f, 0f, 0f), new Vector3f(10f, 10f, 0f), 1f),
-            new ParticleIntegrator(new Gravity()));
+            new World().addBody(new ParticleIntegrator(new Gravity()), new Vector3f(0f, 0f, 0f),
+                    new Vector3f(10f, 10f, 0f), 1f, 0f));
     private final HudWriter writer = new HudWriter(clock, List.of(ball));
 
     HudWriterTest() {

@@ -1,0 +1,119 @@
+package particlelab.demo;
+
+import particlelab.world.Body;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.StepListener;
+import particlelab.world.World;
+
+/**
+ * The measurements of a bouncing ball, heard from its world: each impact (in the epilogue),
+ * the highest point after each impact (after each step) and the moment it came to rest. An
+ * impact is every resolved contact of the ball except those of a ball at rest (a contact that
+ * leaves it with rebound 0 after one that did too), as in the {@code bounce} command.
+ * Heights are of the ball's lowest point above the ground, {@code y − R}. Allocates nothing.
+ */
+final class BounceRecorder implements ContactListener, StepListener {
+
+    /** The most apexes kept (the rest are not recorded). */
+    static final int MAX_APEXES = 64;
+
+    private final Body ball;
+    private final float[] apexes = new float[MAX_APEXES];
+    private int apexCount;
+    private int impacts;
+    private boolean resting;
+    private float apex = Float.NEGATIVE_INFINITY;
+    private double restSeconds = Double.NaN;
+    private float lastImpactSpeed;
+
+    /**
+     * Create a recorder for one ball.
+     *
+     * @param ball the ball (not null)
+     */
+    BounceRecorder(Body ball) {
+        this.ball = ball;
+    }
+
+    @Override
+    public void resolved(Contact contact, World world) {
+        if (contact.getBodyA() != ball) {
+            return;
+        }
+        float rebound = ball.getVelocity().dot(contact.getNormal());
+        if (resting && rebound == 0f) {
+            return;
+        }
+        closeApex();
+        ++impacts;
+        lastImpactSpeed = contact.getApproachSpeed();
+        resting = rebound == 0f;
+        if (resting && Double.isNaN(restSeconds)) {
+            restSeconds = contact.getTimeSeconds();
+        }
+    }
+
+    @Override
+    public void afterStep(World world, float stepSeconds) {
+        if (impacts > 0 && !resting) {
+            apex = Math.max(apex, ball.getPosition().y - ball.getRadius());
+        }
+    }
+
+    /** Forget everything: the ball was dropped again. */
+    void clear() {
+        apexCount = 0;
+        impacts = 0;
+        resting = false;
+        apex = Float.NEGATIVE_INFINITY;
+        restSeconds = Double.NaN;
+        lastImpactSpeed = 0f;
+    }
+
+    /** @return the count of impacts so far (&ge;0) */
+    int countImpacts() {
+        return impacts;
+    }
+
+    /** @return the count of completed apexes (an apex is complete at the next impact) */
+    int countApexes() {
+        return apexCount;
+    }
+
+    /**
+     * Return the highest point after an impact, before the next.
+     *
+     * @param index 0 for the apex after impact 1 (&lt;{@link #countApexes()})
+     * @return the height of the ball's lowest point (in metres)
+     */
+    float getApex(int index) {
+        if (index < 0 || index >= apexCount) {
+            throw new IndexOutOfBoundsException(
+                    "apex index must be from 0 to " + (apexCount - 1) + ", but was " + index);
+        }
+        return apexes[index];
+    }
+
+    /** @return true once the ball rests on the ground */
+    boolean isResting() {
+        return resting;
+    }
+
+    /** @return when the ball came to rest (in seconds of world time), NaN while it bounces */
+    double getRestSeconds() {
+        return restSeconds;
+    }
+
+    /** @return the normal approach speed of the latest impact (in m/s, 0 before one) */
+    float getLastImpactSpeed() {
+        return lastImpactSpeed;
+    }
+
+    private void closeApex() {
+        if (impacts > 0 && apex > Float.NEGATIVE_INFINITY && apexCount < MAX_APEXES) {
+            apexes[apexCount++] = apex;
+        }
+        apex = Float.NEGATIVE_INFINITY;
+    }
+}

@@ -1,0 +1,468 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.FastMath;
+import com.jme3.math.Vector3f;
+import particlelab.collision.Plane;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.view.TextFormat;
+import particlelab.view.WallView;
+import particlelab.world.Body;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ImpulseResponse;
+import particlelab.world.SphereRule;
+import particlelab.world.StepListener;
+import particlelab.world.SurfaceRule;
+import particlelab.world.World;
+
+/**
+ * Demo 8, collisions: spheres against spheres in free flight (no gravity), resolved by the
+ * impulse {@code j = −(1+e)·v_rel·n / (1/m1 + 1/m2)} along the contact normal. Builds upon
+ * bounce (the same impulse, now with a second finite mass; the swept test finds the moment of
+ * impact).
+ * Four presets (P):
+ * <ol>
+ * <li><b>head-on</b>: normal velocities 4 and −2 m/s; masses m1, m2 and e from the keys;</li>
+ * <li><b>glancing</b>: ball 2 at rest, hit off-centre (impact parameter r);</li>
+ * <li><b>Newton's cradle</b>: one ball into a row of four touching ones, found by the overlap
+ * test and resolved worst first (the fastest closing contact, then the next);</li>
+ * <li><b>paddle</b>: a kinematic paddle moved by script, {@code P += speed·h·U(t)} with a
+ * direction U(t) that turns in time, unaffected by any force or impact, hits three balls at
+ * rest.</li>
+ * </ol>
+ *
+ * <p>What to watch for: the total momentum is the same before and after every impact (to
+ * float round-off); the kinetic energy drops by {@code ½·μ·(1−e²)·v_n²},
+ * {@code μ = m1·m2/(m1+m2)}, nothing at e = 1; equal masses with e = 1 leave a glancing impact
+ * at right angles. The cradle passes the momentum down the row. The paddle (infinite mass)
+ * sends a ball off at {@code (1+e)·u − e·v} along the normal, u its own speed: the balls'
+ * energy grows, since the script does work no force accounts for (kinematics, not dynamics).
+ */
+public final class CollisionsDemo extends DemoState {
+
+    /** The presets, in the order the P key cycles them. */
+    public enum Preset {
+        /** Two balls meeting along the line of centres. */
+        HEAD_ON("head-on"),
+        /** Ball 2 at rest, hit off-centre. */
+        GLANCING("glancing"),
+        /** One ball into a row of four. */
+        CRADLE("Newton's cradle"),
+        /** A scripted kinematic paddle into three balls. */
+        PADDLE("kinematic paddle");
+
+        private final String label;
+
+        Preset(String label) {
+            this.label = label;
+        }
+
+        /** @return the name on the HUD (not null) */
+        public String getLabel() {
+            return label;
+        }
+    }
+
+    /** Every ball's radius r (in metres). */
+    public static final float RADIUS = 0.3f;
+    /** The masses the Left and Right keys cycle through (in kilograms). */
+    static final float[] MASSES = {1f, 2f, 3f, 0.5f};
+    /** The paddle's speed (in m/s). */
+    public static final float PADDLE_SPEED = 3f;
+    /** How far the paddle's direction swings either side of +x (in radians). */
+    public static final float PADDLE_SWING = 0.4f;
+    /** How fast it swings (in radians per second). */
+    public static final float PADDLE_RATE = 1.5f;
+    /** Where the paddle's run ends (in metres): the script stops it there. */
+    public static final float PADDLE_END_X = 10.5f;
+    private static final float PADDLE_START_Y = 2f;
+    private static final int BALLS = 5;
+    private static final float LANE_Y = 3f;
+    private static final float X_MIN = -1f;
+    private static final float X_MAX = 13f;
+    private static final float Y_MAX = 6f;
+
+    private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
+    private final SphereRule sweptRule = new SphereRule(response, Detection.SWEPT);
+    private final SphereRule overlapRule = new SphereRule(response, Detection.OVERLAP);
+    private final DemoParticle[] balls = new DemoParticle[BALLS];
+    private final Vector3f position = new Vector3f();
+    private final Vector3f velocity = new Vector3f();
+    private final Vector3f momentum = new Vector3f();
+    private final Vector3f momentumBefore = new Vector3f();
+    private final Vector3f impactMomentumBefore = new Vector3f();
+    private final Vector3f impactMomentumAfter = new Vector3f();
+    private DemoParticle paddle;
+    private Preset preset = Preset.HEAD_ON;
+    private int eTenths = 10;
+    private int mass1 = 0;
+    private int mass2 = 0;
+    private SphereRule rule;
+    private float energyBefore;
+    private float stepLoss;
+    private int stepContacts;
+    private int impactSteps;
+    private int impactContacts;
+    private float impactEnergyBefore;
+    private float impactEnergyAfter;
+    private float impactPredictedLoss;
+    private float impactNormalSpeed;
+    private float impactReducedMass;
+
+    /** Create the demo. */
+    public CollisionsDemo() {
+        super("Collisions");
+    }
+
+    @Override
+    protected void createScene() {
+        ParticleIntegrator freeFlight = new ParticleIntegrator();
+        ColorRGBA[] colors = {ColorRGBA.Orange, new ColorRGBA(0.3f, 0.85f, 1f, 1f),
+            new ColorRGBA(1f, 0.4f, 0.8f, 1f), new ColorRGBA(0.6f, 1f, 0.4f, 1f),
+            new ColorRGBA(1f, 1f, 0.5f, 1f)};
+        for (int i = 0; i < BALLS; ++i) {
+            balls[i] = addParticle("ball " + (i + 1), colors[i], new Vector3f(-10f * i, 0f, 0f),
+                    Vector3f.ZERO, 1f, freeFlight);
+            balls[i].getBody().setRadius(RADIUS);
+        }
+        paddle = addParticle("paddle", ColorRGBA.White, Vector3f.ZERO, Vector3f.ZERO, 1f,
+                freeFlight);
+        paddle.getBody().setRadius(RADIUS);
+        World world = getWorld();
+        world.addStepListener(new StepListener() {
+            @Override
+            public void beforeStep(World stepping, float stepSeconds) {
+                steerPaddle(stepping.getTimeSeconds());
+                energyBefore = totals(momentumBefore);
+                stepLoss = 0f;
+                stepContacts = 0;
+            }
+
+            @Override
+            public void afterStep(World stepping, float stepSeconds) {
+                if (stepContacts > 0) {
+                    ++impactSteps;
+                    impactContacts = stepContacts;
+                    impactEnergyBefore = energyBefore;
+                    impactMomentumBefore.set(momentumBefore);
+                    impactEnergyAfter = totals(impactMomentumAfter);
+                    impactPredictedLoss = stepLoss;
+                }
+            }
+        });
+        world.addContactListener(new ContactListener() {
+            @Override
+            public void resolved(Contact contact, World stepping) {
+                recordContact(contact);
+            }
+        });
+        // The box: four static walls with the same impulse, so no ball leaves the scene.
+        Plane[] walls = {Plane.ground(), new Plane(Vector3f.UNIT_X, X_MIN),
+            new Plane(new Vector3f(-1f, 0f, 0f), -X_MAX),
+            new Plane(new Vector3f(0f, -1f, 0f), -Y_MAX)};
+        for (Plane wall : walls) {
+            world.addRule(new SurfaceRule("wall", wall, response, Detection.SWEPT));
+        }
+        if (getApplication() != null) {
+            ColorRGBA grey = new ColorRGBA(0.6f, 0.6f, 0.65f, 1f);
+            float t = 0.05f;
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "left", X_MIN - t, 0f, X_MIN, Y_MAX, grey));
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "right", X_MAX, 0f, X_MAX + t, Y_MAX, grey));
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "top", X_MIN - t, Y_MAX, X_MAX + t, Y_MAX + t, grey));
+        }
+        setView(X_MIN, X_MAX, Y_MAX, 1f, 2, RADIUS);
+        arrange();
+    }
+
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_P, "P", "preset: head-on -> glancing -> Newton's cradle -> paddle",
+                () -> choose(Preset.values()[(preset.ordinal() + 1) % Preset.values().length]));
+        bindKey(KeyInput.KEY_UP, "Up", "restitution e + 0.1 (up to 1), start again",
+                () -> setRestitutionTenths(eTenths + 1));
+        bindKey(KeyInput.KEY_DOWN, "Down", "restitution e - 0.1 (down to 0), start again",
+                () -> setRestitutionTenths(eTenths - 1));
+        StringBuilder masses = new StringBuilder();
+        for (int i = 0; i < MASSES.length; ++i) {
+            TextFormat.appendFixed(masses, MASSES[i], 1).append(i + 1 < MASSES.length ? " -> "
+                    : " kg");
+        }
+        bindKey(KeyInput.KEY_LEFT, "Left", "mass m1 of ball 1: " + masses,
+                () -> setMasses((mass1 + 1) % MASSES.length, mass2));
+        bindKey(KeyInput.KEY_RIGHT, "Right", "mass m2 of ball 2 (the others too): " + masses,
+                () -> setMasses(mass1, (mass2 + 1) % MASSES.length));
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("j = -(1+e) v_rel.n / (1/m1 + 1/m2):  V1 += j n/m1,  V2 -= j n/m2;"
+                + "  free flight P += h V, r = ");
+        TextFormat.appendFixed(text, RADIUS, 1).append(" m\n");
+    }
+
+    @Override
+    protected void onRestart() {
+        impactSteps = 0;
+        impactContacts = 0;
+        for (int i = 0; i < BALLS; ++i) {
+            if (balls[i].isParked()) {
+                balls[i].setHeld(true);
+            }
+        }
+        if (paddle.isParked()) {
+            paddle.setHeld(true);
+        }
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("preset: ").append(preset.getLabel()).append("   e = ");
+        TextFormat.appendFixed(text, getRestitution(), 1).append("   m1 = ");
+        TextFormat.appendFixed(text, MASSES[mass1], 1).append(" kg   m2 = ");
+        TextFormat.appendFixed(text, MASSES[mass2], 1).append(" kg   ")
+                .append(preset == Preset.CRADLE ? "overlap test, worst first"
+                        : "swept test").append('\n');
+        if (impactSteps == 0) {
+            text.append("no impact yet\n");
+        } else {
+            text.append("latest impact step (").append(impactContacts)
+                    .append(impactContacts == 1 ? " contact" : " contacts resolved worst first")
+                    .append("):  momentum before ");
+            TextFormat.appendVector(text, impactMomentumBefore, 3).append(" after ");
+            TextFormat.appendVector(text, impactMomentumAfter, 3).append(" kg m/s\n");
+            text.append("kinetic energy before ");
+            TextFormat.appendFixed(text, impactEnergyBefore, 3).append(" J, after ");
+            TextFormat.appendFixed(text, impactEnergyAfter, 3).append(" J:  lost ");
+            TextFormat.appendFixed(text, impactEnergyBefore - impactEnergyAfter, 3);
+            if (preset == Preset.PADDLE) {
+                text.append(" J (negative: the paddle's script added energy)\n");
+            } else {
+                text.append(" J;  1/2 mu (1-e^2) v_n^2 = ");
+                TextFormat.appendFixed(text, impactPredictedLoss, 3).append(" J  (v_n = ");
+                TextFormat.appendFixed(text, impactNormalSpeed, 3).append(" m/s, mu = ");
+                TextFormat.appendFixed(text, impactReducedMass, 3).append(" kg)\n");
+            }
+        }
+        if (preset == Preset.GLANCING && impactSteps > 0) {
+            text.append("angle between the exit velocities: ");
+            TextFormat.appendFixed(text, exitAngleDegrees(), 1)
+                    .append(" deg (90 for equal masses and e = 1)\n");
+        }
+        if (preset == Preset.PADDLE) {
+            text.append("the balls' kinetic energy now ");
+            TextFormat.appendFixed(text, totals(momentum), 3).append(" J (0 at the start):"
+                    + " each leaves at (1+e) u - e v along n, u = the paddle's speed\n");
+        }
+    }
+
+    /**
+     * Choose a preset and start it.
+     *
+     * @param newPreset the preset (not null)
+     */
+    public void choose(Preset newPreset) {
+        if (newPreset == null) {
+            throw new IllegalArgumentException("preset must be one of the presets, not null");
+        }
+        preset = newPreset;
+        arrange();
+        restart();
+    }
+
+    /**
+     * Set e and start again.
+     *
+     * @param tenths e in tenths (clamped to 0..10)
+     */
+    public void setRestitutionTenths(int tenths) {
+        eTenths = Math.max(0, Math.min(10, tenths));
+        response.setRestitution(getRestitution());
+        restart();
+    }
+
+    /**
+     * Set the masses and start again.
+     *
+     * @param index1 m1's index into the mass list (0 to 3)
+     * @param index2 m2's index (0 to 3)
+     */
+    public void setMasses(int index1, int index2) {
+        if (index1 < 0 || index1 >= MASSES.length || index2 < 0 || index2 >= MASSES.length) {
+            throw new IllegalArgumentException("mass indexes must be 0 to " + (MASSES.length - 1)
+                    + ", but were " + index1 + ", " + index2);
+        }
+        mass1 = index1;
+        mass2 = index2;
+        choose(preset);
+    }
+
+    /** @return e (0 to 1) */
+    public float getRestitution() {
+        return eTenths / 10f;
+    }
+
+    /**
+     * Return the total momentum of the dynamic balls now.
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult (in kg·m/s)
+     */
+    public Vector3f copyMomentum(Vector3f storeResult) {
+        totals(storeResult);
+        return storeResult;
+    }
+
+    /** @return the kinetic energy of the dynamic balls now (in joules) */
+    public float kineticEnergy() {
+        return totals(momentum);
+    }
+
+    /** @return the kinetic energy just before the latest impact step (in joules) */
+    public float getImpactEnergyBefore() {
+        return impactEnergyBefore;
+    }
+
+    /** @return the kinetic energy just after it (in joules) */
+    public float getImpactEnergyAfter() {
+        return impactEnergyAfter;
+    }
+
+    /** @return the loss {@code ½·μ·(1−e²)·v_n²} summed over its contacts (in joules) */
+    public float getImpactPredictedLoss() {
+        return impactPredictedLoss;
+    }
+
+    /** @return the count of steps with an impact since the start (&ge;0) */
+    public int countImpactSteps() {
+        return impactSteps;
+    }
+
+    /** @return the angle between balls 1 and 2's velocities (in degrees) */
+    public float exitAngleDegrees() {
+        Vector3f v1 = balls[0].getParticle().velocity;
+        Vector3f v2 = balls[1].getParticle().velocity;
+        float lengths = v1.length() * v2.length();
+        if (lengths == 0f) {
+            return 0f;
+        }
+        float cosine = Math.max(-1f, Math.min(1f, v1.dot(v2) / lengths));
+        return FastMath.RAD_TO_DEG * (float) Math.acos(cosine);
+    }
+
+    /** Epilogue: the predicted loss of one contact between two dynamic balls. */
+    private void recordContact(Contact contact) {
+        Body b = contact.getBodyB();
+        if (b == null) {
+            return; // a wall: not a collision between the demo's bodies
+        }
+        ++stepContacts;
+        if (b.getInverseMass() == 0f || contact.getBodyA().getInverseMass() == 0f) {
+            return;
+        }
+        float mu = 1f / (contact.getBodyA().getInverseMass() + b.getInverseMass());
+        float vn = contact.getApproachSpeed();
+        float e = getRestitution();
+        stepLoss += 0.5f * mu * (1f - e * e) * vn * vn;
+        impactNormalSpeed = vn;
+        impactReducedMass = mu;
+    }
+
+    /** Sum the dynamic balls' momentum into storeResult; return their kinetic energy. */
+    private float totals(Vector3f storeResult) {
+        storeResult.zero();
+        float energy = 0f;
+        for (int i = 0; i < BALLS; ++i) {
+            DemoParticle ball = balls[i];
+            if (ball.isParked()) {
+                continue;
+            }
+            float m = ball.getParticle().getMass();
+            Vector3f v = ball.getParticle().velocity;
+            storeResult.x += m * v.x;
+            storeResult.y += m * v.y;
+            storeResult.z += m * v.z;
+            energy += 0.5f * m * v.lengthSquared();
+        }
+        return energy;
+    }
+
+    /** The script: the paddle's velocity {@code speed·U(t)}, set before each step. */
+    private void steerPaddle(double timeSeconds) {
+        if (preset != Preset.PADDLE) {
+            return;
+        }
+        if (paddle.getParticle().position.x >= PADDLE_END_X) {
+            paddle.getParticle().velocity.zero();
+            return;
+        }
+        float angle = PADDLE_SWING * (float) Math.sin(PADDLE_RATE * timeSeconds);
+        paddle.getParticle().velocity.set(PADDLE_SPEED * FastMath.cos(angle),
+                PADDLE_SPEED * FastMath.sin(angle), 0f);
+    }
+
+    /** Put the preset's bodies at their launch states and park the rest on a rack. */
+    private void arrange() {
+        for (int i = 0; i < BALLS; ++i) {
+            park(balls[i], i);
+            balls[i].getParticle().setMass(i == 0 ? MASSES[mass1] : MASSES[mass2]);
+        }
+        park(paddle, BALLS);
+        paddle.getBody().setKinematic(preset == Preset.PADDLE);
+        switch (preset) {
+            case HEAD_ON:
+                place(balls[0], 2f, LANE_Y, 4f, 0f);
+                place(balls[1], 8f, LANE_Y, -2f, 0f);
+                break;
+            case GLANCING:
+                place(balls[0], 2f, LANE_Y, 4f, 0f);
+                place(balls[1], 7f, LANE_Y + RADIUS, 0f, 0f);
+                break;
+            case CRADLE:
+                place(balls[0], 1f, LANE_Y, 4f, 0f);
+                for (int i = 1; i < BALLS; ++i) {
+                    place(balls[i], 6f + 2f * RADIUS * i, LANE_Y, 0f, 0f);
+                }
+                break;
+            case PADDLE:
+                // On the paddle's path (its direction swings up first), a little off it.
+                place(paddle, 1f, PADDLE_START_Y, PADDLE_SPEED, 0f);
+                place(balls[0], 4.9f, PADDLE_START_Y + 1f, 0f, 0f);
+                place(balls[1], 6.8f, PADDLE_START_Y + 1.7f, 0f, 0f);
+                place(balls[2], 8.8f, PADDLE_START_Y + 1.2f, 0f, 0f);
+                break;
+            default:
+                throw new IllegalStateException("unknown preset " + preset);
+        }
+        Detection detection = preset == Preset.CRADLE ? Detection.OVERLAP : Detection.SWEPT;
+        SphereRule wanted = detection == Detection.OVERLAP ? overlapRule : sweptRule;
+        if (rule != wanted) {
+            if (rule != null) {
+                getWorld().removeRule(rule);
+            }
+            rule = wanted;
+            getWorld().addRule(rule);
+        }
+    }
+
+    /** A body not in the preset: held on the rack at the bottom right, out of the HUD. */
+    private void park(DemoParticle body, int slot) {
+        position.set(X_MAX - RADIUS - 2.5f * RADIUS * slot, RADIUS, 0f);
+        body.setLaunch(position, Vector3f.ZERO);
+        body.setParked(true);
+        body.setHeld(true);
+    }
+
+    private void place(DemoParticle body, float x, float y, float vx, float vy) {
+        position.set(x, y, 0f);
+        velocity.set(vx, vy, 0f);
+        body.setLaunch(position, velocity);
+        body.setParked(false);
+        body.setHeld(false);
+    }
+}

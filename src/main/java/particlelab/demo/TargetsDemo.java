@@ -1,0 +1,473 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.FastMath;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Spatial;
+import particlelab.collision.Plane;
+import particlelab.collision.ThinWall;
+import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.view.BodyViews;
+import particlelab.view.CollisionSounds;
+import particlelab.view.SilentSoundPlayer;
+import particlelab.view.SoundPlayer;
+import particlelab.view.TextFormat;
+import particlelab.view.WallView;
+import particlelab.world.Body;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ImpulseResponse;
+import particlelab.world.SphereRule;
+import particlelab.world.SurfaceRule;
+import particlelab.world.World;
+
+/**
+ * Demo 10, targets: the lecture's three phases of a collision response, each visible. A gun
+ * on a platform fires a shot (F) at three targets; the HUD shows what each phase decided for
+ * the latest contact. Builds upon bounce (the ground), collisions (spheres) and tunnelling
+ * (the swept test, so no shot passes through a target).
+ * <ol>
+ * <li><b>Prologue</b> (should the contact be ignored? effects at the moment of impact): the
+ * shot touches the gun's own platform at every step as it leaves, and the prologue ignores it
+ * (friendly); the pane between gun and targets is a ghost (G toggles it solid), so its
+ * contacts are ignored too. An accepted contact flashes at the contact point.</li>
+ * <li><b>Collision</b> (resolution): an impulse with restitution bounces the shot off the
+ * ground, the far wall, the solid pane and the targets.</li>
+ * <li><b>Epilogue</b> (propagate): a hit target is destroyed (its body, sphere and every
+ * reference to it go), six fragments are spawned that fall and bounce under their own
+ * gravity, the score goes up and the destroy sound plays. The world queues the destruction
+ * until the step's contacts are all handled, so nothing is corrupted mid-step.</li>
+ * </ol>
+ * What to watch for: the ignored contacts never reach resolution or epilogue; fragments
+ * leave after {@link #FRAGMENT_SECONDS} s; when every target is gone they come back.
+ */
+public final class TargetsDemo extends DemoState {
+
+    /** The shot's radius (in metres). */
+    public static final float SHOT_RADIUS = 0.15f;
+    /** The targets' radius (in metres). */
+    public static final float TARGET_RADIUS = 0.6f;
+    /** The fragments' radius (in metres). */
+    public static final float FRAGMENT_RADIUS = 0.12f;
+    /** Fragments spawned by one destroyed target. */
+    public static final int FRAGMENTS_PER_TARGET = 6;
+    /** How long a fragment lives (in seconds). */
+    public static final float FRAGMENT_SECONDS = 2.5f;
+    /** How long a flash shows (in seconds). */
+    public static final float FLASH_SECONDS = 0.15f;
+    /** The shot's launch speed (in m/s). */
+    public static final float SHOT_SPEED = 18f;
+    /** The restitution of every contact. */
+    public static final float RESTITUTION = 0.6f;
+    private static final float[] TARGET_X = {14f, 20f, 26f};
+    private static final float[] TARGET_Y = {3f, 5.5f, 2f};
+    private static final int TARGETS = TARGET_X.length;
+    private static final int MAX_FRAGMENTS = 4 * FRAGMENTS_PER_TARGET;
+    private static final float GUN_Y = 1.2f;
+    private static final float PLATFORM_RADIUS = 0.5f;
+    private static final float PANE_X = 8f;
+    private static final float WALL_X = 30f;
+    private static final float X_MIN = -2f;
+    private static final float Y_MAX = 8f;
+    private static final float ANGLE_STEP_DEGREES = 2.5f;
+    private static final int FRAGMENT_GROUP = 4;
+    private static final ColorRGBA TARGET_COLOR = new ColorRGBA(1f, 0.3f, 0.3f, 1f);
+    private static final ColorRGBA FRAGMENT_COLOR = new ColorRGBA(1f, 0.7f, 0.3f, 1f);
+    private static final ColorRGBA PANE_SOLID = new ColorRGBA(0.7f, 0.8f, 1f, 0.9f);
+    private static final ColorRGBA PANE_GHOST = new ColorRGBA(0.7f, 0.8f, 1f, 0.25f);
+
+    private final ParticleIntegrator still = new ParticleIntegrator();
+    private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
+    private final ImpulseResponse bounce = new ImpulseResponse(RESTITUTION);
+    private final Body[] targets = new Body[TARGETS];
+    private final Body[] fragments = new Body[MAX_FRAGMENTS];
+    private final double[] fragmentBorn = new double[MAX_FRAGMENTS];
+    private final Vector3f scratch = new Vector3f();
+    private final Vector3f aim = new Vector3f();
+    private final Vector3f flashPoint = new Vector3f();
+    private SurfaceRule paneRule;
+    private Body platform;
+    private DemoParticle shot;
+    private BodyViews views;
+    private CollisionSounds sounds;
+    private Geometry paneView;
+    private Geometry flash;
+    private boolean paneGhost = true;
+    private float angleDegrees = 35f;
+    private int score;
+    private long destroyed;
+    private long spawned;
+    private double flashUntil = -1.0;
+    private String prologue = "none yet";
+    private int prologueTarget = -1;
+    private String resolution = "none yet";
+    private float resolutionImpulse;
+    private String epilogue = "none yet";
+    private int epilogueTarget = -1;
+
+    /** Create the demo. */
+    public TargetsDemo() {
+        super("Targets");
+    }
+
+    @Override
+    protected void createScene() {
+        shot = addParticle("shot", ColorRGBA.Orange, new Vector3f(0f, GUN_Y, 0f),
+                launchVelocity(new Vector3f()), 1f, falling);
+        shot.getBody().setRadius(SHOT_RADIUS);
+        World world = getWorld();
+        platform = world.addBody(still, new Vector3f(0f, GUN_Y - PLATFORM_RADIUS, 0f),
+                Vector3f.ZERO, 1f, PLATFORM_RADIUS);
+        platform.setKinematic(true);
+        world.addRule(new SphereRule(bounce, Detection.SWEPT));
+        world.addRule(SurfaceRule.ground(bounce, Detection.SWEPT));
+        world.addRule(new SurfaceRule("far wall", new Plane(new Vector3f(-1f, 0f, 0f), -WALL_X),
+                bounce, Detection.SWEPT));
+        world.addRule(new SurfaceRule("near wall", new Plane(Vector3f.UNIT_X, X_MIN), bounce,
+                Detection.SWEPT));
+        world.addRule(new SurfaceRule("ceiling", new Plane(new Vector3f(0f, -1f, 0f), -Y_MAX),
+                bounce, Detection.SWEPT));
+        paneRule = new SurfaceRule("pane", new ThinWall(Vector3f.UNIT_X, PANE_X, 0.1f), bounce,
+                Detection.SWEPT);
+        world.addRule(paneRule);
+        world.addContactListener(new ContactListener() {
+            @Override
+            public boolean accept(Contact contact, World stepping) {
+                return prologue(contact);
+            }
+
+            @Override
+            public void resolved(Contact contact, World stepping) {
+                epilogue(contact, stepping);
+            }
+        });
+        SoundPlayer player = getApplication() == null
+                ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
+                : SoundPlayer.forApplication(getApplication());
+        sounds = new CollisionSounds(player);
+        sounds.attach(world);
+        if (getApplication() != null) {
+            views = new BodyViews(getApplication().getAssetManager(),
+                    TARGETS + MAX_FRAGMENTS + 1);
+            world.addBodyListener(views);
+            getSceneNode().attachChild(views.getNode());
+            views.show(platform, ColorRGBA.Gray);
+            paneView = WallView.create(getApplication().getAssetManager(), "pane",
+                    PANE_X - 0.05f, 0f, PANE_X + 0.05f, Y_MAX, PANE_GHOST);
+            getSceneNode().attachChild(paneView);
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "far", WALL_X, 0f, WALL_X + 0.1f, Y_MAX, ColorRGBA.Gray));
+            flash = WallView.create(getApplication().getAssetManager(), "flash", -0.3f, -0.3f,
+                    0.3f, 0.3f, ColorRGBA.Yellow);
+            flash.setCullHint(Spatial.CullHint.Always);
+            getSceneNode().attachChild(flash);
+        }
+        spawnTargets();
+        setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
+    }
+
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_F, "F", "fire the shot again", this::fire);
+        StringBuilder up = new StringBuilder("aim ");
+        TextFormat.appendFixed(up, ANGLE_STEP_DEGREES, 1).append(" deg higher");
+        bindKey(KeyInput.KEY_UP, "Up", up.toString(), () -> aimBy(ANGLE_STEP_DEGREES));
+        StringBuilder down = new StringBuilder("aim ");
+        TextFormat.appendFixed(down, ANGLE_STEP_DEGREES, 1).append(" deg lower");
+        bindKey(KeyInput.KEY_DOWN, "Down", down.toString(), () -> aimBy(-ANGLE_STEP_DEGREES));
+        bindKey(KeyInput.KEY_G, "G", "the pane: ghost (ignored by the prologue) <-> solid",
+                this::togglePane);
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("prologue: ignore friendly / ghost, flash;  collision: impulse, e = ");
+        TextFormat.appendFixed(text, RESTITUTION, 1).append(";  epilogue: destroy, ")
+                .append(FRAGMENTS_PER_TARGET).append(" fragments, score, sound\n");
+    }
+
+    @Override
+    protected void afterFrame() {
+        World world = getWorld();
+        double now = world.getTimeSeconds();
+        if (world.getImpacts().size() > 0 && flash != null) {
+            flash.setLocalTranslation(flashPoint);
+            flash.setCullHint(Spatial.CullHint.Inherit);
+            flashUntil = now + FLASH_SECONDS;
+        }
+        if (flash != null && now > flashUntil) {
+            // Hidden, not detached: attaching copies the scene node's child list.
+            flash.setCullHint(Spatial.CullHint.Always);
+        }
+        sounds.playFrame(world);
+        for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+            if (fragments[i] != null && now - fragmentBorn[i] > FRAGMENT_SECONDS) {
+                world.destroy(fragments[i]);
+                fragments[i] = null;
+            }
+        }
+        if (countTargetsAlive() == 0 && countFragments() == 0) {
+            spawnTargets();
+        }
+        if (views != null) {
+            views.update();
+        }
+    }
+
+    @Override
+    protected void onRestart() {
+        World world = getWorld();
+        for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+            if (fragments[i] != null) {
+                world.destroy(fragments[i]);
+                fragments[i] = null;
+            }
+        }
+        spawnTargets();
+        score = 0;
+        flashUntil = -1.0;
+        prologue = "none yet";
+        prologueTarget = -1;
+        resolution = "none yet";
+        resolutionImpulse = 0f;
+        epilogue = "none yet";
+        epilogueTarget = -1;
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("aim ");
+        TextFormat.appendFixed(text, angleDegrees, 1).append(" deg at ");
+        TextFormat.appendFixed(text, SHOT_SPEED, 0).append(" m/s   pane: ")
+                .append(paneGhost ? "ghost" : "solid").append("   score ").append(score)
+                .append("   targets left ").append(countTargetsAlive()).append("   fragments ")
+                .append(countFragments()).append('\n');
+        text.append("1 prologue:   ").append(prologue);
+        appendTarget(text, prologueTarget).append('\n');
+        text.append("2 collision:  ").append(resolution);
+        if (resolutionImpulse != 0f) {
+            text.append(", j = ");
+            TextFormat.appendFixed(text, resolutionImpulse, 2).append(" N s");
+        }
+        text.append('\n');
+        text.append("3 epilogue:   ").append(epilogue);
+        appendTarget(text, epilogueTarget);
+        if (epilogueTarget >= 0) {
+            text.append(": spawned ").append(FRAGMENTS_PER_TARGET)
+                    .append(" fragments, score + 1, destroy sound");
+        }
+        text.append('\n');
+        sounds.getPlayer().getLog().appendLatest(text).append('\n');
+    }
+
+    /**
+     * Fire the shot straight at a live target, aimed for the continuous parabola (the
+     * stepped one drops a little more, far less than the target's radius).
+     *
+     * @param index the target (0 to 2)
+     * @return true if that target is alive and was aimed at
+     */
+    public boolean fireAt(int index) {
+        Body target = targets[index];
+        if (target == null) {
+            return false;
+        }
+        scratch.set(target.getPosition()).subtractLocal(0f, GUN_Y, 0f);
+        float seconds = scratch.length() / SHOT_SPEED;
+        aim.set(scratch).divideLocal(seconds);
+        aim.y += 0.5f * Gravity.STANDARD_G * seconds;
+        launch(shot, aim);
+        return true;
+    }
+
+    /**
+     * Fire the shot from the gun at an angle (what the keys do, without their limits).
+     *
+     * @param degrees the angle above the horizontal (in degrees, -90 to 90; -90 fires
+     *     straight down into the gun's own platform)
+     */
+    public void fireAtAngle(float degrees) {
+        if (!(degrees >= -90f && degrees <= 90f)) {
+            throw new IllegalArgumentException(
+                    "angle must be from -90 to 90 degrees, but was " + degrees);
+        }
+        angleDegrees = degrees;
+        fire();
+    }
+
+    /** @return the score: targets destroyed since the start or reset */
+    public int getScore() {
+        return score;
+    }
+
+    /** @return the count of targets destroyed since the demo was created */
+    public long countDestroyed() {
+        return destroyed;
+    }
+
+    /** @return the count of fragments spawned since the demo was created */
+    public long countSpawned() {
+        return spawned;
+    }
+
+    /** @return the count of live targets (0 to 3) */
+    public int countTargetsAlive() {
+        int count = 0;
+        for (int i = 0; i < TARGETS; ++i) {
+            if (targets[i] != null) {
+                ++count;
+            }
+        }
+        return count;
+    }
+
+    /** @return the count of live fragments */
+    public int countFragments() {
+        int count = 0;
+        for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+            if (fragments[i] != null) {
+                ++count;
+            }
+        }
+        return count;
+    }
+
+    /**
+     * Access the spheres of the targets, fragments and platform.
+     *
+     * @return the views (null without an application)
+     */
+    public BodyViews getBodyViews() {
+        return views;
+    }
+
+    /** The prologue: friendly and ghost contacts are ignored; accepted ones flash. */
+    private boolean prologue(Contact contact) {
+        Body a = contact.getBodyA();
+        Body b = contact.getBodyB();
+        boolean withShot = a == shot.getBody() || b == shot.getBody();
+        if (a == platform || b == platform) {
+            if (withShot) {
+                prologue = "ignored: friendly (the gun's own platform)";
+                prologueTarget = -1;
+            }
+            return false;
+        }
+        if (contact.getRule() == paneRule && paneGhost) {
+            prologue = "ignored: the pane is a ghost (G)";
+            prologueTarget = -1;
+            return false;
+        }
+        if (withShot) {
+            int target = targetIndex(a == shot.getBody() ? b : a);
+            prologue = target >= 0 ? "accepted: the shot hits target" : "accepted: the shot"
+                    + " hits a surface";
+            prologueTarget = target;
+            flashPoint.set(contact.getPoint());
+            flashPoint.z = 0.05f;
+        }
+        return true;
+    }
+
+    /** The epilogue: record the resolution; destroy a hit target and spawn its fragments. */
+    private void epilogue(Contact contact, World world) {
+        Body a = contact.getBodyA();
+        Body b = contact.getBodyB();
+        boolean withShot = a == shot.getBody() || b == shot.getBody();
+        if (!withShot) {
+            return;
+        }
+        resolution = contact.getRule() == paneRule ? "impulse off the solid pane"
+                : b == null ? "impulse off the ground, a wall or the ceiling"
+                : "impulse off the target";
+        resolutionImpulse = contact.getImpulse();
+        int index = targetIndex(a == shot.getBody() ? b : a);
+        if (index < 0) {
+            return;
+        }
+        Body target = targets[index];
+        targets[index] = null;
+        spawnFragments(world, target.getPosition());
+        world.destroy(target);
+        ++score;
+        ++destroyed;
+        epilogue = "destroyed target";
+        epilogueTarget = index;
+    }
+
+    private void spawnFragments(World world, Vector3f at) {
+        int made = 0;
+        for (int i = 0; i < MAX_FRAGMENTS && made < FRAGMENTS_PER_TARGET; ++i) {
+            if (fragments[i] != null) {
+                continue;
+            }
+            float angle = FastMath.TWO_PI * made / FRAGMENTS_PER_TARGET;
+            scratch.set(3f * FastMath.cos(angle), 3f * FastMath.sin(angle) + 2f, 0f);
+            Body fragment = world.addBody(falling, at, scratch, 0.2f, FRAGMENT_RADIUS);
+            fragment.setCollisionFilter(FRAGMENT_GROUP, Body.DEFAULT_GROUP);
+            fragments[i] = fragment;
+            fragmentBorn[i] = world.getTimeSeconds();
+            if (views != null) {
+                views.show(fragment, FRAGMENT_COLOR);
+            }
+            ++made;
+            ++spawned;
+        }
+    }
+
+    private void spawnTargets() {
+        for (int i = 0; i < TARGETS; ++i) {
+            if (targets[i] == null) {
+                scratch.set(TARGET_X[i], TARGET_Y[i], 0f);
+                targets[i] = getWorld().addBody(still, scratch, Vector3f.ZERO, 1f,
+                        TARGET_RADIUS);
+                targets[i].setKinematic(true);
+                if (views != null) {
+                    views.show(targets[i], TARGET_COLOR);
+                }
+            }
+        }
+    }
+
+    private int targetIndex(Body body) {
+        for (int i = 0; i < TARGETS; ++i) {
+            if (body != null && targets[i] == body) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private static StringBuilder appendTarget(StringBuilder text, int index) {
+        if (index >= 0) {
+            text.append(' ').append(index + 1);
+        }
+        return text;
+    }
+
+    private Vector3f launchVelocity(Vector3f storeResult) {
+        float radians = angleDegrees * FastMath.DEG_TO_RAD;
+        return storeResult.set(SHOT_SPEED * FastMath.cos(radians),
+                SHOT_SPEED * FastMath.sin(radians), 0f);
+    }
+
+    private void fire() {
+        launch(shot, launchVelocity(aim));
+    }
+
+    private void aimBy(float degrees) {
+        angleDegrees = Math.max(5f, Math.min(85f, angleDegrees + degrees));
+        fire();
+    }
+
+    private void togglePane() {
+        paneGhost = !paneGhost;
+        if (paneView != null) {
+            WallView.setColor(paneView, paneGhost ? PANE_GHOST : PANE_SOLID);
+        }
+    }
+}

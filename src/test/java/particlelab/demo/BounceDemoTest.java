@@ -1,0 +1,114 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.Gravity;
+import particlelab.world.Body;
+import particlelab.world.Detection;
+
+/** The Bounce demo attached to a headless app: what its HUD says against the closed forms. */
+class BounceDemoTest {
+
+    private static final float H = 1f / 60f;
+    private static final double G = Gravity.STANDARD_G;
+    private static BounceDemo bounce;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        bounce = new BounceDemo();
+        harness = HeadlessHarness.start(List.of(bounce));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void apexesFollowEToThe2nTimesH0WithinTheStepBound() throws Exception {
+        float[] apexes = harness.call(() -> {
+            bounce.configure(8, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 600; ++frame) {
+                bounce.advance(H);
+            }
+            BounceRecorder recorder = bounce.getRecorder();
+            float[] result = new float[recorder.countApexes()];
+            for (int i = 0; i < result.length; ++i) {
+                result[i] = recorder.getApex(i);
+            }
+            return result;
+        });
+        double h0 = BounceDemo.DROP_HEIGHT;
+        double e = 0.8;
+        assertTrue(apexes.length >= 6, "apexes: " + apexes.length);
+        for (int k = 1; k <= 6; ++k) {
+            // The world's bound (BounceTest): after k impacts the stepped ball is off by at
+            // most about one step of travel per impact at the rebound speed, (k+1)·v'·h.
+            double rebound = e * Math.pow(e, k - 1) * Math.sqrt(2.0 * G * h0);
+            assertEquals(h0 * Math.pow(e, 2 * k), apexes[k - 1], (k + 1) * rebound * H,
+                    "apex " + k);
+        }
+    }
+
+    @Test
+    void withAThresholdTheBallComesToRestExactlyStillAndTheHudSaysWhen() throws Exception {
+        Object[] result = harness.call(() -> {
+            bounce.configure(5, 2, true, Detection.SWEPT);
+            for (int frame = 0; frame < 600; ++frame) {
+                bounce.advance(H);
+            }
+            Body ball = bounce.getParticles().get(0).getBody();
+            float y = ball.getPosition().y;
+            boolean still = true;
+            for (int frame = 0; frame < 120; ++frame) {
+                bounce.advance(H);
+                still &= ball.getPosition().y == y && ball.getVelocity().y == 0f;
+            }
+            return new Object[] {bounce.getRecorder().isResting(), still, y,
+                bounce.getRecorder().getRestSeconds(),
+                bounce.formatHud(new StringBuilder()).toString()};
+        });
+        assertTrue((Boolean) result[0]);
+        assertTrue((Boolean) result[1], "the resting ball moved");
+        assertEquals(BounceDemo.RADIUS, (Float) result[2], 1e-6f, "no sinking");
+        // e = 0.5: T = t0·3 = 2.71 s for the ideal ball; the 1 m/s threshold stops it at the
+        // impact slower than 1 m/s, a little earlier, and never later than T plus a step each
+        // impact.
+        double t0 = Math.sqrt(2.0 * BounceDemo.DROP_HEIGHT / G);
+        double rest = (Double) result[3];
+        assertTrue(rest > t0 && rest < 3.0 * t0 + 10 * H, "rest at " + rest);
+        String hud = (String) result[4];
+        assertTrue(hud.contains("T = t0 (1+e)/(1-e) = 2.711 s"), hud);
+        assertTrue(hud.contains("threshold 1.00 m/s (Box2D/Jolt)"), hud);
+        assertTrue(hud.contains("sound: impact vol "), hud);
+    }
+
+    @Test
+    void withEOneTheSweptTestKeepsItsApexesAndTheHudComparesBoth() throws Exception {
+        Object[] result = harness.call(() -> {
+            bounce.configure(10, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 600; ++frame) {
+                bounce.advance(H);
+            }
+            BounceRecorder swept = bounce.getRecorder();
+            return new Object[] {swept.getApex(swept.countApexes() - 1),
+                bounce.getOtherRecorder().countApexes(),
+                bounce.formatHud(new StringBuilder()).toString()};
+        });
+        // Swept: every impact is found on the step's segment, so the apex stays within one
+        // step's travel at the impact speed (8.9 m/s · h = 0.15 m) of h0.
+        double v = Math.sqrt(2.0 * G * BounceDemo.DROP_HEIGHT);
+        assertEquals(BounceDemo.DROP_HEIGHT, (Float) result[0], v * H);
+        assertTrue((Integer) result[1] >= 3);
+        String hud = (String) result[2];
+        assertTrue(hud.contains("time to rest: T = t0 (1+e)/(1-e) = never (e = 1)"), hud);
+        assertTrue(hud.contains("e = 1, apex drift (apex - h0) after "), hud);
+    }
+}

@@ -1,0 +1,101 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.app.HeadlessHarness;
+
+/** The Collisions demo attached to a headless app: momentum, energy and the paddle. */
+class CollisionsDemoTest {
+
+    private static final float H = 1f / 60f;
+    private static CollisionsDemo collisions;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        collisions = new CollisionsDemo();
+        harness = HeadlessHarness.start(List.of(collisions));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    private static Object[] run(CollisionsDemo.Preset preset, int eTenths, int m1, int m2,
+            int frames) throws Exception {
+        return harness.call(() -> {
+            collisions.setMasses(m1, m2);
+            collisions.setRestitutionTenths(eTenths);
+            collisions.choose(preset);
+            Vector3f start = collisions.copyMomentum(new Vector3f());
+            float startEnergy = collisions.kineticEnergy();
+            for (int frame = 0; frame < frames; ++frame) {
+                collisions.advance(H);
+            }
+            return new Object[] {start, collisions.copyMomentum(new Vector3f()), startEnergy,
+                collisions.kineticEnergy(), collisions.countImpactSteps(),
+                collisions.getImpactEnergyBefore() - collisions.getImpactEnergyAfter(),
+                collisions.getImpactPredictedLoss(), collisions.exitAngleDegrees(),
+                collisions.getParticles().get(0).getParticle().velocity.clone(),
+                collisions.getParticles().get(4).getParticle().velocity.clone(),
+                collisions.formatHud(new StringBuilder()).toString()};
+        });
+    }
+
+    @Test
+    void headOnConservesMomentumAndLosesHalfMuOneMinusESquaredVnSquared() throws Exception {
+        // m1 = 2, m2 = 1 kg, normal velocities 4 and -2 m/s, e = 0.5: v_n = 6 m/s,
+        // mu = 2/3 kg, loss = 1/2 * 2/3 * 0.75 * 36 = 9 J.
+        Object[] r = run(CollisionsDemo.Preset.HEAD_ON, 5, 1, 0, 120);
+        assertEquals(1, (Integer) r[4]);
+        Vector3f before = (Vector3f) r[0];
+        Vector3f after = (Vector3f) r[1];
+        // Float round-off of a few products of order 10: 1e-5 kg m/s.
+        assertEquals(before.x, after.x, 1e-5f);
+        assertEquals(before.y, after.y, 1e-5f);
+        assertEquals(9f, (Float) r[6], 1e-4f);
+        assertEquals(9f, (Float) r[5], 1e-4f);
+        assertEquals(9f, (Float) r[2] - (Float) r[3], 1e-4f);
+        String hud = (String) r[10];
+        assertTrue(hud.contains("1/2 mu (1-e^2) v_n^2 = 9.000 J  (v_n = 6.000 m/s, mu = 0.667"
+                + " kg)"), hud);
+    }
+
+    @Test
+    void equalMassesWithEOneLeaveAGlancingImpactAtRightAngles() throws Exception {
+        Object[] r = run(CollisionsDemo.Preset.GLANCING, 10, 0, 0, 120);
+        assertEquals(1, (Integer) r[4]);
+        // The swept test finds the touch on the segment; the normal is exact to float
+        // round-off (1e-6 rad), so the angle is 90 degrees to well under 0.01.
+        assertEquals(90f, (Float) r[7], 0.01f);
+        assertEquals((Float) r[2], (Float) r[3], 1e-4f, "e = 1 keeps the energy");
+    }
+
+    @Test
+    void theCradlePassesTheMomentumDownTheRowWorstFirst() throws Exception {
+        Object[] r = run(CollisionsDemo.Preset.CRADLE, 10, 0, 0, 90); // before the far wall
+        Vector3f before = (Vector3f) r[0];
+        Vector3f after = (Vector3f) r[1];
+        assertEquals(before.x, after.x, 1e-4f);
+        Vector3f first = (Vector3f) r[8];
+        Vector3f last = (Vector3f) r[9];
+        // Resolved pair by pair, the row hands the 4 m/s on to its last ball.
+        assertEquals(4f, last.x, 0.05f);
+        assertEquals(0f, first.x, 0.05f);
+    }
+
+    @Test
+    void theScriptedPaddleAddsEnergyTheBallsDidNotHave() throws Exception {
+        Object[] r = run(CollisionsDemo.Preset.PADDLE, 10, 0, 0, 300);
+        assertEquals(0f, (Float) r[2]);
+        assertTrue((Integer) r[4] >= 1, "the paddle hit nothing");
+        assertTrue((Float) r[3] > 1f, "energy " + r[3]);
+    }
+}
