@@ -11,7 +11,7 @@ import particlelab.physics.Validate;
 import particlelab.view.TextFormat;
 
 /**
- * Demo 6, wind: the worked example of "write your own demo" (see the README). A new force and
+ * Demo "wind": the worked example of "write your own demo" (see the README). A new force and
  * a demo that uses it, in one file. Builds upon gravitational pull and the drag demo.
  *
  * <p>Wind is drag against moving air: the air pushes on the ball in proportion to the ball's
