@@ -250,7 +250,9 @@ final class HudWriter {
             }
         }
         if (moving == 0) {
-            text.append("Stability: nothing is moving, so no step limit applies\n");
+            // Rigid bodies may still turn: the line speaks of the particle step only.
+            text.append("Stability: no particle is in flight, so no particle step limit"
+                    + " applies\n");
             return;
         }
         if (limiting == null) {

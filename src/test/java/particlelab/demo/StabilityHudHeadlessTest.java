@@ -107,7 +107,8 @@ class StabilityHudHeadlessTest {
         });
         // After 10 s all three spheres have landed and stopped: no limit to show, and not
         // the landed quadratic sphere's (infinite) one as "any h is stable".
-        assertTrue(body.contains("Stability: nothing is moving, so no step limit applies\n"),
+        assertTrue(body.contains("Stability: no particle is in flight, so no particle step"
+                + " limit applies\n"),
                 body);
     }
 
