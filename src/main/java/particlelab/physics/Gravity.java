@@ -12,6 +12,8 @@ public final class Gravity implements Force {
     public static final float STANDARD_G = 9.8f;
 
     private final Vector3f acceleration = new Vector3f();
+    /** How often g was set, for {@link ParticleIntegrator} to refold on change. */
+    private int changeCount;
 
     /**
      * Create gravity of {@link #STANDARD_G} pointing down the y axis.
@@ -46,6 +48,17 @@ public final class Gravity implements Force {
      */
     public void setAcceleration(Vector3f newAcceleration) {
         acceleration.set(Validate.finite(newAcceleration, "gravity g (m/s^2)"));
+        ++changeCount;
+    }
+
+    /**
+     * Count the changes of g, so that an integrator that folded g knows when
+     * to fold again.
+     *
+     * @return how often it was set (wraps around; only inequality matters)
+     */
+    int changeCount() {
+        return changeCount;
     }
 
     @Override

@@ -11,6 +11,8 @@ import com.jme3.math.Vector3f;
 public final class LinearDrag implements Force {
 
     private float coefficient;
+    /** How often the coefficient was set, for {@link ParticleIntegrator} to refold on change. */
+    private int changeCount;
 
     /**
      * Create linear drag.
@@ -37,6 +39,17 @@ public final class LinearDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "linear drag b (N*s/m)");
+        ++changeCount;
+    }
+
+    /**
+     * Count the changes of the coefficient, so that an integrator that folded it knows when
+     * to fold again.
+     *
+     * @return how often it was set (wraps around; only inequality matters)
+     */
+    int changeCount() {
+        return changeCount;
     }
 
     @Override

@@ -23,6 +23,8 @@ import com.jme3.math.Vector3f;
 public final class QuadraticDrag implements Force {
 
     private float coefficient;
+    /** How often the coefficient was set, for {@link ParticleIntegrator} to refold on change. */
+    private int changeCount;
 
     /**
      * Create quadratic drag.
@@ -49,6 +51,17 @@ public final class QuadraticDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "quadratic drag c (kg/m)");
+        ++changeCount;
+    }
+
+    /**
+     * Count the changes of the coefficient, so that an integrator that folded it knows when
+     * to fold again.
+     *
+     * @return how often it was set (wraps around; only inequality matters)
+     */
+    int changeCount() {
+        return changeCount;
     }
 
     @Override

@@ -17,6 +17,8 @@ public final class Thrust implements Force {
     public static final float MIN_SPEED = 1e-6f;
 
     private float magnitude;
+    /** How often the magnitude was set, for {@link ParticleIntegrator} to refold on change. */
+    private int changeCount;
 
     /**
      * Create thrust.
@@ -43,6 +45,17 @@ public final class Thrust implements Force {
      */
     public void setMagnitude(float magnitude) {
         this.magnitude = Validate.nonNegative(magnitude, "thrust k (N)");
+        ++changeCount;
+    }
+
+    /**
+     * Count the changes of the magnitude, so that an integrator that folded it knows when
+     * to fold again.
+     *
+     * @return how often it was set (wraps around; only inequality matters)
+     */
+    int changeCount() {
+        return changeCount;
     }
 
     @Override
