@@ -6,14 +6,12 @@ import com.jme3.math.Vector3f;
  * Gravitational pull near the ground: the constant acceleration {@code g}, the same for every
  * mass. It enters the recipe as {@code g} in {@code a = g + F/m}, not as a force to divide by m.
  */
-public final class Gravity implements Force {
+public final class Gravity extends FoldedForce {
 
     /** The lecture's standard gravity (in m/s², pointing down the y axis). */
     public static final float STANDARD_G = 9.8f;
 
     private final Vector3f acceleration = new Vector3f();
-    /** How often g was set, for {@link ParticleIntegrator} to refold on change. */
-    private int changeCount;
 
     /**
      * Create gravity of {@link #STANDARD_G} pointing down the y axis.
@@ -48,17 +46,7 @@ public final class Gravity implements Force {
      */
     public void setAcceleration(Vector3f newAcceleration) {
         acceleration.set(Validate.finite(newAcceleration, "gravity g (m/s^2)"));
-        ++changeCount;
-    }
-
-    /**
-     * Count the changes of g, so that an integrator that folded g knows when
-     * to fold again.
-     *
-     * @return how often it was set (wraps around; only inequality matters)
-     */
-    int changeCount() {
-        return changeCount;
+        changed();
     }
 
     @Override

@@ -8,11 +8,9 @@ import com.jme3.math.Vector3f;
  * {@code 1 − λh}, so it is stable for {@code h < 2m/b} and never reverses the velocity for
  * {@code h < m/b} (see {@link StepRegime}).
  */
-public final class LinearDrag implements Force {
+public final class LinearDrag extends FoldedForce {
 
     private float coefficient;
-    /** How often the coefficient was set, for {@link ParticleIntegrator} to refold on change. */
-    private int changeCount;
 
     /**
      * Create linear drag.
@@ -39,17 +37,7 @@ public final class LinearDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "linear drag b (N*s/m)");
-        ++changeCount;
-    }
-
-    /**
-     * Count the changes of the coefficient, so that an integrator that folded it knows when
-     * to fold again.
-     *
-     * @return how often it was set (wraps around; only inequality matters)
-     */
-    int changeCount() {
-        return changeCount;
+        changed();
     }
 
     @Override

@@ -39,11 +39,19 @@ import com.jme3.math.Vector3f;
  */
 public final class ParticleIntegrator {
 
+    /**
+     * How close (relatively) h·σ or h·λ may come to a limit before {@link #regime} checks it
+     * with the quotients: float roundings differ by about 1e-7, so 1e-4 leaves no doubt.
+     */
+    private static final float LIMIT_MARGIN = 1e-4f;
+
     private final Force[] forces;
     private final Gravity[] gravities;
     private final LinearDrag[] linearDrags;
     private final QuadraticDrag[] quadraticDrags;
     private final Thrust[] thrusts;
+    /** The built-in forces of the four arrays above, in the scene's order. */
+    private final FoldedForce[] folded;
     /** The forces that are not folded: asked through the {@link Force} interface. */
     private final Force[] others;
     /** The sum of the folded forces' change counts when they were last folded. */
@@ -60,6 +68,16 @@ public final class ParticleIntegrator {
     private float thrustSum;
     /** Folded: true if σ depends on |V| (some c or k is not zero). */
     private boolean speedDependent;
+    /** The mass whose inverse is {@link #cachedInverseMass} (kg; NaN: none yet). */
+    private float cachedMass = Float.NaN;
+    /** 1/{@link #cachedMass} (1/kg). */
+    private float cachedInverseMass = Float.NaN;
+    /** The regime of a moving particle without speed-dependent forces, for ... */
+    private StepRegime movingRegime = StepRegime.STABLE;
+    /** ... this step (s; NaN: not known since the last fold) ... */
+    private float movingRegimeStep = Float.NaN;
+    /** ... and this mass (kg). */
+    private float movingRegimeMass = Float.NaN;
     /** Scratch: g of the other forces (m/s²). */
     private final Vector3f otherField = new Vector3f();
     /** Scratch: F of the other forces (N). */
@@ -80,6 +98,9 @@ public final class ParticleIntegrator {
     private final Vector3f restingAcceleration = new Vector3f();
     /** Scratch for {@link #dragRate}: the particle at rest. */
     private final Particle restingScratch = new Particle();
+    /** Scratch for {@link #regime}: a particle moving at 1 m/s along x, of the mass asked. */
+    private final Particle movingScratch =
+            new Particle(Vector3f.ZERO, Vector3f.UNIT_X, 1f);
     /** Scratch for {@link #stepPacked}: the particle being stepped with other forces. */
     private final Particle packedParticle = new Particle();
 
@@ -104,8 +125,8 @@ public final class ParticleIntegrator {
         linearDrags = new LinearDrag[count(LinearDrag.class)];
         quadraticDrags = new QuadraticDrag[count(QuadraticDrag.class)];
         thrusts = new Thrust[count(Thrust.class)];
-        others = new Force[forces.length - gravities.length - linearDrags.length
-                - quadraticDrags.length - thrusts.length];
+        folded = new FoldedForce[count(FoldedForce.class)];
+        others = new Force[forces.length - folded.length];
         int gravity = 0;
         int linear = 0;
         int quadratic = 0;
@@ -113,6 +134,9 @@ public final class ParticleIntegrator {
         int other = 0;
         for (int i = 0; i < forces.length; ++i) {
             Force force = forces[i];
+            if (force instanceof FoldedForce) {
+                folded[gravity + linear + quadratic + thrust] = (FoldedForce) force;
+            }
             if (force instanceof Gravity) {
                 gravities[gravity++] = (Gravity) force;
             } else if (force instanceof LinearDrag) {
@@ -219,7 +243,7 @@ public final class ParticleIntegrator {
             return;
         }
         foldIfChanged();
-        float inverseMass = 1f / massKg;
+        float inverseMass = inverseMass(massKg);
         float factor = Float.NaN;
         int bad;
         if (others.length > 0 || !Float.isFinite(stepSeconds * foldedDragRate(0f, inverseMass))) {
@@ -355,11 +379,27 @@ public final class ParticleIntegrator {
     public StepRegime regime(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
         foldIfChanged();
-        // one speed and one λ for all three limits: this runs for every particle every step
-        float speed = particle.velocity.length();
-        float lambda = dampingRateAt(particle, speed);
-        float stable = (float) stableStepLimit(lambda, stiffness(particle));
-        return StepRegime.of(stepSeconds, dragRateAt(particle, speed), stable, 1f / lambda);
+        if (others.length > 0) {
+            return regimeByLimits(particle, stepSeconds);
+        }
+        if (speedDependent) {
+            return regimeByProducts(particle, stepSeconds, particle.velocity.lengthSquared());
+        }
+        // Gravity and linear drag: σ = λ = b/m for every moving particle, so one answer per
+        // step and mass, remembered (this runs for every particle every step). At rest σ = 0,
+        // which can only make it milder: a stable step is stable at rest too.
+        float massKg = particle.getMass();
+        if (stepSeconds != movingRegimeStep || massKg != movingRegimeMass) {
+            movingScratch.setMass(massKg);
+            movingRegime = regimeByProducts(movingScratch, stepSeconds, 1f);
+            movingRegimeStep = stepSeconds;
+            movingRegimeMass = massKg;
+        }
+        if (movingRegime == StepRegime.STABLE) {
+            return StepRegime.STABLE;
+        }
+        float speedSquared = particle.velocity.lengthSquared();
+        return speedSquared == 0f ? regimeByProducts(particle, stepSeconds, 0f) : movingRegime;
     }
 
     /**
@@ -431,6 +471,46 @@ public final class ParticleIntegrator {
         return (float) Math.min(rate, Float.MAX_VALUE);
     }
 
+    /**
+     * {@link #regime} for the folded forces alone, first without a division: h·σ and h·λ
+     * against 1 and 2 (with no spring the limits are 1/σ, 2/σ, 1/λ and 2/λ). Only near a
+     * limit, where a rounding could tip it, do the quotients decide.
+     */
+    private StepRegime regimeByProducts(Particle particle, float stepSeconds,
+            float speedSquared) {
+        float speed = speedDependent ? (float) Math.sqrt(speedSquared) : 0f;
+        float inverseMass = inverseMass(particle.getMass());
+        float dampingH = stepSeconds * inverseMass
+                * (quadraticSum == 0f ? linearSum : linearSum + 2f * quadraticSum * speed);
+        float dragH = speedSquared == 0f ? 0f : stepSeconds * foldedDragRate(speed, inverseMass);
+        if (isClearOfLimits(dampingH) && isClearOfLimits(dragH)) {
+            return dragH > 2f ? StepRegime.GROWS
+                    : dampingH > 2f ? StepRegime.UNSTABLE
+                    : dragH > 1f ? StepRegime.REVERSES
+                    : dampingH > 1f ? StepRegime.OVERSHOOTS
+                    : StepRegime.STABLE;
+        }
+        return regimeByLimits(particle, stepSeconds);
+    }
+
+    /** {@link #regime} from the limits themselves: one speed and one λ for all three. */
+    private StepRegime regimeByLimits(Particle particle, float stepSeconds) {
+        float speed = particle.velocity.length();
+        float lambda = dampingRateAt(particle, speed);
+        float stable = (float) stableStepLimit(lambda, stiffness(particle));
+        return StepRegime.of(stepSeconds, dragRateAt(particle, speed), stable, 1f / lambda);
+    }
+
+    /**
+     * True if a product h·rate is finite and clear of the limits 1 and 2 by far more than
+     * the few roundings in which it and the quotients 1/rate, 2/rate can differ.
+     */
+    private static boolean isClearOfLimits(float stepTimesRate) {
+        return Float.isFinite(stepTimesRate)
+                && Math.abs(stepTimesRate - 1f) > LIMIT_MARGIN
+                && Math.abs(stepTimesRate - 2f) > 2f * LIMIT_MARGIN;
+    }
+
     /** Count the forces of one built-in type. */
     private int count(Class<? extends Force> type) {
         int n = 0;
@@ -452,17 +532,8 @@ public final class ParticleIntegrator {
     /** The sum of the folded forces' change counts: it changes whenever one of them does. */
     private int changeCount() {
         int changes = 0;
-        for (int i = 0; i < gravities.length; ++i) {
-            changes += gravities[i].changeCount();
-        }
-        for (int i = 0; i < linearDrags.length; ++i) {
-            changes += linearDrags[i].changeCount();
-        }
-        for (int i = 0; i < quadraticDrags.length; ++i) {
-            changes += quadraticDrags[i].changeCount();
-        }
-        for (int i = 0; i < thrusts.length; ++i) {
-            changes += thrusts[i].changeCount();
+        for (int i = 0; i < folded.length; ++i) {
+            changes += folded[i].changeCount();
         }
         return changes;
     }
@@ -491,6 +562,7 @@ public final class ParticleIntegrator {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
+        movingRegimeStep = Float.NaN;
         foldedChanges = changeCount();
     }
 
@@ -502,8 +574,10 @@ public final class ParticleIntegrator {
      * @param inverseMass 1/m (in 1/kg)
      */
     private float foldedDragRate(float speed, float inverseMass) {
+        // c = 0 gives no term even when |V|² overflowed to an infinite speed (0·∞ is NaN)
+        float drag = quadraticSum == 0f ? linearSum : linearSum + quadraticSum * speed;
         float thrustPerSpeed = speed >= Thrust.MIN_SPEED ? thrustSum / speed : 0f;
-        return (linearSum + quadraticSum * speed - thrustPerSpeed) * inverseMass;
+        return (drag - thrustPerSpeed) * inverseMass;
     }
 
     /** |V| computed as {@link Vector3f#length()} does. */
@@ -514,7 +588,8 @@ public final class ParticleIntegrator {
     /** λ at the particle's state, its speed given: folded in double, plus the others'. */
     private float dampingRateAt(Particle particle, float speed) {
         // λ = b/m + 2c·|V|/m (thrust does not depend on small changes of V: 0)
-        double rate = (linearSum + 2.0 * quadraticSum * speed) / particle.getMass();
+        double rate = quadraticSum == 0f ? linearSum : linearSum + 2.0 * quadraticSum * speed;
+        rate /= particle.getMass();
         for (int i = 0; i < others.length; ++i) {
             rate += others[i].dampingRate(particle);
         }
@@ -526,9 +601,11 @@ public final class ParticleIntegrator {
         if (speed == 0f) {
             return 0f;
         }
-        double thrustPerSpeed = speed >= Thrust.MIN_SPEED ? (double) thrustSum / speed : 0.0;
-        double rate = (linearSum + (double) quadraticSum * speed - thrustPerSpeed)
-                / particle.getMass();
+        double rate = quadraticSum == 0f ? linearSum : linearSum + (double) quadraticSum * speed;
+        if (speed >= Thrust.MIN_SPEED) {
+            rate -= (double) thrustSum / speed;
+        }
+        rate /= particle.getMass();
         if (others.length > 0) {
             // the others' share: −(a(V) − a(0))·V/|V|², a measured at V and at rest
             Vector3f velocity = particle.velocity;
@@ -566,6 +643,41 @@ public final class ParticleIntegrator {
      * rest), and only a step that the recipe cannot take either is refused.
      */
     private void stepFolded(Particle particle, float stepSeconds) {
+        if (others.length == 0) {
+            // the usual scene: the arithmetic of computeFolded in locals, committed straight
+            // from them (a round trip through scratch vectors would lengthen every step)
+            Vector3f velocity = particle.velocity;
+            Vector3f position = particle.position;
+            float vx = velocity.x;
+            float vy = velocity.y;
+            float vz = velocity.z;
+            float speed = speedDependent ? speed(vx, vy, vz) : 0f;
+            float factor = 1f - stepSeconds
+                    * foldedDragRate(speed, inverseMass(particle.getMass()));
+            vx = vx * factor + stepSeconds * gravityX;
+            vy = vy * factor + stepSeconds * gravityY;
+            vz = vz * factor + stepSeconds * gravityZ;
+            float px = position.x + stepSeconds * vx;
+            float py = position.y + stepSeconds * vy;
+            float pz = position.z + stepSeconds * vz;
+            // a finite sum means six finite terms
+            if (Float.isFinite(vx + vy + vz + px + py + pz)
+                    || Float.isFinite(vx) && Float.isFinite(vy) && Float.isFinite(vz)
+                    && Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
+                velocity.set(vx, vy, vz);
+                position.set(px, py, pz);
+                return;
+            }
+        }
+        stepThroughScratch(particle, stepSeconds);
+    }
+
+    /**
+     * Step one particle through the scratch vectors: with other forces, or when the fast
+     * path of {@link #stepFolded} found a non-finite result (kept apart so that the fast path
+     * stays small enough for the JIT to inline).
+     */
+    private void stepThroughScratch(Particle particle, float stepSeconds) {
         computeFolded(particle, stepSeconds);
         if (!isNextFinite()) {
             computeRecipe(particle, stepSeconds);
@@ -580,6 +692,18 @@ public final class ParticleIntegrator {
         }
         particle.velocity.set(nextVelocity);
         particle.position.set(nextPosition);
+    }
+
+    /**
+     * Return 1/m, remembered for the last mass asked for: most scenes step particles of one
+     * mass, and a division per step and per rate is a good part of their cost.
+     */
+    private float inverseMass(float massKg) {
+        if (massKg != cachedMass) {
+            cachedInverseMass = 1f / massKg;
+            cachedMass = massKg;
+        }
+        return cachedInverseMass;
     }
 
     /** True if the computed step is finite: one test for the usual case. */
@@ -599,7 +723,7 @@ public final class ParticleIntegrator {
         float vx = velocity.x;
         float vy = velocity.y;
         float vz = velocity.z;
-        float inverseMass = 1f / particle.getMass();
+        float inverseMass = inverseMass(particle.getMass());
         // forces from the state at the start of the step: σ for the folded ones ...
         float speed = speedDependent ? speed(vx, vy, vz) : 0f;
         float factor = 1f - stepSeconds * foldedDragRate(speed, inverseMass);

@@ -20,11 +20,9 @@ import com.jme3.math.Vector3f;
  * where {@code λ = 2g/v_t}), the step swings about {@code v_t} once {@code h > v_t/(2g)} and no
  * longer settles once {@code h > v_t/g}.
  */
-public final class QuadraticDrag implements Force {
+public final class QuadraticDrag extends FoldedForce {
 
     private float coefficient;
-    /** How often the coefficient was set, for {@link ParticleIntegrator} to refold on change. */
-    private int changeCount;
 
     /**
      * Create quadratic drag.
@@ -51,17 +49,7 @@ public final class QuadraticDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "quadratic drag c (kg/m)");
-        ++changeCount;
-    }
-
-    /**
-     * Count the changes of the coefficient, so that an integrator that folded it knows when
-     * to fold again.
-     *
-     * @return how often it was set (wraps around; only inequality matters)
-     */
-    int changeCount() {
-        return changeCount;
+        changed();
     }
 
     @Override

@@ -11,14 +11,12 @@ import com.jme3.math.Vector3f;
  * therefore zero: a motor at rest stays at rest until another force (gravity, say) gives it a
  * heading, and the step never divides by a zero length.
  */
-public final class Thrust implements Force {
+public final class Thrust extends FoldedForce {
 
     /** Speeds below this (in m/s) give no heading, so no thrust. */
     public static final float MIN_SPEED = 1e-6f;
 
     private float magnitude;
-    /** How often the magnitude was set, for {@link ParticleIntegrator} to refold on change. */
-    private int changeCount;
 
     /**
      * Create thrust.
@@ -45,17 +43,7 @@ public final class Thrust implements Force {
      */
     public void setMagnitude(float magnitude) {
         this.magnitude = Validate.nonNegative(magnitude, "thrust k (N)");
-        ++changeCount;
-    }
-
-    /**
-     * Count the changes of the magnitude, so that an integrator that folded it knows when
-     * to fold again.
-     *
-     * @return how often it was set (wraps around; only inequality matters)
-     */
-    int changeCount() {
-        return changeCount;
+        changed();
     }
 
     @Override

@@ -1,6 +1,7 @@
 package particlelab.physics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -215,6 +216,34 @@ class ParticleIntegratorFoldingTest {
         }
     }
 
+    @Test
+    void rememberedRegimeFollowsTheStepTheMassRestAndSetters() {
+        // gravity and linear drag: the integrator remembers the regime per step and mass
+        LinearDrag drag = new LinearDrag(1f);
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), drag);
+        ParticleIntegrator general = new ParticleIntegrator(hide(new Gravity(), drag));
+        Particle moving = new Particle(new Vector3f(), new Vector3f(3f, 0f, 0f), 1f);
+        Particle resting = new Particle(new Vector3f(), new Vector3f(), 1f);
+        Particle heavy = new Particle(new Vector3f(), new Vector3f(3f, 0f, 0f), 10f);
+        Particle[] order = {moving, resting, heavy, moving, resting};
+        // h·b/m = 0.5, 1.5 (overshoots at rest, reverses moving), 2.5 (unstable, grows)
+        float[] steps = {0.5f, 1.5f, 2.5f, 1.5f, 0.5f, 2.5f};
+        for (float b : new float[] {1f, 0.7f}) {
+            drag.setCoefficient(b);
+            for (float h : steps) {
+                for (Particle particle : order) {
+                    assertEquals(general.regime(particle, h), integrator.regime(particle, h),
+                            "b=" + b + ", h=" + h + ", " + particle);
+                }
+            }
+        }
+        drag.setCoefficient(1f);
+        assertEquals(StepRegime.REVERSES, integrator.regime(moving, 1.5f));
+        assertEquals(StepRegime.OVERSHOOTS, integrator.regime(resting, 1.5f));
+        assertEquals(StepRegime.GROWS, integrator.regime(moving, 2.5f));
+        assertEquals(StepRegime.UNSTABLE, integrator.regime(resting, 2.5f));
+    }
+
     @ParameterizedTest
     @EnumSource(Mix.class)
     void everyPathRefusesNaNInputAndKeepsTheState(Mix mix) {
@@ -256,6 +285,34 @@ class ParticleIntegratorFoldingTest {
         NonFiniteStepException batch = assertThrows(NonFiniteStepException.class,
                 () -> integrator.stepPacked(positions, velocities, 3, 1f, H));
         assertTrue(batch.getMessage().contains("packed particle 1 of 3"), batch.getMessage());
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void aSpeedBeyondTheFloatRangeOfItsSquareIsStillStepped(Mix mix) {
+        // |V| = 1e20 m/s: |V|² overflows, so |V| computes as ∞; without quadratic drag the
+        // step itself stays finite and must be taken, the rates must not be NaN
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        Particle particle = new Particle(new Vector3f(), new Vector3f(1e20f, 0f, 0f), 1f);
+        assertFalse(Float.isNaN(integrator.dampingRate(particle)));
+        assertFalse(Float.isNaN(integrator.dragRate(particle)));
+        assertTrue(integrator.regime(particle, H) != null);
+        if (mix == Mix.QUADRATIC) {
+            assertThrows(NonFiniteStepException.class, () -> integrator.step(particle, H));
+            return;
+        }
+        ParticleIntegrator general = new ParticleIntegrator(hide(mix.forces()));
+        Particle reference = new Particle(particle.position, particle.velocity, 1f);
+        integrator.step(particle, H);
+        general.step(reference, H);
+        // a few roundings apart, as foldedStepAgreesWithTheForceByForceRecipeToAFewUlp
+        assertEquals(reference.velocity.x, particle.velocity.x, 1e-6f * 1e20f);
+        assertEquals(reference.velocity.y, particle.velocity.y, 1e-6f);
+        float[] positions = new float[3];
+        float[] velocities = {1e20f, 0f, 0f};
+        integrator.stepPacked(positions, velocities, 1, 1f, H);
+        assertBitwiseEqual(particle.velocity, new Vector3f(velocities[0], velocities[1],
+                velocities[2]));
     }
 
     @ParameterizedTest
