@@ -580,7 +580,9 @@ public final class ParticleIntegrator {
     private float foldedDragRate(float speed, float inverseMass) {
         // c = 0 gives no term even when |V|² overflowed to an infinite speed (0·∞ is NaN)
         float drag = quadraticSum == 0f ? linearSum : linearSum + quadraticSum * speed;
-        float thrustPerSpeed = speed >= Thrust.MIN_SPEED ? thrustSum / speed : 0f;
+        // no division without thrust (k = 0 would subtract 0 anyway)
+        float thrustPerSpeed = thrustSum != 0f && speed >= Thrust.MIN_SPEED
+                ? thrustSum / speed : 0f;
         return (drag - thrustPerSpeed) * inverseMass;
     }
 
