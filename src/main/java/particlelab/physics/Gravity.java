@@ -6,7 +6,7 @@ import com.jme3.math.Vector3f;
  * Gravitational pull near the ground: the constant acceleration {@code g}, the same for every
  * mass. It enters the recipe as {@code g} in {@code a = g + F/m}, not as a force to divide by m.
  */
-public final class Gravity implements Force {
+public final class Gravity extends FoldedForce {
 
     /** The lecture's standard gravity (in m/s², pointing down the y axis). */
     public static final float STANDARD_G = 9.8f;
@@ -46,6 +46,7 @@ public final class Gravity implements Force {
      */
     public void setAcceleration(Vector3f newAcceleration) {
         acceleration.set(Validate.finite(newAcceleration, "gravity g (m/s^2)"));
+        changed();
     }
 
     @Override

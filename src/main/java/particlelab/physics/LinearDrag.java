@@ -8,7 +8,7 @@ import com.jme3.math.Vector3f;
  * {@code 1 − λh}, so it is stable for {@code h < 2m/b} and never reverses the velocity for
  * {@code h < m/b} (see {@link StepRegime}).
  */
-public final class LinearDrag implements Force {
+public final class LinearDrag extends FoldedForce {
 
     private float coefficient;
 
@@ -37,6 +37,7 @@ public final class LinearDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "linear drag b (N*s/m)");
+        changed();
     }
 
     @Override

@@ -20,7 +20,7 @@ import com.jme3.math.Vector3f;
  * where {@code λ = 2g/v_t}), the step swings about {@code v_t} once {@code h > v_t/(2g)} and no
  * longer settles once {@code h > v_t/g}.
  */
-public final class QuadraticDrag implements Force {
+public final class QuadraticDrag extends FoldedForce {
 
     private float coefficient;
 
@@ -49,6 +49,7 @@ public final class QuadraticDrag implements Force {
      */
     public void setCoefficient(float coefficient) {
         this.coefficient = Validate.nonNegative(coefficient, "quadratic drag c (kg/m)");
+        changed();
     }
 
     @Override

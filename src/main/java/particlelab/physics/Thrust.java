@@ -11,7 +11,7 @@ import com.jme3.math.Vector3f;
  * therefore zero: a motor at rest stays at rest until another force (gravity, say) gives it a
  * heading, and the step never divides by a zero length.
  */
-public final class Thrust implements Force {
+public final class Thrust extends FoldedForce {
 
     /** Speeds below this (in m/s) give no heading, so no thrust. */
     public static final float MIN_SPEED = 1e-6f;
@@ -43,6 +43,7 @@ public final class Thrust implements Force {
      */
     public void setMagnitude(float magnitude) {
         this.magnitude = Validate.nonNegative(magnitude, "thrust k (N)");
+        changed();
     }
 
     @Override

@@ -3,6 +3,7 @@ package particlelab.physics;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import particlelab.Allocations;
 
@@ -36,6 +37,71 @@ class PhysicsAllocationTest {
                         integrator.step(particle, H);
                     }
                 });
+        assertTrue(particle.isFinite(), particle.toString());
+    }
+
+    /**
+     * Every path of every force mix, with the stability bookkeeping the demos do each step:
+     * per particle, an array of objects, the batch, and a scene with a spring (through the
+     * interface).
+     */
+    @Test
+    void everyPathOfEveryMixAllocatesNothing() {
+        Force[][] mixes = {
+            {new Gravity()},
+            {new Gravity(), new LinearDrag(0.5f)},
+            {new Gravity(), new QuadraticDrag(0.05f)},
+            {new Gravity(), new LinearDrag(0.3f), new Thrust(4f)},
+            {new Gravity(), new Spring(new Vector3f(0f, 10f, 0f), 1f, 20f, 0.3f)},
+        };
+        int count = 100;
+        for (Force[] forces : mixes) {
+            ParticleIntegrator integrator = new ParticleIntegrator(forces);
+            Particle particle = new Particle(START_POSITION, START_VELOCITY, 2f);
+            Particle[] particles = new Particle[count];
+            for (int i = 0; i < count; ++i) {
+                particles[i] = new Particle(START_POSITION, START_VELOCITY, 2f);
+            }
+            float[] positions = new float[3 * count];
+            float[] velocities = new float[3 * count];
+            String mix = integrator.describe();
+            Allocations.assertAllocatesNothing(STEPS + " steps and regimes, " + mix, () -> {
+                particle.setState(START_POSITION, START_VELOCITY);
+                for (int i = 0; i < STEPS; ++i) {
+                    if (integrator.regime(particle, H) == StepRegime.GROWS) {
+                        sink.x += integrator.dragRate(particle);
+                    }
+                    sink.y += integrator.maxStableStep(particle) + integrator.dampingRate(particle);
+                    integrator.step(particle, H);
+                }
+            });
+            Allocations.assertAllocatesNothing("array and batch steps, " + mix, () -> {
+                for (int i = 0; i < count; ++i) {
+                    particles[i].setState(START_POSITION, START_VELOCITY);
+                }
+                Arrays.fill(positions, 0f);
+                Arrays.fill(velocities, 1f);
+                for (int i = 0; i < STEPS / count; ++i) {
+                    integrator.step(particles, H);
+                    integrator.stepPacked(positions, velocities, count, 2f, H);
+                }
+            });
+            assertTrue(particle.isFinite() && particles[0].isFinite(), mix);
+        }
+    }
+
+    @Test
+    void refoldingAfterASetterAllocatesNothing() {
+        LinearDrag drag = new LinearDrag(0.5f);
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), drag);
+        Particle particle = new Particle(START_POSITION, START_VELOCITY, 1f);
+        Allocations.assertAllocatesNothing(STEPS + " steps, b changed before each", () -> {
+            particle.setState(START_POSITION, START_VELOCITY);
+            for (int i = 0; i < STEPS; ++i) {
+                drag.setCoefficient(i % 2 == 0 ? 0.5f : 0.6f);
+                integrator.step(particle, H);
+            }
+        });
         assertTrue(particle.isFinite(), particle.toString());
     }
 
