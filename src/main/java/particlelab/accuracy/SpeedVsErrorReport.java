@@ -619,10 +619,13 @@ public final class SpeedVsErrorReport {
                 + "still about ").append(sci(leftSpeed)).append(" m/s); a relaunch costs "
                 + "about one step in ").append(BulkScene.STEPS_PER_LAUNCH).append(". A test runs "
                 + "each scene far past the decay point and checks that no component is "
-                + "subnormal. The demos never get there: every particle they step is under "
-                + "gravity and stops at the ground, where its velocity is set to exactly 0 "
-                + "(zero is not subnormal) and it is no longer stepped, and the uniform-motion "
-                + "sphere feels no force and restarts. A scene of your own with drag and no "
+                + "subnormal. The demos never get there: the particles of the motion and "
+                + "aiming demos fall under gravity and stop at the ground, where their velocity "
+                + "is set to exactly 0 (zero is not subnormal) and they are no longer stepped; "
+                + "the uniform-motion sphere feels no force and restarts; the collision demos "
+                + "have no drag, so speeds change only at impacts, and a ball that comes to "
+                + "rest is held at exactly 0 by the resting contact. A scene of your own with "
+                + "drag and no "
                 + "ground would decay: snap tiny velocities to zero or recycle particles.\n\n");
     }
 
