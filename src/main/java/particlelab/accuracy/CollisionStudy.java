@@ -16,6 +16,7 @@ import particlelab.world.ImpulseResponse;
 import particlelab.world.SphereRule;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
+import particlelab.world.TunnelShots;
 import particlelab.world.World;
 
 /**
@@ -275,61 +276,14 @@ final class CollisionStudy {
         ThinWall wall = new ThinWall(Vector3f.UNIT_X, 0f, WALL_THICKNESS_METRES);
         for (int i = 0; i < TRAVEL_RATIOS.length; ++i) {
             float speed = speedFor(TRAVEL_RATIOS[i]);
-            int overlapHits = fire(wall, speed, SHOT_RADIUS_METRES, STEP_SECONDS,
+            int overlapHits = TunnelShots.fire(wall, speed, SHOT_RADIUS_METRES, STEP_SECONDS,
                     Detection.OVERLAP, shots, new Random(SEED + i));
-            int sweptHits = fire(wall, speed, SHOT_RADIUS_METRES, STEP_SECONDS,
+            int sweptHits = TunnelShots.fire(wall, speed, SHOT_RADIUS_METRES, STEP_SECONDS,
                     Detection.SWEPT, shots, new Random(SEED + i));
             tunnels.add(new Tunnel(TRAVEL_RATIOS[i], speed, shots, shots - overlapHits,
                     shots - sweptHits,
                     wall.overlapMissProbability(SHOT_RADIUS_METRES, speed, STEP_SECONDS)));
         }
-    }
-
-    /** Notes whether the shot in flight hit. */
-    private static final class HitFlag implements ContactListener {
-        private boolean hit;
-
-        @Override
-        public void resolved(Contact contact, World world) {
-            hit = true;
-        }
-    }
-
-    /**
-     * Fire shots as {@code particle-lab tunnel} does: the shot starts at
-     * {@code x = −(r + D/2) − (1 + φ)·v·h}, φ one {@code nextFloat()} per shot, and flies at
-     * +v along x without forces until the wall's rule resolves a contact or it is a step past
-     * the far side.
-     *
-     * @return the number of shots the test saw
-     */
-    static int fire(ThinWall wall, float speed, float radius, float step, Detection detection,
-            int shots, Random random) {
-        World world = new World(1);
-        Vector3f start = new Vector3f();
-        Vector3f velocity = new Vector3f(speed, 0f, 0f);
-        Body shot = world.addBody(new ParticleIntegrator(), start, velocity, 1f, radius);
-        world.addRule(new SurfaceRule("wall", wall, new ImpulseResponse(1f, 0f, false),
-                detection));
-        HitFlag flag = new HitFlag();
-        world.addContactListener(flag);
-        float reach = radius + 0.5f * wall.getThickness();
-        float travel = speed * step;
-        float beyond = reach + travel;
-        int hits = 0;
-        for (int i = 0; i < shots; ++i) {
-            start.set(-reach - (1f + random.nextFloat()) * travel, 0f, 0f);
-            shot.setLaunch(start, velocity);
-            world.restart();
-            flag.hit = false;
-            while (!flag.hit && shot.getPosition().x <= beyond) {
-                world.step(step);
-            }
-            if (flag.hit) {
-                ++hits;
-            }
-        }
-        return hits;
     }
 
     // ---- cost ---------------------------------------------------------------------------------

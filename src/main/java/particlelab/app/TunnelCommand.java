@@ -4,14 +4,8 @@ import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import java.util.Random;
 import particlelab.collision.ThinWall;
-import particlelab.physics.ParticleIntegrator;
-import particlelab.world.Body;
-import particlelab.world.Contact;
-import particlelab.world.ContactListener;
 import particlelab.world.Detection;
-import particlelab.world.ImpulseResponse;
-import particlelab.world.SurfaceRule;
-import particlelab.world.World;
+import particlelab.world.TunnelShots;
 
 /**
  * {@code particle-lab tunnel}: N shots straight at a thin wall, each from a random phase, and
@@ -117,7 +111,8 @@ public final class TunnelCommand {
                         + " than " + CollisionOptions.MAX_STEPS + " steps to cross the wall");
             }
             ThinWall wall = new ThinWall(Vector3f.UNIT_X, 0f, thickness);
-            int hits = fire(wall, speed, radius, step, detection, shots, new Random(seed));
+            int hits = TunnelShots.fire(wall, speed, radius, step, detection, shots,
+                    new Random(seed));
             double predicted = detection == Detection.OVERLAP
                     ? wall.overlapMissProbability(radius, speed, step) : 0.0;
             out.println(HEADER);
@@ -126,50 +121,5 @@ public final class TunnelCommand {
         } catch (UsageException problem) {
             return CommandSupport.reportUsage(COMMAND, problem, err);
         }
-    }
-
-    /** Counts the shots that hit. */
-    private static final class HitCounter implements ContactListener {
-        private boolean hit;
-
-        @Override
-        public void resolved(Contact contact, World world) {
-            hit = true;
-        }
-    }
-
-    /**
-     * Fire the shots.
-     *
-     * @return the number that hit the wall
-     */
-    static int fire(ThinWall wall, float speed, float radius, float step, Detection detection,
-            int shots, Random random) {
-        World world = new World(1);
-        Vector3f start = new Vector3f();
-        Vector3f velocity = new Vector3f(speed, 0f, 0f);
-        Body shot = world.addBody(new ParticleIntegrator(), start, velocity, 1f, radius);
-        world.addRule(new SurfaceRule("wall", wall, new ImpulseResponse(1f, 0f, false),
-                detection));
-        HitCounter counter = new HitCounter();
-        world.addContactListener(counter);
-        float reach = radius + 0.5f * wall.getThickness();
-        float travel = speed * step;
-        float beyond = reach + travel;
-        int hits = 0;
-        for (int i = 0; i < shots; ++i) {
-            float phase = random.nextFloat();
-            start.set(-reach - (1f + phase) * travel, 0f, 0f);
-            shot.setLaunch(start, velocity);
-            world.restart();
-            counter.hit = false;
-            while (!counter.hit && shot.getPosition().x <= beyond) {
-                world.step(step);
-            }
-            if (counter.hit) {
-                ++hits;
-            }
-        }
-        return hits;
     }
 }
