@@ -51,6 +51,8 @@ public final class Gravity extends FoldedForce {
 
     @Override
     public void addFieldAcceleration(Particle particle, Vector3f fieldAcceleration) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(fieldAcceleration, "fieldAcceleration");
         fieldAcceleration.addLocal(acceleration);
     }
 

@@ -42,12 +42,15 @@ public final class LinearDrag extends FoldedForce {
 
     @Override
     public void addForce(Particle particle, Vector3f netForce) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(netForce, "netForce");
         // F = -b V
         netForce.scaleAdd(-coefficient, particle.velocity, netForce);
     }
 
     @Override
     public float dampingRate(Particle particle) {
+        Validate.notNull(particle, "particle");
         // In double: b/m may overflow a float for a tiny mass.
         return (float) Math.min((double) coefficient / particle.getMass(), Float.MAX_VALUE);
     }

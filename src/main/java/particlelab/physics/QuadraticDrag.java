@@ -54,6 +54,8 @@ public final class QuadraticDrag extends FoldedForce {
 
     @Override
     public void addForce(Particle particle, Vector3f netForce) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(netForce, "netForce");
         // F = -c |V| V
         float speed = particle.velocity.length();
         netForce.scaleAdd(-coefficient * speed, particle.velocity, netForce);
@@ -66,6 +68,7 @@ public final class QuadraticDrag extends FoldedForce {
      */
     @Override
     public float dampingRate(Particle particle) {
+        Validate.notNull(particle, "particle");
         // In double: 2c·|V| may overflow a float, and overflow times a zero speed is NaN.
         double rate = 2.0 * coefficient * particle.velocity.length() / particle.getMass();
         return (float) Math.min(rate, Float.MAX_VALUE);

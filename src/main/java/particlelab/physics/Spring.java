@@ -105,6 +105,8 @@ public final class Spring implements Force {
 
     @Override
     public void addForce(Particle particle, Vector3f netForce) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(netForce, "netForce");
         Vector3f position = particle.position;
         float dx = position.x - anchor.x;
         float dy = position.y - anchor.y;
@@ -130,6 +132,7 @@ public final class Spring implements Force {
      */
     @Override
     public float dampingRate(Particle particle) {
+        Validate.notNull(particle, "particle");
         return (float) Math.min((double) damping / particle.getMass(), Float.MAX_VALUE);
     }
 
@@ -141,6 +144,7 @@ public final class Spring implements Force {
      */
     @Override
     public float stiffness(Particle particle) {
+        Validate.notNull(particle, "particle");
         return (float) Math.min((double) springConstant / particle.getMass(), Float.MAX_VALUE);
     }
 

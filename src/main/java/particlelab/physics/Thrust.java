@@ -48,6 +48,8 @@ public final class Thrust extends FoldedForce {
 
     @Override
     public void addForce(Particle particle, Vector3f netForce) {
+        Validate.notNull(particle, "particle");
+        Validate.notNull(netForce, "netForce");
         float speed = particle.velocity.length();
         if (speed < MIN_SPEED) {
             return;

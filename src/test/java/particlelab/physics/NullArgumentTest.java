@@ -65,7 +65,13 @@ class NullArgumentTest {
                 new Case("explanation", () -> new AimResult("x", true, 1, 1, 1, 1, 1, 1, null)),
                 new Case("vector", () -> Validate.isFinite(null)),
                 new Case("stepper", () -> new SimulationClock().advance(H, null)),
-                new Case("storeResult", () -> new Gravity().copyAcceleration(null)));
+                new Case("storeResult", () -> new Gravity().copyAcceleration(null)),
+                new Case("particle", () -> new LinearDrag(1f).addForce(null, new Vector3f())),
+                new Case("netForce", () -> new QuadraticDrag(1f).addForce(particle, null)),
+                new Case("particle", () -> new Thrust(1f).addForce(null, new Vector3f())),
+                new Case("fieldAcceleration",
+                        () -> new Gravity().addFieldAcceleration(particle, null)),
+                new Case("particle", () -> new QuadraticDrag(1f).dampingRate(null)));
     }
 
     @ParameterizedTest(name = "{0}")
