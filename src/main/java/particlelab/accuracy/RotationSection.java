@@ -63,6 +63,7 @@ public final class RotationSection {
 
     // ---- CSV ----------------------------------------------------------------------------------
 
+    /** The text of {@code rotation_error.csv}: one row per method and step. */
     static String errorCsv(RotationStudy study) {
         StringBuilder text = new StringBuilder(ERROR_HEADER).append('\n');
         for (RotationStudy.OrientationError e : study.errors) {
@@ -74,6 +75,7 @@ public final class RotationSection {
         return text.toString();
     }
 
+    /** The text of {@code racket_drift.csv}: one row per angular method and step. */
     static String driftCsv(RotationStudy study) {
         StringBuilder text = new StringBuilder(DRIFT_HEADER).append('\n');
         for (RotationStudy.Drift d : study.drifts) {
@@ -115,6 +117,7 @@ public final class RotationSection {
 
     // ---- index.md -----------------------------------------------------------------------------
 
+    /** The section's text for {@code index.md}: every number from the study. */
     static String markdown(RotationStudy study) {
         StringBuilder md = new StringBuilder();
         md.append(HEADING).append("\n\n");
@@ -240,6 +243,7 @@ public final class RotationSection {
 
     // ---- helpers ------------------------------------------------------------------------------
 
+    /** An order with 2 decimals, or {@code round-off} where none was fitted. */
     static String order(double value) {
         return Double.isNaN(value) ? "round-off" : fix(value, 2);
     }

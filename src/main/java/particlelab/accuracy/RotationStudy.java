@@ -83,6 +83,11 @@ final class RotationStudy {
     /** ns per step of each orientation method, by ordinal (NaN until timed). */
     final double[] nanosPerStep = new double[Orientation.values().length];
 
+    /**
+     * Prepare a study; {@link #run} runs every part, tests may run them one by one.
+     *
+     * @param steps the step sizes (in seconds, largest first)
+     */
     RotationStudy(double[] steps) {
         this.steps = steps;
         Arrays.fill(nanosPerStep, Double.NaN);
@@ -118,6 +123,7 @@ final class RotationStudy {
         return (int) Math.round(seconds / stepSeconds);
     }
 
+    /** The sphere at constant ω for {@link #ORIENTATION_SECONDS}, per method and step. */
     void runOrientation() {
         RotationCheck check = new RotationCheck();
         Matrix3f exact = new Matrix3f();
@@ -140,6 +146,7 @@ final class RotationStudy {
         }
     }
 
+    /** The racket for {@link #RACKET_SECONDS}, per angular method and step. */
     void runRacket() {
         Vector3f scratch = new Vector3f();
         for (Angular method : Angular.values()) {
@@ -187,6 +194,11 @@ final class RotationStudy {
         }
     }
 
+    /**
+     * Time one step of each orientation method at {@link #COST_STEP_SECONDS}, alternating
+     * the methods {@value #COST_PASSES} times and keeping each one's fastest pass, so that a
+     * slow moment of a shared machine does not land on one method only.
+     */
     void runCost(CostMeter meter) {
         Orientation[] methods = Orientation.values();
         Spinner[] spinners = new Spinner[methods.length];
