@@ -46,6 +46,7 @@ public final class SpeedVsErrorReport {
             files.add(workPrecisionPlot(scene));
         }
         files.addAll(CollisionSection.FILES);
+        files.addAll(RotationSection.FILES);
         FILES = Collections.unmodifiableList(files);
     }
 
@@ -108,6 +109,7 @@ public final class SpeedVsErrorReport {
         writePlots(precision, stability, benchmarks, aiming);
         writeIndex(precision, stability, benchmarks, aiming, hitches, jmh != null);
         CollisionSection.write(config, meter, folder);
+        RotationSection.write(config, meter, folder);
         progress.advance();
         progress.finish();
     }
