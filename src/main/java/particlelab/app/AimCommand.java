@@ -174,118 +174,114 @@ public final class AimCommand {
      * @return the exit code: 0 on success, 2 on a bad command line or a target out of reach
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            float distance = options.positiveFloat(DISTANCE);
-            float vx = options.positiveFloat(VX);
-            float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
-                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
-            float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
-            float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
-            String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,
-                    IterativeAim.METHOD);
-            float tolerance = options.positiveFloat(TOLERANCE, DEFAULT_TOLERANCE_METRES);
-            for (String iterativeOnly : new String[] {TOLERANCE, STRATEGY, SEED, SHOTS_CSV}) {
-                if (options.has(iterativeOnly) && !IterativeAim.METHOD.equals(method)) {
-                    throw new UsageException(iterativeOnly + ": applies only to " + METHOD + " "
-                            + IterativeAim.METHOD + ", but the method is " + method);
-                }
-            }
-            AimStrategy strategy = AimStrategy.fromCliName(options.choice(STRATEGY,
-                    AimStrategy.ILLINOIS.cliName(), strategyNames()));
-            int seed = options.intInRange(SEED, DEFAULT_SEED, 0, Integer.MAX_VALUE);
-            if (options.has(SEED) && strategy != AimStrategy.BELIEVABLE) {
-                throw new UsageException(SEED + ": applies only to " + STRATEGY + " "
-                        + AimStrategy.BELIEVABLE.cliName() + ", but the strategy is "
-                        + strategy.cliName());
-            }
-            if (strategy == AimStrategy.BELIEVABLE && tolerance >= distance) {
-                throw new UsageException(TOLERANCE + ": with " + STRATEGY + " "
-                        + AimStrategy.BELIEVABLE.cliName() + " it must be less than S="
-                        + distance + " m, so that a first shot can miss, but was " + tolerance);
-            }
-            options.atMostOneOf(CSV, SHOTS_CSV);
-            float predictStep = options.positiveFloat(PREDICT_TPF, step);
-            if (options.has(PREDICT_TPF) && LECTURE.equals(method)) {
-                throw new UsageException(PREDICT_TPF + ": applies only to " + METHOD + " "
-                        + IterativeAim.METHOD + " or " + DISCRETE + " (the lecture's formula"
-                        + " uses no step), but the method is " + method);
-            }
-            if (linearDrag > 0f && distance >= (double) vx * mass / linearDrag) {
-                throw new UsageException(DISTANCE + ": the target at S=" + distance + " m is out"
-                        + " of reach at vx=" + vx + " m/s with linear drag b=" + linearDrag
-                        + " and mass m=" + mass + ": no launch passes vx*m/b = "
-                        + (float) ((double) vx * mass / linearDrag) + " m");
-            }
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
 
-            checkFloatRange(gravity, distance, vx);
-            checkStepCount(TPF, distance, vx, step);
-            checkStepCount(PREDICT_TPF, distance, vx, predictStep);
-
-            ParticleIntegrator integrator = CommandSupport.integrator(
-                    new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
-            ShotSimulator simulator = new ShotSimulator(integrator, mass, step,
-                    maxFlightSeconds(step));
-            boolean mismatch = options.has(PREDICT_TPF);
-            ShotSimulator predictor = mismatch ? new ShotSimulator(integrator, mass,
-                    predictStep, maxFlightSeconds(predictStep)) : simulator;
-            ShotLog log = new ShotLog(MAX_SHOTS + 1);
-            AimResult result;
-            float blewUpStep = step;
-            // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
-            double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
-            try {
-                blewUpStep = predictStep;
-                result = aim(method, strategy, seed, predictor, gravity, distance, vx,
-                        predictStep, toleranceMetres, log);
-                if (mismatch) {
-                    blewUpStep = step;
-                    result = PredictorMismatch.fly(result, simulator, toleranceMetres, log);
-                    if (Double.isNaN(result.getLandingX())) {
-                        throw new UsageException(DISTANCE + ": " + result.getExplanation()
-                                + " (limit " + maxFlightSeconds(step) + " s); the target at S="
-                                + distance + " m is out of reach");
-                    }
-                }
-            } catch (NonFiniteStepException nonFinite) {
-                float limit = integrator.maxStableStep(launch(vx,
-                        (float) LevelAim.lectureVy(gravity, distance, vx), mass));
-                UsageException blewUp = CommandSupport.blewUp(blewUpStep, "during a shot",
-                        limit);
-                if (blewUpStep == step) {
-                    throw blewUp;
-                }
-                // The predictor's step blew up: name its option, not --tpf.
-                throw new UsageException(blewUp.getMessage().replaceFirst(TPF, PREDICT_TPF));
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        float distance = options.positiveFloat(DISTANCE);
+        float vx = options.positiveFloat(VX);
+        float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
+        float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
+        float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
+        String method = options.choice(METHOD, LECTURE, LECTURE, DISCRETE,
+                IterativeAim.METHOD);
+        float tolerance = options.positiveFloat(TOLERANCE, DEFAULT_TOLERANCE_METRES);
+        for (String iterativeOnly : new String[] {TOLERANCE, STRATEGY, SEED, SHOTS_CSV}) {
+            if (options.has(iterativeOnly) && !IterativeAim.METHOD.equals(method)) {
+                throw new UsageException(iterativeOnly + ": applies only to " + METHOD + " "
+                        + IterativeAim.METHOD + ", but the method is " + method);
             }
-            CommandSupport.warnIfUnstable(integrator,
-                    launch(vx, (float) result.getVerticalSpeed(), mass), step, err);
-            if (options.has(CSV)) {
-                printCsv(result, out);
-            } else if (options.has(SHOTS_CSV)) {
-                printShots(log, out);
-            } else {
-                printText(result, linearDrag > 0f || quadraticDrag > 0f, tolerance,
-                        options.has(STRATEGY) ? strategy : null, out);
-                if (mismatch) {
-                    out.println("predictor:         aimed with h_predict = "
-                            + readable(predictStep) + " s, flown at h = " + readable(step)
-                            + " s; expected miss about vx*(h_predict - h) = "
-                            + readable(PredictorMismatch.expectedMiss(vx, predictStep, step))
-                            + " m");
-                }
-            }
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
         }
+        AimStrategy strategy = AimStrategy.fromCliName(options.choice(STRATEGY,
+                AimStrategy.ILLINOIS.cliName(), strategyNames()));
+        int seed = options.intInRange(SEED, DEFAULT_SEED, 0, Integer.MAX_VALUE);
+        if (options.has(SEED) && strategy != AimStrategy.BELIEVABLE) {
+            throw new UsageException(SEED + ": applies only to " + STRATEGY + " "
+                    + AimStrategy.BELIEVABLE.cliName() + ", but the strategy is "
+                    + strategy.cliName());
+        }
+        if (strategy == AimStrategy.BELIEVABLE && tolerance >= distance) {
+            throw new UsageException(TOLERANCE + ": with " + STRATEGY + " "
+                    + AimStrategy.BELIEVABLE.cliName() + " it must be less than S="
+                    + distance + " m, so that a first shot can miss, but was " + tolerance);
+        }
+        options.atMostOneOf(CSV, SHOTS_CSV);
+        float predictStep = options.positiveFloat(PREDICT_TPF, step);
+        if (options.has(PREDICT_TPF) && LECTURE.equals(method)) {
+            throw new UsageException(PREDICT_TPF + ": applies only to " + METHOD + " "
+                    + IterativeAim.METHOD + " or " + DISCRETE + " (the lecture's formula"
+                    + " uses no step), but the method is " + method);
+        }
+        if (linearDrag > 0f && distance >= (double) vx * mass / linearDrag) {
+            throw new UsageException(DISTANCE + ": the target at S=" + distance + " m is out"
+                    + " of reach at vx=" + vx + " m/s with linear drag b=" + linearDrag
+                    + " and mass m=" + mass + ": no launch passes vx*m/b = "
+                    + (float) ((double) vx * mass / linearDrag) + " m");
+        }
+
+        checkFloatRange(gravity, distance, vx);
+        checkStepCount(TPF, distance, vx, step);
+        checkStepCount(PREDICT_TPF, distance, vx, predictStep);
+
+        ParticleIntegrator integrator = CommandSupport.integrator(
+                new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
+        ShotSimulator simulator = new ShotSimulator(integrator, mass, step,
+                maxFlightSeconds(step));
+        boolean mismatch = options.has(PREDICT_TPF);
+        ShotSimulator predictor = mismatch ? new ShotSimulator(integrator, mass,
+                predictStep, maxFlightSeconds(predictStep)) : simulator;
+        ShotLog log = new ShotLog(MAX_SHOTS + 1);
+        AimResult result;
+        float blewUpStep = step;
+        // The decimal the user typed, not its float: 0.001, not 0.0010000000474974513.
+        double toleranceMetres = Double.parseDouble(Float.toString(tolerance));
+        try {
+            blewUpStep = predictStep;
+            result = aim(method, strategy, seed, predictor, gravity, distance, vx,
+                    predictStep, toleranceMetres, log);
+            if (mismatch) {
+                blewUpStep = step;
+                result = PredictorMismatch.fly(result, simulator, toleranceMetres, log);
+                if (Double.isNaN(result.getLandingX())) {
+                    throw new UsageException(DISTANCE + ": " + result.getExplanation()
+                            + " (limit " + maxFlightSeconds(step) + " s); the target at S="
+                            + distance + " m is out of reach");
+                }
+            }
+        } catch (NonFiniteStepException nonFinite) {
+            float limit = integrator.maxStableStep(launch(vx,
+                    (float) LevelAim.lectureVy(gravity, distance, vx), mass));
+            UsageException blewUp = CommandSupport.blewUp(blewUpStep, "during a shot",
+                    limit);
+            if (blewUpStep == step) {
+                throw blewUp;
+            }
+            // The predictor's step blew up: name its option, not --tpf.
+            throw new UsageException(blewUp.getMessage().replaceFirst(TPF, PREDICT_TPF));
+        }
+        CommandSupport.warnIfUnstable(integrator,
+                launch(vx, (float) result.getVerticalSpeed(), mass), step, err);
+        if (options.has(CSV)) {
+            printCsv(result, out);
+        } else if (options.has(SHOTS_CSV)) {
+            printShots(log, out);
+        } else {
+            printText(result, linearDrag > 0f || quadraticDrag > 0f, tolerance,
+                    options.has(STRATEGY) ? strategy : null, out);
+            if (mismatch) {
+                out.println("predictor:         aimed with h_predict = "
+                        + readable(predictStep) + " s, flown at h = " + readable(step)
+                        + " s; expected miss about vx*(h_predict - h) = "
+                        + readable(PredictorMismatch.expectedMiss(vx, predictStep, step))
+                        + " m");
+            }
+        }
+        return 0;
     }
 
     /**

@@ -106,34 +106,30 @@ public final class BounceCommand {
      * @return the exit code: 0 on success, 2 on a bad command line
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            float height = options.positiveFloat(HEIGHT);
-            float e = CollisionOptions.restitution(options, RESTITUTION, COMMAND);
-            float threshold = options.nonNegativeFloat(THRESHOLD, 0f);
-            boolean restingFix = "on".equals(options.choice(RESTING_FIX, "on", "on", "off"));
-            Detection detection = CollisionOptions.detection(options, false, COMMAND);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
-            float radius = options.nonNegativeFloat(RADIUS, 0f);
-            float duration = options.positiveFloat(DURATION, DEFAULT_DURATION_SECONDS);
-            if (!(height > radius)) {
-                throw new UsageException(HEIGHT + ": the ball must start above the ground,"
-                        + " H0 > R = " + radius + " m, but was " + height);
-            }
-            int steps = CollisionOptions.stepsFor(DURATION, duration, step);
-            List<Impact> impacts = simulate(height, e, threshold, restingFix, detection, step,
-                    gravity, radius, steps);
-            print(impacts, out);
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
+
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        float height = options.positiveFloat(HEIGHT);
+        float e = CollisionOptions.restitution(options, RESTITUTION, COMMAND);
+        float threshold = options.nonNegativeFloat(THRESHOLD, 0f);
+        boolean restingFix = "on".equals(options.choice(RESTING_FIX, "on", "on", "off"));
+        Detection detection = CollisionOptions.detection(options, false, COMMAND);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
+        float radius = options.nonNegativeFloat(RADIUS, 0f);
+        float duration = options.positiveFloat(DURATION, DEFAULT_DURATION_SECONDS);
+        if (!(height > radius)) {
+            throw new UsageException(HEIGHT + ": the ball must start above the ground,"
+                    + " H0 > R = " + radius + " m, but was " + height);
         }
+        int steps = CollisionOptions.stepsFor(DURATION, duration, step);
+        List<Impact> impacts = simulate(height, e, threshold, restingFix, detection, step,
+                gravity, radius, steps);
+        print(impacts, out);
+        return 0;
     }
 
     /** One row. */

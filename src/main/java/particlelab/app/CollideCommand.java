@@ -95,47 +95,43 @@ public final class CollideCommand {
      * @return the exit code: 0 on success, 2 on a bad command line or no impact
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            float m1 = options.positiveFloat(M1);
-            float m2 = options.positiveFloat(M2);
-            Vector3f p1 = CollisionOptions.requiredVector(options, P1, COMMAND);
-            Vector3f p2 = CollisionOptions.requiredVector(options, P2, COMMAND);
-            Vector3f v1 = CollisionOptions.requiredVector(options, V1, COMMAND);
-            Vector3f v2 = CollisionOptions.requiredVector(options, V2, COMMAND);
-            float r1 = options.positiveFloat(R1);
-            float r2 = options.positiveFloat(R2);
-            float e = CollisionOptions.restitution(options, RESTITUTION, COMMAND);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            Detection detection = CollisionOptions.detection(options, false, COMMAND);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
 
-            double[] meeting = meeting(p1, p2, v1, v2, r1 + r2);
-            int steps = (int) Math.min(CollisionOptions.MAX_STEPS,
-                    Math.ceil(meeting[1] / step) + 1.0);
-            if (meeting[0] / step > CollisionOptions.MAX_STEPS) {
-                throw new UsageException(TPF + ": the spheres meet at t = " + (float) meeting[0]
-                        + " s, more than " + CollisionOptions.MAX_STEPS + " steps of " + step
-                        + " s away");
-            }
-            Recorder recorder = simulate(m1, m2, p1, p2, v1, v2, r1, r2, e, step, detection,
-                    steps);
-            if (!recorder.done) {
-                throw new UsageException(CollisionOptions.DETECTION + ": the overlap test"
-                        + " missed the impact at t = " + (float) meeting[0] + " s: the spheres"
-                        + " passed through each other between two steps of " + step + " s"
-                        + " (tunnelling); the swept test finds it");
-            }
-            out.println(HEADER);
-            out.println(recorder.row);
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        float m1 = options.positiveFloat(M1);
+        float m2 = options.positiveFloat(M2);
+        Vector3f p1 = CollisionOptions.requiredVector(options, P1, COMMAND);
+        Vector3f p2 = CollisionOptions.requiredVector(options, P2, COMMAND);
+        Vector3f v1 = CollisionOptions.requiredVector(options, V1, COMMAND);
+        Vector3f v2 = CollisionOptions.requiredVector(options, V2, COMMAND);
+        float r1 = options.positiveFloat(R1);
+        float r2 = options.positiveFloat(R2);
+        float e = CollisionOptions.restitution(options, RESTITUTION, COMMAND);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        Detection detection = CollisionOptions.detection(options, false, COMMAND);
+
+        double[] meeting = meeting(p1, p2, v1, v2, r1 + r2);
+        int steps = (int) Math.min(CollisionOptions.MAX_STEPS,
+                Math.ceil(meeting[1] / step) + 1.0);
+        if (meeting[0] / step > CollisionOptions.MAX_STEPS) {
+            throw new UsageException(TPF + ": the spheres meet at t = " + (float) meeting[0]
+                    + " s, more than " + CollisionOptions.MAX_STEPS + " steps of " + step
+                    + " s away");
         }
+        Recorder recorder = simulate(m1, m2, p1, p2, v1, v2, r1, r2, e, step, detection,
+                steps);
+        if (!recorder.done) {
+            throw new UsageException(CollisionOptions.DETECTION + ": the overlap test"
+                    + " missed the impact at t = " + (float) meeting[0] + " s: the spheres"
+                    + " passed through each other between two steps of " + step + " s"
+                    + " (tunnelling); the swept test finds it");
+        }
+        out.println(HEADER);
+        out.println(recorder.row);
+        return 0;
     }
 
     /** Records the first resolved impact. */

@@ -202,6 +202,45 @@ final class CommandSupport {
                 + "; choose a smaller step");
     }
 
+    /** A command's work once its options are parsed. */
+    interface ParsedCommand {
+        /**
+         * Run with parsed options.
+         *
+         * @param options the parsed options (not null)
+         * @return the exit code
+         * @throws UsageException for a bad command line, reported as one line
+         */
+        int run(Options options);
+    }
+
+    /**
+     * Run a command the way every subcommand runs: parse the arguments, print the help if it
+     * was asked for, else run the command; a bad command line is one line on err and
+     * {@link UsageException#EXIT_CODE}.
+     *
+     * @param command the command's full name, e.g. "particle-lab aim" (not null)
+     * @param options the command's declared options (not null)
+     * @param args the arguments after the command's name (not null)
+     * @param out where the help goes (not null)
+     * @param err where the error line goes (not null)
+     * @param body the command proper (not null)
+     * @return the exit code
+     */
+    static int execute(String command, Options options, String[] args, PrintStream out,
+            PrintStream err, ParsedCommand body) {
+        try {
+            options.parse(args);
+            if (options.isHelpRequested()) {
+                out.print(options.help());
+                return 0;
+            }
+            return body.run(options);
+        } catch (UsageException problem) {
+            return reportUsage(command, problem, err);
+        }
+    }
+
     /**
      * Print a bad command line as one line on err.
      *

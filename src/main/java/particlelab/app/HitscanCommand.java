@@ -87,52 +87,48 @@ public final class HitscanCommand {
      * @return the exit code: 0 on success, 2 on a bad command line
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            float distance = options.positiveFloat(DISTANCE);
-            float speed = options.positiveFloat(SPEED);
-            float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
-            float radius = options.positiveFloat(RADIUS, DEFAULT_RADIUS_METRES);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            double steps = distance / ((double) speed * step);
-            if (steps > AimCommand.MAX_STEPS_PER_SHOT) {
-                throw new UsageException(TPF + ": a step of " + step + " s needs d/(v*h) = "
-                        + steps + " steps to reach d=" + distance + " m at v=" + speed
-                        + " m/s, more than the limit " + AimCommand.MAX_STEPS_PER_SHOT
-                        + "; use a larger " + TPF + " or " + SPEED + ", or a smaller "
-                        + DISTANCE);
-            }
-            // The decimals the user typed, not their floats: g = 9.8, not 9.800000190734863.
-            double formula = Hitscan.formulaDrop(typed(gravity), typed(distance), typed(speed));
-            ParticleIntegrator integrator = CommandSupport.integrator(
-                    new Vector3f(0f, -gravity, 0f), 0f, 0f, 0f);
-            Hitscan range = new Hitscan(integrator, step, AimCommand.MAX_STEPS_PER_SHOT + 1);
-            TargetImpact impact = new TargetImpact();
-            boolean reached;
-            try {
-                reached = range.fireAtDisc(speed, distance, radius, impact);
-            } catch (NonFiniteStepException nonFinite) {
-                throw CommandSupport.blewUp(step, "during the projectile's flight",
-                        Float.POSITIVE_INFINITY);
-            }
-            if (!reached || !Double.isFinite(impact.getDrop())) {
-                throw new UsageException(DISTANCE + ": the projectile did not reach the target"
-                        + " at d=" + distance + " m at v=" + speed + " m/s within "
-                        + AimCommand.MAX_STEPS_PER_SHOT + " steps of " + step + " s (float x"
-                        + " stopped growing); choose a larger " + TPF);
-            }
-            out.println(HEADER);
-            out.println(speed + "," + distance + "," + impact.getTimeSeconds() + "," + formula
-                    + "," + impact.getDrop() + "," + impact.isHit());
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
+
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        float distance = options.positiveFloat(DISTANCE);
+        float speed = options.positiveFloat(SPEED);
+        float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
+        float radius = options.positiveFloat(RADIUS, DEFAULT_RADIUS_METRES);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        double steps = distance / ((double) speed * step);
+        if (steps > AimCommand.MAX_STEPS_PER_SHOT) {
+            throw new UsageException(TPF + ": a step of " + step + " s needs d/(v*h) = "
+                    + steps + " steps to reach d=" + distance + " m at v=" + speed
+                    + " m/s, more than the limit " + AimCommand.MAX_STEPS_PER_SHOT
+                    + "; use a larger " + TPF + " or " + SPEED + ", or a smaller "
+                    + DISTANCE);
         }
+        // The decimals the user typed, not their floats: g = 9.8, not 9.800000190734863.
+        double formula = Hitscan.formulaDrop(typed(gravity), typed(distance), typed(speed));
+        ParticleIntegrator integrator = CommandSupport.integrator(
+                new Vector3f(0f, -gravity, 0f), 0f, 0f, 0f);
+        Hitscan range = new Hitscan(integrator, step, AimCommand.MAX_STEPS_PER_SHOT + 1);
+        TargetImpact impact = new TargetImpact();
+        boolean reached;
+        try {
+            reached = range.fireAtDisc(speed, distance, radius, impact);
+        } catch (NonFiniteStepException nonFinite) {
+            throw CommandSupport.blewUp(step, "during the projectile's flight",
+                    Float.POSITIVE_INFINITY);
+        }
+        if (!reached || !Double.isFinite(impact.getDrop())) {
+            throw new UsageException(DISTANCE + ": the projectile did not reach the target"
+                    + " at d=" + distance + " m at v=" + speed + " m/s within "
+                    + AimCommand.MAX_STEPS_PER_SHOT + " steps of " + step + " s (float x"
+                    + " stopped growing); choose a larger " + TPF);
+        }
+        out.println(HEADER);
+        out.println(speed + "," + distance + "," + impact.getTimeSeconds() + "," + formula
+                + "," + impact.getDrop() + "," + impact.isHit());
+        return 0;
     }
 
     /** The shortest decimal that reads back as the float, as a double. */

@@ -114,36 +114,32 @@ public final class RotateCommand {
      * @return the exit code: 0 on success, 2 on a bad command line
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            options.string(OMEGA);
-            Vector3f omega = options.vector(OMEGA, Vector3f.ZERO);
-            Inertia inertia = inertia(options.vector(INERTIA, new Vector3f(1f, 1f, 1f)));
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            options.exactlyOneOf(STEPS, DURATION);
-            int steps = options.has(STEPS)
-                    ? options.intInRange(STEPS, 0, 0, CollisionOptions.MAX_STEPS)
-                    : CollisionOptions.stepsFor(DURATION, options.positiveFloat(DURATION),
-                            step);
-            Orientation orientation = Orientation.values()[indexOf(ORIENTATION_WORDS,
-                    options.choice(ORIENTATION, ORIENTATION_WORDS[0], ORIENTATION_WORDS))];
-            Angular angular = Angular.values()[indexOf(ANGULAR_WORDS,
-                    options.choice(ANGULAR, ANGULAR_WORDS[0], ANGULAR_WORDS))];
-            boolean gyroscopic = "on".equals(options.choice(GYROSCOPIC, "on", "on", "off"));
-            RotationIntegrator integrator =
-                    new RotationIntegrator(orientation, angular, gyroscopic);
-            boolean steady = !gyroscopic || inertia.isSteadySpin(omega);
-            spin(integrator, inertia, omega, steady, step, steps, null);
-            spin(integrator, inertia, omega, steady, step, steps, out);
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
-        }
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
+
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        options.string(OMEGA);
+        Vector3f omega = options.vector(OMEGA, Vector3f.ZERO);
+        Inertia inertia = inertia(options.vector(INERTIA, new Vector3f(1f, 1f, 1f)));
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        options.exactlyOneOf(STEPS, DURATION);
+        int steps = options.has(STEPS)
+                ? options.intInRange(STEPS, 0, 0, CollisionOptions.MAX_STEPS)
+                : CollisionOptions.stepsFor(DURATION, options.positiveFloat(DURATION),
+                        step);
+        Orientation orientation = Orientation.values()[indexOf(ORIENTATION_WORDS,
+                options.choice(ORIENTATION, ORIENTATION_WORDS[0], ORIENTATION_WORDS))];
+        Angular angular = Angular.values()[indexOf(ANGULAR_WORDS,
+                options.choice(ANGULAR, ANGULAR_WORDS[0], ANGULAR_WORDS))];
+        boolean gyroscopic = "on".equals(options.choice(GYROSCOPIC, "on", "on", "off"));
+        RotationIntegrator integrator =
+                new RotationIntegrator(orientation, angular, gyroscopic);
+        boolean steady = !gyroscopic || inertia.isSteadySpin(omega);
+        spin(integrator, inertia, omega, steady, step, steps, null);
+        spin(integrator, inertia, omega, steady, step, steps, out);
+        return 0;
     }
 
     /** The moments from --inertia, as a usage error when no solid body has them. */

@@ -105,49 +105,45 @@ public final class TrajectoryCommand {
      * @return the exit code: 0 on success, 2 on a bad command line
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            Vector3f p0 = options.vector(P0, Vector3f.ZERO);
-            Vector3f v0 = options.vector(V0, new Vector3f(10f, 10f, 0f));
-            float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
-                    Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
-            Vector3f gravity = options.vector(G, new Vector3f(0f, -Gravity.STANDARD_G, 0f));
-            float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
-            float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
-            float thrust = options.nonNegativeFloat(THRUST, 0f);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            options.exactlyOneOf(STEPS, DURATION, UNTIL_GROUND);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
 
-            ParticleIntegrator integrator =
-                    CommandSupport.integrator(gravity, linearDrag, quadraticDrag, thrust);
-            Particle start = new Particle(p0, v0, mass);
-            int steps;
-            if (options.has(STEPS)) {
-                steps = options.intInRange(STEPS, 0, 0, MAX_STEPS);
-            } else if (options.has(DURATION)) {
-                steps = stepsFor(options.positiveFloat(DURATION), step);
-            } else {
-                if (p0.y < 0f) {
-                    throw new UsageException(P0 + ": with " + UNTIL_GROUND + " the start must"
-                            + " be at or above the ground (y >= 0), but was " + p0.x + ","
-                            + p0.y + "," + p0.z);
-                }
-                steps = MAX_STEPS;
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        Vector3f p0 = options.vector(P0, Vector3f.ZERO);
+        Vector3f v0 = options.vector(V0, new Vector3f(10f, 10f, 0f));
+        float mass = options.floatAtLeast(MASS, CommandSupport.DEFAULT_MASS_KG,
+                Particle.MIN_MASS_KG, "the smallest mass whose 1/m is a finite float");
+        Vector3f gravity = options.vector(G, new Vector3f(0f, -Gravity.STANDARD_G, 0f));
+        float linearDrag = options.nonNegativeFloat(LINEAR_DRAG, 0f);
+        float quadraticDrag = options.nonNegativeFloat(QUADRATIC_DRAG, 0f);
+        float thrust = options.nonNegativeFloat(THRUST, 0f);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        options.exactlyOneOf(STEPS, DURATION, UNTIL_GROUND);
+
+        ParticleIntegrator integrator =
+                CommandSupport.integrator(gravity, linearDrag, quadraticDrag, thrust);
+        Particle start = new Particle(p0, v0, mass);
+        int steps;
+        if (options.has(STEPS)) {
+            steps = options.intInRange(STEPS, 0, 0, MAX_STEPS);
+        } else if (options.has(DURATION)) {
+            steps = stepsFor(options.positiveFloat(DURATION), step);
+        } else {
+            if (p0.y < 0f) {
+                throw new UsageException(P0 + ": with " + UNTIL_GROUND + " the start must"
+                        + " be at or above the ground (y >= 0), but was " + p0.x + ","
+                        + p0.y + "," + p0.z);
             }
-            checkStepMoves(p0, v0, step);
-            int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null);
-            // Only a run that succeeded gets the warning: a blow-up is its one error line.
-            CommandSupport.warnIfUnstable(integrator, start, step, err);
-            fly(integrator, start, step, taken, false, out);
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+            steps = MAX_STEPS;
         }
+        checkStepMoves(p0, v0, step);
+        int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null);
+        // Only a run that succeeded gets the warning: a blow-up is its one error line.
+        CommandSupport.warnIfUnstable(integrator, start, step, err);
+        fly(integrator, start, step, taken, false, out);
+        return 0;
     }
 
     /**

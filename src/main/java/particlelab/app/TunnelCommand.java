@@ -86,40 +86,36 @@ public final class TunnelCommand {
      * @return the exit code: 0 on success, 2 on a bad command line
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return 0;
-            }
-            float speed = options.positiveFloat(SPEED);
-            float radius = options.positiveFloat(RADIUS);
-            float thickness = options.positiveFloat(THICKNESS);
-            float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
-            Detection detection = CollisionOptions.detection(options, true, COMMAND);
-            if (!options.has(SHOTS)) {
-                throw new UsageException(SHOTS + ": is required, a whole number from 1 to "
-                        + MAX_SHOTS + " (see " + COMMAND + " " + Options.HELP + ")");
-            }
-            int shots = options.intInRange(SHOTS, 1, 1, MAX_SHOTS);
-            int seed = options.intInRange(SEED, DEFAULT_SEED, Integer.MIN_VALUE,
-                    Integer.MAX_VALUE);
-            double flight = 2.0 * radius + thickness + 3.0 * speed * (double) step;
-            if (flight / ((double) speed * step) > CollisionOptions.MAX_STEPS) {
-                throw new UsageException(SPEED + ": a shot at " + speed + " m/s would take more"
-                        + " than " + CollisionOptions.MAX_STEPS + " steps to cross the wall");
-            }
-            ThinWall wall = new ThinWall(Vector3f.UNIT_X, 0f, thickness);
-            int hits = TunnelShots.fire(wall, speed, radius, step, detection, shots,
-                    new Random(seed));
-            double predicted = detection == Detection.OVERLAP
-                    ? wall.overlapMissProbability(radius, speed, step) : 0.0;
-            out.println(HEADER);
-            out.println(shots + "," + hits + "," + (shots - hits) + "," + predicted);
-            return 0;
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                parsed -> runParsed(parsed, out, err));
+    }
+
+    /** The command proper, once the options are parsed and no help was asked for. */
+    private static int runParsed(Options options, PrintStream out, PrintStream err) {
+        float speed = options.positiveFloat(SPEED);
+        float radius = options.positiveFloat(RADIUS);
+        float thickness = options.positiveFloat(THICKNESS);
+        float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
+        Detection detection = CollisionOptions.detection(options, true, COMMAND);
+        if (!options.has(SHOTS)) {
+            throw new UsageException(SHOTS + ": is required, a whole number from 1 to "
+                    + MAX_SHOTS + " (see " + COMMAND + " " + Options.HELP + ")");
         }
+        int shots = options.intInRange(SHOTS, 1, 1, MAX_SHOTS);
+        int seed = options.intInRange(SEED, DEFAULT_SEED, Integer.MIN_VALUE,
+                Integer.MAX_VALUE);
+        double flight = 2.0 * radius + thickness + 3.0 * speed * (double) step;
+        if (flight / ((double) speed * step) > CollisionOptions.MAX_STEPS) {
+            throw new UsageException(SPEED + ": a shot at " + speed + " m/s would take more"
+                    + " than " + CollisionOptions.MAX_STEPS + " steps to cross the wall");
+        }
+        ThinWall wall = new ThinWall(Vector3f.UNIT_X, 0f, thickness);
+        int hits = TunnelShots.fire(wall, speed, radius, step, detection, shots,
+                new Random(seed));
+        double predicted = detection == Detection.OVERLAP
+                ? wall.overlapMissProbability(radius, speed, step) : 0.0;
+        out.println(HEADER);
+        out.println(shots + "," + hits + "," + (shots - hits) + "," + predicted);
+        return 0;
     }
 }
