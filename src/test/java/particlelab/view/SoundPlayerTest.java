@@ -16,11 +16,11 @@ import com.jme3.audio.AudioSource;
 import java.lang.reflect.Proxy;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import org.junit.jupiter.api.Test;
 import particlelab.Allocations;
+import particlelab.LogRecords;
 
 class SoundPlayerTest {
 
@@ -87,33 +87,9 @@ class SoundPlayerTest {
 
     @Test
     void everySoundIsLoggedAtFineLevel() {
-        List<LogRecord> records = new ArrayList<>();
-        Handler recorder = new Handler() {
-            @Override
-            public void publish(LogRecord record) {
-                records.add(record);
-            }
-
-            @Override
-            public void flush() {
-            }
-
-            @Override
-            public void close() {
-            }
-        };
-        recorder.setLevel(Level.ALL);
-        Level oldLevel = SoundLog.LOGGER.getLevel();
-        SoundLog.LOGGER.setLevel(Level.FINE);
-        SoundLog.LOGGER.setUseParentHandlers(false);
-        SoundLog.LOGGER.addHandler(recorder);
-        try {
-            new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE).play(SoundCue.DESTROY, 1f);
-        } finally {
-            SoundLog.LOGGER.removeHandler(recorder);
-            SoundLog.LOGGER.setUseParentHandlers(true);
-            SoundLog.LOGGER.setLevel(oldLevel);
-        }
+        List<LogRecord> records = LogRecords.during(SoundLog.LOGGER, Level.FINE,
+                () -> new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
+                        .play(SoundCue.DESTROY, 1f));
         assertEquals(1, records.size());
         assertEquals(Level.FINE, records.get(0).getLevel());
         assertEquals("sound: destroy vol 1.00 (no audio device)", records.get(0).getMessage());
