@@ -1,10 +1,8 @@
 package particlelab.accuracy;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -13,7 +11,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -41,15 +38,7 @@ class CollisionSectionTest {
 
     @Test
     void writesEveryFileAndAppendsToIndex() throws IOException {
-        for (String name : CollisionSection.FILES) {
-            Path file = folder.resolve(name);
-            assertTrue(Files.isRegularFile(file) && Files.size(file) > 0, "missing " + name);
-            if (name.endsWith(".png")) {
-                BufferedImage image = ImageIO.read(file.toFile());
-                assertNotNull(image, name + " is not a readable PNG");
-                assertTrue(image.getWidth() >= Charts.WIDTH, name + " is too small");
-            }
-        }
+        ReportFiles.assertWritten(folder, CollisionSection.FILES);
         String index = read("index.md");
         assertTrue(index.startsWith(EARLIER), "the earlier sections were overwritten");
         assertTrue(index.contains(CollisionSection.HEADING + "\n"));

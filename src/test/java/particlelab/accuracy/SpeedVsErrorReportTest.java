@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -15,7 +14,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -36,16 +34,7 @@ class SpeedVsErrorReportTest {
 
     @Test
     void tinyReportWritesEveryFileItPromises() throws IOException {
-        for (String name : SpeedVsErrorReport.FILES) {
-            Path file = folder.resolve(name);
-            assertTrue(Files.isRegularFile(file), "missing " + name);
-            assertTrue(Files.size(file) > 0, "empty " + name);
-            if (name.endsWith(".png")) {
-                BufferedImage image = ImageIO.read(file.toFile());
-                assertNotNull(image, name + " is not a readable PNG");
-                assertTrue(image.getWidth() >= Charts.WIDTH, name + " is too small");
-            }
-        }
+        ReportFiles.assertWritten(folder, SpeedVsErrorReport.FILES);
         String index = read("index.md");
         for (String name : SpeedVsErrorReport.FILES) {
             if (name.endsWith(".png")) {
