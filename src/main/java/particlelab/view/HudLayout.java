@@ -7,7 +7,10 @@ import java.util.List;
  * Where the HUD's text goes on a window of a given size: pure arithmetic on the window's size
  * and the text's measured size, so it is tested without rendering. Top to bottom: the title,
  * the body (equations and live numbers), the warning band (kept even when empty, so the scene
- * does not jump when a warning comes and goes), the scene, and the footer at the bottom. The
+ * does not jump when a warning comes and goes), the scene, and the footer at the bottom. Two
+ * optional slots: a side panel down the right edge, between the title and the footer (the
+ * body, warning and scene then stay left of it), and a graph in the scene's top right corner.
+ * Each is asked for by its size at HUD scale 1 and is empty when not asked for. The
  * help overlay covers everything below the title and is set in columns, its first section (the
  * demo's own keys) first; it shrinks its text until every column fits the window.
  *
@@ -39,6 +42,10 @@ public final class HudLayout {
     public static final float MAX_SCALE = 4f;
     private static final String CONTINUATION = "    ";
     private static final float HELP_SHRINK = 0.92f;
+    /** The largest share of the window's width the side panel takes. */
+    private static final float MAX_PANEL_SHARE = 0.4f;
+    /** The largest share of the scene's width and height the graph takes. */
+    private static final float MAX_GRAPH_SHARE = 0.45f;
 
     private final TextMeasure measure;
     private final ScreenRect window = new ScreenRect();
@@ -48,6 +55,8 @@ public final class HudLayout {
     private final ScreenRect footer = new ScreenRect();
     private final ScreenRect scene = new ScreenRect();
     private final ScreenRect helpPanel = new ScreenRect();
+    private final ScreenRect sidePanel = new ScreenRect();
+    private final ScreenRect graph = new ScreenRect();
     private final List<ScreenRect> helpColumns = new ArrayList<>();
     private final List<String> helpColumnTexts = new ArrayList<>();
     private float scale = 1f;
@@ -55,6 +64,11 @@ public final class HudLayout {
     private int bodyLines = 1;
     private String titleText = "";
     private String footerText = "";
+    /** The side panel's width at HUD scale 1 (pixels; 0: no panel). */
+    private float panelWidth;
+    /** The graph's size at HUD scale 1 (pixels; 0: no graph). */
+    private float graphWidth;
+    private float graphHeight;
 
     /**
      * Create a layout.
@@ -102,12 +116,17 @@ public final class HudLayout {
         window.set(0f, 0f, width, height);
         scale = hudScale;
         float margin = getMargin();
-        float textWidth = width - 2f * margin;
+        float titleWidth = width - 2f * margin;
 
-        titleText = wrap(titleLine, getTitleSize(), textWidth);
+        titleText = wrap(titleLine, getTitleSize(), titleWidth);
         float titleHeight = countLines(titleText) * measure.lineHeight(getTitleSize());
         title.set(margin, height - margin - titleHeight,
                 measure.width(titleText, getTitleSize()), titleHeight);
+
+        float panelPixels = panelWidth <= 0f ? 0f
+                : Math.min(panelWidth * scale, MAX_PANEL_SHARE * width);
+        float leftWidth = width - panelPixels;
+        float textWidth = leftWidth - 2f * margin;
 
         float bodyLineHeight = measure.lineHeight(getBodySize());
         String wrappedBody = wrap(bodyText, getBodySize(), textWidth);
@@ -120,14 +139,71 @@ public final class HudLayout {
         warning.set(margin, body.getY() - 0.3f * bodyLineHeight - warningHeight, textWidth,
                 warningHeight);
 
-        footerText = wrap(footerLine, getFooterSize(), textWidth);
+        footerText = wrap(footerLine, getFooterSize(), titleWidth);
         float footerHeight = countLines(footerText) * measure.lineHeight(getFooterSize());
         footer.set(margin, margin, measure.width(footerText, getFooterSize()), footerHeight);
 
         float gap = 0.5f * margin;
-        scene.set(0f, footer.getTop() + gap, width,
+        scene.set(0f, footer.getTop() + gap, leftWidth,
                 warning.getY() - gap - (footer.getTop() + gap));
+        if (panelPixels > 0f) {
+            float panelBottom = footer.getTop() + gap;
+            sidePanel.set(leftWidth, panelBottom, panelPixels - margin,
+                    title.getY() - gap - panelBottom);
+        } else {
+            sidePanel.set(0f, 0f, 0f, 0f);
+        }
+        if (graphWidth > 0f && graphHeight > 0f) {
+            float graphW = Math.min(graphWidth * scale, MAX_GRAPH_SHARE * scene.getWidth());
+            float graphH = Math.min(graphHeight * scale, MAX_GRAPH_SHARE * scene.getHeight());
+            graph.set(scene.getRight() - margin - graphW, scene.getTop() - graphH, graphW,
+                    graphH);
+        } else {
+            graph.set(0f, 0f, 0f, 0f);
+        }
         layOutHelp(helpText);
+    }
+
+    /**
+     * Ask for a side panel, or none; it takes effect at the next {@link #layOut}.
+     *
+     * @param widthAtScaleOne the panel's width at HUD scale 1 (in pixels, &ge;0; 0: no panel);
+     *     the layout gives it at most {@value #MAX_PANEL_SHARE} of the window's width
+     */
+    public void setPanelWidth(float widthAtScaleOne) {
+        if (!(widthAtScaleOne >= 0f && widthAtScaleOne < Float.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("panel width " + widthAtScaleOne
+                    + " must be finite and >= 0");
+        }
+        panelWidth = widthAtScaleOne;
+    }
+
+    /**
+     * Ask for a graph in the scene's top right corner, or none; it takes effect at the next
+     * {@link #layOut}.
+     *
+     * @param widthAtScaleOne the graph's width at HUD scale 1 (in pixels, &ge;0; 0: no graph)
+     * @param heightAtScaleOne its height at HUD scale 1 (in pixels, &ge;0; 0: no graph); the
+     *     layout gives it at most {@value #MAX_GRAPH_SHARE} of the scene's width and height
+     */
+    public void setGraphSize(float widthAtScaleOne, float heightAtScaleOne) {
+        if (!(widthAtScaleOne >= 0f && widthAtScaleOne < Float.POSITIVE_INFINITY
+                && heightAtScaleOne >= 0f && heightAtScaleOne < Float.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("graph size " + widthAtScaleOne + "x"
+                    + heightAtScaleOne + " must be finite and >= 0");
+        }
+        graphWidth = widthAtScaleOne;
+        graphHeight = heightAtScaleOne;
+    }
+
+    /** @return the side panel (live, do not modify; empty when none was asked for) */
+    public ScreenRect getSidePanel() {
+        return sidePanel;
+    }
+
+    /** @return the graph's rectangle (live, do not modify; empty when none was asked for) */
+    public ScreenRect getGraph() {
+        return graph;
     }
 
     /**

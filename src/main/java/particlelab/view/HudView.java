@@ -349,9 +349,9 @@ public final class HudView {
         }
     }
 
-    /** Set a text wrapped to the HUD's width, if it differs from what is shown. */
+    /** Set a text wrapped to the body's width, if it differs from what is shown. */
     private boolean setWrapped(BitmapText target, CharSequence text, float size) {
-        float maxWidth = screenWidth - 2f * layout.getMargin();
+        float maxWidth = layout.getBody().getWidth();
         if (measure.width(text, size) <= maxWidth) {
             return set(target, text);
         }

@@ -64,6 +64,43 @@ class HudLayoutTest {
     }
 
     @ParameterizedTest
+    @CsvSource({"1024, 768", "1280, 720", "1920, 1080", "3840, 2160"})
+    void sidePanelAndGraphTakeTheirOwnPlaceAndTheTextWrapsLeftOfThePanel(int width,
+            int height) {
+        HudLayout layout = new HudLayout(MONO);
+        layout.setPanelWidth(320f);
+        layout.setGraphSize(360f, 200f);
+        layout.layOut(width, height, HudLayout.scaleFor(width, height), "3.  Drag", BODY,
+                "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo",
+                help(40));
+        ScreenRect panel = layout.getSidePanel();
+        ScreenRect graph = layout.getGraph();
+        assertFalse(panel.isEmpty());
+        assertFalse(graph.isEmpty());
+        assertTrue(layout.getWindow().contains(panel), panel.toString());
+        assertTrue(layout.getScene().contains(graph), graph + " in " + layout.getScene());
+        for (ScreenRect text : List.of(layout.getTitle(), layout.getBody(),
+                layout.getWarning(), layout.getFooter())) {
+            assertFalse(text.intersects(panel), text + " over the panel " + panel);
+            assertFalse(text.intersects(graph), text + " over the graph " + graph);
+        }
+        assertFalse(layout.getScene().intersects(panel), "the scene runs under the panel");
+        // The body wraps to its own width, left of the panel.
+        assertTrue(MONO.width(layout.wrap(BODY, layout.getBodySize(),
+                layout.getBody().getWidth()), layout.getBodySize())
+                <= layout.getBody().getWidth());
+
+        layout.setPanelWidth(0f);
+        layout.setGraphSize(0f, 0f);
+        layout.layOut(width, height, HudLayout.scaleFor(width, height), "3.  Drag", BODY,
+                "footer", help(40));
+        assertTrue(layout.getSidePanel().isEmpty());
+        assertTrue(layout.getGraph().isEmpty());
+        assertEquals(width, layout.getScene().getWidth(), 0f, "no panel: the scene is as wide"
+                + " as the window");
+    }
+
+    @ParameterizedTest
     @CsvSource({"1024, 768", "1280, 720", "1920, 1080", "3840, 2160", "640, 360"})
     void helpFitsInColumnsBelowTheTitleWithTheDemosKeysFirst(int width, int height) {
         HudLayout layout = new HudLayout(MONO);
