@@ -142,6 +142,25 @@ public final class BulkScene {
     }
 
     /**
+     * Step every {@link Particle} once as {@link #stepSharedEach()} does, asking before each
+     * step for its stability regime as the demos' warnings do: the step plus its bookkeeping.
+     *
+     * @return the worst regime's ordinal, so the question is not dropped
+     */
+    public int stepSharedEachWithRegime() {
+        if (objectSteps == STEPS_PER_LAUNCH) {
+            relaunchObjects();
+        }
+        ++objectSteps;
+        int worst = 0;
+        for (int i = 0; i < count; ++i) {
+            worst = Math.max(worst, integrator.regime(objects[i], STEP_SECONDS).ordinal());
+            integrator.step(objects[i], STEP_SECONDS);
+        }
+        return worst;
+    }
+
+    /**
      * Step the packed arrays once with the integrator's batch form.
      *
      * @return something the caller must consume

@@ -90,6 +90,24 @@ public final class OneParticleMixScene {
     }
 
     /**
+     * Relaunch the {@link Particle} and fly it through the shared integrator, asking before
+     * every step for its stability regime as the demos' warnings do: the step plus its
+     * bookkeeping.
+     *
+     * @return the worst regime's ordinal over the flight, so the question is not dropped
+     */
+    public int flySharedWithRegime() {
+        particle.position.set(0f, 0f, 0f);
+        particle.velocity.set(LAUNCH_X, LAUNCH_Y, LAUNCH_Z);
+        int worst = 0;
+        for (int n = 0; n < STEPS_PER_LAUNCH; ++n) {
+            worst = Math.max(worst, integrator.regime(particle, STEP_SECONDS).ordinal());
+            integrator.step(particle, STEP_SECONDS);
+        }
+        return worst;
+    }
+
+    /**
      * Relaunch the primitive loop's particle and fly it.
      *
      * @return its position after the flight (live, length 3; the velocity follows in
