@@ -125,6 +125,9 @@ final class BenchmarkStudy {
         progress.advance();
         for (int count : config.particleCounts()) {
             progress.phase("benchmarks: " + mix.id() + ", " + count + " particles");
+            // the last scene's particles (up to 10^6 of each kind) are garbage now: collect
+            // them here rather than inside a measured round
+            System.gc();
             BulkScene scene = new BulkScene(mix, count);
             add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_LECTURE, count),
                     meter.measure(units -> scene.stepLectureStyle(), count));

@@ -20,6 +20,8 @@ import java.util.logging.Logger;
 import particlelab.accuracy.ReportConfig;
 import particlelab.demo.DemoState;
 import particlelab.physics.SimulationClock;
+import particlelab.world.StepListener;
+import particlelab.world.World;
 
 /**
  * The report's last section: the share of a 16.7 ms frame that each demo of the
@@ -31,8 +33,8 @@ import particlelab.physics.SimulationClock;
  * contact phases), the stability bookkeeping, the demo's own hooks, trails and moving the
  * views; not the HUD text (rebuilt every {@value DemoState#HUD_REFRESH_SECONDS} s) and not
  * rendering. A scene that is over (every particle landed) is restarted between two frames,
- * outside the timing, so every measured frame simulates. Writes {@value #CSV} and appends its
- * section to {@code index.md}.
+ * outside the timing, so every measured frame simulates; a full garbage collection runs before
+ * each demo's warm-up. Writes {@value #CSV} and appends its section to {@code index.md}.
  */
 public final class PhysicsShare {
 
@@ -191,7 +193,8 @@ public final class PhysicsShare {
                 + "the views), so it is an upper bound on the physics alone; the HUD text "
                 + "(rebuilt every ").append(fix(DemoState.HUD_REFRESH_SECONDS, 1))
                 .append(" s) and rendering are not in it. A scene that is over (every particle "
-                + "landed) is restarted between frames, outside the timing. Share = time / ")
+                + "landed) is restarted between frames, outside the timing, and a full garbage "
+                + "collection runs before each demo. Share = time / ")
                 .append(fix(BUDGET_MS, 1)).append(" ms, the budget of a frame at ")
                 .append(Math.round(1.0 / FRAME_SECONDS)).append(" frames per second. The "
                 + "largest times include whatever the garbage collector or the JIT compiler "
@@ -239,25 +242,38 @@ public final class PhysicsShare {
     private static Row measure(String name, DemoState demo, int warmup, int measured) {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.restart();
+        // the garbage of whatever ran before (the benchmarks) is not this demo's
+        System.gc();
         for (int frame = 0; frame < warmup; ++frame) {
             restartIfOver(demo);
             demo.advance(FRAME_SECONDS);
         }
+        StepCounter counter = new StepCounter();
+        demo.getWorld().addStepListener(counter);
         long totalNanos = 0;
         long longestNanos = 0;
-        long steps = 0;
         for (int frame = 0; frame < measured; ++frame) {
             restartIfOver(demo);
-            long stepsBefore = demo.getWorld().getStepCount();
             long start = System.nanoTime();
             demo.advance(FRAME_SECONDS);
             long elapsed = System.nanoTime() - start;
-            steps += demo.getWorld().getStepCount() - stepsBefore;
             totalNanos += elapsed;
             longestNanos = Math.max(longestNanos, elapsed);
         }
+        demo.getWorld().removeStepListener(counter);
         return new Row(name, demo.getTitle(), demo.countSimulatedParticles(),
-                (double) steps / measured, totalNanos / 1e6 / measured, longestNanos / 1e6);
+                (double) counter.steps / measured, totalNanos / 1e6 / measured,
+                longestNanos / 1e6);
+    }
+
+    /** Counts a world's steps (its step count restarts with the scene). */
+    private static final class StepCounter implements StepListener {
+        private long steps;
+
+        @Override
+        public void afterStep(World world, float stepSeconds) {
+            ++steps;
+        }
     }
 
     private static void restartIfOver(DemoState demo) {
