@@ -54,12 +54,12 @@ public final class ReportCommand {
                 + " demo (run headless), as index.md, CSV files and PNG plots.")
                 .value(OUT, "DIR", "the folder to write (created if missing). Default "
                         + DEFAULT_OUT + ".")
-                .flag(QUICK, "a smaller sweep, in well under a minute.")
+                .flag(QUICK, "a smaller sweep, in about half a minute.")
                 .flag(TINY, "the smallest sweep (a few seconds): every file, rough numbers.")
                 .value(JMH, "FILE", "take the benchmark rows from this benchmarks.csv, written"
                         + " by gradle jmh, instead of timing in-process.")
-                .note("Without " + QUICK + " or " + TINY + " the full report takes about a"
-                        + " minute on 2 cores.")
+                .note("Without " + QUICK + " or " + TINY + " the full report takes about three"
+                        + " minutes on 2 cores.")
                 .note("Exit status: 0 when written; 2 on a bad command line or a folder that"
                         + " cannot be written (checked before the work starts), with one line"
                         + " on stderr; 1 if the demos cannot run headless.");
