@@ -42,8 +42,9 @@ final class MixTargets {
      *
      * @param md the report's text (modified)
      * @param table the benchmark rows (not modified)
+     * @param fromJmh true if the rows come from JMH (forked JVMs), false if timed in-process
      */
-    static void appendTable(StringBuilder md, BenchmarkTable table) {
+    static void appendTable(StringBuilder md, BenchmarkTable table, boolean fromJmh) {
         md.append("### Speed targets for every force mix\n\n");
         md.append("![cost per particle-step against N, one panel per mix](").append(PLOT)
                 .append(")\n\n");
@@ -138,10 +139,12 @@ final class MixTargets {
                 .append(". The primitive loops are written per mix, folded by hand "
                 + "(V ← (1 − h·σ)·V + h·g, one pass per axis when σ is a constant, one pass "
                 + "over the particles with a square root when it depends on |V|) and check "
-                + "nothing; the shared paths refuse to return a NaN or an infinity. The mixes "
-                + "run after the gravity + linear drag rows above, in one JVM, so the shared "
-                + "integrator has seen every mix by then, as in a session that opens several "
-                + "demos.\n\n");
+                + "nothing; the shared paths refuse to return a NaN or an infinity.")
+                .append(fromJmh ? " Each JMH benchmark ran in its own forked JVM, so the "
+                        + "shared integrator saw one mix at a time.\n\n"
+                        : " The mixes run after the gravity + linear drag rows above, in one "
+                        + "JVM, so the shared integrator has seen every mix by then, as in a "
+                        + "session that opens several demos.\n\n");
     }
 
     /**
