@@ -15,6 +15,7 @@ import org.openjdk.jmh.runner.options.CommandLineOptions;
 import org.openjdk.jmh.runner.options.OptionsBuilder;
 import org.openjdk.jmh.runner.options.TimeValue;
 import particlelab.accuracy.BenchmarkTable;
+import particlelab.accuracy.ForceMix;
 
 /**
  * Runs the benchmarks the way {@code org.openjdk.jmh.Main} does (it takes the same options),
@@ -85,22 +86,45 @@ public final class RunBenchmarks {
             BenchmarkParams params = result.getParams();
             String method = params.getBenchmark().substring(
                     params.getBenchmark().lastIndexOf('.') + 1);
-            String kebab = kebab(method);
             double nanos = result.getPrimaryResult().getScore();
             double bytes = allocation(result.getSecondaryResults());
             String particles = params.getParam("particles");
-            String name;
             if (particles != null) {
-                int count = Integer.parseInt(particles);
-                nanos /= count;
-                bytes /= count;
-                name = BenchmarkTable.bulkName(kebab, count);
-            } else {
-                name = kebab;
+                // one invocation steps all N: per particle-step
+                nanos /= Integer.parseInt(particles);
+                bytes /= Integer.parseInt(particles);
             }
-            table.add(new BenchmarkTable.Row(name, nanos, bytes));
+            table.add(new BenchmarkTable.Row(rowName(method, params.getParam("mix"),
+                    particles), nanos, bytes));
         }
         return table;
+    }
+
+    /**
+     * Name a result as the report names its rows. With a force mix ({@link MixBenchmark}):
+     * {@code singlePath} → {@code single/<mix>/<path>}, {@code bulkPath} with N →
+     * {@code bulk/<mix>/<path>/<N>}, {@code objectsPath} → {@code bulk/<mix>/<path>/1000};
+     * without one: {@code bulk/<kebab>/<N>} or the kebab-case method name.
+     */
+    static String rowName(String method, String mix, String particles) {
+        if (mix == null) {
+            return particles == null ? kebab(method)
+                    : BenchmarkTable.bulkName(kebab(method), Integer.parseInt(particles));
+        }
+        int split = 0;
+        while (split < method.length() && !Character.isUpperCase(method.charAt(split))) {
+            ++split;
+        }
+        String scope = method.substring(0, split);
+        String path = kebab(method.substring(split)).replaceFirst("^-", "");
+        ForceMix forces = ForceMix.named(mix);
+        if (particles != null) {
+            return BenchmarkTable.bulkName(forces, path, Integer.parseInt(particles));
+        }
+        if (scope.equals("objects")) {
+            return BenchmarkTable.bulkName(forces, path, MixBenchmark.OBJECTS);
+        }
+        return BenchmarkTable.singleName(forces, path);
     }
 
     private static double allocation(Map<String, Result> secondary) {

@@ -14,7 +14,12 @@ import java.util.Locale;
  * timing loop alike, with the fixed header {@value #HEADER}. Row names:
  * each scheme's {@link Scheme#id()} (one particle), {@value #LECTURE_STYLE} and
  * {@value #PRIMITIVE_LOOP} (one particle), and {@code bulk/KIND/N} for N particles, KIND one of
- * {@value #BULK_LECTURE}, {@value #BULK_OBJECTS}, {@value #BULK_BATCH}, {@value #BULK_PRIMITIVE}.
+ * {@value #BULK_LECTURE}, {@value #BULK_OBJECTS}, {@value #BULK_BATCH}, {@value #BULK_PRIMITIVE}
+ * (gravity + linear drag); then for every {@link ForceMix} {@code single/<mix>/<path>} (one
+ * particle, {@link OneParticleMixScene}) and {@code bulk/<mix>/<path>/<N>} (N particles,
+ * {@link BulkScene}), {@code <path>} one of {@value #PATH_LECTURE}, {@value #PATH_OBJECTS}
+ * ({@code step(Particle, h)} on each particle), {@value #PATH_BATCH} (bulk only) and
+ * {@value #PATH_PRIMITIVE}.
  */
 public final class BenchmarkTable {
 
@@ -32,6 +37,15 @@ public final class BenchmarkTable {
     public static final String BULK_BATCH = "shared-batch";
     /** Bulk: the hand-written primitive loop. */
     public static final String BULK_PRIMITIVE = "primitive-loop";
+
+    /** Path of a mix row: the lecture's allocating Vector3f code. */
+    public static final String PATH_LECTURE = "lecture-style";
+    /** Path of a mix row: Particle objects, one {@code step(Particle, h)} each. */
+    public static final String PATH_OBJECTS = "shared-objects";
+    /** Path of a bulk mix row: {@code ParticleIntegrator.stepPacked} over planar arrays. */
+    public static final String PATH_BATCH = "shared-batch";
+    /** Path of a mix row: the hand-written primitive loop for the mix. */
+    public static final String PATH_PRIMITIVE = "primitive-loop";
 
     private final List<Row> rows = new ArrayList<>();
 
@@ -95,6 +109,29 @@ public final class BenchmarkTable {
      */
     public static String bulkName(String kind, int particles) {
         return "bulk/" + kind + "/" + particles;
+    }
+
+    /**
+     * Name a one-particle benchmark of a force mix.
+     *
+     * @param mix the forces (not null)
+     * @param path one of the {@code PATH_*} paths but {@link #PATH_BATCH} (not null)
+     * @return {@code single/<mix>/<path>}
+     */
+    public static String singleName(ForceMix mix, String path) {
+        return "single/" + mix.id() + "/" + path;
+    }
+
+    /**
+     * Name an N-particle benchmark of a force mix.
+     *
+     * @param mix the forces (not null)
+     * @param path one of the {@code PATH_*} paths (not null)
+     * @param particles N (&gt;0)
+     * @return {@code bulk/<mix>/<path>/<N>}
+     */
+    public static String bulkName(ForceMix mix, String path, int particles) {
+        return "bulk/" + mix.id() + "/" + path + "/" + particles;
     }
 
     /**

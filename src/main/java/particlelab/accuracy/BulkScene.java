@@ -3,24 +3,27 @@ package particlelab.accuracy;
 import com.jme3.math.Vector3f;
 import java.util.Arrays;
 import particlelab.physics.Gravity;
-import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 
 /**
  * The many-particle benchmark scene, shared by the report's in-process timing and the JMH
- * benchmarks so both measure the same thing: N particles of 1 kg under gravity and linear drag
- * (b/m = {@link #LINEAR_RATE}), each launched at a slightly different velocity, held four ways —
- * lecture-style objects, {@link Particle} objects, and packed planar arrays shared by the
- * integrator's batch form and the primitive loop. Each step method advances all N by one step
- * of {@link #STEP_SECONDS} and allocates nothing except the lecture style's own garbage.
+ * benchmarks so both measure the same thing: N particles of 1 kg under gravity and one
+ * {@link ForceMix} (by default {@link ForceMix#LINEAR}, b/m = {@link #LINEAR_RATE}), each
+ * launched at a slightly different velocity, held four ways — lecture-style objects,
+ * {@link Particle} objects, and packed planar arrays shared by the integrator's batch form and
+ * the primitive loop. Each step method advances all N by one step of {@link #STEP_SECONDS} and
+ * allocates nothing except the lecture style's own garbage.
  *
  * <p>Each of the three storages is relaunched after every {@value #STEPS_PER_LAUNCH} of its own
  * steps (from copies of the launch state), so the scene is periodic and no velocity ever decays
  * far: left alone, the horizontal velocities {@code vx·(1 − k·h)ⁿ} become subnormal floats after
  * about 10<sup>4</sup> steps, where x86 arithmetic is 30–40× slower, and a measurement at small
  * N takes far more steps than that. A relaunch costs about one step of all N, once per
- * {@value #STEPS_PER_LAUNCH}.
+ * {@value #STEPS_PER_LAUNCH}. The other mixes stay normal over a flight too: quadratic drag
+ * slows vx at most at c·|V|/m ≤ 0.02·36 = 0.72 /s, so after {@value #STEPS_PER_LAUNCH} steps
+ * vx ≥ 20·(1 − 0.012)¹⁰⁰⁰ ≈ 1e-4 m/s; with thrust σ = (b − k/|V|)/m ≤ b/m, slower than linear
+ * drag alone.
  */
 public final class BulkScene {
 
@@ -31,6 +34,7 @@ public final class BulkScene {
     /** Steps of one storage between relaunches (after them the slowest vx is 5e-3 m/s). */
     public static final int STEPS_PER_LAUNCH = 1000;
 
+    private final ForceMix mix;
     private final int count;
     private final LectureStyleParticle[] lecture;
     private final Particle[] objects;
@@ -42,21 +46,35 @@ public final class BulkScene {
     private int objectSteps;
     /** Steps of the packed arrays, by the batch form and the primitive loop together. */
     private int packedSteps;
-    private final ParticleIntegrator integrator =
-            new ParticleIntegrator(new Gravity(), new LinearDrag(LINEAR_RATE));
+    private final ParticleIntegrator integrator;
     private final Vector3f gravity = new Vector3f(0f, -Gravity.STANDARD_G, 0f);
     private final float[] gravityPerAxis = {0f, -Gravity.STANDARD_G, 0f};
 
     /**
-     * Launch the particles.
+     * Launch the particles under gravity and linear drag b/m = {@link #LINEAR_RATE}.
      *
      * @param count N (&ge;1)
      */
     public BulkScene(int count) {
+        this(ForceMix.LINEAR, count);
+    }
+
+    /**
+     * Launch the particles under gravity and a force mix.
+     *
+     * @param mix the forces (not null)
+     * @param count N (&ge;1)
+     */
+    public BulkScene(ForceMix mix, int count) {
+        if (mix == null) {
+            throw new IllegalArgumentException("force mix must not be null");
+        }
         if (count < 1) {
             throw new IllegalArgumentException("particle count must be >= 1, but was " + count);
         }
+        this.mix = mix;
         this.count = count;
+        integrator = mix.integrator();
         lecture = new LectureStyleParticle[count];
         objects = new Particle[count];
         positions = new float[3 * count];
@@ -85,13 +103,14 @@ public final class BulkScene {
         }
         ++lectureSteps;
         for (int i = 0; i < count; ++i) {
-            lecture[i].step(gravity, LINEAR_RATE, STEP_SECONDS);
+            lecture[i].step(gravity, mix, STEP_SECONDS);
         }
         return lecture;
     }
 
     /**
-     * Step every {@link Particle} once through the shared integrator.
+     * Step every {@link Particle} once through the shared integrator's array form,
+     * {@code step(Particle[], h)}.
      *
      * @return something the caller must consume
      */
@@ -102,6 +121,43 @@ public final class BulkScene {
         ++objectSteps;
         integrator.step(objects, STEP_SECONDS);
         return objects;
+    }
+
+    /**
+     * Step every {@link Particle} once through the shared integrator, one call of
+     * {@code step(Particle, h)} each, as a world steps its bodies. Shares the objects and their
+     * relaunch schedule with {@link #stepSharedObjects()}.
+     *
+     * @return something the caller must consume
+     */
+    public Object stepSharedEach() {
+        if (objectSteps == STEPS_PER_LAUNCH) {
+            relaunchObjects();
+        }
+        ++objectSteps;
+        for (int i = 0; i < count; ++i) {
+            integrator.step(objects[i], STEP_SECONDS);
+        }
+        return objects;
+    }
+
+    /**
+     * Step every {@link Particle} once as {@link #stepSharedEach()} does, asking before each
+     * step for its stability regime as the demos' warnings do: the step plus its bookkeeping.
+     *
+     * @return the worst regime's ordinal, so the question is not dropped
+     */
+    public int stepSharedEachWithRegime() {
+        if (objectSteps == STEPS_PER_LAUNCH) {
+            relaunchObjects();
+        }
+        ++objectSteps;
+        int worst = 0;
+        for (int i = 0; i < count; ++i) {
+            worst = Math.max(worst, integrator.regime(objects[i], STEP_SECONDS).ordinal());
+            integrator.step(objects[i], STEP_SECONDS);
+        }
+        return worst;
     }
 
     /**
@@ -122,9 +178,26 @@ public final class BulkScene {
      */
     public Object stepPrimitiveLoop() {
         relaunchPackedIfDue();
-        PrimitiveLoop.step(positions, velocities, count, gravityPerAxis, LINEAR_RATE,
-                STEP_SECONDS);
+        PrimitiveLoop.step(positions, velocities, count, gravityPerAxis, mix, STEP_SECONDS);
         return positions;
+    }
+
+    /**
+     * Return the scene's forces.
+     *
+     * @return the mix (not null)
+     */
+    public ForceMix mix() {
+        return mix;
+    }
+
+    /**
+     * Return the number of particles.
+     *
+     * @return N (&ge;1)
+     */
+    public int count() {
+        return count;
     }
 
     /**

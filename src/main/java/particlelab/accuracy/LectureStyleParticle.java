@@ -1,6 +1,7 @@
 package particlelab.accuracy;
 
 import com.jme3.math.Vector3f;
+import particlelab.physics.Thrust;
 
 /**
  * The lecture slides' own code style, kept as a benchmark reference only: every step builds
@@ -45,6 +46,33 @@ public final class LectureStyleParticle {
      */
     public void step(Vector3f gravity, float linearDrag, float tpf) {
         Vector3f force = velocity.mult(-linearDrag);
+        Vector3f acceleration = gravity.add(force.divide(massKg));
+        velocity = velocity.add(acceleration.mult(tpf));
+        position = position.add(velocity.mult(tpf));
+    }
+
+    /**
+     * Take one semi-implicit Euler step under gravity and a mix's forces, the slides' way:
+     * each force a new vector, summed with {@code add}. For {@link ForceMix#LINEAR} this is
+     * the same arithmetic as {@link #step(Vector3f, float, float)}.
+     *
+     * <pre>
+     *   force = velocity.mult(−b) + velocity.mult(−c·|V|) + velocity.normalize().mult(k)
+     * </pre>
+     *
+     * @param gravity g (in m/s², not null, not modified)
+     * @param mix the forces besides gravity (not null)
+     * @param tpf the step (in seconds)
+     */
+    public void step(Vector3f gravity, ForceMix mix, float tpf) {
+        Vector3f force = mix.linearDrag() != 0f ? velocity.mult(-mix.linearDrag())
+                : new Vector3f();
+        if (mix.quadraticDrag() != 0f) {
+            force = force.add(velocity.mult(-mix.quadraticDrag() * velocity.length()));
+        }
+        if (mix.thrustNewtons() != 0f && velocity.length() >= Thrust.MIN_SPEED) {
+            force = force.add(velocity.normalize().mult(mix.thrustNewtons()));
+        }
         Vector3f acceleration = gravity.add(force.divide(massKg));
         velocity = velocity.add(acceleration.mult(tpf));
         position = position.add(velocity.mult(tpf));

@@ -41,7 +41,8 @@ public final class SpeedVsErrorReport {
     static {
         List<String> files = new ArrayList<>(Arrays.asList("index.md", "orders.csv",
                 "stability.csv", "benchmarks.csv", "work-precision.csv", "aiming.csv",
-                "hitches.csv", MAIN_PLOT, "stability.png", "bulk.png", "aiming.png"));
+                "hitches.csv", MAIN_PLOT, "stability.png", "bulk.png", MixTargets.PLOT,
+                "aiming.png"));
         for (CanonicalCase scene : CanonicalCase.all()) {
             files.add(workPrecisionPlot(scene));
         }
@@ -277,6 +278,7 @@ public final class SpeedVsErrorReport {
             }
         }
         Charts.save(bulk, folder.resolve("bulk.png"));
+        MixTargets.writePlot(benchmarks, folder);
 
         List<XYChart> aimCharts = new ArrayList<>();
         XYChart byStep = Charts.create("Level shot S = " + num(AimingStudy.DISTANCE)
@@ -370,7 +372,7 @@ public final class SpeedVsErrorReport {
         appendWorkPrecision(md, precision);
         appendOrders(md, precision);
         appendStability(md, stability);
-        appendBenchmarks(md, benchmarks);
+        appendBenchmarks(md, benchmarks, fromJmh);
         appendAiming(md, aiming);
         appendHitches(md, hitches);
         appendRecommendations(md, precision, stability, benchmarks, aiming, hitches);
@@ -525,7 +527,8 @@ public final class SpeedVsErrorReport {
                 .append(num(StabilityMap.CEILING_FACTOR)).append("·m/b.\n\n");
     }
 
-    private void appendBenchmarks(StringBuilder md, BenchmarkTable benchmarks) {
+    private void appendBenchmarks(StringBuilder md, BenchmarkTable benchmarks,
+            boolean fromJmh) {
         md.append("## Benchmarks\n\n");
         BenchmarkTable.Row lecture = benchmarks.find(BenchmarkTable.LECTURE_STYLE);
         BenchmarkTable.Row primitive = benchmarks.find(BenchmarkTable.PRIMITIVE_LOOP);
@@ -595,6 +598,7 @@ public final class SpeedVsErrorReport {
                 + "collector's state (new vectors stored into long-lived particles), so it "
                 + "moves by several times from run to run; the allocation-free forms are "
                 + "steady.\n\n");
+        MixTargets.appendTable(md, benchmarks, fromJmh);
         appendSubnormalLesson(md);
     }
 

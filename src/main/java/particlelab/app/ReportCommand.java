@@ -29,6 +29,8 @@ public final class ReportCommand {
      * always promised: an unwritable {@code --out} is a bad command line.
      */
     public static final int FAILED = UsageException.EXIT_CODE;
+    /** Exit status: the demos could not run in jME's headless context (no report section). */
+    public static final int HEADLESS_FAILED = 1;
 
     private static final String COMMAND = Main.PROGRAM + " " + NAME;
     private static final String OUT = "--out";
@@ -48,18 +50,19 @@ public final class ReportCommand {
         return new Options(COMMAND, "Write the speed-against-error report: the shared Euler"
                 + " integrator against forward Euler, Verlet, midpoint, RK4 and the exact step;"
                 + " work-precision plots, measured orders, the stability map, benchmarks,"
-                + " aiming misses and frame hitches, as index.md, CSV files and PNG plots.")
+                + " aiming misses and frame hitches, and the physics share of a frame for every"
+                + " demo (run headless), as index.md, CSV files and PNG plots.")
                 .value(OUT, "DIR", "the folder to write (created if missing). Default "
                         + DEFAULT_OUT + ".")
-                .flag(QUICK, "a smaller sweep, in well under a minute.")
+                .flag(QUICK, "a smaller sweep, in about half a minute.")
                 .flag(TINY, "the smallest sweep (a few seconds): every file, rough numbers.")
                 .value(JMH, "FILE", "take the benchmark rows from this benchmarks.csv, written"
                         + " by gradle jmh, instead of timing in-process.")
-                .note("Without " + QUICK + " or " + TINY + " the full report takes about a"
-                        + " minute on 2 cores.")
+                .note("Without " + QUICK + " or " + TINY + " the full report takes about three"
+                        + " minutes on 2 cores.")
                 .note("Exit status: 0 when written; 2 on a bad command line or a folder that"
                         + " cannot be written (checked before the work starts), with one line"
-                        + " on stderr.");
+                        + " on stderr; 1 if the demos cannot run headless.");
     }
 
     /**
@@ -68,7 +71,8 @@ public final class ReportCommand {
      * @param args the arguments after "report" (not null)
      * @param out where the summary or help goes (not null)
      * @param err where the progress bar and the error line go (not null)
-     * @return the exit status: {@link #OK}, {@link #FAILED} or {@link UsageException#EXIT_CODE}
+     * @return the exit status: {@link #OK}, {@link #FAILED}, {@link #HEADLESS_FAILED} or
+     *     {@link UsageException#EXIT_CODE}
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
         Options options = options();
@@ -98,18 +102,37 @@ public final class ReportCommand {
             System.setProperty("java.awt.headless", "true");
         }
         long start = System.nanoTime();
+        PhysicsShare share;
         try {
             new SpeedVsErrorReport(ReportConfig.of(size), folder, jmh)
                     .write(err, System.console() != null);
         } catch (IOException failure) {
-            err.println(COMMAND + ": " + OUT + ": could not write to "
-                    + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
-            return FAILED;
+            return unwritable(folder, failure, err);
+        }
+        try {
+            // the demos live in this package, so their section is measured and added here
+            share = PhysicsShare.run(size);
+        } catch (IOException failure) {
+            err.println(COMMAND + ": the demos could not run headless for the physics share: "
+                    + UsageException.reason(failure));
+            return HEADLESS_FAILED;
+        }
+        try {
+            share.write(folder);
+        } catch (IOException failure) {
+            return unwritable(folder, failure, err);
         }
         out.printf("Wrote the speed-vs-error report (%d files) to %s in %.0f s; open index.md%n",
-                SpeedVsErrorReport.FILES.size(), folder.toAbsolutePath(),
+                SpeedVsErrorReport.FILES.size() + PhysicsShare.FILES.size(),
+                folder.toAbsolutePath(),
                 (System.nanoTime() - start) / 1e9);
         return OK;
+    }
+
+    private static int unwritable(Path folder, IOException failure, PrintStream err) {
+        err.println(COMMAND + ": " + OUT + ": could not write to "
+                + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
+        return FAILED;
     }
 
     private static Path path(String option, String text) {

@@ -391,6 +391,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Count the particles this demo simulates, for the report's physics share: by default its
+     * world's bodies or its declared particles, whichever are more. A demo that steps more of
+     * its own (a packed batch) overrides this.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countSimulatedParticles() {
+        return Math.max(particles.size(), world.countBodies());
+    }
+
+    /**
      * Return every key the demo responds to: the shared controls, then the demo's own.
      *
      * @return a new list (not null)

@@ -99,6 +99,24 @@ class SpeedVsErrorReportTest {
     }
 
     @Test
+    void targetsTableHasARowPerMixAndParticleCountWithItsTargets() throws IOException {
+        String index = read("index.md");
+        int start = index.indexOf("### Speed targets for every force mix");
+        assertTrue(start >= 0, "index.md has no targets table");
+        String section = index.substring(start, index.indexOf("\n### ", start + 1));
+        assertTrue(section.contains("](" + MixTargets.PLOT + ")"), section);
+        assertTrue(section.contains("| objects ≤ 2× primitive | objects ≥ 5× faster than "
+                + "lecture | batch ≤ 1.5× primitive |"), section);
+        // the tiny sweep: N = 1 (one particle) and its one bulk count, 1000
+        for (String mix : new String[] {"gravity", "linear", "quadratic", "thrust-linear"}) {
+            for (int count : new int[] {1, 1000}) {
+                String row = "\n| " + mix + " | " + count + " | ";
+                assertTrue(section.contains(row), "no row" + row.trim() + " in " + section);
+            }
+        }
+    }
+
+    @Test
     void jmhResultsReplaceTheInProcessBenchmarks(@TempDir Path temp) throws IOException {
         Path jmh = temp.resolve("jmh.csv");
         Files.write(jmh, ("benchmark,ns_per_particle_step,bytes_per_step\n"

@@ -24,6 +24,11 @@ class ReportCommandTest {
         for (String name : SpeedVsErrorReport.FILES) {
             assertTrue(Files.isRegularFile(out.resolve(name)), "missing " + name);
         }
+        for (String name : PhysicsShare.FILES) {
+            assertTrue(Files.isRegularFile(out.resolve(name)), "missing " + name);
+        }
+        assertTrue(run.out.contains("(" + (SpeedVsErrorReport.FILES.size()
+                + PhysicsShare.FILES.size()) + " files)"), run.out);
     }
 
     @Test
