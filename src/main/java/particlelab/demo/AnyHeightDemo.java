@@ -56,13 +56,13 @@ public final class AnyHeightDemo extends DemoState {
     private static final float START_HEIGHT = 4f;
     private static final float GRAVITY = Gravity.STANDARD_G;
     private static final int CURVE_POINTS = 96;
-    private static final float CURVE_WIDTH = 0.12f;
+    private static final float CURVE_WIDTH = 0.18f;
     /** Where a shot not fired waits: out of sight (in metres). */
     private static final float PARK_X = -1000f;
     private static final ColorRGBA LOW_COLOR = new ColorRGBA(0.3f, 0.85f, 1f, 1f);
     private static final ColorRGBA HIGH_COLOR = new ColorRGBA(1f, 0.6f, 0.2f, 1f);
     private static final ColorRGBA TARGET_COLOR = new ColorRGBA(1f, 0.3f, 0.25f, 1f);
-    private static final ColorRGBA ENVELOPE_COLOR = new ColorRGBA(0.75f, 0.75f, 0.8f, 0.5f);
+    private static final ColorRGBA ENVELOPE_COLOR = new ColorRGBA(0.85f, 0.85f, 0.95f, 0.8f);
 
     private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
     private final ParticleIntegrator still = new ParticleIntegrator();
@@ -303,8 +303,11 @@ public final class AnyHeightDemo extends DemoState {
                 GRAVITY), 2).append(" m;  range at the gun's height s²/g = ");
         TextFormat.appendFixed(text, LAUNCH_SPEED * LAUNCH_SPEED / GRAVITY, 1).append(" m\n");
         if (!angles.isReachable()) {
-            text.append("OUT OF REACH: the target is above the envelope, no angle reaches it\n")
-                    .append(angles.getExplanation()).append('\n');
+            text.append("OUT OF REACH: the target's y = ");
+            TextFormat.appendFixed(text, targetHeight, 2).append(" m is above the envelope's ");
+            TextFormat.appendFixed(text, LaunchAngles.envelopeHeight(LAUNCH_SPEED,
+                    targetDistance, GRAVITY), 2).append(" m, so s⁴ − g·(g·x² + 2·y·s²) < 0:"
+                    + " no real angle reaches it at this speed\n");
             return;
         }
         appendShot(text, low, angles.getLowRadians());

@@ -12,6 +12,7 @@ import particlelab.aiming.ShotLog;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.view.TextFormat;
@@ -71,8 +72,10 @@ public final class IterativeAimingDemo extends DemoState {
         AimStrategy.BISECTION, AimStrategy.SECANT, AimStrategy.BELIEVABLE};
     /** The mismatched predictor's step (in seconds). */
     private static final float PREDICT_STEP = PREDICT_STEP_MS / 1000f;
-    /** How many attempts the HUD table lists: the latest ones. */
-    private static final int TABLE_ROWS = 5;
+    /** How many attempts the HUD table lists: the latest ones, one column each. */
+    private static final int TABLE_COLUMNS = 8;
+    /** The width of a column (in characters; the font's digits are all one width). */
+    private static final int CELL_CHARACTERS = 10;
     /** A shot still in the air after this long never lands (in seconds). */
     private static final float MAX_FLIGHT_SECONDS = 60f;
     private static final float GRAVITY = Gravity.STANDARD_G;
@@ -116,6 +119,8 @@ public final class IterativeAimingDemo extends DemoState {
     private final Vector3f park = new Vector3f(PARK_X, 0f, 0f);
     private final Vector3f down = new Vector3f(0f, -1f, 0f);
     private final Vector3f launchVelocity = new Vector3f();
+    /** Steps a shot up to its apex, to frame it. */
+    private final Particle apexProbe = new Particle();
     private AimStrategy strategy = AimStrategy.LECTURE;
     private Drag drag = Drag.LINEAR;
     private boolean instant;
@@ -479,14 +484,19 @@ public final class IterativeAimingDemo extends DemoState {
     }
 
     /**
-     * Frame the round's highest shot: the apex of its drag-free parabola {@code vy²/(2g)}
-     * bounds the apex with drag.
+     * Frame the round's highest shot: each shot to be flown is stepped, in the aimer's head,
+     * up to its apex (where vy stops being positive).
      */
     private void frameShots() {
         float highest = 0f;
+        apexProbe.setMass(MASS_KG);
         for (int i = firstFlown; i < plan.size(); ++i) {
-            float vy = plan.getVerticalSpeed(i);
-            highest = Math.max(highest, vy * vy / (2f * GRAVITY));
+            apexProbe.position.zero();
+            apexProbe.velocity.set(plan.getHorizontalSpeed(i), plan.getVerticalSpeed(i), 0f);
+            while (apexProbe.velocity.y > 0f) {
+                aimerIntegrator.step(apexProbe, flyStep);
+            }
+            highest = Math.max(highest, apexProbe.position.y);
         }
         setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest)));
     }
@@ -522,42 +532,66 @@ public final class IterativeAimingDemo extends DemoState {
         return label.toString();
     }
 
-    /** The attempts table: the latest {@link #TABLE_ROWS} attempts known so far. */
+    /**
+     * The attempts table, one column per attempt (the latest {@link #TABLE_COLUMNS} known so
+     * far), one row per quantity: shot, vy, landing, miss, and with the mismatch what the
+     * aimer predicted.
+     */
     private void appendTable(StringBuilder text) {
-        text.append("shot    vy (m/s)    landing (m)    miss (m)");
-        if (mismatch) {
-            text.append("    aimer predicted (m)");
-        }
-        text.append('\n');
         // In instant mode every attempt is known at once; else those fired so far.
         int known = instant ? plan.size() : fired;
-        int first = Math.max(0, known - TABLE_ROWS);
-        if (first > 0) {
-            text.append("  (").append(first).append(" earlier shots not listed)\n");
-        }
+        int first = Math.max(0, known - TABLE_COLUMNS);
+        text.append("shot          ");
         for (int shot = first; shot < known; ++shot) {
-            appendRow(text, shot);
+            int start = text.length();
+            text.append(shot + 1);
+            pad(text, start);
         }
-    }
-
-    private void appendRow(StringBuilder text, int shot) {
-        text.append(shot + 1 < 10 ? "   " : "  ").append(shot + 1).append("    ");
-        TextFormat.appendFixed(text, plan.getVerticalSpeed(shot), 3).append("      ");
-        double landingX = shot < firstFlown ? plan.getLandingX(shot) : flownLanding[shot];
-        if (Double.isNaN(landingX)) {
-            text.append(shot < firstFlown || shot < landed ? "never lands" : "in the air");
-        } else {
-            TextFormat.appendFixed(text, landingX, 2).append("         ");
-            TextFormat.appendFixed(text, landingX - TARGET_DISTANCE, 2);
+        if (first > 0) {
+            text.append("     (").append(first).append(" earlier not listed)");
         }
-        if (shot < firstFlown) {
-            text.append("   (in its head)");
+        text.append("\nvy (m/s)      ");
+        for (int shot = first; shot < known; ++shot) {
+            int start = text.length();
+            TextFormat.appendFixed(text, plan.getVerticalSpeed(shot), 2);
+            pad(text, start);
+        }
+        text.append("\nlanding (m)  ");
+        for (int shot = first; shot < known; ++shot) {
+            appendLanding(text, shot, false);
+        }
+        text.append("\nmiss (m)       ");
+        for (int shot = first; shot < known; ++shot) {
+            appendLanding(text, shot, true);
         }
         if (mismatch) {
-            text.append("    ");
-            TextFormat.appendFixed(text, plan.getLandingX(shot), 2);
+            text.append("\naimer saw (m)");
+            for (int shot = first; shot < known; ++shot) {
+                int start = text.length();
+                TextFormat.appendFixed(text, plan.getLandingX(shot), 2);
+                pad(text, start);
+            }
         }
         text.append('\n');
+    }
+
+    /** One cell: where an attempt landed or its miss; "air" while in flight. */
+    private void appendLanding(StringBuilder text, int shot, boolean miss) {
+        int start = text.length();
+        double landingX = shot < firstFlown ? plan.getLandingX(shot) : flownLanding[shot];
+        if (Double.isNaN(landingX)) {
+            text.append(shot < landed ? "never" : "air");
+        } else {
+            TextFormat.appendFixed(text, miss ? landingX - TARGET_DISTANCE : landingX, 2);
+        }
+        pad(text, start);
+    }
+
+    /** Right-align the cell that starts at start to {@link #CELL_CHARACTERS}. */
+    private static void pad(StringBuilder text, int start) {
+        for (int i = text.length() - start; i < CELL_CHARACTERS; ++i) {
+            text.insert(start, ' ');
+        }
     }
 
     /** Shots used, the instant mode's count, and the mismatch's expected miss. */
@@ -566,8 +600,8 @@ public final class IterativeAimingDemo extends DemoState {
         if (!result.isHit()) {
             text.append("No hit: ").append(result.getExplanation()).append('\n');
         } else if (instant) {
-            text.append("Instant: ").append(attempts).append(" shots searched invisibly in one"
-                    + " frame; the player would have watched ").append(attempts)
+            text.append("Instant: ").append(attempts).append(" shots in one invisible frame,"
+                    + " the last flown; the player would have watched ").append(attempts)
                     .append(" shots, ");
             TextFormat.appendFixed(text, watchSeconds, 1).append(" s of flight\n");
         } else {
@@ -582,7 +616,9 @@ public final class IterativeAimingDemo extends DemoState {
             TextFormat.appendFixed(text, getExpectedMismatchMiss(), 3).append(" m");
             int last = attempts - 1;
             if (last >= 0 && landed == attempts && !Double.isNaN(flownLanding[last])) {
-                text.append(";  the final shot missed by ");
+                text.append(";  the final shot flew ");
+                TextFormat.appendFixed(text, flownLanding[last] - plan.getLandingX(last), 3)
+                        .append(" m past where the aimer saw it, missing by ");
                 TextFormat.appendFixed(text, flownLanding[last] - TARGET_DISTANCE, 3)
                         .append(" m");
             }
