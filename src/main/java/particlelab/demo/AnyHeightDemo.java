@@ -76,6 +76,9 @@ public final class AnyHeightDemo extends DemoState {
     private float targetDistance = START_DISTANCE;
     private float targetHeight = START_HEIGHT;
     private LaunchAngles angles;
+    /** The target the angles were solved for (in metres). */
+    private float solvedDistance = Float.NaN;
+    private float solvedHeight = Float.NaN;
     private DemoParticle target;
     private SurfaceRule targetPlane;
     private CurveView envelope;
@@ -98,6 +101,10 @@ public final class AnyHeightDemo extends DemoState {
         /** Where it crossed the target's distance, above the gun (in metres). */
         float arrivalHeight = Float.NaN;
         double arrivalSeconds = Double.NaN;
+        /** The angle its label and parabola show (in radians; NaN: none). */
+        double shownRadians = Double.NaN;
+        /** The label and parabola must be shown again ({@link #update}). */
+        boolean viewChanged = true;
     }
 
     /** Create the demo. */
@@ -184,7 +191,12 @@ public final class AnyHeightDemo extends DemoState {
      */
     public void fire() {
         stoppedSeconds = -1f;
-        angles = LaunchAngles.solve(LAUNCH_SPEED, targetDistance, targetHeight, GRAVITY);
+        if (angles == null || solvedDistance != targetDistance || solvedHeight != targetHeight) {
+            // Solved again only when the target moved: firing again allocates nothing.
+            angles = LaunchAngles.solve(LAUNCH_SPEED, targetDistance, targetHeight, GRAVITY);
+            solvedDistance = targetDistance;
+            solvedHeight = targetHeight;
+        }
         if (angles.isReachable()) {
             fire(low, angles.getLowRadians());
             fire(high, angles.getHighRadians());
@@ -281,6 +293,24 @@ public final class AnyHeightDemo extends DemoState {
         }
     }
 
+    /**
+     * Show the shots' new angles before the frame: jME rebuilds a text's mesh when its text
+     * changes, which allocates, so this happens here, once per change, and not in the
+     * allocation-free {@link #advance}.
+     */
+    @Override
+    public void update(float tpf) {
+        if (low.viewChanged) {
+            low.viewChanged = false;
+            showAngle(low);
+        }
+        if (high.viewChanged) {
+            high.viewChanged = false;
+            showAngle(high);
+        }
+        super.update(tpf);
+    }
+
     @Override
     protected void onRestart() {
         placeTarget();
@@ -364,11 +394,9 @@ public final class AnyHeightDemo extends DemoState {
         shot.arrived = false;
         shot.arrivalHeight = Float.NaN;
         shot.arrivalSeconds = Double.NaN;
-        StringBuilder label = new StringBuilder(shot.name).append(' ');
-        TextFormat.appendFixed(label, radians * FastMath.RAD_TO_DEG, 1).append('°');
-        relabel(shot.particle, label.toString());
-        if (shot.curve != null) {
-            drawParabola(shot.curve, radians);
+        if (radians != shot.shownRadians) {
+            shot.shownRadians = radians;
+            shot.viewChanged = true;
         }
     }
 
@@ -378,9 +406,26 @@ public final class AnyHeightDemo extends DemoState {
         shot.particle.setHeld(true);
         shot.fired = false;
         shot.arrived = false;
-        relabel(shot.particle, "");
+        if (!Double.isNaN(shot.shownRadians)) {
+            shot.shownRadians = Double.NaN;
+            shot.viewChanged = true;
+        }
+    }
+
+    /** Show a shot's new angle: its label and its parabola, or neither when not fired. */
+    private void showAngle(Shot shot) {
+        if (Double.isNaN(shot.shownRadians)) {
+            relabel(shot.particle, "");
+            if (shot.curve != null) {
+                shot.curve.hide();
+            }
+            return;
+        }
+        StringBuilder label = new StringBuilder(shot.name).append(' ');
+        TextFormat.appendFixed(label, shot.shownRadians * FastMath.RAD_TO_DEG, 1).append('°');
+        relabel(shot.particle, label.toString());
         if (shot.curve != null) {
-            shot.curve.hide();
+            drawParabola(shot.curve, shot.shownRadians);
         }
     }
 

@@ -16,6 +16,12 @@ import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.view.TextFormat;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ScriptedResponse;
+import particlelab.world.SurfaceRule;
+import particlelab.world.World;
 
 /**
  * Iterative aiming, the lecture's computer-science approach: "shoot at will, see where it
@@ -79,8 +85,9 @@ public final class IterativeAimingDemo extends DemoState {
     /** A shot still in the air after this long never lands (in seconds). */
     private static final float MAX_FLIGHT_SECONDS = 60f;
     private static final float GRAVITY = Gravity.STANDARD_G;
-    /** Where a shot not in use waits: out of sight, on the ground (in metres). */
+    /** Where a shot not in use waits, held: out of sight, above the ground (in metres). */
     private static final float PARK_X = -1000f;
+    private static final float PARK_Y = 5f;
     /** The opacity of each trail by age: the newest shot first. */
     private static final float[] TRAIL_OPACITY = {1f, 0.55f, 0.3f, 0.15f};
     /** The view frames at least this high, and the grid reaches this high (in metres). */
@@ -116,8 +123,13 @@ public final class IterativeAimingDemo extends DemoState {
     /** One tint object per age (see {@link particlelab.view.Trail#setTint}). */
     private final ColorRGBA[] tints = new ColorRGBA[TRAIL_OPACITY.length];
     private final Vector3f gun = new Vector3f();
-    private final Vector3f park = new Vector3f(PARK_X, 0f, 0f);
-    private final Vector3f down = new Vector3f(0f, -1f, 0f);
+    private final Vector3f park = new Vector3f(PARK_X, PARK_Y, 0f);
+    /** Per slot: its label and its trail's tint must be shown again ({@link #update}). */
+    private final boolean[] labelChanged = new boolean[VISIBLE_SHOTS];
+    private boolean tintsChanged;
+    private SurfaceRule groundRule;
+    /** Where the shot in the air came down in this step (in metres; NaN: not yet). */
+    private float pendingLandingX = Float.NaN;
     private final Vector3f launchVelocity = new Vector3f();
     /** Steps a shot up to its apex, to frame it. */
     private final Particle apexProbe = new Particle();
@@ -144,6 +156,7 @@ public final class IterativeAimingDemo extends DemoState {
     private KeyBinding instantKey;
     private KeyBinding mismatchKey;
     private KeyBinding seedKey;
+    private KeyBinding roundKey;
 
     /** Create the demo. */
     public IterativeAimingDemo() {
@@ -351,10 +364,18 @@ public final class IterativeAimingDemo extends DemoState {
     @Override
     protected void createScene() {
         for (int i = 0; i < VISIBLE_SHOTS; ++i) {
-            slots[i] = addParticle("", SHOT_COLOR, park, down, MASS_KG, integrator)
-                    .stopAtGround();
+            slots[i] = addParticle("", SHOT_COLOR, park, Vector3f.ZERO, MASS_KG, integrator);
             slots[i].setParked(true);
         }
+        // The ground stops a shot where its step's segment crosses y = 0 and holds it there.
+        groundRule = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
+        getWorld().addRule(groundRule);
+        getWorld().addContactListener(new ContactListener() {
+            @Override
+            public void resolved(Contact contact, World stepping) {
+                landed(contact);
+            }
+        });
         addMarker("gun", 0f, 2f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = " + Math.round(TARGET_DISTANCE) + " m", TARGET_DISTANCE, 4f,
                 new ColorRGBA(1f, 0.3f, 0.25f, 1f));
@@ -380,6 +401,7 @@ public final class IterativeAimingDemo extends DemoState {
                 () -> setInstant(!instant));
         mismatchKey = bindKey(KeyInput.KEY_P, "P", "predictor: the flight's own h <-> "
                 + PREDICT_STEP_MS + " ms (mismatch)", () -> setMismatch(!mismatch));
+        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round", this::restart);
         seedKey = bindKey(KeyInput.KEY_J, "J", "believable player: next random seed",
                 () -> setSeed(seed + 1L));
     }
@@ -403,20 +425,52 @@ public final class IterativeAimingDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
-        if (fired == 0 || landed == fired) {
+        if (Float.isNaN(pendingLandingX)) {
             return;
         }
         int shot = fired - 1;
-        DemoParticle flying = slots[shot % VISIBLE_SHOTS];
-        if (!flying.hasLanded()) {
-            return;
-        }
-        flownLanding[shot] = flying.getLandingX();
+        flownLanding[shot] = pendingLandingX;
+        pendingLandingX = Float.NaN;
         landed = fired;
-        relabel(flying, shotLabel(shot, true));
+        labelChanged[shot % VISIBLE_SHOTS] = true;
         if (fired < plan.size()) {
             fireNext();
         }
+    }
+
+    /**
+     * Show the labels and trail tints that changed, before the frame: jME rebuilds a text's
+     * mesh when its text changes, which allocates, so this happens here, once per change,
+     * and not in the allocation-free {@link #advance}.
+     */
+    @Override
+    public void update(float tpf) {
+        for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+            if (labelChanged[i]) {
+                labelChanged[i] = false;
+                int shot = slotShot[i];
+                relabel(slots[i], shot < 0 ? "" : shotLabel(shot, shot < landed));
+            }
+        }
+        if (tintsChanged) {
+            tintsChanged = false;
+            for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+                if (slotShot[i] >= 0 && slots[i].view != null) {
+                    int age = Math.min(fired - 1 - slotShot[i], tints.length - 1);
+                    slots[i].view.getTrail().setTint(tints[age]);
+                }
+            }
+        }
+        super.update(tpf);
+    }
+
+    /**
+     * Test whether the round is over: every attempt flown has landed.
+     *
+     * @return true once the final shot landed
+     */
+    public boolean isRoundOver() {
+        return plan.size() > 0 && landed == plan.size();
     }
 
     @Override
@@ -448,11 +502,13 @@ public final class IterativeAimingDemo extends DemoState {
     /** A new round: every slot out of sight, the aimer asked, the first shot fired. */
     private void startRound() {
         for (int i = 0; i < VISIBLE_SHOTS; ++i) {
-            slots[i].setLaunch(park, down);
-            launch(slots[i], down);
+            slots[i].setLaunch(park, Vector3f.ZERO);
+            launch(slots[i], Vector3f.ZERO);
+            slots[i].setHeld(true);
             slotShot[i] = -1;
-            relabel(slots[i], "");
+            labelChanged[i] = true;
         }
+        pendingLandingX = Float.NaN;
         flyStep = getClock().getCurrentStepSeconds();
         predictStep = mismatch ? PREDICT_STEP : flyStep;
         if (flySimulator == null || flySimulator.getStepSeconds() != flyStep) {
@@ -511,13 +567,17 @@ public final class IterativeAimingDemo extends DemoState {
         launch(bullet, launchVelocity);
         slotShot[slot] = shot;
         ++fired;
-        relabel(bullet, shotLabel(shot, false));
-        for (int i = 0; i < VISIBLE_SHOTS; ++i) {
-            if (slotShot[i] >= 0 && slots[i].view != null) {
-                int age = Math.min(fired - 1 - slotShot[i], tints.length - 1);
-                slots[i].view.getTrail().setTint(tints[age]);
-            }
+        labelChanged[slot] = true;
+        tintsChanged = true;
+    }
+
+    /** The epilogue of a ground contact: the shot in the air came down there. */
+    private void landed(Contact contact) {
+        if (contact.getRule() != groundRule || fired == 0 || landed == fired
+                || contact.getBodyA() != slots[(fired - 1) % VISIBLE_SHOTS].getBody()) {
+            return;
         }
+        pendingLandingX = contact.getPoint().x;
     }
 
     /** A shot's label: its number, vy, and once landed its miss. */
@@ -597,6 +657,11 @@ public final class IterativeAimingDemo extends DemoState {
     /** Shots used, the instant mode's count, and the mismatch's expected miss. */
     private void appendSummary(StringBuilder text) {
         int attempts = plan.size();
+        if (isRoundOver()) {
+            text.append("Round over after ").append(plan.size() - firstFlown)
+                    .append(" flown shots (").append(roundKey.getKeyLabel())
+                    .append(" fires a new round)\n");
+        }
         if (!result.isHit()) {
             text.append("No hit: ").append(result.getExplanation()).append('\n');
         } else if (instant) {

@@ -377,7 +377,7 @@ class AimingDemosTest {
     /** Advance a round until every shot has landed; return the frames taken. */
     private static int runRound(IterativeAimingDemo demo) {
         int frames = 0;
-        while (!demo.isSceneOver() && frames < MAX_FRAMES) {
+        while (!demo.isRoundOver() && frames < MAX_FRAMES) {
             demo.advance(H);
             ++frames;
         }
