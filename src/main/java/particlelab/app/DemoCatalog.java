@@ -4,12 +4,15 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.function.Supplier;
+import particlelab.demo.AnyHeightDemo;
 import particlelab.demo.BounceDemo;
 import particlelab.demo.CollisionsDemo;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
+import particlelab.demo.FastBulletsDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
+import particlelab.demo.IterativeAimingDemo;
 import particlelab.demo.RotationDemo;
 import particlelab.demo.SpinThrowDemo;
 import particlelab.demo.TargetsDemo;
@@ -52,6 +55,9 @@ public final class DemoCatalog {
             new Entry("drag", DragDemo::new),
             new Entry("thrust", ThrustDemo::new),
             new Entry("aiming", HelloAimingDemo::new),
+            new Entry("iterate", IterativeAimingDemo::new),
+            new Entry("cheat", FastBulletsDemo::new),
+            new Entry("height", AnyHeightDemo::new),
             new Entry("bounce", BounceDemo::new),
             new Entry("collisions", CollisionsDemo::new),
             new Entry("tunnelling", TunnellingDemo::new),

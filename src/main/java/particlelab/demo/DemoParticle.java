@@ -20,7 +20,7 @@ import particlelab.world.Body;
  */
 public final class DemoParticle {
 
-    private final String label;
+    private String label;
     private final ColorRGBA color;
     private final Body body;
     private final Particle particle;
@@ -74,6 +74,18 @@ public final class DemoParticle {
      */
     public String getLabel() {
         return label;
+    }
+
+    /**
+     * Change the label; {@link DemoState#relabel} also changes the text shown.
+     *
+     * @param newLabel the label (not null)
+     */
+    void setLabel(String newLabel) {
+        if (newLabel == null) {
+            throw new IllegalArgumentException("label must be a text, but was null");
+        }
+        label = newLabel;
     }
 
     /**

@@ -321,6 +321,24 @@ final class DemoScene {
     }
 
     /**
+     * Show a particle's new label: its text and, once laid out, its measured width, so the
+     * next placement finds it a free slot. Before {@link #build}, do nothing (the view is
+     * built with the label).
+     *
+     * @param particle one of the demo's particles, already relabelled (not null)
+     */
+    void relabel(DemoParticle particle) {
+        if (particle.view == null) {
+            return;
+        }
+        particle.view.setLabelText(particle.getLabel());
+        int index = particles.indexOf(particle);
+        if (laidOut && index >= 0) {
+            labelWidths[index] = measure.width(particle.getLabel(), labelSize);
+        }
+    }
+
+    /**
      * Show the velocity arrows if hidden, hide them if shown.
      */
     void toggleArrows() {

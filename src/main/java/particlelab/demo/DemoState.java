@@ -299,6 +299,19 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Change the label shown next to a particle and in the HUD, e.g. to a shot's result once
+     * it landed. jME rebuilds the text's mesh, which allocates: call it on such events, not
+     * every frame.
+     *
+     * @param particle the particle (one of this demo's, not null)
+     * @param label the new label, one line (not null)
+     */
+    protected void relabel(DemoParticle particle, String label) {
+        particle.setLabel(label);
+        scene.relabel(particle);
+    }
+
+    /**
      * Start with the velocity arrows hidden (for fast balls, whose arrows would leave the
      * scene); the V key still shows them. Call from {@link #createScene()}.
      */

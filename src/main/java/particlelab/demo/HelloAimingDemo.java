@@ -249,16 +249,16 @@ public final class HelloAimingDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("Level target: T = S/vx,  lecture vy = g*S/(2*vx);  Euler lands vx*h short;"
-                + "  discrete vy = g*(S/vx + h)/2\n");
+        text.append("Level target: T = S/vx,  lecture vy = g·S/(2·vx);  Euler lands vx·h short;"
+                + "  discrete vy = g·(S/vx + h)/2\n");
     }
 
     @Override
     protected void writeHudLines(StringBuilder text) {
         float step = getClock().getCurrentStepSeconds();
         updatePrediction(step);
-        text.append(aim == Aim.LECTURE ? "Aim: LECTURE vy = g*S/(2*vx)"
-                : "Aim: DISCRETE vy = g*(S/vx + h)/2");
+        text.append(aim == Aim.LECTURE ? "Aim: LECTURE vy = g·S/(2·vx)"
+                : "Aim: DISCRETE vy = g·(S/vx + h)/2");
         text.append("   (").append(aimKey.getKeyLabel()).append(" switches, ")
                 .append(fireKey.getKeyLabel()).append(" fires, ")
                 .append(fasterKey.getKeyLabel()).append('/').append(slowerKey.getKeyLabel())
@@ -272,7 +272,7 @@ public final class HelloAimingDemo extends DemoState {
         if (predicted.hasLanded()) {
             TextFormat.appendFixed(text, predicted.getX(), 3).append(" m,  miss ");
             TextFormat.appendFixed(text, predicted.getX() - TARGET_DISTANCE, 3);
-            text.append(" m   (vx*h = ");
+            text.append(" m   (vx·h = ");
             TextFormat.appendFixed(text, vx * step, 3).append(" m)\n");
         } else {
             text.append("never lands\n");

@@ -159,6 +159,16 @@ public final class ParticleView {
     }
 
     /**
+     * Change the label's text. jME rebuilds the text's quads, which allocates: for events
+     * (a shot landed), not for every frame.
+     *
+     * @param text the new text, one line (not null)
+     */
+    public void setLabelText(String text) {
+        label.setText(text);
+    }
+
+    /**
      * Put the label into a rectangle of the screen, through the plane's mapping. Allocates
      * nothing.
      *

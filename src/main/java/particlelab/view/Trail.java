@@ -99,6 +99,21 @@ public final class Trail {
     }
 
     /**
+     * Tint the whole ribbon, e.g. to fade an old shot's trail: the colour multiplies the
+     * per-point colours. Give each tint its own colour object and pass another object to
+     * change it (jME uploads a parameter only when it is set to a different value).
+     * Allocates nothing.
+     *
+     * @param tint the tint, alpha included (not null, kept: do not modify it afterwards)
+     */
+    public void setTint(ColorRGBA tint) {
+        if (tint == null) {
+            throw new IllegalArgumentException("trail tint must be a colour, but was null");
+        }
+        geometry.getMaterial().setColor("Color", tint);
+    }
+
+    /**
      * Return how many points the trail holds.
      *
      * @return the count (from 0 to the capacity)

@@ -1,0 +1,337 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Spatial;
+import particlelab.aiming.Hitscan;
+import particlelab.collision.Plane;
+import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.view.TextFormat;
+import particlelab.view.WallView;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ScriptedResponse;
+import particlelab.world.StepListener;
+import particlelab.world.SurfaceRule;
+import particlelab.world.World;
+
+/**
+ * Fast bullets, the lecture's cheat: "if the bullet speed is high, consider it travel along a
+ * straight line; adjust its position if necessary". Builds upon HelloAiming (the stepped
+ * bullet) and tunnelling (the swept test). The gun on its tower fires level at the centre of a
+ * target disc of radius r at distance d, twice: a straight-line ray (hitscan: no travel time,
+ * no drop; it always hits the centre) and a projectile stepped by the shared integrator under
+ * gravity.
+ *
+ * <p>The projectile takes {@code t = d/v} to get there and falls {@code ½·g·t²} meanwhile, the
+ * drop the straight line ignores; the stepped bullet falls about {@code ½·g·h·t} more. The
+ * cheat is right while the drop stays within r, i.e. for {@code d < v·√(2r/g)}: raise the
+ * speed (Up) from 35 m/s to 900 m/s and watch the projectile's impact climb onto the disc.
+ *
+ * <p>"Adjust its position": at 900 m/s one step carries the bullet 15 m, and the disc is
+ * thin. The projectile is not looked at only at the ends of its steps (it would be found past
+ * the disc, or never on it): the world sweeps each step's straight segment against the disc's
+ * plane and puts the bullet at the first point where it crosses, the impact drawn there. The
+ * prologue accepts the contact only within r of the centre; a miss flies on to the ground.
+ */
+public final class FastBulletsDemo extends DemoState {
+
+    /** The distance from the gun to the target d (in metres). */
+    public static final float DISTANCE = 50f;
+    /** The target disc's radius r (in metres). */
+    public static final float TARGET_RADIUS = 0.5f;
+    /** The height of the gun's muzzle and of the target's centre (in metres). */
+    public static final float GUN_HEIGHT = 12f;
+    /** The speeds the keys step through (in m/s). */
+    public static final float[] SPEEDS = {35f, 50f, 70f, 100f, 150f, 200f, 300f, 450f, 600f,
+        900f};
+    /** A stopped bullet is fired again after this long (in seconds of simulated time). */
+    public static final float REFIRE_SECONDS = 1.5f;
+    private static final float GRAVITY = Gravity.STANDARD_G;
+    /** The drawn disc's thickness, and the impact mark's size (in metres). */
+    private static final float DISC_THICKNESS = 0.3f;
+    private static final float MARK_SIZE = 0.5f;
+    private static final float RAY_WIDTH = 0.08f;
+    private static final ColorRGBA TARGET_COLOR = new ColorRGBA(1f, 0.3f, 0.25f, 1f);
+    private static final ColorRGBA RAY_COLOR = new ColorRGBA(0.4f, 0.9f, 1f, 0.7f);
+    private static final ColorRGBA IMPACT_COLOR = new ColorRGBA(1f, 1f, 0.3f, 1f);
+
+    private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
+    /** The disc's plane x = d, its front facing the gun. */
+    private final Plane discPlane = new Plane(new Vector3f(-1f, 0f, 0f), -DISTANCE);
+    private final Vector3f muzzle = new Vector3f(0f, GUN_HEIGHT, 0f);
+    private final Vector3f launchVelocity = new Vector3f();
+    private final Vector3f impact = new Vector3f();
+    private SurfaceRule discRule;
+    private DemoParticle bullet;
+    private Geometry impactMark;
+    private int speedIndex;
+    /** The projectile's arrival at the disc's plane, this shot. */
+    private boolean reached;
+    private boolean hit;
+    private double arrivalSeconds = Double.NaN;
+    /** The step the projectile flew with (in seconds). */
+    private float shotStep = Float.NaN;
+    /** The step the world is taking (in seconds). */
+    private float worldStep = Float.NaN;
+    /** The bullet stopped (on the disc or on the ground) this long ago (in seconds; <0: no). */
+    private float stoppedSeconds = -1f;
+    private KeyBinding fasterKey;
+    private KeyBinding slowerKey;
+
+    /** Create the demo. */
+    public FastBulletsDemo() {
+        super("Fast bullets: the cheat");
+    }
+
+    // ----------------------------------------------------------------------- public API ----
+
+    /**
+     * Return the projectile's launch speed.
+     *
+     * @return v (in m/s)
+     */
+    public float getSpeed() {
+        return SPEEDS[speedIndex];
+    }
+
+    /**
+     * Choose the launch speed among {@link #SPEEDS} and fire again.
+     *
+     * @param index 0 for the slowest
+     */
+    public void setSpeedIndex(int index) {
+        if (index < 0 || index >= SPEEDS.length) {
+            throw new IllegalArgumentException("speed index must be in 0.." + (SPEEDS.length - 1)
+                    + ", but was " + index);
+        }
+        speedIndex = index;
+        fire();
+    }
+
+    /**
+     * Fire the projectile from the muzzle, level, at the target's centre.
+     */
+    public void fire() {
+        launchVelocity.set(getSpeed(), 0f, 0f);
+        bullet.setLaunch(muzzle, launchVelocity);
+        launch(bullet, launchVelocity);
+        reached = false;
+        hit = false;
+        arrivalSeconds = Double.NaN;
+        stoppedSeconds = -1f;
+        shotStep = getClock().getCurrentStepSeconds();
+        if (impactMark != null) {
+            impactMark.setCullHint(Spatial.CullHint.Always);
+        }
+    }
+
+    /**
+     * Test whether this shot's projectile reached the disc's plane.
+     *
+     * @return true once it crossed x = d
+     */
+    public boolean isReached() {
+        return reached;
+    }
+
+    /**
+     * Test whether this shot's projectile hit the disc: crossed its plane within r of the
+     * centre.
+     *
+     * @return true on a hit
+     */
+    public boolean isHit() {
+        return hit;
+    }
+
+    /**
+     * Copy where the projectile crossed the disc's plane, inside its step.
+     *
+     * @param storeResult storage for the point (in metres, not null, modified)
+     * @return storeResult (NaN until reached)
+     */
+    public Vector3f copyImpact(Vector3f storeResult) {
+        return storeResult.set(impact);
+    }
+
+    /**
+     * Return how far below the centre the projectile crossed the disc's plane.
+     *
+     * @return the drop (in metres; NaN until reached)
+     */
+    public double getSteppedDrop() {
+        return reached ? GUN_HEIGHT - impact.y : Double.NaN;
+    }
+
+    /**
+     * Return the projectile's flight time to the disc's plane, inside the step.
+     *
+     * @return the time (in seconds; NaN until reached)
+     */
+    public double getArrivalSeconds() {
+        return arrivalSeconds;
+    }
+
+    /**
+     * Access the projectile.
+     *
+     * @return the live particle (not null after creation)
+     */
+    public DemoParticle getBullet() {
+        return bullet;
+    }
+
+    // ------------------------------------------------------------- framework overrides ----
+
+    @Override
+    protected void createScene() {
+        bullet = addParticle("projectile", IMPACT_COLOR, muzzle, Vector3f.ZERO, 1f, falling);
+        World world = getWorld();
+        discRule = new SurfaceRule("target disc", discPlane, ScriptedResponse.stick(),
+                Detection.SWEPT);
+        world.addRule(discRule);
+        world.addRule(SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT));
+        world.addStepListener(new StepListener() {
+            @Override
+            public void beforeStep(World stepping, float stepSeconds) {
+                worldStep = stepSeconds;
+            }
+        });
+        world.addContactListener(new ContactListener() {
+            @Override
+            public boolean accept(Contact contact, World stepping) {
+                return prologue(contact);
+            }
+        });
+        addMarker("gun", 0f, GUN_HEIGHT, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
+        addMarker("target  r = " + TARGET_RADIUS + " m", DISTANCE, GUN_HEIGHT + TARGET_RADIUS,
+                TARGET_COLOR);
+        if (getApplication() != null) {
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "ray", 0f, GUN_HEIGHT - RAY_WIDTH / 2f, DISTANCE, GUN_HEIGHT
+                            + RAY_WIDTH / 2f, RAY_COLOR));
+            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
+                    "disc", DISTANCE, GUN_HEIGHT - TARGET_RADIUS, DISTANCE + DISC_THICKNESS,
+                    GUN_HEIGHT + TARGET_RADIUS, TARGET_COLOR));
+            impactMark = WallView.create(getApplication().getAssetManager(), "impact",
+                    -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f, MARK_SIZE / 2f,
+                    IMPACT_COLOR);
+            impactMark.setCullHint(Spatial.CullHint.Always);
+            getSceneNode().attachChild(impactMark);
+        }
+        impact.set(Float.NaN, Float.NaN, 0f);
+        setView(-3f, DISTANCE + 12f, GUN_HEIGHT + 4f, 2f, 5, 0.3f);
+        hideArrowsAtStart();
+        fire();
+    }
+
+    @Override
+    protected void declareKeys() {
+        StringBuilder up = new StringBuilder("faster (up to ");
+        TextFormat.appendFixed(up, SPEEDS[SPEEDS.length - 1], 0).append(" m/s), fire");
+        fasterKey = bindKey(KeyInput.KEY_UP, "Up", up.toString(),
+                () -> setSpeedIndex(Math.min(SPEEDS.length - 1, speedIndex + 1)));
+        StringBuilder down = new StringBuilder("slower (down to ");
+        TextFormat.appendFixed(down, SPEEDS[0], 0).append(" m/s), fire");
+        slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", down.toString(),
+                () -> setSpeedIndex(Math.max(0, speedIndex - 1)));
+        bindKey(KeyInput.KEY_F, "F", "fire again", this::fire);
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        text.append("ray: straight line, no time, no drop;  projectile: V += h·g,  P += h·V,"
+                + "  each step's segment swept against the disc's plane x = d\n");
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        if (bullet.isHeld()) {
+            if (stoppedSeconds < 0f) {
+                stoppedSeconds = 0f;
+            } else {
+                stoppedSeconds += stepSeconds;
+            }
+            if (stoppedSeconds >= REFIRE_SECONDS) {
+                fire();
+            }
+        }
+    }
+
+    @Override
+    protected void onRestart() {
+        fire();
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        float v = getSpeed();
+        float h = Float.isNaN(shotStep) ? getClock().getCurrentStepSeconds() : shotStep;
+        text.append("v = ");
+        TextFormat.appendFixed(text, v, 0).append(" m/s (").append(fasterKey.getKeyLabel())
+                .append('/').append(slowerKey.getKeyLabel()).append("),  d = ");
+        TextFormat.appendFixed(text, DISTANCE, 0).append(" m:  flight d/v = ");
+        TextFormat.appendFixed(text, DISTANCE / v, 3).append(" s,  one step v·h = ");
+        TextFormat.appendFixed(text, v * h, 2).append(" m,  disc ");
+        TextFormat.appendFixed(text, DISC_THICKNESS, 1).append(" m thick\n");
+        double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
+        text.append("Drop the straight line ignores: ½·g·(d/v)² = ");
+        TextFormat.appendFixed(text, drop, 3).append(" m   against the radius r = ");
+        TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\n");
+        text.append("Straight line (ray): HIT at the centre, always.   Projectile: ");
+        if (!reached) {
+            text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
+        } else {
+            text.append(hit ? "HIT" : "MISS").append(", at x = d ");
+            TextFormat.appendFixed(text, getSteppedDrop(), 3).append(" m low after ");
+            TextFormat.appendFixed(text, arrivalSeconds, 3).append(" s (Euler: ");
+            TextFormat.appendFixed(text, Hitscan.steppedDrop(GRAVITY, DISTANCE, v, h), 3)
+                    .append(" m)");
+        }
+        text.append('\n');
+        text.append("So the cheat ").append(drop <= TARGET_RADIUS ? "is" : "is NOT")
+                .append(" good enough here: it is for d < v·√(2r/g) = ");
+        TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
+                .append(" m\n");
+    }
+
+    // ---------------------------------------------------------------- private helpers ----
+
+    /**
+     * The prologue: the disc's plane is crossed at the contact point, the first point of the
+     * step's segment on it; a hit only within r of the centre. The ground always stops the
+     * bullet.
+     */
+    private boolean prologue(Contact contact) {
+        // The particle's flight time is counted after the step: here it is the step's start.
+        if (contact.getRule() != discRule) {
+            showImpact(contact.getPoint());
+            return true;
+        }
+        if (reached) {
+            // Behind the plane already (a miss flies on): only the first crossing counts.
+            return false;
+        }
+        Vector3f point = contact.getPoint();
+        impact.set(point);
+        reached = true;
+        hit = Math.abs(point.y - GUN_HEIGHT) <= TARGET_RADIUS;
+        arrivalSeconds = bullet.getFlightSeconds() + contact.getFraction() * (double) worldStep;
+        if (hit) {
+            showImpact(point);
+        }
+        return hit;
+    }
+
+    private void showImpact(Vector3f point) {
+        if (impactMark != null) {
+            impactMark.setLocalTranslation(point.x, point.y, 0.01f);
+            impactMark.setCullHint(Spatial.CullHint.Inherit);
+        }
+    }
+}

@@ -1,0 +1,702 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import particlelab.aiming.AimResult;
+import particlelab.aiming.AimStrategy;
+import particlelab.aiming.IterativeAim;
+import particlelab.aiming.LevelAim;
+import particlelab.aiming.PredictorMismatch;
+import particlelab.aiming.ShotLog;
+import particlelab.aiming.ShotSimulator;
+import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.QuadraticDrag;
+import particlelab.view.TextFormat;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ScriptedResponse;
+import particlelab.world.SurfaceRule;
+import particlelab.world.World;
+
+/**
+ * Iterative aiming, the lecture's computer-science approach: "shoot at will, see where it
+ * lands; if undershot increase power, if overshot decrease power". Builds upon HelloAiming
+ * (the same level target, vx fixed) and drag: with drag on, the closed form
+ * {@code vy = g·S/(2·vx)} falls short, and no formula replaces it, so the gun fires, looks and
+ * adjusts vy.
+ *
+ * <p>The aimer is {@link IterativeAim} with the shared integrator and this scene's forces.
+ * Its search is deterministic, so the demo asks it once per round for its shots
+ * ({@link ShotLog}) and then flies them in the scene one after another, each where the
+ * player sees it: the n-th flown shot lands where the search's n-th shot did (unless the
+ * predictor is stepped differently, below). The last {@value #VISIBLE_SHOTS} trails stay,
+ * the older ones fainter, each labelled with its vy and its miss; the HUD lists the attempts.
+ *
+ * <p>What to watch for:
+ * <ul>
+ * <li>the strategies (G): the lecture's rule creeps in with a change halved at each sign
+ * change of the miss; bisection halves a bracket; the secant closes in fastest; the
+ * "believable" player always misses its first shot and then moves a seeded random
+ * 30–170 % of the way to the answer, as an artillery-game opponent a person believes;</li>
+ * <li>"what will the user think?" (I): the instant mode does the same search invisibly,
+ * within one frame, and fires only the final shot; the HUD says how many shots the player
+ * would otherwise have watched;</li>
+ * <li>the predictor mismatch (P): the aimer predicts with a step of {@value #PREDICT_STEP_MS}
+ * ms while the shots fly at the demo's h; a shot it believes lands at S flies about
+ * {@code vx·|h_predict − h_fly|} further (the Worms "CPU shot misprediction").</li>
+ * </ul>
+ */
+public final class IterativeAimingDemo extends DemoState {
+
+    /** The distance to the target S (in metres). */
+    public static final float TARGET_DISTANCE = 60f;
+    /** The fixed horizontal launch speed vx (in m/s). */
+    public static final float HORIZONTAL_SPEED = 20f;
+    /** The bullet's mass m (in kilograms). */
+    public static final float MASS_KG = 1f;
+    /** The linear drag coefficient b (in kg/s): b/m = 0.1 /s. */
+    public static final float LINEAR_DRAG = 0.1f;
+    /** The quadratic drag coefficient c (in kg/m): c/m = 0.01 /m. */
+    public static final float QUADRATIC_DRAG = 0.01f;
+    /** A shot hits when it lands this close to S: the target's half-width (in metres). */
+    public static final float TOLERANCE_METRES = 0.25f;
+    /** The step the mismatched predictor uses (in milliseconds). */
+    public static final int PREDICT_STEP_MS = 50;
+    /** How many shots' trails stay visible. */
+    public static final int VISIBLE_SHOTS = 4;
+    /** The most shots a round may take. */
+    public static final int MAX_SHOTS = 40;
+    /** The believable player's seed at the start. */
+    public static final long DEFAULT_SEED = 1L;
+    /** The strategies the G key cycles through, in order. */
+    private static final AimStrategy[] STRATEGIES = {AimStrategy.LECTURE,
+        AimStrategy.BISECTION, AimStrategy.SECANT, AimStrategy.BELIEVABLE};
+    /** The mismatched predictor's step (in seconds). */
+    private static final float PREDICT_STEP = PREDICT_STEP_MS / 1000f;
+    /** How many attempts the HUD table lists: the latest ones, one column each. */
+    private static final int TABLE_COLUMNS = 8;
+    /** The width of a column (in characters; the font's digits are all one width). */
+    private static final int CELL_CHARACTERS = 10;
+    /** A shot still in the air after this long never lands (in seconds). */
+    private static final float MAX_FLIGHT_SECONDS = 60f;
+    private static final float GRAVITY = Gravity.STANDARD_G;
+    /** Where a shot not in use waits, held: out of sight, above the ground (in metres). */
+    private static final float PARK_X = -1000f;
+    private static final float PARK_Y = 5f;
+    /** The opacity of each trail by age: the newest shot first. */
+    private static final float[] TRAIL_OPACITY = {1f, 0.55f, 0.3f, 0.15f};
+    /** The view frames at least this high, and the grid reaches this high (in metres). */
+    private static final float MIN_VIEW_TOP = 16f;
+    private static final float MAX_VIEW_TOP = 60f;
+    /** Room kept above the highest apex, as a fraction of it. */
+    private static final float HEADROOM = 0.1f;
+    private static final ColorRGBA SHOT_COLOR = new ColorRGBA(1f, 0.85f, 0.2f, 1f);
+
+    /** Which drag law the scene's bullets feel. */
+    public enum Drag {
+        /** {@code F = −b·V}. */
+        LINEAR,
+        /** {@code F = −c·|V|·V}. */
+        QUADRATIC
+    }
+
+    private final Gravity gravity = new Gravity();
+    private final LinearDrag linearDrag = new LinearDrag(LINEAR_DRAG);
+    private final QuadraticDrag quadraticDrag = new QuadraticDrag(0f);
+    /** The scene's bullets' forces. */
+    private final ParticleIntegrator integrator =
+            new ParticleIntegrator(gravity, linearDrag, quadraticDrag);
+    /** The aimer's own integrator, with the same forces: its shots are in its head. */
+    private final ParticleIntegrator aimerIntegrator =
+            new ParticleIntegrator(gravity, linearDrag, quadraticDrag);
+    private final ShotLog plan = new ShotLog(MAX_SHOTS);
+    /** Where each attempt of the round landed in the scene (in metres; NaN: not yet). */
+    private final double[] flownLanding = new double[MAX_SHOTS];
+    private final DemoParticle[] slots = new DemoParticle[VISIBLE_SHOTS];
+    /** The attempt each slot flies, or -1. */
+    private final int[] slotShot = new int[VISIBLE_SHOTS];
+    /** One tint object per age (see {@link particlelab.view.Trail#setTint}). */
+    private final ColorRGBA[] tints = new ColorRGBA[TRAIL_OPACITY.length];
+    private final Vector3f gun = new Vector3f();
+    private final Vector3f park = new Vector3f(PARK_X, PARK_Y, 0f);
+    /** Per slot: its label and its trail's tint must be shown again ({@link #update}). */
+    private final boolean[] labelChanged = new boolean[VISIBLE_SHOTS];
+    private boolean tintsChanged;
+    private SurfaceRule groundRule;
+    /** Where the shot in the air came down in this step (in metres; NaN: not yet). */
+    private float pendingLandingX = Float.NaN;
+    private final Vector3f launchVelocity = new Vector3f();
+    /** Steps a shot up to its apex, to frame it. */
+    private final Particle apexProbe = new Particle();
+    private AimStrategy strategy = AimStrategy.LECTURE;
+    private Drag drag = Drag.LINEAR;
+    private boolean instant;
+    private boolean mismatch;
+    private long seed = DEFAULT_SEED;
+    private AimResult result;
+    /** The steps of the round: the shots fly with flyStep, the aimer predicted with the other. */
+    private float flyStep = Float.NaN;
+    private float predictStep = Float.NaN;
+    /** The first attempt flown in the scene (the last one in instant mode). */
+    private int firstFlown;
+    /** Attempts launched, and attempts landed, in the scene (counting the skipped ones). */
+    private int fired;
+    private int landed;
+    /** The total flight time of the round's attempts (in seconds). */
+    private double watchSeconds;
+    private ShotSimulator flySimulator;
+    private ShotSimulator predictSimulator;
+    private KeyBinding strategyKey;
+    private KeyBinding dragKey;
+    private KeyBinding instantKey;
+    private KeyBinding mismatchKey;
+    private KeyBinding seedKey;
+    private KeyBinding roundKey;
+
+    /** Create the demo. */
+    public IterativeAimingDemo() {
+        super("Iterative aiming");
+        for (int i = 0; i < tints.length; ++i) {
+            tints[i] = new ColorRGBA(1f, 1f, 1f, TRAIL_OPACITY[i]);
+        }
+    }
+
+    // ----------------------------------------------------------------------- public API ----
+
+    /**
+     * Return the strategy that adjusts vy.
+     *
+     * @return the strategy (not null)
+     */
+    public AimStrategy getStrategy() {
+        return strategy;
+    }
+
+    /**
+     * Choose the strategy and start a new round.
+     *
+     * @param newStrategy lecture, bisection, secant or believable (not null)
+     */
+    public void setStrategy(AimStrategy newStrategy) {
+        if (indexOfStrategy(newStrategy) < 0) {
+            throw new IllegalArgumentException("strategy must be lecture, bisection, secant or"
+                    + " believable, but was " + newStrategy);
+        }
+        strategy = newStrategy;
+        restart();
+    }
+
+    /**
+     * Return the drag law.
+     *
+     * @return the law (not null)
+     */
+    public Drag getDrag() {
+        return drag;
+    }
+
+    /**
+     * Choose the drag law and start a new round.
+     *
+     * @param newDrag linear or quadratic (not null)
+     */
+    public void setDrag(Drag newDrag) {
+        if (newDrag == null) {
+            throw new IllegalArgumentException("drag must be LINEAR or QUADRATIC, but was null");
+        }
+        drag = newDrag;
+        linearDrag.setCoefficient(drag == Drag.LINEAR ? LINEAR_DRAG : 0f);
+        quadraticDrag.setCoefficient(drag == Drag.QUADRATIC ? QUADRATIC_DRAG : 0f);
+        refreshEquations();
+        restart();
+    }
+
+    /**
+     * Test whether the instant mode is on.
+     *
+     * @return true if the search is invisible and only the final shot flies
+     */
+    public boolean isInstant() {
+        return instant;
+    }
+
+    /**
+     * Switch the instant mode and start a new round.
+     *
+     * @param newInstant true to search invisibly and fly only the final shot
+     */
+    public void setInstant(boolean newInstant) {
+        instant = newInstant;
+        restart();
+    }
+
+    /**
+     * Test whether the aimer predicts with another step than the shots fly with.
+     *
+     * @return true if it predicts with {@value #PREDICT_STEP_MS} ms
+     */
+    public boolean isMismatch() {
+        return mismatch;
+    }
+
+    /**
+     * Make the aimer predict with {@value #PREDICT_STEP_MS} ms or with the flight's own step,
+     * and start a new round.
+     *
+     * @param newMismatch true for the mismatched predictor
+     */
+    public void setMismatch(boolean newMismatch) {
+        mismatch = newMismatch;
+        restart();
+    }
+
+    /**
+     * Return the believable player's seed.
+     *
+     * @return the seed
+     */
+    public long getSeed() {
+        return seed;
+    }
+
+    /**
+     * Choose the believable player's seed and start a new round.
+     *
+     * @param newSeed any value; the same seed gives the same shots
+     */
+    public void setSeed(long newSeed) {
+        seed = newSeed;
+        restart();
+    }
+
+    /**
+     * Access the aimer's attempts of this round, as it predicted them.
+     *
+     * @return the live log (not null, do not modify)
+     */
+    public ShotLog getPlan() {
+        return plan;
+    }
+
+    /**
+     * Return the aimer's answer for this round.
+     *
+     * @return the result (not null once the demo is initialised)
+     */
+    public AimResult getResult() {
+        return result;
+    }
+
+    /**
+     * Return the attempts flown in the scene this round: all of them, or in instant mode
+     * only the final one.
+     *
+     * @return the first attempt flown (0 for the first shot)
+     */
+    public int getFirstFlownShot() {
+        return firstFlown;
+    }
+
+    /**
+     * Count the round's attempts that have landed, in the scene or (in instant mode) in the
+     * aimer's head.
+     *
+     * @return the count (0 to the plan's size)
+     */
+    public int countLanded() {
+        return landed;
+    }
+
+    /**
+     * Return where an attempt landed in the scene.
+     *
+     * @param shot 0 for the first attempt
+     * @return x (in metres; NaN if it was not flown or has not landed yet)
+     */
+    public double getFlownLandingX(int shot) {
+        if (shot < 0 || shot >= plan.size()) {
+            throw new IllegalArgumentException("shot must be in 0.." + (plan.size() - 1)
+                    + ", but was " + shot);
+        }
+        return flownLanding[shot];
+    }
+
+    /**
+     * Return the total flight time of the round's attempts: what a player watching every
+     * shot would sit through.
+     *
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getWatchSeconds() {
+        return watchSeconds;
+    }
+
+    /**
+     * Return the miss the predictor mismatch should cause, drag aside:
+     * {@code vx·|h_predict − h_fly|} ({@link PredictorMismatch#expectedMiss}).
+     *
+     * @return the miss (in metres, &ge;0; 0 without the mismatch)
+     */
+    public double getExpectedMismatchMiss() {
+        if (!mismatch || Float.isNaN(flyStep)) {
+            return 0.0;
+        }
+        return Math.abs(PredictorMismatch.expectedMiss(HORIZONTAL_SPEED, predictStep, flyStep));
+    }
+
+    /**
+     * Access the shots drawn in the scene (the slots the attempts take in turn).
+     *
+     * @param slot 0 to {@link #VISIBLE_SHOTS} − 1
+     * @return the slot's particle (not null)
+     */
+    public DemoParticle getShotSlot(int slot) {
+        return slots[slot];
+    }
+
+    // ------------------------------------------------------------- framework overrides ----
+
+    @Override
+    protected void createScene() {
+        for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+            slots[i] = addParticle("", SHOT_COLOR, park, Vector3f.ZERO, MASS_KG, integrator);
+            slots[i].setParked(true);
+        }
+        // The ground stops a shot where its step's segment crosses y = 0 and holds it there.
+        groundRule = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
+        getWorld().addRule(groundRule);
+        getWorld().addContactListener(new ContactListener() {
+            @Override
+            public void resolved(Contact contact, World stepping) {
+                landed(contact);
+            }
+        });
+        addMarker("gun", 0f, 2f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
+        addMarker("target  S = " + Math.round(TARGET_DISTANCE) + " m", TARGET_DISTANCE, 4f,
+                new ColorRGBA(1f, 0.3f, 0.25f, 1f));
+        // The grid reaches the highest apex a round may need; the camera frames the round's.
+        setView(-4f, TARGET_DISTANCE + 14f, MAX_VIEW_TOP, 4f, 5, 0.7f);
+        hideArrowsAtStart();
+        startRound();
+    }
+
+    @Override
+    protected void declareKeys() {
+        StringBuilder names = new StringBuilder("aiming strategy: ");
+        for (int i = 0; i < STRATEGIES.length; ++i) {
+            names.append(i == 0 ? "" : " -> ").append(STRATEGIES[i].cliName());
+        }
+        strategyKey = bindKey(KeyInput.KEY_G, "G", names.toString(),
+                () -> setStrategy(STRATEGIES[(indexOfStrategy(strategy) + 1)
+                        % STRATEGIES.length]));
+        dragKey = bindKey(KeyInput.KEY_L, "L", "drag: linear <-> quadratic",
+                () -> setDrag(drag == Drag.LINEAR ? Drag.QUADRATIC : Drag.LINEAR));
+        instantKey = bindKey(KeyInput.KEY_I, "I",
+                "instant: search invisibly in one frame, fly only the final shot",
+                () -> setInstant(!instant));
+        mismatchKey = bindKey(KeyInput.KEY_P, "P", "predictor: the flight's own h <-> "
+                + PREDICT_STEP_MS + " ms (mismatch)", () -> setMismatch(!mismatch));
+        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round", this::restart);
+        seedKey = bindKey(KeyInput.KEY_J, "J", "believable player: next random seed",
+                () -> setSeed(seed + 1L));
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        if (drag == Drag.LINEAR) {
+            text.append("V += h·(g − (b/m)·V),  P += h·V,   b/m = ");
+            TextFormat.appendFixed(text, LINEAR_DRAG / MASS_KG, 2).append(" /s");
+        } else {
+            text.append("V += h·(g − (c/m)·|V|·V),  P += h·V,   c/m = ");
+            TextFormat.appendFixed(text, QUADRATIC_DRAG / MASS_KG, 2).append(" /m");
+        }
+        text.append(";   S = ");
+        TextFormat.appendFixed(text, TARGET_DISTANCE, 0).append(" m,  vx = ");
+        TextFormat.appendFixed(text, HORIZONTAL_SPEED, 0).append(" m/s,  first guess"
+                + " g·S/(2·vx) = ");
+        TextFormat.appendFixed(text, LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE,
+                HORIZONTAL_SPEED), 2).append(" m/s (no drag)\n");
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        if (Float.isNaN(pendingLandingX)) {
+            return;
+        }
+        int shot = fired - 1;
+        flownLanding[shot] = pendingLandingX;
+        pendingLandingX = Float.NaN;
+        landed = fired;
+        labelChanged[shot % VISIBLE_SHOTS] = true;
+        if (fired < plan.size()) {
+            fireNext();
+        }
+    }
+
+    /**
+     * Show the labels and trail tints that changed, before the frame: jME rebuilds a text's
+     * mesh when its text changes, which allocates, so this happens here, once per change,
+     * and not in the allocation-free {@link #advance}.
+     */
+    @Override
+    public void update(float tpf) {
+        for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+            if (labelChanged[i]) {
+                labelChanged[i] = false;
+                int shot = slotShot[i];
+                relabel(slots[i], shot < 0 ? "" : shotLabel(shot, shot < landed));
+            }
+        }
+        if (tintsChanged) {
+            tintsChanged = false;
+            for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+                if (slotShot[i] >= 0 && slots[i].view != null) {
+                    int age = Math.min(fired - 1 - slotShot[i], tints.length - 1);
+                    slots[i].view.getTrail().setTint(tints[age]);
+                }
+            }
+        }
+        super.update(tpf);
+    }
+
+    /**
+     * Test whether the round is over: every attempt flown has landed.
+     *
+     * @return true once the final shot landed
+     */
+    public boolean isRoundOver() {
+        return plan.size() > 0 && landed == plan.size();
+    }
+
+    @Override
+    protected void onRestart() {
+        startRound();
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("Strategy ").append(strategy.cliName()).append(" (")
+                .append(strategyKey.getKeyLabel()).append(")");
+        if (strategy == AimStrategy.BELIEVABLE) {
+            text.append(", seed ").append(seed).append(" (").append(seedKey.getKeyLabel())
+                    .append(')');
+        }
+        text.append(",  drag ").append(drag == Drag.LINEAR ? "linear" : "quadratic")
+                .append(" (").append(dragKey.getKeyLabel()).append("),  ")
+                .append(instant ? "instant" : "visible shots").append(" (")
+                .append(instantKey.getKeyLabel()).append("),  predictor h ");
+        TextFormat.appendFixed(text, predictStep * 1000f, 1).append(" ms, flight h ");
+        TextFormat.appendFixed(text, flyStep * 1000f, 1).append(" ms (")
+                .append(mismatchKey.getKeyLabel()).append(")\n");
+        appendTable(text);
+        appendSummary(text);
+    }
+
+    // ---------------------------------------------------------------- private helpers ----
+
+    /** A new round: every slot out of sight, the aimer asked, the first shot fired. */
+    private void startRound() {
+        for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+            slots[i].setLaunch(park, Vector3f.ZERO);
+            launch(slots[i], Vector3f.ZERO);
+            slots[i].setHeld(true);
+            slotShot[i] = -1;
+            labelChanged[i] = true;
+        }
+        pendingLandingX = Float.NaN;
+        flyStep = getClock().getCurrentStepSeconds();
+        predictStep = mismatch ? PREDICT_STEP : flyStep;
+        if (flySimulator == null || flySimulator.getStepSeconds() != flyStep) {
+            flySimulator = new ShotSimulator(aimerIntegrator, MASS_KG, flyStep,
+                    MAX_FLIGHT_SECONDS);
+        }
+        if (predictSimulator == null || predictSimulator.getStepSeconds() != PREDICT_STEP) {
+            predictSimulator = new ShotSimulator(aimerIntegrator, MASS_KG, PREDICT_STEP,
+                    MAX_FLIGHT_SECONDS);
+        }
+        IterativeAim aimer = new IterativeAim(mismatch ? predictSimulator : flySimulator,
+                GRAVITY, TOLERANCE_METRES, MAX_SHOTS, strategy, seed);
+        // The whole search, within this frame: the instant mode shows only its last shot.
+        result = aimer.aim(TARGET_DISTANCE, HORIZONTAL_SPEED, plan);
+        watchSeconds = 0.0;
+        for (int i = 0; i < plan.size(); ++i) {
+            flownLanding[i] = Double.NaN;
+            if (!Double.isNaN(plan.getFlightSeconds(i))) {
+                watchSeconds += plan.getFlightSeconds(i);
+            }
+        }
+        firstFlown = instant ? Math.max(0, plan.size() - 1) : 0;
+        frameShots();
+        fired = firstFlown;
+        landed = firstFlown;
+        if (plan.size() > 0) {
+            fireNext();
+        }
+    }
+
+    /**
+     * Frame the round's highest shot: each shot to be flown is stepped, in the aimer's head,
+     * up to its apex (where vy stops being positive).
+     */
+    private void frameShots() {
+        float highest = 0f;
+        apexProbe.setMass(MASS_KG);
+        for (int i = firstFlown; i < plan.size(); ++i) {
+            apexProbe.position.zero();
+            apexProbe.velocity.set(plan.getHorizontalSpeed(i), plan.getVerticalSpeed(i), 0f);
+            while (apexProbe.velocity.y > 0f) {
+                aimerIntegrator.step(apexProbe, flyStep);
+            }
+            highest = Math.max(highest, apexProbe.position.y);
+        }
+        setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest)));
+    }
+
+    /** Fire the next attempt from the gun in the next slot; fade the older trails. */
+    private void fireNext() {
+        int shot = fired;
+        int slot = shot % VISIBLE_SHOTS;
+        DemoParticle bullet = slots[slot];
+        launchVelocity.set(plan.getHorizontalSpeed(shot), plan.getVerticalSpeed(shot), 0f);
+        bullet.setLaunch(gun, launchVelocity);
+        launch(bullet, launchVelocity);
+        slotShot[slot] = shot;
+        ++fired;
+        labelChanged[slot] = true;
+        tintsChanged = true;
+    }
+
+    /** The epilogue of a ground contact: the shot in the air came down there. */
+    private void landed(Contact contact) {
+        if (contact.getRule() != groundRule || fired == 0 || landed == fired
+                || contact.getBodyA() != slots[(fired - 1) % VISIBLE_SHOTS].getBody()) {
+            return;
+        }
+        pendingLandingX = contact.getPoint().x;
+    }
+
+    /** A shot's label: its number, vy, and once landed its miss. */
+    private String shotLabel(int shot, boolean hasLanded) {
+        StringBuilder label = new StringBuilder(40);
+        label.append(shot + 1).append(": vy ");
+        TextFormat.appendFixed(label, plan.getVerticalSpeed(shot), 1);
+        if (hasLanded) {
+            label.append(", miss ");
+            TextFormat.appendFixed(label, flownLanding[shot] - TARGET_DISTANCE, 1);
+        }
+        return label.toString();
+    }
+
+    /**
+     * The attempts table, one column per attempt (the latest {@link #TABLE_COLUMNS} known so
+     * far), one row per quantity: shot, vy, landing, miss, and with the mismatch what the
+     * aimer predicted.
+     */
+    private void appendTable(StringBuilder text) {
+        // In instant mode every attempt is known at once; else those fired so far.
+        int known = instant ? plan.size() : fired;
+        int first = Math.max(0, known - TABLE_COLUMNS);
+        text.append("shot          ");
+        for (int shot = first; shot < known; ++shot) {
+            int start = text.length();
+            text.append(shot + 1);
+            pad(text, start);
+        }
+        if (first > 0) {
+            text.append("     (").append(first).append(" earlier not listed)");
+        }
+        text.append("\nvy (m/s)      ");
+        for (int shot = first; shot < known; ++shot) {
+            int start = text.length();
+            TextFormat.appendFixed(text, plan.getVerticalSpeed(shot), 2);
+            pad(text, start);
+        }
+        text.append("\nlanding (m)  ");
+        for (int shot = first; shot < known; ++shot) {
+            appendLanding(text, shot, false);
+        }
+        text.append("\nmiss (m)       ");
+        for (int shot = first; shot < known; ++shot) {
+            appendLanding(text, shot, true);
+        }
+        if (mismatch) {
+            text.append("\naimer saw (m)");
+            for (int shot = first; shot < known; ++shot) {
+                int start = text.length();
+                TextFormat.appendFixed(text, plan.getLandingX(shot), 2);
+                pad(text, start);
+            }
+        }
+        text.append('\n');
+    }
+
+    /** One cell: where an attempt landed or its miss; "air" while in flight. */
+    private void appendLanding(StringBuilder text, int shot, boolean miss) {
+        int start = text.length();
+        double landingX = shot < firstFlown ? plan.getLandingX(shot) : flownLanding[shot];
+        if (Double.isNaN(landingX)) {
+            text.append(shot < landed ? "never" : "air");
+        } else {
+            TextFormat.appendFixed(text, miss ? landingX - TARGET_DISTANCE : landingX, 2);
+        }
+        pad(text, start);
+    }
+
+    /** Right-align the cell that starts at start to {@link #CELL_CHARACTERS}. */
+    private static void pad(StringBuilder text, int start) {
+        for (int i = text.length() - start; i < CELL_CHARACTERS; ++i) {
+            text.insert(start, ' ');
+        }
+    }
+
+    /** Shots used, the instant mode's count, and the mismatch's expected miss. */
+    private void appendSummary(StringBuilder text) {
+        int attempts = plan.size();
+        if (isRoundOver()) {
+            text.append("Round over after ").append(plan.size() - firstFlown)
+                    .append(" flown shots (").append(roundKey.getKeyLabel())
+                    .append(" fires a new round)\n");
+        }
+        if (!result.isHit()) {
+            text.append("No hit: ").append(result.getExplanation()).append('\n');
+        } else if (instant) {
+            text.append("Instant: ").append(attempts).append(" shots in one invisible frame,"
+                    + " the last flown; the player would have watched ").append(attempts)
+                    .append(" shots, ");
+            TextFormat.appendFixed(text, watchSeconds, 1).append(" s of flight\n");
+        } else {
+            text.append("Shots used: ").append(fired).append(" of ").append(attempts)
+                    .append(landed == attempts ? " (hit: |miss| <= " : " (aim: |miss| <= ");
+            TextFormat.appendFixed(text, TOLERANCE_METRES, 2).append(" m)\n");
+        }
+        if (mismatch) {
+            text.append("Predictor mismatch: expected miss vx·|h_predict − h_fly| = ");
+            TextFormat.appendFixed(text, HORIZONTAL_SPEED, 0).append(" m/s · ");
+            TextFormat.appendFixed(text, Math.abs(predictStep - flyStep), 4).append(" s = ");
+            TextFormat.appendFixed(text, getExpectedMismatchMiss(), 3).append(" m");
+            int last = attempts - 1;
+            if (last >= 0 && landed == attempts && !Double.isNaN(flownLanding[last])) {
+                text.append(";  the final shot flew ");
+                TextFormat.appendFixed(text, flownLanding[last] - plan.getLandingX(last), 3)
+                        .append(" m past where the aimer saw it, missing by ");
+                TextFormat.appendFixed(text, flownLanding[last] - TARGET_DISTANCE, 3)
+                        .append(" m");
+            }
+            text.append('\n');
+        }
+    }
+
+    private static int indexOfStrategy(AimStrategy wanted) {
+        for (int i = 0; i < STRATEGIES.length; ++i) {
+            if (STRATEGIES[i] == wanted) {
+                return i;
+            }
+        }
+        return -1;
+    }
+}
