@@ -15,7 +15,7 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
-import particlelab.view.HudLayout;
+import particlelab.view.HudScale;
 import particlelab.view.HudView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
@@ -116,6 +116,12 @@ public abstract class DemoState extends BaseAppState {
     private int blowUps;
     /** A restart asked for inside a step: done once the frame's steps are over. */
     private boolean restartRequested;
+    /** An export asked for (key or button), for the application to carry out. */
+    private boolean exportRequested;
+    /** The window size (pixels) and the user's HUD scale factor of the last layout. */
+    private int laidOutWidth;
+    private int laidOutHeight;
+    private float uiScale = 1f;
 
     /**
      * Create a demo.
@@ -435,7 +441,25 @@ public abstract class DemoState extends BaseAppState {
      * @param height the window's height (in pixels, &gt;0)
      */
     public void layOut(int width, int height) {
-        hud.layOut(width, height, HudLayout.scaleFor(width, height));
+        layOut(width, height, 1f);
+    }
+
+    /**
+     * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
+     * suits it times the user's factor ({@link HudScale#of}), and frame the camera for it if
+     * it has that size. Call on the jME thread, after initialisation.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param userScale the user's factor on the HUD scale (from {@link HudScale#MIN_FACTOR}
+     *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
+     */
+    public void layOut(int width, int height, float userScale) {
+        float scale = HudScale.of(width, height, userScale);
+        laidOutWidth = width;
+        laidOutHeight = height;
+        uiScale = userScale;
+        hud.layOut(width, height, scale);
         hud.takeLayoutChange();
         scene.layOut(hud.getLayout());
         scene.updateViews();
@@ -443,6 +467,39 @@ public abstract class DemoState extends BaseAppState {
                 && getApplication().getCamera().getHeight() == height) {
             frameCamera();
         }
+    }
+
+    /**
+     * Test whether the last layout was for this window size and HUD factor.
+     *
+     * @param width the window's width (in pixels)
+     * @param height the window's height (in pixels)
+     * @param userScale the user's factor on the HUD scale
+     * @return true if {@link #layOut(int, int, float)} with these would change nothing
+     */
+    public boolean isLaidOutFor(int width, int height, float userScale) {
+        return width == laidOutWidth && height == laidOutHeight && userScale == uiScale;
+    }
+
+    /**
+     * Ask for the current trajectories to be exported (the export key, or a panel's button):
+     * the application writes them, with a screenshot, at the end of the frame and names the
+     * folder on the HUD. Without an application that carries it out (a test), nothing happens.
+     */
+    public void requestExport() {
+        exportRequested = true;
+    }
+
+    /**
+     * Test, and forget, whether an export was asked for since the last call: for the
+     * application that carries it out.
+     *
+     * @return true if asked for
+     */
+    public boolean takeExportRequest() {
+        boolean requested = exportRequested;
+        exportRequested = false;
+        return requested;
     }
 
     /**
@@ -610,6 +667,8 @@ public abstract class DemoState extends BaseAppState {
         scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
+        laidOutWidth = app.getCamera().getWidth();
+        laidOutHeight = app.getCamera().getHeight();
         hud.setTitle(titleText);
         hud.setFooter(keys.buildFooter());
         refreshEquations();
@@ -746,6 +805,7 @@ public abstract class DemoState extends BaseAppState {
             DemoParticle demoParticle = particles.get(i);
             demoParticle.steppedThisStep = !demoParticle.isHeld();
             if (demoParticle.steppedThisStep) {
+                demoParticle.getRecord().begin(demoParticle.getParticle());
                 warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
                         demoParticle.getParticle());
             }
@@ -759,6 +819,8 @@ public abstract class DemoState extends BaseAppState {
             if (!demoParticle.steppedThisStep) {
                 continue;
             }
+            // The export's row: the stepped state, before the ground stop moves it.
+            demoParticle.getRecord().add(demoParticle.getParticle(), stepSeconds);
             demoParticle.getBody().copyPreviousPosition(previousPosition);
             // Flight time, and the lecture's stop at the ground, inside the step.
             demoParticle.recordStep(previousPosition, stepSeconds);

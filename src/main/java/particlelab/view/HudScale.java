@@ -1,0 +1,60 @@
+package particlelab.view;
+
+/**
+ * The HUD scale a window gets: the one that suits its size ({@link HudLayout#scaleFor}, 1 at
+ * 1280x720) times a factor the user chooses for a projector ({@code --ui-scale}, and the HUD
+ * scale keys), kept between {@value #MIN_SCALE} and {@link HudLayout#MAX_SCALE}.
+ */
+public final class HudScale {
+
+    /** The user's factor's range, and what one press of a HUD scale key adds or takes. */
+    public static final float MIN_FACTOR = 0.5f;
+    public static final float MAX_FACTOR = 2f;
+    public static final float FACTOR_STEP = 0.25f;
+    /** The smallest scale a factor below 1 reaches (text 10.5 px high). */
+    public static final float MIN_SCALE = 0.5f;
+
+    private HudScale() {
+    }
+
+    /**
+     * Return the HUD scale for a window and a user's factor.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param factor the user's factor (from {@value #MIN_FACTOR} to {@value #MAX_FACTOR})
+     * @return the scale (&gt;0)
+     */
+    public static float of(float width, float height, float factor) {
+        checkFactor(factor, "HUD scale factor");
+        float scale = HudLayout.scaleFor(width, height) * factor;
+        return Math.max(MIN_SCALE, Math.min(HudLayout.MAX_SCALE, scale));
+    }
+
+    /**
+     * Step a factor up or down by {@value #FACTOR_STEP}, within its range.
+     *
+     * @param factor the factor now (within range)
+     * @param steps how many steps (positive: larger text)
+     * @return the new factor
+     */
+    public static float step(float factor, int steps) {
+        float next = Math.round((factor + steps * FACTOR_STEP) / FACTOR_STEP) * FACTOR_STEP;
+        return Math.max(MIN_FACTOR, Math.min(MAX_FACTOR, next));
+    }
+
+    /**
+     * Refuse a factor out of range.
+     *
+     * @param factor the factor
+     * @param what what it is called where it came from, for the message (not null)
+     * @throws IllegalArgumentException if not from {@value #MIN_FACTOR} to
+     *     {@value #MAX_FACTOR}
+     */
+    public static void checkFactor(float factor, String what) {
+        if (!(factor >= MIN_FACTOR && factor <= MAX_FACTOR)) {
+            throw new IllegalArgumentException(what + " must be from " + MIN_FACTOR + " to "
+                    + MAX_FACTOR + ", but was " + factor);
+        }
+    }
+}
