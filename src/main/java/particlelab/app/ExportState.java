@@ -52,7 +52,7 @@ public final class ExportState extends BaseAppState {
         this.binding = new KeyBinding(KeyInput.KEY_E, "E", "export: every particle's"
                 + " trajectory as CSV (t,x,y,z,vx,vy,vz) and a screenshot, into "
                 + baseFolder + "/<demo>-<date-time>/ (the HUD names it)",
-                () -> switcher.getSelected().requestExport()).withSummary("export");
+                () -> switcher.getSelected().requestExport());
     }
 
     /**

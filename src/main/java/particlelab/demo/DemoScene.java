@@ -79,6 +79,9 @@ final class DemoScene {
     private final ScreenRect chosen = new ScreenRect();
     private final ScreenRect reach = new ScreenRect();
     private final Vector3f trailPoint = new Vector3f();
+    /** The HUD's side panel and graph slots (live, empty when not asked for). */
+    private ScreenRect panelSlot = new ScreenRect();
+    private ScreenRect graphSlot = new ScreenRect();
     private TextMeasure measure;
     private DistanceGrid grid;
     private float labelSize = HudLayout.SCENE_LABEL_SIZE;
@@ -244,6 +247,11 @@ final class DemoScene {
         hudRects.add(hud.getBody());
         hudRects.add(hud.getWarning());
         hudRects.add(hud.getFooter());
+        // The side panel's and the graph's slots (empty, covering nothing, when not asked for).
+        hudRects.add(hud.getSidePanel());
+        hudRects.add(hud.getGraph());
+        panelSlot = hud.getSidePanel();
+        graphSlot = hud.getGraph();
         for (int i = 0; i < fixedLabels.size(); ++i) {
             SceneLabel label = fixedLabels.get(i);
             label.preferredRect(plane, measure, labelSize, candidate);
@@ -389,7 +397,12 @@ final class DemoScene {
                     && LabelSlots.ring(best) >= LabelSlots.ring(current);
             int slot = keep ? current : best;
             LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
-            view.placeLabel(plane, labelSize, slot, chosen);
+            if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)) {
+                // The sphere is under the panel or the graph: no slot beside it is free.
+                view.hideLabel();
+            } else {
+                view.placeLabel(plane, labelSize, slot, chosen);
+            }
         }
     }
 

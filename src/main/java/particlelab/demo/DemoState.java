@@ -446,7 +446,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
-     * suits it times the user's factor ({@link HudScale#of}), and frame the camera for it if
+     * suits it times the user's factor ({@link HudScale#layOut}: less if the scene would get
+     * too little of the window), and frame the camera for it if
      * it has that size. Call on the jME thread, after initialisation.
      *
      * @param width the window's width (in pixels, &gt;0)
@@ -455,11 +456,10 @@ public abstract class DemoState extends BaseAppState {
      *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
      */
     public void layOut(int width, int height, float userScale) {
-        float scale = HudScale.of(width, height, userScale);
+        HudScale.layOut(hud, width, height, userScale);
         laidOutWidth = width;
         laidOutHeight = height;
         uiScale = userScale;
-        hud.layOut(width, height, scale);
         hud.takeLayoutChange();
         scene.layOut(hud.getLayout());
         scene.updateViews();

@@ -14,7 +14,35 @@ public final class HudScale {
     /** The smallest scale a factor below 1 reaches (text 10.5 px high). */
     public static final float MIN_SCALE = 0.5f;
 
+    /** The least share of the window's height a layout leaves to the scene. */
+    public static final float MIN_SCENE_SHARE = 0.4f;
+    /** What each try multiplies the scale by while the scene gets less than that. */
+    private static final float SHRINK = 0.9f;
+
     private HudScale() {
+    }
+
+    /**
+     * Lay a HUD out for a window at the scale {@link #of} gives, smaller if that leaves the
+     * scene less than {@value #MIN_SCENE_SHARE} of the window's height (large text on a
+     * small window), down to {@value #MIN_SCALE}. The body's band keeps the most lines it
+     * has needed so far, except while shrinking: then it is sized for the smaller text.
+     *
+     * @param hud the HUD (not null, modified)
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param factor the user's factor (from {@value #MIN_FACTOR} to {@value #MAX_FACTOR})
+     * @return the scale used
+     */
+    public static float layOut(HudView hud, int width, int height, float factor) {
+        float scale = of(width, height, factor);
+        hud.layOut(width, height, scale);
+        while (hud.getLayout().getScene().getHeight() < MIN_SCENE_SHARE * height
+                && scale > MIN_SCALE) {
+            scale = Math.max(MIN_SCALE, SHRINK * scale);
+            hud.layOutAfresh(width, height, scale);
+        }
+        return scale;
     }
 
     /**
