@@ -104,6 +104,8 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder titleText = new StringBuilder(64);
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
+    /** What the launches reach, for the camera to frame. */
+    private final LaunchReach reach = new LaunchReach();
 
     private boolean sceneCreated;
     private HudView hud;
@@ -301,6 +303,7 @@ public abstract class DemoState extends BaseAppState {
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
+        frameLaunches();
         hudDirty = true;
     }
 
@@ -558,6 +561,7 @@ public abstract class DemoState extends BaseAppState {
         clock.reset();
         warnings.clear();
         onRestart();
+        frameLaunches();
         hudDirty = true;
     }
 
@@ -664,6 +668,7 @@ public abstract class DemoState extends BaseAppState {
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
+        frameLaunches();
         scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
@@ -785,6 +790,29 @@ public abstract class DemoState extends BaseAppState {
 
     private void frameCamera() {
         scene.frame(getApplication().getCamera());
+    }
+
+    /**
+     * Frame the region the launches reach, beyond the declared one if they go further: each
+     * particle that stops at the ground and is in flight is flown ahead with its own
+     * integrator and h ({@code LaunchReach}), so the frame follows the launch speed, angle,
+     * g and coefficients the particle has now. At every launch and reset.
+     */
+    private void frameLaunches() {
+        reach.clear();
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            if (particle.stopsAtGround() && !particle.isHeld() && !particle.isParked()) {
+                reach.include(particle, clock.getStepSeconds());
+            }
+        }
+        if (scene.frameReach(reach) && hud != null) {
+            scene.layOut(hud.getLayout());
+            scene.updateViews();
+            if (isEnabled()) {
+                frameCamera();
+            }
+        }
     }
 
     /**
