@@ -544,7 +544,9 @@ public abstract class DemoState extends BaseAppState {
      * from {@link #afterStep}: there it is recorded and done once the frame's steps are over
      * (the rest of them do nothing), so the clock is never reset in the middle of its own
      * step and {@code t} reads 0 with every particle at its launch point. The R key also
-     * reframes the camera.
+     * reframes the camera. The launches are flown ahead to frame what they reach; only when
+     * that goes beyond the region framed so far (new parameters) is the grid built again,
+     * which allocates, and the camera reframed.
      */
     public void restart() {
         if (world.isStepping()) {

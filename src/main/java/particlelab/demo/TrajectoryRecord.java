@@ -129,6 +129,7 @@ public final class TrajectoryRecord {
      * @return storeResult
      */
     public StringBuilder appendCsvRow(int row, StringBuilder storeResult) {
+        // Refuses a row out of range, with the range.
         get(row, 0);
         int base = row * ROW_VALUES;
         storeResult.append(rows[base]);
