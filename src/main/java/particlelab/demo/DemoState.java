@@ -459,7 +459,7 @@ public abstract class DemoState extends BaseAppState {
      *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
      */
     public void layOut(int width, int height, float userScale) {
-        HudScale.layOut(hud, width, height, userScale);
+        HudScale.layOut(hud, width, height, userScale, userScale != uiScale);
         laidOutWidth = width;
         laidOutHeight = height;
         uiScale = userScale;

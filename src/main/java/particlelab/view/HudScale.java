@@ -26,17 +26,25 @@ public final class HudScale {
      * Lay a HUD out for a window at the scale {@link #of} gives, smaller if that leaves the
      * scene less than {@value #MIN_SCENE_SHARE} of the window's height (large text on a
      * small window), down to {@value #MIN_SCALE}. The body's band keeps the most lines it
-     * has needed so far, except while shrinking: then it is sized for the smaller text.
+     * has needed so far, except for a new factor and while shrinking: then it is sized for
+     * the text as it is.
      *
      * @param hud the HUD (not null, modified)
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)
      * @param factor the user's factor (from {@value #MIN_FACTOR} to {@value #MAX_FACTOR})
+     * @param afresh true to size the body's band for the body as it is (the factor changed:
+     *     the lines the old text size needed mean nothing now)
      * @return the scale used
      */
-    public static float layOut(HudView hud, int width, int height, float factor) {
+    public static float layOut(HudView hud, int width, int height, float factor,
+            boolean afresh) {
         float scale = of(width, height, factor);
-        hud.layOut(width, height, scale);
+        if (afresh) {
+            hud.layOutAfresh(width, height, scale);
+        } else {
+            hud.layOut(width, height, scale);
+        }
         while (hud.getLayout().getScene().getHeight() < MIN_SCENE_SHARE * height
                 && scale > MIN_SCALE) {
             scale = Math.max(MIN_SCALE, SHRINK * scale);
