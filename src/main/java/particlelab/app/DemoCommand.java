@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
+import particlelab.view.HudScale;
 import particlelab.demo.DemoState;
 
 /**
@@ -48,6 +49,7 @@ public final class DemoCommand {
     private static final String FIXED_TPF = "--fixed-tpf";
     private static final float MAX_FIXED_TPF = 1f;
     private static final String WINDOW = "--window";
+    private static final String UI_SCALE = "--ui-scale";
     /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
     private static final int MIN_WINDOW_WIDTH = 640;
     private static final int MIN_WINDOW_HEIGHT = 360;
@@ -91,6 +93,8 @@ public final class DemoCommand {
         File screenshot;
         float fixedTpf;
         int[] window;
+        Path exportFolder = null;
+        float uiScale;
         try {
             options.parse(optionArgs);
             if (options.isHelpRequested()) {
@@ -117,12 +121,20 @@ public final class DemoCommand {
                         + " s, but was " + fixedTpf);
             }
             window = parseWindow(options.string(WINDOW, null));
+            uiScale = parseUiScale(options);
+            if (options.has(ExportRun.EXPORT) && frames == 0) {
+                throw new UsageException(ExportRun.EXPORT + ": needs " + FRAMES + " N, so the"
+                        + " app knows when to write the files");
+            }
             if (screenshot != null && frames == 0) {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
             }
             if (screenshot != null) {
                 checkScreenshotPath(file);
+            }
+            if (options.has(ExportRun.EXPORT)) {
+                exportFolder = ExportRun.checkFolder(options.string(ExportRun.EXPORT, null));
             }
         } catch (UsageException e) {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
@@ -137,8 +149,23 @@ public final class DemoCommand {
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
-        return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
-                err);
+        if (exportFolder != null && screenshot == null) {
+            return ExportRun.runHeadless(DemoCatalog.createAll(), index, frames, fixedTpf,
+                    exportFolder, out, err);
+        }
+        return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf,
+                uiScale, exportFolder, out, err);
+    }
+
+    /** Read --ui-scale: the user's factor on the HUD scale, 1 when not given. */
+    private static float parseUiScale(Options options) {
+        float factor = options.positiveFloat(UI_SCALE, 1f);
+        if (!(factor >= HudScale.MIN_FACTOR && factor <= HudScale.MAX_FACTOR)) {
+            throw new UsageException(UI_SCALE + ": must be from " + HudScale.MIN_FACTOR + " to "
+                    + HudScale.MAX_FACTOR + " (a factor on the HUD's text size), but was "
+                    + factor);
+        }
+        return factor;
     }
 
     /**
@@ -232,7 +259,17 @@ public final class DemoCommand {
                         + " an unwritable place is refused")
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
-                .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720)")
+                .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720);"
+                        + " it can be resized, and F11 makes it fullscreen")
+                .value(UI_SCALE, "S", "make the HUD's text S times the size that suits the"
+                        + " window (" + HudScale.MIN_FACTOR + " <= S <= " + HudScale.MAX_FACTOR
+                        + ", default 1; the [ and ] keys change it by "
+                        + HudScale.FACTOR_STEP + ")")
+                .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
+                        + " every particle's trajectory since its launch as DIR/<particle>.csv"
+                        + " (the header and numbers of particle-lab trajectory) and list the"
+                        + " files; without --screenshot it runs without a window (no display"
+                        + " needed, no PNG)")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }
@@ -245,24 +282,21 @@ public final class DemoCommand {
      * @param frames the frame limit, 0 for none
      * @param screenshot the PNG to write, or null
      * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param exportFolder where to export the trajectories when the window closes, or null
      * @param out where results go (not null)
      * @param err where errors go (not null)
      * @return the exit status
      */
     static int openWindow(List<DemoState> demos, int index, int frames, File screenshot,
-            float fixedTpf, PrintStream out, PrintStream err) {
+            float fixedTpf, float uiScale, Path exportFolder, PrintStream out,
+            PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println("particle-lab: cannot open the window: " + noDisplay);
             return FAILED;
         }
-        // ImageIO writes the screenshot; no AWT window is ever opened.
-        System.setProperty("java.awt.headless", "true");
-        JME_LOGGER.setLevel(Level.WARNING);
-        // Window failures reach ParticleLabApp.handleError and are reported in one line.
-        WINDOW_LOGGER.setLevel(Level.OFF);
-        // jME's asset config names optional loaders (Ogre, glTF, Ogg) that no demo uses.
-        ASSET_CONFIG_LOGGER.setLevel(Level.SEVERE);
+        quietLogs();
         if (isBlank(System.getenv("WAYLAND_DISPLAY"))) {
             // GLFW would try Wayland first and print an error about XDG_RUNTIME_DIR.
             GLFW.glfwInitHint(GLFW.GLFW_PLATFORM, GLFW.GLFW_PLATFORM_X11);
@@ -273,6 +307,7 @@ public final class DemoCommand {
         }
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
+        app.getWindowControls().setUiFactor(uiScale);
         app.start();
         try {
             app.awaitFinished(Long.MAX_VALUE);
@@ -298,7 +333,24 @@ public final class DemoCommand {
             out.println("screenshot " + Options.show(screenshot.toString()) + ": "
                     + capture.getStatistics());
         }
+        if (exportFolder != null) {
+            return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, out, err);
+        }
         return OK;
+    }
+
+    /**
+     * Keep jME's logs to what matters for a run, window or not: its warnings, no banner, and
+     * no window failure (ParticleLabApp.handleError reports it in one line).
+     */
+    static void quietLogs() {
+        // ImageIO writes the screenshot; no AWT window is ever opened.
+        System.setProperty("java.awt.headless", "true");
+        JME_LOGGER.setLevel(Level.WARNING);
+        // Window failures reach ParticleLabApp.handleError and are reported in one line.
+        WINDOW_LOGGER.setLevel(Level.OFF);
+        // jME's asset config names optional loaders (Ogre, glTF, Ogg) that no demo uses.
+        ASSET_CONFIG_LOGGER.setLevel(Level.SEVERE);
     }
 
     /**

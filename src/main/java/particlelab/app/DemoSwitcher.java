@@ -73,6 +73,19 @@ public final class DemoSwitcher extends BaseAppState {
     }
 
     /**
+     * Add application keys carried out elsewhere (the window's, the export's): the switcher
+     * maps them with its own and every demo's help lists them. Call before it is attached.
+     *
+     * @param more the keys (not null, copied)
+     */
+    public void addBindings(List<KeyBinding> more) {
+        if (isInitialized()) {
+            throw new IllegalStateException("add application keys before the switcher starts");
+        }
+        bindings.addAll(more);
+    }
+
+    /**
      * Access the demos.
      *
      * @return an unmodifiable list (not null)

@@ -9,10 +9,12 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import com.jme3.system.AppSettings;
 import java.io.File;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 
 /**
  * The Particle Lab window: a jME {@link SimpleApplication} hosting the lecture demos, one
@@ -38,6 +40,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
 
     private final DemoSwitcher switcher;
+    private final WindowControls windowControls;
+    private final ExportState export;
     private final int frameLimit;
     private final ScreenshotCapture capture;
     private final CountDownLatch finished = new CountDownLatch(1);
@@ -86,6 +90,11 @@ public final class ParticleLabApp extends SimpleApplication {
             throw new IllegalArgumentException("a screenshot needs a frame limit (--frames N)");
         }
         this.switcher = new DemoSwitcher(demos, firstDemo);
+        this.windowControls = new WindowControls(switcher);
+        this.export = new ExportState(switcher, ExportState.BASE_FOLDER);
+        List<KeyBinding> windowKeys = new ArrayList<>(windowControls.getBindings());
+        windowKeys.add(export.getBinding());
+        switcher.addBindings(windowKeys);
         this.frameLimit = frameLimit;
         this.capture = screenshot == null ? null : new ScreenshotCapture(screenshot);
         if (!Float.isNaN(fixedFrameSeconds)) {
@@ -116,6 +125,8 @@ public final class ParticleLabApp extends SimpleApplication {
             settings.setResolution(window[0], window[1]);
         }
         settings.setTitle(TITLE);
+        // A lecture hall's window: resized by hand or fullscreen (F11), laid out again each time.
+        settings.setResizable(true);
         settings.setAudioRenderer(null);
         settings.setVSync(false);
         settings.setFrameRate(Float.isNaN(fixedFrameSeconds) ? 60 : -1);
@@ -132,6 +143,24 @@ public final class ParticleLabApp extends SimpleApplication {
      */
     public DemoSwitcher getSwitcher() {
         return switcher;
+    }
+
+    /**
+     * Access the window's controls: the HUD factor, fullscreen.
+     *
+     * @return the live controls (not null)
+     */
+    public WindowControls getWindowControls() {
+        return windowControls;
+    }
+
+    /**
+     * Access the export (the E key's).
+     *
+     * @return the live export (not null)
+     */
+    public ExportState getExport() {
+        return export;
     }
 
     /**
@@ -187,6 +216,8 @@ public final class ParticleLabApp extends SimpleApplication {
             guiViewPort.addProcessor(capture);
         }
         stateManager.attach(switcher);
+        stateManager.attach(windowControls);
+        stateManager.attach(export);
     }
 
     @Override

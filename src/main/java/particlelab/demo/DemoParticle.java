@@ -27,6 +27,8 @@ public final class DemoParticle {
     private final ParticleIntegrator integrator;
     private final Vector3f launchPosition = new Vector3f();
     private final Vector3f launchVelocity = new Vector3f();
+    /** Every state since the launch, for the export. */
+    private final TrajectoryRecord record = new TrajectoryRecord();
     private boolean stopsAtGround;
     /** Set by the base class before each step: the world steps this particle in it. */
     boolean steppedThisStep;
@@ -122,6 +124,15 @@ public final class DemoParticle {
      */
     public ParticleIntegrator getIntegrator() {
         return integrator;
+    }
+
+    /**
+     * Access the states recorded since the launch (what the export writes).
+     *
+     * @return the live record (not null, do not modify)
+     */
+    public TrajectoryRecord getRecord() {
+        return record;
     }
 
     /**
@@ -258,6 +269,7 @@ public final class DemoParticle {
         landingX = Float.NaN;
         landingSeconds = Double.NaN;
         flightSeconds = 0.0;
+        record.clear();
     }
 
     /**

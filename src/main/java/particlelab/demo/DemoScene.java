@@ -37,6 +37,8 @@ import particlelab.view.Trail;
  */
 final class DemoScene {
 
+    /** The room left around a reach beyond the declared region (share of its size). */
+    private static final float REACH_HEADROOM = 0.08f;
     /** How many recent positions each trail keeps: 10 s at 60 steps per second. */
     private static final int TRAIL_POINTS = 600;
     /** The depth of the ground band below y = 0 (in grid spacings). */
@@ -65,6 +67,17 @@ final class DemoScene {
     private int gridLabelEvery = 5;
     private float sphereRadius = 0.35f;
     private boolean arrowsVisible = true;
+    /** The region the demo declared (setRegion): the least the camera frames. */
+    private float declaredXMin = xMin;
+    private float declaredXMax = xMax;
+    private float declaredYMax = yMax;
+    private float declaredSpacing = gridSpacing;
+    /** Kept from build, to build the grid again for a wider region. */
+    private AssetManager assets;
+    private BitmapFont font;
+    private Node sceneNode;
+    /** How many of fixedLabels are posts' names (the grid's marks follow them). */
+    private int markerLabels;
 
     private final PlaneView plane = new PlaneView();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
@@ -79,6 +92,9 @@ final class DemoScene {
     private final ScreenRect chosen = new ScreenRect();
     private final ScreenRect reach = new ScreenRect();
     private final Vector3f trailPoint = new Vector3f();
+    /** The HUD's side panel and graph slots (live, empty when not asked for). */
+    private ScreenRect panelSlot = new ScreenRect();
+    private ScreenRect graphSlot = new ScreenRect();
     private TextMeasure measure;
     private DistanceGrid grid;
     private float labelSize = HudLayout.SCENE_LABEL_SIZE;
@@ -131,6 +147,56 @@ final class DemoScene {
         gridSpacing = gridSpacingMetres;
         gridLabelEvery = labelEvery;
         sphereRadius = sphereRadiusMetres;
+        declaredXMin = xMin;
+        declaredXMax = xMax;
+        declaredYMax = yMax;
+        declaredSpacing = gridSpacingMetres;
+    }
+
+    /**
+     * Frame the region the current launches reach, where it goes beyond the declared one: the
+     * region becomes the declared one widened to hold the reach with {@value #REACH_HEADROOM}
+     * headroom, its grid spacing the declared one times 1, 2 or 5 times a power of ten so the
+     * grid keeps about as many lines, and the grid is built again. A reach inside the
+     * declared region frames the declared region. Call from the jME thread; it allocates
+     * only when the region changes. Takes effect at the next {@link #layOut}.
+     *
+     * @param reach the reach of the launches (not null, not modified; empty: the declared
+     *     region)
+     * @return true if the region changed
+     */
+    boolean frameReach(LaunchReach reach) {
+        float left = declaredXMin;
+        float right = declaredXMax;
+        float top = declaredYMax;
+        if (!reach.isEmpty()) {
+            float width = reach.getXMax() - reach.getXMin();
+            float room = REACH_HEADROOM * Math.max(width, reach.getYMax());
+            if (reach.getXMin() < left) {
+                left = reach.getXMin() - room;
+            }
+            if (reach.getXMax() > right) {
+                right = reach.getXMax() + room;
+            }
+            if (reach.getYMax() > top) {
+                top = reach.getYMax() + room;
+            }
+        }
+        if (left == xMin && right == xMax && top == yMax) {
+            return false;
+        }
+        float growth = Math.max((right - left) / (declaredXMax - declaredXMin),
+                top / declaredYMax);
+        gridSpacing = niceSpacing(declaredSpacing * growth);
+        xMin = left;
+        xMax = right;
+        yMax = top;
+        frameTop = top;
+        yMin = -GROUND_BAND_SPACINGS * gridSpacing;
+        if (grid != null) {
+            buildGrid();
+        }
+        return true;
     }
 
     /**
@@ -174,9 +240,9 @@ final class DemoScene {
      */
     void build(AssetManager assets, BitmapFont font, Node sceneNode) {
         measure = TextMeasure.of(font);
-        grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax, gridSpacing,
-                gridLabelEvery);
-        sceneNode.attachChild(grid.getNode());
+        this.assets = assets;
+        this.font = font;
+        this.sceneNode = sceneNode;
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
             sceneNode.attachChild(ParticleView.createPost(assets, marker.label, marker.x,
@@ -186,7 +252,8 @@ final class DemoScene {
             fixedLabels.add(name);
             sceneNode.attachChild(name.getText());
         }
-        fixedLabels.addAll(grid.getLabels());
+        markerLabels = fixedLabels.size();
+        buildGrid();
         DirectionalLight sun = new DirectionalLight(
                 new Vector3f(-0.4f, -0.6f, -0.7f).normalizeLocal(), ColorRGBA.White.clone());
         sceneNode.addLight(sun);
@@ -244,6 +311,11 @@ final class DemoScene {
         hudRects.add(hud.getBody());
         hudRects.add(hud.getWarning());
         hudRects.add(hud.getFooter());
+        // The side panel's and the graph's slots (empty, covering nothing, when not asked for).
+        hudRects.add(hud.getSidePanel());
+        hudRects.add(hud.getGraph());
+        panelSlot = hud.getSidePanel();
+        graphSlot = hud.getGraph();
         for (int i = 0; i < fixedLabels.size(); ++i) {
             SceneLabel label = fixedLabels.get(i);
             label.preferredRect(plane, measure, labelSize, candidate);
@@ -368,6 +440,37 @@ final class DemoScene {
         CameraFraming.frame(camera, plane);
     }
 
+    /** Build the grid over the region, in place of the one before (and its marks). */
+    private void buildGrid() {
+        if (grid != null) {
+            grid.getNode().removeFromParent();
+            for (int i = fixedLabels.size() - 1; i >= markerLabels; --i) {
+                fixedLabels.remove(i);
+            }
+        }
+        grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax, gridSpacing,
+                gridLabelEvery);
+        sceneNode.attachChild(grid.getNode());
+        fixedLabels.addAll(grid.getLabels());
+    }
+
+    /** The smallest of 1, 2, 5 times a power of ten of the declared spacing, at least s. */
+    private float niceSpacing(float spacing) {
+        float decade = declaredSpacing;
+        while (true) {
+            if (decade >= spacing) {
+                return decade;
+            }
+            if (2f * decade >= spacing) {
+                return 2f * decade;
+            }
+            if (5f * decade >= spacing) {
+                return 5f * decade;
+            }
+            decade *= 10f;
+        }
+    }
+
     /**
      * Give every particle's label the best slot beside its sphere, in the particles' order:
      * keep the slot it has while that stays free (unless a nearer one is free), else take the
@@ -407,7 +510,12 @@ final class DemoScene {
                     && LabelSlots.ring(best) >= LabelSlots.ring(current);
             int slot = keep ? current : best;
             LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
-            view.placeLabel(plane, labelSize, slot, chosen);
+            if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)) {
+                // The sphere is under the panel or the graph: no slot beside it is free.
+                view.hideLabel();
+            } else {
+                view.placeLabel(plane, labelSize, slot, chosen);
+            }
         }
     }
 

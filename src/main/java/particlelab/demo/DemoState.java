@@ -15,7 +15,7 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
-import particlelab.view.HudLayout;
+import particlelab.view.HudScale;
 import particlelab.view.HudView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
@@ -104,6 +104,8 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder titleText = new StringBuilder(64);
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
+    /** What the launches reach, for the camera to frame. */
+    private final LaunchReach reach = new LaunchReach();
 
     private boolean sceneCreated;
     private HudView hud;
@@ -116,6 +118,12 @@ public abstract class DemoState extends BaseAppState {
     private int blowUps;
     /** A restart asked for inside a step: done once the frame's steps are over. */
     private boolean restartRequested;
+    /** An export asked for (key or button), for the application to carry out. */
+    private boolean exportRequested;
+    /** The window size (pixels) and the user's HUD scale factor of the last layout. */
+    private int laidOutWidth;
+    private int laidOutHeight;
+    private float uiScale = 1f;
 
     /**
      * Create a demo.
@@ -295,6 +303,7 @@ public abstract class DemoState extends BaseAppState {
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
+        frameLaunches();
         hudDirty = true;
     }
 
@@ -459,7 +468,25 @@ public abstract class DemoState extends BaseAppState {
      * @param height the window's height (in pixels, &gt;0)
      */
     public void layOut(int width, int height) {
-        hud.layOut(width, height, HudLayout.scaleFor(width, height));
+        layOut(width, height, 1f);
+    }
+
+    /**
+     * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
+     * suits it times the user's factor ({@link HudScale#layOut}: less if the scene would get
+     * too little of the window), and frame the camera for it if
+     * it has that size. Call on the jME thread, after initialisation.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param userScale the user's factor on the HUD scale (from {@link HudScale#MIN_FACTOR}
+     *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
+     */
+    public void layOut(int width, int height, float userScale) {
+        HudScale.layOut(hud, width, height, userScale, userScale != uiScale);
+        laidOutWidth = width;
+        laidOutHeight = height;
+        uiScale = userScale;
         hud.takeLayoutChange();
         scene.layOut(hud.getLayout());
         scene.updateViews();
@@ -467,6 +494,39 @@ public abstract class DemoState extends BaseAppState {
                 && getApplication().getCamera().getHeight() == height) {
             frameCamera();
         }
+    }
+
+    /**
+     * Test whether the last layout was for this window size and HUD factor.
+     *
+     * @param width the window's width (in pixels)
+     * @param height the window's height (in pixels)
+     * @param userScale the user's factor on the HUD scale
+     * @return true if {@link #layOut(int, int, float)} with these would change nothing
+     */
+    public boolean isLaidOutFor(int width, int height, float userScale) {
+        return width == laidOutWidth && height == laidOutHeight && userScale == uiScale;
+    }
+
+    /**
+     * Ask for the current trajectories to be exported (the export key, or a panel's button):
+     * the application writes them, with a screenshot, at the end of the frame and names the
+     * folder on the HUD. Without an application that carries it out (a test), nothing happens.
+     */
+    public void requestExport() {
+        exportRequested = true;
+    }
+
+    /**
+     * Test, and forget, whether an export was asked for since the last call: for the
+     * application that carries it out.
+     *
+     * @return true if asked for
+     */
+    public boolean takeExportRequest() {
+        boolean requested = exportRequested;
+        exportRequested = false;
+        return requested;
     }
 
     /**
@@ -508,7 +568,9 @@ public abstract class DemoState extends BaseAppState {
      * from {@link #afterStep}: there it is recorded and done once the frame's steps are over
      * (the rest of them do nothing), so the clock is never reset in the middle of its own
      * step and {@code t} reads 0 with every particle at its launch point. The R key also
-     * reframes the camera.
+     * reframes the camera. The launches are flown ahead to frame what they reach; only when
+     * that goes beyond the region framed so far (new parameters) is the grid built again,
+     * which allocates, and the camera reframed.
      */
     public void restart() {
         if (world.isStepping()) {
@@ -525,6 +587,7 @@ public abstract class DemoState extends BaseAppState {
         clock.reset();
         warnings.clear();
         onRestart();
+        frameLaunches();
         hudDirty = true;
     }
 
@@ -631,9 +694,12 @@ public abstract class DemoState extends BaseAppState {
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
+        frameLaunches();
         scene.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
+        laidOutWidth = app.getCamera().getWidth();
+        laidOutHeight = app.getCamera().getHeight();
         hud.setTitle(titleText);
         hud.setFooter(keys.buildFooter());
         refreshEquations();
@@ -753,6 +819,29 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Frame the region the launches reach, beyond the declared one if they go further: each
+     * particle that stops at the ground and is in flight is flown ahead with its own
+     * integrator and h ({@code LaunchReach}), so the frame follows the launch speed, angle,
+     * g and coefficients the particle has now. At every launch and reset.
+     */
+    private void frameLaunches() {
+        reach.clear();
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            if (particle.stopsAtGround() && !particle.isHeld() && !particle.isParked()) {
+                reach.include(particle, clock.getStepSeconds());
+            }
+        }
+        if (scene.frameReach(reach) && hud != null) {
+            scene.layOut(hud.getLayout());
+            scene.updateViews();
+            if (isEnabled()) {
+                frameCamera();
+            }
+        }
+    }
+
+    /**
      * One step of h of the world: the clock's stepper. After a restart was requested in this
      * frame the remaining steps do nothing; the restart follows them.
      */
@@ -770,6 +859,7 @@ public abstract class DemoState extends BaseAppState {
             DemoParticle demoParticle = particles.get(i);
             demoParticle.steppedThisStep = !demoParticle.isHeld();
             if (demoParticle.steppedThisStep) {
+                demoParticle.getRecord().begin(demoParticle.getParticle());
                 warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
                         demoParticle.getParticle());
             }
@@ -783,6 +873,8 @@ public abstract class DemoState extends BaseAppState {
             if (!demoParticle.steppedThisStep) {
                 continue;
             }
+            // The export's row: the stepped state, before the ground stop moves it.
+            demoParticle.getRecord().add(demoParticle.getParticle(), stepSeconds);
             demoParticle.getBody().copyPreviousPosition(previousPosition);
             // Flight time, and the lecture's stop at the ground, inside the step.
             demoParticle.recordStep(previousPosition, stepSeconds);

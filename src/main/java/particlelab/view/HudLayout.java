@@ -196,6 +196,15 @@ public final class HudLayout {
         graphHeight = heightAtScaleOne;
     }
 
+    /**
+     * Forget how many lines the body has needed so far, so that the next {@link #layOut}
+     * sizes its band for the body as it is: for a new window size or HUD scale, where the old
+     * count (wrapped for another width or text size) means nothing.
+     */
+    public void forgetBodyLines() {
+        bodyLines = 1;
+    }
+
     /** @return the side panel (live, do not modify; empty when none was asked for) */
     public ScreenRect getSidePanel() {
         return sidePanel;

@@ -116,6 +116,23 @@ public final class HudView {
     }
 
     /**
+     * Lay the HUD out again, like {@link #layOut}, with the body's band sized for the body as
+     * it is now rather than for the most lines it needed before (at another size or scale).
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param hudScale the text scale (&gt;0)
+     */
+    public void layOutAfresh(float width, float height, float hudScale) {
+        layOut(width, height, hudScale);
+        // Twice: the second pass sizes the body's band for the body as wrapped by the first.
+        layout.forgetBodyLines();
+        relayOut();
+        layout.forgetBodyLines();
+        relayOut();
+    }
+
+    /**
      * Access the layout: where each text block goes, and the area left to the scene.
      *
      * @return the live layout (not null, do not modify)

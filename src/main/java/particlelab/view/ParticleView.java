@@ -9,6 +9,7 @@ import com.jme3.math.Vector3f;
 import com.jme3.renderer.queue.RenderQueue;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
 import com.jme3.scene.shape.Quad;
 import com.jme3.scene.shape.Sphere;
 
@@ -186,6 +187,16 @@ public final class ParticleView {
             label.setSize(worldSize);
         }
         label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
+        label.setCullHint(Spatial.CullHint.Inherit);
+    }
+
+    /**
+     * Hide the label until the next {@link #placeLabel}: its rectangle becomes empty, so it
+     * covers nothing. Allocates nothing.
+     */
+    public void hideLabel() {
+        labelRect.set(0f, 0f, 0f, 0f);
+        label.setCullHint(Spatial.CullHint.Always);
     }
 
     /**

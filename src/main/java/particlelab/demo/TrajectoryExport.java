@@ -1,0 +1,151 @@
+package particlelab.demo;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * Writes a demo's trajectories as CSV, one file per particle, {@code FOLDER/<particle>.csv}
+ * with the {@code particle-lab trajectory} header and number format ({@link TrajectoryRecord}):
+ * every step since the particle's launch. A particle parked by the demo (out of its current
+ * preset, left out of the HUD) is left out here too; a particle not stepped since its launch
+ * gets its one launch row.
+ *
+ * <p>File names are made file-safe ({@link #fileSafeName}): lower case, letters, digits, dots
+ * and hyphens only, so {@code "linear drag  F = -0.9 V"} becomes
+ * {@code linear-drag-f-0.9-v.csv}; two particles with the same name get {@code -2}, {@code -3}.
+ */
+public final class TrajectoryExport {
+
+    /** The name of a particle whose label has nothing file-safe in it. */
+    private static final String UNNAMED = "particle";
+
+    private TrajectoryExport() {
+    }
+
+    /**
+     * One file written.
+     */
+    public static final class Written {
+        private final Path file;
+        private final int rows;
+        private final long dropped;
+
+        Written(Path file, int rows, long dropped) {
+            this.file = file;
+            this.rows = rows;
+            this.dropped = dropped;
+        }
+
+        /** @return the file written (not null) */
+        public Path getFile() {
+            return file;
+        }
+
+        /** @return the rows written, header not counted (&ge;1) */
+        public int getRows() {
+            return rows;
+        }
+
+        /** @return the steps past {@link TrajectoryRecord#MAX_ROWS} left out (&ge;0) */
+        public long getDropped() {
+            return dropped;
+        }
+
+        /**
+         * Describe the file in one line for a listing: the path, its rows and, past the cap,
+         * the steps left out.
+         *
+         * @return the line (not null)
+         */
+        public String describe() {
+            return file + ": " + rows + (rows == 1 ? " row" : " rows")
+                    + (dropped == 0L ? "" : " (the first " + TrajectoryRecord.MAX_ROWS
+                            + " states; " + dropped + " later steps were not kept)");
+        }
+    }
+
+    /**
+     * Write every particle's trajectory into a folder, creating the folder (and those above
+     * it) if missing. Call on the jME thread, or after the application stopped.
+     *
+     * @param demo the demo (not null, initialised or not)
+     * @param folder where to write (not null)
+     * @return the files written, in the particles' order (not null)
+     * @throws IOException if the folder or a file cannot be written
+     */
+    public static List<Written> write(DemoState demo, Path folder) throws IOException {
+        Files.createDirectories(folder);
+        List<Written> written = new ArrayList<>();
+        Set<String> taken = new HashSet<>();
+        List<DemoParticle> particles = demo.getParticles();
+        TrajectoryRecord launchOnly = new TrajectoryRecord();
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            if (particle.isParked()) {
+                continue;
+            }
+            String base = fileSafeName(particle.getLabel());
+            String name = base;
+            for (int copy = 2; !taken.add(name); ++copy) {
+                name = base + "-" + copy;
+            }
+            TrajectoryRecord record = particle.getRecord();
+            if (record.size() == 0) {
+                // Not stepped since its launch: its state now is its launch state.
+                launchOnly.clear();
+                launchOnly.begin(particle.getParticle());
+                record = launchOnly;
+            }
+            Path file = folder.resolve(name + ".csv");
+            try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+                record.writeCsv(out);
+            }
+            written.add(new Written(file, record.size(), record.countDropped()));
+        }
+        return written;
+    }
+
+    /**
+     * Turn a label into a file name (without extension) safe on every desktop system: lower
+     * case; letters, digits, dots and hyphens kept; every other run of characters becomes one
+     * hyphen; no hyphen or dot at either end.
+     *
+     * @param label the label (not null)
+     * @return the name (not null, not empty)
+     */
+    public static String fileSafeName(String label) {
+        StringBuilder name = new StringBuilder(label.length());
+        boolean gap = false;
+        for (int i = 0; i < label.length(); ++i) {
+            char c = Character.toLowerCase(label.charAt(i));
+            boolean keep = c >= 'a' && c <= 'z' || c >= '0' && c <= '9' || c == '.' || c == '-';
+            if (keep) {
+                if (gap && c != '-' && name.length() > 0
+                        && name.charAt(name.length() - 1) != '-') {
+                    name.append('-');
+                }
+                gap = false;
+                name.append(c);
+            } else {
+                gap = true;
+            }
+        }
+        int start = 0;
+        int end = name.length();
+        while (start < end && (name.charAt(start) == '-' || name.charAt(start) == '.')) {
+            ++start;
+        }
+        while (end > start && (name.charAt(end - 1) == '-' || name.charAt(end - 1) == '.')) {
+            --end;
+        }
+        String safe = name.substring(start, end);
+        return safe.isEmpty() ? UNNAMED : safe;
+    }
+}

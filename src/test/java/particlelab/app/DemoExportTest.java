@@ -1,0 +1,106 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import particlelab.demo.DragDemo;
+import particlelab.demo.TrajectoryRecord;
+
+/**
+ * {@code particle-lab demo NAME --frames N --fixed-tpf H --export DIR}: each particle's CSV is
+ * what {@code particle-lab trajectory} prints for the same launch, forces and h, byte for
+ * byte, and a folder that cannot be written is refused in one line.
+ */
+class DemoExportTest {
+
+    /** The demos' fixed step, 1/60 s, as --fixed-tpf and --tpf write it. */
+    private static final String FRAME = "0.016666668";
+    private static final String STEP = "1/60";
+    /** 200 frames of 1/60 s: every ball of pull and drag has landed (2.04 s at most). */
+    private static final String FRAMES = "200";
+
+    @Test
+    void theHeaderIsTheTrajectoryCommands() {
+        assertEquals(TrajectoryCommand.HEADER, TrajectoryRecord.HEADER);
+    }
+
+    @Test
+    void pullsCsvIsTheTrajectoryCommandsOutputBitForBit(@TempDir Path folder)
+            throws IOException {
+        CommandRun demo = CommandRun.of("demo", "pull", "--frames", FRAMES, "--fixed-tpf",
+                FRAME, "--export", folder.toString());
+        assertEquals(0, demo.code, demo.toString());
+        Path csv = folder.resolve("ball.csv");
+        assertEquals(List.of("csv " + csv + ": 123 rows"), demo.outLines());
+        assertEquals("", demo.err);
+        // The pull demo's launch: P0 = 0, V0 = (10, 10, 0) m/s, m = 1 kg, gravity only; its
+        // last row is the step that came down through y = 0.
+        CommandRun trajectory = CommandRun.of("trajectory", "--v0", "10,10,0", "--tpf", STEP,
+                "--until-ground");
+        assertEquals(0, trajectory.code, trajectory.toString());
+        assertEquals(trajectory.out, read(csv));
+    }
+
+    @Test
+    void dragsThreeCsvsAreTheTrajectoryCommandsOutputsBitForBit(@TempDir Path folder)
+            throws IOException {
+        CommandRun demo = CommandRun.of("demo", "drag", "--frames", FRAMES, "--fixed-tpf",
+                FRAME, "--export", folder.toString());
+        assertEquals(0, demo.code, demo.toString());
+        assertEquals(3, demo.outLines().size(), demo.out);
+        String[][] files = {
+            {"gravity-only.csv"},
+            {"linear-drag-f-0.9-v.csv", "--linear-drag", Float.toString(DragDemo.LINEAR_B)},
+            {"quadratic-drag-f-0.064-v-v.csv", "--quadratic-drag",
+                Float.toString(DragDemo.QUADRATIC_C)},
+        };
+        for (String[] file : files) {
+            // The drag demo's launch, as in pull, and the one drag force of each ball.
+            List<String> args = new ArrayList<>(List.of("trajectory", "--v0", "10,10,0",
+                    "--tpf", STEP, "--until-ground"));
+            args.addAll(Arrays.asList(file).subList(1, file.length));
+            CommandRun trajectory = CommandRun.of(args.toArray(new String[0]));
+            assertEquals(0, trajectory.code, trajectory.toString());
+            assertEquals(trajectory.out, read(folder.resolve(file[0])), file[0]);
+        }
+    }
+
+    @Test
+    void aFolderThatCannotBeWrittenIsRefusedInOneLine(@TempDir Path folder) throws IOException {
+        Path file = Files.writeString(folder.resolve("taken"), "x");
+        CommandRun onFile = CommandRun.of("demo", "pull", "--frames", "3", "--export",
+                file.toString());
+        assertEquals(2, onFile.code, onFile.toString());
+        assertEquals(1, onFile.errLines().size(), onFile.err);
+        assertTrue(onFile.err.startsWith("particle-lab demo: --export: "), onFile.err);
+        CommandRun underFile = CommandRun.of("demo", "pull", "--frames", "3", "--export",
+                file.resolve("sub").toString());
+        assertEquals(2, underFile.code, underFile.toString());
+        assertEquals(1, underFile.errLines().size(), underFile.err);
+        CommandRun noFrames = CommandRun.of("demo", "pull", "--export", folder.toString());
+        assertEquals(2, noFrames.code, noFrames.toString());
+        assertEquals(List.of("particle-lab demo: --export: needs --frames N, so the app knows"
+                + " when to write the files"), noFrames.errLines());
+    }
+
+    @Test
+    void aUiScaleOutOfRangeIsRefusedWithTheRange() {
+        CommandRun run = CommandRun.of("demo", "pull", "--ui-scale", "5");
+        assertEquals(2, run.code, run.toString());
+        assertEquals(List.of("particle-lab demo: --ui-scale: must be from 0.5 to 2.0 (a factor"
+                + " on the HUD's text size), but was 5.0"), run.errLines());
+    }
+
+    private static String read(Path file) throws IOException {
+        return new String(Files.readAllBytes(file), StandardCharsets.UTF_8);
+    }
+}

@@ -1,0 +1,95 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.input.KeyInput;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.view.HudLayout;
+
+/**
+ * The window's controls in a real headless application: a reshape (the camera resized, as
+ * jME does on every window resize) and a new HUD factor lay the shown demo out again on the
+ * next frame; the keys are in every demo's help; fullscreen without a window says so.
+ */
+class WindowControlsHeadlessTest {
+
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        harness = HeadlessHarness.start(DemoCatalog.createAll());
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void aReshapeAndANewHudFactorLayTheShownDemoOutOnTheNextFrame() throws Exception {
+        ParticleLabApp app = harness.app();
+        DemoState demo = harness.call(() -> app.getSwitcher().getSelected());
+        harness.call(() -> {
+            app.getCamera().resize(1920, 1080, true);
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 1f)));
+        assertEquals(1920f, harness.call(() -> demo.getHud().getLayout().getWindow()
+                .getWidth()));
+        assertEquals(HudLayout.scaleFor(1920, 1080),
+                harness.call(() -> demo.getHud().getLayout().getScale()));
+
+        harness.call(() -> {
+            app.getWindowControls().setUiFactor(0.5f);
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 0.5f)));
+        assertEquals(0.5f * HudLayout.scaleFor(1920, 1080),
+                harness.call(() -> demo.getHud().getLayout().getScale()));
+
+        harness.call(() -> {
+            app.getWindowControls().setUiFactor(1f);
+            app.getCamera().resize(1280, 720, true);
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertTrue(harness.call(() -> demo.isLaidOutFor(1280, 720, 1f)));
+    }
+
+    @Test
+    void theWindowAndExportKeysAreInEveryDemosHelp() throws Exception {
+        for (DemoState demo : harness.app().getSwitcher().getDemos()) {
+            String help = demo.getHelpText();
+            for (String line : new String[] {"F11  -  fullscreen", "]  -  larger HUD text",
+                "[  -  smaller HUD text", "E  -  export"}) {
+                assertTrue(help.contains(line), demo.getTitle() + " lacks " + line);
+            }
+        }
+    }
+
+    @Test
+    void fullscreenWithoutAWindowSaysSo() throws Exception {
+        ParticleLabApp app = harness.app();
+        KeyBinding f11 = null;
+        for (KeyBinding binding : app.getSwitcher().getBindings()) {
+            if (binding.getKeyCode(0) == KeyInput.KEY_F11) {
+                f11 = binding;
+            }
+        }
+        KeyBinding key = f11;
+        harness.call(() -> {
+            key.press(0);
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertEquals("fullscreen needs a window (this run has none)",
+                harness.call(() -> app.getSwitcher().getSelected().getNotice()));
+    }
+}

@@ -1,0 +1,117 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.app.DemoCatalog;
+import particlelab.app.HeadlessHarness;
+import particlelab.physics.SimulationClock;
+import particlelab.view.HudLayout;
+import particlelab.view.HudScale;
+import particlelab.view.ScreenRect;
+
+/**
+ * The lecture hall's layouts: every catalogue demo at the four window sizes and at the HUD
+ * factors of {@code --ui-scale} (its two ends and 1), with the side panel's and the graph's
+ * slots asked for, in a real headless jME application: no two text rectangles intersect (the
+ * two slots count as texts), every text stays inside the window, and the scene keeps its
+ * share of the window. Its own application, so the body bands the extreme factors grow do
+ * not carry over into {@link ScreenLayoutHeadlessTest}'s demos.
+ */
+class WindowLayoutHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    private static final int[][] WINDOWS = {{1024, 768}, {1280, 720}, {1920, 1080},
+        {3840, 2160}};
+    /** The HUD factors checked: the range's ends and the default. */
+    private static final float[] FACTORS = {HudScale.MIN_FACTOR, 1f, HudScale.MAX_FACTOR};
+    /** Slots as large as a parameter panel and a live graph ask for (pixels at scale 1). */
+    private static final float PANEL_WIDTH = 320f;
+    private static final float GRAPH_WIDTH = 360f;
+    private static final float GRAPH_HEIGHT = 200f;
+    /** Launch, flight and landing of every demo, sampled every few frames. */
+    private static final int FRAMES = 240;
+    private static final int SAMPLE_EVERY = 12;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        harness = HeadlessHarness.start(DemoCatalog.createAll());
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void noTwoTextsIntersectAtAnySizeAndFactorWithThePanelAndGraphSlots() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (DemoState demo : harness.app().getSwitcher().getDemos()) {
+            for (int[] window : WINDOWS) {
+                for (float factor : FACTORS) {
+                    problems.addAll(harness.call(() -> run(demo, window[0], window[1],
+                            factor)));
+                }
+            }
+        }
+        assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
+                problems.size() + " problems");
+    }
+
+    private static List<String> run(DemoState demo, int width, int height, float factor) {
+        HudLayout layout = demo.getHud().getLayout();
+        layout.setPanelWidth(PANEL_WIDTH);
+        layout.setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
+        List<String> problems = new ArrayList<>();
+        String where = demo.getTitle() + " " + width + "x" + height + " x" + factor + " ";
+        try {
+            demo.layOut(width, height, factor);
+            demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            demo.restart();
+            ScreenRect scene = layout.getScene();
+            if (scene.getHeight() < HudScale.MIN_SCENE_SHARE * height) {
+                problems.add(where + "the scene gets only " + scene);
+            }
+            for (int frame = 0; frame < FRAMES; ++frame) {
+                demo.update(H);
+                if (frame % SAMPLE_EVERY == 0) {
+                    problems.addAll(check(demo, width, height, where + "frame " + frame));
+                }
+            }
+        } finally {
+            layout.setPanelWidth(0f);
+            layout.setGraphSize(0f, 0f);
+            demo.layOut(1280, 720);
+        }
+        return problems;
+    }
+
+    /** No two texts (the slots included) intersect, and all are inside the window. */
+    private static List<String> check(DemoState demo, int width, int height, String where) {
+        List<String> problems = new ArrayList<>();
+        List<ScreenRect> rects = demo.copyTextRects(new ArrayList<>());
+        rects.add(demo.getHud().getLayout().getSidePanel());
+        rects.add(demo.getHud().getLayout().getGraph());
+        ScreenRect window = new ScreenRect(0f, 0f, width, height);
+        for (int i = 0; i < rects.size(); ++i) {
+            if (rects.get(i).isEmpty()) {
+                continue;
+            }
+            if (!window.contains(rects.get(i))) {
+                problems.add(where + ": text " + i + " " + rects.get(i) + " leaves the window");
+            }
+            for (int j = 0; j < i; ++j) {
+                if (rects.get(i).intersects(rects.get(j))) {
+                    problems.add(where + ": text " + i + " " + rects.get(i) + " covers text "
+                            + j + " " + rects.get(j));
+                }
+            }
+        }
+        return problems;
+    }
+}
