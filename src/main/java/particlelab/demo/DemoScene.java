@@ -65,6 +65,7 @@ final class DemoScene {
     private int gridLabelEvery = 5;
     private float sphereRadius = 0.35f;
     private boolean arrowsVisible = true;
+    private boolean dotsVisible = true;
 
     private final PlaneView plane = new PlaneView();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
@@ -197,6 +198,7 @@ final class DemoScene {
                     particle.getColor(), sphereRadius, TRAIL_POINTS);
             particle.view.getTrail().add(particle.getParticle().position);
             particle.view.getArrow().setVisible(arrowsVisible);
+            particle.view.getTrail().setDotsVisible(dotsVisible);
             sceneNode.attachChild(particle.view.getNode());
         }
         int count = particles.size();
@@ -244,6 +246,7 @@ final class DemoScene {
         hudRects.add(hud.getBody());
         hudRects.add(hud.getWarning());
         hudRects.add(hud.getFooter());
+        hudRects.add(hud.getGraph());
         for (int i = 0; i < fixedLabels.size(); ++i) {
             SceneLabel label = fixedLabels.get(i);
             label.preferredRect(plane, measure, labelSize, candidate);
@@ -330,6 +333,27 @@ final class DemoScene {
                 particles.get(i).view.getArrow().setVisible(arrowsVisible);
             }
         }
+    }
+
+    /**
+     * Show the trails' step dots if hidden, hide them if shown.
+     */
+    void toggleDots() {
+        dotsVisible = !dotsVisible;
+        for (int i = 0; i < particles.size(); ++i) {
+            if (particles.get(i).view != null) {
+                particles.get(i).view.getTrail().setDotsVisible(dotsVisible);
+            }
+        }
+    }
+
+    /**
+     * Test whether the trails' step dots are shown.
+     *
+     * @return true if shown
+     */
+    boolean areDotsVisible() {
+        return dotsVisible;
     }
 
     /**

@@ -82,6 +82,7 @@ public abstract class DemoState extends BaseAppState {
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
     private final DemoScene scene = new DemoScene(particles);
+    private final ExactGhosts ghosts = new ExactGhosts(particles);
     private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
     private final HudWriter hudWriter = new HudWriter(clock, particles);
@@ -295,7 +296,19 @@ public abstract class DemoState extends BaseAppState {
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
+        ghosts.restart(particles.indexOf(particle));
         hudDirty = true;
+    }
+
+    /**
+     * Show each particle's exact ghost (its continuous path from the same launch under the
+     * same forces, drawn faint), the HUD's readouts Euler against exact (apex, range, flight
+     * time, the live distance) and the live graph key. For demos whose particles fly free
+     * (and may stop at the ground), not for bouncing or colliding ones. Call from
+     * {@link #createScene()}.
+     */
+    protected void showExactGhosts() {
+        ghosts.enable();
     }
 
     /**
@@ -456,6 +469,7 @@ public abstract class DemoState extends BaseAppState {
         hud.copyTextRects(storeResult);
         if (!hud.isHelpVisible()) {
             scene.copyTextRects(storeResult);
+            ghosts.copyTextRects(storeResult);
         }
         return storeResult;
     }
@@ -467,6 +481,15 @@ public abstract class DemoState extends BaseAppState {
      */
     public PlaneView getPlaneView() {
         return scene.getPlaneView();
+    }
+
+    /**
+     * Access the exact ghosts, readouts and live graph, for tests.
+     *
+     * @return the live ghosts (not null; inactive unless the demo showed them)
+     */
+    ExactGhosts getExactGhosts() {
+        return ghosts;
     }
 
     /**
@@ -498,6 +521,7 @@ public abstract class DemoState extends BaseAppState {
             particle.restart();
             scene.restartTrail(particle);
         }
+        ghosts.restartAll();
         clock.reset();
         warnings.clear();
         onRestart();
@@ -580,6 +604,7 @@ public abstract class DemoState extends BaseAppState {
         afterFrame();
         world.getImpacts().clear();
         scene.updateViews();
+        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
         warnings.age(tpf);
         hudWriter.age(tpf);
     }
@@ -592,6 +617,7 @@ public abstract class DemoState extends BaseAppState {
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
         hudWriter.write(storeResult, isSceneOver());
+        ghosts.write(storeResult);
         writeHudLines(storeResult);
         return storeResult;
     }
@@ -608,6 +634,7 @@ public abstract class DemoState extends BaseAppState {
         BitmapFont font = HudFont.load(assets);
 
         scene.build(assets, font, sceneNode);
+        ghosts.build(assets, font, sceneNode);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         hud.setTitle(titleText);
@@ -633,6 +660,7 @@ public abstract class DemoState extends BaseAppState {
     protected void onEnable() {
         sceneRoot.attachChild(sceneNode);
         guiRoot.attachChild(hud.getNode());
+        guiRoot.attachChild(ghosts.getGraphNode());
         keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
         hudDirty = true;
@@ -643,6 +671,7 @@ public abstract class DemoState extends BaseAppState {
         keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
         hud.getNode().removeFromParent();
+        ghosts.getGraphNode().removeFromParent();
     }
 
     @Override
@@ -700,7 +729,24 @@ public abstract class DemoState extends BaseAppState {
                 "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
         keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
                 scene::toggleArrows));
+        keys.addShared(new KeyBinding(KeyInput.KEY_U, "U",
+                "show / hide the step dots (one per step: a longer h, sparser dots)",
+                scene::toggleDots));
+        if (ghosts.isEnabled()) {
+            keys.addShared(new KeyBinding(KeyInput.KEY_G, "G",
+                    "show / hide the exact ghosts (the continuous paths, faint)",
+                    ghosts::toggleGhosts));
+            keys.addShared(new KeyBinding(KeyInput.KEY_Y, "Y",
+                    "show / hide the live graph: height and speed against time",
+                    this::toggleGraph));
+        }
         hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
+    }
+
+    private void toggleGraph() {
+        ghosts.toggleGraph(hud.getLayout());
+        layOut(getApplication().getCamera().getWidth(),
+                getApplication().getCamera().getHeight());
     }
 
     private void markHudDirty() {
@@ -764,6 +810,7 @@ public abstract class DemoState extends BaseAppState {
             demoParticle.recordStep(previousPosition, stepSeconds);
             demoParticle.view.getTrail().add(demoParticle.getParticle().position);
         }
+        ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
         warnings.endStep();
     }
