@@ -132,6 +132,7 @@ public abstract class DemoState extends BaseAppState {
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
         world.addStepListener(stepListener);
+        hudWriter.setGhosts(ghosts);
     }
 
     // ---------------------------------------------------------------- hooks for a demo ----
@@ -617,7 +618,6 @@ public abstract class DemoState extends BaseAppState {
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
         hudWriter.write(storeResult, isSceneOver());
-        ghosts.write(storeResult);
         writeHudLines(storeResult);
         return storeResult;
     }

@@ -29,8 +29,11 @@ import particlelab.view.TextFormat;
  * most {@link #MAX_FINISH_SECONDS} more), so both flights' readouts are there together and the
  * clock stops as it always did, with the last Euler landing.
  *
- * <p>Readouts, for particles that stop at the ground: apex height and time, range (from the
- * launch x) and flight time. The Euler particle's come from its steps: it moves on a straight
+ * <p>The HUD ({@link HudWriter}) adds the live distance to each particle's line while it
+ * flies, and once a particle that stops at the ground has landed together with its ghost,
+ * its line becomes its readouts (the body keeps its height: a landed particle's position and
+ * zero velocity say nothing the range does not): apex height and time, range (from the
+ * launch x) and flight time, each "Euler | exact". The Euler particle's come from its steps: it moves on a straight
  * segment within each step, so its apex is its highest step point; its landing is where the
  * segment of its last step crosses y = 0, interpolated linearly
  * ({@link DemoParticle#getLandingX()}). The ghost's come from the exact path, found inside the
@@ -331,45 +334,52 @@ final class ExactGhosts {
     }
 
     /**
-     * Append the readouts, one line per particle shown: the live distance to the ghost and,
-     * for a particle that stops at the ground, apex, range and flight time, each as
-     * "Euler | exact" ("-" until known). Allocates nothing.
+     * Test whether a particle's line is its readout: it stops at the ground, and it and its
+     * ghost have landed.
+     *
+     * @param index the particle's index
+     * @return true if {@link #appendReadout} writes its line
+     */
+    boolean hasReadout(int index) {
+        if (!enabled || paths.length == 0) {
+            return false;
+        }
+        DemoParticle particle = particles.get(index);
+        return particle.stopsAtGround() && particle.hasLanded() && paths[index].hasLanded();
+    }
+
+    /**
+     * Append a landed particle's readout line: apex height and time, range and flight time,
+     * each "Euler | exact". Allocates nothing.
      *
      * @param text where to append (not null, modified)
+     * @param index the particle's index
      */
-    void write(StringBuilder text) {
+    void appendReadout(StringBuilder text, int index) {
+        DemoParticle particle = particles.get(index);
+        ExactPath path = paths[index];
+        appendName(text, particle.getLabel()).append(", Euler | exact:  apex ");
+        pair(text, eulerApexHeight[index], path.getApexHeight()).append(" m at ");
+        pair(text, eulerApexSeconds[index], path.getApexSeconds()).append(" s   range ");
+        pair(text, particle.getLandingX() - launchX[index], path.getLandingX() - launchX[index])
+                .append(" m   flight ");
+        pair(text, particle.getLandingSeconds(), path.getLandingSeconds()).append(" s\n");
+    }
+
+    /**
+     * Append the live distance between a particle and its ghost to the particle's line.
+     * Allocates nothing.
+     *
+     * @param text where to append (not null, modified)
+     * @param index the particle's index
+     */
+    void appendLiveError(StringBuilder text, int index) {
         if (!enabled || paths.length == 0) {
             return;
         }
-        for (int i = 0; i < paths.length; ++i) {
-            DemoParticle particle = particles.get(i);
-            if (particle.isParked()) {
-                continue;
-            }
-            ExactPath path = paths[i];
-            text.append(particle.getLabel()).append(", Euler | exact:  |P - P_exact| = ");
-            TextFormat.appendFixed(text, path.distanceTo(particle.getParticle().position), 3)
-                    .append(" m");
-            if (particle.stopsAtGround()) {
-                text.append("   apex ");
-                if (eulerPastApex[i] && !Double.isNaN(path.getApexHeight())) {
-                    pair(text, eulerApexHeight[i], path.getApexHeight()).append(" m at ");
-                    pair(text, eulerApexSeconds[i], path.getApexSeconds()).append(" s");
-                } else {
-                    text.append('-');
-                }
-                text.append("   range ");
-                if (particle.hasLanded() && path.hasLanded()) {
-                    pair(text, particle.getLandingX() - launchX[i],
-                            path.getLandingX() - launchX[i]).append(" m   flight ");
-                    pair(text, particle.getLandingSeconds(), path.getLandingSeconds())
-                            .append(" s");
-                } else {
-                    text.append("-   flight -");
-                }
-            }
-            text.append('\n');
-        }
+        text.append("   |P - P_exact| = ");
+        TextFormat.appendFixed(text, paths[index].distanceTo(particles.get(index)
+                .getParticle().position), 3).append(" m");
     }
 
     /** Advance a ghost by h, in pieces that each leave a trail point. */
@@ -391,6 +401,12 @@ final class ExactGhosts {
             path.advance(GHOST_POINT_SECONDS);
             views[index].getTrail().add(path.copyPosition(point));
         }
+    }
+
+    /** A particle's name: its label up to the force law after two spaces, if any. */
+    private static StringBuilder appendName(StringBuilder text, String label) {
+        int end = label.indexOf("  ");
+        return text.append(label, 0, end < 0 ? label.length() : end);
     }
 
     private static boolean sameRect(ScreenRect a, ScreenRect b) {

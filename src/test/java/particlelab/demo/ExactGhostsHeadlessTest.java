@@ -82,7 +82,7 @@ class ExactGhostsHeadlessTest {
         String hud = harness.call(() -> pull.formatHud(new StringBuilder()).toString());
         String shown = TextFormat.appendFixed(new StringBuilder("|P - P_exact| = "),
                 measured[4], 3).toString();
-        assertTrue(hud.contains("ball, Euler | exact:  " + shown + " m"), hud);
+        assertTrue(hud.contains(" m/s   " + shown + " m\n"), hud);
     }
 
     @Test
@@ -160,7 +160,7 @@ class ExactGhostsHeadlessTest {
         assertEquals(r[4] - vx * h, r[8], G * h * h / 8 + 1e-4);
         assertEquals(r[5] - h, r[9], G * h * h / (8 * vy) + 1e-5);
         String hud = harness.call(() -> pull.formatHud(new StringBuilder()).toString());
-        StringBuilder apex = new StringBuilder("apex ");
+        StringBuilder apex = new StringBuilder("ball, Euler | exact:  apex ");
         TextFormat.appendFixed(apex, r[6], 2).append(" | ");
         TextFormat.appendFixed(apex, r[2], 2).append(" m at ");
         TextFormat.appendFixed(apex, r[7], 2).append(" | ");
@@ -168,7 +168,7 @@ class ExactGhostsHeadlessTest {
         TextFormat.appendFixed(apex, r[8], 2).append(" | ");
         TextFormat.appendFixed(apex, r[4], 2).append(" m   flight ");
         TextFormat.appendFixed(apex, r[9], 2).append(" | ");
-        TextFormat.appendFixed(apex, r[5], 2).append(" s");
+        TextFormat.appendFixed(apex, r[5], 2).append(" s\n");
         assertTrue(hud.contains(apex), hud + " lacks " + apex);
     }
 
