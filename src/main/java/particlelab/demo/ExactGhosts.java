@@ -30,12 +30,13 @@ import particlelab.view.TextFormat;
  * clock stops as it always did, with the last Euler landing.
  *
  * <p>The HUD ({@link HudWriter}) adds the live distance to each particle's line while it
- * flies, and once a particle that stops at the ground has landed together with its ghost,
- * its line becomes its readouts (the body keeps its height: a landed particle's position and
- * zero velocity say nothing the range does not): apex height and time, range (from the
- * launch x) and flight time, each "Euler | exact". The Euler particle's come from its steps: it moves on a straight
- * segment within each step, so its apex is its highest step point; its landing is where the
- * segment of its last step crosses y = 0, interpolated linearly
+ * flies; once a particle that stops at the ground has landed together with its ghost, its line
+ * becomes its readouts, each "Euler | exact": apex height and time, range (from the launch x)
+ * and flight time ("range 20.24 | 20.41 m after a flight of 2.02 | 2.04 s"). So the body
+ * keeps its height: a landed particle's position and zero velocity say nothing the range does
+ * not. The Euler particle's come from its steps: it moves
+ * on a straight segment within each step, so its apex is its highest step point; its landing
+ * is where the segment of its last step crosses y = 0, interpolated linearly
  * ({@link DemoParticle#getLandingX()}). The ghost's come from the exact path, found inside the
  * step by bisection. A demo whose particles bounce or collide should not ask for ghosts: the
  * ghost does not model contacts.
@@ -362,7 +363,7 @@ final class ExactGhosts {
         pair(text, eulerApexHeight[index], path.getApexHeight()).append(" m at ");
         pair(text, eulerApexSeconds[index], path.getApexSeconds()).append(" s   range ");
         pair(text, particle.getLandingX() - launchX[index], path.getLandingX() - launchX[index])
-                .append(" m   flight ");
+                .append(" m after a flight of ");
         pair(text, particle.getLandingSeconds(), path.getLandingSeconds()).append(" s\n");
     }
 

@@ -26,9 +26,9 @@ import java.util.List;
  * {@link #clear}: one sample per recorded step until it is full, then every other sample is
  * dropped and only every second step is recorded, and so on (the time axis keeps starting at
  * 0). The axes run from 0 (or the lowest height) to a round number above the largest value
- * (1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten), and only grow until the next clear. {@link #refresh}
- * writes the curves into preallocated line meshes; only a change of an axis's range sets the
- * labels' text (jME's text mesh allocates then, a few times a flight).
+ * (1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten), and only grow until the next clear.
+ * {@link #refresh} writes the curves into preallocated line meshes; only a change of an axis's
+ * range sets the labels' text (jME's text mesh allocates then, a few times a flight).
  */
 public final class LiveGraph {
 

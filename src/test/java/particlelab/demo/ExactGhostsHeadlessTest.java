@@ -166,7 +166,7 @@ class ExactGhostsHeadlessTest {
         TextFormat.appendFixed(apex, r[7], 2).append(" | ");
         TextFormat.appendFixed(apex, r[3], 2).append(" s   range ");
         TextFormat.appendFixed(apex, r[8], 2).append(" | ");
-        TextFormat.appendFixed(apex, r[4], 2).append(" m   flight ");
+        TextFormat.appendFixed(apex, r[4], 2).append(" m after a flight of ");
         TextFormat.appendFixed(apex, r[9], 2).append(" | ");
         TextFormat.appendFixed(apex, r[5], 2).append(" s\n");
         assertTrue(hud.contains(apex), hud + " lacks " + apex);
