@@ -34,6 +34,8 @@ import particlelab.world.World;
  * <li>{@link #createScene()} (required): call {@link #addParticle} once per particle, with an
  * integrator holding the forces that act on it, and {@link #setView} to frame the region the
  * demo plays in.</li>
+ * <li>{@link #showExactGhosts()} (optional, in {@code createScene()}): each particle's exact
+ * path beside it, readouts Euler against exact, and the live graph.</li>
  * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
  * <li>{@link #writeHudLines(StringBuilder)}: append the demo's own HUD lines (use
  * {@link TextFormat} for numbers: it allocates nothing).</li>
