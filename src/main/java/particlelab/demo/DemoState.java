@@ -306,9 +306,9 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Show each particle's exact ghost (its continuous path from the same launch under the
      * same forces, drawn faint), the HUD's readouts Euler against exact (apex, range, flight
-     * time, the live distance) and the live graph key. For demos whose particles fly free
-     * (and may stop at the ground), not for bouncing or colliding ones. Call from
-     * {@link #createScene()}.
+     * time, the live distance) and the live graph key. Meant for particles that fly free (and
+     * may stop at the ground): a ghost stops for good at its particle's first resolved
+     * contact. Call from {@link #createScene()}.
      */
     protected void showExactGhosts() {
         ghosts.enable();
@@ -636,7 +636,7 @@ public abstract class DemoState extends BaseAppState {
         BitmapFont font = HudFont.load(assets);
 
         scene.build(assets, font, sceneNode);
-        ghosts.build(assets, font, sceneNode);
+        ghosts.build(assets, font, sceneNode, world);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         hud.setTitle(titleText);

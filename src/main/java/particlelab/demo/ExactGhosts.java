@@ -13,6 +13,10 @@ import particlelab.view.HudLayout;
 import particlelab.view.LiveGraph;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.world.Body;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.World;
 
 /**
  * "Seeing the error" for a demo that asks for it ({@link DemoState#showExactGhosts()}): beside
@@ -38,8 +42,12 @@ import particlelab.view.TextFormat;
  * on a straight segment within each step, so its apex is its highest step point; its landing
  * is where the segment of its last step crosses y = 0, interpolated linearly
  * ({@link DemoParticle#getLandingX()}). The ghost's come from the exact path, found inside the
- * step by bisection. A demo whose particles bounce or collide should not ask for ghosts: the
- * ghost does not model contacts.
+ * step by bisection.
+ *
+ * <p>Contacts: the ghost does not model them. In a world with collision rules, a ghost stops
+ * for good after the step in which its particle had its first resolved contact (a bounce, a
+ * hit), and the particle's line then gives the distance at that moment and says the ghost
+ * stopped there; after a bounce there is no single exact path to compare with.
  *
  * <p>Per step and per frame this allocates nothing.
  */
@@ -65,6 +73,16 @@ final class ExactGhosts {
     /** Per particle: whether the Euler particle is past its apex (falling, or landed). */
     private boolean[] eulerPastApex = new boolean[0];
     private float[] launchX = new float[0];
+    /** Per particle: a contact was resolved in this step, and the ghost stopped for it. */
+    private boolean[] contactThisStep = new boolean[0];
+    private boolean[] stoppedAtContact = new boolean[0];
+    private double[] contactError = new double[0];
+    private final ContactListener contactListener = new ContactListener() {
+        @Override
+        public void resolved(Contact contact, World world) {
+            noteContact(contact);
+        }
+    };
     private LiveGraph graph;
     private final Node graphNode = new Node("live graph holder");
     private float graphSeconds;
@@ -103,11 +121,14 @@ final class ExactGhosts {
      * @param assets the asset manager (not null)
      * @param font the labels' font (not null)
      * @param sceneNode where the ghosts go (not null, modified)
+     * @param world the demo's world, whose resolved contacts stop the ghosts (not null,
+     *     a listener is added)
      */
-    void build(AssetManager assets, BitmapFont font, Node sceneNode) {
+    void build(AssetManager assets, BitmapFont font, Node sceneNode, World world) {
         if (!enabled) {
             return;
         }
+        world.addContactListener(contactListener);
         int count = particles.size();
         paths = new ExactPath[count];
         views = new GhostView[count];
@@ -115,6 +136,9 @@ final class ExactGhosts {
         eulerApexSeconds = new double[count];
         eulerPastApex = new boolean[count];
         launchX = new float[count];
+        contactThisStep = new boolean[count];
+        stoppedAtContact = new boolean[count];
+        contactError = new double[count];
         eulerHeights = new float[count];
         eulerSpeeds = new float[count];
         exactHeights = new float[count];
@@ -164,6 +188,9 @@ final class ExactGhosts {
         eulerApexSeconds[index] = 0.0;
         eulerPastApex[index] = !(particle.velocity.y > 0f);
         launchX[index] = particle.position.x;
+        contactThisStep[index] = false;
+        stoppedAtContact[index] = false;
+        contactError[index] = Double.NaN;
         graph.clear();
         graphSeconds = 0f;
     }
@@ -191,8 +218,12 @@ final class ExactGhosts {
         for (int i = 0; i < paths.length; ++i) {
             DemoParticle demoParticle = particles.get(i);
             Particle particle = demoParticle.getParticle();
-            if (demoParticle.steppedThisStep) {
+            if (demoParticle.steppedThisStep && !stoppedAtContact[i]) {
                 advanceGhost(i, stepSeconds);
+                if (contactThisStep[i]) {
+                    stoppedAtContact[i] = true;
+                    contactError[i] = paths[i].distanceTo(particle.position);
+                }
                 if (particle.position.y > eulerApexHeight[i] && !eulerPastApex[i]) {
                     eulerApexHeight[i] = particle.position.y;
                     eulerApexSeconds[i] = demoParticle.getFlightSeconds();
@@ -379,8 +410,33 @@ final class ExactGhosts {
             return;
         }
         text.append("   |P - P_exact| = ");
+        if (stoppedAtContact[index]) {
+            TextFormat.appendFixed(text, contactError[index], 3)
+                    .append(" m at the first contact, where the ghost stopped");
+            return;
+        }
         TextFormat.appendFixed(text, paths[index].distanceTo(particles.get(index)
                 .getParticle().position), 3).append(" m");
+    }
+
+    /**
+     * Test whether a particle's ghost stopped at the particle's first contact.
+     *
+     * @param index the particle's index
+     * @return true if stopped there
+     */
+    boolean isStoppedAtContact(int index) {
+        return stoppedAtContact[index];
+    }
+
+    /** Mark the particles of a resolved contact: their ghosts stop after this step. */
+    private void noteContact(Contact contact) {
+        for (int i = 0; i < contactThisStep.length; ++i) {
+            Body body = particles.get(i).getBody();
+            if (body == contact.getBodyA() || body == contact.getBodyB()) {
+                contactThisStep[i] = true;
+            }
+        }
     }
 
     /** Advance a ghost by h, in pieces that each leave a trail point. */

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
@@ -19,10 +20,14 @@ import particlelab.accuracy.MotionState;
 import particlelab.accuracy.RungeKutta4;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.LiveGraph;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.world.Detection;
+import particlelab.world.ImpulseResponse;
+import particlelab.world.SurfaceRule;
 
 /**
  * The exact ghosts, readouts and live graph of demos 2 and 3 in a real headless jME
@@ -39,13 +44,15 @@ class ExactGhostsHeadlessTest {
     private static final double EPS = 0x1p-23;
     private static GravitationalPullDemo pull;
     private static DragDemo drag;
+    private static BouncingGhostDemo bounce;
     private static HeadlessHarness harness;
 
     @BeforeAll
     static void startApp() throws Exception {
         pull = new GravitationalPullDemo();
         drag = new DragDemo();
-        harness = HeadlessHarness.start(List.of(pull, drag));
+        bounce = new BouncingGhostDemo();
+        harness = HeadlessHarness.start(List.of(pull, drag, bounce));
     }
 
     @AfterAll
@@ -277,6 +284,49 @@ class ExactGhostsHeadlessTest {
             }
         }
         assertTrue(quiet >= windows / 2, "label changes " + Arrays.toString(measured[1]));
+    }
+
+    @Test
+    void aGhostStopsAtItsParticlesFirstContactAndTheHudSaysSo() throws Exception {
+        Object[] r = harness.call(() -> {
+            bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            bounce.restart();
+            ExactGhosts ghosts = bounce.getExactGhosts();
+            boolean stoppedEarly = ghosts.isStoppedAtContact(0);
+            for (int frame = 0; frame < 90; ++frame) {
+                bounce.advance(H);
+            }
+            return new Object[] {stoppedEarly, ghosts.isStoppedAtContact(0),
+                ghosts.getPath(0).getTimeSeconds(),
+                (double) bounce.getParticles().get(0).getParticle().velocity.y,
+                bounce.formatHud(new StringBuilder()).toString()};
+        });
+        assertFalse((Boolean) r[0]);
+        assertTrue((Boolean) r[1], "the ball bounced within 1.5 s");
+        // Falling 2 m: the exact path reaches the ground at sqrt(2·2/g) = 0.639 s; the Euler
+        // ball (it falls ahead of it, by g·h·t/2) touches down at the latest one step later.
+        double touchdown = Math.sqrt(2 * 2.0 / G);
+        assertEquals(touchdown, (Double) r[2], 2 * H);
+        assertTrue((Double) r[3] != 0.0, "the ball moves on after its bounce");
+        assertTrue(((String) r[4]).contains(" m at the first contact, where the ghost stopped"),
+                (String) r[4]);
+    }
+
+    /** A ball dropped 2 m onto a bouncy ground, with exact ghosts. */
+    static final class BouncingGhostDemo extends DemoState {
+        BouncingGhostDemo() {
+            super("Bouncing ghost (test)");
+        }
+
+        @Override
+        protected void createScene() {
+            DemoParticle ball = addParticle("ball", ColorRGBA.Orange,
+                    new Vector3f(0f, 2.25f, 0f), new Vector3f(), 1f,
+                    new ParticleIntegrator(new Gravity()));
+            ball.getBody().setRadius(0.25f);
+            getWorld().addRule(SurfaceRule.ground(new ImpulseResponse(0.8f), Detection.SWEPT));
+            showExactGhosts();
+        }
     }
 
     private static void press(DemoState demo, String key) {
