@@ -237,8 +237,11 @@ final class ExactGhosts {
             }
             eulerHeights[i] = particle.position.y;
             eulerSpeeds[i] = particle.velocity.length();
-            exactHeights[i] = (float) paths[i].getPosition(1);
-            exactSpeeds[i] = (float) paths[i].getSpeed();
+            // A ghost flown on ahead of the clock has no value at this time: the graph leaves
+            // its curve off from here (it ends at its own landing in the scene and readouts).
+            boolean ahead = paths[i].getTimeSeconds() > graphSeconds + 0.5 * stepSeconds;
+            exactHeights[i] = ahead ? Float.NaN : (float) paths[i].getPosition(1);
+            exactSpeeds[i] = ahead ? Float.NaN : (float) paths[i].getSpeed();
         }
         graph.record(graphSeconds, eulerHeights, eulerSpeeds, exactHeights, exactSpeeds);
     }

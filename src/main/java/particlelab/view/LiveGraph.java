@@ -235,8 +235,10 @@ public final class LiveGraph {
      * @param seconds the time since the flight started (in seconds, &ge; the last sample's)
      * @param eulerHeights each particle's y (in metres, not null, one per particle)
      * @param eulerSpeeds each particle's |V| (in m/s, not null, one per particle)
-     * @param exactHeights each exact ghost's y (in metres, not null, one per particle)
-     * @param exactSpeeds each exact ghost's |V| (in m/s, not null, one per particle)
+     * @param exactHeights each exact ghost's y (in metres, not null, one per particle; NaN:
+     *     not drawn)
+     * @param exactSpeeds each exact ghost's |V| (in m/s, not null, one per particle; NaN: not
+     *     drawn)
      */
     public void record(float seconds, float[] eulerHeights, float[] eulerSpeeds,
             float[] exactHeights, float[] exactSpeeds) {
@@ -256,9 +258,9 @@ public final class LiveGraph {
             values[at + 1] = eulerSpeeds[i];
             values[at + 2] = exactHeights[i];
             values[at + 3] = exactSpeeds[i];
-            minHeight = Math.min(minHeight, Math.min(eulerHeights[i], exactHeights[i]));
-            maxHeight = Math.max(maxHeight, Math.max(eulerHeights[i], exactHeights[i]));
-            maxSpeed = Math.max(maxSpeed, Math.max(eulerSpeeds[i], exactSpeeds[i]));
+            minHeight = extent(minHeight, eulerHeights[i], exactHeights[i], false);
+            maxHeight = extent(maxHeight, eulerHeights[i], exactHeights[i], true);
+            maxSpeed = extent(maxSpeed, eulerSpeeds[i], exactSpeeds[i], true);
         }
         maxTime = Math.max(maxTime, seconds);
         ++count;
@@ -395,7 +397,8 @@ public final class LiveGraph {
                         float x1 = screenX(panel, times[s + 1]);
                         float y0 = screenY(getValue(s, particle, exact, speed), low, high);
                         float y1 = screenY(getValue(s + 1, particle, exact, speed), low, high);
-                        boolean drawn = !exact || ((int) (dash / dashPixels) & 1) == 0;
+                        boolean drawn = (!exact || ((int) (dash / dashPixels) & 1) == 0)
+                                && !Float.isNaN(y0) && !Float.isNaN(y1);
                         if (exact) {
                             dash += (float) Math.hypot(x1 - x0, y1 - y0);
                         }
@@ -410,6 +413,18 @@ public final class LiveGraph {
         }
         curvePositions.rewind();
         curveBuffer.updateData(curvePositions);
+    }
+
+    /** Widen an extent to two values, leaving out NaN (a value the graph does not draw). */
+    private static float extent(float current, float a, float b, boolean largest) {
+        float result = current;
+        if (!Float.isNaN(a)) {
+            result = largest ? Math.max(result, a) : Math.min(result, a);
+        }
+        if (!Float.isNaN(b)) {
+            result = largest ? Math.max(result, b) : Math.min(result, b);
+        }
+        return result;
     }
 
     /** Keep every other sample: the buffer holds the same flight at half the rate. */
