@@ -78,6 +78,7 @@ final class DemoScene {
     private Node sceneNode;
     /** How many of fixedLabels are posts' names (the grid's marks follow them). */
     private int markerLabels;
+    private boolean dotsVisible = true;
 
     private final PlaneView plane = new PlaneView();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
@@ -264,6 +265,7 @@ final class DemoScene {
                     particle.getColor(), sphereRadius, TRAIL_POINTS);
             particle.view.getTrail().add(particle.getParticle().position);
             particle.view.getArrow().setVisible(arrowsVisible);
+            particle.view.getTrail().setDotsVisible(dotsVisible);
             sceneNode.attachChild(particle.view.getNode());
         }
         int count = particles.size();
@@ -420,6 +422,27 @@ final class DemoScene {
                 particles.get(i).view.getArrow().setVisible(arrowsVisible);
             }
         }
+    }
+
+    /**
+     * Show the trails' step dots if hidden, hide them if shown.
+     */
+    void toggleDots() {
+        dotsVisible = !dotsVisible;
+        for (int i = 0; i < particles.size(); ++i) {
+            if (particles.get(i).view != null) {
+                particles.get(i).view.getTrail().setDotsVisible(dotsVisible);
+            }
+        }
+    }
+
+    /**
+     * Test whether the trails' step dots are shown.
+     *
+     * @return true if shown
+     */
+    boolean areDotsVisible() {
+        return dotsVisible;
     }
 
     /**

@@ -34,6 +34,8 @@ import particlelab.world.World;
  * <li>{@link #createScene()} (required): call {@link #addParticle} once per particle, with an
  * integrator holding the forces that act on it, and {@link #setView} to frame the region the
  * demo plays in.</li>
+ * <li>{@link #showExactGhosts()} (optional, in {@code createScene()}): each particle's exact
+ * path beside it, readouts Euler against exact, and the live graph.</li>
  * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
  * <li>{@link #writeHudLines(StringBuilder)}: append the demo's own HUD lines (use
  * {@link TextFormat} for numbers: it allocates nothing).</li>
@@ -82,6 +84,7 @@ public abstract class DemoState extends BaseAppState {
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
     private final DemoScene scene = new DemoScene(particles);
+    private final ExactGhosts ghosts = new ExactGhosts(particles);
     private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
     private final HudWriter hudWriter = new HudWriter(clock, particles);
@@ -139,6 +142,7 @@ public abstract class DemoState extends BaseAppState {
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
         world.addStepListener(stepListener);
+        hudWriter.setGhosts(ghosts);
     }
 
     // ---------------------------------------------------------------- hooks for a demo ----
@@ -303,6 +307,7 @@ public abstract class DemoState extends BaseAppState {
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
+        ghosts.restart(particles.indexOf(particle));
         frameLaunches();
         hudDirty = true;
     }
@@ -318,6 +323,17 @@ public abstract class DemoState extends BaseAppState {
     protected void relabel(DemoParticle particle, String label) {
         particle.setLabel(label);
         scene.relabel(particle);
+    }
+
+    /**
+     * Show each particle's exact ghost (its continuous path from the same launch under the
+     * same forces, drawn faint), the HUD's readouts Euler against exact (apex, range, flight
+     * time, the live distance) and the live graph key. Meant for particles that fly free (and
+     * may stop at the ground): a ghost stops for good at its particle's first resolved
+     * contact. Call from {@link #createScene()}.
+     */
+    protected void showExactGhosts() {
+        ghosts.enable();
     }
 
     /**
@@ -540,6 +556,7 @@ public abstract class DemoState extends BaseAppState {
         hud.copyTextRects(storeResult);
         if (!hud.isHelpVisible()) {
             scene.copyTextRects(storeResult);
+            ghosts.copyTextRects(storeResult);
         }
         return storeResult;
     }
@@ -551,6 +568,15 @@ public abstract class DemoState extends BaseAppState {
      */
     public PlaneView getPlaneView() {
         return scene.getPlaneView();
+    }
+
+    /**
+     * Access the exact ghosts, readouts and live graph, for tests.
+     *
+     * @return the live ghosts (not null; inactive unless the demo showed them)
+     */
+    ExactGhosts getExactGhosts() {
+        return ghosts;
     }
 
     /**
@@ -584,6 +610,7 @@ public abstract class DemoState extends BaseAppState {
             particle.restart();
             scene.restartTrail(particle);
         }
+        ghosts.restartAll();
         clock.reset();
         warnings.clear();
         onRestart();
@@ -667,6 +694,7 @@ public abstract class DemoState extends BaseAppState {
         afterFrame();
         world.getImpacts().clear();
         scene.updateViews();
+        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
         warnings.age(tpf);
         hudWriter.age(tpf);
     }
@@ -696,6 +724,7 @@ public abstract class DemoState extends BaseAppState {
 
         frameLaunches();
         scene.build(assets, font, sceneNode);
+        ghosts.build(assets, font, sceneNode, world);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         laidOutWidth = app.getCamera().getWidth();
@@ -723,6 +752,7 @@ public abstract class DemoState extends BaseAppState {
     protected void onEnable() {
         sceneRoot.attachChild(sceneNode);
         guiRoot.attachChild(hud.getNode());
+        guiRoot.attachChild(ghosts.getGraphNode());
         keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
         hudDirty = true;
@@ -733,6 +763,7 @@ public abstract class DemoState extends BaseAppState {
         keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
         hud.getNode().removeFromParent();
+        ghosts.getGraphNode().removeFromParent();
     }
 
     @Override
@@ -790,7 +821,24 @@ public abstract class DemoState extends BaseAppState {
                 "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
         keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
                 scene::toggleArrows));
+        keys.addShared(new KeyBinding(KeyInput.KEY_U, "U",
+                "show / hide the step dots (one per step: a longer h, sparser dots)",
+                scene::toggleDots));
+        if (ghosts.isEnabled()) {
+            keys.addShared(new KeyBinding(KeyInput.KEY_G, "G",
+                    "show / hide the exact ghosts (the continuous paths, faint)",
+                    ghosts::toggleGhosts));
+            keys.addShared(new KeyBinding(KeyInput.KEY_Y, "Y",
+                    "show / hide the live graph: height and speed against time",
+                    this::toggleGraph));
+        }
         hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
+    }
+
+    private void toggleGraph() {
+        ghosts.toggleGraph(hud.getLayout());
+        layOut(getApplication().getCamera().getWidth(),
+                getApplication().getCamera().getHeight());
     }
 
     private void markHudDirty() {
@@ -880,6 +928,7 @@ public abstract class DemoState extends BaseAppState {
             demoParticle.recordStep(previousPosition, stepSeconds);
             demoParticle.view.getTrail().add(demoParticle.getParticle().position);
         }
+        ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
         warnings.endStep();
     }

@@ -53,6 +53,7 @@ public final class DragDemo extends DemoState {
                 new ParticleIntegrator(new Gravity(), new QuadraticDrag(QUADRATIC_C)))
                 .stopAtGround();
         setView(-2f, 24f, 7f, 1f, 5, 0.3f);
+        showExactGhosts();
     }
 
     @Override

@@ -31,6 +31,7 @@ public final class GravitationalPullDemo extends DemoState {
         addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO, LAUNCH_VELOCITY, 1f,
                 new ParticleIntegrator(new Gravity())).stopAtGround();
         setView(-2f, 24f, 7f, 1f, 5, 0.35f);
+        showExactGhosts();
     }
 
     @Override

@@ -212,6 +212,7 @@ public final class HelloAimingDemo extends DemoState {
         float highestVy = (float) LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, MIN_VX,
                 LONGEST_STEP);
         setView(-6f, 116f, (1f + HEADROOM) * apex(highestVy), 5f, 2, 1.1f);
+        showExactGhosts();
         frameArcs();
     }
 

@@ -10,9 +10,11 @@ import particlelab.view.TextFormat;
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
  * dropped, and the keys that change it), a short notice if one is up, one line per particle
  * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
- * tpf) and the stability line (the smallest limit and the particle it belongs to). The demo's
- * own lines follow, from {@link DemoState#writeHudLines}. Key names come from the bindings.
- * Writing allocates nothing.
+ * tpf) and the stability line (the smallest limit and the particle it belongs to). In a demo
+ * with exact ghosts a particle's line ends with its distance to its ghost, and once landed it
+ * is the particle's readouts, Euler against exact ({@link ExactGhosts}). The demo's own lines
+ * follow, from {@link DemoState#writeHudLines}. Key names come from the bindings. Writing
+ * allocates nothing.
  */
 final class HudWriter {
 
@@ -30,6 +32,8 @@ final class HudWriter {
     private KeyBinding realTimeKey;
     private String notice;
     private float noticeAgeSeconds;
+    /** The demo's exact ghosts, which add to the particle lines (null: none). */
+    private ExactGhosts ghosts;
 
     /**
      * Create a writer for one demo.
@@ -40,6 +44,17 @@ final class HudWriter {
     HudWriter(SimulationClock clock, List<DemoParticle> particles) {
         this.clock = clock;
         this.particles = particles;
+    }
+
+    /**
+     * Let the demo's exact ghosts add to the particle lines: the live distance while a
+     * particle flies, and its readouts, Euler against exact, in place of its line once it
+     * and its ghost have landed.
+     *
+     * @param exactGhosts the demo's ghosts (not null)
+     */
+    void setGhosts(ExactGhosts exactGhosts) {
+        ghosts = exactGhosts;
     }
 
     /**
@@ -120,8 +135,13 @@ final class HudWriter {
             text.append(notice).append('\n');
         }
         for (int i = 0; i < particles.size(); ++i) {
-            if (!particles.get(i).isParked()) {
-                appendParticleLine(text, particles.get(i));
+            if (particles.get(i).isParked()) {
+                continue;
+            }
+            if (ghosts != null && ghosts.hasReadout(i)) {
+                ghosts.appendReadout(text, i);
+            } else {
+                appendParticleLine(text, particles.get(i), i);
             }
         }
         appendSteppingLine(text);
@@ -201,7 +221,7 @@ final class HudWriter {
         }
     }
 
-    private static void appendParticleLine(StringBuilder text, DemoParticle demoParticle) {
+    private void appendParticleLine(StringBuilder text, DemoParticle demoParticle, int index) {
         Particle particle = demoParticle.getParticle();
         text.append(demoParticle.getLabel()).append(":  P = ");
         TextFormat.appendVector(text, particle.position, 2).append(" m   V = ");
@@ -211,6 +231,9 @@ final class HudWriter {
             text.append("   landed at x = ");
             TextFormat.appendFixed(text, demoParticle.getLandingX(), 2).append(" m after ");
             TextFormat.appendFixed(text, demoParticle.getLandingSeconds(), 2).append(" s");
+        }
+        if (ghosts != null) {
+            ghosts.appendLiveError(text, index);
         }
         text.append('\n');
     }

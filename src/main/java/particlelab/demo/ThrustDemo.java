@@ -41,6 +41,7 @@ public final class ThrustDemo extends DemoState {
                 Vector3f.ZERO, LAUNCH_VELOCITY, 1f, new ParticleIntegrator(new Gravity(),
                         new LinearDrag(LINEAR_B), new Thrust(THRUST_K))).stopAtGround();
         setView(-1f, 14f, 4.5f, 0.5f, 4, 0.18f);
+        showExactGhosts();
     }
 
     @Override

@@ -33,6 +33,7 @@ public final class UniformMotionDemo extends DemoState {
         sphere = addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
                 new ParticleIntegrator());
         setView(-2f, 32f, 8f, 1f, 5, 0.4f);
+        showExactGhosts();
     }
 
     @Override

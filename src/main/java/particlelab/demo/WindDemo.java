@@ -119,6 +119,7 @@ public final class WindDemo extends DemoState {
                 .stopAtGround();
         // Step 3: the region the camera frames: x from -2 to 24 m, up to 7 m, 1 m grid.
         setView(-2f, 24f, 7f, 1f, 5, 0.35f);
+        showExactGhosts();
     }
 
     @Override

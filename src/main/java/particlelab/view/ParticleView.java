@@ -14,7 +14,8 @@ import com.jme3.scene.shape.Quad;
 import com.jme3.scene.shape.Sphere;
 
 /**
- * Everything drawn for one particle: a lit sphere, its trail, its velocity arrow and a label
+ * Everything drawn for one particle: a lit sphere, its trail (with a dot per step), its
+ * velocity arrow and a label
  * that follows it in a free slot beside it ({@link #placeLabel}). {@link #update} moves them in
  * place and allocates nothing.
  */
@@ -63,6 +64,7 @@ public final class ParticleView {
         Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
         trail = new Trail(name + " trail", trailPoints, 0.5f * radiusMetres, color, unshaded);
         node.attachChild(trail.getGeometry());
+        node.attachChild(trail.getDotGeometry());
         arrow = new VelocityArrow(name + " velocity", 0.4f * radiusMetres, ARROW_SECONDS,
                 ColorRGBA.White.clone(), unshaded);
         node.attachChild(arrow.getGeometry());

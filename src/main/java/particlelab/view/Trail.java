@@ -11,6 +11,7 @@ import com.jme3.scene.Spatial;
 import com.jme3.scene.VertexBuffer;
 import com.jme3.util.BufferUtils;
 import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
 
 /**
  * The recent path of one particle: a bounded ring buffer of points drawn as a flat ribbon in
@@ -20,12 +21,23 @@ import java.nio.FloatBuffer;
  * <p>All storage is allocated up front. {@link #add} writes one point into the ring;
  * {@link #refresh} copies the ring, oldest first, into the mesh's preallocated vertex buffer.
  * Slots not yet filled repeat the oldest point, which makes zero-area triangles.
+ *
+ * <p>Step dots: a demo adds one point per simulation step, so each point is also drawn as a
+ * small square dot, a second geometry ({@link #getDotGeometry()}) in a lighter shade of the
+ * trail's colour, fading like it. The dots' spacing is {@code |V|·h}: a longer step shows as
+ * sparser dots. {@link #setDotsVisible} hides them.
  */
 public final class Trail {
 
     private static final int FLOATS_PER_POINT = 3;
     /** Opacity of the oldest point; the newest is opaque. */
     private static final float OLDEST_ALPHA = 0.05f;
+    /** A step dot's side, as a multiple of the ribbon's width. */
+    private static final float DOT_WIDTHS = 1.4f;
+    /** How far a dot's colour is mixed toward white, so it stands out on the ribbon. */
+    private static final float DOT_LIGHTEN = 0.55f;
+    private static final int DOT_CORNERS = 4;
+    private static final int DOT_INDICES = 6;
 
     private final int capacity;
     private final float halfWidth;
@@ -38,6 +50,12 @@ public final class Trail {
     private final FloatBuffer positions;
     private final VertexBuffer positionBuffer;
     private final Geometry geometry;
+    /** Half a step dot's side (in metres). */
+    private final float dotHalfSide;
+    private final FloatBuffer dotPositions;
+    private final VertexBuffer dotPositionBuffer;
+    private final Geometry dotGeometry;
+    private boolean dotsVisible = true;
 
     /**
      * Create an empty trail.
@@ -87,6 +105,36 @@ public final class Trail {
         geometry.setQueueBucket(RenderQueue.Bucket.Transparent);
         // The ribbon moves every frame; skip bounds and culling instead of recomputing them.
         geometry.setCullHint(Spatial.CullHint.Always);
+
+        this.dotHalfSide = 0.5f * DOT_WIDTHS * widthMetres;
+        this.dotPositions = BufferUtils.createFloatBuffer(
+                capacity * DOT_CORNERS * FLOATS_PER_POINT);
+        FloatBuffer dotColors = BufferUtils.createFloatBuffer(capacity * DOT_CORNERS * 4);
+        IntBuffer dotIndices = BufferUtils.createIntBuffer(capacity * DOT_INDICES);
+        for (int slot = 0; slot < capacity; ++slot) {
+            float alpha = OLDEST_ALPHA + (1f - OLDEST_ALPHA) * slot / (capacity - 1);
+            for (int corner = 0; corner < DOT_CORNERS; ++corner) {
+                dotColors.put(lighten(color.r)).put(lighten(color.g)).put(lighten(color.b))
+                        .put(alpha * color.a);
+            }
+            // Two triangles per dot: corners 0-1-2 and 0-2-3, counter-clockwise.
+            int first = slot * DOT_CORNERS;
+            dotIndices.put(first).put(first + 1).put(first + 2)
+                    .put(first).put(first + 2).put(first + 3);
+        }
+        dotColors.flip();
+        dotIndices.flip();
+        Mesh dots = new Mesh();
+        dots.setMode(Mesh.Mode.Triangles);
+        dots.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_POINT, dotPositions);
+        dots.setBuffer(VertexBuffer.Type.Color, 4, dotColors);
+        dots.setBuffer(VertexBuffer.Type.Index, 3, dotIndices);
+        dots.setStreamed();
+        this.dotPositionBuffer = dots.getBuffer(VertexBuffer.Type.Position);
+        this.dotGeometry = new Geometry(name + " step dots", dots);
+        dotGeometry.setMaterial(ribbon);
+        dotGeometry.setQueueBucket(RenderQueue.Bucket.Transparent);
+        dotGeometry.setCullHint(Spatial.CullHint.Always);
     }
 
     /**
@@ -111,6 +159,34 @@ public final class Trail {
             throw new IllegalArgumentException("trail tint must be a colour, but was null");
         }
         geometry.getMaterial().setColor("Color", tint);
+    }
+
+    /**
+     * Access the step dots' geometry, one dot per point, to attach beside the ribbon.
+     *
+     * @return the live geometry (not null)
+     */
+    public Geometry getDotGeometry() {
+        return dotGeometry;
+    }
+
+    /**
+     * Show or hide the step dots.
+     *
+     * @param visible true to show them
+     */
+    public void setDotsVisible(boolean visible) {
+        dotsVisible = visible;
+        changed = true;
+    }
+
+    /**
+     * Test whether the step dots are shown.
+     *
+     * @return true if shown
+     */
+    public boolean areDotsVisible() {
+        return dotsVisible;
     }
 
     /**
@@ -181,18 +257,31 @@ public final class Trail {
             return;
         }
         changed = false;
-        if (count < 2) {
-            geometry.setCullHint(Spatial.CullHint.Always);
+        boolean showDots = dotsVisible && count > 0;
+        dotGeometry.setCullHint(showDots ? Spatial.CullHint.Never : Spatial.CullHint.Always);
+        boolean showRibbon = count >= 2;
+        geometry.setCullHint(showRibbon ? Spatial.CullHint.Never : Spatial.CullHint.Always);
+        if (!showRibbon && !showDots) {
             return;
         }
-        geometry.setCullHint(Spatial.CullHint.Never);
         int padding = capacity - count;
         for (int slot = 0; slot < capacity; ++slot) {
             int age = slot < padding ? 0 : slot - padding;
-            writeSlot(slot, age);
+            if (showRibbon) {
+                writeSlot(slot, age);
+            }
+            if (showDots) {
+                writeDot(slot, age, slot >= padding);
+            }
         }
-        positions.rewind();
-        positionBuffer.updateData(positions);
+        if (showRibbon) {
+            positions.rewind();
+            positionBuffer.updateData(positions);
+        }
+        if (showDots) {
+            dotPositions.rewind();
+            dotPositionBuffer.updateData(dotPositions);
+        }
     }
 
     /** Write the two ribbon vertices of one slot, offset sideways from the point. */
@@ -216,6 +305,24 @@ public final class Trail {
         float z = ring[here + 2];
         positions.put(out, x + nx).put(out + 1, y + ny).put(out + 2, z);
         positions.put(out + 3, x - nx).put(out + 4, y - ny).put(out + 5, z);
+    }
+
+    /** Write the four corners of one slot's dot; a slot not yet filled gets no area. */
+    private void writeDot(int slot, int age, boolean filled) {
+        int here = ringIndex(age) * FLOATS_PER_POINT;
+        float x = ring[here];
+        float y = ring[here + 1];
+        float z = ring[here + 2];
+        float d = filled ? dotHalfSide : 0f;
+        int out = slot * DOT_CORNERS * FLOATS_PER_POINT;
+        dotPositions.put(out, x - d).put(out + 1, y - d).put(out + 2, z);
+        dotPositions.put(out + 3, x + d).put(out + 4, y - d).put(out + 5, z);
+        dotPositions.put(out + 6, x + d).put(out + 7, y + d).put(out + 8, z);
+        dotPositions.put(out + 9, x - d).put(out + 10, y + d).put(out + 11, z);
+    }
+
+    private static float lighten(float channel) {
+        return channel + DOT_LIGHTEN * (1f - channel);
     }
 
     private int ringIndex(int age) {

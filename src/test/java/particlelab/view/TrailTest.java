@@ -53,4 +53,38 @@ class TrailTest {
         assertEquals(-0.1f, after.get(4), 1e-7f);
         assertEquals(1f, after.get(12), 0f);
     }
+
+    @Test
+    void eachPointIsAStepDotCentredOnItAndSlotsNotFilledHaveNoArea() {
+        float width = 0.2f;
+        Trail trail = new Trail("t", 3, width, ColorRGBA.White, UNSHADED);
+        trail.add(new Vector3f(2f, 3f, 0f));
+        trail.refresh();
+        // One point: no ribbon yet, but its dot.
+        assertEquals(Spatial.CullHint.Always, trail.getGeometry().getCullHint());
+        assertEquals(Spatial.CullHint.Never, trail.getDotGeometry().getCullHint());
+        trail.add(new Vector3f(4f, 3f, 0f));
+        trail.refresh();
+        FloatBuffer dots = (FloatBuffer) trail.getDotGeometry().getMesh()
+                .getBuffer(VertexBuffer.Type.Position).getData();
+        // Slot 0 is not filled: its four corners sit on the oldest point.
+        for (int corner = 0; corner < 4; ++corner) {
+            assertEquals(2f, dots.get(3 * corner), 0f);
+            assertEquals(3f, dots.get(3 * corner + 1), 0f);
+        }
+        // Slots 1 and 2 are the two points, each a square of side 1.4 widths around it.
+        float half = 0.7f * width;
+        int slot1 = 12;
+        assertEquals(2f - half, dots.get(slot1), 1e-6f);
+        assertEquals(3f - half, dots.get(slot1 + 1), 1e-6f);
+        assertEquals(2f + half, dots.get(slot1 + 6), 1e-6f);
+        assertEquals(3f + half, dots.get(slot1 + 7), 1e-6f);
+        int slot2 = 24;
+        assertEquals(4f - half, dots.get(slot2), 1e-6f);
+        assertEquals(4f + half, dots.get(slot2 + 6), 1e-6f);
+        trail.setDotsVisible(false);
+        trail.refresh();
+        assertEquals(Spatial.CullHint.Always, trail.getDotGeometry().getCullHint());
+        assertEquals(Spatial.CullHint.Never, trail.getGeometry().getCullHint());
+    }
 }

@@ -1,0 +1,537 @@
+package particlelab.view;
+
+import com.jme3.asset.AssetManager;
+import com.jme3.font.BitmapFont;
+import com.jme3.font.BitmapText;
+import com.jme3.material.Material;
+import com.jme3.material.RenderState;
+import com.jme3.math.ColorRGBA;
+import com.jme3.renderer.queue.RenderQueue;
+import com.jme3.scene.Geometry;
+import com.jme3.scene.Mesh;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import com.jme3.scene.VertexBuffer;
+import com.jme3.scene.shape.Quad;
+import com.jme3.util.BufferUtils;
+import java.nio.FloatBuffer;
+import java.util.List;
+
+/**
+ * A small live graph for the HUD's graph slot: height y and speed |V| against time, side by
+ * side, one pair of curves per particle in its colour: the Euler particle solid, its exact
+ * ghost dashed.
+ *
+ * <p>The samples live in a bounded buffer that always holds the whole flight since the last
+ * {@link #clear}: one sample per recorded step until it is full, then every other sample is
+ * dropped and only every second step is recorded, and so on (the time axis keeps starting at
+ * 0). The axes run from 0 (or the lowest height) to a round number above the largest value
+ * (1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten), and only grow until the next clear.
+ * {@link #refresh} writes the curves into preallocated line meshes; only a change of an axis's
+ * range sets the labels' text (jME's text mesh allocates then, a few times a flight).
+ */
+public final class LiveGraph {
+
+    /** How many samples the graph keeps (a power of two, so halving stays exact). */
+    public static final int CAPACITY = 256;
+    /** Values per sample and particle: Euler y, Euler |V|, exact y, exact |V|. */
+    private static final int VALUES = 4;
+    private static final int PANELS = 2;
+    private static final int KINDS = 2;
+    private static final int FLOATS_PER_VERTEX = 3;
+    /** A dash of the exact curve, and the gap after it (in pixels at text size 19). */
+    private static final float DASH_PIXELS_PER_TEXT_PIXEL = 6f / 19f;
+    /** Where an unused segment goes: off the screen. */
+    private static final float HIDDEN = -1000f;
+    /** Padding inside the graph, as a fraction of the text size. */
+    private static final float PADDING = 0.4f;
+    private static final ColorRGBA BACKGROUND = new ColorRGBA(0.05f, 0.06f, 0.09f, 0.85f);
+    private static final ColorRGBA FRAME = new ColorRGBA(0.45f, 0.5f, 0.6f, 1f);
+    private static final ColorRGBA TEXT = new ColorRGBA(0.85f, 0.9f, 1f, 1f);
+    /** How far the exact curve's colour is mixed toward white. */
+    private static final float EXACT_LIGHTEN = 0.35f;
+    /** The widest label the layout must fit into a panel, measured at layout. */
+    private static final String WIDEST_LABEL = "speed |V| (m/s): 0 to 500";
+    private static final String LEGEND = "solid Euler, dashed exact";
+    /** The round numbers an axis ends at, times a power of ten. */
+    private static final double[] ROUND_STEPS = {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0};
+    /** The labels' size, as a fraction of the scene labels' size. */
+    private static final float TEXT_SHRINK = 0.85f;
+
+    private final int series;
+    private final TextMeasure measure;
+    private final Node node = new Node("live graph");
+    private final Geometry background;
+    private final Geometry frame;
+    private final FloatBuffer framePositions;
+    private final VertexBuffer frameBuffer;
+    private final FloatBuffer curvePositions;
+    private final VertexBuffer curveBuffer;
+    private final BitmapText[] labels = new BitmapText[4];
+    private final StringBuilder labelText = new StringBuilder(64);
+    private final ScreenRect[] labelRects = new ScreenRect[4];
+
+    /** The samples: times (s), and VALUES values per particle per sample. */
+    private final float[] times = new float[CAPACITY];
+    private final float[] values;
+    private int count;
+    /** Record every stride-th sample offered; the rest are skipped. */
+    private int stride = 1;
+    private int skipped;
+    /** The data's extent since the last clear. */
+    private float maxTime;
+    private float minHeight;
+    private float maxHeight;
+    private float maxSpeed;
+    /** The axes' ranges the labels show (NaN: not set yet). */
+    private float axisTime = Float.NaN;
+    private float axisLow = Float.NaN;
+    private float axisHigh = Float.NaN;
+    private float axisSpeed = Float.NaN;
+    private boolean changed = true;
+    private boolean laidOut;
+    private int labelChanges;
+    /** The plots' boxes on the screen (pixels): left, bottom, width, height per panel. */
+    private final float[] plotLeft = new float[PANELS];
+    private float plotBottom;
+    private float plotWidth;
+    private float plotHeight;
+    private float dashPixels = 6f;
+
+    /**
+     * Create a graph for some particles.
+     *
+     * @param assetManager loads the materials (not null)
+     * @param font the labels' font (not null)
+     * @param colors each particle's colour, in order (not null, at least one, not modified)
+     */
+    public LiveGraph(AssetManager assetManager, BitmapFont font, ColorRGBA[] colors) {
+        if (colors == null || colors.length == 0) {
+            throw new IllegalArgumentException("a graph needs at least one particle's colour");
+        }
+        series = colors.length;
+        measure = TextMeasure.of(font);
+        values = new float[CAPACITY * series * VALUES];
+        Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
+
+        Material shade = unshaded.clone();
+        shade.setColor("Color", BACKGROUND);
+        shade.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        background = new Geometry("live graph background", new Quad(1f, 1f));
+        background.setMaterial(shade);
+        background.setQueueBucket(RenderQueue.Bucket.Gui);
+        node.attachChild(background);
+
+        // Two boxes: 4 segments each.
+        framePositions = BufferUtils.createFloatBuffer(PANELS * 8 * FLOATS_PER_VERTEX);
+        Mesh frameMesh = new Mesh();
+        frameMesh.setMode(Mesh.Mode.Lines);
+        frameMesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_VERTEX, framePositions);
+        frameBuffer = frameMesh.getBuffer(VertexBuffer.Type.Position);
+        Material frameColor = unshaded.clone();
+        frameColor.setColor("Color", FRAME);
+        frame = new Geometry("live graph frame", frameMesh);
+        frame.setMaterial(frameColor);
+        frame.setQueueBucket(RenderQueue.Bucket.Gui);
+        frame.setCullHint(Spatial.CullHint.Never);
+        node.attachChild(frame);
+
+        int vertices = segmentCount() * 2;
+        curvePositions = BufferUtils.createFloatBuffer(vertices * FLOATS_PER_VERTEX);
+        FloatBuffer curveColors = BufferUtils.createFloatBuffer(vertices * 4);
+        for (int panel = 0; panel < PANELS; ++panel) {
+            for (int particle = 0; particle < series; ++particle) {
+                for (int kind = 0; kind < KINDS; ++kind) {
+                    ColorRGBA c = colors[particle];
+                    float lift = kind == 0 ? 0f : EXACT_LIGHTEN;
+                    for (int v = 0; v < (CAPACITY - 1) * 2; ++v) {
+                        curveColors.put(c.r + lift * (1f - c.r)).put(c.g + lift * (1f - c.g))
+                                .put(c.b + lift * (1f - c.b)).put(1f);
+                    }
+                }
+            }
+        }
+        curveColors.flip();
+        Mesh curveMesh = new Mesh();
+        curveMesh.setMode(Mesh.Mode.Lines);
+        curveMesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_VERTEX, curvePositions);
+        curveMesh.setBuffer(VertexBuffer.Type.Color, 4, curveColors);
+        curveMesh.setStreamed();
+        curveBuffer = curveMesh.getBuffer(VertexBuffer.Type.Position);
+        Material lines = unshaded.clone();
+        lines.setBoolean("VertexColor", true);
+        Geometry curves = new Geometry("live graph curves", curveMesh);
+        curves.setMaterial(lines);
+        curves.setQueueBucket(RenderQueue.Bucket.Gui);
+        curves.setCullHint(Spatial.CullHint.Never);
+        node.attachChild(curves);
+
+        for (int i = 0; i < labels.length; ++i) {
+            labels[i] = new BitmapText(font);
+            labels[i].setColor(TEXT.clone());
+            labels[i].setText("");
+            labels[i].setQueueBucket(RenderQueue.Bucket.Gui);
+            node.attachChild(labels[i]);
+            labelRects[i] = new ScreenRect();
+        }
+        labels[3].setText(LEGEND);
+        clear();
+    }
+
+    /**
+     * Access the node to attach to the GUI scene.
+     *
+     * @return the live node (not null)
+     */
+    public Node getNode() {
+        return node;
+    }
+
+    /**
+     * Show or hide the graph.
+     *
+     * @param visible true to show it
+     */
+    public void setVisible(boolean visible) {
+        node.setCullHint(visible ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+    }
+
+    /**
+     * Test whether the graph is shown.
+     *
+     * @return true if shown
+     */
+    public boolean isVisible() {
+        return node.getCullHint() != Spatial.CullHint.Always;
+    }
+
+    /**
+     * Forget every sample: a new flight starts at t = 0.
+     */
+    public void clear() {
+        count = 0;
+        stride = 1;
+        skipped = 0;
+        maxTime = 0f;
+        minHeight = 0f;
+        maxHeight = 0f;
+        maxSpeed = 0f;
+        changed = true;
+    }
+
+    /**
+     * Return how many samples the graph holds.
+     *
+     * @return the count (from 0 to {@link #CAPACITY})
+     */
+    public int size() {
+        return count;
+    }
+
+    /**
+     * Offer one sample of every particle; it is kept or skipped as the buffer's thinning
+     * says. Allocates nothing.
+     *
+     * @param seconds the time since the flight started (in seconds, &ge; the last sample's)
+     * @param eulerHeights each particle's y (in metres, not null, one per particle)
+     * @param eulerSpeeds each particle's |V| (in m/s, not null, one per particle)
+     * @param exactHeights each exact ghost's y (in metres, not null, one per particle; NaN:
+     *     not drawn)
+     * @param exactSpeeds each exact ghost's |V| (in m/s, not null, one per particle; NaN: not
+     *     drawn)
+     */
+    public void record(float seconds, float[] eulerHeights, float[] eulerSpeeds,
+            float[] exactHeights, float[] exactSpeeds) {
+        if (count > 0 && skipped < stride - 1) {
+            ++skipped;
+            return;
+        }
+        skipped = 0;
+        if (count == CAPACITY) {
+            thin();
+        }
+        times[count] = seconds;
+        int base = count * series * VALUES;
+        for (int i = 0; i < series; ++i) {
+            int at = base + i * VALUES;
+            values[at] = eulerHeights[i];
+            values[at + 1] = eulerSpeeds[i];
+            values[at + 2] = exactHeights[i];
+            values[at + 3] = exactSpeeds[i];
+            minHeight = extent(minHeight, eulerHeights[i], exactHeights[i], false);
+            maxHeight = extent(maxHeight, eulerHeights[i], exactHeights[i], true);
+            maxSpeed = extent(maxSpeed, eulerSpeeds[i], exactSpeeds[i], true);
+        }
+        maxTime = Math.max(maxTime, seconds);
+        ++count;
+        changed = true;
+    }
+
+    /**
+     * Return one recorded value.
+     *
+     * @param sample the sample (from 0 to {@code size() − 1})
+     * @param particle the particle (from 0)
+     * @param exact true for the exact ghost, false for the Euler particle
+     * @param speed true for |V| (m/s), false for y (m)
+     * @return the value
+     */
+    public float getValue(int sample, int particle, boolean exact, boolean speed) {
+        return values[(sample * series + particle) * VALUES + (exact ? 2 : 0) + (speed ? 1 : 0)];
+    }
+
+    /**
+     * Return one sample's time.
+     *
+     * @param sample the sample (from 0 to {@code size() − 1})
+     * @return the time (in seconds)
+     */
+    public float getTime(int sample) {
+        return times[sample];
+    }
+
+    /**
+     * Count the times an axis label's text was set: each allocates in jME's text mesh.
+     *
+     * @return the count since the graph was created (&ge;0)
+     */
+    public int countLabelChanges() {
+        return labelChanges;
+    }
+
+    /**
+     * Fit the graph into a rectangle of the screen: two panels side by side, a label above
+     * and below each, the text shrunk if a label would not fit its panel.
+     *
+     * @param area the graph's rectangle (in pixels, not null, not modified; empty: nothing is
+     *     drawn)
+     * @param textSize the labels' largest text size (in pixels, &gt;0)
+     */
+    public void layOut(ScreenRect area, float textSize) {
+        if (area.isEmpty()) {
+            laidOut = false;
+            node.setLocalTranslation(0f, 0f, 0f);
+            background.setLocalScale(0f);
+            for (int i = 0; i < labels.length; ++i) {
+                labelRects[i].set(0f, 0f, 0f, 0f);
+            }
+            return;
+        }
+        float largest = TEXT_SHRINK * textSize;
+        float pad = PADDING * largest;
+        float panelWidth = (area.getWidth() - (PANELS + 1) * pad) / PANELS;
+        float size = largest * Math.min(1f, panelWidth / measure.width(WIDEST_LABEL, largest));
+        float lineHeight = measure.lineHeight(size);
+        pad = PADDING * size;
+        panelWidth = (area.getWidth() - (PANELS + 1) * pad) / PANELS;
+        background.setLocalScale(area.getWidth(), area.getHeight(), 1f);
+        background.setLocalTranslation(area.getX(), area.getY(), 0f);
+        plotBottom = area.getY() + pad + lineHeight + pad;
+        plotHeight = area.getTop() - pad - lineHeight - pad - plotBottom;
+        plotWidth = panelWidth;
+        for (int panel = 0; panel < PANELS; ++panel) {
+            plotLeft[panel] = area.getX() + pad + panel * (panelWidth + pad);
+        }
+        for (int i = 0; i < labels.length; ++i) {
+            int panel = i % PANELS;
+            boolean top = i < PANELS;
+            labels[i].setSize(size);
+            float y = top ? area.getTop() - pad : area.getY() + pad + lineHeight;
+            labels[i].setLocalTranslation(plotLeft[panel], y, 3f);
+        }
+        dashPixels = DASH_PIXELS_PER_TEXT_PIXEL * size;
+        writeFrame();
+        laidOut = plotWidth > 0f && plotHeight > 0f;
+        axisTime = Float.NaN;
+        changed = true;
+    }
+
+    /**
+     * Copy the labels' rectangles into a list, for tests of the layout; none while hidden.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
+        if (!laidOut || !isVisible()) {
+            return storeResult;
+        }
+        for (int i = 0; i < labels.length; ++i) {
+            BitmapText label = labels[i];
+            if (label.getText().isEmpty()) {
+                continue;
+            }
+            storeResult.add(new ScreenRect(label.getLocalTranslation().x,
+                    label.getLocalTranslation().y - label.getLineCount() * label.getLineHeight(),
+                    measure.width(label.getText(), label.getSize()),
+                    label.getLineCount() * label.getLineHeight()));
+        }
+        return storeResult;
+    }
+
+    /**
+     * Write the curves into their mesh if samples came since the last refresh. Allocates
+     * nothing, except when an axis's range grows (the labels' text is set then).
+     */
+    public void refresh() {
+        if (!changed || !laidOut) {
+            return;
+        }
+        changed = false;
+        updateAxes();
+        int segment = 0;
+        for (int panel = 0; panel < PANELS; ++panel) {
+            boolean speed = panel == 1;
+            float low = speed ? 0f : axisLow;
+            float high = speed ? axisSpeed : axisHigh;
+            for (int particle = 0; particle < series; ++particle) {
+                for (int kind = 0; kind < KINDS; ++kind) {
+                    boolean exact = kind == 1;
+                    float dash = 0f;
+                    for (int s = 0; s < CAPACITY - 1; ++s, ++segment) {
+                        if (s + 1 >= count) {
+                            writeSegment(segment, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+                            continue;
+                        }
+                        float x0 = screenX(panel, times[s]);
+                        float x1 = screenX(panel, times[s + 1]);
+                        float y0 = screenY(getValue(s, particle, exact, speed), low, high);
+                        float y1 = screenY(getValue(s + 1, particle, exact, speed), low, high);
+                        boolean drawn = (!exact || ((int) (dash / dashPixels) & 1) == 0)
+                                && !Float.isNaN(y0) && !Float.isNaN(y1);
+                        if (exact) {
+                            dash += (float) Math.hypot(x1 - x0, y1 - y0);
+                        }
+                        if (drawn) {
+                            writeSegment(segment, x0, y0, x1, y1);
+                        } else {
+                            writeSegment(segment, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+                        }
+                    }
+                }
+            }
+        }
+        curvePositions.rewind();
+        curveBuffer.updateData(curvePositions);
+    }
+
+    /** Widen an extent to two values, leaving out NaN (a value the graph does not draw). */
+    private static float extent(float current, float a, float b, boolean largest) {
+        float result = current;
+        if (!Float.isNaN(a)) {
+            result = largest ? Math.max(result, a) : Math.min(result, a);
+        }
+        if (!Float.isNaN(b)) {
+            result = largest ? Math.max(result, b) : Math.min(result, b);
+        }
+        return result;
+    }
+
+    /** Keep every other sample: the buffer holds the same flight at half the rate. */
+    private void thin() {
+        int perSample = series * VALUES;
+        for (int j = 0; j < CAPACITY / 2; ++j) {
+            times[j] = times[2 * j];
+            System.arraycopy(values, 2 * j * perSample, values, j * perSample, perSample);
+        }
+        count = CAPACITY / 2;
+        stride *= 2;
+    }
+
+    /** Set the axes' ranges from the data's extent; set the labels only if one changed. */
+    private void updateAxes() {
+        float time = roundUp(Math.max(maxTime, 1f));
+        float high = roundUp(Math.max(maxHeight, 1f));
+        float low = minHeight < 0f ? -roundUp(-minHeight) : 0f;
+        float speed = roundUp(Math.max(maxSpeed, 1f));
+        if (time == axisTime && high == axisHigh && low == axisLow && speed == axisSpeed) {
+            return;
+        }
+        if (high != axisHigh || low != axisLow) {
+            labelText.setLength(0);
+            labelText.append("height y (m): ");
+            appendEnd(labelText, low).append(" to ");
+            appendEnd(labelText, high);
+            labels[0].setText(labelText);
+            ++labelChanges;
+        }
+        if (speed != axisSpeed) {
+            labelText.setLength(0);
+            labelText.append("speed |V| (m/s): 0 to ");
+            appendEnd(labelText, speed);
+            labels[1].setText(labelText);
+            ++labelChanges;
+        }
+        if (time != axisTime) {
+            labelText.setLength(0);
+            labelText.append("time t (s): 0 to ");
+            appendEnd(labelText, time);
+            labels[2].setText(labelText);
+            ++labelChanges;
+        }
+        axisTime = time;
+        axisHigh = high;
+        axisLow = low;
+        axisSpeed = speed;
+    }
+
+    /**
+     * Return the smallest round number at least a value: 1, 1.5, 2, 3, 4, 5, 6 or 8 times a
+     * power of ten.
+     *
+     * @param value the value (&gt;0)
+     * @return the round number
+     */
+    static float roundUp(float value) {
+        double power = Math.pow(10.0, Math.floor(Math.log10(value)));
+        for (int i = 0; i < ROUND_STEPS.length; ++i) {
+            if (ROUND_STEPS[i] * power >= value) {
+                return (float) (ROUND_STEPS[i] * power);
+            }
+        }
+        return (float) (10.0 * power);
+    }
+
+    /** A range's end as a label shows it: a decimal only where it has one (1.5). */
+    private static StringBuilder appendEnd(StringBuilder text, float value) {
+        boolean whole = value == Math.rint(value);
+        return TextFormat.appendFixed(text, value, whole ? 0 : 1);
+    }
+
+    private float screenX(int panel, float seconds) {
+        return plotLeft[panel] + plotWidth * seconds / axisTime;
+    }
+
+    private float screenY(float value, float low, float high) {
+        return plotBottom + plotHeight * (value - low) / (high - low);
+    }
+
+    private void writeSegment(int segment, float x0, float y0, float x1, float y1) {
+        int out = segment * 2 * FLOATS_PER_VERTEX;
+        curvePositions.put(out, x0).put(out + 1, y0).put(out + 2, 2f);
+        curvePositions.put(out + 3, x1).put(out + 4, y1).put(out + 5, 2f);
+    }
+
+    private void writeFrame() {
+        framePositions.clear();
+        for (int panel = 0; panel < PANELS; ++panel) {
+            float left = plotLeft[panel];
+            float right = left + plotWidth;
+            float top = plotBottom + plotHeight;
+            line(left, plotBottom, right, plotBottom);
+            line(right, plotBottom, right, top);
+            line(right, top, left, top);
+            line(left, top, left, plotBottom);
+        }
+        framePositions.flip();
+        frameBuffer.updateData(framePositions);
+    }
+
+    private void line(float x0, float y0, float x1, float y1) {
+        framePositions.put(x0).put(y0).put(1f).put(x1).put(y1).put(1f);
+    }
+
+    private int segmentCount() {
+        return PANELS * series * KINDS * (CAPACITY - 1);
+    }
+}
