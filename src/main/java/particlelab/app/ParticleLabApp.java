@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import particlelab.demo.DemoState;
+import particlelab.view.ParameterPanel;
 
 /**
  * The Particle Lab window: a jME {@link SimpleApplication} hosting the lecture demos, one
@@ -186,6 +187,8 @@ public final class ParticleLabApp extends SimpleApplication {
         if (capture != null) {
             guiViewPort.addProcessor(capture);
         }
+        // Lemur (the parameter panel's buttons and sliders) is set up once per application.
+        ParameterPanel.initializeLemur(this);
         stateManager.attach(switcher);
     }
 
