@@ -338,6 +338,15 @@ public final class DemoParameter {
     }
 
     /**
+     * Return one step or stop as a share of a slider.
+     *
+     * @return the share (&gt;0, &le;1)
+     */
+    public float sliderStep() {
+        return stops == null ? step / (max - min) : 1f / (stops.length - 1);
+    }
+
+    /**
      * Return the value at a place on a slider, on a whole step or a stop.
      *
      * @param fraction the place (0 for the left end, 1 for the right; clamped)

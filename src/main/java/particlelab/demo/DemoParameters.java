@@ -319,6 +319,12 @@ public final class DemoParameters implements ParameterPanelModel {
     }
 
     @Override
+    public float getSliderStep(int row) {
+        checkIndex(row);
+        return declared.get(row).sliderStep();
+    }
+
+    @Override
     public StringBuilder formatRow(int row, StringBuilder text) {
         checkIndex(row);
         DemoParameter parameter = declared.get(row);

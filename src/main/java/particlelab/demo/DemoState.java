@@ -768,6 +768,11 @@ public abstract class DemoState extends BaseAppState {
         parameterControls.declareKeys(keys, this::relayOutPanel);
     }
 
+    /** @return the parameters' panel and kept shots (for tests of this package) */
+    ParameterControls getParameterControls() {
+        return parameterControls;
+    }
+
     /** The parameter panel and its buttons: pause, step, reset, fire, next demo. */
     private void buildPanel(Application app, BitmapFont font) {
         List<String> labels = new ArrayList<>(List.of("Pause", "Step", "Reset"));

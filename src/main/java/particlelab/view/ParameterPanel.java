@@ -19,6 +19,7 @@ import com.simsilica.lemur.Slider;
 import com.simsilica.lemur.component.QuadBackgroundComponent;
 import com.simsilica.lemur.component.SpringGridLayout;
 import com.simsilica.lemur.core.VersionedReference;
+import com.simsilica.lemur.focus.FocusNavigationState;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -65,6 +66,10 @@ public final class ParameterPanel {
     private final Vector3f size = new Vector3f();
     private int shownVersion = Integer.MIN_VALUE;
     private float scale = Float.NaN;
+    /** Where the panel was last placed (pixels), so an unchanged slot costs nothing. */
+    private final ScreenRect placed = new ScreenRect();
+    /** True when the texts changed, so the panel's height must be measured again. */
+    private boolean placeAgain = true;
     private boolean legendChanged;
     private final StringBuilder legendText = new StringBuilder(256);
 
@@ -112,6 +117,7 @@ public final class ParameterPanel {
             Slider slider = new Slider(new DefaultRangedValueModel(0.0, 1.0,
                     model.getSliderFraction(i)), Axis.X);
             slider.setBackground(new QuadBackgroundComponent(TRACK_COLOR));
+            slider.setDelta(model.getSliderStep(i));
             slider.getThumbButton().setBackground(new QuadBackgroundComponent(THUMB_COLOR));
             slider.getThumbButton().setText(" ");
             slider.getIncrementButton().setText(">");
@@ -142,8 +148,12 @@ public final class ParameterPanel {
     public static void initializeLemur(Application app) {
         GuiGlobals.initialize(app);
         // Lemur's keyboard focus navigation would take Tab and the arrow keys, which the
-        // demos use; the panel's keys are the app's own (see the help).
-        GuiGlobals.getInstance().getFocusNavigationState().setEnabled(false);
+        // demos use; the panel's keys are the app's own (see the help). A headless
+        // application has no such state.
+        FocusNavigationState navigation = GuiGlobals.getInstance().getFocusNavigationState();
+        if (navigation != null) {
+            navigation.setEnabled(false);
+        }
     }
 
     /** @return the live node, to attach to the GUI scene (not null) */
@@ -178,6 +188,13 @@ public final class ParameterPanel {
             return;
         }
         node.setCullHint(Spatial.CullHint.Inherit);
+        if (!placeAgain && hudScale == scale && where.getX() == placed.getX() && where.getY() == placed.getY()
+                && where.getWidth() == placed.getWidth()
+                && where.getHeight() == placed.getHeight()) {
+            return;
+        }
+        placed.set(where);
+        placeAgain = false;
         if (hudScale != scale) {
             scale = hudScale;
             float textSize = TEXT_SIZE * hudScale;
@@ -197,11 +214,10 @@ public final class ParameterPanel {
             container.setInsets(new Insets3f(6f * hudScale, 8f * hudScale, 6f * hudScale,
                     8f * hudScale));
         }
-        size.set(where.getWidth(), 0f, 0f);
-        size.y = container.getPreferredSize().y;
-        if (!size.equals(container.getSize())) {
-            container.setPreferredSize(size.clone());
-        }
+        // As tall as its content needs, as wide as the slot.
+        container.setPreferredSize(null);
+        size.set(where.getWidth(), container.getPreferredSize().y, 0f);
+        container.setPreferredSize(size.clone());
         container.setLocalTranslation(where.getX(), where.getTop(), 0f);
     }
 
@@ -228,11 +244,19 @@ public final class ParameterPanel {
                 // What the model set is no change of the mouse's.
                 sliderReferences.get(i).update();
             }
+            // The texts may need another height: size the panel again at the next place.
+            placeAgain = true;
         }
         if (legendChanged) {
             legendChanged = false;
             legend.setText(legendText.length() == 0 ? " " : legendText.toString());
+            placeAgain = true;
         }
+    }
+
+    /** @return how many rows of text and sliders the panel shows */
+    public int countRows() {
+        return sliders.length;
     }
 
     /**

@@ -37,6 +37,14 @@ public interface ParameterPanelModel {
     void setSliderFraction(int row, float fraction);
 
     /**
+     * Return what one click on a slider's end button moves it by.
+     *
+     * @param row which (&ge;0, &lt;{@link #countRows()})
+     * @return a share of the slider (&gt;0, &le;1): one step or stop of the row
+     */
+    float getSliderStep(int row);
+
+    /**
      * Write a row's text (selection mark, name, value, label), allocating nothing.
      *
      * @param row which (&ge;0, &lt;{@link #countRows()})
