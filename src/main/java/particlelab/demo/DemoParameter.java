@@ -190,6 +190,31 @@ public final class DemoParameter {
         return TextFormat.appendFixed(text, seconds, 4).append(" s");
     }
 
+    /**
+     * Write a number as short as it reads: rounded to at most some decimals, without
+     * trailing zeros ("10", "0.9", "0.064"), for equations in the HUD. Allocates nothing.
+     *
+     * @param text where to append (not null, modified)
+     * @param value the number
+     * @param maxDecimals the most decimals (0 to {@link TextFormat#MAX_DECIMALS})
+     * @return text
+     */
+    public static StringBuilder appendShort(StringBuilder text, float value, int maxDecimals) {
+        int start = text.length();
+        TextFormat.appendFixed(text, value, maxDecimals);
+        if (maxDecimals > 0 && text.indexOf(".", start) >= 0) {
+            int end = text.length();
+            while (text.charAt(end - 1) == '0') {
+                --end;
+            }
+            if (text.charAt(end - 1) == '.') {
+                --end;
+            }
+            text.setLength(end);
+        }
+        return text;
+    }
+
     /** @return the command-line name, e.g. "b" (not null) */
     public String getName() {
         return name;

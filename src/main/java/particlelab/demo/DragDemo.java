@@ -6,7 +6,6 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
-import particlelab.view.TextFormat;
 
 /**
  * Demo 3, drag: three spheres launched together with the same {@code V0 = (10, 10, 0)} m/s and
@@ -46,8 +45,6 @@ public final class DragDemo extends DemoState {
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
     private final LinearDrag linearDrag = new LinearDrag(LINEAR_B);
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
-    /** Scratch: the launch velocity as printed (m/s). */
-    private final Vector3f shownVelocity = new Vector3f();
 
     /** Create the demo. */
     public DragDemo() {
@@ -87,16 +84,10 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        DemoParameters values = getParameters();
-        launch.copyVelocity(shownVelocity);
-        text.append("a = g + F/m,  m = ");
-        TextFormat.appendFixed(text, values.getValue("mass"), 2).append(" kg,  g = ");
-        TextFormat.appendFixed(text, values.getValue("g"), 2).append(" m/s^2,  V0 = (");
-        TextFormat.appendFixed(text, shownVelocity.x, 2).append(", ");
-        TextFormat.appendFixed(text, shownVelocity.y, 2).append(", 0) m/s;   linear: F = -b V,"
-                + " b = ");
-        TextFormat.appendFixed(text, linearDrag.getCoefficient(), 2).append(" N s/m;"
-                + "   quadratic: F = -c |V| V, c = ");
-        TextFormat.appendFixed(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
+        launch.appendLaunch(text.append("a = g + F/m,  "), getParameters());
+        text.append(";   linear: F = -b V, b = ");
+        DemoParameter.appendShort(text, linearDrag.getCoefficient(), 2)
+                .append(" N s/m;   quadratic: F = -c |V| V, c = ");
+        DemoParameter.appendShort(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
     }
 }

@@ -57,10 +57,10 @@ public final class GravitationalPullDemo extends DemoState {
         float g = getParameters().getValue("g");
         launch.copyVelocity(shownVelocity);
         text.append("Pull:  a = g = (0, -");
-        TextFormat.appendFixed(text, g, 2).append(", 0) m/s^2,   V += h*g,   P += h*V\n");
+        DemoParameter.appendShort(text, g, 2).append(", 0) m/s^2,   V += h*g,   P += h*V\n");
         text.append("Launch V0 = (");
-        TextFormat.appendFixed(text, shownVelocity.x, 2).append(", ");
-        TextFormat.appendFixed(text, shownVelocity.y, 2).append(", 0) m/s:  lands at"
+        DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
+        DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands at"
                 + " 2*Vx*Vy/g = ");
         TextFormat.appendFixed(text, 2f * shownVelocity.x * shownVelocity.y / g, 2)
                 .append(" m after 2*Vy/g = ");

@@ -159,6 +159,29 @@ final class LaunchControl {
                 });
     }
 
+    /**
+     * Write the launch as the HUD's equations show it: "m = 1 kg,  V0 = (10, 10, 0) m/s",
+     * and g when it is not the standard 9.8 m/s² (the line stays as short as the lecture's).
+     * Uses the values in the scene.
+     *
+     * @param text where to append (not null, modified)
+     * @param parameters the demo's parameters, with "mass" and "g" declared (not null)
+     * @return text
+     */
+    StringBuilder appendLaunch(StringBuilder text, DemoParameters parameters) {
+        float g = parameters.getValueInScene(parameters.indexOf("g"));
+        text.append("m = ");
+        DemoParameter.appendShort(text, parameters.getValueInScene(parameters.indexOf("mass")),
+                2).append(" kg,  ");
+        if (g != Gravity.STANDARD_G) {
+            DemoParameter.appendShort(text.append("g = "), g, 2).append(" m/s^2,  ");
+        }
+        copyVelocity(velocity);
+        text.append("V0 = (");
+        DemoParameter.appendShort(text, velocity.x, 2).append(", ");
+        return DemoParameter.appendShort(text, velocity.y, 2).append(", 0) m/s");
+    }
+
     /** Give every particle the launch velocity, from its own launch position. */
     private void applyLaunch() {
         copyVelocity(velocity);

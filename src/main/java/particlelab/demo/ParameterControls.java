@@ -28,7 +28,12 @@ final class ParameterControls {
     private final StringBuilder legend = new StringBuilder(512);
     private KeptShots keptShots;
     private ParameterPanel panel;
-    private boolean panelVisible = true;
+    /**
+     * Hidden at the start (F2 shows it): the side panel narrows the scene, and at some
+     * window sizes the labels of drag's and thrust's spheres then find no slot clear of the
+     * trails.
+     */
+    private boolean panelVisible;
     private boolean legendDirty = true;
     /** The parameters' version the legend was written for. */
     private int legendVersion = Integer.MIN_VALUE;
@@ -76,7 +81,7 @@ final class ParameterControls {
                 "show / hide the parameter panel (mouse: sliders and buttons)", () -> {
                     panelVisible = !panelVisible;
                     relayOut.run();
-                }).withSummary("panel"));
+                }));
         keys.addShared(new KeyBinding(KeyInput.KEY_BACK, "Backspace",
                 "clear the kept shots (the faint paths of the last launches)",
                 this::clearShots));

@@ -6,7 +6,6 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Thrust;
-import particlelab.view.TextFormat;
 
 /**
  * Demo 4, thrust: two spheres launched together with {@code V0 = (10, 10, 0)} m/s: pull + drag
@@ -40,8 +39,6 @@ public final class ThrustDemo extends DemoState {
     private final LinearDrag drag = new LinearDrag(LINEAR_B);
     private final LinearDrag thrusterDrag = new LinearDrag(LINEAR_B);
     private final Thrust thrust = new Thrust(THRUST_K);
-    /** Scratch: the launch velocity as printed (m/s). */
-    private final Vector3f shownVelocity = new Vector3f();
 
     /** Create the demo. */
     public ThrustDemo() {
@@ -76,17 +73,11 @@ public final class ThrustDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        DemoParameters values = getParameters();
-        launch.copyVelocity(shownVelocity);
-        text.append("a = g + F/m,  m = ");
-        TextFormat.appendFixed(text, values.getValue("mass"), 2).append(" kg,  g = ");
-        TextFormat.appendFixed(text, values.getValue("g"), 2).append(" m/s^2,  V0 = (");
-        TextFormat.appendFixed(text, shownVelocity.x, 2).append(", ");
-        TextFormat.appendFixed(text, shownVelocity.y, 2).append(", 0) m/s\n");
+        launch.appendLaunch(text.append("a = g + F/m,  "), getParameters()).append('\n');
         text.append("drag F = -b V, b = ");
-        TextFormat.appendFixed(text, drag.getCoefficient(), 2).append(" N s/m;   thrust"
+        DemoParameter.appendShort(text, drag.getCoefficient(), 2).append(" N s/m;   thrust"
                 + " F = k V/|V|, k = ");
-        TextFormat.appendFixed(text, thrust.getMagnitude(), 2)
+        DemoParameter.appendShort(text, thrust.getMagnitude(), 2)
                 .append(" N along the sphere's OWN velocity\n");
     }
 }

@@ -3,7 +3,6 @@ package particlelab.demo;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import particlelab.physics.ParticleIntegrator;
-import particlelab.view.TextFormat;
 
 /**
  * Demo 1, uniform motion: no force at all, so {@code a = 0} and the Euler step only moves the
@@ -68,8 +67,8 @@ public final class UniformMotionDemo extends DemoState {
     protected void describeEquations(StringBuilder text) {
         launch.copyVelocity(shownVelocity);
         text.append("No force:  a = 0,  so V = (");
-        TextFormat.appendFixed(text, shownVelocity.x, 2).append(", ");
-        TextFormat.appendFixed(text, shownVelocity.y, 2)
+        DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
+        DemoParameter.appendShort(text, shownVelocity.y, 2)
                 .append(", 0) m/s stays,  and P = P0 + V*t\n");
     }
 }

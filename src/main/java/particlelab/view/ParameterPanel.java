@@ -37,9 +37,9 @@ import java.util.List;
 public final class ParameterPanel {
 
     /** The panel's width at HUD scale 1 (in pixels), asked of the HUD layout. */
-    public static final float WIDTH_AT_SCALE_ONE = 340f;
+    public static final float WIDTH_AT_SCALE_ONE = 320f;
     /** The panel's text size at HUD scale 1 (in pixels). */
-    private static final float TEXT_SIZE = 15f;
+    private static final float TEXT_SIZE = 14f;
     /** The slider's thumb's width at HUD scale 1 (in pixels). */
     private static final float THUMB_WIDTH = 12f;
     /** A slider's height at HUD scale 1 (in pixels). */
@@ -119,7 +119,9 @@ public final class ParameterPanel {
             slider.setBackground(new QuadBackgroundComponent(TRACK_COLOR));
             slider.setDelta(model.getSliderStep(i));
             slider.getThumbButton().setBackground(new QuadBackgroundComponent(THUMB_COLOR));
-            slider.getThumbButton().setText(" ");
+            slider.getThumbButton().setText("|");
+            slider.getThumbButton().setFont(font);
+            slider.getThumbButton().setColor(PANEL_COLOR);
             slider.getIncrementButton().setText(">");
             slider.getDecrementButton().setText("<");
             for (Button end : new Button[] {slider.getIncrementButton(),

@@ -182,6 +182,16 @@ class ParameterPanelHeadlessTest {
         assertEquals(20f, (float) seen[3], 1e-5f);
     }
 
+    private static void pressF2(DemoState demo) {
+        for (KeyBinding binding : demo.getBindings()) {
+            if ("F2".equals(binding.getKeyLabel())) {
+                binding.press(0);
+                return;
+            }
+        }
+        throw new IllegalStateException(demo.getTitle() + " has no F2");
+    }
+
     @Test
     void keptShotsAreBoundedAndLabelledWithWhatDiffered() throws Exception {
         String legend = harness.call(() -> {
@@ -222,6 +232,9 @@ class ParameterPanelHeadlessTest {
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.getClock().setPaused(false);
             ParameterControls controls = drag.getParameterControls();
+            pressF2(drag);
+            boolean shown = controls.isPanelVisible()
+                    && !drag.getHud().getLayout().getSidePanel().isEmpty();
             drag.restart();
             for (int frame = 0; frame < 20; ++frame) {
                 drag.advance(H);
@@ -239,8 +252,10 @@ class ParameterPanelHeadlessTest {
             });
             controls.getKeptShots().clear();
             drag.restart();
-            return new long[] {frames, keep};
+            pressF2(drag);
+            return new long[] {frames, keep, shown ? 1L : 0L};
         });
+        assertEquals(1L, bytes[2], "F2 shows the panel in the side slot");
         assertEquals(0L, bytes[0], "a frame with the panel and kept shots");
         assertEquals(0L, bytes[1], "a reset that keeps a shot");
     }
