@@ -229,7 +229,7 @@ public final class HelloAimingDemo extends DemoState {
         // apply to the next shot (the one the HUD predicts), at once.
         declareParameter(new DemoParameter("vx", "launch vx (next shot)",
                 "m/s", MIN_VX, MAX_VX, VX_STEP, DEFAULT_VX, 1, DemoParameter.Applies.LIVE,
-                this::setHorizontalSpeed));
+                this::applyVx));
         declareParameter(new DemoParameter("g", "gravity", "m/s^2",
                 LaunchControl.MIN_G, LaunchControl.MAX_G, 0.1f, GRAVITY, 2,
                 DemoParameter.Applies.LIVE, this::setGravity));
@@ -327,13 +327,19 @@ public final class HelloAimingDemo extends DemoState {
             throw new IllegalArgumentException("vx must be from " + MIN_VX + " to " + MAX_VX
                     + " m/s, but was " + newVx);
         }
+        // Through the parameter, so the panel shows it; its setter applies it.
+        getParameters().set("vx", newVx);
+    }
+
+    /** The vx parameter's setter: the next shot's horizontal speed (m/s). */
+    private void applyVx(float newVx) {
         vx = newVx;
         frameArcs();
     }
 
     private void changeVx(float delta) {
         // Through the parameter, so the panel shows what the keys did.
-        getParameters().set("vx", Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
+        setHorizontalSpeed(Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
     }
 
     /**
