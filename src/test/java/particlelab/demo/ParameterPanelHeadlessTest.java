@@ -87,6 +87,7 @@ class ParameterPanelHeadlessTest {
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k");
         assertNames(HelloAimingDemo.class, "h", "vx", "g");
         assertNames(BounceDemo.class, "h", "e");
+        assertNames(CollisionsDemo.class, "h", "e");
         assertNames(WindDemo.class, "h", "w");
     }
 
