@@ -67,7 +67,8 @@ import particlelab.world.World;
  * This class coordinates; the details live in small classes of this package:
  * {@code DemoScene} (the region, grid, posts, lights and particle views), {@code DemoKeys}
  * (the bindings, their checks and the help text), {@code HudWriter} (the HUD lines every demo
- * shows) and {@code StepWarnings} (the stability, hitch and blow-up warning).
+ * shows), {@code StepWarnings} (the stability, hitch and blow-up warning) and
+ * {@code ParameterControls} (the declared parameters, their panel and the kept shots).
  */
 public abstract class DemoState extends BaseAppState {
 

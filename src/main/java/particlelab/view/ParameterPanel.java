@@ -190,8 +190,8 @@ public final class ParameterPanel {
             return;
         }
         node.setCullHint(Spatial.CullHint.Inherit);
-        if (!placeAgain && hudScale == scale && where.getX() == placed.getX() && where.getY() == placed.getY()
-                && where.getWidth() == placed.getWidth()
+        if (!placeAgain && hudScale == scale && where.getX() == placed.getX()
+                && where.getY() == placed.getY() && where.getWidth() == placed.getWidth()
                 && where.getHeight() == placed.getHeight()) {
             return;
         }

@@ -194,6 +194,23 @@ class ParameterPanelHeadlessTest {
     }
 
     @Test
+    void nextDemoButtonChoosesTheNextDemo() throws Exception {
+        DemoState first = harness.call(() -> harness.app().getSwitcher().getSelected());
+        harness.call(() -> {
+            first.getParameterControls().getPanel().click("Next demo");
+            return true;
+        });
+        harness.awaitFrames(3);
+        DemoState second = harness.call(() -> harness.app().getSwitcher().getSelected());
+        harness.call(() -> {
+            harness.app().getSwitcher().select(demos().indexOf(first));
+            return true;
+        });
+        harness.awaitFrames(3);
+        assertEquals(demos().indexOf(first) + 1, demos().indexOf(second));
+    }
+
+    @Test
     void keptShotsAreBoundedAndLabelledWithWhatDiffered() throws Exception {
         String legend = harness.call(() -> {
             DragDemo drag = demo(DragDemo.class);
