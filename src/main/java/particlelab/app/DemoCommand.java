@@ -23,6 +23,7 @@ import particlelab.demo.DemoState;
  *   particle-lab demo --list
  *   particle-lab demo aiming
  *   particle-lab demo drag --frames 120 --fixed-tpf 0.016666668 --screenshot drag.png
+ *   particle-lab demo drag --set b=0.3 --set h=1/10
  * </pre>
  *
  * Exit status: 0 when the window ran (and the screenshot was written), 1 when it could not
@@ -50,6 +51,7 @@ public final class DemoCommand {
     private static final float MAX_FIXED_TPF = 1f;
     private static final String WINDOW = "--window";
     private static final String UI_SCALE = "--ui-scale";
+    private static final String SET = "--set";
     /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
     private static final int MIN_WINDOW_WIDTH = 640;
     private static final int MIN_WINDOW_HEIGHT = 360;
@@ -57,6 +59,8 @@ public final class DemoCommand {
     /** Kept so the level set on jME's loggers is not lost to garbage collection. */
     private static final Logger JME_LOGGER = Logger.getLogger("com.jme3");
     private static final Logger WINDOW_LOGGER = Logger.getLogger("com.jme3.system.lwjgl");
+    /** Lemur (the panel) logs its version and build date at INFO on every start. */
+    private static final Logger LEMUR_LOGGER = Logger.getLogger("com.simsilica.lemur");
     private static final Logger ASSET_CONFIG_LOGGER =
             Logger.getLogger("com.jme3.asset.AssetConfig");
 
@@ -95,6 +99,7 @@ public final class DemoCommand {
         int[] window;
         Path exportFolder = null;
         float uiScale;
+        List<String> settings;
         try {
             options.parse(optionArgs);
             if (options.isHelpRequested()) {
@@ -126,6 +131,7 @@ public final class DemoCommand {
                 throw new UsageException(ExportRun.EXPORT + ": needs " + FRAMES + " N, so the"
                         + " app knows when to write the files");
             }
+            settings = options.strings(SET);
             if (screenshot != null && frames == 0) {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
@@ -146,14 +152,21 @@ public final class DemoCommand {
                     + "'; the demos are " + String.join(", ", DemoCatalog.names()));
             return USAGE;
         }
+        List<DemoState> demos = DemoCatalog.createAll();
+        try {
+            applySettings(demos.get(index), settings);
+        } catch (UsageException e) {
+            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
+            return USAGE;
+        }
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
         if (exportFolder != null && screenshot == null) {
-            return ExportRun.runHeadless(DemoCatalog.createAll(), index, frames, fixedTpf,
+            return ExportRun.runHeadless(demos, index, frames, fixedTpf,
                     exportFolder, out, err);
         }
-        return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf,
+        return openWindow(demos, index, frames, screenshot, fixedTpf,
                 uiScale, exportFolder, out, err);
     }
 
@@ -166,6 +179,54 @@ public final class DemoCommand {
                     + factor);
         }
         return factor;
+    }
+
+    /**
+     * Set a demo's parameters from {@code --set NAME=VALUE} values, before its scene starts.
+     * A value is a number or a fraction such as {@code 1/60}.
+     *
+     * @param demo the demo (not null, not initialised yet)
+     * @param settings each {@code NAME=VALUE} given, in order (not null)
+     * @throws UsageException naming the setting and listing the demo's parameters and
+     *     ranges if a name is unknown, a value is not a number or out of its range
+     */
+    static void applySettings(DemoState demo, List<String> settings) {
+        for (String setting : settings) {
+            int equals = setting.indexOf('=');
+            String name = equals < 0 ? setting : setting.substring(0, equals);
+            float value = equals < 0 ? Float.NaN : parseNumber(setting.substring(equals + 1));
+            String shown = SET + " " + Options.show(setting) + ": ";
+            if (equals < 0 || Float.isNaN(value)) {
+                throw new UsageException(shown + "must be NAME=VALUE with a number or a"
+                        + " fraction such as 1/60; " + demo.getParameters().describeAll());
+            }
+            try {
+                demo.getParameters().set(name, value);
+            } catch (IllegalArgumentException refused) {
+                throw new UsageException(shown + refused.getMessage());
+            }
+        }
+    }
+
+    /**
+     * Read a number such as {@code 0.5} or a fraction such as {@code 1/60}.
+     *
+     * @param text the text (not null)
+     * @return the value, or NaN if it is neither or not finite
+     */
+    private static float parseNumber(String text) {
+        if (text.isEmpty() || text.length() > Options.MAX_NUMBER_LENGTH) {
+            return Float.NaN;
+        }
+        try {
+            int slash = text.indexOf('/');
+            double value = slash < 0 ? Double.parseDouble(text)
+                    : Double.parseDouble(text.substring(0, slash))
+                            / Double.parseDouble(text.substring(slash + 1));
+            return Double.isFinite(value) ? (float) value : Float.NaN;
+        } catch (NumberFormatException notNumber) {
+            return Float.NaN;
+        }
     }
 
     /**
@@ -263,13 +324,16 @@ public final class DemoCommand {
                         + " it can be resized, and F11 makes it fullscreen")
                 .value(UI_SCALE, "S", "make the HUD's text S times the size that suits the"
                         + " window (" + HudScale.MIN_FACTOR + " <= S <= " + HudScale.MAX_FACTOR
-                        + ", default 1; the [ and ] keys change it by "
+                        + ", default 1; the F9 and F10 keys change it by "
                         + HudScale.FACTOR_STEP + ")")
                 .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
                         + " every particle's trajectory since its launch as DIR/<particle>.csv"
                         + " (the header and numbers of particle-lab trajectory) and list the"
                         + " files; without --screenshot it runs without a window (no display"
                         + " needed, no PNG)")
+                .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
+                        + " starts, e.g. b=0.3 or h=1/10 (repeatable); the panel (F2) lists"
+                        + " them, a wrong name or value lists them with their ranges")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }
@@ -347,6 +411,7 @@ public final class DemoCommand {
         // ImageIO writes the screenshot; no AWT window is ever opened.
         System.setProperty("java.awt.headless", "true");
         JME_LOGGER.setLevel(Level.WARNING);
+        LEMUR_LOGGER.setLevel(Level.WARNING);
         // Window failures reach ParticleLabApp.handleError and are reported in one line.
         WINDOW_LOGGER.setLevel(Level.OFF);
         // jME's asset config names optional loaders (Ogre, glTF, Ogg) that no demo uses.

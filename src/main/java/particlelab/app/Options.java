@@ -63,6 +63,8 @@ public final class Options {
     private final Map<String, Declaration> declared = new LinkedHashMap<>();
     /** Options given on the command line: name to raw value ("" for flags). */
     private final Map<String, String> given = new LinkedHashMap<>();
+    /** Every value of each repeatable option given, in order. */
+    private final Map<String, List<String>> repeated = new LinkedHashMap<>();
     private final List<String> notes = new ArrayList<>();
     private boolean helpRequested;
 
@@ -88,6 +90,34 @@ public final class Options {
     public Options value(String name, String placeholder, String description) {
         declare(new Declaration(name, placeholder, description));
         return this;
+    }
+
+    /**
+     * Declare an option that takes a value and may be given any number of times, e.g.
+     * {@code --set b=0.5 --set h=1/10}; read with {@link #strings}.
+     *
+     * @param name the option (starts with "--", not declared before)
+     * @param placeholder how the help shows the value (not null)
+     * @param description what it means (not null)
+     * @return this, to chain declarations
+     */
+    public Options repeatable(String name, String placeholder, String description) {
+        Declaration option = new Declaration(name, placeholder, description);
+        option.repeatable = true;
+        declare(option);
+        return this;
+    }
+
+    /**
+     * Read every value of a repeatable option, in the order given.
+     *
+     * @param name a declared repeatable option
+     * @return a new list (not null, empty if not given)
+     */
+    public List<String> strings(String name) {
+        checkDeclared(name);
+        List<String> values = repeated.get(name);
+        return values == null ? new ArrayList<>() : new ArrayList<>(values);
     }
 
     /**
@@ -123,6 +153,7 @@ public final class Options {
      */
     public void parse(String[] args) {
         given.clear();
+        repeated.clear();
         helpRequested = false;
         for (String arg : args) {
             if (HELP.equals(arg) || SHORT_HELP.equals(arg)) {
@@ -149,7 +180,7 @@ public final class Options {
                         + "; the options are " + String.join(", ", declared.keySet()) + ", "
                         + HELP);
             }
-            if (given.containsKey(name)) {
+            if (given.containsKey(name) && !option.repeatable) {
                 throw new UsageException(name + ": given twice; give it once" + seeHelp());
             }
             if (option.isFlag()) {
@@ -170,6 +201,9 @@ public final class Options {
                         + ", but none was given" + seeHelp());
             }
             given.put(name, value);
+            if (option.repeatable) {
+                repeated.computeIfAbsent(name, key -> new ArrayList<>()).add(value);
+            }
         }
     }
 
@@ -623,6 +657,8 @@ public final class Options {
         /** How the help shows the value; null for a flag. */
         final String placeholder;
         final String description;
+        /** True if it may be given more than once. */
+        boolean repeatable;
 
         Declaration(String name, String placeholder, String description) {
             this.name = name;

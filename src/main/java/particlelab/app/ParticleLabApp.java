@@ -15,6 +15,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.view.ParameterPanel;
 
 /**
  * The Particle Lab window: a jME {@link SimpleApplication} hosting the lecture demos, one
@@ -215,6 +216,8 @@ public final class ParticleLabApp extends SimpleApplication {
         if (capture != null) {
             guiViewPort.addProcessor(capture);
         }
+        // Lemur (the parameter panel's buttons and sliders) is set up once per application.
+        ParameterPanel.initializeLemur(this);
         stateManager.attach(switcher);
         stateManager.attach(windowControls);
         stateManager.attach(export);

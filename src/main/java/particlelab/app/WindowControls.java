@@ -49,9 +49,9 @@ public final class WindowControls extends BaseAppState {
         this.bindings = List.of(
                 new KeyBinding(KeyInput.KEY_F11, "F11", "fullscreen <-> window",
                         () -> fullscreenRequested = true),
-                new KeyBinding(KeyInput.KEY_RBRACKET, "]", larger.toString(),
+                new KeyBinding(KeyInput.KEY_F10, "F10", larger.toString(),
                         () -> changeFactor(1)),
-                new KeyBinding(KeyInput.KEY_LBRACKET, "[", smaller.toString(),
+                new KeyBinding(KeyInput.KEY_F9, "F9", smaller.toString(),
                         () -> changeFactor(-1)));
     }
 

@@ -101,6 +101,18 @@ public final class BounceDemo extends DemoState {
     }
 
     @Override
+    protected void declareParameters() {
+        // A new e drops the ball again, as the Up and Down keys do.
+        declareParameter(new DemoParameter("e", "restitution", "", 0f, 1f,
+                0.1f, START_E_TENTHS / 10f, 1, DemoParameter.Applies.LIVE, value -> {
+                    int tenths = Math.round(value * 10f);
+                    if (tenths != eTenths) {
+                        configure(tenths, thresholdPreset, response.isRestingFix(), detection);
+                    }
+                }));
+    }
+
+    @Override
     protected void declareKeys() {
         bindKey(KeyInput.KEY_UP, "Up", "restitution e + 0.1 (up to 1), drop again",
                 () -> changeE(1));
@@ -248,6 +260,8 @@ public final class BounceDemo extends DemoState {
         detection = newDetection;
         applyRules();
         refreshEquations();
+        // The panel shows the e the keys or a caller chose.
+        getParameters().set("e", eTenths / 10f);
         restart();
     }
 

@@ -181,6 +181,18 @@ public final class CollisionsDemo extends DemoState {
     }
 
     @Override
+    protected void declareParameters() {
+        // A new e starts the collision again, as the Up and Down keys do.
+        declareParameter(new DemoParameter("e", "restitution", "", 0f, 1f, 0.1f,
+                eTenths / 10f, 1, DemoParameter.Applies.LIVE, value -> {
+                    int tenths = Math.round(value * 10f);
+                    if (tenths != eTenths) {
+                        setRestitutionTenths(tenths);
+                    }
+                }));
+    }
+
+    @Override
     protected void declareKeys() {
         bindKey(KeyInput.KEY_P, "P", "preset: head-on -> glancing -> Newton's cradle -> paddle",
                 () -> choose(Preset.values()[(preset.ordinal() + 1) % Preset.values().length]));
@@ -283,6 +295,8 @@ public final class CollisionsDemo extends DemoState {
     public void setRestitutionTenths(int tenths) {
         eTenths = Math.max(0, Math.min(10, tenths));
         response.setRestitution(getRestitution());
+        // The panel shows the e the keys or a caller chose.
+        getParameters().set("e", eTenths / 10f);
         restart();
     }
 

@@ -353,6 +353,11 @@ final class DemoScene {
         }
     }
 
+    /** @return the particles' radius as drawn (in metres, &gt;0) */
+    float getSphereRadius() {
+        return sphereRadius;
+    }
+
     /**
      * Access the plane's mapping to the window of the last layout.
      *

@@ -37,6 +37,8 @@ import particlelab.world.World;
  * <li>{@link #showExactGhosts()} (optional, in {@code createScene()}): each particle's exact
  * path beside it, readouts Euler against exact, and the live graph.</li>
  * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
+ * <li>{@link #declareParameters()}: call {@link #declareParameter} for each number the user
+ * may change (the panel, its keys and {@code --set} are built from them).</li>
  * <li>{@link #writeHudLines(StringBuilder)}: append the demo's own HUD lines (use
  * {@link TextFormat} for numbers: it allocates nothing).</li>
  * <li>{@link #afterStep(float)} and {@link #onRestart()}: react to each step, and to a
@@ -67,7 +69,8 @@ import particlelab.world.World;
  * This class coordinates; the details live in small classes of this package:
  * {@code DemoScene} (the region, grid, posts, lights and particle views), {@code DemoKeys}
  * (the bindings, their checks and the help text), {@code HudWriter} (the HUD lines every demo
- * shows) and {@code StepWarnings} (the stability, hitch and blow-up warning).
+ * shows), {@code StepWarnings} (the stability, hitch and blow-up warning) and
+ * {@code ParameterControls} (the declared parameters, their panel and the kept shots).
  */
 public abstract class DemoState extends BaseAppState {
 
@@ -87,6 +90,7 @@ public abstract class DemoState extends BaseAppState {
     private final ExactGhosts ghosts = new ExactGhosts(particles);
     private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
+    private final ParameterControls parameterControls = new ParameterControls();
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final SimulationClock.Stepper stepper = this::stepWorld;
@@ -127,6 +131,11 @@ public abstract class DemoState extends BaseAppState {
     private int laidOutWidth;
     private int laidOutHeight;
     private float uiScale = 1f;
+    private boolean parametersDeclared;
+    /** The parameters' version the equations were written for. */
+    private int equationsVersion;
+    private KeyBinding fireKey;
+    private List<KeyBinding> applicationBindings = Collections.emptyList();
 
     /**
      * Create a demo.
@@ -158,6 +167,15 @@ public abstract class DemoState extends BaseAppState {
      * {@link #createScene()}. The default declares none.
      */
     protected void declareKeys() {
+    }
+
+    /**
+     * Declare the numbers the user may change with {@link #declareParameter}: launch speed
+     * and angle, mass, g, the force coefficients. Called once, before the scene is created
+     * (by {@code --set}) or after it: declare only, do not touch the particles here (the
+     * setters may). The default declares none; the fixed step h is declared for every demo.
+     */
+    protected void declareParameters() {
     }
 
     /**
@@ -296,6 +314,25 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Declare a parameter. Call from {@link #declareParameters()}.
+     *
+     * @param parameter the declaration, its name not declared yet (not null)
+     * @return parameter
+     */
+    protected DemoParameter declareParameter(DemoParameter parameter) {
+        return parameterControls.getParameters().add(parameter);
+    }
+
+    /**
+     * Name the key that fires or launches, so the panel gets a Fire button for it.
+     *
+     * @param binding one of the demo's bindings (not null)
+     */
+    protected void setFireKey(KeyBinding binding) {
+        fireKey = binding;
+    }
+
+    /**
      * Launch a particle again from its launch position with a new velocity: release it,
      * forget its landing and clear its trail.
      *
@@ -303,6 +340,7 @@ public abstract class DemoState extends BaseAppState {
      * @param velocity the launch velocity (in m/s, finite, not null, not modified)
      */
     protected void launch(DemoParticle particle, Vector3f velocity) {
+        parameterControls.beforeLaunch();
         particle.copyLaunchPosition(previousPosition);
         particle.setLaunch(previousPosition, velocity);
         particle.restart();
@@ -398,6 +436,22 @@ public abstract class DemoState extends BaseAppState {
      */
     public void setApplicationBindings(List<KeyBinding> bindings) {
         keys.setApplication(bindings);
+        applicationBindings = new ArrayList<>(bindings);
+    }
+
+    /**
+     * Access the demo's parameters (the shared step h, then the demo's own), declared at the
+     * first call: {@code --set} changes them before the window opens, the panel after.
+     *
+     * @return the live parameters (not null)
+     */
+    public DemoParameters getParameters() {
+        if (!parametersDeclared) {
+            parametersDeclared = true;
+            parameterControls.declareShared(clock);
+            declareParameters();
+        }
+        return parameterControls.getParameters();
     }
 
     /**
@@ -604,6 +658,7 @@ public abstract class DemoState extends BaseAppState {
             return;
         }
         restartRequested = false;
+        parameterControls.beforeLaunch();
         world.restart();
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
@@ -717,6 +772,7 @@ public abstract class DemoState extends BaseAppState {
     protected void initialize(Application app) {
         createScene();
         sceneCreated = true;
+        getParameters().start();
         declareSharedKeys();
         declareKeys();
         AssetManager assets = app.getAssetManager();
@@ -734,6 +790,7 @@ public abstract class DemoState extends BaseAppState {
         refreshEquations();
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
+        buildPanel(app, font);
         // The body's lines size the HUD's band, and the band the scene's area.
         hud.setBody(formatHud(hudText));
         hud.takeLayoutChange();
@@ -753,6 +810,7 @@ public abstract class DemoState extends BaseAppState {
         sceneRoot.attachChild(sceneNode);
         guiRoot.attachChild(hud.getNode());
         guiRoot.attachChild(ghosts.getGraphNode());
+        guiRoot.attachChild(parameterControls.getPanel().getNode());
         keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
         hudDirty = true;
@@ -764,11 +822,17 @@ public abstract class DemoState extends BaseAppState {
         sceneNode.removeFromParent();
         hud.getNode().removeFromParent();
         ghosts.getGraphNode().removeFromParent();
+        parameterControls.getPanel().getNode().removeFromParent();
     }
 
     @Override
     public void update(float tpf) {
         advance(tpf);
+        if (equationsVersion != getParameters().getVersion()) {
+            // A value reached the scene: the equations' numbers follow it.
+            equationsVersion = getParameters().getVersion();
+            refreshEquations();
+        }
         hudAgeSeconds += tpf;
         if (hudDirty || hudAgeSeconds >= HUD_REFRESH_SECONDS) {
             hudAgeSeconds = 0f;
@@ -781,6 +845,7 @@ public abstract class DemoState extends BaseAppState {
                 frameCamera();
             }
         }
+        parameterControls.update(hud.getLayout());
     }
 
     // ---------------------------------------------------------------- private helpers ----
@@ -833,6 +898,44 @@ public abstract class DemoState extends BaseAppState {
                     this::toggleGraph));
         }
         hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
+        parameterControls.declareKeys(keys, this::relayOutPanel);
+    }
+
+    /** @return the parameters' panel and kept shots (for tests of this package) */
+    ParameterControls getParameterControls() {
+        return parameterControls;
+    }
+
+    /** The parameter panel and its buttons: pause, step, reset, fire, next demo. */
+    private void buildPanel(Application app, BitmapFont font) {
+        List<String> labels = new ArrayList<>(List.of("Pause", "Step", "Reset"));
+        List<Runnable> actions = new ArrayList<>(List.of(
+                () -> clock.setPaused(!clock.isPaused()), this::singleStep,
+                this::restartAndReframe));
+        if (fireKey != null) {
+            labels.add("Fire");
+            actions.add(() -> fireKey.press(0));
+        }
+        for (int i = 0; i < applicationBindings.size(); ++i) {
+            KeyBinding binding = applicationBindings.get(i);
+            if (binding.getKeyCode(0) == KeyInput.KEY_TAB) {
+                labels.add("Next demo");
+                actions.add(() -> binding.press(0));
+            }
+        }
+        parameterControls.build(app, font, hud.getLayout(), particles,
+                scene.getSphereRadius(), sceneNode, labels, actions);
+        equationsVersion = getParameters().getVersion();
+        // The side panel's slot narrows the HUD's body: lay it out again.
+        hud.layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
+                hud.getLayout().getScale());
+    }
+
+    /** After the panel came or went: the HUD and the scene get the window's width back. */
+    private void relayOutPanel() {
+        parameterControls.requestSlot(hud.getLayout());
+        layOut(getApplication().getCamera().getWidth(),
+                getApplication().getCamera().getHeight());
     }
 
     private void toggleGraph() {

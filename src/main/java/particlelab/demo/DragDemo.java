@@ -34,6 +34,17 @@ public final class DragDemo extends DemoState {
     /** The common launch velocity (m/s). */
     private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
     private static final float MASS_KG = 1f;
+    /** The launch speed's largest value and key step (m/s). */
+    private static final float MAX_SPEED = 30f;
+    private static final float SPEED_STEP = 0.5f;
+    /** The drag coefficients' largest values (N·s/m and kg/m). */
+    private static final float MAX_B = 5f;
+    private static final float MAX_C = 0.5f;
+
+    /** The launch, mass and g, declared as parameters. */
+    private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
+    private final LinearDrag linearDrag = new LinearDrag(LINEAR_B);
+    private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
 
     /** Create the demo. */
     public DragDemo() {
@@ -43,22 +54,41 @@ public final class DragDemo extends DemoState {
     @Override
     protected void createScene() {
         // Same launch for all three; only the forces differ.
-        addParticle("gravity only", ColorRGBA.Orange, Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(new Gravity())).stopAtGround();
-        addParticle("linear drag  F = -0.9 V", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
+        // The labels name the forces, not their numbers: the panel changes b and c.
+        launch.add(addParticle("gravity only", ColorRGBA.Orange, Vector3f.ZERO,
+                LAUNCH_VELOCITY, MASS_KG,
+                new ParticleIntegrator(launch.add(new Gravity())))).stopAtGround();
+        launch.add(addParticle("linear drag  F = -b V", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(new Gravity(), new LinearDrag(LINEAR_B))).stopAtGround();
-        addParticle("quadratic drag  F = -0.064 |V|V", new ColorRGBA(1f, 0.4f, 0.8f, 1f),
+                new ParticleIntegrator(launch.add(new Gravity()), linearDrag))).stopAtGround();
+        launch.add(addParticle("quadratic drag  F = -c |V|V", new ColorRGBA(1f, 0.4f, 0.8f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(new Gravity(), new QuadraticDrag(QUADRATIC_C)))
+                new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag)))
                 .stopAtGround();
         setView(-2f, 24f, 7f, 1f, 5, 0.3f);
         showExactGhosts();
     }
 
     @Override
+    protected void declareParameters() {
+        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
+        declareParameter(launch.angleParameter());
+        declareParameter(launch.massParameter(MASS_KG));
+        declareParameter(launch.gravityParameter());
+        // The coefficients change the forces at once, in the middle of a flight.
+        declareParameter(new DemoParameter("b", "linear drag", "N s/m", 0f, MAX_B,
+                0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, linearDrag::setCoefficient));
+        declareParameter(new DemoParameter("c", "quadratic drag", "kg/m", 0f,
+                MAX_C, 0.004f, QUADRATIC_C, 3, DemoParameter.Applies.LIVE,
+                quadraticDrag::setCoefficient));
+    }
+
+    @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("a = g + F/m,  m = 1 kg,  V0 = (10, 10, 0) m/s;   linear: F = -b V, b = 0.9"
-                + " N s/m;   quadratic: F = -c |V| V, c = 0.064 kg/m\n");
+        launch.appendLaunch(text.append("a = g + F/m,  "), getParameters());
+        text.append(";   linear: F = -b V, b = ");
+        DemoParameter.appendShort(text, linearDrag.getCoefficient(), 2)
+                .append(" N s/m;   quadratic: F = -c |V| V, c = ");
+        DemoParameter.appendShort(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
     }
 }

@@ -4,6 +4,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 2, gravitational pull: the lecture's example launch {@code V0 = (10, 10, 0)} m/s under
@@ -20,6 +21,15 @@ public final class GravitationalPullDemo extends DemoState {
 
     /** The lecture's launch velocity (m/s). */
     private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    /** The launch speed's largest value and key step (m/s). */
+    private static final float MAX_SPEED = 30f;
+    private static final float SPEED_STEP = 0.5f;
+    private static final float MASS_KG = 1f;
+
+    /** The launch, mass and g, declared as parameters. */
+    private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
+    /** Scratch: the launch velocity as printed (m/s). */
+    private final Vector3f shownVelocity = new Vector3f();
 
     /** Create the demo. */
     public GravitationalPullDemo() {
@@ -28,16 +38,34 @@ public final class GravitationalPullDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO, LAUNCH_VELOCITY, 1f,
-                new ParticleIntegrator(new Gravity())).stopAtGround();
+        launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO, LAUNCH_VELOCITY,
+                MASS_KG, new ParticleIntegrator(launch.add(new Gravity())))).stopAtGround();
         setView(-2f, 24f, 7f, 1f, 5, 0.35f);
         showExactGhosts();
     }
 
     @Override
+    protected void declareParameters() {
+        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
+        declareParameter(launch.angleParameter());
+        // Gravity alone: every mass falls alike (try it).
+        declareParameter(launch.massParameter(MASS_KG));
+        declareParameter(launch.gravityParameter());
+    }
+
+    @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("Pull:  a = g = (0, -9.8, 0) m/s^2,   V += h*g,   P += h*V\n");
-        text.append("Launch V0 = (10, 10, 0) m/s:  lands at 2*Vx*Vy/g = 20.41 m"
-                + " after 2*Vy/g = 2.04 s (continuous)\n");
+        float g = getParameters().getValue("g");
+        launch.copyVelocity(shownVelocity);
+        text.append("Pull:  a = g = (0, -");
+        DemoParameter.appendShort(text, g, 2).append(", 0) m/s^2,   V += h*g,   P += h*V\n");
+        text.append("Launch V0 = (");
+        DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
+        DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands at"
+                + " 2*Vx*Vy/g = ");
+        TextFormat.appendFixed(text, 2f * shownVelocity.x * shownVelocity.y / g, 2)
+                .append(" m after 2*Vy/g = ");
+        TextFormat.appendFixed(text, 2f * shownVelocity.y / g, 2)
+                .append(" s (continuous)\n");
     }
 }

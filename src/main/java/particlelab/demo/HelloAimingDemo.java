@@ -62,7 +62,13 @@ public final class HelloAimingDemo extends DemoState {
         DISCRETE
     }
 
-    private final ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+    private final Gravity gravity = new Gravity();
+    private final ParticleIntegrator integrator = new ParticleIntegrator(gravity);
+    /** Scratch: g as a vector (m/s²). */
+    private final Vector3f gravityVector = new Vector3f();
+    /** g, pointing down (m/s²): a parameter. */
+    private float g = GRAVITY;
+    private float predictedG = Float.NaN;
     private final Landing predicted = new Landing();
     private final Vector3f launchVelocity = new Vector3f();
     private DemoParticle bullet;
@@ -136,9 +142,9 @@ public final class HelloAimingDemo extends DemoState {
      */
     public float getVerticalSpeed() {
         if (aim == Aim.LECTURE) {
-            return (float) LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, vx);
+            return (float) LevelAim.lectureVy(g, TARGET_DISTANCE, vx);
         }
-        return (float) LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, vx,
+        return (float) LevelAim.discreteVy(g, TARGET_DISTANCE, vx,
                 getClock().getCurrentStepSeconds());
     }
 
@@ -207,18 +213,33 @@ public final class HelloAimingDemo extends DemoState {
         shotAim = aim;
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
-        // The grid reaches the highest arc the keys allow: the slowest vx, aimed for the
-        // longest step. The camera frames only as high as the arcs in play (frameArcs).
-        float highestVy = (float) LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, MIN_VX,
-                LONGEST_STEP);
-        setView(-6f, 116f, (1f + HEADROOM) * apex(highestVy), 5f, 2, 1.1f);
+        // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
+        // the largest g, aimed for the longest step (a level shot's apex g*S^2/(8*vx^2)
+        // grows with g). The camera frames only as high as the arcs in play (frameArcs).
+        float highestVy = (float) LevelAim.discreteVy(LaunchControl.MAX_G, TARGET_DISTANCE,
+                MIN_VX, LONGEST_STEP);
+        setView(-6f, 116f, (1f + HEADROOM) * highestVy * highestVy
+                / (2f * LaunchControl.MAX_G), 5f, 2, 1.1f);
         showExactGhosts();
         frameArcs();
     }
 
     @Override
+    protected void declareParameters() {
+        // The launch is vx; the formula gives vy, so the angle follows from the aim. Both
+        // apply to the next shot (the one the HUD predicts), at once.
+        declareParameter(new DemoParameter("vx", "launch vx (next shot)",
+                "m/s", MIN_VX, MAX_VX, VX_STEP, DEFAULT_VX, 1, DemoParameter.Applies.LIVE,
+                this::applyVx));
+        declareParameter(new DemoParameter("g", "gravity", "m/s^2",
+                LaunchControl.MIN_G, LaunchControl.MAX_G, 0.1f, GRAVITY, 2,
+                DemoParameter.Applies.LIVE, this::setGravity));
+    }
+
+    @Override
     protected void declareKeys() {
         fireKey = bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
+        setFireKey(fireKey);
         String step = Math.round(VX_STEP) + " m/s";
         fasterKey = bindKey(KeyInput.KEY_UP, "Up", "vx + " + step, () -> changeVx(VX_STEP));
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
@@ -307,12 +328,30 @@ public final class HelloAimingDemo extends DemoState {
             throw new IllegalArgumentException("vx must be from " + MIN_VX + " to " + MAX_VX
                     + " m/s, but was " + newVx);
         }
+        // Through the parameter, so the panel shows it; its setter applies it.
+        getParameters().set("vx", newVx);
+    }
+
+    /** The vx parameter's setter: the next shot's horizontal speed (m/s). */
+    private void applyVx(float newVx) {
         vx = newVx;
         frameArcs();
     }
 
     private void changeVx(float delta) {
+        // Through the parameter, so the panel shows what the keys did.
         setHorizontalSpeed(Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
+    }
+
+    /**
+     * Set g for the flight, the aim and the prediction.
+     *
+     * @param newG g, pointing down (in m/s², &gt;0)
+     */
+    private void setGravity(float newG) {
+        g = newG;
+        gravity.setAcceleration(gravityVector.set(0f, -newG, 0f));
+        frameArcs();
     }
 
     /**
@@ -330,8 +369,8 @@ public final class HelloAimingDemo extends DemoState {
      * @param vy the launch's vertical speed (in m/s)
      * @return the height (in metres)
      */
-    private static float apex(float vy) {
-        return vy * vy / (2f * GRAVITY);
+    private float apex(float vy) {
+        return vy * vy / (2f * g);
     }
 
     /**
@@ -339,7 +378,8 @@ public final class HelloAimingDemo extends DemoState {
      * or the formula changed (a new simulator is made only when the step changed).
      */
     private void updatePrediction(float step) {
-        if (step == predictedStep && vx == predictedVx && aim == predictedAim) {
+        if (step == predictedStep && vx == predictedVx && aim == predictedAim
+                && g == predictedG) {
             return;
         }
         if (simulator == null || simulator.getStepSeconds() != step) {
@@ -349,5 +389,6 @@ public final class HelloAimingDemo extends DemoState {
         predictedStep = step;
         predictedVx = vx;
         predictedAim = aim;
+        predictedG = g;
     }
 }

@@ -25,6 +25,20 @@ public final class ThrustDemo extends DemoState {
     public static final float LINEAR_B = 0.9f;
     /** The common launch velocity (m/s). */
     private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    private static final float MASS_KG = 1f;
+    /** The launch speed's largest value and key step (m/s). */
+    private static final float MAX_SPEED = 30f;
+    private static final float SPEED_STEP = 0.5f;
+    /** The largest drag coefficient (N·s/m) and thrust (N) offered. */
+    private static final float MAX_B = 5f;
+    private static final float MAX_K = 20f;
+
+    /** The launch, mass and g, declared as parameters. */
+    private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
+    /** Both spheres feel the same drag; only the second one thrusts. */
+    private final LinearDrag drag = new LinearDrag(LINEAR_B);
+    private final LinearDrag thrusterDrag = new LinearDrag(LINEAR_B);
+    private final Thrust thrust = new Thrust(THRUST_K);
 
     /** Create the demo. */
     public ThrustDemo() {
@@ -33,21 +47,38 @@ public final class ThrustDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f), Vector3f.ZERO,
-                LAUNCH_VELOCITY, 1f,
-                new ParticleIntegrator(new Gravity(), new LinearDrag(LINEAR_B)))
-                .stopAtGround();
-        addParticle("pull + drag + thrust 2 N", new ColorRGBA(1f, 0.75f, 0.2f, 1f),
-                Vector3f.ZERO, LAUNCH_VELOCITY, 1f, new ParticleIntegrator(new Gravity(),
-                        new LinearDrag(LINEAR_B), new Thrust(THRUST_K))).stopAtGround();
+        launch.add(addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
+                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
+                new ParticleIntegrator(launch.add(new Gravity()), drag))).stopAtGround();
+        launch.add(addParticle("pull + drag + thrust k", new ColorRGBA(1f, 0.75f, 0.2f, 1f),
+                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(
+                        launch.add(new Gravity()), thrusterDrag, thrust))).stopAtGround();
         setView(-1f, 14f, 4.5f, 0.5f, 4, 0.18f);
         showExactGhosts();
     }
 
     @Override
+    protected void declareParameters() {
+        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
+        declareParameter(launch.angleParameter());
+        declareParameter(launch.massParameter(MASS_KG));
+        declareParameter(launch.gravityParameter());
+        declareParameter(new DemoParameter("b", "linear drag", "N s/m", 0f, MAX_B,
+                0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, value -> {
+                    drag.setCoefficient(value);
+                    thrusterDrag.setCoefficient(value);
+                }));
+        declareParameter(new DemoParameter("k", "thrust", "N", 0f, MAX_K, 0.25f,
+                THRUST_K, 2, DemoParameter.Applies.LIVE, thrust::setMagnitude));
+    }
+
+    @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("a = g + F/m,  m = 1 kg,  V0 = (10, 10, 0) m/s\n");
-        text.append("drag F = -b V, b = 0.9 N s/m;   thrust F = k V/|V|, k = 2 N"
-                + " along the sphere's OWN velocity\n");
+        launch.appendLaunch(text.append("a = g + F/m,  "), getParameters()).append('\n');
+        text.append("drag F = -b V, b = ");
+        DemoParameter.appendShort(text, drag.getCoefficient(), 2).append(" N s/m;   thrust"
+                + " F = k V/|V|, k = ");
+        DemoParameter.appendShort(text, thrust.getMagnitude(), 2)
+                .append(" N along the sphere's OWN velocity\n");
     }
 }

@@ -19,7 +19,17 @@ public final class UniformMotionDemo extends DemoState {
     private static final Vector3f VELOCITY = new Vector3f(4f, 1.2f, 0f);
     /** The sphere starts over when it passes this x (m). */
     private static final float RIGHT_EDGE = 30f;
+    /** ... or leaves above or below (m): a steep or downward launch never reaches x = 30. */
+    private static final float TOP_EDGE = 11f;
+    private static final float BOTTOM_EDGE = -1f;
+    /** The launch speed's largest value and key step (m/s). */
+    private static final float MAX_SPEED = 12f;
+    private static final float SPEED_STEP = 0.25f;
 
+    /** The launch speed and angle, declared as parameters. */
+    private final LaunchControl launch = new LaunchControl(VELOCITY);
+    /** Scratch: the launch velocity as printed (m/s). */
+    private final Vector3f shownVelocity = new Vector3f();
     private DemoParticle sphere;
 
     /** Create the demo. */
@@ -30,10 +40,17 @@ public final class UniformMotionDemo extends DemoState {
     @Override
     protected void createScene() {
         // An integrator with no forces: the lecture's "no force, straight line".
-        sphere = addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
-                new ParticleIntegrator());
+        sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
+                new ParticleIntegrator()));
         setView(-2f, 32f, 8f, 1f, 5, 0.4f);
         showExactGhosts();
+    }
+
+    @Override
+    protected void declareParameters() {
+        // No force acts, so neither mass nor g changes anything: only the launch.
+        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
+        declareParameter(launch.angleParameter());
     }
 
     @Override
@@ -41,14 +58,18 @@ public final class UniformMotionDemo extends DemoState {
         // Leaving the screen: start over so the demo loops in front of the class. Called
         // from a step, restart() waits until the frame's steps are over, so t starts again
         // from 0 together with P.
-        if (sphere.getParticle().position.x > RIGHT_EDGE) {
+        Vector3f position = sphere.getParticle().position;
+        if (position.x > RIGHT_EDGE || position.y > TOP_EDGE || position.y < BOTTOM_EDGE) {
             restart();
         }
     }
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("No force:  a = 0,  so V = (").append(VELOCITY.x).append(", ")
-                .append(VELOCITY.y).append(", 0) m/s stays,  and P = P0 + V*t\n");
+        launch.copyVelocity(shownVelocity);
+        text.append("No force:  a = 0,  so V = (");
+        DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
+        DemoParameter.appendShort(text, shownVelocity.y, 2)
+                .append(", 0) m/s stays,  and P = P0 + V*t\n");
     }
 }

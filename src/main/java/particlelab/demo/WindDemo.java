@@ -89,6 +89,8 @@ public final class WindDemo extends DemoState {
     private static final Vector3f DEFAULT_WIND = new Vector3f(-6f, 0f, 0f);
     /** How much one key press changes the wind (m/s). */
     private static final float WIND_STEP = 2f;
+    /** The strongest wind offered, either way (m/s). */
+    private static final float MAX_WIND = 20f;
     private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
 
     // Step 1: the forces this demo shows, as fields so keys can change them.
@@ -123,8 +125,20 @@ public final class WindDemo extends DemoState {
     }
 
     @Override
+    protected void declareParameters() {
+        // Step 4: parameters. The panel (sliders, and the [ ] , . keys) and --set w=...
+        // are generated from this declaration; the setter puts the value into the force.
+        declareParameter(new DemoParameter("w", "wind along x",
+                "m/s", -MAX_WIND, MAX_WIND, WIND_STEP, DEFAULT_WIND.x, 1,
+                DemoParameter.Applies.LIVE, value -> {
+                    windVelocity.x = value;
+                    wind.setWindVelocity(windVelocity);
+                }));
+    }
+
+    @Override
     protected void declareKeys() {
-        // Step 4: keys. The help overlay (H) lists them automatically.
+        // Step 5: keys. The help overlay (H) lists them automatically.
         bindKey(KeyInput.KEY_LEFT, "Left", "wind 2 m/s more toward the gun",
                 () -> changeWind(-WIND_STEP));
         bindKey(KeyInput.KEY_RIGHT, "Right", "wind 2 m/s more toward the target",
@@ -133,14 +147,15 @@ public final class WindDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        // Step 5: HUD lines, ten times a second: append numbers with TextFormat (no garbage).
+        // Step 6: HUD lines, ten times a second: append numbers with TextFormat (no garbage).
         text.append("Wind W = ");
         TextFormat.appendVector(text, windVelocity, 1).append(" m/s   (Left/Right change it)\n");
     }
 
     private void changeWind(float delta) {
-        windVelocity.x += delta;
-        wind.setWindVelocity(windVelocity);
+        // Through the parameter, so the panel shows it too.
+        getParameters().set("w", Math.max(-MAX_WIND, Math.min(MAX_WIND,
+                windVelocity.x + delta)));
         // The equations at the top of the HUD show the new W.
         refreshEquations();
         restart();

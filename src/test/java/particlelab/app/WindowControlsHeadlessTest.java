@@ -67,8 +67,8 @@ class WindowControlsHeadlessTest {
     void theWindowAndExportKeysAreInEveryDemosHelp() throws Exception {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
             String help = demo.getHelpText();
-            for (String line : new String[] {"F11  -  fullscreen", "]  -  larger HUD text",
-                "[  -  smaller HUD text", "E  -  export"}) {
+            for (String line : new String[] {"F11  -  fullscreen", "F10  -  larger HUD text",
+                "F9  -  smaller HUD text", "E  -  export"}) {
                 assertTrue(help.contains(line), demo.getTitle() + " lacks " + line);
             }
         }

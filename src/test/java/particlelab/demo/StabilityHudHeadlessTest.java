@@ -50,7 +50,7 @@ class StabilityHudHeadlessTest {
         });
         // At launch |V| = sqrt(200): quadratic lambda = 2·0.064·14.142 = 1.810 /s, limit
         // 2/lambda = 1.105 s, below linear drag's 2m/b = 2.222 s. No "k", no second limit.
-        assertTrue(body.contains("Stability: h < 1.105 s for 'quadratic drag  F = -0.064 |V|V'"
+        assertTrue(body.contains("Stability: h < 1.105 s for 'quadratic drag  F = -c |V|V'"
                 + " (lambda = 1.81 /s)\n"), body);
         assertTrue(!body.contains("2.222") && !body.contains("any h"), body);
     }
@@ -70,9 +70,9 @@ class StabilityHudHeadlessTest {
         });
         String warning = texts[0];
         assertTrue(warning.startsWith("UNSTABLE: h = 1200.0 ms is beyond the stability limit"
-                + " 1104.9 ms of 'quadratic drag  F = -0.064 |V|V': small changes of the motion"
+                + " 1104.9 ms of 'quadratic drag  F = -c |V|V': small changes of the motion"
                 + " grow every step"), warning);
-        assertTrue(texts[1].contains("for 'quadratic drag  F = -0.064 |V|V'"), texts[1]);
+        assertTrue(texts[1].contains("for 'quadratic drag  F = -c |V|V'"), texts[1]);
     }
 
     @Test

@@ -1,0 +1,189 @@
+package particlelab.demo;
+
+import com.jme3.app.Application;
+import com.jme3.font.BitmapFont;
+import com.jme3.input.KeyInput;
+import com.jme3.scene.Node;
+import java.util.List;
+import particlelab.physics.SimulationClock;
+import particlelab.view.HudLayout;
+import particlelab.view.ParameterPanel;
+
+/**
+ * What {@link DemoState} does with a demo's parameters, in one place: declares the shared
+ * one (the fixed step h), the panel's keys, builds the panel (Lemur) in the HUD's side panel
+ * slot, applies waiting values at each launch, and keeps the last shots. The demo state calls
+ * it through a few lines.
+ */
+final class ParameterControls {
+
+    /** The fixed step h's range (in seconds): from 1/240 to 1/5 s. */
+    static final float MIN_STEP_SECONDS = 1f / 240f;
+    static final float MAX_STEP_SECONDS = 1f / 5f;
+    /** The steps the panel's keys and slider go through (in seconds). */
+    private static final float[] STEP_STOPS = {1f / 240f, 1f / 120f, 1f / 90f, 1f / 60f,
+        1f / 45f, 1f / 30f, 1f / 20f, 1f / 15f, 1f / 10f, 1f / 5f};
+
+    private final DemoParameters parameters = new DemoParameters();
+    private final StringBuilder legend = new StringBuilder(512);
+    private KeptShots keptShots;
+    private ParameterPanel panel;
+    /**
+     * Hidden at the start (F2 shows it): the side panel narrows the scene, and at some
+     * window sizes the labels of drag's and thrust's spheres then find no slot clear of the
+     * trails.
+     */
+    private boolean panelVisible;
+    private boolean legendDirty = true;
+    /** The parameters' version the legend was written for. */
+    private int legendVersion = Integer.MIN_VALUE;
+
+    /**
+     * Access the parameters.
+     *
+     * @return the live parameters (not null)
+     */
+    DemoParameters getParameters() {
+        return parameters;
+    }
+
+    /**
+     * Declare the parameters every demo has: the fixed step h, applied live (the T key
+     * switches to raw tpf, which ignores it).
+     *
+     * @param clock the demo's clock (not null)
+     */
+    void declareShared(SimulationClock clock) {
+        parameters.add(new DemoParameter("h", "fixed step", "s",
+                MIN_STEP_SECONDS, MAX_STEP_SECONDS, MIN_STEP_SECONDS,
+                SimulationClock.DEFAULT_STEP_SECONDS, 4, DemoParameter.Applies.LIVE,
+                clock::setStepSeconds)
+                .withStops(STEP_STOPS).withDisplay(DemoParameter::appendStep));
+    }
+
+    /**
+     * Declare the panel's keys: select a line, change its value, show or hide the panel,
+     * clear the kept shots.
+     *
+     * @param keys the demo's keys (not null, modified)
+     * @param relayOut lays the HUD and the scene out again, after the panel came or went
+     *     (not null)
+     */
+    void declareKeys(DemoKeys keys, Runnable relayOut) {
+        keys.addShared(new KeyBinding(new int[] {KeyInput.KEY_LBRACKET, KeyInput.KEY_RBRACKET},
+                new String[] {"[", "]"}, "parameter panel: select the line above / below",
+                null, key -> parameters.moveSelection(key == 0 ? -1 : 1)));
+        keys.addShared(new KeyBinding(new int[] {KeyInput.KEY_COMMA, KeyInput.KEY_PERIOD},
+                new String[] {",", "."}, "parameter panel: selected value down / up (a"
+                        + " launch value applies at the next reset or launch)",
+                null, key -> parameters.nudgeSelected(key == 0 ? -1 : 1)));
+        keys.addShared(new KeyBinding(KeyInput.KEY_F2, "F2",
+                "show / hide the parameter panel (mouse: sliders and buttons)", () -> {
+                    panelVisible = !panelVisible;
+                    relayOut.run();
+                }));
+        keys.addShared(new KeyBinding(KeyInput.KEY_BACK, "Backspace",
+                "clear the kept shots (the faint paths of the last launches)",
+                this::clearShots));
+    }
+
+    /**
+     * Build the panel and the kept shots' paths, and ask the HUD for the side panel slot.
+     * Call once, after the scene's views were built.
+     *
+     * @param app the application (not null)
+     * @param font the HUD's font (not null)
+     * @param layout the HUD's layout (not null, modified: the panel's width)
+     * @param particles the demo's particles (not null, live)
+     * @param radiusMetres the particles' drawn radius (in metres, &gt;0)
+     * @param sceneNode where the kept paths go (not null, modified)
+     * @param labels the buttons' texts (not null)
+     * @param actions what each button does (not null, one per label)
+     */
+    void build(Application app, BitmapFont font, HudLayout layout,
+            List<DemoParticle> particles, float radiusMetres, Node sceneNode,
+            List<String> labels, List<Runnable> actions) {
+        keptShots = new KeptShots(parameters.size());
+        keptShots.build(app.getAssetManager(), particles, radiusMetres, sceneNode);
+        keptShots.launched(parameters);
+        panel = new ParameterPanel(parameters, font, "Parameters  (F2 hides)", labels,
+                actions);
+        layout.setPanelWidth(panelVisible ? ParameterPanel.WIDTH_AT_SCALE_ONE : 0f);
+    }
+
+    /**
+     * Ask the HUD for the panel's slot, or none while the panel is hidden. Call before the
+     * HUD is laid out again.
+     *
+     * @param layout the HUD's layout (not null, modified)
+     */
+    void requestSlot(HudLayout layout) {
+        layout.setPanelWidth(panelVisible ? ParameterPanel.WIDTH_AT_SCALE_ONE : 0f);
+    }
+
+    /** @return true while the panel is shown */
+    boolean isPanelVisible() {
+        return panelVisible;
+    }
+
+    /**
+     * Access the panel.
+     *
+     * @return the live panel (null before {@link #build})
+     */
+    ParameterPanel getPanel() {
+        return panel;
+    }
+
+    /**
+     * Access the kept shots.
+     *
+     * @return the live store (null before {@link #build})
+     */
+    KeptShots getKeptShots() {
+        return keptShots;
+    }
+
+    /**
+     * Before a launch or a reset puts the particles at their launch states: keep the shot
+     * that ends, then apply the values that waited for the launch. Allocates nothing.
+     */
+    void beforeLaunch() {
+        if (keptShots != null) {
+            keptShots.keep();
+            legendDirty = true;
+        }
+        parameters.applyPending();
+        if (keptShots != null) {
+            keptShots.launched(parameters);
+        }
+    }
+
+    /**
+     * Follow the mouse and the keys, and put the panel in its slot: once a frame, after the
+     * HUD was laid out. Allocates nothing while nothing changed.
+     *
+     * @param layout the HUD's layout (not null, not modified)
+     */
+    void update(HudLayout layout) {
+        if (panel == null) {
+            return;
+        }
+        if (legendDirty || legendVersion != parameters.getVersion()) {
+            legendDirty = false;
+            legendVersion = parameters.getVersion();
+            legend.setLength(0);
+            keptShots.formatLegend(legend, parameters);
+            panel.setLegend(legend);
+        }
+        panel.place(layout.getSidePanel(), layout.getScale());
+        panel.refresh();
+    }
+
+    private void clearShots() {
+        if (keptShots != null) {
+            keptShots.clear();
+            legendDirty = true;
+        }
+    }
+}

@@ -1,0 +1,326 @@
+package particlelab.view;
+
+import com.jme3.app.Application;
+import com.jme3.font.BitmapFont;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
+import com.simsilica.lemur.Axis;
+import com.simsilica.lemur.Button;
+import com.simsilica.lemur.Container;
+import com.simsilica.lemur.DefaultRangedValueModel;
+import com.simsilica.lemur.FillMode;
+import com.simsilica.lemur.GuiGlobals;
+import com.simsilica.lemur.HAlignment;
+import com.simsilica.lemur.Insets3f;
+import com.simsilica.lemur.Label;
+import com.simsilica.lemur.Slider;
+import com.simsilica.lemur.component.QuadBackgroundComponent;
+import com.simsilica.lemur.component.SpringGridLayout;
+import com.simsilica.lemur.core.VersionedReference;
+import com.simsilica.lemur.focus.FocusNavigationState;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The parameter panel's mouse half, drawn with Lemur in the HUD's side panel slot: a row of
+ * buttons (pause, step, reset, fire, next demo), then one line of text and one slider per row
+ * of its {@link ParameterPanelModel}, then a text block (the kept shots' legend). It only
+ * reads and forwards: a slider moved sets its row through the model, and the texts and the
+ * sliders follow the model when its version changes, so keys and mouse always agree.
+ *
+ * <p>The style is built here in code (a dark translucent panel in the HUD's font) instead of
+ * Lemur's "glass" style, which is a groovy script and would need a scripting engine at every
+ * start. {@link #refresh()} allocates nothing while nothing changed.
+ */
+public final class ParameterPanel {
+
+    /** The panel's width at HUD scale 1 (in pixels), asked of the HUD layout. */
+    public static final float WIDTH_AT_SCALE_ONE = 320f;
+    /** The panel's text size at HUD scale 1 (in pixels). */
+    private static final float TEXT_SIZE = 14f;
+    /** The slider's thumb's width at HUD scale 1 (in pixels). */
+    private static final float THUMB_WIDTH = 12f;
+    /** A slider's height at HUD scale 1 (in pixels). */
+    private static final float SLIDER_HEIGHT = 16f;
+    private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.05f, 0.06f, 0.1f, 0.78f);
+    private static final ColorRGBA BUTTON_COLOR = new ColorRGBA(0.22f, 0.3f, 0.45f, 0.95f);
+    private static final ColorRGBA SELECTED_COLOR = new ColorRGBA(1f, 0.85f, 0.35f, 1f);
+    private static final ColorRGBA TEXT_COLOR = new ColorRGBA(0.9f, 0.92f, 0.95f, 1f);
+    private static final ColorRGBA TRACK_COLOR = new ColorRGBA(0.3f, 0.33f, 0.4f, 0.9f);
+    private static final ColorRGBA THUMB_COLOR = new ColorRGBA(0.85f, 0.88f, 0.95f, 1f);
+
+    private final ParameterPanelModel model;
+    private final BitmapFont font;
+    private final Node node = new Node("parameter panel");
+    private final Container container;
+    private final List<Label> texts = new ArrayList<>();
+    private final List<Label> rowLabels = new ArrayList<>();
+    private final List<Button> buttons = new ArrayList<>();
+    private final Slider[] sliders;
+    private final List<VersionedReference<Double>> sliderReferences = new ArrayList<>();
+    private final Label heading;
+    private final Label legend;
+    private final StringBuilder scratch = new StringBuilder(128);
+    private final Vector3f size = new Vector3f();
+    private int shownVersion = Integer.MIN_VALUE;
+    private float scale = Float.NaN;
+    /** Where the panel was last placed (pixels), so an unchanged slot costs nothing. */
+    private final ScreenRect placed = new ScreenRect();
+    /** True when the texts changed, so the panel's height must be measured again. */
+    private boolean placeAgain = true;
+    private boolean legendChanged;
+    private final StringBuilder legendText = new StringBuilder(256);
+
+    /**
+     * Build the panel. Call after {@link #initializeLemur} ran for the application.
+     *
+     * @param model the rows to show and change (not null, live)
+     * @param font the HUD's font (not null)
+     * @param title the heading, e.g. "Parameters  (F2 hides)" (not null)
+     * @param buttonLabels each button's text (not null, same length as buttonActions)
+     * @param buttonActions what each button does when clicked (not null, none null)
+     */
+    public ParameterPanel(ParameterPanelModel model, BitmapFont font, String title,
+            List<String> buttonLabels, List<Runnable> buttonActions) {
+        if (buttonLabels.size() != buttonActions.size()) {
+            throw new IllegalArgumentException("one action per button, but had "
+                    + buttonLabels.size() + " labels and " + buttonActions.size()
+                    + " actions");
+        }
+        this.model = model;
+        this.font = font;
+        container = new Container(new SpringGridLayout(Axis.Y, Axis.X, FillMode.None,
+                FillMode.Even));
+        container.setBackground(new QuadBackgroundComponent(PANEL_COLOR));
+        heading = text(title, SELECTED_COLOR);
+        container.addChild(heading);
+        Container row = container.addChild(new Container(new SpringGridLayout(Axis.X, Axis.Y,
+                FillMode.Even, FillMode.Even)));
+        for (int i = 0; i < buttonLabels.size(); ++i) {
+            Button button = new Button(buttonLabels.get(i));
+            Runnable action = buttonActions.get(i);
+            button.addClickCommands(source -> action.run());
+            button.setBackground(new QuadBackgroundComponent(BUTTON_COLOR));
+            button.setFont(font);
+            button.setColor(TEXT_COLOR);
+            button.setTextHAlignment(HAlignment.Center);
+            buttons.add(button);
+            row.addChild(button);
+        }
+        sliders = new Slider[model.countRows()];
+        for (int i = 0; i < model.countRows(); ++i) {
+            Label label = text("", TEXT_COLOR);
+            rowLabels.add(label);
+            container.addChild(label);
+            Slider slider = new Slider(new DefaultRangedValueModel(0.0, 1.0,
+                    model.getSliderFraction(i)), Axis.X);
+            slider.setBackground(new QuadBackgroundComponent(TRACK_COLOR));
+            slider.setDelta(model.getSliderStep(i));
+            slider.getThumbButton().setBackground(new QuadBackgroundComponent(THUMB_COLOR));
+            slider.getThumbButton().setText("|");
+            slider.getThumbButton().setFont(font);
+            slider.getThumbButton().setColor(PANEL_COLOR);
+            slider.getIncrementButton().setText(">");
+            slider.getDecrementButton().setText("<");
+            for (Button end : new Button[] {slider.getIncrementButton(),
+                slider.getDecrementButton()}) {
+                end.setBackground(new QuadBackgroundComponent(BUTTON_COLOR));
+                end.setFont(font);
+                end.setColor(TEXT_COLOR);
+                buttons.add(end);
+            }
+            buttons.add(slider.getThumbButton());
+            sliders[i] = slider;
+            sliderReferences.add(slider.getModel().createReference());
+            container.addChild(slider);
+        }
+        legend = text(" ", TEXT_COLOR);
+        container.addChild(legend);
+        node.attachChild(container);
+    }
+
+    /**
+     * Make Lemur ready for an application: once per application, before any panel is built
+     * (Lemur keeps one set of globals, which a new application replaces).
+     *
+     * @param app the application (not null)
+     */
+    public static void initializeLemur(Application app) {
+        GuiGlobals.initialize(app);
+        // Lemur's keyboard focus navigation would take Tab and the arrow keys, which the
+        // demos use; the panel's keys are the app's own (see the help). A headless
+        // application has no such state.
+        FocusNavigationState navigation = GuiGlobals.getInstance().getFocusNavigationState();
+        if (navigation != null) {
+            navigation.setEnabled(false);
+        }
+    }
+
+    /** @return the live node, to attach to the GUI scene (not null) */
+    public Node getNode() {
+        return node;
+    }
+
+    /**
+     * Set the text under the sliders (the kept shots' legend); shown at the next
+     * {@link #refresh()} if it changed.
+     *
+     * @param text the text (not null, copied)
+     */
+    public void setLegend(CharSequence text) {
+        if (!TextFormat.sameText(legendText, text.toString())) {
+            legendText.setLength(0);
+            legendText.append(text);
+            legendChanged = true;
+        }
+    }
+
+    /**
+     * Put the panel into a rectangle of the window, at a HUD scale: its top left corner at
+     * the rectangle's, as wide as it is. Allocates nothing unless the scale changed.
+     *
+     * @param where the side panel slot (not null, not modified; empty hides the panel)
+     * @param hudScale the HUD's scale (&gt;0)
+     */
+    public void place(ScreenRect where, float hudScale) {
+        if (where.isEmpty()) {
+            node.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
+        node.setCullHint(Spatial.CullHint.Inherit);
+        if (!placeAgain && hudScale == scale && where.getX() == placed.getX()
+                && where.getY() == placed.getY() && where.getWidth() == placed.getWidth()
+                && where.getHeight() == placed.getHeight()) {
+            return;
+        }
+        placed.set(where);
+        placeAgain = false;
+        if (hudScale != scale) {
+            scale = hudScale;
+            float textSize = TEXT_SIZE * hudScale;
+            for (int i = 0; i < texts.size(); ++i) {
+                texts.get(i).setFontSize(textSize);
+            }
+            for (int i = 0; i < buttons.size(); ++i) {
+                buttons.get(i).setFontSize(textSize);
+                buttons.get(i).setInsets(new Insets3f(2f * hudScale, 4f * hudScale,
+                        2f * hudScale, 4f * hudScale));
+            }
+            for (Slider slider : sliders) {
+                slider.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * hudScale, 0f));
+                slider.getThumbButton().setPreferredSize(new Vector3f(THUMB_WIDTH * hudScale,
+                        SLIDER_HEIGHT * hudScale, 0f));
+            }
+            container.setInsets(new Insets3f(6f * hudScale, 8f * hudScale, 6f * hudScale,
+                    8f * hudScale));
+        }
+        // As tall as its content needs, as wide as the slot.
+        container.setPreferredSize(null);
+        size.set(where.getWidth(), container.getPreferredSize().y, 0f);
+        container.setPreferredSize(size.clone());
+        container.setLocalTranslation(where.getX(), where.getTop(), 0f);
+    }
+
+    /**
+     * Follow the model and the sliders: a slider the mouse moved sets its row (and selects
+     * it); a model that changed rewrites the texts and moves the sliders. Call once a frame;
+     * allocates nothing while nothing changed.
+     */
+    public void refresh() {
+        for (int i = 0; i < sliders.length; ++i) {
+            if (sliderReferences.get(i).update()) {
+                model.select(i);
+                model.setSliderFraction(i, (float) sliders[i].getModel().getValue());
+            }
+        }
+        if (model.getVersion() != shownVersion) {
+            shownVersion = model.getVersion();
+            for (int i = 0; i < sliders.length; ++i) {
+                scratch.setLength(0);
+                rowLabels.get(i).setText(model.formatRow(i, scratch).toString());
+                rowLabels.get(i).setColor(i == model.getSelected() ? SELECTED_COLOR
+                        : TEXT_COLOR);
+                sliders[i].getModel().setValue(model.getSliderFraction(i));
+                // What the model set is no change of the mouse's.
+                sliderReferences.get(i).update();
+            }
+            // The texts may need another height: size the panel again at the next place.
+            placeAgain = true;
+        }
+        if (legendChanged) {
+            legendChanged = false;
+            legend.setText(legendText.length() == 0 ? " " : legendText.toString());
+            placeAgain = true;
+        }
+    }
+
+    /** @return how many rows of text and sliders the panel shows */
+    public int countRows() {
+        return sliders.length;
+    }
+
+    /**
+     * Return the text of a row as shown (for tests).
+     *
+     * @param row which (&ge;0, &lt;the model's row count)
+     * @return the text (not null)
+     */
+    public String getRowText(int row) {
+        return rowLabels.get(row).getText();
+    }
+
+    /** @return the legend as shown (not null) */
+    public String getLegendText() {
+        return legend.getText();
+    }
+
+    /**
+     * Click a button, as the mouse does (for tests and scripted runs).
+     *
+     * @param label the button's text (one of those given)
+     */
+    public void click(String label) {
+        for (int i = 0; i < buttons.size(); ++i) {
+            if (label.equals(buttons.get(i).getText())) {
+                buttons.get(i).click();
+                return;
+            }
+        }
+        throw new IllegalArgumentException("no button \"" + label + "\"");
+    }
+
+    /**
+     * Move a slider, as the mouse does (for tests).
+     *
+     * @param row which (&ge;0, &lt;the model's row count)
+     * @param fraction the place, from 0 (left) to 1 (right)
+     */
+    public void drag(int row, float fraction) {
+        sliders[row].getModel().setValue(fraction);
+    }
+
+    /**
+     * Copy the panel's screen rectangle, as last placed and sized (for layout tests).
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult (empty when hidden)
+     */
+    public ScreenRect copyRect(ScreenRect storeResult) {
+        if (node.getCullHint() == Spatial.CullHint.Always) {
+            return storeResult.set(0f, 0f, 0f, 0f);
+        }
+        Vector3f at = container.getLocalTranslation();
+        Vector3f extent = container.getPreferredSize();
+        return storeResult.set(at.x, at.y - extent.y, extent.x, extent.y);
+    }
+
+    private Label text(String value, ColorRGBA color) {
+        Label label = new Label(value);
+        label.setFont(font);
+        label.setColor(color);
+        texts.add(label);
+        return label;
+    }
+}

@@ -1,0 +1,73 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.demo.DragDemo;
+
+/**
+ * {@code particle-lab demo NAME --set NAME=VALUE}: a bad setting is one line and exit 2,
+ * before any window; a good one is the value the scene starts with.
+ */
+class DemoSetOptionTest {
+
+    @Test
+    void outOfRangeValueIsOneLineWithEveryRangeAndExitTwo() {
+        CommandRun run = CommandRun.of("demo", "drag", "--set", "b=7");
+        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(1, run.errLines().size(), run.toString());
+        String line = run.errLines().get(0);
+        assertTrue(line.startsWith("particle-lab demo: --set b=7: b = 7.0 is out of range;"
+                + " the parameters are h (fixed step) from 1/240 s to 1/5 s"), line);
+        assertTrue(line.contains("b (linear drag) from 0.00 N s/m to 5.00 N s/m"), line);
+        assertTrue(line.contains("c (quadratic drag) from 0.000 kg/m to 0.500 kg/m"), line);
+        assertEquals("", run.out);
+    }
+
+    @Test
+    void unknownNameAndBadValueAreOneLineEach() {
+        for (String setting : new String[] {"q=1", "b", "b=fast", "h=1/0", "b=NaN"}) {
+            CommandRun run = CommandRun.of("demo", "drag", "--set", setting);
+            assertEquals(DemoCommand.USAGE, run.code, run.toString());
+            assertEquals(1, run.errLines().size(), run.toString());
+            assertTrue(run.err.contains("the parameters are h (fixed step)"), run.toString());
+        }
+    }
+
+    @Test
+    void settingsAreRepeatableAndTakeFractions() throws Exception {
+        DemoState drag = new DragDemo();
+        DemoCommand.applySettings(drag, List.of("b=0.3", "h=1/10", "speed=20", "b=0.5"));
+        assertEquals(0.5f, drag.getParameters().getValue("b"));
+        assertEquals(0.1f, drag.getParameters().getValue("h"));
+        assertEquals(20f, drag.getParameters().getValue("speed"));
+        assertThrows(UsageException.class,
+                () -> DemoCommand.applySettings(drag, List.of("angle=90")));
+    }
+
+    @Test
+    void setValuesAreWhatTheSceneStartsWith() throws Exception {
+        List<DemoState> demos = DemoCatalog.createAll();
+        DemoState drag = demos.get(DemoCatalog.indexOf("drag"));
+        DemoCommand.applySettings(drag, List.of("b=0.3", "h=1/10", "speed=20", "angle=30"));
+        try (HeadlessHarness harness = HeadlessHarness.start(demos)) {
+            Object[] seen = harness.call(() -> new Object[] {
+                drag.getClock().getStepSeconds(),
+                drag.getParticles().get(1).getIntegrator().describe(),
+                drag.getParticles().get(0).copyLaunchVelocity(new Vector3f()),
+                drag.getParticles().get(0).getParticle().velocity.clone()});
+            assertEquals(0.1f, (float) seen[0]);
+            assertTrue(((String) seen[1]).contains("0.3"), (String) seen[1]);
+            // 20·(cos 30°, sin 30°), computed in double and rounded to float once.
+            Vector3f expected = new Vector3f((float) (20.0 * Math.cos(Math.toRadians(30f))),
+                    (float) (20.0 * Math.sin(Math.toRadians(30f))), 0f);
+            assertEquals(expected, seen[2]);
+            assertEquals(expected, seen[3]);
+        }
+    }
+}
