@@ -55,18 +55,36 @@ class DemoExportTest {
             throws IOException {
         CommandRun demo = CommandRun.of("demo", "drag", "--frames", FRAMES, "--fixed-tpf",
                 FRAME, "--export", folder.toString());
+        assertDragFilesMatchTrajectory(demo, folder, STEP, Float.toString(DragDemo.LINEAR_B),
+                Float.toString(DragDemo.QUADRATIC_C));
+    }
+
+    @Test
+    void dragsCsvsWithSetValuesAreTheTrajectoryCommandsWithTheSameOptions(
+            @TempDir Path folder) throws IOException {
+        // b, c and h from the command line: each ball's file is the trajectory command's
+        // output with those coefficients and that step. At h = 1/30 s two frames of 1/60 s
+        // make one step; 200 frames (3.3 s) outlast the longest flight (2.04 s).
+        CommandRun demo = CommandRun.of("demo", "drag", "--set", "b=0.3", "--set", "c=0.02",
+                "--set", "h=1/30", "--frames", FRAMES, "--fixed-tpf", FRAME, "--export",
+                folder.toString());
+        assertDragFilesMatchTrajectory(demo, folder, "1/30", "0.3", "0.02");
+    }
+
+    /** The drag demo's three files against trajectory with the same launch, force and h. */
+    private static void assertDragFilesMatchTrajectory(CommandRun demo, Path folder,
+            String step, String linearB, String quadraticC) throws IOException {
         assertEquals(0, demo.code, demo.toString());
         assertEquals(3, demo.outLines().size(), demo.out);
         String[][] files = {
             {"gravity-only.csv"},
-            {"linear-drag-f-0.9-v.csv", "--linear-drag", Float.toString(DragDemo.LINEAR_B)},
-            {"quadratic-drag-f-0.064-v-v.csv", "--quadratic-drag",
-                Float.toString(DragDemo.QUADRATIC_C)},
+            {"linear-drag-f-b-v.csv", "--linear-drag", linearB},
+            {"quadratic-drag-f-c-v-v.csv", "--quadratic-drag", quadraticC},
         };
         for (String[] file : files) {
             // The drag demo's launch, as in pull, and the one drag force of each ball.
             List<String> args = new ArrayList<>(List.of("trajectory", "--v0", "10,10,0",
-                    "--tpf", STEP, "--until-ground"));
+                    "--tpf", step, "--until-ground"));
             args.addAll(Arrays.asList(file).subList(1, file.length));
             CommandRun trajectory = CommandRun.of(args.toArray(new String[0]));
             assertEquals(0, trajectory.code, trajectory.toString());
