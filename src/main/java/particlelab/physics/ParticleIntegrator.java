@@ -74,12 +74,20 @@ public final class ParticleIntegrator {
     private float cachedMass = Float.NaN;
     /** 1/{@link #cachedMass} (1/kg). */
     private float cachedInverseMass = Float.NaN;
-    /** The regime of a moving particle without speed-dependent forces, for ... */
+    /**
+     * Remembered for {@link #regime}, for {@link #regimeStep} and {@link #regimeMass}: the
+     * regime of a moving particle without speed-dependent forces ...
+     */
     private StepRegime movingRegime = StepRegime.STABLE;
-    /** ... this step (s; NaN: not known since the last fold) ... */
-    private float movingRegimeStep = Float.NaN;
+    /**
+     * ... and the |V|² up to which every particle is {@link StepRegime#STABLE} (m²/s²;
+     * infinite: at every speed; -1: none) ...
+     */
+    private float stableSpeedSquared = -1f;
+    /** ... for this step (s; NaN: not known since the last fold) ... */
+    private float regimeStep = Float.NaN;
     /** ... and this mass (kg). */
-    private float movingRegimeMass = Float.NaN;
+    private float regimeMass = Float.NaN;
     /** Scratch: g of the other forces (m/s²). */
     private final Vector3f otherField = new Vector3f();
     /** Scratch: F of the other forces (N). */
@@ -386,23 +394,22 @@ public final class ParticleIntegrator {
         if (others.length > 0) {
             return regimeByLimits(particle, stepSeconds);
         }
-        if (speedDependent) {
-            return regimeByProducts(particle, stepSeconds, particle.velocity.lengthSquared());
-        }
-        // Gravity and linear drag: σ = λ = b/m for every moving particle, so one answer per
-        // step and mass, remembered (this runs for every particle every step). At rest σ = 0,
-        // which can only make it milder: a stable step is stable at rest too.
+        // This runs for every particle every step: what depends only on the step, the mass
+        // and the folded forces is remembered, and the usual answer is one comparison of |V|².
         float massKg = particle.getMass();
-        if (stepSeconds != movingRegimeStep || massKg != movingRegimeMass) {
-            movingScratch.setMass(massKg);
-            movingRegime = regimeByProducts(movingScratch, stepSeconds, 1f);
-            movingRegimeStep = stepSeconds;
-            movingRegimeMass = massKg;
+        if (stepSeconds != regimeStep || massKg != regimeMass) {
+            rememberRegime(stepSeconds, massKg);
+        }
+        float speedSquared = particle.velocity.lengthSquared();
+        if (speedSquared <= stableSpeedSquared) {
+            return StepRegime.STABLE;
+        }
+        if (speedDependent) {
+            return regimeByProducts(particle, stepSeconds, speedSquared);
         }
         if (movingRegime == StepRegime.STABLE) {
             return StepRegime.STABLE;
         }
-        float speedSquared = particle.velocity.lengthSquared();
         return speedSquared == 0f ? regimeByProducts(particle, stepSeconds, 0f) : movingRegime;
     }
 
@@ -506,6 +513,42 @@ public final class ParticleIntegrator {
     }
 
     /**
+     * Remember for {@link #regime} what depends only on the step, the mass and the folded
+     * forces. Gravity and linear drag: σ = λ = b/m for every moving particle, so one regime
+     * for all of them; at rest σ = 0, which can only make it milder, so a stable step is
+     * stable at every speed. Quadratic drag and thrust: λ = (b + 2c·|V|)/m grows with the
+     * speed, and σ = (b + c·|V| − k/|V|)/m never exceeds it (c, k &ge; 0), so every particle
+     * with {@code h·λ ≤ 1/2} is stable: that is {@code |V| ≤ (m/(2h) − b)/(2c)}. The float
+     * arithmetic of {@link #regimeByProducts} rounds h·λ and h·σ by about ten roundings
+     * (10·2^-24 relatively, and monotonically in |V|), far too little to take a value of 1/2
+     * near the limit 1, so below that speed it answers {@link StepRegime#STABLE} too (provided
+     * h·k/(m·{@link Thrust#MIN_SPEED}) is finite, so h·σ is).
+     */
+    private void rememberRegime(float stepSeconds, float massKg) {
+        movingScratch.setMass(massKg);
+        movingRegime = speedDependent ? StepRegime.STABLE
+                : regimeByProducts(movingScratch, stepSeconds, 1f);
+        if (!speedDependent) {
+            stableSpeedSquared = movingRegime == StepRegime.STABLE
+                    ? Float.POSITIVE_INFINITY : -1f;
+        } else {
+            double stepPerMass = (double) stepSeconds / massKg;
+            double halfLimit = 0.5 / stepPerMass - linearSum;
+            double thrustH = stepPerMass * thrustSum / Thrust.MIN_SPEED;
+            if (!(halfLimit >= 0.0) || !(thrustH < Float.MAX_VALUE)) {
+                stableSpeedSquared = -1f;
+            } else if (quadraticSum == 0f) {
+                stableSpeedSquared = Float.POSITIVE_INFINITY;
+            } else {
+                double speed = halfLimit / (2.0 * quadraticSum);
+                stableSpeedSquared = (float) Math.min(speed * speed, Float.MAX_VALUE);
+            }
+        }
+        regimeStep = stepSeconds;
+        regimeMass = massKg;
+    }
+
+    /**
      * True if a product h·rate is finite and clear of the limits 1 and 2 by far more than
      * the few roundings in which it and the quotients 1/rate, 2/rate can differ.
      */
@@ -566,7 +609,7 @@ public final class ParticleIntegrator {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
-        movingRegimeStep = Float.NaN;
+        regimeStep = Float.NaN;
         foldedChanges = changeCount();
     }
 

@@ -246,6 +246,46 @@ class ParticleIntegratorFoldingTest {
 
     @ParameterizedTest
     @EnumSource(Mix.class)
+    void rememberedRegimeIsTheLimitsAnswerAtEverySpeedStepAndSetter(Mix mix) {
+        // regime() answers most particles from a remembered speed bound; the public limits
+        // (σ from dragRate, 2/λ, 1/λ) must give the same regime wherever h·σ and h·λ are
+        // clear of 1 and 2 (closer than 1e-3, roundings of either side could tip it)
+        Force[] forces = mix.forces();
+        ParticleIntegrator integrator = new ParticleIntegrator(forces);
+        Random random = new Random(7);
+        Particle particle = new Particle();
+        int unstable = 0;
+        for (int n = 0; n < 40_000; ++n) {
+            if (n % 1000 == 0) {
+                // a setter mid-run: the remembered bound must follow it
+                setCoefficients(forces, 0.05f + 3f * random.nextFloat());
+            }
+            float mass = n % 3 == 0 ? 1f : 0.2f + 4f * random.nextFloat();
+            float h = n % 2 == 0 ? 0.5f : 8f * random.nextFloat();
+            // 0.1 to 1000 m/s, and some at rest
+            float speed = n % 17 == 0 ? 0f
+                    : (float) Math.pow(10.0, 4.0 * random.nextDouble() - 1.0);
+            particle.setMass(mass);
+            particle.velocity.set(randomVector(random, 1f)).normalizeLocal().multLocal(speed);
+            float sigmaH = h * integrator.dragRate(particle);
+            float lambdaH = h * integrator.dampingRate(particle);
+            if (isNear(sigmaH) || isNear(lambdaH)) {
+                continue;
+            }
+            StepRegime expected = StepRegime.of(h, integrator.dragRate(particle),
+                    integrator.maxStableStep(particle), integrator.maxMonotoneStep(particle));
+            unstable += expected == StepRegime.STABLE ? 0 : 1;
+            assertEquals(expected, integrator.regime(particle, h),
+                    () -> mix + " h=" + h + ", " + particle + ", h*sigma=" + sigmaH
+                            + ", h*lambda=" + lambdaH);
+        }
+        // gravity alone is stable at any step; with drag both sides of the bound were visited
+        assertTrue(mix == Mix.GRAVITY ? unstable == 0 : unstable > 1000 && unstable < 39_000,
+                "unstable cases: " + unstable);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
     void everyPathRefusesNaNInputAndKeepsTheState(Mix mix) {
         ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
         Particle particle = new Particle(new Vector3f(1f, 2f, 3f), new Vector3f(4f, 5f, 6f), 1f);
@@ -434,6 +474,24 @@ class ParticleIntegratorFoldingTest {
                         Float.floatToIntBits(velocities[axis * COUNT + i]), "V of " + i);
             }
         }
+    }
+
+    /** Set every drag coefficient and thrust of the forces to the value given. */
+    private static void setCoefficients(Force[] forces, float value) {
+        for (Force force : forces) {
+            if (force instanceof LinearDrag) {
+                ((LinearDrag) force).setCoefficient(value);
+            } else if (force instanceof QuadraticDrag) {
+                ((QuadraticDrag) force).setCoefficient(0.1f * value);
+            } else if (force instanceof Thrust) {
+                ((Thrust) force).setMagnitude(4f * value);
+            }
+        }
+    }
+
+    /** True if h·rate is within 1e-3 (relatively) of the limits 1 or 2. */
+    private static boolean isNear(float stepTimesRate) {
+        return Math.abs(stepTimesRate - 1f) < 1e-3f || Math.abs(stepTimesRate - 2f) < 2e-3f;
     }
 
     private static Vector3f randomVector(Random random, float scale) {
