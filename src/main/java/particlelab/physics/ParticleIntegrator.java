@@ -75,6 +75,21 @@ public final class ParticleIntegrator {
     /** 1/{@link #cachedMass} (1/kg). */
     private float cachedInverseMass = Float.NaN;
     /**
+     * Remembered for {@link #stepFolded}, for {@link #stepCacheSeconds} and
+     * {@link #stepCacheMass}: h·g per axis (m/s) ...
+     */
+    private float stepGravityX;
+    private float stepGravityY;
+    private float stepGravityZ;
+    /** ... 1/m (1/kg) ... */
+    private float stepInverseMass;
+    /** ... and without speed-dependent forces the velocity factor 1 − h·b/m ... */
+    private float stepFactor;
+    /** ... for this step (s; NaN: not known since the last fold) ... */
+    private float stepCacheSeconds = Float.NaN;
+    /** ... and this mass (kg). */
+    private float stepCacheMass = Float.NaN;
+    /**
      * Remembered for {@link #regime}, for {@link #regimeStep} and {@link #regimeMass}: the
      * regime of a moving particle without speed-dependent forces ...
      */
@@ -610,6 +625,7 @@ public final class ParticleIntegrator {
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
         regimeStep = Float.NaN;
+        stepCacheSeconds = Float.NaN;
         foldedChanges = changeCount();
     }
 
@@ -694,31 +710,50 @@ public final class ParticleIntegrator {
     private void stepFolded(Particle particle, float stepSeconds) {
         if (others.length == 0) {
             // the usual scene: the arithmetic of computeFolded in locals, committed straight
-            // from them (a round trip through scratch vectors would lengthen every step)
+            // from them (a round trip through scratch vectors would lengthen every step), with
+            // what depends only on h, m and the forces remembered from the step before
+            float massKg = particle.getMass();
+            if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+                rememberStep(stepSeconds, massKg);
+            }
             Vector3f velocity = particle.velocity;
             Vector3f position = particle.position;
             float vx = velocity.x;
             float vy = velocity.y;
             float vz = velocity.z;
-            float speed = speedDependent ? speed(vx, vy, vz) : 0f;
-            float factor = 1f - stepSeconds
-                    * foldedDragRate(speed, inverseMass(particle.getMass()));
-            vx = vx * factor + stepSeconds * gravityX;
-            vy = vy * factor + stepSeconds * gravityY;
-            vz = vz * factor + stepSeconds * gravityZ;
+            float factor = speedDependent
+                    ? 1f - stepSeconds * foldedDragRate(speed(vx, vy, vz), stepInverseMass)
+                    : stepFactor;
+            vx = vx * factor + stepGravityX;
+            vy = vy * factor + stepGravityY;
+            vz = vz * factor + stepGravityZ;
             float px = position.x + stepSeconds * vx;
             float py = position.y + stepSeconds * vy;
             float pz = position.z + stepSeconds * vz;
-            // a finite sum means six finite terms
-            if (Float.isFinite(vx + vy + vz + px + py + pz)
-                    || Float.isFinite(vx) && Float.isFinite(vy) && Float.isFinite(vz)
-                    && Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
+            // P' = P + h·V' with h > 0 is finite only if V' is; a finite sum means three
+            // finite terms
+            if (Float.isFinite(px + py + pz)
+                    || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
                 velocity.set(vx, vy, vz);
                 position.set(px, py, pz);
                 return;
             }
         }
         stepThroughScratch(particle, stepSeconds);
+    }
+
+    /**
+     * Remember for {@link #stepFolded} what depends only on h, the mass and the folded forces,
+     * computed as {@link #computeFolded} computes it (so the floats are the same).
+     */
+    private void rememberStep(float stepSeconds, float massKg) {
+        stepInverseMass = inverseMass(massKg);
+        stepGravityX = stepSeconds * gravityX;
+        stepGravityY = stepSeconds * gravityY;
+        stepGravityZ = stepSeconds * gravityZ;
+        stepFactor = 1f - stepSeconds * foldedDragRate(0f, stepInverseMass);
+        stepCacheSeconds = stepSeconds;
+        stepCacheMass = massKg;
     }
 
     /**
