@@ -26,9 +26,11 @@ import com.jme3.math.Vector3f;
  * </pre>
  * Other forces (a {@link Spring}, a student's own {@link Force}) are asked through the
  * interface, only in scenes that have one, and add their acceleration to g. The folding is
- * redone at the next step whenever a setter changed a folded force. The rearranged formula
- * rounds differently from evaluating {@code g + F/m} force by force ({@link #acceleration}):
- * per step and component the two velocities differ by at most 20 roundings (2^-24 each) of
+ * redone at the next step whenever a setter changed a folded force, and h and 1/m are folded
+ * in too, per step and mass: {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}. The
+ * rearranged formula rounds differently from evaluating {@code g + F/m} force by force
+ * ({@link #acceleration}): per step and component the two velocities differ by at most 24
+ * roundings (2^-24 each) of
  * {@code |V|·(1 + h·σ⁺) + h·|g| + |V'|}, σ⁺ the drag rate with every term positive (about 3
  * measured, 1–2 ulp of the new velocity); gravity alone gives identical numbers.
  *
@@ -83,8 +85,12 @@ public final class ParticleIntegrator {
     private float stepGravityZ;
     /** ... 1/m (1/kg) ... */
     private float stepInverseMass;
-    /** ... and without speed-dependent forces the velocity factor 1 − h·b/m ... */
+    /** ... the velocity factor 1 − h·b/m of linear drag ... */
     private float stepFactor;
+    /** ... h·c/m of quadratic drag (1/m) ... */
+    private float stepQuadratic;
+    /** ... h·k/m of thrust (m/s) ... */
+    private float stepThrust;
     /** ... for this step (s; NaN: not known since the last fold) ... */
     private float stepCacheSeconds = Float.NaN;
     /** ... and this mass (kg). */
@@ -270,22 +276,22 @@ public final class ParticleIntegrator {
             return;
         }
         foldIfChanged();
-        float inverseMass = inverseMass(massKg);
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
+        }
         float factor = Float.NaN;
         int bad;
-        if (others.length > 0 || !Float.isFinite(stepSeconds * foldedDragRate(0f, inverseMass))) {
+        if (others.length > 0 || !Float.isFinite(stepFactor)) {
             // other forces, or h·b/m beyond the float range, which the recipe may survive
             bad = stepPackedOneByOne(positions, velocities, count, massKg, stepSeconds);
         } else if (speedDependent) {
-            bad = stepPackedBySpeed(positions, velocities, count, inverseMass, stepSeconds);
+            bad = stepPackedBySpeed(positions, velocities, count, stepSeconds);
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
-            factor = 1f - stepSeconds * foldedDragRate(0f, inverseMass);
-            stepAxis(positions, velocities, 0, count, factor, stepSeconds * gravityX,
-                    stepSeconds);
-            stepAxis(positions, velocities, count, count, factor, stepSeconds * gravityY,
-                    stepSeconds);
-            stepAxis(positions, velocities, 2 * count, count, factor, stepSeconds * gravityZ,
+            factor = stepFactor;
+            stepAxis(positions, velocities, 0, count, factor, stepGravityX, stepSeconds);
+            stepAxis(positions, velocities, count, count, factor, stepGravityY, stepSeconds);
+            stepAxis(positions, velocities, 2 * count, count, factor, stepGravityZ,
                     stepSeconds);
             bad = firstNonFinite(positions, 3 * count);
         }
@@ -721,9 +727,7 @@ public final class ParticleIntegrator {
             float vx = velocity.x;
             float vy = velocity.y;
             float vz = velocity.z;
-            float factor = speedDependent
-                    ? 1f - stepSeconds * foldedDragRate(speed(vx, vy, vz), stepInverseMass)
-                    : stepFactor;
+            float factor = speedDependent ? foldedFactor(speed(vx, vy, vz)) : stepFactor;
             vx = vx * factor + stepGravityX;
             vy = vy * factor + stepGravityY;
             vz = vz * factor + stepGravityZ;
@@ -743,17 +747,34 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Remember for {@link #stepFolded} what depends only on h, the mass and the folded forces,
-     * computed as {@link #computeFolded} computes it (so the floats are the same).
+     * Remember for {@link #stepFolded}, {@link #computeFolded} and the batch what depends only
+     * on h, the mass and the folded forces, so all of them compute the same floats.
      */
     private void rememberStep(float stepSeconds, float massKg) {
         stepInverseMass = inverseMass(massKg);
         stepGravityX = stepSeconds * gravityX;
         stepGravityY = stepSeconds * gravityY;
         stepGravityZ = stepSeconds * gravityZ;
-        stepFactor = 1f - stepSeconds * foldedDragRate(0f, stepInverseMass);
+        stepFactor = 1f - stepSeconds * (linearSum * stepInverseMass);
+        stepQuadratic = stepSeconds * (quadraticSum * stepInverseMass);
+        stepThrust = stepSeconds * (thrustSum * stepInverseMass);
         stepCacheSeconds = stepSeconds;
         stepCacheMass = massKg;
+    }
+
+    /**
+     * The folded velocity factor {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}
+     * for the step and mass last remembered ({@link #rememberStep}): with h and m folded in,
+     * the speed reaches the factor through one multiplication and one division, as in a
+     * hand-written loop (the thrust term only from {@link Thrust#MIN_SPEED} on).
+     *
+     * @param speed |V| (in m/s; 0 if neither c nor k matters)
+     */
+    private float foldedFactor(float speed) {
+        // c = 0 gives no term even when |V|² overflowed to an infinite speed (0·∞ is NaN)
+        float factor = quadraticSum == 0f ? stepFactor : stepFactor - stepQuadratic * speed;
+        return thrustSum != 0f && speed >= Thrust.MIN_SPEED ? factor + stepThrust / speed
+                : factor;
     }
 
     /**
@@ -807,10 +828,12 @@ public final class ParticleIntegrator {
         float vx = velocity.x;
         float vy = velocity.y;
         float vz = velocity.z;
-        float inverseMass = inverseMass(particle.getMass());
+        float massKg = particle.getMass();
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
+        }
         // forces from the state at the start of the step: σ for the folded ones ...
-        float speed = speedDependent ? speed(vx, vy, vz) : 0f;
-        float factor = 1f - stepSeconds * foldedDragRate(speed, inverseMass);
+        float factor = speedDependent ? foldedFactor(speed(vx, vy, vz)) : stepFactor;
         float ax = gravityX;
         float ay = gravityY;
         float az = gravityZ;
@@ -868,19 +891,19 @@ public final class ParticleIntegrator {
      * @return the index of the first non-finite value, or -1
      */
     private int stepPackedBySpeed(float[] positions, float[] velocities, int count,
-            float inverseMass, float stepSeconds) {
-        float stepGravityX = stepSeconds * gravityX;
-        float stepGravityY = stepSeconds * gravityY;
-        float stepGravityZ = stepSeconds * gravityZ;
+            float stepSeconds) {
+        float gx = stepGravityX;
+        float gy = stepGravityY;
+        float gz = stepGravityZ;
         float check = 0f;
         for (int x = 0, y = count, z = 2 * count; x < count; ++x, ++y, ++z) {
             float vx = velocities[x];
             float vy = velocities[y];
             float vz = velocities[z];
-            float factor = 1f - stepSeconds * foldedDragRate(speed(vx, vy, vz), inverseMass);
-            vx = vx * factor + stepGravityX;
-            vy = vy * factor + stepGravityY;
-            vz = vz * factor + stepGravityZ;
+            float factor = foldedFactor(speed(vx, vy, vz));
+            vx = vx * factor + gx;
+            vy = vy * factor + gy;
+            vz = vz * factor + gz;
             velocities[x] = vx;
             velocities[y] = vy;
             velocities[z] = vz;
