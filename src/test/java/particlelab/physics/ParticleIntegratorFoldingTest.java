@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -133,6 +134,30 @@ class ParticleIntegratorFoldingTest {
     @EnumSource(Mix.class)
     void batchIsBitForBitThePerParticleStep(Mix mix) {
         assertBatchMatchesObjects(new ParticleIntegrator(mix.forces()), 1.7f);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void batchOfSeveralBlocksIsBitForBitAndNamesTheFirstBadParticle(Mix mix) {
+        // 2500 particles: the batch works in blocks of 1024, the last one partial
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        assertBatchMatchesObjects(integrator, 0.8f, 2500, 20);
+        for (int bad : new int[] {0, 1023, 1024, 2100, 2499}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                float[] positions = new float[3 * 2500];
+                float[] velocities = new float[3 * 2500];
+                Arrays.fill(velocities, 3f);
+                velocities[axis * 2500 + bad] = axis == 1 ? Float.POSITIVE_INFINITY : Float.NaN;
+                NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
+                        () -> integrator.stepPacked(positions, velocities, 2500, 1f, H));
+                assertTrue(thrown.getMessage().contains("packed particle " + bad + " of 2500"),
+                        thrown.getMessage());
+                // every particle was stepped: the last one moved
+                assertEquals(Float.floatToIntBits(positions[2 * 2500 + 2499]),
+                        Float.floatToIntBits(bad == 2499 && axis == 2 ? Float.NaN
+                                : H * velocities[2 * 2500 + 2499]));
+            }
+        }
     }
 
     @Test
@@ -444,20 +469,26 @@ class ParticleIntegratorFoldingTest {
 
     /** Step objects and the packed copy side by side for 300 steps: the same floats. */
     private static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass) {
-        Particle[] particles = new Particle[COUNT];
-        float[] positions = new float[3 * COUNT];
-        float[] velocities = new float[3 * COUNT];
-        for (int i = 0; i < COUNT; ++i) {
+        assertBatchMatchesObjects(integrator, mass, COUNT, 300);
+    }
+
+    /** Step objects and the packed copy side by side: the same floats. */
+    private static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass,
+            int count, int steps) {
+        Particle[] particles = new Particle[count];
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        for (int i = 0; i < count; ++i) {
             // include a particle at rest: thrust gives it no heading
             Vector3f velocity = i == 0 ? new Vector3f()
                     : new Vector3f(20f + i % 5, 30f - i % 3, i % 4 - 2f);
             particles[i] = new Particle(new Vector3f(i, 0f, -i), velocity, mass);
             for (int axis = 0; axis < 3; ++axis) {
-                positions[axis * COUNT + i] = particles[i].position.get(axis);
-                velocities[axis * COUNT + i] = velocity.get(axis);
+                positions[axis * count + i] = particles[i].position.get(axis);
+                velocities[axis * count + i] = velocity.get(axis);
             }
         }
-        for (int n = 0; n < 300; ++n) {
+        for (int n = 0; n < steps; ++n) {
             if (n % 2 == 0) {
                 integrator.step(particles, H);
             } else {
@@ -465,14 +496,14 @@ class ParticleIntegratorFoldingTest {
                     integrator.step(particle, H);
                 }
             }
-            integrator.stepPacked(positions, velocities, COUNT, mass, H);
+            integrator.stepPacked(positions, velocities, count, mass, H);
         }
-        for (int i = 0; i < COUNT; ++i) {
+        for (int i = 0; i < count; ++i) {
             for (int axis = 0; axis < 3; ++axis) {
                 assertEquals(Float.floatToIntBits(particles[i].position.get(axis)),
-                        Float.floatToIntBits(positions[axis * COUNT + i]), "P of " + i);
+                        Float.floatToIntBits(positions[axis * count + i]), "P of " + i);
                 assertEquals(Float.floatToIntBits(particles[i].velocity.get(axis)),
-                        Float.floatToIntBits(velocities[axis * COUNT + i]), "V of " + i);
+                        Float.floatToIntBits(velocities[axis * count + i]), "V of " + i);
             }
         }
     }
