@@ -912,8 +912,9 @@ public final class ParticleIntegrator {
 
     /**
      * The packed step when σ depends on the speed (quadratic drag, thrust): one pass over the
-     * particles, the arithmetic of {@link #computeFolded}, and the finiteness check on the way
-     * ({@code x − x} is 0 for a finite x and NaN otherwise, and a NaN stays).
+     * particles, the arithmetic of {@link #computeFolded}, and the finiteness check on the way:
+     * the sum of the positions is finite only if every position is (a sum that overflows
+     * although every position is finite only costs a search).
      *
      * @return the index of the first non-finite value, or -1
      */
@@ -940,9 +941,9 @@ public final class ParticleIntegrator {
             positions[x] = px;
             positions[y] = py;
             positions[z] = pz;
-            check += (px - px) + (py - py) + (pz - pz);
+            check += (px + py) + pz;
         }
-        return check == 0f ? -1 : searchNonFinite(positions, 3 * count);
+        return Float.isFinite(check) ? -1 : searchNonFinite(positions, 3 * count);
     }
 
     /**

@@ -160,6 +160,22 @@ class ParticleIntegratorFoldingTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void batchWhosePositionsSumBeyondTheFloatRangeIsStillStepped(Mix mix) {
+        // every position is finite, their sum (the cheap check) overflows: no refusal
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        int count = 40;
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        Arrays.fill(positions, 3e38f);
+        Arrays.fill(velocities, 1f);
+        integrator.stepPacked(positions, velocities, count, 1f, H);
+        for (float position : positions) {
+            assertEquals(3e38f, position, 0f);
+        }
+    }
+
     @Test
     void batchWithASpringOrAStudentForceIsBitForBitThePerParticleStep() {
         assertBatchMatchesObjects(new ParticleIntegrator(new Gravity(), new LinearDrag(0.4f),
