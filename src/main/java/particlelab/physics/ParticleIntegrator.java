@@ -110,6 +110,8 @@ public final class ParticleIntegrator {
      * infinite: at every speed; -1: none) ...
      */
     private float stableSpeedSquared = -1f;
+    /** ... or true if without speed-dependent forces every particle is stable ... */
+    private boolean stableAtAnySpeed;
     /** ... for this step (s; NaN: not known since the last fold) ... */
     private float regimeStep = Float.NaN;
     /** ... and this mass (kg). */
@@ -414,17 +416,28 @@ public final class ParticleIntegrator {
     public StepRegime regime(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
         foldIfChanged();
+        // This runs for every particle every step: what depends only on the step, the mass
+        // and the folded forces is remembered (never with other forces), and the usual answer
+        // is a few comparisons, kept here so that the JIT can inline them into the demo loop.
+        if (stepSeconds == regimeStep && particle.getMass() == regimeMass
+                && (stableAtAnySpeed
+                        || particle.velocity.lengthSquared() <= stableSpeedSquared)) {
+            return StepRegime.STABLE;
+        }
+        return regimeOtherwise(particle, stepSeconds);
+    }
+
+    /** {@link #regime} where the remembered bound does not answer. */
+    private StepRegime regimeOtherwise(Particle particle, float stepSeconds) {
         if (others.length > 0) {
             return regimeByLimits(particle, stepSeconds);
         }
-        // This runs for every particle every step: what depends only on the step, the mass
-        // and the folded forces is remembered, and the usual answer is one comparison of |V|².
         float massKg = particle.getMass();
         if (stepSeconds != regimeStep || massKg != regimeMass) {
             rememberRegime(stepSeconds, massKg);
         }
         float speedSquared = particle.velocity.lengthSquared();
-        if (speedSquared <= stableSpeedSquared) {
+        if (stableAtAnySpeed || speedSquared <= stableSpeedSquared) {
             return StepRegime.STABLE;
         }
         if (speedDependent) {
@@ -551,9 +564,9 @@ public final class ParticleIntegrator {
         movingScratch.setMass(massKg);
         movingRegime = speedDependent ? StepRegime.STABLE
                 : regimeByProducts(movingScratch, stepSeconds, 1f);
+        stableAtAnySpeed = !speedDependent && movingRegime == StepRegime.STABLE;
         if (!speedDependent) {
-            stableSpeedSquared = movingRegime == StepRegime.STABLE
-                    ? Float.POSITIVE_INFINITY : -1f;
+            stableSpeedSquared = -1f;
         } else {
             double stepPerMass = (double) stepSeconds / massKg;
             double halfLimit = 0.5 / stepPerMass - linearSum;
