@@ -101,7 +101,7 @@ public final class ParticleIntegrator {
     /** ... and this mass (kg). */
     private float stepCacheMass = Float.NaN;
     /**
-     * Remembered for {@link #regime}, for {@link #regimeStep} and {@link #regimeMass}: the
+     * Remembered for {@link #regime} with the numbers above, for the same step and mass: the
      * regime of a moving particle without speed-dependent forces ...
      */
     private StepRegime movingRegime = StepRegime.STABLE;
@@ -110,12 +110,8 @@ public final class ParticleIntegrator {
      * infinite: at every speed; -1: none) ...
      */
     private float stableSpeedSquared = -1f;
-    /** ... or true if without speed-dependent forces every particle is stable ... */
+    /** ... or true if without speed-dependent forces every particle is stable. */
     private boolean stableAtAnySpeed;
-    /** ... for this step (s; NaN: not known since the last fold) ... */
-    private float regimeStep = Float.NaN;
-    /** ... and this mass (kg). */
-    private float regimeMass = Float.NaN;
     /** Scratch: g of the other forces (m/s²). */
     private final Vector3f otherField = new Vector3f();
     /** Scratch: F of the other forces (N). */
@@ -418,8 +414,9 @@ public final class ParticleIntegrator {
         foldIfChanged();
         // This runs for every particle every step: what depends only on the step, the mass
         // and the folded forces is remembered (never with other forces), and the usual answer
-        // is a few comparisons, kept here so that the JIT can inline them into the demo loop.
-        if (stepSeconds == regimeStep && particle.getMass() == regimeMass
+        // is a few comparisons, kept here so that the JIT can inline them into the demo loop,
+        // the same ones the step that follows makes.
+        if (stepSeconds == stepCacheSeconds && particle.getMass() == stepCacheMass
                 && (stableAtAnySpeed
                         || particle.velocity.lengthSquared() <= stableSpeedSquared)) {
             return StepRegime.STABLE;
@@ -433,8 +430,8 @@ public final class ParticleIntegrator {
             return regimeByLimits(particle, stepSeconds);
         }
         float massKg = particle.getMass();
-        if (stepSeconds != regimeStep || massKg != regimeMass) {
-            rememberRegime(stepSeconds, massKg);
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
         }
         float speedSquared = particle.velocity.lengthSquared();
         if (stableAtAnySpeed || speedSquared <= stableSpeedSquared) {
@@ -561,6 +558,12 @@ public final class ParticleIntegrator {
      * h·k/(m·{@link Thrust#MIN_SPEED}) is finite, so h·σ is).
      */
     private void rememberRegime(float stepSeconds, float massKg) {
+        if (others.length > 0) {
+            // other forces are asked every time
+            stableAtAnySpeed = false;
+            stableSpeedSquared = -1f;
+            return;
+        }
         movingScratch.setMass(massKg);
         movingRegime = speedDependent ? StepRegime.STABLE
                 : regimeByProducts(movingScratch, stepSeconds, 1f);
@@ -580,8 +583,6 @@ public final class ParticleIntegrator {
                 stableSpeedSquared = (float) Math.min(speed * speed, Float.MAX_VALUE);
             }
         }
-        regimeStep = stepSeconds;
-        regimeMass = massKg;
     }
 
     /**
@@ -645,7 +646,6 @@ public final class ParticleIntegrator {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
-        regimeStep = Float.NaN;
         stepCacheSeconds = Float.NaN;
         foldedChanges = changeCount();
     }
@@ -763,7 +763,8 @@ public final class ParticleIntegrator {
 
     /**
      * Remember for {@link #stepFolded}, {@link #computeFolded} and the batch what depends only
-     * on h, the mass and the folded forces, so all of them compute the same floats.
+     * on h, the mass and the folded forces, so all of them compute the same floats, and for
+     * {@link #regime} its bound ({@link #rememberRegime}).
      */
     private void rememberStep(float stepSeconds, float massKg) {
         stepInverseMass = inverseMass(massKg);
@@ -773,6 +774,7 @@ public final class ParticleIntegrator {
         stepFactor = 1f - stepSeconds * (linearSum * stepInverseMass);
         stepQuadratic = stepSeconds * (quadraticSum * stepInverseMass);
         stepThrust = stepSeconds * (thrustSum * stepInverseMass);
+        rememberRegime(stepSeconds, massKg);
         stepCacheSeconds = stepSeconds;
         stepCacheMass = massKg;
     }
