@@ -26,9 +26,11 @@ import com.jme3.math.Vector3f;
  * </pre>
  * Other forces (a {@link Spring}, a student's own {@link Force}) are asked through the
  * interface, only in scenes that have one, and add their acceleration to g. The folding is
- * redone at the next step whenever a setter changed a folded force. The rearranged formula
- * rounds differently from evaluating {@code g + F/m} force by force ({@link #acceleration}):
- * per step and component the two velocities differ by at most 20 roundings (2^-24 each) of
+ * redone at the next step whenever a setter changed a folded force, and h and 1/m are folded
+ * in too, per step and mass: {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}. The
+ * rearranged formula rounds differently from evaluating {@code g + F/m} force by force
+ * ({@link #acceleration}): per step and component the two velocities differ by at most 24
+ * roundings (2^-24 each) of
  * {@code |V|·(1 + h·σ⁺) + h·|g| + |V'|}, σ⁺ the drag rate with every term positive (about 3
  * measured, 1–2 ulp of the new velocity); gravity alone gives identical numbers.
  *
@@ -46,6 +48,11 @@ public final class ParticleIntegrator {
      * with the quotients: float roundings differ by about 1e-7, so 1e-4 leaves no doubt.
      */
     private static final float LIMIT_MARGIN = 1e-4f;
+    /**
+     * Particles per block of the batch step with gravity and linear drag: their positions and
+     * velocities (24 KB) stay in a core's first-level cache until their check has read them.
+     */
+    private static final int BATCH_BLOCK = 1024;
 
     private final Force[] forces;
     private final Gravity[] gravities;
@@ -74,12 +81,37 @@ public final class ParticleIntegrator {
     private float cachedMass = Float.NaN;
     /** 1/{@link #cachedMass} (1/kg). */
     private float cachedInverseMass = Float.NaN;
-    /** The regime of a moving particle without speed-dependent forces, for ... */
-    private StepRegime movingRegime = StepRegime.STABLE;
-    /** ... this step (s; NaN: not known since the last fold) ... */
-    private float movingRegimeStep = Float.NaN;
+    /**
+     * Remembered for {@link #stepFolded}, for {@link #stepCacheSeconds} and
+     * {@link #stepCacheMass}: h·g per axis (m/s) ...
+     */
+    private float stepGravityX;
+    private float stepGravityY;
+    private float stepGravityZ;
+    /** ... 1/m (1/kg) ... */
+    private float stepInverseMass;
+    /** ... the velocity factor 1 − h·b/m of linear drag ... */
+    private float stepFactor;
+    /** ... h·c/m of quadratic drag (1/m) ... */
+    private float stepQuadratic;
+    /** ... h·k/m of thrust (m/s) ... */
+    private float stepThrust;
+    /** ... for this step (s; NaN: not known since the last fold) ... */
+    private float stepCacheSeconds = Float.NaN;
     /** ... and this mass (kg). */
-    private float movingRegimeMass = Float.NaN;
+    private float stepCacheMass = Float.NaN;
+    /**
+     * Remembered for {@link #regime} with the numbers above, for the same step and mass: the
+     * regime of a moving particle without speed-dependent forces ...
+     */
+    private StepRegime movingRegime = StepRegime.STABLE;
+    /**
+     * ... and the |V|² up to which every particle is {@link StepRegime#STABLE} (m²/s²;
+     * infinite: at every speed; -1: none) ...
+     */
+    private float stableSpeedSquared = -1f;
+    /** ... or true if without speed-dependent forces every particle is stable. */
+    private boolean stableAtAnySpeed;
     /** Scratch: g of the other forces (m/s²). */
     private final Vector3f otherField = new Vector3f();
     /** Scratch: F of the other forces (N). */
@@ -214,9 +246,10 @@ public final class ParticleIntegrator {
      *
      * <p>Gravity and linear drag give every particle the same velocity factor
      * {@code 1 − h·b/m}, so the step is one simple pass per axis over adjacent floats that the
-     * JIT turns into vector instructions. Quadratic drag and thrust depend on each particle's
-     * speed: one pass over the particles. Other forces ({@link Spring}, a student's own) are
-     * asked through the interface, one particle at a time through a scratch particle.
+     * JIT turns into vector instructions, a block of particles at a time. Quadratic drag and
+     * thrust depend on each particle's speed: one pass over the particles. Other forces
+     * ({@link Spring}, a student's own) are asked through the interface, one particle at a
+     * time through a scratch particle.
      * Allocates nothing.
      *
      * <p>Like {@link #step(Particle, float)} it refuses to spread NaN: it checks that every
@@ -247,24 +280,20 @@ public final class ParticleIntegrator {
             return;
         }
         foldIfChanged();
-        float inverseMass = inverseMass(massKg);
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
+        }
         float factor = Float.NaN;
         int bad;
-        if (others.length > 0 || !Float.isFinite(stepSeconds * foldedDragRate(0f, inverseMass))) {
+        if (others.length > 0 || !Float.isFinite(stepFactor)) {
             // other forces, or h·b/m beyond the float range, which the recipe may survive
             bad = stepPackedOneByOne(positions, velocities, count, massKg, stepSeconds);
         } else if (speedDependent) {
-            bad = stepPackedBySpeed(positions, velocities, count, inverseMass, stepSeconds);
+            bad = stepPackedBySpeed(positions, velocities, count, stepSeconds);
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
-            factor = 1f - stepSeconds * foldedDragRate(0f, inverseMass);
-            stepAxis(positions, velocities, 0, count, factor, stepSeconds * gravityX,
-                    stepSeconds);
-            stepAxis(positions, velocities, count, count, factor, stepSeconds * gravityY,
-                    stepSeconds);
-            stepAxis(positions, velocities, 2 * count, count, factor, stepSeconds * gravityZ,
-                    stepSeconds);
-            bad = firstNonFinite(positions, 3 * count);
+            factor = stepFactor;
+            bad = stepPackedByAxes(positions, velocities, count, stepSeconds);
         }
         if (bad >= 0) {
             throw packedFailure(positions, velocities, count, bad % count, stepSeconds,
@@ -383,26 +412,37 @@ public final class ParticleIntegrator {
     public StepRegime regime(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
         foldIfChanged();
+        // This runs for every particle every step: what depends only on the step, the mass
+        // and the folded forces is remembered (never with other forces), and the usual answer
+        // is a few comparisons, kept here so that the JIT can inline them into the demo loop,
+        // the same ones the step that follows makes.
+        if (stepSeconds == stepCacheSeconds && particle.getMass() == stepCacheMass
+                && (stableAtAnySpeed
+                        || particle.velocity.lengthSquared() <= stableSpeedSquared)) {
+            return StepRegime.STABLE;
+        }
+        return regimeOtherwise(particle, stepSeconds);
+    }
+
+    /** {@link #regime} where the remembered bound does not answer. */
+    private StepRegime regimeOtherwise(Particle particle, float stepSeconds) {
         if (others.length > 0) {
             return regimeByLimits(particle, stepSeconds);
         }
-        if (speedDependent) {
-            return regimeByProducts(particle, stepSeconds, particle.velocity.lengthSquared());
-        }
-        // Gravity and linear drag: σ = λ = b/m for every moving particle, so one answer per
-        // step and mass, remembered (this runs for every particle every step). At rest σ = 0,
-        // which can only make it milder: a stable step is stable at rest too.
         float massKg = particle.getMass();
-        if (stepSeconds != movingRegimeStep || massKg != movingRegimeMass) {
-            movingScratch.setMass(massKg);
-            movingRegime = regimeByProducts(movingScratch, stepSeconds, 1f);
-            movingRegimeStep = stepSeconds;
-            movingRegimeMass = massKg;
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
+        }
+        float speedSquared = particle.velocity.lengthSquared();
+        if (stableAtAnySpeed || speedSquared <= stableSpeedSquared) {
+            return StepRegime.STABLE;
+        }
+        if (speedDependent) {
+            return regimeByProducts(particle, stepSeconds, speedSquared);
         }
         if (movingRegime == StepRegime.STABLE) {
             return StepRegime.STABLE;
         }
-        float speedSquared = particle.velocity.lengthSquared();
         return speedSquared == 0f ? regimeByProducts(particle, stepSeconds, 0f) : movingRegime;
     }
 
@@ -506,6 +546,46 @@ public final class ParticleIntegrator {
     }
 
     /**
+     * Remember for {@link #regime} what depends only on the step, the mass and the folded
+     * forces. Gravity and linear drag: σ = λ = b/m for every moving particle, so one regime
+     * for all of them; at rest σ = 0, which can only make it milder, so a stable step is
+     * stable at every speed. Quadratic drag and thrust: λ = (b + 2c·|V|)/m grows with the
+     * speed, and σ = (b + c·|V| − k/|V|)/m never exceeds it (c, k &ge; 0), so every particle
+     * with {@code h·λ ≤ 1/2} is stable: that is {@code |V| ≤ (m/(2h) − b)/(2c)}. The float
+     * arithmetic of {@link #regimeByProducts} rounds h·λ and h·σ by about ten roundings
+     * (10·2^-24 relatively, and monotonically in |V|), far too little to take a value of 1/2
+     * near the limit 1, so below that speed it answers {@link StepRegime#STABLE} too (provided
+     * h·k/(m·{@link Thrust#MIN_SPEED}) is finite, so h·σ is).
+     */
+    private void rememberRegime(float stepSeconds, float massKg) {
+        if (others.length > 0) {
+            // other forces are asked every time
+            stableAtAnySpeed = false;
+            stableSpeedSquared = -1f;
+            return;
+        }
+        movingScratch.setMass(massKg);
+        movingRegime = speedDependent ? StepRegime.STABLE
+                : regimeByProducts(movingScratch, stepSeconds, 1f);
+        stableAtAnySpeed = !speedDependent && movingRegime == StepRegime.STABLE;
+        if (!speedDependent) {
+            stableSpeedSquared = -1f;
+        } else {
+            double stepPerMass = (double) stepSeconds / massKg;
+            double halfLimit = 0.5 / stepPerMass - linearSum;
+            double thrustH = stepPerMass * thrustSum / Thrust.MIN_SPEED;
+            if (!(halfLimit >= 0.0) || !(thrustH < Float.MAX_VALUE)) {
+                stableSpeedSquared = -1f;
+            } else if (quadraticSum == 0f) {
+                stableSpeedSquared = Float.POSITIVE_INFINITY;
+            } else {
+                double speed = halfLimit / (2.0 * quadraticSum);
+                stableSpeedSquared = (float) Math.min(speed * speed, Float.MAX_VALUE);
+            }
+        }
+    }
+
+    /**
      * True if a product h·rate is finite and clear of the limits 1 and 2 by far more than
      * the few roundings in which it and the quotients 1/rate, 2/rate can differ.
      */
@@ -566,7 +646,7 @@ public final class ParticleIntegrator {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
-        movingRegimeStep = Float.NaN;
+        stepCacheSeconds = Float.NaN;
         foldedChanges = changeCount();
     }
 
@@ -651,31 +731,67 @@ public final class ParticleIntegrator {
     private void stepFolded(Particle particle, float stepSeconds) {
         if (others.length == 0) {
             // the usual scene: the arithmetic of computeFolded in locals, committed straight
-            // from them (a round trip through scratch vectors would lengthen every step)
+            // from them (a round trip through scratch vectors would lengthen every step), with
+            // what depends only on h, m and the forces remembered from the step before
+            float massKg = particle.getMass();
+            if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+                rememberStep(stepSeconds, massKg);
+            }
             Vector3f velocity = particle.velocity;
             Vector3f position = particle.position;
             float vx = velocity.x;
             float vy = velocity.y;
             float vz = velocity.z;
-            float speed = speedDependent ? speed(vx, vy, vz) : 0f;
-            float factor = 1f - stepSeconds
-                    * foldedDragRate(speed, inverseMass(particle.getMass()));
-            vx = vx * factor + stepSeconds * gravityX;
-            vy = vy * factor + stepSeconds * gravityY;
-            vz = vz * factor + stepSeconds * gravityZ;
+            float factor = speedDependent ? foldedFactor(speed(vx, vy, vz)) : stepFactor;
+            vx = vx * factor + stepGravityX;
+            vy = vy * factor + stepGravityY;
+            vz = vz * factor + stepGravityZ;
             float px = position.x + stepSeconds * vx;
             float py = position.y + stepSeconds * vy;
             float pz = position.z + stepSeconds * vz;
-            // a finite sum means six finite terms
-            if (Float.isFinite(vx + vy + vz + px + py + pz)
-                    || Float.isFinite(vx) && Float.isFinite(vy) && Float.isFinite(vz)
-                    && Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
+            // P' = P + h·V' with h > 0 is finite only if V' is; a finite sum means three
+            // finite terms
+            if (Float.isFinite(px + py + pz)
+                    || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
                 velocity.set(vx, vy, vz);
                 position.set(px, py, pz);
                 return;
             }
         }
         stepThroughScratch(particle, stepSeconds);
+    }
+
+    /**
+     * Remember for {@link #stepFolded}, {@link #computeFolded} and the batch what depends only
+     * on h, the mass and the folded forces, so all of them compute the same floats, and for
+     * {@link #regime} its bound ({@link #rememberRegime}).
+     */
+    private void rememberStep(float stepSeconds, float massKg) {
+        stepInverseMass = inverseMass(massKg);
+        stepGravityX = stepSeconds * gravityX;
+        stepGravityY = stepSeconds * gravityY;
+        stepGravityZ = stepSeconds * gravityZ;
+        stepFactor = 1f - stepSeconds * (linearSum * stepInverseMass);
+        stepQuadratic = stepSeconds * (quadraticSum * stepInverseMass);
+        stepThrust = stepSeconds * (thrustSum * stepInverseMass);
+        rememberRegime(stepSeconds, massKg);
+        stepCacheSeconds = stepSeconds;
+        stepCacheMass = massKg;
+    }
+
+    /**
+     * The folded velocity factor {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}
+     * for the step and mass last remembered ({@link #rememberStep}): with h and m folded in,
+     * the speed reaches the factor through one multiplication and one division, as in a
+     * hand-written loop (the thrust term only from {@link Thrust#MIN_SPEED} on).
+     *
+     * @param speed |V| (in m/s; 0 if neither c nor k matters)
+     */
+    private float foldedFactor(float speed) {
+        // c = 0 gives no term even when |V|² overflowed to an infinite speed (0·∞ is NaN)
+        float factor = quadraticSum == 0f ? stepFactor : stepFactor - stepQuadratic * speed;
+        return thrustSum != 0f && speed >= Thrust.MIN_SPEED ? factor + stepThrust / speed
+                : factor;
     }
 
     /**
@@ -729,10 +845,12 @@ public final class ParticleIntegrator {
         float vx = velocity.x;
         float vy = velocity.y;
         float vz = velocity.z;
-        float inverseMass = inverseMass(particle.getMass());
+        float massKg = particle.getMass();
+        if (stepSeconds != stepCacheSeconds || massKg != stepCacheMass) {
+            rememberStep(stepSeconds, massKg);
+        }
         // forces from the state at the start of the step: σ for the folded ones ...
-        float speed = speedDependent ? speed(vx, vy, vz) : 0f;
-        float factor = 1f - stepSeconds * foldedDragRate(speed, inverseMass);
+        float factor = speedDependent ? foldedFactor(speed(vx, vy, vz)) : stepFactor;
         float ax = gravityX;
         float ay = gravityY;
         float az = gravityZ;
@@ -783,26 +901,52 @@ public final class ParticleIntegrator {
     }
 
     /**
+     * The packed step with gravity and linear drag, {@value #BATCH_BLOCK} particles at a time:
+     * each axis of the block in one pass, then the block's positions checked while they are
+     * still in the cache (a position is finite only if the velocity that moved it is).
+     *
+     * @return the index of the first non-finite value, or -1
+     */
+    private int stepPackedByAxes(float[] positions, float[] velocities, int count,
+            float stepSeconds) {
+        float factor = stepFactor;
+        boolean finite = true;
+        for (int start = 0; start < count; start += BATCH_BLOCK) {
+            int n = Math.min(BATCH_BLOCK, count - start);
+            int y = count + start;
+            int z = 2 * count + start;
+            stepAxis(positions, velocities, start, n, factor, stepGravityX, stepSeconds);
+            stepAxis(positions, velocities, y, n, factor, stepGravityY, stepSeconds);
+            stepAxis(positions, velocities, z, n, factor, stepGravityZ, stepSeconds);
+            // & rather than &&: every block is checked until one fails, no branch per axis
+            finite &= isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
+                    & isSumFinite(positions, z, n);
+        }
+        return finite ? -1 : searchNonFinite(positions, 3 * count);
+    }
+
+    /**
      * The packed step when σ depends on the speed (quadratic drag, thrust): one pass over the
-     * particles, the arithmetic of {@link #computeFolded}, and the finiteness check on the way
-     * ({@code x − x} is 0 for a finite x and NaN otherwise, and a NaN stays).
+     * particles, the arithmetic of {@link #computeFolded}, and the finiteness check on the way:
+     * the sum of the positions is finite only if every position is (a sum that overflows
+     * although every position is finite only costs a search).
      *
      * @return the index of the first non-finite value, or -1
      */
     private int stepPackedBySpeed(float[] positions, float[] velocities, int count,
-            float inverseMass, float stepSeconds) {
-        float stepGravityX = stepSeconds * gravityX;
-        float stepGravityY = stepSeconds * gravityY;
-        float stepGravityZ = stepSeconds * gravityZ;
+            float stepSeconds) {
+        float gx = stepGravityX;
+        float gy = stepGravityY;
+        float gz = stepGravityZ;
         float check = 0f;
         for (int x = 0, y = count, z = 2 * count; x < count; ++x, ++y, ++z) {
             float vx = velocities[x];
             float vy = velocities[y];
             float vz = velocities[z];
-            float factor = 1f - stepSeconds * foldedDragRate(speed(vx, vy, vz), inverseMass);
-            vx = vx * factor + stepGravityX;
-            vy = vy * factor + stepGravityY;
-            vz = vz * factor + stepGravityZ;
+            float factor = foldedFactor(speed(vx, vy, vz));
+            vx = vx * factor + gx;
+            vy = vy * factor + gy;
+            vz = vz * factor + gz;
             velocities[x] = vx;
             velocities[y] = vy;
             velocities[z] = vz;
@@ -812,9 +956,9 @@ public final class ParticleIntegrator {
             positions[x] = px;
             positions[y] = py;
             positions[z] = pz;
-            check += (px - px) + (py - py) + (pz - pz);
+            check += (px + py) + pz;
         }
-        return check == 0f ? -1 : searchNonFinite(positions, 3 * count);
+        return Float.isFinite(check) ? -1 : searchNonFinite(positions, 3 * count);
     }
 
     /**
@@ -848,33 +992,36 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Find the first non-finite value: one pass summing the values, sixteen at a time as a
-     * tree into four independent sums (short chains keep the additions in flight), then a
-     * search only if the total is not finite. A finite total means every value is finite (an
-     * infinity or NaN makes the sum infinite or NaN); a total that overflows although every
-     * value is finite costs only the search.
+     * Tell whether values might all be finite, cheaply: one pass summing them, sixteen at a
+     * time as a tree into four independent sums (short chains keep the additions in flight).
+     * A finite total means every value is finite (an infinity or NaN makes the sum infinite
+     * or NaN); a total that overflows although every value is finite only costs a search.
      *
-     * @return its index, or -1 if every value is finite
+     * @return true if every value of values[start .. start + length) is finite; false if one
+     *     is not, or perhaps if their sum overflows
      */
-    private static int firstNonFinite(float[] values, int length) {
+    private static boolean isSumFinite(float[] values, int start, int length) {
         float sum0 = 0f;
         float sum1 = 0f;
         float sum2 = 0f;
         float sum3 = 0f;
-        int i = 0;
-        for (; i + 16 <= length; i += 16) {
+        int end = start + length;
+        int i = start;
+        for (; i + 16 <= end; i += 16) {
             sum0 += (values[i] + values[i + 1]) + (values[i + 2] + values[i + 3]);
             sum1 += (values[i + 4] + values[i + 5]) + (values[i + 6] + values[i + 7]);
             sum2 += (values[i + 8] + values[i + 9]) + (values[i + 10] + values[i + 11]);
             sum3 += (values[i + 12] + values[i + 13]) + (values[i + 14] + values[i + 15]);
         }
-        for (; i < length; ++i) {
+        for (; i < end; ++i) {
             sum0 += values[i];
         }
-        if (Float.isFinite((sum0 + sum1) + (sum2 + sum3))) {
-            return -1;
-        }
-        return searchNonFinite(values, length);
+        return Float.isFinite((sum0 + sum1) + (sum2 + sum3));
+    }
+
+    /** The index of the first non-finite value, or -1 if a full check finds none. */
+    private static int firstNonFinite(float[] values, int length) {
+        return isSumFinite(values, 0, length) ? -1 : searchNonFinite(values, length);
     }
 
     /** The index of the first non-finite value, or -1. */

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -26,12 +27,13 @@ class ParticleIntegratorFoldingTest {
     private static final double U = Math.ulp(1f) / 2.0;
     /**
      * Roundings per path in one velocity update, each erring by at most U of a term no larger
-     * than the scale S of {@link #assertFoldedAgrees}: the folded path rounds 1/m, c·|V| (and
-     * the square root), k/|V|, the sum, ·(1/m), h·σ, 1 − h·σ, V·r, h·g and the final sum (at
-     * most 11); the general path 1/m, c·|V|, the product by V, ·(1/m), + g, h·a and V + h·a
-     * (at most 8 with the square root). Both errors add: 19, rounded up to 20.
+     * than the scale S of {@link #assertFoldedAgrees}: the folded path rounds 1/m, b/m, h·b/m,
+     * 1 − h·b/m, c/m, h·c/m, its product by |V| (and the square root), the difference, k/m,
+     * h·k/m, its quotient by |V|, the sum, V·r, h·g and the final sum (at most 16); the general
+     * path 1/m, c·|V|, the product by V, ·(1/m), + g, h·a and V + h·a (at most 8 with the
+     * square root). Both errors add: 24.
      */
-    private static final double ROUNDINGS = 20.0;
+    private static final double ROUNDINGS = 24.0;
     private static final float H = 1f / 60f;
     private static final int COUNT = 41;
 
@@ -122,8 +124,8 @@ class ParticleIntegratorFoldingTest {
             general.step(two, H);
         }
         // 600 steps of differences of a few ulp each; the step is stable (σh < 0.1 here) so
-        // old differences do not grow: at most 600·(20·U) relative, about 7e-4, of speeds and
-        // distances up to about 100, plus that much again for the spare: 1e-3 m and m/s.
+        // old differences do not grow: at most 600·(24·U) relative, about 9e-4, of speeds and
+        // distances up to about 100: 1e-3 m and m/s.
         assertVectorNear(two.position, one.position, 1e-3f);
         assertVectorNear(two.velocity, one.velocity, 1e-3f);
     }
@@ -132,6 +134,46 @@ class ParticleIntegratorFoldingTest {
     @EnumSource(Mix.class)
     void batchIsBitForBitThePerParticleStep(Mix mix) {
         assertBatchMatchesObjects(new ParticleIntegrator(mix.forces()), 1.7f);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void batchOfSeveralBlocksIsBitForBitAndNamesTheFirstBadParticle(Mix mix) {
+        // 2500 particles: the batch works in blocks of 1024, the last one partial
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        assertBatchMatchesObjects(integrator, 0.8f, 2500, 20);
+        for (int bad : new int[] {0, 1023, 1024, 2100, 2499}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                float[] positions = new float[3 * 2500];
+                float[] velocities = new float[3 * 2500];
+                Arrays.fill(velocities, 3f);
+                velocities[axis * 2500 + bad] = axis == 1 ? Float.POSITIVE_INFINITY : Float.NaN;
+                NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
+                        () -> integrator.stepPacked(positions, velocities, 2500, 1f, H));
+                assertTrue(thrown.getMessage().contains("packed particle " + bad + " of 2500"),
+                        thrown.getMessage());
+                // every particle was stepped: the last one moved
+                assertEquals(Float.floatToIntBits(positions[2 * 2500 + 2499]),
+                        Float.floatToIntBits(bad == 2499 && axis == 2 ? Float.NaN
+                                : H * velocities[2 * 2500 + 2499]));
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void batchWhosePositionsSumBeyondTheFloatRangeIsStillStepped(Mix mix) {
+        // every position is finite, their sum (the cheap check) overflows: no refusal
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        int count = 40;
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        Arrays.fill(positions, 3e38f);
+        Arrays.fill(velocities, 1f);
+        integrator.stepPacked(positions, velocities, count, 1f, H);
+        for (float position : positions) {
+            assertEquals(3e38f, position, 0f);
+        }
     }
 
     @Test
@@ -242,6 +284,46 @@ class ParticleIntegratorFoldingTest {
         assertEquals(StepRegime.OVERSHOOTS, integrator.regime(resting, 1.5f));
         assertEquals(StepRegime.GROWS, integrator.regime(moving, 2.5f));
         assertEquals(StepRegime.UNSTABLE, integrator.regime(resting, 2.5f));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mix.class)
+    void rememberedRegimeIsTheLimitsAnswerAtEverySpeedStepAndSetter(Mix mix) {
+        // regime() answers most particles from a remembered speed bound; the public limits
+        // (σ from dragRate, 2/λ, 1/λ) must give the same regime wherever h·σ and h·λ are
+        // clear of 1 and 2 (closer than 1e-3, roundings of either side could tip it)
+        Force[] forces = mix.forces();
+        ParticleIntegrator integrator = new ParticleIntegrator(forces);
+        Random random = new Random(7);
+        Particle particle = new Particle();
+        int unstable = 0;
+        for (int n = 0; n < 40_000; ++n) {
+            if (n % 1000 == 0) {
+                // a setter mid-run: the remembered bound must follow it
+                setCoefficients(forces, 0.05f + 3f * random.nextFloat());
+            }
+            float mass = n % 3 == 0 ? 1f : 0.2f + 4f * random.nextFloat();
+            float h = n % 2 == 0 ? 0.5f : 8f * random.nextFloat();
+            // 0.1 to 1000 m/s, and some at rest
+            float speed = n % 17 == 0 ? 0f
+                    : (float) Math.pow(10.0, 4.0 * random.nextDouble() - 1.0);
+            particle.setMass(mass);
+            particle.velocity.set(randomVector(random, 1f)).normalizeLocal().multLocal(speed);
+            float sigmaH = h * integrator.dragRate(particle);
+            float lambdaH = h * integrator.dampingRate(particle);
+            if (isNear(sigmaH) || isNear(lambdaH)) {
+                continue;
+            }
+            StepRegime expected = StepRegime.of(h, integrator.dragRate(particle),
+                    integrator.maxStableStep(particle), integrator.maxMonotoneStep(particle));
+            unstable += expected == StepRegime.STABLE ? 0 : 1;
+            assertEquals(expected, integrator.regime(particle, h),
+                    () -> mix + " h=" + h + ", " + particle + ", h*sigma=" + sigmaH
+                            + ", h*lambda=" + lambdaH);
+        }
+        // gravity alone is stable at any step; with drag both sides of the bound were visited
+        assertTrue(mix == Mix.GRAVITY ? unstable == 0 : unstable > 1000 && unstable < 39_000,
+                "unstable cases: " + unstable);
     }
 
     @ParameterizedTest
@@ -403,20 +485,26 @@ class ParticleIntegratorFoldingTest {
 
     /** Step objects and the packed copy side by side for 300 steps: the same floats. */
     private static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass) {
-        Particle[] particles = new Particle[COUNT];
-        float[] positions = new float[3 * COUNT];
-        float[] velocities = new float[3 * COUNT];
-        for (int i = 0; i < COUNT; ++i) {
+        assertBatchMatchesObjects(integrator, mass, COUNT, 300);
+    }
+
+    /** Step objects and the packed copy side by side: the same floats. */
+    private static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass,
+            int count, int steps) {
+        Particle[] particles = new Particle[count];
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        for (int i = 0; i < count; ++i) {
             // include a particle at rest: thrust gives it no heading
             Vector3f velocity = i == 0 ? new Vector3f()
                     : new Vector3f(20f + i % 5, 30f - i % 3, i % 4 - 2f);
             particles[i] = new Particle(new Vector3f(i, 0f, -i), velocity, mass);
             for (int axis = 0; axis < 3; ++axis) {
-                positions[axis * COUNT + i] = particles[i].position.get(axis);
-                velocities[axis * COUNT + i] = velocity.get(axis);
+                positions[axis * count + i] = particles[i].position.get(axis);
+                velocities[axis * count + i] = velocity.get(axis);
             }
         }
-        for (int n = 0; n < 300; ++n) {
+        for (int n = 0; n < steps; ++n) {
             if (n % 2 == 0) {
                 integrator.step(particles, H);
             } else {
@@ -424,16 +512,34 @@ class ParticleIntegratorFoldingTest {
                     integrator.step(particle, H);
                 }
             }
-            integrator.stepPacked(positions, velocities, COUNT, mass, H);
+            integrator.stepPacked(positions, velocities, count, mass, H);
         }
-        for (int i = 0; i < COUNT; ++i) {
+        for (int i = 0; i < count; ++i) {
             for (int axis = 0; axis < 3; ++axis) {
                 assertEquals(Float.floatToIntBits(particles[i].position.get(axis)),
-                        Float.floatToIntBits(positions[axis * COUNT + i]), "P of " + i);
+                        Float.floatToIntBits(positions[axis * count + i]), "P of " + i);
                 assertEquals(Float.floatToIntBits(particles[i].velocity.get(axis)),
-                        Float.floatToIntBits(velocities[axis * COUNT + i]), "V of " + i);
+                        Float.floatToIntBits(velocities[axis * count + i]), "V of " + i);
             }
         }
+    }
+
+    /** Set every drag coefficient and thrust of the forces to the value given. */
+    private static void setCoefficients(Force[] forces, float value) {
+        for (Force force : forces) {
+            if (force instanceof LinearDrag) {
+                ((LinearDrag) force).setCoefficient(value);
+            } else if (force instanceof QuadraticDrag) {
+                ((QuadraticDrag) force).setCoefficient(0.1f * value);
+            } else if (force instanceof Thrust) {
+                ((Thrust) force).setMagnitude(4f * value);
+            }
+        }
+    }
+
+    /** True if h·rate is within 1e-3 (relatively) of the limits 1 or 2. */
+    private static boolean isNear(float stepTimesRate) {
+        return Math.abs(stepTimesRate - 1f) < 1e-3f || Math.abs(stepTimesRate - 2f) < 2e-3f;
     }
 
     private static Vector3f randomVector(Random random, float scale) {
