@@ -14,6 +14,8 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
 import particlelab.demo.DemoState;
+import particlelab.demo.FountainDemo;
+import particlelab.world.Fountain;
 
 /**
  * {@code particle-lab demo [NAME] [options]}: open the window on a demo.
@@ -48,6 +50,9 @@ public final class DemoCommand {
     private static final String FIXED_TPF = "--fixed-tpf";
     private static final float MAX_FIXED_TPF = 1f;
     private static final String WINDOW = "--window";
+    private static final String PARTICLES = "--particles";
+    private static final String PROFILE = "--profile";
+    private static final String FOUNTAIN = "fountain";
     /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
     private static final int MIN_WINDOW_WIDTH = 640;
     private static final int MIN_WINDOW_HEIGHT = 360;
@@ -91,6 +96,7 @@ public final class DemoCommand {
         File screenshot;
         float fixedTpf;
         int[] window;
+        int particles;
         try {
             options.parse(optionArgs);
             if (options.isHelpRequested()) {
@@ -124,6 +130,14 @@ public final class DemoCommand {
             if (screenshot != null) {
                 checkScreenshotPath(file);
             }
+            particles = options.intInRange(PARTICLES, Fountain.DEFAULT_PARTICLES, 1,
+                    Fountain.MAX_PARTICLES);
+            if (options.has(PARTICLES)
+                    && DemoCatalog.indexOf(name) != DemoCatalog.indexOf(FOUNTAIN)) {
+                throw new UsageException(PARTICLES + ": only the demo " + FOUNTAIN
+                        + " has a particle count; give it as: demo " + FOUNTAIN + " "
+                        + PARTICLES + " N");
+            }
         } catch (UsageException e) {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
@@ -137,8 +151,15 @@ public final class DemoCommand {
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
-        return openWindow(DemoCatalog.createAll(), index, frames, screenshot, fixedTpf, out,
-                err);
+        List<DemoState> demos = DemoCatalog.createAll();
+        ((FountainDemo) demos.get(DemoCatalog.indexOf(FOUNTAIN))).setParticleCount(particles);
+        int status = openWindow(demos, index, frames, screenshot, fixedTpf, out, err);
+        if (status == OK && options.has(PROFILE)) {
+            DemoState profiled = demos.get(index);
+            out.println(profiled.getPhysicsTimes().formatProfile(
+                    profiled.countSteppedParticles()));
+        }
+        return status;
     }
 
     /**
@@ -233,6 +254,12 @@ public final class DemoCommand {
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
                 .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720)")
+                .value(PARTICLES, "N", "demo fountain only: how many particles it steps,"
+                        + " 1 to " + Fountain.MAX_PARTICLES + " (default "
+                        + Fountain.DEFAULT_PARTICLES + ")")
+                .flag(PROFILE, "at exit, print one line: physics_ms_mean=X physics_ms_max=Y"
+                        + " particles=P frames=N, the wall time of each frame's simulation"
+                        + " steps of the demo the window opened on")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }

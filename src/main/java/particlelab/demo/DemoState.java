@@ -87,6 +87,8 @@ public abstract class DemoState extends BaseAppState {
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final SimulationClock.Stepper stepper = this::stepWorld;
+    /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
+    private final FrameTimes physicsTimes = new FrameTimes();
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
@@ -567,6 +569,7 @@ public abstract class DemoState extends BaseAppState {
             pendingHitchSeconds = 0f;
             warnings.hitchApplied(frameSeconds);
         }
+        long physicsStart = System.nanoTime();
         if (!isSceneOver()) {
             try {
                 clock.advance(frameSeconds, stepper);
@@ -577,11 +580,32 @@ public abstract class DemoState extends BaseAppState {
                 restart();
             }
         }
+        physicsTimes.record(System.nanoTime() - physicsStart);
         afterFrame();
         world.getImpacts().clear();
         scene.updateViews();
         warnings.age(tpf);
         hudWriter.age(tpf);
+    }
+
+    /**
+     * Access the wall time each frame's simulation steps took ({@link #advance}: the clock,
+     * the world's steps and every hook inside them), measured with {@link System#nanoTime}.
+     *
+     * @return the live record (not null)
+     */
+    public FrameTimes getPhysicsTimes() {
+        return physicsTimes;
+    }
+
+    /**
+     * Count the particles each step moves, for {@code demo --profile}. The default counts
+     * the world's bodies; a demo that steps particles of its own says how many.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countSteppedParticles() {
+        return world.countBodies();
     }
 
     /**
