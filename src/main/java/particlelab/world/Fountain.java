@@ -65,13 +65,17 @@ public final class Fountain {
     public static final float REST_SPEED = 1f;
     /** Anything older than this is recycled (in seconds). */
     public static final float MAX_AGE_SECONDS = 20f;
-    /** The region: |x| and |z| at most these, y at most the top (in metres). */
+    /** The region: |x| at most this (in metres); beyond it a particle is recycled. */
     public static final float REGION_HALF_WIDTH = 24f;
+    /** The region: |z| at most this (in metres). */
     public static final float REGION_HALF_DEPTH = 12f;
+    /** The region: y at most this (in metres). */
     public static final float REGION_TOP = 40f;
-    /** The nozzle's launch speed, least and most (in m/s), and the cone's half angle (rad). */
+    /** The nozzle's least launch speed (in m/s). */
     public static final float WATER_MIN_SPEED = 13f;
+    /** The nozzle's largest launch speed (in m/s). */
     public static final float WATER_MAX_SPEED = 15f;
+    /** The half angle of the nozzle's cone about +y (in radians). */
     public static final float WATER_CONE_RADIANS = 0.25f;
     /** New water per second, as a fraction of the pool. */
     public static final float WATER_RATE_PER_POOL = 0.2f;
@@ -79,13 +83,17 @@ public final class Fountain {
     public static final float FIREWORK_RESERVE = 0.05f;
     /** Seconds between two shells; they go up at x = ±{@link #LAUNCHER_X} in turn. */
     public static final float SHELL_INTERVAL_SECONDS = 1.2f;
+    /** How far from the nozzle the shells go up (in metres). */
     public static final float LAUNCHER_X = 12f;
-    /** A shell's launch speed (in m/s) and cone half angle (rad). */
+    /** A shell's least launch speed (in m/s). */
     public static final float SHELL_MIN_SPEED = 24f;
+    /** A shell's largest launch speed (in m/s). */
     public static final float SHELL_MAX_SPEED = 27f;
+    /** The half angle of the shells' cone about +y (in radians). */
     public static final float SHELL_CONE_RADIANS = 0.1f;
-    /** Payloads. */
+    /** A shell's payload: how many stars it bursts into. */
     public static final int STARS_PER_SHELL = 300;
+    /** A star's payload: how many sparks it bursts into. */
     public static final int SPARKS_PER_STAR = 3;
     /** Bursts handled in one step at most; more wait for the next step. */
     static final int MAX_BURSTS_PER_STEP = 1024;
