@@ -36,12 +36,17 @@ public final class FountainDemo extends DemoState {
     public static final float RESTITUTION_STEP = 0.1f;
     /** How large a point is drawn (in pixels). */
     public static final float POINT_SIZE_PIXELS = 2f;
-    /** How bright water is drawn (0 to 1): dense spray adds up. */
+    /**
+     * How bright water is drawn with the default pool (0 to 1): the colours of overlapping
+     * points add up. A pool k times larger is drawn 1/√k as bright, so the spray neither
+     * saturates at 10^6 nor fades at 10^3.
+     */
     private static final float WATER_BRIGHTNESS = 0.15f;
     private static final float MILLIS_PER_SECOND = 1000f;
     private static final float GRAMS_PER_KG = 1000f;
 
     private int particleCount = Fountain.DEFAULT_PARTICLES;
+    private float waterBrightness = WATER_BRIGHTNESS;
     private Fountain fountain;
     private PointCloudView points;
     private final FrameTimes renderTimes = new FrameTimes();
@@ -98,6 +103,8 @@ public final class FountainDemo extends DemoState {
     @Override
     protected void createScene() {
         fountain = new Fountain(particleCount);
+        waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
+                * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
         if (getApplication() != null) {
             points = new PointCloudView(getApplication().getAssetManager(), "fountain",
                     particleCount, POINT_SIZE_PIXELS, Fountain.REGION_TOP);
@@ -222,7 +229,7 @@ public final class FountainDemo extends DemoState {
             case Fountain.DORMANT:
                 return 0f;
             case Fountain.WATER:
-                return WATER_BRIGHTNESS;
+                return waterBrightness;
             case Fountain.SHELL:
                 return 1f;
             default:
