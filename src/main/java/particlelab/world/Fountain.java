@@ -130,9 +130,13 @@ public final class Fountain {
     /** vy of every slot before the step, for the resting fix (m/s). */
     private final float[] velocityYBefore;
     private final byte[] kinds;
-    private final byte[] touched;
-    /** Seconds in flight. */
-    private final float[] ages;
+    /** The slots in contact with the ground after the step: {@link GroundBounce}'s output. */
+    private final int[] contacts;
+    /** When each particle was launched (s; +∞ for a dormant slot). */
+    private final float[] births;
+    /** The slots holding a firework (shell, star, spark), in no order. */
+    private final int[] fireworkSlots;
+    private int fireworkCount;
     /** A firework's fuse at launch, and what is left of it (s). */
     private final float[] fuses;
     private final float[] fusesLeft;
@@ -175,8 +179,9 @@ public final class Fountain {
         velocities = new float[3 * particles];
         velocityYBefore = new float[particles];
         kinds = new byte[particles];
-        touched = new byte[particles];
-        ages = new float[particles];
+        contacts = new int[particles];
+        births = new float[particles];
+        fireworkSlots = new int[particles];
         fuses = new float[particles];
         fusesLeft = new float[particles];
         colours = new int[particles];
@@ -194,6 +199,7 @@ public final class Fountain {
             free[freeCount++] = i;
         }
         Arrays.fill(liveByKind, 0);
+        fireworkCount = 0;
         random = new SplittableRandom(SEED);
         waterCarry = 0f;
         shellTimerSeconds = 0f;
@@ -217,14 +223,12 @@ public final class Fountain {
     public void step(float stepSeconds) {
         System.arraycopy(velocities, capacity, velocityYBefore, 0, capacity);
         integrator.stepPacked(positions, velocities, capacity, MASS_KG, stepSeconds);
-        ground.resolve(positions, velocities, velocityYBefore, capacity, touched);
-        burstCount = 0;
-        for (int i = 0; i < capacity; ++i) {
-            byte kind = kinds[i];
-            if (kind != DORMANT) {
-                live(i, kind, stepSeconds);
-            }
-        }
+        int touching = ground.resolve(positions, velocities, velocityYBefore, capacity,
+                contacts);
+        timeSeconds += stepSeconds;
+        restOnTheGround(touching);
+        leaveTheRegion();
+        burnFuses(stepSeconds);
         for (int b = 0; b < burstCount; ++b) {
             spawnPayload(b);
         }
@@ -236,7 +240,6 @@ public final class Fountain {
             }
         }
         emitWater(stepSeconds);
-        timeSeconds += stepSeconds;
         ++steps;
     }
 
@@ -403,40 +406,71 @@ public final class Fountain {
 
     // ---------------------------------------------------------------- private helpers ----
 
-    /** One particle in flight after the step: rest, leave, burn, burst. */
-    private void live(int i, byte kind, float stepSeconds) {
-        float age = ages[i] + stepSeconds;
-        ages[i] = age;
-        float x = positions[i];
-        float y = positions[capacity + i];
-        float z = positions[2 * capacity + i];
-        if (Math.abs(x) > REGION_HALF_WIDTH || Math.abs(z) > REGION_HALF_DEPTH
-                || y > REGION_TOP || age > MAX_AGE_SECONDS) {
-            ++recycledLeaving;
-            recycle(i, kind);
-            return;
-        }
-        if (kind == WATER) {
-            if (touched[i] != 0 && speedSquared(i) < REST_SPEED * REST_SPEED) {
+    /** Water on the ground slower than {@link #REST_SPEED} goes back to the pool. */
+    private void restOnTheGround(int touching) {
+        for (int c = 0; c < touching; ++c) {
+            int i = contacts[c];
+            if (kinds[i] == WATER && speedSquared(i) < REST_SPEED * REST_SPEED) {
                 ++recycledResting;
-                recycle(i, kind);
+                recycle(i, WATER);
             }
-            return;
         }
-        float left = fusesLeft[i] - stepSeconds;
-        fusesLeft[i] = left;
-        boolean apex = kind == SHELL && velocities[capacity + i] <= 0f;
-        if (left > 0f && !apex) {
-            return;
-        }
-        if (RULES[kind].payloadCount > 0) {
-            if (burstCount == MAX_BURSTS_PER_STEP) {
-                return; // the queue is full: burst next step
+    }
+
+    /**
+     * Anything out of the region or older than {@link #MAX_AGE_SECONDS} goes back to the
+     * pool: one simple pass over every slot (a dormant slot sits at the nozzle, born at +∞,
+     * so it never qualifies and needs no test of its kind).
+     */
+    private void leaveTheRegion() {
+        int n = capacity;
+        float oldestBirth = (float) timeSeconds - MAX_AGE_SECONDS;
+        for (int i = 0; i < n; ++i) {
+            if (Math.abs(positions[i]) > REGION_HALF_WIDTH || positions[n + i] > REGION_TOP
+                    || Math.abs(positions[2 * n + i]) > REGION_HALF_DEPTH
+                    || births[i] < oldestBirth) {
+                ++recycledLeaving;
+                recycle(i, kinds[i]);
             }
-            queueBurst(i, kind);
         }
-        ++recycledBurnt;
-        recycle(i, kind);
+    }
+
+    /**
+     * The fireworks' fuses burn: a shell bursts at its apex or when its fuse has burnt, a
+     * star when its fuse has burnt (queued, spawned after this pass), a spark just goes out.
+     * Slots recycled earlier in the step leave the list here.
+     */
+    private void burnFuses(float stepSeconds) {
+        burstCount = 0;
+        int k = 0;
+        while (k < fireworkCount) {
+            int i = fireworkSlots[k];
+            byte kind = kinds[i];
+            boolean gone = kind == DORMANT;
+            if (!gone) {
+                float left = fusesLeft[i] - stepSeconds;
+                fusesLeft[i] = left;
+                boolean apex = kind == SHELL && velocities[capacity + i] <= 0f;
+                if (left <= 0f || apex) {
+                    if (RULES[kind].payloadCount == 0) {
+                        gone = true;
+                    } else if (burstCount < MAX_BURSTS_PER_STEP) {
+                        queueBurst(i, kind);
+                        gone = true;
+                    }
+                    // else the queue is full: burst next step
+                    if (gone) {
+                        ++recycledBurnt;
+                        recycle(i, kind);
+                    }
+                }
+            }
+            if (gone) {
+                fireworkSlots[k] = fireworkSlots[--fireworkCount];
+            } else {
+                ++k;
+            }
+        }
     }
 
     private void queueBurst(int i, byte kind) {
@@ -518,8 +552,11 @@ public final class Fountain {
     private int take(byte kind) {
         int i = free[--freeCount];
         kinds[i] = kind;
-        ages[i] = 0f;
+        births[i] = (float) timeSeconds;
         ++liveByKind[kind];
+        if (kind != WATER) {
+            fireworkSlots[fireworkCount++] = i;
+        }
         return i;
     }
 
@@ -533,7 +570,7 @@ public final class Fountain {
     private void park(int i) {
         kinds[i] = DORMANT;
         place(i, 0f, RADIUS_METRES, 0f, 0f, 0f, 0f);
-        ages[i] = 0f;
+        births[i] = Float.POSITIVE_INFINITY;
         fuses[i] = 0f;
         fusesLeft[i] = 0f;
         colours[i] = 0;

@@ -104,16 +104,17 @@ public final class GroundBounce {
      * @param velocitiesYBefore vy of every particle before the step (in m/s, length &ge;
      *     count, not modified)
      * @param count the number of particles (&ge;0)
-     * @param touched set to 1 for each particle in contact this step, else 0 (length &ge;
-     *     count, modified)
-     * @return how many particles were in contact
+     * @param storeContacts where to write the index of each particle in contact this step, in
+     *     increasing order (length &ge; count, modified from index 0 on)
+     * @return how many particles were in contact: the indices written
      */
     public int resolve(float[] positions, float[] velocities, float[] velocitiesYBefore,
-            int count, byte[] touched) {
+            int count, int[] storeContacts) {
         if (count < 0 || positions.length < 3L * count || velocities.length < 3L * count
-                || velocitiesYBefore.length < count || touched.length < count) {
+                || velocitiesYBefore.length < count || storeContacts.length < count) {
             throw new IllegalArgumentException("count must be >= 0 with 3*count positions and"
-                    + " velocities and count previous vy and flags, but count was " + count);
+                    + " velocities and count previous vy and contact indices, but count was "
+                    + count);
         }
         double radius = radiusMetres;
         float e = restitution;
@@ -122,11 +123,9 @@ public final class GroundBounce {
             float py = positions[y];
             double overlap = radius - py;
             if (!(overlap >= 0.0)) {
-                touched[i] = 0;
                 continue;
             }
-            touched[i] = 1;
-            ++contacts;
+            storeContacts[contacts++] = i;
             float depth = (float) overlap;
             float separating = velocities[y];
             if (!(-separating > World.CLOSING_TOLERANCE || depth > World.PENETRATION_TOLERANCE)) {

@@ -59,7 +59,7 @@ class GroundBounceTest {
                 new ParticleIntegrator(new Gravity(), new LinearDrag(DRAG_B));
         GroundBounce ground = new GroundBounce(RADIUS, e, threshold, fix);
         float[] before = new float[count];
-        byte[] touched = new byte[count];
+        int[] touched = new int[count];
         int contacts = 0;
         int reversals = 0;
         for (int step = 1; step <= STEPS; ++step) {
@@ -100,7 +100,7 @@ class GroundBounceTest {
         float[] positions = {1f, RADIUS, 2f};
         float[] velocities = {0f, 0f, 0f};
         float[] before = new float[1];
-        byte[] touched = new byte[1];
+        int[] touched = new int[1];
         for (int step = 0; step < 10_000; ++step) {
             before[0] = velocities[1];
             integrator.stepPacked(positions, velocities, 1, MASS, H);
@@ -110,7 +110,8 @@ class GroundBounceTest {
         assertEquals(0f, velocities[0], 0f);
         assertEquals(0f, velocities[1], 0f);
         assertEquals(0f, velocities[2], 0f);
-        assertEquals(1, touched[0]);
+        assertEquals(1, ground.resolve(positions, velocities, before, 1, touched));
+        assertEquals(0, touched[0]);
     }
 
     @Test
@@ -119,7 +120,7 @@ class GroundBounceTest {
         float[] positions = new float[3 * count];
         float[] velocities = new float[3 * count];
         float[] before = new float[count];
-        byte[] touched = new byte[count];
+        int[] touched = new int[count];
         for (int i = 0; i < count; ++i) {
             positions[count + i] = -0.01f * (i % 7);
             velocities[count + i] = -3f + 0.001f * i;
