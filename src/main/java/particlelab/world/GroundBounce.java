@@ -116,11 +116,15 @@ public final class GroundBounce {
                     + " velocities and count previous vy and contact indices, but count was "
                     + count);
         }
+        float radiusFloat = radiusMetres;
         double radius = radiusMetres;
         float e = restitution;
         int contacts = 0;
         for (int i = 0, y = count; i < count; ++i, ++y) {
             float py = positions[y];
+            if (py > radiusFloat) {
+                continue; // r − y < 0 in double too (floats convert exactly): no contact
+            }
             double overlap = radius - py;
             if (!(overlap >= 0.0)) {
                 continue;
