@@ -131,14 +131,18 @@ public final class FountainDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("batch Euler step (stepPacked): V = (1 - h*b/m)*V + h*g,  P += h*V;  ")
-                .append(fountain.getIntegrator().describe()).append(", m = ");
-        TextFormat.appendFixed(text, Fountain.MASS_KG * GRAMS_PER_KG, 0).append(" g\n");
+        // linear drag's factor 1 - h*b/m stays above -1 for h < 2m/b (docs/numerics.md)
+        text.append("batch Euler step (stepPacked): V = (1 - h*b/m)*V + h*g,  P += h*V;"
+                + "  stable for h < 2m/b = ");
+        TextFormat.appendFixed(text, 2f * Fountain.MASS_KG / Fountain.DRAG_B, 1)
+                .append(" s\n");
+        text.append(fountain.getIntegrator().describe()).append(", m = ");
+        TextFormat.appendFixed(text, Fountain.MASS_KG * GRAMS_PER_KG, 0).append(" g;  ground");
         GroundBounce ground = fountain.getGround();
-        text.append("ground y = r = ");
+        text.append(" y = r = ");
         TextFormat.appendFixed(text, ground.getRadius(), 2).append(" m, e = ");
         TextFormat.appendFixed(text, ground.getRestitution(), 1)
-                .append(": vy' = -e*vy less e*h*a_y (Cyclone's resting fix), y' = r\n");
+                .append(", Cyclone's resting fix\n");
     }
 
     @Override
