@@ -10,6 +10,7 @@ import particlelab.demo.CollisionsDemo;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragDemo;
 import particlelab.demo.FastBulletsDemo;
+import particlelab.demo.FountainDemo;
 import particlelab.demo.GravitationalPullDemo;
 import particlelab.demo.HelloAimingDemo;
 import particlelab.demo.IterativeAimingDemo;
@@ -65,7 +66,8 @@ public final class DemoCatalog {
             new Entry("rotation", RotationDemo::new),
             new Entry("throw", SpinThrowDemo::new),
             new Entry("racket", TennisRacketDemo::new),
-            new Entry("wind", WindDemo::new)));
+            new Entry("wind", WindDemo::new),
+            new Entry("fountain", FountainDemo::new)));
 
     private DemoCatalog() {
     }

@@ -13,8 +13,10 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
-import particlelab.view.HudScale;
 import particlelab.demo.DemoState;
+import particlelab.demo.FountainDemo;
+import particlelab.view.HudScale;
+import particlelab.world.Fountain;
 
 /**
  * {@code particle-lab demo [NAME] [options]}: open the window on a demo.
@@ -52,6 +54,9 @@ public final class DemoCommand {
     private static final String WINDOW = "--window";
     private static final String UI_SCALE = "--ui-scale";
     private static final String SET = "--set";
+    private static final String PARTICLES = "--particles";
+    private static final String PROFILE = "--profile";
+    private static final String FOUNTAIN = "fountain";
     /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
     private static final int MIN_WINDOW_WIDTH = 640;
     private static final int MIN_WINDOW_HEIGHT = 360;
@@ -100,6 +105,7 @@ public final class DemoCommand {
         Path exportFolder = null;
         float uiScale;
         List<String> settings;
+        int particles;
         try {
             options.parse(optionArgs);
             if (options.isHelpRequested()) {
@@ -142,6 +148,14 @@ public final class DemoCommand {
             if (options.has(ExportRun.EXPORT)) {
                 exportFolder = ExportRun.checkFolder(options.string(ExportRun.EXPORT, null));
             }
+            particles = options.intInRange(PARTICLES, Fountain.DEFAULT_PARTICLES, 1,
+                    Fountain.MAX_PARTICLES);
+            if (options.has(PARTICLES)
+                    && DemoCatalog.indexOf(name) != DemoCatalog.indexOf(FOUNTAIN)) {
+                throw new UsageException(PARTICLES + ": only the demo " + FOUNTAIN
+                        + " has a particle count; give it as: demo " + FOUNTAIN + " "
+                        + PARTICLES + " N");
+            }
         } catch (UsageException e) {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
@@ -162,12 +176,15 @@ public final class DemoCommand {
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
-        if (exportFolder != null && screenshot == null) {
-            return ExportRun.runHeadless(demos, index, frames, fixedTpf,
-                    exportFolder, out, err);
+        ((FountainDemo) demos.get(DemoCatalog.indexOf(FOUNTAIN))).setParticleCount(particles);
+        int status = exportFolder != null && screenshot == null
+                ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, out, err)
+                : openWindow(demos, index, frames, screenshot, fixedTpf, uiScale, exportFolder,
+                        out, err);
+        if (status == OK && options.has(PROFILE)) {
+            out.println(profileLine(demos.get(index)));
         }
-        return openWindow(demos, index, frames, screenshot, fixedTpf,
-                uiScale, exportFolder, out, err);
+        return status;
     }
 
     /** Read --ui-scale: the user's factor on the HUD scale, 1 when not given. */
@@ -227,6 +244,20 @@ public final class DemoCommand {
         } catch (NumberFormatException notNumber) {
             return Float.NaN;
         }
+    }
+
+    /**
+     * Write the line {@code --profile} prints at exit, for the demo the window opened on:
+     * {@code physics_ms_mean=X physics_ms_max=Y particles=P frames=N}, the wall time of each
+     * frame's simulation steps (the clock's steps of the demo's world and every hook in them,
+     * the fountain's packed particles included) over the N frames the demo ran, and the
+     * particles each step moved.
+     *
+     * @param demo the demo (not null)
+     * @return the line, without a line end (not null)
+     */
+    static String profileLine(DemoState demo) {
+        return demo.getPhysicsTimes().formatProfile(demo.countSimulatedParticles());
     }
 
     /**
@@ -334,6 +365,12 @@ public final class DemoCommand {
                 .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
                         + " starts, e.g. b=0.3 or h=1/10 (repeatable); the panel (F2) lists"
                         + " them, a wrong name or value lists them with their ranges")
+                .value(PARTICLES, "N", "demo fountain only: how many particles it steps,"
+                        + " 1 to " + Fountain.MAX_PARTICLES + " (default "
+                        + Fountain.DEFAULT_PARTICLES + ")")
+                .flag(PROFILE, "at exit, print one line: physics_ms_mean=X physics_ms_max=Y"
+                        + " particles=P frames=N, the wall time of each frame's simulation"
+                        + " steps of the demo the window opened on")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }

@@ -94,6 +94,8 @@ public abstract class DemoState extends BaseAppState {
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final SimulationClock.Stepper stepper = this::stepWorld;
+    /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
+    private final FrameTimes physicsTimes = new FrameTimes();
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
@@ -483,8 +485,9 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Count the particles this demo simulates, for the report's physics share: by default its
-     * world's bodies or its declared particles, whichever are more. A demo that steps more of
+     * Count the particles this demo simulates, for the report's physics share and
+     * {@code demo --profile}: by default its world's bodies or its declared particles,
+     * whichever are more. A demo that steps more of
      * its own (a packed batch) overrides this.
      *
      * @return the count (&ge;0)
@@ -736,6 +739,7 @@ public abstract class DemoState extends BaseAppState {
             pendingHitchSeconds = 0f;
             warnings.hitchApplied(frameSeconds);
         }
+        long physicsStart = System.nanoTime();
         if (!isSceneOver()) {
             try {
                 clock.advance(frameSeconds, stepper);
@@ -746,12 +750,23 @@ public abstract class DemoState extends BaseAppState {
                 restart();
             }
         }
+        physicsTimes.record(System.nanoTime() - physicsStart);
         afterFrame();
         world.getImpacts().clear();
         scene.updateViews();
         ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
         warnings.age(tpf);
         hudWriter.age(tpf);
+    }
+
+    /**
+     * Access the wall time each frame's simulation steps took ({@link #advance}: the clock,
+     * the world's steps and every hook inside them), measured with {@link System#nanoTime}.
+     *
+     * @return the live record (not null)
+     */
+    public FrameTimes getPhysicsTimes() {
+        return physicsTimes;
     }
 
     /**

@@ -145,7 +145,10 @@ final class HudWriter {
             }
         }
         appendSteppingLine(text);
-        appendStabilityLine(text);
+        if (!particles.isEmpty()) {
+            // a demo without particles of its own (the fountain) says what limits its step
+            appendStabilityLine(text);
+        }
         return text;
     }
 

@@ -1,0 +1,254 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.renderer.RenderManager;
+import particlelab.view.PointCloudView;
+import particlelab.view.TextFormat;
+import particlelab.world.Fountain;
+import particlelab.world.GroundBounce;
+
+/**
+ * Demo "fountain": many particles. A fountain of water and a display of fireworks, 10^5
+ * particles by default ({@code demo fountain --particles N}, up to 10^6), all moved by the
+ * shared Euler step in its batch form ({@code ParticleIntegrator.stepPacked}: packed float
+ * arrays, no object per particle) and drawn as one mesh of points whose buffers are rewritten
+ * in place every frame. Builds upon drag (every particle has gravity and linear drag), bounce
+ * (the ground's restitution e, applied in one packed loop) and targets (an epilogue that
+ * spawns fragments: here a shell bursts into stars and a star into sparks, after Cyclone's
+ * fireworks demo).
+ *
+ * <p>The demo declares no particle of its own ({@link #addParticle} would make an object, a
+ * sphere and a label for each): it steps its {@link Fountain} from {@link #afterStep}, so the
+ * clock drives it like any other demo (pause, single step, time scale, fixed h or raw tpf),
+ * and copies the pool into the mesh in {@link #afterFrame}.
+ *
+ * <p>What to watch for: the HUD's physics milliseconds per frame against the render's, and
+ * their share of the 16.7 ms a frame has at 60 frames per second; how many particles are in
+ * flight, and how many came to rest and went back to the pool. Up/Down change e: with e near
+ * 1 the drops bounce long and the pool runs short of free particles.
+ */
+public final class FountainDemo extends DemoState {
+
+    /** The frame budget at 60 frames per second (in seconds). */
+    public static final float FRAME_BUDGET_SECONDS = 1f / 60f;
+    /** What Up/Down add to or take from e. */
+    public static final float RESTITUTION_STEP = 0.1f;
+    /** How large a point is drawn (in pixels). */
+    public static final float POINT_SIZE_PIXELS = 2f;
+    /**
+     * How bright water is drawn with the default pool (0 to 1): the colours of overlapping
+     * points add up. A pool k times larger is drawn 1/√k as bright, so the spray neither
+     * saturates at 10^6 nor fades at 10^3.
+     */
+    private static final float WATER_BRIGHTNESS = 0.15f;
+    private static final float MILLIS_PER_SECOND = 1000f;
+    private static final float GRAMS_PER_KG = 1000f;
+
+    private int particleCount = Fountain.DEFAULT_PARTICLES;
+    private float waterBrightness = WATER_BRIGHTNESS;
+    private Fountain fountain;
+    private PointCloudView points;
+    private final FrameTimes renderTimes = new FrameTimes();
+    private final FrameTimes frameTimes = new FrameTimes();
+    private long renderStartNanos = -1L;
+    private long lastUpdateNanos = -1L;
+
+    /** Create the demo with {@link Fountain#DEFAULT_PARTICLES}. */
+    public FountainDemo() {
+        super("Fountain");
+    }
+
+    /**
+     * Choose the pool size. Call before the demo is initialised.
+     *
+     * @param particles how many particles (from 1 to {@link Fountain#MAX_PARTICLES})
+     */
+    public void setParticleCount(int particles) {
+        if (fountain != null) {
+            throw new IllegalStateException("set the particle count before the demo starts");
+        }
+        if (particles < 1 || particles > Fountain.MAX_PARTICLES) {
+            throw new IllegalArgumentException("fountain particle count must be from 1 to "
+                    + Fountain.MAX_PARTICLES + ", but was " + particles);
+        }
+        particleCount = particles;
+    }
+
+    /**
+     * Access the fountain.
+     *
+     * @return the live fountain (null before initialisation)
+     */
+    public Fountain getFountain() {
+        return fountain;
+    }
+
+    /**
+     * Access the render times: per frame, from this demo's {@link #render} to its
+     * {@link #postRender}, which is jME's render pass on the CPU (culling, the buffers'
+     * upload, the draw calls), without the swap of the window's buffers.
+     *
+     * @return the live record (not null)
+     */
+    public FrameTimes getRenderTimes() {
+        return renderTimes;
+    }
+
+    @Override
+    public int countSimulatedParticles() {
+        return fountain == null ? particleCount : fountain.getCapacity();
+    }
+
+    @Override
+    protected void createScene() {
+        fountain = new Fountain(particleCount);
+        waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
+                * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
+        if (getApplication() != null) {
+            points = new PointCloudView(getApplication().getAssetManager(), "fountain",
+                    particleCount, POINT_SIZE_PIXELS, Fountain.REGION_TOP);
+            getSceneNode().attachChild(points.getGeometry());
+        }
+        setView(-Fountain.REGION_HALF_WIDTH + 2f, Fountain.REGION_HALF_WIDTH - 2f, 28f, 2f, 5,
+                0.3f);
+        addMarker("nozzle", 0f, 0.4f, new ColorRGBA(0.4f, 0.6f, 1f, 1f));
+        addMarker("shells", -Fountain.LAUNCHER_X, 0.6f, ColorRGBA.Orange);
+        addMarker("shells", Fountain.LAUNCHER_X, 0.6f, ColorRGBA.Orange);
+    }
+
+    @Override
+    protected void declareKeys() {
+        StringBuilder up = new StringBuilder("ground restitution e + ");
+        TextFormat.appendFixed(up, RESTITUTION_STEP, 1).append(" (up to 1)");
+        bindKey(KeyInput.KEY_UP, "Up", up.toString(), () -> changeRestitution(1f));
+        StringBuilder down = new StringBuilder("ground restitution e - ");
+        TextFormat.appendFixed(down, RESTITUTION_STEP, 1).append(" (down to 0)");
+        bindKey(KeyInput.KEY_DOWN, "Down", down.toString(), () -> changeRestitution(-1f));
+        bindKey(KeyInput.KEY_F, "F", "fireworks on / off (shells in flight still burst)",
+                () -> fountain.setFireworks(!fountain.isFireworks()));
+    }
+
+    @Override
+    protected void describeEquations(StringBuilder text) {
+        // linear drag's factor 1 - h*b/m stays above -1 for h < 2m/b (docs/numerics.md)
+        text.append("batch Euler step (stepPacked): V = (1 - h*b/m)*V + h*g,  P += h*V;"
+                + "  stable for h < 2m/b = ");
+        TextFormat.appendFixed(text, 2f * Fountain.MASS_KG / Fountain.DRAG_B, 1)
+                .append(" s\n");
+        text.append(fountain.getIntegrator().describe()).append(", m = ");
+        TextFormat.appendFixed(text, Fountain.MASS_KG * GRAMS_PER_KG, 0).append(" g;  ground");
+        GroundBounce ground = fountain.getGround();
+        text.append(" y = r = ");
+        TextFormat.appendFixed(text, ground.getRadius(), 2).append(" m, e = ");
+        TextFormat.appendFixed(text, ground.getRestitution(), 1)
+                .append(", Cyclone's resting fix\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        text.append("particles: ").append(fountain.countLive()).append(" in flight of ")
+                .append(fountain.getCapacity()).append(" stepped: water ")
+                .append(fountain.countLive(Fountain.WATER)).append(", shells ")
+                .append(fountain.countLive(Fountain.SHELL)).append(", stars ")
+                .append(fountain.countLive(Fountain.STAR)).append(", sparks ")
+                .append(fountain.countLive(Fountain.SPARK))
+                .append(fountain.isFireworks() ? "" : " (fireworks off)").append('\n');
+        text.append("recycled: ").append(fountain.countRecycledResting())
+                .append(" at rest, ").append(fountain.countRecycledLeaving())
+                .append(" left the region, ").append(fountain.countRecycledBurnt())
+                .append(" fireworks burnt out\n");
+        double physics = getPhysicsTimes().recentMeanMillis();
+        double render = renderTimes.recentMeanMillis();
+        double budget = FRAME_BUDGET_SECONDS * MILLIS_PER_SECOND;
+        text.append("physics ");
+        TextFormat.appendFixed(text, physics, 2).append(" + render ");
+        TextFormat.appendFixed(text, render, 2).append(" ms/frame = ");
+        TextFormat.appendFixed(text, 100.0 * (physics + render) / budget, 0)
+                .append("% of ");
+        TextFormat.appendFixed(text, budget, 1).append(" ms;  frame ");
+        double frame = frameTimes.recentMeanMillis();
+        TextFormat.appendFixed(text, frame, 1).append(" ms (");
+        TextFormat.appendFixed(text, frame > 0.0 ? MILLIS_PER_SECOND / frame : 0.0, 0)
+                .append(" fps)\n");
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        fountain.step(stepSeconds);
+    }
+
+    @Override
+    protected void afterFrame() {
+        if (points == null) {
+            return;
+        }
+        points.copyPlanarPositions(fountain.getPositions());
+        int count = fountain.getCapacity();
+        for (int i = 0; i < count; ++i) {
+            points.setColour(i, fountain.getColour(i), brightness(fountain.getKind(i), i));
+        }
+        points.markUpdated();
+    }
+
+    @Override
+    protected void onRestart() {
+        if (fountain != null) {
+            fountain.reset();
+        }
+    }
+
+    @Override
+    public void update(float tpf) {
+        long now = System.nanoTime();
+        if (lastUpdateNanos >= 0L) {
+            frameTimes.record(now - lastUpdateNanos);
+        }
+        lastUpdateNanos = now;
+        super.update(tpf);
+    }
+
+    @Override
+    public void render(RenderManager renderManager) {
+        renderStartNanos = System.nanoTime();
+    }
+
+    @Override
+    public void postRender() {
+        if (renderStartNanos >= 0L) {
+            renderTimes.record(System.nanoTime() - renderStartNanos);
+            renderStartNanos = -1L;
+        }
+    }
+
+    @Override
+    protected void onDisable() {
+        super.onDisable();
+        lastUpdateNanos = -1L;
+        renderStartNanos = -1L;
+    }
+
+    private float brightness(byte kind, int i) {
+        switch (kind) {
+            case Fountain.DORMANT:
+                return 0f;
+            case Fountain.WATER:
+                return waterBrightness;
+            case Fountain.SHELL:
+                return 1f;
+            default:
+                return fountain.fuseFraction(i);
+        }
+    }
+
+    private void changeRestitution(float sign) {
+        GroundBounce ground = fountain.getGround();
+        // whole steps of e, so that ten presses reach 0 or 1 exactly
+        float steps = Math.round(ground.getRestitution() / RESTITUTION_STEP) + sign;
+        ground.setRestitution(Math.max(0f, Math.min(1f, steps * RESTITUTION_STEP)));
+        StringBuilder notice = new StringBuilder("ground restitution e = ");
+        TextFormat.appendFixed(notice, ground.getRestitution(), 1);
+        showNotice(notice.toString());
+        refreshEquations();
+    }
+}

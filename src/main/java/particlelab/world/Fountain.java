@@ -1,0 +1,637 @@
+package particlelab.world;
+
+import java.util.Arrays;
+import java.util.SplittableRandom;
+import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleIntegrator;
+
+/**
+ * A fountain with fireworks: a fixed pool of particles, packed in float arrays and moved by
+ * the shared Euler step in its batch form ({@link ParticleIntegrator#stepPacked}), bouncing on
+ * the ground ({@link GroundBounce}), recycled when they come to rest or leave the region.
+ *
+ * <p>Every step, in order:
+ * <ol>
+ * <li>the Euler step of every slot of the pool, gravity and linear drag
+ * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V});</li>
+ * <li>the ground: restitution e with Cyclone's resting fix, in one packed loop;</li>
+ * <li>the lifecycle: water that touches the ground slower than {@link #REST_SPEED}, any
+ * particle that leaves the region or outlives {@link #MAX_AGE_SECONDS}, a spark whose fuse has
+ * burnt, go back to the pool; a shell bursts at its apex or when its fuse has burnt, a star
+ * when its fuse has burnt;</li>
+ * <li>the bursts' payloads, then a new shell when the launch timer says so, then new water
+ * from the nozzle, all from the pool.</li>
+ * </ol>
+ *
+ * <p>The fireworks follow Cyclone's fireworks demo (Millington): each kind has a rule, a fuse
+ * (its age limit, drawn between a least and a most) and a payload (how many children of which
+ * kind it leaves when the fuse burns out), each child starting where its parent burst with the
+ * parent's velocity plus a random one. Here a shell leaves {@value #STARS_PER_SHELL} stars, a
+ * star {@value #SPARKS_PER_STAR} sparks, a spark nothing.
+ *
+ * <p>The pool never grows: a slot not in flight is dormant, resting at the nozzle
+ * ({@code P = (0, r, 0)}, {@code V = 0}), which the Euler step and the resting fix keep
+ * exactly where it is, and invisible. A twentieth of the pool is kept for the fireworks: water
+ * takes a slot only while more are free. Nothing decays for ever (every particle in flight is
+ * recycled within {@link #MAX_AGE_SECONDS}), so no velocity becomes a subnormal float (see
+ * {@code docs/numerics.md}). A step allocates nothing.
+ */
+public final class Fountain {
+
+    /** The default pool size (particles). */
+    public static final int DEFAULT_PARTICLES = 100_000;
+    /** The largest pool (particles). */
+    public static final int MAX_PARTICLES = 1_000_000;
+    /** A slot that is not in flight. */
+    public static final byte DORMANT = 0;
+    /** Water from the nozzle. */
+    public static final byte WATER = 1;
+    /** A firework shell, rising. */
+    public static final byte SHELL = 2;
+    /** A star of a burst shell. */
+    public static final byte STAR = 3;
+    /** A spark of a burnt-out star. */
+    public static final byte SPARK = 4;
+    /** Each particle's mass (in kilograms): a drop of about a gram. */
+    public static final float MASS_KG = 0.001f;
+    /** Linear drag b (in kg/s): b/m = 0.2 per second. */
+    public static final float DRAG_B = 0.0002f;
+    /** The particles' radius for the ground contact (in metres). */
+    public static final float RADIUS_METRES = 0.05f;
+    /** The ground's default restitution e. */
+    public static final float DEFAULT_RESTITUTION = 0.5f;
+    /** Water touching the ground slower than this is at rest (in m/s). */
+    public static final float REST_SPEED = 1f;
+    /** Anything older than this is recycled (in seconds). */
+    public static final float MAX_AGE_SECONDS = 20f;
+    /** The region: |x| at most this (in metres); beyond it a particle is recycled. */
+    public static final float REGION_HALF_WIDTH = 24f;
+    /** The region: |z| at most this (in metres). */
+    public static final float REGION_HALF_DEPTH = 12f;
+    /** The region: y at most this (in metres). */
+    public static final float REGION_TOP = 40f;
+    /** The nozzle's least launch speed (in m/s). */
+    public static final float WATER_MIN_SPEED = 13f;
+    /** The nozzle's largest launch speed (in m/s). */
+    public static final float WATER_MAX_SPEED = 15f;
+    /** The half angle of the nozzle's cone about +y (in radians). */
+    public static final float WATER_CONE_RADIANS = 0.25f;
+    /** New water per second, as a fraction of the pool. */
+    public static final float WATER_RATE_PER_POOL = 0.2f;
+    /** The share of the pool kept for the fireworks. */
+    public static final float FIREWORK_RESERVE = 0.05f;
+    /** Seconds between two shells; they go up at x = ±{@link #LAUNCHER_X} in turn. */
+    public static final float SHELL_INTERVAL_SECONDS = 1.2f;
+    /** How far from the nozzle the shells go up (in metres). */
+    public static final float LAUNCHER_X = 12f;
+    /** A shell's least launch speed (in m/s). */
+    public static final float SHELL_MIN_SPEED = 24f;
+    /** A shell's largest launch speed (in m/s). */
+    public static final float SHELL_MAX_SPEED = 27f;
+    /** The half angle of the shells' cone about +y (in radians). */
+    public static final float SHELL_CONE_RADIANS = 0.1f;
+    /** A shell's payload: how many stars it bursts into. */
+    public static final int STARS_PER_SHELL = 300;
+    /** A star's payload: how many sparks it bursts into. */
+    public static final int SPARKS_PER_STAR = 3;
+    /** Bursts handled in one step at most; more wait for the next step. */
+    static final int MAX_BURSTS_PER_STEP = 1024;
+    /** The random sequence's seed: a reset replays the same fountain. */
+    private static final long SEED = 12;
+    private static final float TWO_PI = (float) (2.0 * Math.PI);
+    /** The burst queue's record: P, V, colour. */
+    private static final int BURST_FLOATS = 6;
+
+    /** The fireworks rules (Cyclone's FireworkRule), by kind; null for water. */
+    private static final Rule[] RULES = {
+        null,
+        null,
+        new Rule(1.8f, 2.4f, 0f, 0f, STAR, STARS_PER_SHELL),
+        new Rule(1.2f, 2.0f, 5f, 9f, SPARK, SPARKS_PER_STAR),
+        new Rule(0.3f, 0.7f, 1f, 3f, DORMANT, 0),
+    };
+    /** The stars' colours, one per shell in turn (0xRRGGBB). */
+    private static final int[] STAR_COLOURS = {0xff5a3c, 0x5cff7a, 0xffd24a, 0xc070ff,
+        0x4ad8ff};
+    /** The water's colour (0xRRGGBB). */
+    public static final int WATER_COLOUR = 0x5a9cff;
+
+    private final int capacity;
+    private final int reserve;
+    private final Gravity gravity = new Gravity();
+    private final LinearDrag drag = new LinearDrag(DRAG_B);
+    private final ParticleIntegrator integrator = new ParticleIntegrator(gravity, drag);
+    private final GroundBounce ground =
+            new GroundBounce(RADIUS_METRES, DEFAULT_RESTITUTION, 0f, true);
+    /** P and V of every slot, planar: all x, then all y, then all z. */
+    private final float[] positions;
+    private final float[] velocities;
+    /** vy of every slot before the step, for the resting fix (m/s). */
+    private final float[] velocityYBefore;
+    private final byte[] kinds;
+    /** The slots in contact with the ground after the step: {@link GroundBounce}'s output. */
+    private final int[] contacts;
+    /** When each particle was launched (s; +∞ for a dormant slot). */
+    private final float[] births;
+    /** The slots holding a firework (shell, star, spark), in no order. */
+    private final int[] fireworkSlots;
+    private int fireworkCount;
+    /** A firework's fuse at launch, and what is left of it (s). */
+    private final float[] fuses;
+    private final float[] fusesLeft;
+    /** The colour each particle was given (0xRRGGBB). */
+    private final int[] colours;
+    /** The dormant slots: a stack. */
+    private final int[] free;
+    private int freeCount;
+    private final int[] liveByKind = new int[RULES.length];
+    /** The bursts of the current step: parent kind, and P, V, colour. */
+    private final byte[] burstKinds = new byte[MAX_BURSTS_PER_STEP];
+    private final float[] burstStates = new float[MAX_BURSTS_PER_STEP * BURST_FLOATS];
+    private final int[] burstColours = new int[MAX_BURSTS_PER_STEP];
+    private int burstCount;
+    private SplittableRandom random;
+    private float waterCarry;
+    private float shellTimerSeconds;
+    private int shellsLaunched;
+    private boolean fireworks = true;
+    private double timeSeconds;
+    private long steps;
+    private long recycledResting;
+    private long recycledLeaving;
+    private long recycledBurnt;
+    private long bursts;
+
+    /**
+     * Create a fountain with every slot dormant.
+     *
+     * @param particles the pool size (from 1 to {@link #MAX_PARTICLES})
+     */
+    public Fountain(int particles) {
+        if (particles < 1 || particles > MAX_PARTICLES) {
+            throw new IllegalArgumentException("fountain particle count must be from 1 to "
+                    + MAX_PARTICLES + ", but was " + particles);
+        }
+        capacity = particles;
+        reserve = (int) (FIREWORK_RESERVE * particles);
+        positions = new float[3 * particles];
+        velocities = new float[3 * particles];
+        velocityYBefore = new float[particles];
+        kinds = new byte[particles];
+        contacts = new int[particles];
+        births = new float[particles];
+        fireworkSlots = new int[particles];
+        fuses = new float[particles];
+        fusesLeft = new float[particles];
+        colours = new int[particles];
+        free = new int[particles];
+        reset();
+    }
+
+    /**
+     * Put every slot back in the pool and replay from the start.
+     */
+    public void reset() {
+        freeCount = 0;
+        for (int i = capacity - 1; i >= 0; --i) {
+            park(i);
+            free[freeCount++] = i;
+        }
+        Arrays.fill(liveByKind, 0);
+        fireworkCount = 0;
+        random = new SplittableRandom(SEED);
+        waterCarry = 0f;
+        shellTimerSeconds = 0f;
+        shellsLaunched = 0;
+        burstCount = 0;
+        timeSeconds = 0.0;
+        steps = 0L;
+        recycledResting = 0L;
+        recycledLeaving = 0L;
+        recycledBurnt = 0L;
+        bursts = 0L;
+    }
+
+    /**
+     * Advance the fountain by one step.
+     *
+     * @param stepSeconds h (in seconds, finite, &gt;0)
+     * @throws particlelab.physics.NonFiniteStepException if the Euler step left a particle
+     *     non-finite; {@link #reset} before stepping again
+     */
+    public void step(float stepSeconds) {
+        System.arraycopy(velocities, capacity, velocityYBefore, 0, capacity);
+        integrator.stepPacked(positions, velocities, capacity, MASS_KG, stepSeconds);
+        int touching = ground.resolve(positions, velocities, velocityYBefore, capacity,
+                contacts);
+        timeSeconds += stepSeconds;
+        restOnTheGround(touching);
+        leaveTheRegion();
+        burnFuses(stepSeconds);
+        for (int b = 0; b < burstCount; ++b) {
+            spawnPayload(b);
+        }
+        if (fireworks) {
+            shellTimerSeconds -= stepSeconds;
+            if (shellTimerSeconds <= 0f) {
+                shellTimerSeconds += SHELL_INTERVAL_SECONDS;
+                launchShell();
+            }
+        }
+        emitWater(stepSeconds);
+        ++steps;
+    }
+
+    /**
+     * Return the pool size: how many particles each step moves.
+     *
+     * @return the count (&ge;1)
+     */
+    public int getCapacity() {
+        return capacity;
+    }
+
+    /**
+     * Count the particles in flight.
+     *
+     * @return the count (from 0 to the pool size)
+     */
+    public int countLive() {
+        return capacity - freeCount;
+    }
+
+    /**
+     * Count the particles in flight of one kind.
+     *
+     * @param kind {@link #WATER}, {@link #SHELL}, {@link #STAR} or {@link #SPARK}
+     * @return the count (&ge;0)
+     */
+    public int countLive(byte kind) {
+        return liveByKind[kind];
+    }
+
+    /**
+     * Count the particles recycled because they came to rest on the ground.
+     *
+     * @return the count since the last reset (&ge;0)
+     */
+    public long countRecycledResting() {
+        return recycledResting;
+    }
+
+    /**
+     * Count the particles recycled because they left the region or outlived
+     * {@link #MAX_AGE_SECONDS}.
+     *
+     * @return the count since the last reset (&ge;0)
+     */
+    public long countRecycledLeaving() {
+        return recycledLeaving;
+    }
+
+    /**
+     * Count the fireworks whose fuse burnt out (shells and stars that burst, sparks).
+     *
+     * @return the count since the last reset (&ge;0)
+     */
+    public long countRecycledBurnt() {
+        return recycledBurnt;
+    }
+
+    /**
+     * Count the bursts: shells and stars that left their payload.
+     *
+     * @return the count since the last reset (&ge;0)
+     */
+    public long countBursts() {
+        return bursts;
+    }
+
+    /**
+     * Return the simulated time since the last reset.
+     *
+     * @return the time (in seconds, &ge;0)
+     */
+    public double getTimeSeconds() {
+        return timeSeconds;
+    }
+
+    /**
+     * Access the positions, planar as {@link ParticleIntegrator#stepPacked} packs them.
+     *
+     * @return the live array of 3·{@link #getCapacity()} floats (in metres, do not modify)
+     */
+    public float[] getPositions() {
+        return positions;
+    }
+
+    /**
+     * Access the velocities, planar.
+     *
+     * @return the live array of 3·{@link #getCapacity()} floats (in m/s, do not modify)
+     */
+    public float[] getVelocities() {
+        return velocities;
+    }
+
+    /**
+     * Return a slot's kind.
+     *
+     * @param index the slot (from 0 to the pool size − 1)
+     * @return {@link #DORMANT}, {@link #WATER}, {@link #SHELL}, {@link #STAR} or
+     *     {@link #SPARK}
+     */
+    public byte getKind(int index) {
+        return kinds[index];
+    }
+
+    /**
+     * Return a particle's colour.
+     *
+     * @param index the slot (from 0 to the pool size − 1)
+     * @return 0xRRGGBB
+     */
+    public int getColour(int index) {
+        return colours[index];
+    }
+
+    /**
+     * Return what is left of a firework's fuse, as a fraction: 1 at launch, 0 burnt out; 1
+     * for water.
+     *
+     * @param index the slot (from 0 to the pool size − 1)
+     * @return the fraction (0 to 1)
+     */
+    public float fuseFraction(int index) {
+        float fuse = fuses[index];
+        return fuse > 0f ? Math.max(0f, fusesLeft[index] / fuse) : 1f;
+    }
+
+    /**
+     * Access the ground, e.g. to change its restitution.
+     *
+     * @return the live ground (not null)
+     */
+    public GroundBounce getGround() {
+        return ground;
+    }
+
+    /**
+     * Access the integrator that steps the pool (gravity and linear drag).
+     *
+     * @return the live integrator (not null)
+     */
+    public ParticleIntegrator getIntegrator() {
+        return integrator;
+    }
+
+    /**
+     * Test whether shells are launched.
+     *
+     * @return true if so
+     */
+    public boolean isFireworks() {
+        return fireworks;
+    }
+
+    /**
+     * Launch shells or stop launching them (those in flight burst as usual).
+     *
+     * @param newFireworks true to launch
+     */
+    public void setFireworks(boolean newFireworks) {
+        fireworks = newFireworks;
+    }
+
+    // ---------------------------------------------------------------- private helpers ----
+
+    /** Water on the ground slower than {@link #REST_SPEED} goes back to the pool. */
+    private void restOnTheGround(int touching) {
+        for (int c = 0; c < touching; ++c) {
+            int i = contacts[c];
+            if (kinds[i] == WATER && speedSquared(i) < REST_SPEED * REST_SPEED) {
+                ++recycledResting;
+                recycle(i, WATER);
+            }
+        }
+    }
+
+    /**
+     * Anything out of the region or older than {@link #MAX_AGE_SECONDS} goes back to the
+     * pool: one simple pass over every slot (a dormant slot sits at the nozzle, born at +∞,
+     * so it never qualifies and needs no test of its kind).
+     */
+    private void leaveTheRegion() {
+        int n = capacity;
+        float oldestBirth = (float) timeSeconds - MAX_AGE_SECONDS;
+        for (int i = 0; i < n; ++i) {
+            if (Math.abs(positions[i]) > REGION_HALF_WIDTH || positions[n + i] > REGION_TOP
+                    || Math.abs(positions[2 * n + i]) > REGION_HALF_DEPTH
+                    || births[i] < oldestBirth) {
+                ++recycledLeaving;
+                recycle(i, kinds[i]);
+            }
+        }
+    }
+
+    /**
+     * The fireworks' fuses burn: a shell bursts at its apex or when its fuse has burnt, a
+     * star when its fuse has burnt (queued, spawned after this pass), a spark just goes out.
+     * Slots recycled earlier in the step leave the list here.
+     */
+    private void burnFuses(float stepSeconds) {
+        burstCount = 0;
+        int k = 0;
+        while (k < fireworkCount) {
+            int i = fireworkSlots[k];
+            byte kind = kinds[i];
+            boolean gone = kind == DORMANT;
+            if (!gone) {
+                float left = fusesLeft[i] - stepSeconds;
+                fusesLeft[i] = left;
+                boolean apex = kind == SHELL && velocities[capacity + i] <= 0f;
+                if (left <= 0f || apex) {
+                    if (RULES[kind].payloadCount == 0) {
+                        gone = true;
+                    } else if (burstCount < MAX_BURSTS_PER_STEP) {
+                        queueBurst(i, kind);
+                        gone = true;
+                    }
+                    // else the queue is full: burst next step
+                    if (gone) {
+                        ++recycledBurnt;
+                        recycle(i, kind);
+                    }
+                }
+            }
+            if (gone) {
+                fireworkSlots[k] = fireworkSlots[--fireworkCount];
+            } else {
+                ++k;
+            }
+        }
+    }
+
+    private void queueBurst(int i, byte kind) {
+        int at = burstCount * BURST_FLOATS;
+        for (int axis = 0; axis < 3; ++axis) {
+            burstStates[at + axis] = positions[axis * capacity + i];
+            burstStates[at + 3 + axis] = velocities[axis * capacity + i];
+        }
+        burstKinds[burstCount] = kind;
+        burstColours[burstCount] = colours[i];
+        ++burstCount;
+        ++bursts;
+    }
+
+    /** A burst's children: at the parent's P, with its V plus a random one. */
+    private void spawnPayload(int burst) {
+        Rule parent = RULES[burstKinds[burst]];
+        Rule child = RULES[parent.payloadKind];
+        int at = burst * BURST_FLOATS;
+        int colour = parent.payloadKind == SPARK ? brighten(burstColours[burst])
+                : burstColours[burst];
+        for (int c = 0; c < parent.payloadCount && freeCount > 0; ++c) {
+            int i = take(parent.payloadKind);
+            float speed = between(child.minSpeed, child.maxSpeed);
+            // a random direction, uniform on the sphere: z = cos θ uniform in [−1, 1]
+            float dz = between(-1f, 1f);
+            float ring = (float) Math.sqrt(Math.max(0f, 1f - dz * dz));
+            float phi = between(0f, TWO_PI);
+            float dx = ring * (float) Math.cos(phi);
+            float dy = ring * (float) Math.sin(phi);
+            place(i, burstStates[at], burstStates[at + 1], burstStates[at + 2],
+                    burstStates[at + 3] + speed * dx, burstStates[at + 4] + speed * dy,
+                    burstStates[at + 5] + speed * dz);
+            fuses[i] = between(child.minFuse, child.maxFuse);
+            fusesLeft[i] = fuses[i];
+            colours[i] = colour;
+        }
+    }
+
+    private void launchShell() {
+        if (freeCount == 0) {
+            return;
+        }
+        int i = take(SHELL);
+        float x = (shellsLaunched % 2 == 0 ? -1f : 1f) * LAUNCHER_X;
+        launchInCone(i, x, between(SHELL_MIN_SPEED, SHELL_MAX_SPEED), SHELL_CONE_RADIANS);
+        Rule rule = RULES[SHELL];
+        fuses[i] = between(rule.minFuse, rule.maxFuse);
+        fusesLeft[i] = fuses[i];
+        colours[i] = STAR_COLOURS[shellsLaunched % STAR_COLOURS.length];
+        ++shellsLaunched;
+    }
+
+    private void emitWater(float stepSeconds) {
+        waterCarry += WATER_RATE_PER_POOL * capacity * stepSeconds;
+        int wanted = (int) waterCarry;
+        waterCarry -= wanted;
+        int count = Math.min(wanted, freeCount - reserve);
+        for (int n = 0; n < count; ++n) {
+            int i = take(WATER);
+            launchInCone(i, 0f, between(WATER_MIN_SPEED, WATER_MAX_SPEED), WATER_CONE_RADIANS);
+            fuses[i] = 0f;
+            fusesLeft[i] = 0f;
+            colours[i] = WATER_COLOUR;
+        }
+    }
+
+    /** From (x, r, 0), up at a speed within a cone about +y of a half angle. */
+    private void launchInCone(int i, float x, float speed, float coneRadians) {
+        // cos θ uniform in [cos α, 1]: directions uniform over the cone's cap
+        float cosTheta = between((float) Math.cos(coneRadians), 1f);
+        float sinTheta = (float) Math.sqrt(Math.max(0f, 1f - cosTheta * cosTheta));
+        float phi = between(0f, TWO_PI);
+        place(i, x, RADIUS_METRES, 0f, speed * sinTheta * (float) Math.cos(phi),
+                speed * cosTheta, speed * sinTheta * (float) Math.sin(phi));
+    }
+
+    /** Pop a dormant slot for a new particle of a kind. */
+    private int take(byte kind) {
+        int i = free[--freeCount];
+        kinds[i] = kind;
+        births[i] = (float) timeSeconds;
+        ++liveByKind[kind];
+        if (kind != WATER) {
+            fireworkSlots[fireworkCount++] = i;
+        }
+        return i;
+    }
+
+    private void recycle(int i, byte kind) {
+        --liveByKind[kind];
+        park(i);
+        free[freeCount++] = i;
+    }
+
+    /** Dormant: at rest on the ground at the nozzle. */
+    private void park(int i) {
+        kinds[i] = DORMANT;
+        place(i, 0f, RADIUS_METRES, 0f, 0f, 0f, 0f);
+        births[i] = Float.POSITIVE_INFINITY;
+        fuses[i] = 0f;
+        fusesLeft[i] = 0f;
+        colours[i] = 0;
+    }
+
+    private void place(int i, float px, float py, float pz, float vx, float vy, float vz) {
+        int y = capacity + i;
+        int z = 2 * capacity + i;
+        positions[i] = px;
+        positions[y] = py;
+        positions[z] = pz;
+        velocities[i] = vx;
+        velocities[y] = vy;
+        velocities[z] = vz;
+    }
+
+    private float speedSquared(int i) {
+        float vx = velocities[i];
+        float vy = velocities[capacity + i];
+        float vz = velocities[2 * capacity + i];
+        return vx * vx + vy * vy + vz * vz;
+    }
+
+    private float between(float least, float most) {
+        return least + (most - least) * (float) random.nextDouble();
+    }
+
+    /** A spark's colour: its star's, halfway to white. */
+    private static int brighten(int rgb) {
+        int r = (rgb >> 16) & 0xff;
+        int g = (rgb >> 8) & 0xff;
+        int b = rgb & 0xff;
+        return ((r + 255) / 2) << 16 | ((g + 255) / 2) << 8 | (b + 255) / 2;
+    }
+
+    /** Cyclone's FireworkRule: the fuse, the children's speed, the payload. */
+    private static final class Rule {
+        final float minFuse;
+        final float maxFuse;
+        final float minSpeed;
+        final float maxSpeed;
+        final byte payloadKind;
+        final int payloadCount;
+
+        /**
+         * @param minFuse the shortest fuse (in seconds, &gt;0)
+         * @param maxFuse the longest fuse (in seconds, &ge;minFuse)
+         * @param minSpeed the least speed a child of this kind gets on top of its parent's
+         *     (in m/s, &ge;0)
+         * @param maxSpeed the most (in m/s, &ge;minSpeed)
+         * @param payloadKind the kind of the children it leaves
+         * @param payloadCount how many (&ge;0)
+         */
+        Rule(float minFuse, float maxFuse, float minSpeed, float maxSpeed, byte payloadKind,
+                int payloadCount) {
+            this.minFuse = minFuse;
+            this.maxFuse = maxFuse;
+            this.minSpeed = minSpeed;
+            this.maxSpeed = maxSpeed;
+            this.payloadKind = payloadKind;
+            this.payloadCount = payloadCount;
+        }
+    }
+}

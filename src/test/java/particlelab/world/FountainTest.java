@@ -1,0 +1,152 @@
+package particlelab.world;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import particlelab.Allocations;
+
+/**
+ * The fountain's pool: bounded, recycled, normal floats only, allocation-free and
+ * reproducible.
+ */
+class FountainTest {
+
+    private static final float H = 1f / 60f;
+    private static final int POOL = 10_000;
+
+    @Test
+    void theCountStaysBoundedAndEverySlotIsEitherInFlightOrInThePool() {
+        Fountain fountain = new Fountain(POOL);
+        int most = 0;
+        // 60 s: many lifetimes of water (about 4.5 s) and fifty shells
+        for (int step = 0; step < 3600; ++step) {
+            fountain.step(H);
+            int live = fountain.countLive();
+            assertTrue(live >= 0 && live <= POOL, "in flight: " + live);
+            most = Math.max(most, live);
+            if (step % 100 == 0) {
+                assertConsistent(fountain);
+            }
+        }
+        assertConsistent(fountain);
+        // water may take all but the fireworks' twentieth; at steady state it nearly does
+        assertTrue(most > POOL / 2, "the fountain fills its pool: at most " + most);
+        assertTrue(most <= POOL, "at most " + most);
+    }
+
+    @Test
+    void particlesAtRestOrOutOfTheRegionAreRecycled() {
+        Fountain fountain = new Fountain(POOL);
+        for (int step = 0; step < 3600; ++step) {
+            fountain.step(H);
+        }
+        long recycled = fountain.countRecycledResting() + fountain.countRecycledLeaving()
+                + fountain.countRecycledBurnt();
+        // 60 s of water at a fifth of the pool per second: each slot used many times over
+        assertTrue(recycled > 5L * POOL, "recycled " + recycled);
+        assertTrue(fountain.countRecycledResting() > POOL, "at rest");
+        assertTrue(fountain.countRecycledLeaving() > 0, "left the region");
+        // a shell every 1.2 s: 50 shells, each bursting once, and their stars too
+        assertTrue(fountain.countBursts() > 50 * 100, "bursts " + fountain.countBursts());
+        // at rest means: nothing is left lying in the pool of water on the ground
+        float[] positions = fountain.getPositions();
+        float[] velocities = fountain.getVelocities();
+        for (int i = 0; i < POOL; ++i) {
+            if (fountain.getKind(i) == Fountain.WATER
+                    && positions[POOL + i] <= Fountain.RADIUS_METRES) {
+                float speed = (float) Math.sqrt(square(velocities[i])
+                        + square(velocities[POOL + i]) + square(velocities[2 * POOL + i]));
+                assertTrue(speed >= Fountain.REST_SPEED, "water " + i + " lies on the"
+                        + " ground at " + speed + " m/s and was not recycled");
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "e = {0}")
+    @ValueSource(floats = {0.5f, 1f})
+    void noPositionOrVelocityEverBecomesSubnormal(float restitution) {
+        // e = 1: the drops bounce for ever and only the age limit recycles them
+        Fountain fountain = new Fountain(POOL);
+        fountain.getGround().setRestitution(restitution);
+        float[] positions = fountain.getPositions();
+        float[] velocities = fountain.getVelocities();
+        // 2 minutes: 6 times the age limit, long enough for a drag-only decay
+        // (v·(1 − h·b/m)^n) to have reached subnormals at k = 0.5 (NUMERICS: ~10^4 steps)
+        for (int step = 1; step <= 7200; ++step) {
+            fountain.step(H);
+            if (step % 60 == 0) {
+                assertNormalOrZero(positions, "P", step);
+                assertNormalOrZero(velocities, "V", step);
+            }
+        }
+    }
+
+    @Test
+    void aRunningStepAllocatesNothing() {
+        Fountain fountain = new Fountain(POOL);
+        for (int step = 0; step < 600; ++step) {
+            fountain.step(H); // past the fill-up, with bursts under way
+        }
+        Allocations.assertAllocatesNothing("60 fountain steps", () -> {
+            for (int step = 0; step < 60; ++step) {
+                fountain.step(H);
+            }
+        });
+    }
+
+    @Test
+    void aResetReplaysTheSameFountain() {
+        Fountain fountain = new Fountain(2_000);
+        for (int step = 0; step < 300; ++step) {
+            fountain.step(H);
+        }
+        float[] first = fountain.getPositions().clone();
+        fountain.reset();
+        assertEquals(0, fountain.countLive());
+        for (int step = 0; step < 300; ++step) {
+            fountain.step(H);
+        }
+        assertArrayEquals(first, fountain.getPositions());
+    }
+
+    @Test
+    void aCountOutsideOneToAMillionIsRefused() {
+        for (int bad : new int[] {0, -5, Fountain.MAX_PARTICLES + 1}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> new Fountain(bad));
+            assertTrue(e.getMessage().contains("must be from 1 to 1000000, but was " + bad),
+                    e.getMessage());
+        }
+    }
+
+    private static void assertConsistent(Fountain fountain) {
+        int[] byKind = new int[Fountain.SPARK + 1];
+        for (int i = 0; i < fountain.getCapacity(); ++i) {
+            byKind[fountain.getKind(i)]++;
+        }
+        assertEquals(fountain.getCapacity() - fountain.countLive(), byKind[Fountain.DORMANT],
+                "dormant slots");
+        for (byte kind = Fountain.WATER; kind <= Fountain.SPARK; ++kind) {
+            assertEquals(byKind[kind], fountain.countLive(kind), "kind " + kind);
+        }
+    }
+
+    private static void assertNormalOrZero(float[] values, String what, int step) {
+        for (int i = 0; i < values.length; ++i) {
+            float v = values[i];
+            if (v != 0f && !(Math.abs(v) >= Float.MIN_NORMAL)) {
+                throw new AssertionError(what + "[" + i + "] = " + v + " is subnormal (or"
+                        + " not finite) after step " + step);
+            }
+        }
+    }
+
+    private static float square(float x) {
+        return x * x;
+    }
+}
