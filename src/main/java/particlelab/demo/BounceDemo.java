@@ -192,7 +192,7 @@ public final class BounceDemo extends DemoState {
         Vector3f v = ball.getVelocity();
         float energy = 0.5f * MASS_KG * v.lengthSquared()
                 + MASS_KG * g * (ball.getPosition().y - RADIUS);
-        text.append("energy E = m v^2/2 + m g (y - R) = ");
+        text.append("energy E = m v²/2 + m g (y − R) = ");
         TextFormat.appendFixed(text, energy, 3).append(" J   at the drop m g h0 = ");
         TextFormat.appendFixed(text, MASS_KG * g * DROP_HEIGHT, 3).append(" J\n");
         if (eTenths == 10) {

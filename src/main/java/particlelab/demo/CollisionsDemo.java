@@ -255,9 +255,9 @@ public final class CollisionsDemo extends DemoState {
             if (preset == Preset.PADDLE) {
                 text.append(" J (negative: the paddle's script added energy)\n");
             } else {
-                text.append(" J;  1/2 mu (1-e^2) v_n^2 = ");
+                text.append(" J;  ½·μ·(1 − e²)·v_n² = ");
                 TextFormat.appendFixed(text, impactPredictedLoss, 3).append(" J  (v_n = ");
-                TextFormat.appendFixed(text, impactNormalSpeed, 3).append(" m/s, mu = ");
+                TextFormat.appendFixed(text, impactNormalSpeed, 3).append(" m/s, μ = ");
                 TextFormat.appendFixed(text, impactReducedMass, 3).append(" kg)\n");
             }
         }

@@ -188,7 +188,7 @@ public abstract class DemoState extends BaseAppState {
      * @param text where to append (not null, modified)
      */
     protected void describeEquations(StringBuilder text) {
-        text.append("Euler step: a = g + F/m,  V += h*a,  P += h*V\n");
+        text.append("Euler step: a = g + F/m,  V += h·a,  P += h·V\n");
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
             text.append(particle.getLabel()).append(":  ")

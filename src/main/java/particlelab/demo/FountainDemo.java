@@ -132,7 +132,7 @@ public final class FountainDemo extends DemoState {
     @Override
     protected void describeEquations(StringBuilder text) {
         // linear drag's factor 1 - h*b/m stays above -1 for h < 2m/b (docs/numerics.md)
-        text.append("batch Euler step (stepPacked): V = (1 - h*b/m)*V + h*g,  P += h*V;"
+        text.append("batch Euler step (stepPacked): V = (1 − h·b/m)·V + h·g,  P += h·V;"
                 + "  stable for h < 2m/b = ");
         TextFormat.appendFixed(text, 2f * Fountain.MASS_KG / Fountain.DRAG_B, 1)
                 .append(" s\n");

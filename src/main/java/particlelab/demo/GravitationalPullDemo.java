@@ -58,13 +58,13 @@ public final class GravitationalPullDemo extends DemoState {
         float g = getParameters().getValue("g");
         launch.copyVelocity(shownVelocity);
         text.append("Pull:  a = g = (0, -");
-        DemoParameter.appendShort(text, g, 2).append(", 0) m/s^2,   V += h*g,   P += h*V\n");
+        DemoParameter.appendShort(text, g, 2).append(", 0) m/s²,   V += h·g,   P += h·V\n");
         text.append("Launch V0 = (");
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
         DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands at"
-                + " 2*Vx*Vy/g = ");
+                + " 2·Vx·Vy/g = ");
         TextFormat.appendFixed(text, 2f * shownVelocity.x * shownVelocity.y / g, 2)
-                .append(" m after 2*Vy/g = ");
+                .append(" m after 2·Vy/g = ");
         TextFormat.appendFixed(text, 2f * shownVelocity.y / g, 2)
                 .append(" s (continuous)\n");
     }

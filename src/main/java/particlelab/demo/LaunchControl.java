@@ -174,7 +174,7 @@ final class LaunchControl {
         DemoParameter.appendShort(text, parameters.getValueInScene(parameters.indexOf("mass")),
                 2).append(" kg,  ");
         if (g != Gravity.STANDARD_G) {
-            DemoParameter.appendShort(text.append("g = "), g, 2).append(" m/s^2,  ");
+            DemoParameter.appendShort(text.append("g = "), g, 2).append(" m/s²,  ");
         }
         copyVelocity(velocity);
         text.append("V0 = (");

@@ -70,6 +70,6 @@ public final class UniformMotionDemo extends DemoState {
         text.append("No force:  a = 0,  so V = (");
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
         DemoParameter.appendShort(text, shownVelocity.y, 2)
-                .append(", 0) m/s stays,  and P = P0 + V*t\n");
+                .append(", 0) m/s stays,  and P = P0 + V·t\n");
     }
 }

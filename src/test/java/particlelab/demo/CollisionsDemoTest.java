@@ -64,7 +64,7 @@ class CollisionsDemoTest {
         assertEquals(9f, (Float) r[5], 1e-4f);
         assertEquals(9f, (Float) r[2] - (Float) r[3], 1e-4f);
         String hud = (String) r[10];
-        assertTrue(hud.contains("1/2 mu (1-e^2) v_n^2 = 9.000 J  (v_n = 6.000 m/s, mu = 0.667"
+        assertTrue(hud.contains("½·μ·(1 − e²)·v_n² = 9.000 J  (v_n = 6.000 m/s, μ = 0.667"
                 + " kg)"), hud);
     }
 
