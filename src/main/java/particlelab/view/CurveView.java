@@ -108,18 +108,8 @@ public final class CurveView {
             int i = Math.min(slot, count - 1);
             int before = Math.max(i - 1, 0);
             int after = Math.min(i + 1, count - 1);
-            float dx = xs[after] - xs[before];
-            float dy = ys[after] - ys[before];
-            float length = (float) Math.sqrt(dx * dx + dy * dy);
-            float nx = 0f;
-            float ny = halfWidth;
-            if (length > 1e-6f) {
-                nx = -dy / length * halfWidth;
-                ny = dx / length * halfWidth;
-            }
-            int out = slot * 2 * FLOATS_PER_POINT;
-            positions.put(out, xs[i] + nx).put(out + 1, ys[i] + ny).put(out + 2, 0f);
-            positions.put(out + 3, xs[i] - nx).put(out + 4, ys[i] - ny).put(out + 5, 0f);
+            RibbonVertices.write(positions, slot, xs[i], ys[i], 0f, xs[after] - xs[before],
+                    ys[after] - ys[before], halfWidth);
         }
         positions.rewind();
         positionBuffer.updateData(positions);

@@ -129,20 +129,8 @@ public final class ShotTrail {
         int here = index * FLOATS_PER_POINT;
         int before = Math.max(index - 1, 0) * FLOATS_PER_POINT;
         int after = Math.min(index + 1, count - 1) * FLOATS_PER_POINT;
-        float dx = points[after] - points[before];
-        float dy = points[after + 1] - points[before + 1];
-        float length = (float) Math.sqrt(dx * dx + dy * dy);
-        float nx = 0f;
-        float ny = halfWidth;
-        if (length > 1e-6f) {
-            nx = -dy / length * halfWidth;
-            ny = dx / length * halfWidth;
-        }
-        int out = slot * 2 * FLOATS_PER_POINT;
-        float x = points[here];
-        float y = points[here + 1];
-        float z = points[here + 2];
-        positions.put(out, x + nx).put(out + 1, y + ny).put(out + 2, z);
-        positions.put(out + 3, x - nx).put(out + 4, y - ny).put(out + 5, z);
+        RibbonVertices.write(positions, slot, points[here], points[here + 1], points[here + 2],
+                points[after] - points[before], points[after + 1] - points[before + 1],
+                halfWidth);
     }
 }

@@ -289,22 +289,8 @@ public final class Trail {
         int here = ringIndex(age) * FLOATS_PER_POINT;
         int before = ringIndex(Math.max(age - 1, 0)) * FLOATS_PER_POINT;
         int after = ringIndex(Math.min(age + 1, count - 1)) * FLOATS_PER_POINT;
-        float dx = ring[after] - ring[before];
-        float dy = ring[after + 1] - ring[before + 1];
-        float length = (float) Math.sqrt(dx * dx + dy * dy);
-        float nx = 0f;
-        float ny = halfWidth;
-        if (length > 1e-6f) {
-            // Perpendicular to the path, in the x-y plane.
-            nx = -dy / length * halfWidth;
-            ny = dx / length * halfWidth;
-        }
-        int out = slot * 2 * FLOATS_PER_POINT;
-        float x = ring[here];
-        float y = ring[here + 1];
-        float z = ring[here + 2];
-        positions.put(out, x + nx).put(out + 1, y + ny).put(out + 2, z);
-        positions.put(out + 3, x - nx).put(out + 4, y - ny).put(out + 5, z);
+        RibbonVertices.write(positions, slot, ring[here], ring[here + 1], ring[here + 2],
+                ring[after] - ring[before], ring[after + 1] - ring[before + 1], halfWidth);
     }
 
     /** Write the four corners of one slot's dot; a slot not yet filled gets no area. */
