@@ -921,7 +921,7 @@ public abstract class DemoState extends BaseAppState {
         return parameterControls;
     }
 
-    /** The parameter panel and its buttons: pause, step, reset, fire, next demo. */
+    /** The parameter panel and its buttons: pause, step, reset, fire, export, next demo. */
     private void buildPanel(Application app, BitmapFont font) {
         List<String> labels = new ArrayList<>(List.of("Pause", "Step", "Reset"));
         List<Runnable> actions = new ArrayList<>(List.of(
@@ -931,6 +931,8 @@ public abstract class DemoState extends BaseAppState {
             labels.add("Fire");
             actions.add(() -> fireKey.press(0));
         }
+        labels.add("Export");
+        actions.add(this::requestExport);
         for (int i = 0; i < applicationBindings.size(); ++i) {
             KeyBinding binding = applicationBindings.get(i);
             if (binding.getKeyCode(0) == KeyInput.KEY_TAB) {

@@ -40,6 +40,8 @@ public final class ParameterPanel {
     public static final float WIDTH_AT_SCALE_ONE = 320f;
     /** The panel's text size at HUD scale 1 (in pixels). */
     private static final float TEXT_SIZE = 14f;
+    /** The most buttons in one row (more start another row), so every label fits. */
+    private static final int BUTTONS_PER_ROW = 4;
     /** The slider's thumb's width at HUD scale 1 (in pixels). */
     private static final float THUMB_WIDTH = 12f;
     /** A slider's height at HUD scale 1 (in pixels). */
@@ -96,9 +98,12 @@ public final class ParameterPanel {
         container.setBackground(new QuadBackgroundComponent(PANEL_COLOR));
         heading = text(title, SELECTED_COLOR);
         container.addChild(heading);
-        Container row = container.addChild(new Container(new SpringGridLayout(Axis.X, Axis.Y,
-                FillMode.Even, FillMode.Even)));
+        Container row = null;
         for (int i = 0; i < buttonLabels.size(); ++i) {
+            if (i % BUTTONS_PER_ROW == 0) {
+                row = container.addChild(new Container(new SpringGridLayout(Axis.X, Axis.Y,
+                        FillMode.Even, FillMode.Even)));
+            }
             Button button = new Button(buttonLabels.get(i));
             Runnable action = buttonActions.get(i);
             button.addClickCommands(source -> action.run());

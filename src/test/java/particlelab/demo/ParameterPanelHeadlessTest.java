@@ -211,6 +211,18 @@ class ParameterPanelHeadlessTest {
     }
 
     @Test
+    void exportButtonAsksForTheExportTheEKeyAsksFor() throws Exception {
+        boolean asked = harness.call(() -> {
+            DemoState demo = harness.app().getSwitcher().getSelected();
+            // The application's export state takes requests at the end of a frame; on this
+            // thread, between frames, the request is still there to be taken.
+            demo.getParameterControls().getPanel().click("Export");
+            return demo.takeExportRequest();
+        });
+        assertTrue(asked, "the Export button did not ask for an export");
+    }
+
+    @Test
     void keptShotsAreBoundedAndLabelledWithWhatDiffered() throws Exception {
         String legend = harness.call(() -> {
             DragDemo drag = demo(DragDemo.class);
