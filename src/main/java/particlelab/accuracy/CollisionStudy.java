@@ -354,9 +354,9 @@ final class CollisionStudy {
 
     /**
      * Count the contacts of the cost scene over {@code countSteps} untimed steps for each test
-     * (which also warms both up), then time a step of each, alternating {@value #COST_PASSES} times and keeping each
-     * test's fastest pass, so that a slow moment of a shared machine does not land on one
-     * test only.
+     * (which also warms both up), then time a step of each, alternating
+     * {@value #COST_PASSES} times and keeping each test's fastest pass, so that a slow moment
+     * of a shared machine does not land on one test only.
      */
     void runCost(CostMeter meter, int countSteps) {
         this.costCountSteps = countSteps;

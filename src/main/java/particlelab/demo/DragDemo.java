@@ -71,10 +71,7 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void declareParameters() {
-        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
-        declareParameter(launch.angleParameter());
-        declareParameter(launch.massParameter(MASS_KG));
-        declareParameter(launch.gravityParameter());
+        launch.projectileParameters(MAX_SPEED, SPEED_STEP, MASS_KG).forEach(this::declareParameter);
         // The coefficients change the forces at once, in the middle of a flight.
         declareParameter(new DemoParameter("b", "linear drag", "N s/m", 0f, MAX_B,
                 0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, linearDrag::setCoefficient));

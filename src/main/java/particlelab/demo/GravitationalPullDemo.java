@@ -46,11 +46,8 @@ public final class GravitationalPullDemo extends DemoState {
 
     @Override
     protected void declareParameters() {
-        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
-        declareParameter(launch.angleParameter());
-        // Gravity alone: every mass falls alike (try it).
-        declareParameter(launch.massParameter(MASS_KG));
-        declareParameter(launch.gravityParameter());
+        // Gravity alone: every mass falls alike (try it with the mass).
+        launch.projectileParameters(MAX_SPEED, SPEED_STEP, MASS_KG).forEach(this::declareParameter);
     }
 
     @Override

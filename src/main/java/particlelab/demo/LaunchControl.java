@@ -101,6 +101,20 @@ final class LaunchControl {
     }
 
     /**
+     * Declare the whole launch of a projectile demo: speed and angle (at the next launch),
+     * mass (at the next launch) and g (live), in the panel's order.
+     *
+     * @param maxSpeed the largest speed offered (in m/s, &gt;the default)
+     * @param speedStep what a key press changes the speed by (in m/s, &gt;0)
+     * @param defaultKg the mass at the start (in kg, &gt;0)
+     * @return the four declarations (not null)
+     */
+    List<DemoParameter> projectileParameters(float maxSpeed, float speedStep, float defaultKg) {
+        return List.of(speedParameter(maxSpeed, speedStep), angleParameter(),
+                massParameter(defaultKg), gravityParameter());
+    }
+
+    /**
      * Declare the launch speed, applied at the next launch.
      *
      * @param maxSpeed the largest speed offered (in m/s, &gt;the default)
