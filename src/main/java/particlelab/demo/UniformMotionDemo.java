@@ -42,7 +42,8 @@ public final class UniformMotionDemo extends DemoState {
         // An integrator with no forces: the lecture's "no force, straight line".
         sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
                 new ParticleIntegrator()));
-        setView(-2f, 32f, 8f, 1f, 5, 0.4f);
+        // Tall enough for the default launch: y = 1 + 1.2·30/4 = 10 m at the right edge.
+        setView(-2f, 32f, 10.5f, 1f, 5, 0.4f);
         showExactGhosts();
     }
 
