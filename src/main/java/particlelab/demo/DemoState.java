@@ -951,14 +951,18 @@ public abstract class DemoState extends BaseAppState {
     /** After the panel came or went: the HUD and the scene get the window's width back. */
     private void relayOutPanel() {
         parameterControls.requestSlot(hud.getLayout());
-        layOut(getApplication().getCamera().getWidth(),
-                getApplication().getCamera().getHeight());
+        layOutAgain();
     }
 
     private void toggleGraph() {
         ghosts.toggleGraph(hud.getLayout());
+        layOutAgain();
+    }
+
+    /** After a slot came or went: the same window, at the user's HUD factor in use. */
+    private void layOutAgain() {
         layOut(getApplication().getCamera().getWidth(),
-                getApplication().getCamera().getHeight());
+                getApplication().getCamera().getHeight(), uiScale);
     }
 
     private void markHudDirty() {

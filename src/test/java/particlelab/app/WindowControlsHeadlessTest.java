@@ -64,6 +64,45 @@ class WindowControlsHeadlessTest {
     }
 
     @Test
+    void showingThePanelKeepsTheUsersHudFactor() throws Exception {
+        ParticleLabApp app = harness.app();
+        DemoState demo = harness.call(() -> app.getSwitcher().getSelected());
+        harness.call(() -> {
+            app.getWindowControls().setUiFactor(1.5f);
+            return true;
+        });
+        harness.awaitFrames(2);
+        int width = harness.call(() -> app.getCamera().getWidth());
+        int height = harness.call(() -> app.getCamera().getHeight());
+        try {
+            // F2 lays the HUD out again for the panel's slot, at once, within the key press:
+            // at the factor in use, not at 1 until the window controls notice a frame later.
+            for (int press = 0; press < 2; ++press) {
+                assertTrue(harness.call(() -> {
+                    pressF2(demo);
+                    return demo.isLaidOutFor(width, height, 1.5f);
+                }), "press " + press);
+            }
+        } finally {
+            harness.call(() -> {
+                app.getWindowControls().setUiFactor(1f);
+                return true;
+            });
+            harness.awaitFrames(2);
+        }
+    }
+
+    private static void pressF2(DemoState demo) {
+        for (KeyBinding binding : demo.getBindings()) {
+            if ("F2".equals(binding.getKeyLabel())) {
+                binding.press(0);
+                return;
+            }
+        }
+        throw new IllegalStateException(demo.getTitle() + " has no F2");
+    }
+
+    @Test
     void theWindowAndExportKeysAreInEveryDemosHelp() throws Exception {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
             String help = demo.getHelpText();
