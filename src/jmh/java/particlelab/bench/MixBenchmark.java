@@ -29,8 +29,10 @@ import particlelab.accuracy.OneParticleMixScene;
  * bookkeeping the demos do every step ({@code regime}).</li>
  * <li>{@code bulk*} ({@link BulkScene}): N particles, one step of all of them per invocation:
  * lecture-style objects, Particle objects through {@code step(Particle, h)}, the packed batch
- * {@code stepPacked} and the primitive loop: rows {@code bulk/<mix>/<path>/<N>} (the score is
- * per invocation; the runner divides it by N).</li>
+ * {@code stepPacked} (the scalar form the app runs by default) and the primitive loop: rows
+ * {@code bulk/<mix>/<path>/<N>} (the score is per invocation; the runner divides it by N);
+ * {@code bulkSharedBatchVector}, the batch on the Vector API for gravity and linear drag:
+ * rows {@code bulk/<mix>/shared-batch-vector/<N>}.</li>
  * <li>{@code objects*}: {@value #OBJECTS} Particle objects through {@code step(Particle[], h)}
  * and through {@code step(Particle, h)} with the bookkeeping: rows
  * {@code bulk/<mix>/shared-array/1000} and {@code bulk/<mix>/shared-objects-regime/1000}.</li>
@@ -71,6 +73,28 @@ public class MixBenchmark {
     public static class Bulk {
         /** The force mix. */
         @Param({"gravity", "linear", "quadratic", "thrust-linear"})
+        public String mix;
+        /** N. */
+        @Param({"1000", "10000", "100000", "1000000"})
+        public int particles;
+
+        BulkScene scene;
+
+        /** Build the scene. */
+        @Setup(Level.Trial)
+        public void build() {
+            scene = new BulkScene(ForceMix.named(mix), particles);
+        }
+    }
+
+    /**
+     * N particles under the mixes whose batch has a Vector API form ({@code gravity},
+     * {@code linear}); the JVM must have the API (the build's jmh task adds it).
+     */
+    @State(Scope.Thread)
+    public static class VectorBulk {
+        /** The force mix. */
+        @Param({"gravity", "linear"})
         public String mix;
         /** N. */
         @Param({"1000", "10000", "100000", "1000000"})
@@ -138,6 +162,11 @@ public class MixBenchmark {
     @Benchmark
     public Object bulkSharedBatch(Bulk s) {
         return s.scene.stepSharedBatch();
+    }
+
+    @Benchmark
+    public Object bulkSharedBatchVector(VectorBulk s) {
+        return s.scene.stepSharedBatchVector();
     }
 
     @Benchmark

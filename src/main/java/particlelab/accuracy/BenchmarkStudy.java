@@ -2,13 +2,15 @@ package particlelab.accuracy;
 
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.physics.ParticleIntegrator;
 
 /**
  * The report's own benchmarks, timed in this JVM one after another (side by side): every
  * stepper and the two references on one particle ({@link OneParticleScene}), then the bulk
  * forms for N particles ({@link BulkScene}), then every {@link ForceMix} on one particle
  * ({@link OneParticleMixScene}) and on N particles ({@link BulkScene}) along every path: the
- * same scenes and row names as the JMH benchmarks. Every scene relaunches on a schedule, so no
+ * same scenes and row names as the JMH benchmarks (the batch's Vector API form only where
+ * this JVM has the API). Every scene relaunches on a schedule, so no
  * state decays into subnormal floats. {@link #rowNames} lists the rows a run writes.
  */
 final class BenchmarkStudy {
@@ -54,6 +56,10 @@ final class BenchmarkStudy {
             for (int count : config.particleCounts()) {
                 for (String path : BULK_PATHS) {
                     names.add(BenchmarkTable.bulkName(mix, path, count));
+                    if (path.equals(BenchmarkTable.PATH_BATCH) && hasVectorRows(mix)) {
+                        names.add(BenchmarkTable.bulkName(mix,
+                                BenchmarkTable.PATH_BATCH_VECTOR, count));
+                    }
                 }
             }
         }
@@ -138,10 +144,20 @@ final class BenchmarkStudy {
             add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_BATCH, count),
                     meter.measure(units -> scene.stepSharedBatch(), count));
             progress.advance();
+            if (hasVectorRows(mix)) {
+                add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_BATCH_VECTOR,
+                        count), meter.measure(units -> scene.stepSharedBatchVector(), count));
+                progress.advance();
+            }
             add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_PRIMITIVE, count),
                     meter.measure(units -> scene.stepPrimitiveLoop(), count));
             progress.advance();
         }
+    }
+
+    /** True if the mix's bulk rows include the Vector API form: it has one, the JVM too. */
+    private static boolean hasVectorRows(ForceMix mix) {
+        return mix.hasVectorBatch() && ParticleIntegrator.isVectorApiAvailable();
     }
 
     private static List<String> names(BenchmarkTable table) {

@@ -18,8 +18,9 @@ import java.util.Locale;
  * (gravity + linear drag); then for every {@link ForceMix} {@code single/<mix>/<path>} (one
  * particle, {@link OneParticleMixScene}) and {@code bulk/<mix>/<path>/<N>} (N particles,
  * {@link BulkScene}), {@code <path>} one of {@value #PATH_LECTURE}, {@value #PATH_OBJECTS}
- * ({@code step(Particle, h)} on each particle), {@value #PATH_BATCH} (bulk only) and
- * {@value #PATH_PRIMITIVE}.
+ * ({@code step(Particle, h)} on each particle), {@value #PATH_BATCH} (bulk only, the scalar
+ * form the app runs by default), {@value #PATH_BATCH_VECTOR} (bulk only, gravity and linear
+ * drag in a JVM with the Vector API) and {@value #PATH_PRIMITIVE}.
  */
 public final class BenchmarkTable {
 
@@ -44,6 +45,11 @@ public final class BenchmarkTable {
     public static final String PATH_OBJECTS = "shared-objects";
     /** Path of a bulk mix row: {@code ParticleIntegrator.stepPacked} over planar arrays. */
     public static final String PATH_BATCH = "shared-batch";
+    /**
+     * Path of a bulk mix row: {@code stepPacked} on the Vector API, only for the mixes that
+     * have that form ({@link ForceMix#hasVectorBatch}) and in a JVM that has the API.
+     */
+    public static final String PATH_BATCH_VECTOR = "shared-batch-vector";
     /** Path of a mix row: the hand-written primitive loop for the mix. */
     public static final String PATH_PRIMITIVE = "primitive-loop";
 

@@ -47,6 +47,8 @@ public final class BulkScene {
     /** Steps of the packed arrays, by the batch form and the primitive loop together. */
     private int packedSteps;
     private final ParticleIntegrator integrator;
+    /** The same forces, the batch on the Vector API; null where that form does not exist. */
+    private final ParticleIntegrator vectorIntegrator;
     private final Vector3f gravity = new Vector3f(0f, -Gravity.STANDARD_G, 0f);
     private final float[] gravityPerAxis = {0f, -Gravity.STANDARD_G, 0f};
 
@@ -75,6 +77,15 @@ public final class BulkScene {
         this.mix = mix;
         this.count = count;
         integrator = mix.integrator();
+        // the batch path as the app runs it by default: the scalar passes (the Vector API
+        // only where the JVM was started with it, timed apart)
+        integrator.setVectorBatch(false);
+        if (mix.hasVectorBatch() && ParticleIntegrator.isVectorApiAvailable()) {
+            vectorIntegrator = mix.integrator();
+            vectorIntegrator.setVectorBatch(true);
+        } else {
+            vectorIntegrator = null;
+        }
         lecture = new LectureStyleParticle[count];
         objects = new Particle[count];
         positions = new float[3 * count];
@@ -168,6 +179,33 @@ public final class BulkScene {
     public Object stepSharedBatch() {
         relaunchPackedIfDue();
         integrator.stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
+        return positions;
+    }
+
+    /**
+     * Tell whether {@link #stepSharedBatchVector} can run: the mix has a Vector API form
+     * ({@link ForceMix#hasVectorBatch}) and this JVM has the Vector API.
+     *
+     * @return true if it can
+     */
+    public boolean hasVectorBatch() {
+        return vectorIntegrator != null;
+    }
+
+    /**
+     * Step the packed arrays once with the integrator's batch form on the Vector API.
+     *
+     * @return something the caller must consume
+     * @throws IllegalStateException if {@link #hasVectorBatch()} is false
+     */
+    public Object stepSharedBatchVector() {
+        if (vectorIntegrator == null) {
+            throw new IllegalStateException("no Vector API form of the batch for "
+                    + mix.id() + (ParticleIntegrator.isVectorApiAvailable() ? ""
+                    : " in a JVM started without --add-modules=jdk.incubator.vector"));
+        }
+        relaunchPackedIfDue();
+        vectorIntegrator.stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
         return positions;
     }
 

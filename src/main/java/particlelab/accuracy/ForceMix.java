@@ -105,6 +105,17 @@ public enum ForceMix {
     }
 
     /**
+     * Tell whether the batch step has two forms for this mix, the scalar passes and the
+     * Vector API ({@link ParticleIntegrator#setVectorBatch}): only without speed-dependent
+     * forces, where one velocity factor serves every particle.
+     *
+     * @return true for {@link #GRAVITY} and {@link #LINEAR}
+     */
+    public boolean hasVectorBatch() {
+        return quadraticDrag == 0f && thrustNewtons == 0f;
+    }
+
+    /**
      * Create the shared integrator for this mix, holding only the forces the mix has.
      *
      * @return a new integrator (not null)

@@ -30,9 +30,13 @@ final class MixTargets {
     /** Allocation below this (bytes per particle-step) counts as none: counter granularity. */
     static final double NO_BYTES = 0.5;
 
+    /** The plot's paths, in its order: the report's bulk paths, then the Vector API batch. */
+    private static final List<String> PLOT_PATHS = List.of(BenchmarkTable.PATH_LECTURE,
+            BenchmarkTable.PATH_OBJECTS, BenchmarkTable.PATH_BATCH,
+            BenchmarkTable.PATH_PRIMITIVE, BenchmarkTable.PATH_BATCH_VECTOR);
     private static final String[] PATH_LABELS = {"lecture style (new Vector3f each step)",
         "shared integrator, step(Particle, h)", "shared integrator, stepPacked",
-        "hand-written primitive loop"};
+        "hand-written primitive loop", "stepPacked on the Vector API (opt-in)"};
 
     private MixTargets() {
     }
@@ -76,16 +80,23 @@ final class MixTargets {
                 .append("× the primitive loop and at least ").append(num(PER_PARTICLE_VS_LECTURE))
                 .append("× faster than the lecture style; the batch `stepPacked` at most ")
                 .append(num(BATCH_VS_PRIMITIVE)).append("× the primitive loop at every N; both "
-                + "0 bytes per step. \"—\": the target is not set at that N.\n\n");
+                + "0 bytes per step. \"Vector API batch\" is `stepPacked` in a JVM started "
+                + "with `--add-modules=jdk.incubator.vector` (gravity and linear drag only; "
+                + "the app leaves it off unless asked, see docs/speed.md); \"batch\" is the "
+                + "form the app runs by default. \"—\": the target is not set at that N or "
+                + "the row was not measured.\n\n");
         md.append("| mix | N | primitive loop (ns) | lecture ÷ primitive | objects ÷ primitive "
-                + "| batch ÷ primitive | lecture ÷ objects | bytes/step objects, batch "
-                + "| objects ≤ ").append(num(PER_PARTICLE_VS_PRIMITIVE)).append("× primitive "
-                + "| objects ≥ ").append(num(PER_PARTICLE_VS_LECTURE)).append("× faster than "
-                + "lecture | batch ≤ ").append(num(BATCH_VS_PRIMITIVE)).append("× primitive "
-                + "| 0 bytes |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "| batch ÷ primitive | Vector API batch ÷ primitive | lecture ÷ objects "
+                + "| bytes/step objects, batch | objects ≤ ")
+                .append(num(PER_PARTICLE_VS_PRIMITIVE)).append("× primitive | objects ≥ ")
+                .append(num(PER_PARTICLE_VS_LECTURE)).append("× faster than lecture | batch ≤ ")
+                .append(num(BATCH_VS_PRIMITIVE)).append("× primitive | Vector API batch ≤ ")
+                .append(num(BATCH_VS_PRIMITIVE)).append("× primitive | 0 bytes |\n"
+                + "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         Tally perParticle = new Tally();
         Tally lecture = new Tally();
         Tally batch = new Tally();
+        Tally vectorBatch = new Tally();
         Tally bytes = new Tally();
         for (ForceMix mix : ForceMix.values()) {
             List<Integer> counts = new ArrayList<>();
@@ -97,6 +108,8 @@ final class MixTargets {
                 BenchmarkTable.Row obj = row(table, mix, BenchmarkTable.PATH_OBJECTS, count);
                 BenchmarkTable.Row bat = count == 1 ? null
                         : row(table, mix, BenchmarkTable.PATH_BATCH, count);
+                BenchmarkTable.Row vec = count == 1 ? null
+                        : row(table, mix, BenchmarkTable.PATH_BATCH_VECTOR, count);
                 if (prim == null || obj == null) {
                     continue;
                 }
@@ -104,12 +117,14 @@ final class MixTargets {
                 double objects = ratio(obj, prim);
                 double overLecture = ratio(lec, obj);
                 double batched = ratio(bat, prim);
+                double vectorised = ratio(vec, prim);
                 boolean perParticleSet = PER_PARTICLE_COUNTS.contains(count);
                 md.append("| ").append(mix.id()).append(" | ").append(count).append(" | ")
                         .append(fix(prim.nanosPerParticleStep(), 3)).append(" | ")
                         .append(times(ratio(lec, prim))).append(" | ")
                         .append(times(objects)).append(" | ")
                         .append(times(batched)).append(" | ")
+                        .append(times(vectorised)).append(" | ")
                         .append(times(overLecture)).append(" | ")
                         .append(fix(obj.bytesPerStep(), 1)).append(", ")
                         .append(bat == null ? "—" : fix(bat.bytesPerStep(), 1)).append(" | ")
@@ -120,11 +135,16 @@ final class MixTargets {
                                 overLecture >= PER_PARTICLE_VS_LECTURE, overLecture, where)
                                 : "—").append(" | ")
                         .append(bat != null ? batch.judge(batched <= BATCH_VS_PRIMITIVE,
-                                batched, where) : "—").append(" | ");
+                                batched, where) : "—").append(" | ")
+                        .append(vec != null ? vectorBatch.judge(
+                                vectorised <= BATCH_VS_PRIMITIVE, vectorised, where) : "—")
+                        .append(" | ");
                 boolean measured = !Double.isNaN(obj.bytesPerStep())
                         && (bat == null || !Double.isNaN(bat.bytesPerStep()));
-                double most = Math.max(obj.bytesPerStep(),
-                        bat == null ? 0.0 : bat.bytesPerStep());
+                double most = Math.max(Math.max(obj.bytesPerStep(),
+                        bat == null ? 0.0 : bat.bytesPerStep()),
+                        vec == null || Double.isNaN(vec.bytesPerStep()) ? 0.0
+                                : vec.bytesPerStep());
                 md.append(measured ? bytes.judge(most < NO_BYTES, most, where) : "unknown")
                         .append(" |\n");
             }
@@ -134,7 +154,9 @@ final class MixTargets {
                 .append("; objects ≥ ").append(num(PER_PARTICLE_VS_LECTURE))
                 .append("× faster than lecture ").append(lecture.summary(false, "×"))
                 .append("; batch ≤ ").append(num(BATCH_VS_PRIMITIVE)).append("× primitive ")
-                .append(batch.summary(true, "×")).append("; 0 bytes per step ")
+                .append(batch.summary(true, "×")).append("; Vector API batch ≤ ")
+                .append(num(BATCH_VS_PRIMITIVE)).append("× primitive ")
+                .append(vectorBatch.summary(true, "×")).append("; 0 bytes per step ")
                 .append(bytes.summary(true, " bytes"))
                 .append(". The primitive loops are written per mix, folded by hand "
                 + "(V ← (1 − h·σ)·V + h·g, one pass per axis when σ is a constant, one pass "
@@ -162,11 +184,10 @@ final class MixTargets {
             chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout
                     .Vertical);
             List<Integer> counts = bulkCounts(table, mix);
-            for (int p = 0; p < BenchmarkStudy.BULK_PATHS.size(); ++p) {
+            for (int p = 0; p < PLOT_PATHS.size(); ++p) {
                 List<double[]> points = new ArrayList<>();
                 for (int count : counts) {
-                    BenchmarkTable.Row row = row(table, mix, BenchmarkStudy.BULK_PATHS.get(p),
-                            count);
+                    BenchmarkTable.Row row = row(table, mix, PLOT_PATHS.get(p), count);
                     if (row != null && row.nanosPerParticleStep() > 0.0) {
                         points.add(new double[] {count, row.nanosPerParticleStep()});
                     }
@@ -176,6 +197,10 @@ final class MixTargets {
                 for (int i = 0; i < n.length; ++i) {
                     n[i] = points.get(i)[0];
                     ns[i] = points.get(i)[1];
+                }
+                if (n.length == 0 && p == PLOT_PATHS.size() - 1) {
+                    // the Vector API batch exists only for some mixes and JVMs: no line
+                    continue;
                 }
                 if (n.length == 0) {
                     // XChart refuses an empty chart: keep the panel, with the floor's point

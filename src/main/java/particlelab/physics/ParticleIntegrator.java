@@ -53,6 +53,12 @@ public final class ParticleIntegrator {
      * velocities (24 KB) stay in a core's first-level cache until their check has read them.
      */
     private static final int BATCH_BLOCK = 1024;
+    /**
+     * True if this JVM has the Vector API ({@code --add-modules jdk.incubator.vector}), which
+     * {@link VectorBatch} needs; asked of the boot layer, so {@link VectorBatch} is not loaded.
+     */
+    private static final boolean VECTOR_API =
+            ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
 
     private final Force[] forces;
     private final Gravity[] gravities;
@@ -135,6 +141,8 @@ public final class ParticleIntegrator {
     /** Scratch for {@link #regime}: a particle moving at 1 m/s along x, of the mass asked. */
     private final Particle movingScratch =
             new Particle(Vector3f.ZERO, Vector3f.UNIT_X, 1f);
+    /** True if the batch step with gravity and linear drag runs on {@link VectorBatch}. */
+    private boolean vectorBatch = VECTOR_API;
     /** Scratch for {@link #stepPacked}: the particle being stepped with other forces. */
     private final Particle packedParticle = new Particle();
 
@@ -246,11 +254,11 @@ public final class ParticleIntegrator {
      *
      * <p>Gravity and linear drag give every particle the same velocity factor
      * {@code 1 − h·b/m}, so the step is one simple pass per axis over adjacent floats that the
-     * JIT turns into vector instructions, a block of particles at a time. Quadratic drag and
-     * thrust depend on each particle's speed: one pass over the particles. Other forces
-     * ({@link Spring}, a student's own) are asked through the interface, one particle at a
-     * time through a scratch particle.
-     * Allocates nothing.
+     * JIT turns into vector instructions, a block of particles at a time (or, in a JVM with
+     * the Vector API, one pass per axis with the check fused in: {@link #setVectorBatch}).
+     * Quadratic drag and thrust depend on each particle's speed: one pass over the particles.
+     * Other forces ({@link Spring}, a student's own) are asked through the interface, one
+     * particle at a time through a scratch particle. Allocates nothing.
      *
      * <p>Like {@link #step(Particle, float)} it refuses to spread NaN: it checks that every
      * particle is finite after the step (a position is finite only if the velocity that moved
@@ -293,12 +301,54 @@ public final class ParticleIntegrator {
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
             factor = stepFactor;
-            bad = stepPackedByAxes(positions, velocities, count, stepSeconds);
+            bad = vectorBatch ? stepPackedByVectors(positions, velocities, count, stepSeconds)
+                    : stepPackedByAxes(positions, velocities, count, stepSeconds);
         }
         if (bad >= 0) {
             throw packedFailure(positions, velocities, count, bad % count, stepSeconds,
                     factor < -1f ? factor : Float.NaN);
         }
+    }
+
+    /**
+     * Tell whether this JVM can run the batch step on the Vector API: it was started with
+     * {@code --add-modules jdk.incubator.vector} (an incubating JDK module, which makes the
+     * JVM print a warning when it starts, so the app leaves it off unless asked; README,
+     * "Speed").
+     *
+     * @return true if {@link #setVectorBatch(boolean) setVectorBatch(true)} is allowed
+     */
+    public static boolean isVectorApiAvailable() {
+        return VECTOR_API;
+    }
+
+    /**
+     * Tell which code {@link #stepPacked} runs with gravity and linear drag (the only forces
+     * it has two forms for; quadratic drag, thrust and other forces run one form).
+     *
+     * @return true: the Vector API, its finiteness check fused with the step; false: the
+     *     scalar passes, which the JIT vectorises, and a separate check
+     */
+    public boolean isVectorBatch() {
+        return vectorBatch;
+    }
+
+    /**
+     * Choose the code {@link #stepPacked} runs with gravity and linear drag; both give
+     * identical numbers and refuse the same non-finite results, so this only matters for
+     * speed (the benchmarks time both). The default is the Vector API where this JVM has it.
+     *
+     * @param use true for the Vector API (only if {@link #isVectorApiAvailable()}), false for
+     *     the scalar passes
+     * @throws IllegalStateException if use is true and this JVM has no Vector API
+     */
+    public void setVectorBatch(boolean use) {
+        if (use && !VECTOR_API) {
+            throw new IllegalStateException("the batch step can use the Vector API only in a"
+                    + " JVM started with --add-modules jdk.incubator.vector, and this one was"
+                    + " not");
+        }
+        vectorBatch = use;
     }
 
     /**
@@ -922,6 +972,25 @@ public final class ParticleIntegrator {
             finite &= isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
                     & isSumFinite(positions, z, n);
         }
+        return finite ? -1 : searchNonFinite(positions, 3 * count);
+    }
+
+    /**
+     * The packed step with gravity and linear drag on the Vector API: each axis in one pass
+     * that also sums the new positions ({@link VectorBatch#stepAxis}).
+     *
+     * @return the index of the first non-finite value, or -1
+     */
+    private int stepPackedByVectors(float[] positions, float[] velocities, int count,
+            float stepSeconds) {
+        float factor = stepFactor;
+        // & rather than &&: every axis is stepped whatever the one before found
+        boolean finite = VectorBatch.stepAxis(positions, velocities, 0, count, factor,
+                        stepGravityX, stepSeconds)
+                & VectorBatch.stepAxis(positions, velocities, count, count, factor,
+                        stepGravityY, stepSeconds)
+                & VectorBatch.stepAxis(positions, velocities, 2 * count, count, factor,
+                        stepGravityZ, stepSeconds);
         return finite ? -1 : searchNonFinite(positions, 3 * count);
     }
 

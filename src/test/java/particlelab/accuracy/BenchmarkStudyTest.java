@@ -75,6 +75,12 @@ class BenchmarkStudyTest {
             for (int count : counts) {
                 for (String path : BULK_PATHS) {
                     names.add("bulk/" + mix + "/" + path + "/" + count);
+                    // the test JVM has the Vector API (build.gradle): gravity and linear drag
+                    // add the batch's second form after the first
+                    if (path.equals("shared-batch")
+                            && (mix.equals("gravity") || mix.equals("linear"))) {
+                        names.add("bulk/" + mix + "/shared-batch-vector/" + count);
+                    }
                 }
             }
         }
