@@ -145,8 +145,10 @@ final class BenchmarkStudy {
                     meter.measure(units -> scene.stepSharedBatch(), count));
             progress.advance();
             if (hasVectorRows(mix)) {
-                add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_BATCH_VECTOR,
-                        count), meter.measure(units -> scene.stepSharedBatchVector(), count));
+                String name = BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_BATCH_VECTOR,
+                        count);
+                add(table, name, meter.measureOnceCompiled(
+                        units -> scene.stepSharedBatchVector(), count));
                 progress.advance();
             }
             add(table, BenchmarkTable.bulkName(mix, BenchmarkTable.PATH_PRIMITIVE, count),

@@ -52,6 +52,9 @@ public final class CostMeter {
         }
     }
 
+    /** {@link #measureOnceCompiled}'s longest wait for an allocation-free call (ms). */
+    static final long MAX_COMPILE_WAIT_MILLIS = 5_000L;
+
     private final long warmupNanos;
     private final long roundNanos;
     private final int rounds;
@@ -78,12 +81,43 @@ public final class CostMeter {
      * @return the median time and the allocation per unit
      */
     public Measurement measure(Workload workload, int unitsPerCall) {
+        warmUp(workload, unitsPerCall);
+        return measureWarm(workload, unitsPerCall);
+    }
+
+    /**
+     * Measure a workload that allocates nothing once the JIT has compiled it, but a lot
+     * before (the batch on the Vector API: its vectors are objects until C2 keeps them in
+     * registers, some hundred milliseconds and thousands of calls into a run): warm up as
+     * {@link #measure} does, then on while a call still allocates, for at most
+     * {@value #MAX_COMPILE_WAIT_MILLIS} ms more.
+     *
+     * @param workload the work (not null)
+     * @param unitsPerCall as for {@link #measure}
+     * @return the median time and the allocation per unit
+     */
+    public Measurement measureOnceCompiled(Workload workload, int unitsPerCall) {
+        warmUp(workload, unitsPerCall);
+        long start = System.nanoTime();
+        long before;
+        do {
+            before = allocatedBytes();
+            sink += System.identityHashCode(workload.run(unitsPerCall));
+        } while (before >= 0 && allocatedBytes() - before > 0
+                && System.nanoTime() - start < MAX_COMPILE_WAIT_MILLIS * 1_000_000L);
+        return measureWarm(workload, unitsPerCall);
+    }
+
+    private void warmUp(Workload workload, int unitsPerCall) {
         long calls = 0;
         long start = System.nanoTime();
         while (System.nanoTime() - start < warmupNanos || calls < 3) {
             sink += System.identityHashCode(workload.run(unitsPerCall));
             ++calls;
         }
+    }
+
+    private Measurement measureWarm(Workload workload, int unitsPerCall) {
         double[] perUnit = new double[rounds];
         long totalUnits = 0;
         long bytesBefore = allocatedBytes();
