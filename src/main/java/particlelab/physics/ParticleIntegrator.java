@@ -301,8 +301,7 @@ public final class ParticleIntegrator {
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
             factor = stepFactor;
-            bad = vectorBatch ? stepPackedByVectors(positions, velocities, count, stepSeconds)
-                    : stepPackedByAxes(positions, velocities, count, stepSeconds);
+            bad = stepPackedByAxes(positions, velocities, count, stepSeconds);
         }
         if (bad >= 0) {
             throw packedFailure(positions, velocities, count, bad % count, stepSeconds,
@@ -951,9 +950,18 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * The packed step with gravity and linear drag, {@value #BATCH_BLOCK} particles at a time:
-     * each axis of the block in one pass, then the block's positions checked while they are
-     * still in the cache (a position is finite only if the velocity that moved it is).
+     * The packed step with gravity and linear drag, {@value #BATCH_BLOCK} particles at a time,
+     * in one of two forms:
+     * <ul>
+     * <li>scalar: each axis of the block in one pass, then the block's positions checked
+     * while they are still in the cache (a position is finite only if the velocity that
+     * moved it is);</li>
+     * <li>on the Vector API ({@link #vectorBatch}): each axis of the block in one pass that
+     * also sums the new positions ({@link VectorBatch#stepAxis}). Blocks rather than whole
+     * axes here too: over a loop of more than a few thousand vectors the JIT boxes the
+     * vector of sums now and then (2.3 kB per call measured at 10^5 particles on JDK 17),
+     * and blocks of 1024 allocate nothing.</li>
+     * </ul>
      *
      * @return the index of the first non-finite value, or -1
      */
@@ -965,38 +973,22 @@ public final class ParticleIntegrator {
             int n = Math.min(BATCH_BLOCK, count - start);
             int y = count + start;
             int z = 2 * count + start;
-            stepAxis(positions, velocities, start, n, factor, stepGravityX, stepSeconds);
-            stepAxis(positions, velocities, y, n, factor, stepGravityY, stepSeconds);
-            stepAxis(positions, velocities, z, n, factor, stepGravityZ, stepSeconds);
-            // & rather than &&: every block is checked until one fails, no branch per axis
-            finite &= isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
-                    & isSumFinite(positions, z, n);
-        }
-        return finite ? -1 : searchNonFinite(positions, 3 * count);
-    }
-
-    /**
-     * The packed step with gravity and linear drag on the Vector API: each axis of a block of
-     * {@value #BATCH_BLOCK} particles in one pass that also sums the new positions
-     * ({@link VectorBatch#stepAxis}). Blocks, not whole axes: over a loop of more than a few
-     * thousand vectors the JIT boxes the vector of sums now and then (2.3 kB per call
-     * measured at 10^5 particles on JDK 17), and blocks of 1024 allocate nothing.
-     *
-     * @return the index of the first non-finite value, or -1
-     */
-    private int stepPackedByVectors(float[] positions, float[] velocities, int count,
-            float stepSeconds) {
-        float factor = stepFactor;
-        boolean finite = true;
-        for (int start = 0; start < count; start += BATCH_BLOCK) {
-            int n = Math.min(BATCH_BLOCK, count - start);
-            // & rather than &&: every axis is stepped whatever the one before found
-            finite &= VectorBatch.stepAxis(positions, velocities, start, n, factor,
-                            stepGravityX, stepSeconds)
-                    & VectorBatch.stepAxis(positions, velocities, count + start, n, factor,
-                            stepGravityY, stepSeconds)
-                    & VectorBatch.stepAxis(positions, velocities, 2 * count + start, n,
-                            factor, stepGravityZ, stepSeconds);
+            // & rather than &&: every block is stepped and checked whatever the one before
+            // found, with no branch per axis
+            if (vectorBatch) {
+                finite &= VectorBatch.stepAxis(positions, velocities, start, n, factor,
+                                stepGravityX, stepSeconds)
+                        & VectorBatch.stepAxis(positions, velocities, y, n, factor,
+                                stepGravityY, stepSeconds)
+                        & VectorBatch.stepAxis(positions, velocities, z, n, factor,
+                                stepGravityZ, stepSeconds);
+            } else {
+                stepAxis(positions, velocities, start, n, factor, stepGravityX, stepSeconds);
+                stepAxis(positions, velocities, y, n, factor, stepGravityY, stepSeconds);
+                stepAxis(positions, velocities, z, n, factor, stepGravityZ, stepSeconds);
+                finite &= isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
+                        & isSumFinite(positions, z, n);
+            }
         }
         return finite ? -1 : searchNonFinite(positions, 3 * count);
     }
