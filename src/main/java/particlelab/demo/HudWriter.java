@@ -256,8 +256,8 @@ final class HudWriter {
 
     /**
      * The stability line: the smallest stability limit of the particles still moving, at their
-     * current states, naming the particle it belongs to with its damping rate (lambda) and, for
-     * a spring, its angular frequency omega = sqrt(k/m). Plain ASCII: the HUD font has no Greek.
+     * current states, naming the particle it belongs to with its damping rate λ and, for a
+     * spring, its angular frequency ω = √(k/m).
      */
     private void appendStabilityLine(StringBuilder text) {
         float limit = Float.POSITIVE_INFINITY;
@@ -288,12 +288,12 @@ final class HudWriter {
         Particle particle = limiting.getParticle();
         text.append("Stability: h < ");
         TextFormat.appendFixed(text, limit, 3).append(" s for '").append(limiting.getLabel())
-                .append("' (lambda = ");
+                .append("' (λ = ");
         TextFormat.appendFixed(text, limiting.getIntegrator().dampingRate(particle), 2)
                 .append(" /s");
         float stiffness = limiting.getIntegrator().stiffness(particle);
         if (stiffness > 0f) {
-            text.append(", omega = ");
+            text.append(", ω = ");
             TextFormat.appendFixed(text, (float) Math.sqrt(stiffness), 2).append(" /s");
         }
         text.append(")\n");

@@ -671,7 +671,7 @@ public final class IterativeAimingDemo extends DemoState {
             TextFormat.appendFixed(text, watchSeconds, 1).append(" s of flight\n");
         } else {
             text.append("Shots used: ").append(fired).append(" of ").append(attempts)
-                    .append(landed == attempts ? " (hit: |miss| <= " : " (aim: |miss| <= ");
+                    .append(landed == attempts ? " (hit: |miss| ≤ " : " (aim: |miss| ≤ ");
             TextFormat.appendFixed(text, TOLERANCE_METRES, 2).append(" m)\n");
         }
         if (mismatch) {

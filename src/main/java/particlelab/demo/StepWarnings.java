@@ -11,8 +11,8 @@ import particlelab.view.TextFormat;
  * stays up for {@link #SHOW_SECONDS} of real time after its cause:
  * <ul>
  * <li>a step past a limit of the Euler step ({@link StepRegime}): the most serious case of any
- * particle in the step, named with the particle, the limit and what it does (λ, "lambda", the
- * damping rate of small changes; σ, "sigma", the drag rate of the motion itself);</li>
+ * particle in the step, named with the particle, the limit and what it does (λ, lambda, the
+ * damping rate of small changes; σ, sigma, the drag rate of the motion itself);</li>
  * <li>blow-up: a step left a particle non-finite and the demo reset its scene; no other
  * warning replaces it while it is up;</li>
  * <li>hitch: one long frame was injected; says what the clock made of it.</li>
@@ -185,8 +185,8 @@ final class StepWarnings {
 
     /**
      * Append e.g. "UNSTABLE: h = 500.0 ms is beyond the stability limit 275.1 ms of 'spring':
-     * small changes of the motion grow every step instead of dying out". Plain ASCII: the HUD
-     * font has no Greek letters.
+     * small changes of the motion grow every step instead of dying out", or "h = 250.0 ms is
+     * beyond 2/σ = 200.0 ms of 'ball': ..." (the HUD font has the Greek letters).
      */
     private void appendLimit(StringBuilder text) {
         boolean serious = warningRegime.compareTo(StepRegime.UNSTABLE) >= 0;
@@ -201,13 +201,13 @@ final class StepWarnings {
     private static String limitName(StepRegime regime) {
         switch (regime) {
             case GROWS:
-                return "2/sigma = ";
+                return "2/σ = ";
             case UNSTABLE:
                 return "the stability limit ";
             case REVERSES:
-                return "1/sigma = ";
+                return "1/σ = ";
             default:
-                return "1/lambda = ";
+                return "1/λ = ";
         }
     }
 

@@ -305,7 +305,7 @@ class DemoStateHeadlessTest {
         });
         assertTrue(warning.startsWith("UNSTABLE: h = 250.0 ms"), warning);
         // Linear drag b/m = 10 /s: sigma = lambda, and h > 2/sigma grows the speed.
-        assertTrue(warning.contains("2/sigma = 200.0 ms of 'stiff': drag makes the speed grow"),
+        assertTrue(warning.contains("2/σ = 200.0 ms of 'stiff': drag makes the speed grow"),
                 warning);
     }
 

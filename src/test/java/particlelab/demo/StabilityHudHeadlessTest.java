@@ -51,7 +51,7 @@ class StabilityHudHeadlessTest {
         // At launch |V| = sqrt(200): quadratic lambda = 2·0.064·14.142 = 1.810 /s, limit
         // 2/lambda = 1.105 s, below linear drag's 2m/b = 2.222 s. No "k", no second limit.
         assertTrue(body.contains("Stability: h < 1.105 s for 'quadratic drag  F = -c |V|V'"
-                + " (lambda = 1.81 /s)\n"), body);
+                + " (λ = 1.81 /s)\n"), body);
         assertTrue(!body.contains("2.222") && !body.contains("any h"), body);
     }
 
@@ -89,8 +89,8 @@ class StabilityHudHeadlessTest {
             return new String[] {body, warning};
         });
         // Before: "no drag: any h is stable" beside a blow-up at 2/omega.
-        assertTrue(texts[0].contains("Stability: h < 0.500 s for 'sprung' (lambda = 0.00 /s,"
-                + " omega = 4.00 /s)\n"), texts[0]);
+        assertTrue(texts[0].contains("Stability: h < 0.500 s for 'sprung' (λ = 0.00 /s,"
+                + " ω = 4.00 /s)\n"), texts[0]);
         assertEquals("UNSTABLE: h = 550.0 ms is beyond the stability limit 500.0 ms of"
                 + " 'sprung': small changes of the motion grow every step instead of dying out",
                 texts[1]);
