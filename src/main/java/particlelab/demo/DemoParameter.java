@@ -302,15 +302,31 @@ public final class DemoParameter {
     }
 
     /**
-     * Write the declaration and its range, e.g. "b (linear drag) from 0.00 N s/m to 5.00 N s/m".
+     * Write a value as {@link #appendValue} does, in ASCII for a terminal that may not show
+     * more: a superscript 2 becomes {@code ^2} (m/s² → m/s^2).
+     */
+    private StringBuilder appendAsciiValue(StringBuilder text, float value) {
+        int start = text.length();
+        appendValue(text, value);
+        for (int i = text.length() - 1; i >= start; --i) {
+            if (text.charAt(i) == '\u00B2') {
+                text.replace(i, i + 1, "^2");
+            }
+        }
+        return text;
+    }
+
+    /**
+     * Write the declaration and its range for the command line, e.g. "b (linear drag) from
+     * 0.00 N s/m to 5.00 N s/m" (in ASCII: "g (gravity) from 1.0 m/s^2 to ...").
      *
      * @param text where to append (not null, modified)
      * @return text
      */
     public StringBuilder appendRange(StringBuilder text) {
         text.append(name).append(" (").append(label).append(") from ");
-        appendValue(text, min).append(" to ");
-        return appendValue(text, max);
+        appendAsciiValue(text, min).append(" to ");
+        return appendAsciiValue(text, max);
     }
 
     /**

@@ -231,7 +231,7 @@ public final class HelloAimingDemo extends DemoState {
         declareParameter(new DemoParameter("vx", "launch vx (next shot)",
                 "m/s", MIN_VX, MAX_VX, VX_STEP, DEFAULT_VX, 1, DemoParameter.Applies.LIVE,
                 this::applyVx));
-        declareParameter(new DemoParameter("g", "gravity", "m/s^2",
+        declareParameter(new DemoParameter("g", "gravity", "m/s²",
                 LaunchControl.MIN_G, LaunchControl.MAX_G, 0.1f, GRAVITY, 2,
                 DemoParameter.Applies.LIVE, this::setGravity));
     }

@@ -164,7 +164,7 @@ final class LaunchControl {
      * @return the declaration (not null)
      */
     DemoParameter gravityParameter() {
-        return new DemoParameter("g", "gravity", "m/s^2", MIN_G, MAX_G, 0.1f,
+        return new DemoParameter("g", "gravity", "m/s²", MIN_G, MAX_G, 0.1f,
                 Gravity.STANDARD_G, 2, DemoParameter.Applies.LIVE, value -> {
                     acceleration.set(0f, -value, 0f);
                     for (int i = 0; i < gravities.size(); ++i) {
