@@ -368,6 +368,24 @@ final class DemoScene {
     }
 
     /**
+     * Copy the screen rectangle of every post ({@link #addMarker}), from the ground to its
+     * top, into a list, for tests of the layout.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
+        float halfWidth = 0.5f * POST_RADIUS_FRACTION * sphereRadius * plane.getPixelsPerMetre();
+        for (int i = 0; i < markers.size(); ++i) {
+            Marker marker = markers.get(i);
+            float ground = plane.screenY(0f);
+            storeResult.add(new ScreenRect(plane.screenX(marker.x) - halfWidth, ground,
+                    2f * halfWidth, plane.screenY(marker.height) - ground));
+        }
+        return storeResult;
+    }
+
+    /**
      * Copy the screen rectangle of every scene text shown (posts' names, distance marks,
      * particles' labels) into a list, for tests of the layout.
      *
@@ -596,6 +614,19 @@ final class DemoScene {
         for (int i = 0; i < self; ++i) {
             if (particles.get(i).view.getLabelRect().intersects(place)) {
                 score += TEXT_PENALTY;
+            }
+        }
+        // a post (a target, a gun) standing from the ground to its height, with a margin of
+        // its own width on each side: as bad to cover as a sphere
+        float postHalfWidth = Math.max(1f, POST_RADIUS_FRACTION * radius);
+        float ground = plane.screenY(0f);
+        for (int i = 0; i < markers.size(); ++i) {
+            Marker marker = markers.get(i);
+            float postX = plane.screenX(marker.x);
+            if (postX + postHalfWidth > place.getX() && postX - postHalfWidth < place.getRight()
+                    && plane.screenY(marker.height) > place.getY()
+                    && ground < place.getTop()) {
+                score += SPHERE_PENALTY;
             }
         }
         for (int i = 0; i < particles.size(); ++i) {

@@ -603,6 +603,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Copy the screen rectangle of every post of the scene (targets, a gun) into a list: what
+     * a test checks particle labels against.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
+        return scene.copyPostRects(storeResult);
+    }
+
+    /**
      * Copy the screen rectangle of every text shown, HUD and scene, into a list: what a test
      * checks for overlaps. The scene's texts are left out while the help hides them.
      *

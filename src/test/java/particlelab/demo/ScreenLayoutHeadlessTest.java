@@ -199,15 +199,23 @@ class ScreenLayoutHeadlessTest {
         return problems;
     }
 
-    /** A particle's label covers no other sphere and no point of any trail. */
+    /** A particle's label covers no other sphere, no point of any trail and no post. */
     private static List<String> checkParticleLabels(DemoState demo, int width, int height,
             int frame) {
         List<String> problems = new ArrayList<>();
         PlaneView plane = demo.getPlaneView();
         List<DemoParticle> particles = demo.getParticles();
+        List<ScreenRect> posts = demo.copyPostRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
             ScreenRect label = particles.get(i).view.getLabelRect();
+            for (int p = 0; p < posts.size(); ++p) {
+                if (label.intersects(posts.get(p))) {
+                    problems.add(demo.getTitle() + " " + width + "x" + height + " frame "
+                            + frame + ": label of " + particles.get(i).getLabel()
+                            + " covers post " + p + " " + posts.get(p));
+                }
+            }
             for (int j = 0; j < particles.size(); ++j) {
                 Vector3f other = particles.get(j).getParticle().position;
                 float radius = particles.get(j).view.getRadius() * plane.getPixelsPerMetre();
