@@ -71,6 +71,8 @@ public final class ParticleIntegrator {
     private final Force[] others;
     /** The sum of the folded forces' change counts when they were last folded. */
     private int foldedChanges;
+    /** {@link FoldedForce#anyChangeCount()} when this integrator last looked. */
+    private int seenAnyChanges = FoldedForce.anyChangeCount();
     /** Folded: the summed field acceleration g per axis (m/s²). */
     private float gravityX;
     private float gravityY;
@@ -655,10 +657,17 @@ public final class ParticleIntegrator {
         return n;
     }
 
-    /** Fold again if a setter changed a folded force since the last fold: a few loads. */
+    /**
+     * Fold again if a setter changed a folded force since the last fold: one load while no
+     * folded force anywhere changed, this integrator's forces asked only after a change.
+     */
     private void foldIfChanged() {
-        if (changeCount() != foldedChanges) {
-            fold();
+        int anyChanges = FoldedForce.anyChangeCount();
+        if (anyChanges != seenAnyChanges) {
+            seenAnyChanges = anyChanges;
+            if (changeCount() != foldedChanges) {
+                fold();
+            }
         }
     }
 

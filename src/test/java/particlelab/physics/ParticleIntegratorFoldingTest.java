@@ -224,6 +224,52 @@ class ParticleIntegratorFoldingTest {
         assertBitwiseEqual(expected.velocity, particle.velocity);
     }
 
+    /**
+     * An integrator looks at its forces only after some folded force anywhere changed: a
+     * change of another integrator's force leaves it as it was, a change of a force two
+     * integrators share reaches both, and a change after another one was already seen is
+     * seen too.
+     */
+    @Test
+    void aSetterReachesEveryIntegratorHoldingTheForceAndNoOther() {
+        LinearDrag shared = new LinearDrag(0.9f);
+        LinearDrag alone = new LinearDrag(0.9f);
+        ParticleIntegrator first = new ParticleIntegrator(new Gravity(), shared);
+        ParticleIntegrator second = new ParticleIntegrator(new Gravity(), shared);
+        ParticleIntegrator other = new ParticleIntegrator(new Gravity(), alone);
+        Particle a = new Particle(new Vector3f(), new Vector3f(20f, 30f, 5f), 2f);
+        Particle b = new Particle(a.position, a.velocity, 2f);
+        Particle c = new Particle(a.position, a.velocity, 2f);
+        first.step(a, H);
+        second.step(b, H);
+        other.step(c, H);
+        // another integrator's force changed: other steps with b = 0.4 now, first still 0.9
+        alone.setCoefficient(0.4f);
+        ParticleIntegrator stillNine = new ParticleIntegrator(new Gravity(), new LinearDrag(0.9f));
+        ParticleIntegrator nowFour = new ParticleIntegrator(new Gravity(), new LinearDrag(0.4f));
+        Particle expectNine = new Particle(a.position, a.velocity, 2f);
+        Particle expectFour = new Particle(c.position, c.velocity, 2f);
+        first.step(a, H);
+        stillNine.step(expectNine, H);
+        other.step(c, H);
+        nowFour.step(expectFour, H);
+        assertBitwiseEqual(expectNine.velocity, a.velocity);
+        assertBitwiseEqual(expectFour.velocity, c.velocity);
+        // the shared force changed after first had seen the other change: both see it
+        shared.setCoefficient(0.1f);
+        ParticleIntegrator nowOne = new ParticleIntegrator(new Gravity(), new LinearDrag(0.1f));
+        Particle expectA = new Particle(a.position, a.velocity, 2f);
+        Particle expectB = new Particle(b.position, b.velocity, 2f);
+        first.step(a, H);
+        second.step(b, H);
+        nowOne.step(expectA, H);
+        nowOne.step(expectB, H);
+        assertBitwiseEqual(expectA.velocity, a.velocity);
+        assertBitwiseEqual(expectB.velocity, b.velocity);
+        assertEquals(0.1f / 2f, first.dampingRate(a), 0f);
+        assertEquals(0.1f / 2f, second.dampingRate(b), 0f);
+    }
+
     @ParameterizedTest
     @EnumSource(Mix.class)
     void foldedRatesAreTheForcesOwn(Mix mix) {
