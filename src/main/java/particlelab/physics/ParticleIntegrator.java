@@ -314,8 +314,8 @@ public final class ParticleIntegrator {
     /**
      * Tell whether this JVM can run the batch step on the Vector API: it was started with
      * {@code --add-modules jdk.incubator.vector} (an incubating JDK module, which makes the
-     * JVM print a warning when it starts, so the app leaves it off unless asked; README,
-     * "Speed").
+     * JVM print a warning when it starts, so the app leaves it off unless asked: README,
+     * "The Vector API, opt-in").
      *
      * @return true if {@link #setVectorBatch(boolean) setVectorBatch(true)} is allowed
      */
