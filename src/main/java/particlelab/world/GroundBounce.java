@@ -78,11 +78,7 @@ public final class GroundBounce {
      * @param newRestitution the restitution (from 0 to 1)
      */
     public void setRestitution(float newRestitution) {
-        if (!(newRestitution >= 0f && newRestitution <= 1f)) {
-            throw new IllegalArgumentException(
-                    "restitution e must be from 0 to 1, but was " + newRestitution);
-        }
-        restitution = newRestitution;
+        restitution = ImpulseResponse.checkRestitution(newRestitution);
     }
 
     /**

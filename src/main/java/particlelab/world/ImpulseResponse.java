@@ -83,11 +83,22 @@ public final class ImpulseResponse implements ContactResponse {
      * @param newRestitution the restitution (from 0 to 1)
      */
     public void setRestitution(float newRestitution) {
-        if (!(newRestitution >= 0f && newRestitution <= 1f)) {
+        restitution = checkRestitution(newRestitution);
+    }
+
+    /**
+     * Refuse a coefficient of restitution outside 0 to 1 (NaN included).
+     *
+     * @param restitution e
+     * @return e
+     * @throws IllegalArgumentException naming the value and the range
+     */
+    static float checkRestitution(float restitution) {
+        if (!(restitution >= 0f && restitution <= 1f)) {
             throw new IllegalArgumentException(
-                    "restitution e must be from 0 to 1, but was " + newRestitution);
+                    "restitution e must be from 0 to 1, but was " + restitution);
         }
-        restitution = newRestitution;
+        return restitution;
     }
 
     /**
