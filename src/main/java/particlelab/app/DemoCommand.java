@@ -123,6 +123,10 @@ public final class DemoCommand {
                         + Options.show(name) + "; give it once");
             }
             name = options.string(DEMO, name);
+            if (name != null && DemoCatalog.indexOf(name) < 0) {
+                // The demo first: its options mean nothing without it.
+                throw new UsageException(unknownDemo(name));
+            }
             frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
             String file = options.string(SCREENSHOT, null);
             screenshot = file == null ? null : new File(file);
@@ -161,11 +165,6 @@ public final class DemoCommand {
             return USAGE;
         }
         int index = name == null ? 0 : DemoCatalog.indexOf(name);
-        if (index < 0) {
-            err.println(Main.PROGRAM + " " + NAME + ": no demo named '" + Options.show(name)
-                    + "'; the demos are " + String.join(", ", DemoCatalog.names()));
-            return USAGE;
-        }
         List<DemoState> demos = DemoCatalog.createAll();
         try {
             applySettings(demos.get(index), settings);
@@ -185,6 +184,12 @@ public final class DemoCommand {
             out.println(profileLine(demos.get(index)));
         }
         return status;
+    }
+
+    /** Word the refusal of a demo name that is not in the catalog. */
+    private static String unknownDemo(String name) {
+        return "no demo named '" + Options.show(name) + "'; the demos are "
+                + String.join(", ", DemoCatalog.names());
     }
 
     /** Read --ui-scale: the user's factor on the HUD scale, 1 when not given. */
@@ -211,9 +216,10 @@ public final class DemoCommand {
         for (String setting : settings) {
             int equals = setting.indexOf('=');
             String name = equals < 0 ? setting : setting.substring(0, equals);
-            float value = equals < 0 ? Float.NaN : parseNumber(setting.substring(equals + 1));
+            // The grammar of every numeric option; an infinite value is no number either.
+            float value = equals < 0 ? Float.NaN : Options.number(setting.substring(equals + 1));
             String shown = SET + " " + Options.show(setting) + ": ";
-            if (equals < 0 || Float.isNaN(value)) {
+            if (equals < 0 || !Float.isFinite(value)) {
                 throw new UsageException(shown + "must be NAME=VALUE with a number or a"
                         + " fraction such as 1/60; " + demo.getParameters().describeAll());
             }
@@ -222,27 +228,6 @@ public final class DemoCommand {
             } catch (IllegalArgumentException refused) {
                 throw new UsageException(shown + refused.getMessage());
             }
-        }
-    }
-
-    /**
-     * Read a number such as {@code 0.5} or a fraction such as {@code 1/60}.
-     *
-     * @param text the text (not null)
-     * @return the value, or NaN if it is neither or not finite
-     */
-    private static float parseNumber(String text) {
-        if (text.isEmpty() || text.length() > Options.MAX_NUMBER_LENGTH) {
-            return Float.NaN;
-        }
-        try {
-            int slash = text.indexOf('/');
-            double value = slash < 0 ? Double.parseDouble(text)
-                    : Double.parseDouble(text.substring(0, slash))
-                            / Double.parseDouble(text.substring(slash + 1));
-            return Double.isFinite(value) ? (float) value : Float.NaN;
-        } catch (NumberFormatException notNumber) {
-            return Float.NaN;
         }
     }
 
@@ -321,8 +306,7 @@ public final class DemoCommand {
                 + ", e.g. 1920x1080, but was " + Options.show(value);
         int x = value.indexOf('x');
         if (x < 1 || x > 4 || value.length() - x - 1 < 1 || value.length() - x - 1 > 4
-                || !value.substring(0, x).chars().allMatch(Character::isDigit)
-                || !value.substring(x + 1).chars().allMatch(Character::isDigit)) {
+                || !isDigits(value.substring(0, x)) || !isDigits(value.substring(x + 1))) {
             throw new UsageException(problem);
         }
         int width = Integer.parseInt(value.substring(0, x));
@@ -476,6 +460,11 @@ public final class DemoCommand {
             return why;
         }
         return null;
+    }
+
+    /** ASCII digits only, as every whole-number option reads them (no sign here). */
+    private static boolean isDigits(String text) {
+        return !text.startsWith("+") && !text.startsWith("-") && Options.isWhole(text);
     }
 
     private static boolean isBlank(String value) {

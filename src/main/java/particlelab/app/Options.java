@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.Pattern;
 
 /**
  * The options of one subcommand, shared by every command of {@code particle-lab}: declare each
@@ -48,7 +47,6 @@ public final class Options {
     private static final int HELP_WIDTH = 79;
     /** Where option descriptions start in the help text, unless a name is longer. */
     private static final int HELP_DESCRIPTION_COLUMN = 24;
-    private static final Pattern WHOLE = Pattern.compile("[+-]?\\d+");
     /**
      * The longest number accepted, in characters: far more than a float's 9 significant
      * digits need, short enough that no argument can make parsing slow.
@@ -411,7 +409,7 @@ public final class Options {
         if (text == null) {
             return defaultValue;
         }
-        if (WHOLE.matcher(text).matches()) {
+        if (isWhole(text)) {
             try {
                 long value = Long.parseLong(text);
                 if (value >= min && value <= max) {
@@ -539,6 +537,23 @@ public final class Options {
         if (text.length() > MAX_NUMBER_LENGTH) {
             throw bad(name, "a number has at most " + MAX_NUMBER_LENGTH + " characters", text);
         }
+        return number(text);
+    }
+
+    /**
+     * Read a number in the grammar every option uses: a decimal
+     * {@code [+-]digits[.digits][(e|E)[+-]digits]} or a fraction {@code A/B} of two decimals,
+     * ASCII digits only, no spaces, no suffix ({@code 1f}), no hexadecimal, no words
+     * ({@code NaN}, {@code Infinity}). What {@code --set} and every numeric option read.
+     *
+     * @param text the text (not null)
+     * @return the value (infinite if it overflows the float range), or NaN if the text is
+     *     not a number in that grammar or longer than {@link #MAX_NUMBER_LENGTH} characters
+     */
+    static float number(String text) {
+        if (text.length() > MAX_NUMBER_LENGTH) {
+            return Float.NaN;
+        }
         int slash = text.indexOf('/');
         if (slash < 0) {
             return isDecimal(text) ? Float.parseFloat(text) : Float.NaN;
@@ -549,6 +564,18 @@ public final class Options {
             return Float.NaN;
         }
         return (float) (Double.parseDouble(numerator) / Double.parseDouble(denominator));
+    }
+
+    /**
+     * Test for a whole number {@code [+-]digits} of ASCII digits, the grammar of every
+     * whole-number option (full-width and other scripts' digits are not digits here).
+     *
+     * @param text the text (not null)
+     * @return true if it is one
+     */
+    static boolean isWhole(String text) {
+        int start = skipSign(text, 0);
+        return text.length() > start && skipDigits(text, start) == text.length();
     }
 
     /**
@@ -601,7 +628,22 @@ public final class Options {
      * @return the text to print (not null, no control characters)
      */
     static String show(String text) {
-        int shown = Math.min(text.length(), MAX_SHOWN_LENGTH);
+        return escape(text, MAX_SHOWN_LENGTH);
+    }
+
+    /**
+     * Show a text whole in a one-line message: control characters made visible as in
+     * {@link #show}, nothing cut (for a reason, which must be read to the end).
+     *
+     * @param text the text (not null)
+     * @return the text to print (not null, no control characters)
+     */
+    static String showWhole(String text) {
+        return escape(text, Integer.MAX_VALUE);
+    }
+
+    private static String escape(String text, int maxShown) {
+        int shown = Math.min(text.length(), maxShown);
         StringBuilder result = new StringBuilder(shown + 32);
         for (int i = 0; i < shown; ++i) {
             char c = text.charAt(i);
