@@ -63,9 +63,7 @@ public final class Main {
             code = runCommand(args, out, err);
         } catch (RuntimeException bug) {
             // Every bad input has its own message; this is a bug. One line, still.
-            err.println(PROGRAM + ": internal error, please report it with the command line: "
-                    + bug.getClass().getSimpleName() + ": "
-                    + Options.show(String.valueOf(bug.getMessage())));
+            err.println(internalErrorLine(bug));
             return INTERNAL_ERROR;
         }
         // checkError flushes out and tells whether any write to it failed.
@@ -108,6 +106,14 @@ public final class Main {
                     // "help COMMAND" is "COMMAND --help".
                     return run(new String[] {rest[0], Options.HELP}, out, err);
                 }
+                if (rest.length > 1 || rest.length == 1 && !Options.HELP.equals(rest[0])
+                        && !Options.SHORT_HELP.equals(rest[0])) {
+                    err.println(PROGRAM + " " + HELP + ": takes at most one command, e.g. "
+                            + PROGRAM + " " + HELP + " " + AimCommand.NAME + ", but was given "
+                            + Options.show(String.join(" ", rest)) + " (see " + PROGRAM
+                            + " --help)");
+                    return UsageException.EXIT_CODE;
+                }
                 out.print(help());
                 return 0;
             case Options.HELP:
@@ -120,6 +126,20 @@ public final class Main {
                         + COMMANDS + " (see " + PROGRAM + " --help)");
                 return UsageException.EXIT_CODE;
         }
+    }
+
+    /**
+     * Word the one line that reports a bug: the exception's class and its whole message (the
+     * message names the value and the limit; a cut one named neither), control characters
+     * escaped.
+     *
+     * @param bug the exception that escaped a command (not null)
+     * @return the line, without a line end (not null)
+     */
+    static String internalErrorLine(RuntimeException bug) {
+        return PROGRAM + ": internal error, please report it with the command line: "
+                + bug.getClass().getSimpleName() + ": "
+                + Options.showWhole(String.valueOf(bug.getMessage()));
     }
 
     /**
