@@ -109,7 +109,9 @@ public final class AimCommand {
                         + " 9.8.")
                 .value(TPF, "H", "time step h of the stepped shot (s, > 0), a decimal or a"
                         + " fraction such as 1/60. Default 1/60. A step that needs more than "
-                        + MAX_STEPS_PER_SHOT + " steps to cover S (S/(vx*h)) is refused.")
+                        + MAX_STEPS_PER_SHOT + " steps to cover S (S/(vx*h)) is refused, and"
+                        + " so is one longer than the " + MAX_FLIGHT_SECONDS + " s a shot may"
+                        + " fly.")
                 .value(MASS, "KG", "bullet mass m (kg, > 0). At least " + Particle.MIN_MASS_KG
                         + ", so that 1/m is a finite float. Default 1.")
                 .value(LINEAR_DRAG, "B", "linear drag b in F = -b*V (N*s/m = kg/s, >= 0)."
@@ -225,8 +227,14 @@ public final class AimCommand {
         }
 
         checkFloatRange(gravity, distance, vx);
+        checkStepLength(TPF, step);
+        checkStepLength(PREDICT_TPF, predictStep);
         checkStepCount(TPF, distance, vx, step);
         checkStepCount(PREDICT_TPF, distance, vx, predictStep);
+        if (DISCRETE.equals(method)) {
+            String stepOption = options.has(PREDICT_TPF) ? PREDICT_TPF : TPF;
+            checkDiscreteRange(stepOption, gravity, distance, vx, predictStep);
+        }
 
         ParticleIntegrator integrator = CommandSupport.integrator(
                 new Vector3f(0f, -gravity, 0f), linearDrag, quadraticDrag, 0f);
@@ -318,6 +326,35 @@ public final class AimCommand {
         double miss = landing.getX() - distance;
         return new AimResult(method, Math.abs(miss) <= tolerance, vx, firedVy,
                 landing.getTimeSeconds(), landing.getX(), distance, 1, "closed form");
+    }
+
+    /**
+     * Refuse a step longer than the {@link #MAX_FLIGHT_SECONDS} a shot may fly: its first step
+     * would end past the time allowed, and the shot would be reported as never landing.
+     */
+    private static void checkStepLength(String option, float step) {
+        if (step > MAX_FLIGHT_SECONDS) {
+            throw new UsageException(option + ": must be at most " + MAX_FLIGHT_SECONDS + " s,"
+                    + " the longest a shot is stepped for, but was " + step);
+        }
+    }
+
+    /**
+     * Refuse a discrete correction whose vy, about {@code g·(S/vx + h)/2}, is beyond the float
+     * range the bullet flies in, naming the step when its term {@code g·h/2} is the larger.
+     *
+     * @param stepOption the option the aiming step came from
+     */
+    private static void checkDiscreteRange(String stepOption, float gravity, float distance,
+            float vx, float step) {
+        double vy = LevelAim.discreteVy(gravity, distance, vx, step);
+        if (vy > Float.MAX_VALUE) {
+            String option = step > distance / (double) vx ? stepOption : VX;
+            throw new UsageException(option + ": the discrete correction needs vy = g*(S/vx +"
+                    + " h)/2 = " + vy + " m/s (h = " + step + " s), beyond the float range ("
+                    + Float.MAX_VALUE + ") the shot is stepped in; choose a smaller "
+                    + stepOption + " or " + G + " or " + DISTANCE + ", or a larger " + VX);
+        }
     }
 
     /**

@@ -58,8 +58,8 @@ public final class HitscanCommand {
                 + HEADER + ".")
                 .value(DISTANCE, "D", "distance to the target's centre d (m, > 0). Required.")
                 .value(SPEED, "V", "muzzle speed v (m/s, > 0). Required.")
-                .value(G, "G", "magnitude of gravity g, pointing down (m/s^2, > 0). Default"
-                        + " 9.8.")
+                .value(G, "G", "magnitude of gravity g, pointing down (m/s^2, at least "
+                        + Float.MIN_NORMAL + ", the smallest normal float). Default 9.8.")
                 .value(RADIUS, "R", "radius r of the target, a thin disc facing the gun (m,"
                         + " > 0). Default " + DEFAULT_RADIUS_METRES + ".")
                 .value(TPF, "H", "time step h of the projectile (s, > 0), a decimal or a"
@@ -95,7 +95,8 @@ public final class HitscanCommand {
     private static int runParsed(Options options, PrintStream out, PrintStream err) {
         float distance = options.positiveFloat(DISTANCE);
         float speed = options.positiveFloat(SPEED);
-        float gravity = options.positiveFloat(G, Gravity.STANDARD_G);
+        float gravity = options.floatAtLeast(G, Gravity.STANDARD_G, Float.MIN_NORMAL,
+                "the smallest normal float: a subnormal g underflows in the step's g*h");
         float radius = options.positiveFloat(RADIUS, DEFAULT_RADIUS_METRES);
         float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
         double steps = distance / ((double) speed * step);

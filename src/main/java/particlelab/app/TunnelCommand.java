@@ -4,6 +4,7 @@ import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import java.util.Random;
 import particlelab.collision.ThinWall;
+import particlelab.physics.NonFiniteStepException;
 import particlelab.world.Detection;
 import particlelab.world.TunnelShots;
 
@@ -109,9 +110,25 @@ public final class TunnelCommand {
             throw new UsageException(SPEED + ": a shot at " + speed + " m/s would take more"
                     + " than " + CollisionOptions.MAX_STEPS + " steps to cross the wall");
         }
+        // The farthest start, r + D/2 + 2*v*h before the wall's centre, must be a float.
+        double farthest = radius + 0.5 * thickness + 2.0 * speed * (double) step;
+        if (farthest > Float.MAX_VALUE) {
+            throw new UsageException(TPF + ": a shot at " + speed + " m/s with a step of "
+                    + step + " s starts up to r + D/2 + 2*v*h = " + farthest + " m before the"
+                    + " wall, beyond the float range (" + Float.MAX_VALUE + "); choose a"
+                    + " smaller " + TPF + ", " + SPEED + ", " + RADIUS + " or " + THICKNESS);
+        }
         ThinWall wall = new ThinWall(Vector3f.UNIT_X, 0f, thickness);
-        int hits = TunnelShots.fire(wall, speed, radius, step, detection, shots,
-                new Random(seed));
+        int hits;
+        try {
+            hits = TunnelShots.fire(wall, speed, radius, step, detection, shots,
+                    new Random(seed));
+        } catch (NonFiniteStepException nonFinite) {
+            // The elastic bounce off the wall, v - (1+e)*v = -v, overflows in its impulse.
+            throw new UsageException(SPEED + ": a shot at " + speed + " m/s left its bounce"
+                    + " off the wall non-finite (NaN or infinite): the impulse (1+e)*m*v"
+                    + " overflowed the float range; choose a smaller " + SPEED);
+        }
         double predicted = detection == Detection.OVERLAP
                 ? wall.overlapMissProbability(radius, speed, step) : 0.0;
         out.println(HEADER);
