@@ -101,6 +101,8 @@ public final class ReportCommand {
         if (System.getProperty("java.awt.headless") == null) {
             System.setProperty("java.awt.headless", "true");
         }
+        // The headless demos start Lemur, which logs its version at INFO: quiet as in demo.
+        DemoCommand.quietLogs();
         long start = System.nanoTime();
         PhysicsShare share;
         try {
