@@ -8,6 +8,12 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import particlelab.accuracy.SpeedVsErrorReport;
@@ -15,11 +21,46 @@ import particlelab.accuracy.SpeedVsErrorReport;
 /** {@code particle-lab report} through the launcher: options, errors, and a tiny run. */
 class ReportCommandTest {
 
+    /**
+     * The tiny run writes every file; and Lemur, started by the headless demos, logs nothing
+     * below a warning (it printed two INFO lines on stderr on JDK 17 and 25). The test JVM's
+     * logging file quiets INFO everywhere, so Lemur's logger is set back to the JDK's default
+     * INFO for the run, as in the installed app.
+     */
     @Test
     void tinyRunWritesEveryPromisedFileAndSaysWhere(@TempDir Path temp) {
         Path out = temp.resolve("report");
-        CommandRun run = CommandRun.of("report", "--tiny", "--out", out.toString());
+        Logger lemur = Logger.getLogger("com.simsilica.lemur");
+        Level level = lemur.getLevel();
+        List<LogRecord> records = new ArrayList<>();
+        Handler recorder = new Handler() {
+            @Override
+            public void publish(LogRecord logged) {
+                records.add(logged);
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        lemur.setLevel(Level.INFO);
+        lemur.addHandler(recorder);
+        CommandRun run;
+        try {
+            run = CommandRun.of("report", "--tiny", "--out", out.toString());
+        } finally {
+            lemur.removeHandler(recorder);
+            lemur.setLevel(level);
+        }
         assertEquals(0, run.code, run.toString());
+        for (LogRecord logged : records) {
+            assertTrue(logged.getLevel().intValue() >= Level.WARNING.intValue(),
+                    logged.getLevel() + " " + logged.getMessage());
+        }
         assertTrue(run.out.startsWith("Wrote the speed-vs-error report"), run.out);
         for (String name : SpeedVsErrorReport.FILES) {
             assertTrue(Files.isRegularFile(out.resolve(name)), "missing " + name);
