@@ -2,6 +2,7 @@ package particlelab.app;
 
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
+import java.util.Locale;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -87,9 +88,13 @@ public final class CollideCommand {
                         + " of the step that found the spheres overlapping); v1*, v2* the"
                         + " velocities just after it (m/s); p*_before, p*_after the total"
                         + " momentum m1*v1 + m2*v2 just before and after (kg*m/s); ke_before,"
-                        + " ke_after the total kinetic energy (J). Momentum is conserved; the"
-                        + " energy lost is 0.5*mu*(1-e^2)*v_n^2, mu = m1*m2/(m1+m2), v_n the"
-                        + " normal approach speed.")
+                        + " ke_after the total kinetic energy (J). Momentum is conserved (when"
+                        + " rounding the velocities to floats loses more than "
+                        + (float) (100.0 * LOST_MOMENTUM_FRACTION) + "% of the momentum the"
+                        + " impulse exchanged, as when the masses differ by many orders, one"
+                        + " warning on stderr says how much); the energy lost is"
+                        + " 0.5*mu*(1-e^2)*v_n^2, mu = m1*m2/(m1+m2), v_n the normal approach"
+                        + " speed.")
                 .note("Exit status: 0 on success; 2 on a bad command line (spheres overlapping"
                         + " at the start included), or when the spheres never meet or the"
                         + " overlap test steps past their impact, with one line on stderr.");
@@ -144,7 +149,8 @@ public final class CollideCommand {
                     + (float) (100.0 * recorder.lostMomentum / recorder.exchangedMomentum)
                     + "% of the " + (float) recorder.exchangedMomentum + " kg*m/s the impulse"
                     + " exchanged: a velocity change j/m too small for the float velocity it is"
-                    + " added to is rounded away (m1/m2 = " + m1 / (double) m2 + "); the"
+                    + " added to is rounded away (m1/m2 = "
+                    + String.format(Locale.ROOT, "%.1e", m1 / (double) m2) + "); the"
                     + " momentum columns, summed in double, may not show it; carrying on");
         }
         out.println(HEADER);

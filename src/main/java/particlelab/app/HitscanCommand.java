@@ -96,7 +96,8 @@ public final class HitscanCommand {
         float distance = options.positiveFloat(DISTANCE);
         float speed = options.positiveFloat(SPEED);
         float gravity = options.floatAtLeast(G, Gravity.STANDARD_G, Float.MIN_NORMAL,
-                "the smallest normal float: a subnormal g underflows in the step's g*h");
+                "the smallest normal float, as for masses: a subnormal g is lost to underflow"
+                        + " in the step's g*h");
         float radius = options.positiveFloat(RADIUS, DEFAULT_RADIUS_METRES);
         float step = options.positiveFloat(TPF, CommandSupport.DEFAULT_STEP_SECONDS);
         double steps = distance / ((double) speed * step);

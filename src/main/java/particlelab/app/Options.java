@@ -28,8 +28,9 @@ import java.util.Map;
  * value, and {@code --name} alone for flags; {@code -h} and {@code --help} are always declared.
  * A value may start with a single minus ({@code --g 0,-9.8,0}); a token starting with
  * {@code --} is never taken as a value. Numbers are decimals ({@code 0.5}, {@code -1e-3}) or
- * fractions of two decimals ({@code 1/60}); {@code NaN} and infinities are refused. Vectors are
- * three numbers separated by commas, {@code X,Y,Z}.
+ * fractions of two decimals ({@code 1/60}), in ASCII digits ({@link #number}, which
+ * {@code demo --set} reads too); {@code NaN} and infinities are refused. Vectors are three
+ * numbers separated by commas, {@code X,Y,Z}.
  *
  * <p>Every error is a {@link UsageException} whose message is one line naming the option, the
  * bad value and what is allowed: {@code --mass: must be a finite number > 0, but was -1}.
