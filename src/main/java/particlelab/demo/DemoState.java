@@ -117,6 +117,8 @@ public abstract class DemoState extends BaseAppState {
     private final LaunchReach reach = new LaunchReach();
 
     private boolean sceneCreated;
+    /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
+    private boolean creatingScene;
     private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
@@ -160,7 +162,9 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Declare the particles ({@link #addParticle}) and the view ({@link #setView}). Called once,
-     * from {@link #initialize(Application)}.
+     * the first time the world, the particles or the window need the scene: so a demo's
+     * physics runs without jME. Create no jME object here (the views come from the
+     * declarations, later).
      */
     protected abstract void createScene();
 
@@ -463,6 +467,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live world (not null)
      */
     public World getWorld() {
+        ensureScene();
         return world;
     }
 
@@ -481,6 +486,7 @@ public abstract class DemoState extends BaseAppState {
      * @return an unmodifiable live list (not null)
      */
     public List<DemoParticle> getParticles() {
+        ensureScene();
         return particlesView;
     }
 
@@ -787,6 +793,7 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
+        ensureScene();
         hudWriter.write(storeResult, isSceneOver());
         writeHudLines(storeResult);
         return storeResult;
@@ -796,16 +803,13 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     protected void initialize(Application app) {
-        createScene();
-        sceneCreated = true;
-        getParameters().start();
-        declareSharedKeys();
-        declareKeys();
+        ensureScene();
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
         frameLaunches();
         scene.build(assets, font, sceneNode);
+        world.addStepListener(scene.getTrailWriter());
         ghosts.build(assets, font, sceneNode, world);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
@@ -828,6 +832,7 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     protected void cleanup(Application app) {
+        world.removeStepListener(scene.getTrailWriter());
         sceneNode.detachAllChildren();
     }
 
@@ -1049,7 +1054,10 @@ public abstract class DemoState extends BaseAppState {
         }
     }
 
-    /** After the world's step: the stop at the ground, the trails, the demo's hook. */
+    /**
+     * After the world's step: the export's rows, the stop at the ground, the demo's hook. The
+     * trails are the view's: {@link DemoScene}'s own listener writes them.
+     */
     private void finishStep(float stepSeconds) {
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
@@ -1061,11 +1069,29 @@ public abstract class DemoState extends BaseAppState {
             demoParticle.getBody().copyPreviousPosition(previousPosition);
             // Flight time, and the lecture's stop at the ground, inside the step.
             demoParticle.recordStep(previousPosition, stepSeconds);
-            demoParticle.view.getTrail().add(demoParticle.getParticle().position);
         }
         ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
         warnings.endStep();
+    }
+
+    /**
+     * Declare the scene the first time anything needs it (the world, the particles, the HUD's
+     * text or the window): the particles, then the parameters and the keys. So {@code new DragDemo().getWorld().step(h)} steps the demo's physics with no jME
+     * application at all; the views are built later, by {@link #initialize}, if a window
+     * comes.
+     */
+    private void ensureScene() {
+        if (sceneCreated || creatingScene) {
+            return;
+        }
+        creatingScene = true;
+        createScene();
+        creatingScene = false;
+        sceneCreated = true;
+        getParameters().start();
+        declareSharedKeys();
+        declareKeys();
     }
 
     private void recoverFromBlowUp() {
