@@ -673,6 +673,7 @@ public abstract class DemoState extends BaseAppState {
      * which allocates, and the camera reframed.
      */
     public void restart() {
+        ensureScene();
         if (world.isStepping()) {
             restartRequested = true;
             return;
@@ -750,6 +751,25 @@ public abstract class DemoState extends BaseAppState {
      * @param tpf the frame time (in seconds, finite, &ge;0)
      */
     public void advance(float tpf) {
+        advancePhysics(tpf);
+        afterFrame();
+        world.getImpacts().clear();
+        scene.updateViews();
+        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
+        warnings.age(tpf);
+        hudWriter.age(tpf);
+    }
+
+    /**
+     * Advance the simulation by one frame and nothing else: the hitch, the clock's steps of
+     * the world, a blow-up's recovery and a restart asked for inside a step. Touches no view,
+     * so a test drives a demo's physics with it and no jME application; {@link #advance} is
+     * this plus the views.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advancePhysics(float tpf) {
+        ensureScene();
         float frameSeconds = tpf;
         if (pendingHitchSeconds > 0f) {
             frameSeconds = pendingHitchSeconds;
@@ -768,12 +788,6 @@ public abstract class DemoState extends BaseAppState {
             }
         }
         physicsTimes.record(System.nanoTime() - physicsStart);
-        afterFrame();
-        world.getImpacts().clear();
-        scene.updateViews();
-        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
-        warnings.age(tpf);
-        hudWriter.age(tpf);
     }
 
     /**
