@@ -8,9 +8,10 @@ import java.util.Arrays;
 
 /**
  * The {@code particle-lab} launcher: with no arguments it opens the window; otherwise the first
- * argument names a subcommand ({@code trajectory}, {@code aim}, {@code demo}, {@code report},
- * {@code help}). Each subcommand returns an exit code; {@link #main} exits with it only when it
- * is not zero, so a window keeps running after {@code main} returns.
+ * argument names a subcommand, one of {@link Commands} or {@code help}. Each subcommand returns
+ * an exit code; {@link #main} exits with it only when it is not zero, so a window keeps running
+ * after {@code main} returns. The list of commands in the help and in the "unknown command"
+ * line is made from {@link Commands}.
  */
 public final class Main {
 
@@ -23,12 +24,13 @@ public final class Main {
     /** The help subcommand: alone, or followed by a command whose help to show. */
     public static final String HELP = "help";
 
-    private static final String DEMO = DemoCommand.NAME;
-    private static final String REPORT = ReportCommand.NAME;
-    private static final String COMMANDS = TrajectoryCommand.NAME + ", " + AimCommand.NAME
-            + ", " + HitscanCommand.NAME
-            + ", " + BounceCommand.NAME + ", " + CollideCommand.NAME + ", " + TunnelCommand.NAME
-            + ", " + RotateCommand.NAME + ", " + DEMO + ", " + REPORT + ", " + HELP;
+    /** Where the summaries start in the help's command list (in columns). */
+    private static final int SUMMARY_COLUMN = 14;
+    /** The help's lines end by this column, so they fit an 80-column terminal. */
+    private static final int HELP_WIDTH = 76;
+    /** The summary of {@link #HELP}, which is the launcher's own and not in {@link Commands}. */
+    private static final String HELP_SUMMARY =
+            "show this help; help COMMAND shows that command's help";
 
     private Main() {
     }
@@ -82,25 +84,11 @@ public final class Main {
         }
         String command = args[0];
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        Command declared = Commands.find(command);
+        if (declared != null) {
+            return declared.runner().run(rest, out, err);
+        }
         switch (command) {
-            case TrajectoryCommand.NAME:
-                return TrajectoryCommand.run(rest, out, err);
-            case AimCommand.NAME:
-                return AimCommand.run(rest, out, err);
-            case HitscanCommand.NAME:
-                return HitscanCommand.run(rest, out, err);
-            case BounceCommand.NAME:
-                return BounceCommand.run(rest, out, err);
-            case CollideCommand.NAME:
-                return CollideCommand.run(rest, out, err);
-            case TunnelCommand.NAME:
-                return TunnelCommand.run(rest, out, err);
-            case RotateCommand.NAME:
-                return RotateCommand.run(rest, out, err);
-            case DEMO:
-                return DemoCommand.run(rest, out, err);
-            case REPORT:
-                return ReportCommand.run(rest, out, err);
             case HELP:
                 if (rest.length == 1 && !rest[0].startsWith("-")) {
                     // "help COMMAND" is "COMMAND --help".
@@ -123,7 +111,7 @@ public final class Main {
             default:
                 err.println(PROGRAM + ": unknown command " + Options.show(command)
                         + "; the commands are "
-                        + COMMANDS + " (see " + PROGRAM + " --help)");
+                        + commandNames() + " (see " + PROGRAM + " --help)");
                 return UsageException.EXIT_CODE;
         }
     }
@@ -155,21 +143,7 @@ public final class Main {
                 + "With no command, opens the window with the lecture's demos.\n"
                 + "\n"
                 + "Commands:\n"
-                + "  trajectory  print one particle's stepped trajectory as CSV\n"
-                + "  aim         find vy that lands a level shot at distance S (lecture,\n"
-                + "              discrete or iterative) and fire it\n"
-                + "  hitscan     the straight-line cheat against a stepped projectile: the\n"
-                + "              drop, and whether it still hits, as CSV\n"
-                + "  bounce      drop a ball on the ground; one CSV row per impact\n"
-                + "  collide     two spheres until their first impact: velocities, momentum,\n"
-                + "              kinetic energy before and after, as CSV\n"
-                + "  tunnel      fire shots at a thin wall: how many the overlap or swept test\n"
-                + "              misses, as CSV\n"
-                + "  rotate      spin one torque-free rigid body: det R, drift from a rotation,\n"
-                + "              angle error, omega, energy and |L| per step, as CSV\n"
-                + "  demo        open the window on one demo (--list, --frames, --screenshot)\n"
-                + "  report      write the accuracy and speed report\n"
-                + "  help        show this help; help COMMAND shows that command's help\n"
+                + commandList()
                 + "\n"
                 + "Every option of a command, with defaults and units: " + PROGRAM
                 + " COMMAND --help.\n"
@@ -179,5 +153,45 @@ public final class Main {
                 + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr;\n"
                 + "1 when the output cannot be written (stdout closed or full) or the window\n"
                 + "cannot run.\n";
+    }
+
+    /** "trajectory, aim, ..., help": every command's name, in help order. */
+    private static String commandNames() {
+        StringBuilder names = new StringBuilder();
+        for (Command command : Commands.all()) {
+            names.append(command.name()).append(", ");
+        }
+        return names.append(HELP).toString();
+    }
+
+    /** The help's command list: each name, then its summary wrapped at {@link #HELP_WIDTH}. */
+    private static String commandList() {
+        StringBuilder list = new StringBuilder();
+        for (Command command : Commands.all()) {
+            appendSummary(command.name(), command.summary(), list);
+        }
+        appendSummary(HELP, HELP_SUMMARY, list);
+        return list.toString();
+    }
+
+    private static void appendSummary(String name, String summary, StringBuilder list) {
+        StringBuilder line = new StringBuilder("  ").append(name);
+        for (String word : summary.split(" ")) {
+            boolean first = line.length() <= SUMMARY_COLUMN;
+            if (!first && line.length() + 1 + word.length() > HELP_WIDTH) {
+                list.append(line).append('\n');
+                line.setLength(0);
+                first = true;
+            }
+            if (first) {
+                while (line.length() < SUMMARY_COLUMN) {
+                    line.append(' ');
+                }
+            } else {
+                line.append(' ');
+            }
+            line.append(word);
+        }
+        list.append(line).append('\n');
     }
 }

@@ -20,6 +20,8 @@ import particlelab.view.SceneLabel;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextMeasure;
 import particlelab.view.Trail;
+import particlelab.world.StepListener;
+import particlelab.world.World;
 
 /**
  * What a demo's scene shows and where the camera looks: the region of the x-y plane the camera
@@ -110,6 +112,21 @@ final class DemoScene {
     private float[] nearX = new float[0];
     private float[] nearY = new float[0];
     private int nearCount;
+    /**
+     * The view's own listener on the demo's world: after each step, every particle the step
+     * moved adds its position to its trail. The step itself writes no view.
+     */
+    private final StepListener trailWriter = new StepListener() {
+        @Override
+        public void afterStep(World stepping, float stepSeconds) {
+            for (int i = 0; i < particles.size(); ++i) {
+                DemoParticle particle = particles.get(i);
+                if (particle.steppedThisStep && particle.view != null) {
+                    particle.view.getTrail().add(particle.getParticle().position);
+                }
+            }
+        }
+    };
 
     /**
      * Create the scene of one demo, with the default region.
@@ -402,6 +419,16 @@ final class DemoScene {
             storeResult.add(new ScreenRect().set(particles.get(i).view.getLabelRect()));
         }
         return storeResult;
+    }
+
+    /**
+     * Access the listener that writes the trails after each step, for the demo to register on
+     * its world once the views are built (and to remove when they go).
+     *
+     * @return the listener (not null)
+     */
+    StepListener getTrailWriter() {
+        return trailWriter;
     }
 
     /**

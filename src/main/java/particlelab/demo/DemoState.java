@@ -117,6 +117,8 @@ public abstract class DemoState extends BaseAppState {
     private final LaunchReach reach = new LaunchReach();
 
     private boolean sceneCreated;
+    /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
+    private boolean creatingScene;
     private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
@@ -160,7 +162,9 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Declare the particles ({@link #addParticle}) and the view ({@link #setView}). Called once,
-     * from {@link #initialize(Application)}.
+     * the first time the world, the particles or the window need the scene: so a demo's
+     * physics runs without jME. Create no jME object here (the views come from the
+     * declarations, later).
      */
     protected abstract void createScene();
 
@@ -463,6 +467,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live world (not null)
      */
     public World getWorld() {
+        ensureScene();
         return world;
     }
 
@@ -481,6 +486,7 @@ public abstract class DemoState extends BaseAppState {
      * @return an unmodifiable live list (not null)
      */
     public List<DemoParticle> getParticles() {
+        ensureScene();
         return particlesView;
     }
 
@@ -667,6 +673,7 @@ public abstract class DemoState extends BaseAppState {
      * which allocates, and the camera reframed.
      */
     public void restart() {
+        ensureScene();
         if (world.isStepping()) {
             restartRequested = true;
             return;
@@ -744,6 +751,25 @@ public abstract class DemoState extends BaseAppState {
      * @param tpf the frame time (in seconds, finite, &ge;0)
      */
     public void advance(float tpf) {
+        advancePhysics(tpf);
+        afterFrame();
+        world.getImpacts().clear();
+        scene.updateViews();
+        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
+        warnings.age(tpf);
+        hudWriter.age(tpf);
+    }
+
+    /**
+     * Advance the simulation by one frame and nothing else: the hitch, the clock's steps of
+     * the world, a blow-up's recovery and a restart asked for inside a step. Touches no view,
+     * so a test drives a demo's physics with it and no jME application; {@link #advance} is
+     * this plus the views.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advancePhysics(float tpf) {
+        ensureScene();
         float frameSeconds = tpf;
         if (pendingHitchSeconds > 0f) {
             frameSeconds = pendingHitchSeconds;
@@ -762,12 +788,6 @@ public abstract class DemoState extends BaseAppState {
             }
         }
         physicsTimes.record(System.nanoTime() - physicsStart);
-        afterFrame();
-        world.getImpacts().clear();
-        scene.updateViews();
-        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
-        warnings.age(tpf);
-        hudWriter.age(tpf);
     }
 
     /**
@@ -787,6 +807,7 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public StringBuilder formatHud(StringBuilder storeResult) {
+        ensureScene();
         hudWriter.write(storeResult, isSceneOver());
         writeHudLines(storeResult);
         return storeResult;
@@ -796,16 +817,13 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     protected void initialize(Application app) {
-        createScene();
-        sceneCreated = true;
-        getParameters().start();
-        declareSharedKeys();
-        declareKeys();
+        ensureScene();
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
         frameLaunches();
         scene.build(assets, font, sceneNode);
+        world.addStepListener(scene.getTrailWriter());
         ghosts.build(assets, font, sceneNode, world);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
@@ -828,6 +846,7 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     protected void cleanup(Application app) {
+        world.removeStepListener(scene.getTrailWriter());
         sceneNode.detachAllChildren();
     }
 
@@ -1049,7 +1068,10 @@ public abstract class DemoState extends BaseAppState {
         }
     }
 
-    /** After the world's step: the stop at the ground, the trails, the demo's hook. */
+    /**
+     * After the world's step: the export's rows, the stop at the ground, the demo's hook. The
+     * trails are the view's: {@link DemoScene}'s own listener writes them.
+     */
     private void finishStep(float stepSeconds) {
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
@@ -1061,11 +1083,29 @@ public abstract class DemoState extends BaseAppState {
             demoParticle.getBody().copyPreviousPosition(previousPosition);
             // Flight time, and the lecture's stop at the ground, inside the step.
             demoParticle.recordStep(previousPosition, stepSeconds);
-            demoParticle.view.getTrail().add(demoParticle.getParticle().position);
         }
         ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
         warnings.endStep();
+    }
+
+    /**
+     * Declare the scene the first time anything needs it (the world, the particles, the HUD's
+     * text or the window): the particles, then the parameters and the keys. So {@code new DragDemo().getWorld().step(h)} steps the demo's physics with no jME
+     * application at all; the views are built later, by {@link #initialize}, if a window
+     * comes.
+     */
+    private void ensureScene() {
+        if (sceneCreated || creatingScene) {
+            return;
+        }
+        creatingScene = true;
+        createScene();
+        creatingScene = false;
+        sceneCreated = true;
+        getParameters().start();
+        declareSharedKeys();
+        declareKeys();
     }
 
     private void recoverFromBlowUp() {

@@ -2,8 +2,16 @@ package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -80,12 +88,80 @@ class MainTest {
         CommandRun run = CommandRun.of(help);
         assertEquals(0, run.code);
         assertEquals("", run.err);
-        for (String command : new String[] {"trajectory", "aim", "demo", "report"}) {
-            assertTrue(run.out.contains("\n  " + command + " "), command + " in\n" + run.out);
+        for (Command command : Commands.all()) {
+            // The summary is wrapped: compare words only.
+            String words = run.out.replaceAll("\\s+", " ");
+            assertTrue(words.contains(" " + command.name() + " " + command.summary() + " "),
+                    command.name() + " and its summary in\n" + run.out);
+            assertTrue(run.out.contains("\n  " + command.name() + " "),
+                    command.name() + " in\n" + run.out);
         }
+        assertTrue(run.out.contains("\n  help "));
         assertTrue(run.out.contains("particle-lab demo --help"));
         assertTrue(run.out.contains("particle-lab report --help"));
         assertFitsEightyColumns(run.out);
+    }
+
+    @Test
+    void anUnknownCommandIsRefusedNamingEveryCommand() {
+        CommandRun run = CommandRun.of("fly", "--far");
+        assertEquals(2, run.code);
+        for (Command command : Commands.all()) {
+            assertTrue(run.err.contains(command.name() + ", "), command.name() + " in " + run);
+        }
+        assertTrue(run.err.contains(", help "), run.toString());
+    }
+
+    /**
+     * Every declared command: its --help is its declared options' help, and a bad option is
+     * refused in one line naming it, before the command does anything (the demo opens no
+     * window, the report writes nothing).
+     */
+    @Test
+    void everyDeclaredCommandHasHelpAndRefusesABadOption() {
+        assertEquals(9, Commands.all().size(), "the launcher's commands");
+        for (Command command : Commands.all()) {
+            CommandRun help = CommandRun.of(command.name(), "--help");
+            assertEquals(0, help.code, command.name() + ": " + help);
+            assertEquals("", help.err, command.name() + ": " + help);
+            assertEquals(command.options().get().help(), help.out, command.name());
+            assertTrue(help.out.startsWith("Usage: particle-lab " + command.name()),
+                    command.name() + ": " + help);
+            assertEquals(help.out, CommandRun.of("help", command.name()).out, command.name());
+
+            CommandRun bad = CommandRun.of(command.name(), "--no-such-option", "1");
+            assertEquals(2, bad.code, command.name() + ": " + bad);
+            assertEquals("", bad.out, command.name() + ": " + bad);
+            assertEquals(1, bad.errLines().size(), command.name() + ": " + bad);
+            assertTrue(bad.err.contains("--no-such-option"), command.name() + ": " + bad);
+            assertFalse(bad.err.contains("Exception"), command.name() + ": " + bad);
+        }
+    }
+
+    /**
+     * A command class that is not in {@link Commands} cannot be run: every
+     * {@code app/*Command.java} with a {@code NAME} must be listed (a plain source scan).
+     *
+     * @throws IOException if the sources cannot be read
+     */
+    @Test
+    void everyCommandClassIsRegistered() throws IOException {
+        Path app = Paths.get("src", "main", "java", "particlelab", "app");
+        int classes = 0;
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(app, "*Command.java")) {
+            for (Path file : files) {
+                String source = Files.readString(file);
+                Matcher name = Pattern.compile(
+                        "public static final String NAME = \"([a-z]+)\";").matcher(source);
+                if (name.find()) {
+                    ++classes;
+                    assertNotNull(Commands.find(name.group(1)),
+                            file.getFileName() + " declares " + name.group(1)
+                                    + " but Commands does not list it");
+                }
+            }
+        }
+        assertEquals(Commands.all().size(), classes, "command classes with a NAME");
     }
 
     @Test

@@ -19,9 +19,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.app.ParticleLabApp;
-import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 
@@ -44,91 +42,6 @@ class DemoStateHeadlessTest {
     @AfterAll
     static void stopApp() {
         harness.close();
-    }
-
-    @Test
-    void everyDemoMovesItsParticlesExactlyAsTheIntegratorSays() throws Exception {
-        int steps = 50; // under a second: no particle of any demo lands or wraps yet
-        for (DemoState demo : demos()) {
-            if (demo.getWorld().countRules() > 0) {
-                continue; // a collision demo's contacts change velocities: its own tests
-            }
-            List<String> failures = harness.call(() -> {
-                demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-                demo.restart();
-                for (int frame = 0; frame < steps; ++frame) {
-                    demo.advance(H);
-                }
-                StringBuilder problems = new StringBuilder();
-                for (DemoParticle particle : demo.getParticles()) {
-                    // The same Euler steps, done directly: the demo adds nothing of its own.
-                    Particle reference = new Particle(
-                            particle.copyLaunchPosition(new Vector3f()),
-                            particle.copyLaunchVelocity(new Vector3f()),
-                            particle.getParticle().getMass());
-                    for (int i = 0; i < steps; ++i) {
-                        particle.getIntegrator().step(reference, H);
-                    }
-                    if (!reference.position.equals(particle.getParticle().position)
-                            || !reference.velocity.equals(particle.getParticle().velocity)) {
-                        problems.append(demo.getTitle()).append('/')
-                                .append(particle.getLabel()).append(": ")
-                                .append(particle.getParticle()).append(" vs ")
-                                .append(reference).append('\n');
-                    }
-                }
-                return problems.length() == 0 ? List.of() : List.of(problems.toString());
-            });
-            assertEquals(List.of(), failures);
-            double simulated = harness.call(() -> demo.getClock().getSimulatedSeconds());
-            // One fixed step per frame of exactly h: 50 steps, summed in double.
-            assertEquals(steps * (double) H, simulated, 1e-9);
-        }
-    }
-
-    @Test
-    void everyDemoIsSteppedByItsWorldOneWorldStepPerClockStep() throws Exception {
-        for (DemoState demo : demos()) {
-            Object[] counts = harness.call(() -> {
-                demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-                demo.restart();
-                for (int frame = 0; frame < 30; ++frame) {
-                    demo.advance(H);
-                }
-                boolean shared = true;
-                for (DemoParticle particle : demo.getParticles()) {
-                    shared &= particle.getBody().getParticle() == particle.getParticle()
-                            && particle.getBody().isInWorld();
-                }
-                return new Object[] {demo.getWorld().getStepCount(),
-                    demo.getWorld().getTimeSeconds(), demo.getClock().getSimulatedSeconds(),
-                    shared};
-            });
-            assertEquals(30L, counts[0], demo.getTitle());
-            // The world sums the same float steps in double as the clock does.
-            assertEquals((Double) counts[2], (Double) counts[1], 1e-12, demo.getTitle());
-            assertEquals(true, counts[3], demo.getTitle() + ": a particle outside the world");
-        }
-    }
-
-    @Test
-    void pullDemoFollowsTheEulerStepsClosedForm() throws Exception {
-        DemoState pull = demos().get(DemoCatalog.indexOf("pull"));
-        int steps = 90;
-        Vector3f position = harness.call(() -> {
-            pull.restart();
-            for (int frame = 0; frame < steps; ++frame) {
-                pull.advance(H);
-            }
-            return pull.getParticles().get(0).getParticle().position.clone();
-        });
-        // docs/numerics.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).
-        double h = H;
-        double y = steps * h * 10.0 - Gravity.STANDARD_G * h * h * steps * (steps + 1) / 2.0;
-        double x = steps * h * 10.0;
-        // 90 float steps of size ~0.17 m: rounding grows to a few 1e-6 m, far below 1e-4.
-        assertEquals(x, position.x, 1e-4);
-        assertEquals(y, position.y, 1e-4);
     }
 
     @Test
