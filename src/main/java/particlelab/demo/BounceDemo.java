@@ -64,6 +64,12 @@ public final class BounceDemo extends DemoState {
     static final String[] THRESHOLD_NAMES = {"none", "Cyclone", "Box2D/Jolt"};
     /** Apexes shown on the HUD, the latest ones. */
     private static final int APEXES_SHOWN = 4;
+    /**
+     * The hop counts as settled (the HUD names its fixed point) once the latest impact speed
+     * is this close to w*, relatively: the speeds approach it by a factor e a hop, so a ball
+     * still wandering between hop lengths is not taken for one on its hop.
+     */
+    private static final double SETTLED_FRACTION = 0.05;
 
     private final ImpulseResponse response = new ImpulseResponse(START_E_TENTHS / 10f);
     private final ImpulseResponse otherResponse = new ImpulseResponse(START_E_TENTHS / 10f);
@@ -287,8 +293,9 @@ public final class BounceDemo extends DemoState {
     }
 
     /**
-     * When the ball, without the resting fix, has settled on a hop of K whole steps whose
-     * fixed-point impact speed w* is above the threshold: the reason it never rests.
+     * When the ball, without the resting fix, has settled on a hop of K whole steps (the last
+     * two hops that long, the impact speed near w*) whose fixed-point impact speed w* is
+     * above the threshold: the reason it never rests.
      */
     private void appendHopCycle(StringBuilder text, float e) {
         int stepsPerHop = recorder.getLastHopSteps();
@@ -299,13 +306,14 @@ public final class BounceDemo extends DemoState {
         }
         float threshold = THRESHOLDS[thresholdPreset];
         float g = Gravity.STANDARD_G;
-        if (HopCycle.thresholdStops(threshold, stepsPerHop, e, g, h)) {
+        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, g, h);
+        if (HopCycle.thresholdStops(threshold, stepsPerHop, e, g, h) || Math.abs(
+                recorder.getLastImpactSpeed() - fixedPoint) > SETTLED_FRACTION * fixedPoint) {
             return;
         }
         text.append("never at rest: hops of K = ").append(stepsPerHop)
                 .append(" steps, fixed point w* = K g h/(1+e) = ");
-        TextFormat.appendFixed(text, HopCycle.fixedPointSpeed(stepsPerHop, e, g, h), 3)
-                .append(" m/s > threshold ");
+        TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
         TextFormat.appendFixed(text, threshold, 2).append(" m/s\n");
     }
 
