@@ -4,6 +4,7 @@ import com.jme3.math.Vector3f;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
@@ -11,6 +12,7 @@ import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
 import particlelab.world.Detection;
+import particlelab.world.HopCycle;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
@@ -25,8 +27,9 @@ import particlelab.world.World;
  * <ul>
  * <li>An impact is every resolved ground contact except those of a ball at rest: a contact
  * that leaves the ball with rebound 0 after one that did too. So a ball that settles gives a
- * last row with rebound 0 and then no more rows; a ball that hops on (no resting fix, no
- * threshold) keeps giving rows.</li>
+ * last row with rebound 0 and then no more rows; a ball that hops on (no resting fix, and
+ * no threshold at or above the fixed point of its hop, {@link HopCycle}) keeps giving
+ * rows.</li>
  * <li>{@code rebound_speed} is the normal speed right after the impact's resolution; with the
  * resting fix on it is {@code e·(v − g·h)} rather than {@code e·v}, as in Cyclone.</li>
  * <li>The overlap test finds an impact at the end of the step it happened in: its t is that
@@ -91,8 +94,16 @@ public final class BounceCommand {
                         + " speeds e^n*sqrt(2*g*(H0-R)), at rest after t0*(1+e)/(1-e),"
                         + " t0 = sqrt(2*(H0-R)/g). A stepped ball cannot show a bounce shorter"
                         + " than a step. Once the ball rests it gives no more rows and stays"
-                        + " exactly still; with neither the resting fix nor a threshold it never"
-                        + " rests, since each step gravity gives it g*h to bounce back.")
+                        + " exactly still.")
+                .note("Without the resting fix a ball with e > 0 never rests unless the"
+                        + " threshold stops it, and a threshold is no sure cure: with the swept"
+                        + " test the rest of an impact's step has no gravity, so the hops settle on K whole steps"
+                        + " each and impact speed w* = K*g*h/(1+e) (K at most (1+e)/(1-e); which"
+                        + " K depends on the drop). The threshold stops the ball only if it is"
+                        + " at or above w*: H0 = 4 with e = 0.8 and h = 1/60 settles on K = 4,"
+                        + " w* = " + hopExample() + " m/s, above Cyclone's "
+                        + ImpulseResponse.CYCLONE_THRESHOLD + ", so that ball never rests."
+                        + " The resting fix always stops it.")
                 .note("Exit status: 0 on success; 2 on a bad command line, with one line on"
                         + " stderr.");
     }
@@ -108,6 +119,13 @@ public final class BounceCommand {
     public static int run(String[] args, PrintStream out, PrintStream err) {
         return CommandSupport.execute(COMMAND, options(), args, out, err,
                 parsed -> runParsed(parsed, out, err));
+    }
+
+    /** The help's worked example: w* of the 4-step hop, e = 0.8, default g and h, 5 digits. */
+    private static String hopExample() {
+        double speed = HopCycle.fixedPointSpeed(4, 0.8f, Gravity.STANDARD_G,
+                CommandSupport.DEFAULT_STEP_SECONDS);
+        return String.format(Locale.ROOT, "%.5f", speed);
     }
 
     /** The command proper, once the options are parsed and no help was asked for. */

@@ -11,6 +11,7 @@ import particlelab.view.SoundPlayer;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;
 import particlelab.world.Detection;
+import particlelab.world.HopCycle;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SurfaceRule;
 import particlelab.world.World;
@@ -27,13 +28,17 @@ import particlelab.world.World;
  * {@code T = t0(1+e)/(1−e)}, {@code t0 = √(2h0/g)} (a geometric series of flights); the HUD
  * puts the stepped ball's apexes and rest time next to these.</li>
  * <li>The restitution threshold (none, Cyclone's 0.25 m/s, Box2D's and Jolt's 1 m/s): an impact
- * slower than it is perfectly inelastic, so the ball stops early instead of hopping for
- * ever.</li>
+ * at or below it is perfectly inelastic. It is no sure cure. Without the resting fix the
+ * swept ball settles on hops of K whole steps (the rest of an impact's step has no gravity)
+ * whose impact speed is the fixed point {@code w* = K·g·h/(1+e)} of
+ * {@link HopCycle}: after this demo's 4 m drop with e = 0.8, K = 4 and w* = 0.363 m/s, so
+ * Cyclone's 0.25 m/s never stops it (the HUD says so and shows w*) and Box2D's 1 m/s does.
+ * A threshold stops a ball on its hop only when {@code w* ≤ v_t}.</li>
  * <li>The resting fix (Cyclone's): the rebound leaves out the velocity gravity added during
- * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still; the
- * price is a slightly lower apex after every impact (press F and compare the apexes with
- * {@code e^{2n}·h0}). With neither fix nor threshold the ball buzzes at {@code g·h} for
- * ever.</li>
+ * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still and
+ * no hop can repeat: the only cure that always works. The price is a slightly lower apex
+ * after every impact (press F and compare the apexes with {@code e^{2n}·h0}). With the fix
+ * off the ball hops at w* for ever unless the threshold is at or above it.</li>
  * <li>Overlap test against intersection (swept) test: with e = 1 the overlap test finds the
  * ball inside the ground and pushes it out, and its apexes drift; the swept test finds the
  * moment of impact on the step's straight segment. A hidden second world runs the other test
@@ -59,6 +64,12 @@ public final class BounceDemo extends DemoState {
     static final String[] THRESHOLD_NAMES = {"none", "Cyclone", "Box2D/Jolt"};
     /** Apexes shown on the HUD, the latest ones. */
     private static final int APEXES_SHOWN = 4;
+    /**
+     * The hop counts as settled (the HUD names its fixed point) once the latest impact speed
+     * is this close to w*, relatively: the speeds approach it by a factor e a hop, so a ball
+     * still wandering between hop lengths is not taken for one on its hop.
+     */
+    private static final double SETTLED_FRACTION = 0.05;
 
     private final ImpulseResponse response = new ImpulseResponse(START_E_TENTHS / 10f);
     private final ImpulseResponse otherResponse = new ImpulseResponse(START_E_TENTHS / 10f);
@@ -188,6 +199,7 @@ public final class BounceDemo extends DemoState {
             TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s\n");
         } else {
             text.append("still bouncing\n");
+            appendHopCycle(text, e);
         }
         Vector3f v = ball.getVelocity();
         float energy = 0.5f * MASS_KG * v.lengthSquared()
@@ -278,6 +290,31 @@ public final class BounceDemo extends DemoState {
             TextFormat.appendFixed(text, DROP_HEIGHT * Math.pow(e, 2.0 * n), 3);
         }
         text.append(" m\n");
+    }
+
+    /**
+     * When the ball, without the resting fix, has settled on a hop of K whole steps (the last
+     * two hops that long, the impact speed near w*) whose fixed-point impact speed w* is
+     * above the threshold: the reason it never rests.
+     */
+    private void appendHopCycle(StringBuilder text, float e) {
+        int stepsPerHop = recorder.getLastHopSteps();
+        float h = recorder.getLastStepSeconds();
+        if (response.isRestingFix() || eTenths == 10 || detection != Detection.SWEPT
+                || !recorder.isHopRepeating() || !(h > 0f)) {
+            return;
+        }
+        float threshold = THRESHOLDS[thresholdPreset];
+        float g = Gravity.STANDARD_G;
+        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, g, h);
+        if (HopCycle.thresholdStops(threshold, stepsPerHop, e, g, h) || Math.abs(
+                recorder.getLastImpactSpeed() - fixedPoint) > SETTLED_FRACTION * fixedPoint) {
+            return;
+        }
+        text.append("never at rest: hops of K = ").append(stepsPerHop)
+                .append(" steps, fixed point w* = K g h/(1+e) = ");
+        TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
+        TextFormat.appendFixed(text, threshold, 2).append(" m/s\n");
     }
 
     private void appendDrift(StringBuilder text) {

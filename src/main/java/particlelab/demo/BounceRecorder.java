@@ -26,6 +26,14 @@ final class BounceRecorder implements ContactListener, StepListener {
     private float apex = Float.NEGATIVE_INFINITY;
     private double restSeconds = Double.NaN;
     private float lastImpactSpeed;
+    /** The world's step count at the latest impact, -1 before one. */
+    private long lastImpactStep = -1L;
+    /** Whole steps between the last two impacts, K (0 until there are two). */
+    private int lastHopSteps;
+    /** Whole steps of the hop before that (0 until there are three impacts). */
+    private int previousHopSteps;
+    /** The step h of the latest step (in seconds, 0 before one). */
+    private float lastStepSeconds;
 
     /**
      * Create a recorder for one ball.
@@ -48,6 +56,12 @@ final class BounceRecorder implements ContactListener, StepListener {
         closeApex();
         ++impacts;
         lastImpactSpeed = contact.getApproachSpeed();
+        long step = world.getStepCount();
+        if (lastImpactStep >= 0L) {
+            previousHopSteps = lastHopSteps;
+            lastHopSteps = (int) Math.min(Integer.MAX_VALUE, step - lastImpactStep);
+        }
+        lastImpactStep = step;
         resting = rebound == 0f;
         if (resting && Double.isNaN(restSeconds)) {
             restSeconds = contact.getTimeSeconds();
@@ -56,6 +70,7 @@ final class BounceRecorder implements ContactListener, StepListener {
 
     @Override
     public void afterStep(World world, float stepSeconds) {
+        lastStepSeconds = stepSeconds;
         if (impacts > 0 && !resting) {
             apex = Math.max(apex, ball.getPosition().y - ball.getRadius());
         }
@@ -69,6 +84,10 @@ final class BounceRecorder implements ContactListener, StepListener {
         apex = Float.NEGATIVE_INFINITY;
         restSeconds = Double.NaN;
         lastImpactSpeed = 0f;
+        lastImpactStep = -1L;
+        lastHopSteps = 0;
+        previousHopSteps = 0;
+        lastStepSeconds = 0f;
     }
 
     /** @return the count of impacts so far (&ge;0) */
@@ -108,6 +127,31 @@ final class BounceRecorder implements ContactListener, StepListener {
     /** @return the normal approach speed of the latest impact (in m/s, 0 before one) */
     float getLastImpactSpeed() {
         return lastImpactSpeed;
+    }
+
+    /**
+     * Return the length of the latest hop in whole steps: K, the steps from one impact's step
+     * to the next one's.
+     *
+     * @return K (&ge;1), 0 before two impacts
+     */
+    int getLastHopSteps() {
+        return lastHopSteps;
+    }
+
+    /**
+     * Test whether the last two hops took the same whole number of steps, as on the hop a ball
+     * without the resting fix settles on ({@link particlelab.world.HopCycle}).
+     *
+     * @return true after three impacts with the same K between them
+     */
+    boolean isHopRepeating() {
+        return lastHopSteps > 0 && lastHopSteps == previousHopSteps;
+    }
+
+    /** @return the step h of the latest step (in seconds, 0 before one) */
+    float getLastStepSeconds() {
+        return lastStepSeconds;
     }
 
     private void closeApex() {

@@ -11,6 +11,7 @@ import particlelab.view.WallView;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
+import particlelab.world.ContactResponse;
 import particlelab.world.Detection;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SphereRule;
@@ -86,8 +87,24 @@ public final class CollisionsDemo extends DemoState {
     private static final float Y_MAX = 6f;
 
     private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
-    private final SphereRule sweptRule = new SphereRule(response, Detection.SWEPT);
-    private final SphereRule overlapRule = new SphereRule(response, Detection.OVERLAP);
+    /**
+     * The balls' response: the impulse, then a note of balls 1 and 2's velocities the moment
+     * their impact is resolved, before any wall can change them.
+     */
+    private final ContactResponse ballResponse = new ContactResponse() {
+        @Override
+        public void resolve(Contact contact, float stepSeconds) {
+            response.resolve(contact, stepSeconds);
+            recordExit(contact);
+        }
+
+        @Override
+        public String describe() {
+            return response.describe();
+        }
+    };
+    private final SphereRule sweptRule = new SphereRule(ballResponse, Detection.SWEPT);
+    private final SphereRule overlapRule = new SphereRule(ballResponse, Detection.OVERLAP);
     private final DemoParticle[] balls = new DemoParticle[BALLS];
     private final Vector3f position = new Vector3f();
     private final Vector3f velocity = new Vector3f();
@@ -95,6 +112,11 @@ public final class CollisionsDemo extends DemoState {
     private final Vector3f momentumBefore = new Vector3f();
     private final Vector3f impactMomentumBefore = new Vector3f();
     private final Vector3f impactMomentumAfter = new Vector3f();
+    /** Ball 1's velocity just after its first impact with ball 2 (m/s). */
+    private final Vector3f exitVelocity1 = new Vector3f();
+    /** Ball 2's velocity just after that impact (m/s). */
+    private final Vector3f exitVelocity2 = new Vector3f();
+    private boolean exitRecorded;
     private DemoParticle paddle;
     private Preset preset = Preset.HEAD_ON;
     private int eTenths = 10;
@@ -222,6 +244,7 @@ public final class CollisionsDemo extends DemoState {
     protected void onRestart() {
         impactSteps = 0;
         impactContacts = 0;
+        exitRecorded = false;
         for (int i = 0; i < BALLS; ++i) {
             if (balls[i].isParked()) {
                 balls[i].setHeld(true);
@@ -261,8 +284,8 @@ public final class CollisionsDemo extends DemoState {
                 TextFormat.appendFixed(text, impactReducedMass, 3).append(" kg)\n");
             }
         }
-        if (preset == Preset.GLANCING && impactSteps > 0) {
-            text.append("angle between the exit velocities: ");
+        if (preset == Preset.GLANCING && exitRecorded) {
+            text.append("angle between the exit velocities just after the impact: ");
             TextFormat.appendFixed(text, exitAngleDegrees(), 1)
                     .append(" deg (90 for equal masses and e = 1)\n");
         }
@@ -357,16 +380,41 @@ public final class CollisionsDemo extends DemoState {
         return impactSteps;
     }
 
-    /** @return the angle between balls 1 and 2's velocities (in degrees) */
+    /**
+     * Return the angle between balls 1 and 2's velocities just after their first impact since
+     * the start, as the impulse left them (later wall bounces do not change it).
+     *
+     * @return the angle (in degrees, 0 to 180; 0 before that impact or if a ball stopped)
+     */
     public float exitAngleDegrees() {
-        Vector3f v1 = balls[0].getParticle().velocity;
-        Vector3f v2 = balls[1].getParticle().velocity;
+        if (!exitRecorded) {
+            return 0f;
+        }
+        Vector3f v1 = exitVelocity1;
+        Vector3f v2 = exitVelocity2;
         float lengths = v1.length() * v2.length();
         if (lengths == 0f) {
             return 0f;
         }
         float cosine = Math.max(-1f, Math.min(1f, v1.dot(v2) / lengths));
         return FastMath.RAD_TO_DEG * (float) Math.acos(cosine);
+    }
+
+    /** Just after a ball contact's resolution: balls 1 and 2's exit velocities, once. */
+    private void recordExit(Contact contact) {
+        Body a = contact.getBodyA();
+        Body b = contact.getBodyB();
+        Body one = balls[0].getBody();
+        Body two = balls[1].getBody();
+        boolean pair = a == one && b == two || a == two && b == one;
+        Contact.Resolution resolution = contact.getResolution();
+        if (exitRecorded || !pair || resolution == Contact.Resolution.SEPARATING
+                || resolution == Contact.Resolution.NONE) {
+            return;
+        }
+        exitVelocity1.set(balls[0].getParticle().velocity);
+        exitVelocity2.set(balls[1].getParticle().velocity);
+        exitRecorded = true;
     }
 
     /** Epilogue: the predicted loss of one contact between two dynamic balls. */

@@ -154,6 +154,7 @@ public abstract class DemoState extends BaseAppState {
         this.sceneNode = new Node(title + " scene");
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
+        hudWriter.setWarnings(warnings);
         world.addStepListener(stepListener);
         hudWriter.setGhosts(ghosts);
     }

@@ -34,6 +34,8 @@ final class HudWriter {
     private float noticeAgeSeconds;
     /** The demo's exact ghosts, which add to the particle lines (null: none). */
     private ExactGhosts ghosts;
+    /** The demo's warning line, which the stability line agrees with (null: none). */
+    private StepWarnings warnings;
 
     /**
      * Create a writer for one demo.
@@ -55,6 +57,18 @@ final class HudWriter {
      */
     void setGhosts(ExactGhosts exactGhosts) {
         ghosts = exactGhosts;
+    }
+
+    /**
+     * Let the stability line agree with the demo's warning line: while that warns of a step
+     * beyond a stability limit smaller than every moving particle's limit now (the particle
+     * has slowed, or landed and stopped), the line gives the warned particle's limit at the
+     * state of that step, not a limit (or "any h is stable") that the warning contradicts.
+     *
+     * @param stepWarnings the demo's warnings (not null, not modified)
+     */
+    void setWarnings(StepWarnings stepWarnings) {
+        warnings = stepWarnings;
     }
 
     /**
@@ -257,7 +271,8 @@ final class HudWriter {
     /**
      * The stability line: the smallest stability limit of the particles still moving, at their
      * current states, naming the particle it belongs to with its damping rate λ and, for a
-     * spring, its angular frequency ω = √(k/m).
+     * spring, its angular frequency ω = √(k/m); or, while the warning line is about a step
+     * beyond a smaller limit, that one (see {@link #setWarnings}).
      */
     private void appendStabilityLine(StringBuilder text) {
         float limit = Float.POSITIVE_INFINITY;
@@ -274,6 +289,15 @@ final class HudWriter {
                 limit = particleLimit;
                 limiting = particle;
             }
+        }
+        float warned = warnings == null ? Float.POSITIVE_INFINITY
+                : warnings.getWarnedStableSeconds();
+        if (warned < limit) {
+            text.append("Stability: h < ");
+            TextFormat.appendFixed(text, warned, 3).append(" s for '")
+                    .append(warnings.getWarnedLabel())
+                    .append("' at the step the warning below is about\n");
+            return;
         }
         if (moving == 0) {
             // Rigid bodies may still turn: the line speaks of the particle step only.

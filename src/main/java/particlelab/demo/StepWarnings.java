@@ -40,10 +40,14 @@ final class StepWarnings {
     private String worstLabel = "";
     /** The limit that particle passed (in seconds). */
     private float worstLimitSeconds;
+    /** That particle's stability limit at that state (in seconds; infinite below UNSTABLE). */
+    private float worstStableSeconds = Float.POSITIVE_INFINITY;
     private Warning warning = Warning.NONE;
     private float warningAgeSeconds;
     private float warningStepSeconds;
     private float warningLimitSeconds;
+    /** The stability limit of the warned particle at the warned state (in seconds). */
+    private float warningStableSeconds = Float.POSITIVE_INFINITY;
     private StepRegime warningRegime = StepRegime.STABLE;
     private String warningLabel = "";
     /** The clock's dropped time when the hitch was injected (in seconds). */
@@ -84,6 +88,8 @@ final class StepWarnings {
             worstRegime = regime;
             worstLabel = label;
             worstLimitSeconds = limitSeconds(regime, integrator, particle);
+            worstStableSeconds = regime.compareTo(StepRegime.UNSTABLE) >= 0
+                    ? integrator.maxStableStep(particle) : Float.POSITIVE_INFINITY;
         }
     }
 
@@ -96,6 +102,7 @@ final class StepWarnings {
                 || worstRegime.compareTo(warningRegime) >= 0)) {
             warningRegime = worstRegime;
             warningLabel = worstLabel;
+            warningStableSeconds = worstStableSeconds;
             raise(Warning.LIMIT, stepSeconds, worstLimitSeconds);
         }
         worstRegime = StepRegime.STABLE;
@@ -144,6 +151,36 @@ final class StepWarnings {
     void clear() {
         warning = Warning.NONE;
         worstRegime = StepRegime.STABLE;
+    }
+
+    /**
+     * Test whether the warning line shows a step beyond a stability limit (UNSTABLE, or worse),
+     * so the HUD's stability line can speak of the same particle and limit.
+     *
+     * @return true while such a warning is up
+     */
+    boolean isUnstableShowing() {
+        return warning == Warning.LIMIT && warningAgeSeconds <= SHOW_SECONDS
+                && warningRegime.compareTo(StepRegime.UNSTABLE) >= 0;
+    }
+
+    /**
+     * Return the stability limit of the particle the warning names, at the state of the step
+     * that raised it ({@link ParticleIntegrator#maxStableStep}).
+     *
+     * @return the limit (in seconds; infinite unless {@link #isUnstableShowing()})
+     */
+    float getWarnedStableSeconds() {
+        return isUnstableShowing() ? warningStableSeconds : Float.POSITIVE_INFINITY;
+    }
+
+    /**
+     * Return the label of the particle the warning names.
+     *
+     * @return the label (not null; empty before a warning)
+     */
+    String getWarnedLabel() {
+        return warningLabel;
     }
 
     /**

@@ -1,6 +1,7 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -10,7 +11,9 @@ import org.junit.jupiter.api.Test;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
 import particlelab.world.Body;
+import particlelab.view.TextFormat;
 import particlelab.world.Detection;
+import particlelab.world.HopCycle;
 
 /** The Bounce demo attached to a headless app: what its HUD says against the closed forms. */
 class BounceDemoTest {
@@ -110,5 +113,37 @@ class BounceDemoTest {
         String hud = (String) result[2];
         assertTrue(hud.contains("time to rest: T = t0 (1+e)/(1-e) = never (e = 1)"), hud);
         assertTrue(hud.contains("e = 1, apex drift (apex - h0) after "), hud);
+    }
+
+    @Test
+    void withCyclonesThresholdAndNoFixTheHudShowsTheFixedPointTheBallHopsAt() throws Exception {
+        String[] huds = harness.call(() -> {
+            String[] result = new String[3];
+            bounce.configure(8, 1, false, Detection.SWEPT);
+            for (int frame = 0; frame < 3600; ++frame) {
+                bounce.advance(H);
+            }
+            result[0] = bounce.formatHud(new StringBuilder()).toString();
+            result[1] = String.valueOf(bounce.getRecorder().isResting());
+            bounce.configure(8, 2, false, Detection.SWEPT);
+            for (int frame = 0; frame < 3600; ++frame) {
+                bounce.advance(H);
+            }
+            result[2] = bounce.formatHud(new StringBuilder()).toString();
+            return result;
+        });
+        // The 4 m drop with e = 0.8 settles on hops of K = 4 steps (HopCycleTest checks the
+        // stepped impacts against it): w* = 4·g·h/1.8 = 0.363 m/s, above Cyclone's 0.25 m/s.
+        StringBuilder expected = new StringBuilder("never at rest: hops of K = 4 steps, fixed"
+                + " point w* = K g h/(1+e) = ");
+        TextFormat.appendFixed(expected, HopCycle.fixedPointSpeed(4, 0.8f, (float) G, H), 3)
+                .append(" m/s > threshold 0.25 m/s\n");
+        assertEquals("false", huds[1], "still hopping after 60 s");
+        assertTrue(huds[0].contains(expected), huds[0]);
+        assertTrue(huds[0].contains("0.363 m/s"), huds[0]);
+        // Box2D's 1 m/s is above w*: the ball rests and the line is gone.
+        assertTrue(huds[2].contains("measured "), huds[2]);
+        assertFalse(huds[2].contains("never at rest"), huds[2]);
+        assertFalse(huds[2].contains("still bouncing"), huds[2]);
     }
 }

@@ -98,4 +98,26 @@ class CollisionsDemoTest {
         assertTrue((Integer) r[4] >= 1, "the paddle hit nothing");
         assertTrue((Float) r[3] > 1f, "energy " + r[3]);
     }
+
+    @Test
+    void theExitAngleIsTheImpactsEvenAfterTheBallsBounceOffTheWalls() throws Exception {
+        // 10 s: ball 1 leaves at 2 m/s, 60 degrees below +x, from 3 m up, and meets the ground
+        // within 2 s; ball 2 the right wall or the top soon after.
+        Object[] r = run(CollisionsDemo.Preset.GLANCING, 10, 0, 0, 600);
+        Vector3f v1 = collisionsVelocity(0);
+        Vector3f v2 = collisionsVelocity(1);
+        double now = Math.toDegrees(Math.acos(v1.dot(v2) / (v1.length() * v2.length())));
+        assertTrue(Math.abs(now - 90.0) > 1.0, "the walls did not turn the balls: " + now);
+        // The angle is taken from the velocities the impulse left, whatever the walls did
+        // since: exact to float round-off as above, 90 to well under 0.01 degrees.
+        assertEquals(90f, (Float) r[7], 0.01f);
+        String hud = (String) r[10];
+        assertTrue(hud.contains("angle between the exit velocities just after the impact:"
+                + " 90.0 deg"), hud);
+    }
+
+    private static Vector3f collisionsVelocity(int ball) throws Exception {
+        return harness.call(() -> collisions.getParticles().get(ball).getParticle().velocity
+                .clone());
+    }
 }

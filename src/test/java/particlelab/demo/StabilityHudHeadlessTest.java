@@ -112,6 +112,36 @@ class StabilityHudHeadlessTest {
                 body);
     }
 
+    @Test
+    void whileTheWarningIsUpTheLineGivesTheLimitItIsAboutNotAnyHIsStable() throws Exception {
+        String[] texts = harness.call(() -> {
+            drag.getParameters().set("c", 0.5f);
+            drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            drag.getClock().setStepSeconds(0.2f);
+            drag.restart();
+            // 1.7 s of frames (0.2 s steps): the quadratic sphere passed its limit in the first
+            // step and landed, the linear one has landed too, only "gravity only" flies; the
+            // warning stays up for 4 s of real time.
+            for (int frame = 0; frame < 102; ++frame) {
+                drag.update(H);
+            }
+            String[] result = {drag.getHud().getWarningText(),
+                drag.formatHud(new StringBuilder()).toString()};
+            drag.getParameters().set("c", DragDemo.QUADRATIC_C);
+            drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
+            drag.restart();
+            return result;
+        });
+        // At launch |V| = sqrt(200): lambda = 2·0.5·14.142 = 14.142 /s, limit 2/lambda =
+        // 0.1414 s, which h = 0.2 s passes.
+        assertTrue(texts[0].startsWith("UNSTABLE: h = 200.0 ms is beyond the stability limit"
+                + " 141.4 ms of 'quadratic drag  F = -c |V|V'"), texts[0]);
+        String body = texts[1];
+        assertTrue(body.contains("Stability: h < 0.141 s for 'quadratic drag  F = -c |V|V' at"
+                + " the step the warning below is about\n"), body);
+        assertTrue(!body.contains("any h") && !body.contains("2.222"), body);
+    }
+
     /** Feed frames of H until the clock has taken its first (long) step from the launch. */
     private static void takeOneStep(DemoState demo) {
         for (int frame = 0; frame < 1000 && demo.getClock().getSimulatedSeconds() == 0.0;
