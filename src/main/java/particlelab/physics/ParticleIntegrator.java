@@ -14,33 +14,31 @@ import com.jme3.math.Vector3f;
  *
  * This is the <b>semi-implicit (symplectic) Euler</b> method, first order in h. Forward
  * (explicit) Euler would move P with the old V instead; the order matters (a level shot lands
- * {@code vx·h} short here, {@code vx·h} long with forward Euler). Read {@link #acceleration}
- * and {@link #computeRecipe} for the recipe as code.
+ * {@code vx·h} short here, {@code vx·h} long with forward Euler). The recipe as code:
+ * {@link #acceleration} and {@link #computeRecipe}.
  *
- * <p><b>The reference and the fast forms.</b> The lecture's code here is the reference. Each
- * faster form lives in its own package-private class, named for its one job, and a test
- * proves it equal to the recipe:
+ * <p><b>The rule: the lecture's code is the reference.</b> A faster form lives in its own
+ * package-private class, named for its one job, and a test proves it equal to the recipe
+ * ({@code ParticleIntegratorFoldingTest}, {@code FastPathsMatchTheRecipeTest}):
  * <ul>
  * <li>{@link FoldedForces}: gravity, linear and quadratic drag and thrust folded into four
  * numbers g, b, c, k, so the step is {@code V ← (1 − h·σ)·V + h·g} with no call per force.
- * It rounds differently from {@code g + F/m}: per step and component the velocities differ by
- * at most 24 roundings (2^-24 each) of {@code |V|·(1 + h·σ⁺) + h·|g| + |V'|}, σ⁺ the drag rate
- * with every term positive (about 3 measured, 1–2 ulp of the new velocity); gravity alone gives
- * identical numbers. Other forces ({@link Spring}, a student's own {@link Force}) are asked
- * through the interface and add their acceleration to g.</li>
+ * Per step and component its velocity differs from the recipe's by at most 24 roundings
+ * (2^-24 each) of {@code |V|·(1 + h·σ⁺) + h·|g| + |V'|}, σ⁺ the drag rate with every term
+ * positive (about 3 measured, 1–2 ulp of V'); gravity alone gives identical numbers. Other
+ * forces ({@link Spring}, a student's own) are asked through the interface.</li>
  * <li>{@link PackedStep} (with {@link VectorBatch}): the batch {@link #stepPacked}, bit for
  * bit the per-particle step.</li>
  * <li>{@link StepLimits}: the rates, limits and {@link #regime}, with its remembered bound.</li>
  * </ul>
  * A setter of a folded force marks the folds of the integrators that hold it stale
  * ({@link FoldedForce}); each integrator reads that one flag of its own before a step and
- * folds again. There is no state shared between integrators.
+ * folds again: no state is shared between integrators.
  *
- * <p>An integrator holds the forces of one scene (or of one particle in a side-by-side scene)
- * and a few scratch vectors, so it is not thread-safe and {@link #step} allocates nothing.
- * Every method that takes an object refuses null with an {@link IllegalArgumentException}
- * naming the parameter; a step that would make a particle non-finite throws
- * {@link NonFiniteStepException}.
+ * <p>An integrator holds the forces of one scene and a few scratch vectors: not thread-safe,
+ * and {@link #step} allocates nothing. A null argument is refused with an
+ * {@link IllegalArgumentException} naming it; a step that would make a particle non-finite
+ * throws {@link NonFiniteStepException}.
  */
 public final class ParticleIntegrator {
 
@@ -100,7 +98,7 @@ public final class ParticleIntegrator {
      */
     public void step(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
-        checkStep(stepSeconds);
+        Validate.nonNegative(stepSeconds, "step h (s)");
         if (stepSeconds == 0f) {
             return;
         }
@@ -121,7 +119,7 @@ public final class ParticleIntegrator {
      */
     public void step(Particle[] particles, float stepSeconds) {
         Validate.notNull(particles, "particles");
-        checkStep(stepSeconds);
+        Validate.nonNegative(stepSeconds, "step h (s)");
         for (int i = 0; i < particles.length; ++i) {
             if (particles[i] == null) {
                 throw new IllegalArgumentException("particles[" + i + "] must not be null");
@@ -148,23 +146,19 @@ public final class ParticleIntegrator {
      * step and otherwise throws; it keeps no copy of the states (that would double the cost),
      * so the arrays then hold the step's result, the non-finite ones included: reset them.
      *
-     * @param positions P of every particle, planar (in metres, finite, length &ge; 3·count,
-     *     modified)
-     * @param velocities V of every particle, planar (in m/s, finite, length &ge; 3·count,
-     *     modified)
+     * @param positions P of every particle, planar (in m, finite, length &ge; 3·count, modified)
+     * @param velocities V, likewise (in m/s, finite, length &ge; 3·count, modified)
      * @param count the number of particles (&ge;0)
-     * @param massKg the mass of each particle (in kilograms, finite,
-     *     &ge;{@link Particle#MIN_MASS_KG})
+     * @param massKg the mass of each (in kilograms, finite, &ge;{@link Particle#MIN_MASS_KG})
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0; 0 does nothing)
-     * @throws NonFiniteStepException if after the step a particle has a NaN or infinite
-     *     component; the message names the first such particle and its state, and every
-     *     particle has been stepped
+     * @throws NonFiniteStepException if after the step a particle is not finite; the message
+     *     names the first such particle and its state, and every particle has been stepped
      */
     public void stepPacked(float[] positions, float[] velocities, int count, float massKg,
             float stepSeconds) {
         PackedStep.checkArrays(positions, velocities, count);
         Particle.checkMass(massKg);
-        checkStep(stepSeconds);
+        Validate.nonNegative(stepSeconds, "step h (s)");
         if (stepSeconds == 0f || count == 0) {
             return;
         }
@@ -187,8 +181,7 @@ public final class ParticleIntegrator {
      * Tell which code {@link #stepPacked} runs with gravity and linear drag (the only forces
      * it has two forms for).
      *
-     * @return true: the Vector API, its finiteness check fused with the step; false: the
-     *     scalar passes, which the JIT vectorises, and a separate check
+     * @return true: the Vector API, the check fused in; false: scalar passes, a separate check
      */
     public boolean isVectorBatch() {
         return packed.isVectorBatch();
@@ -308,12 +301,9 @@ public final class ParticleIntegrator {
 
     /**
      * Return the stability limit of the semi-implicit Euler step for a damped oscillator
-     * {@code x'' = −ω²·x − λ·x'}. One step maps (x, v) by a matrix of determinant
-     * {@code 1 − λh} and trace {@code 2 − λh − ω²h²}; both eigenvalues lie inside the unit
-     * circle (Jury's test) iff {@code λh < 2} and {@code ω²h² + 2λh < 4}, that is iff
-     * {@code h < 4/(λ + sqrt(λ² + 4ω²))}. Without a spring this is {@code 2/λ}, without
-     * damping {@code 2/ω} (there the step is marginally stable: it keeps a modified energy).
-     * Computed in double without squaring λ, so nothing in between overflows.
+     * {@code x'' = −ω²·x − λ·x'}: {@code h < 4/(λ + sqrt(λ² + 4ω²))} (derived in
+     * {@link StepLimits#stableStepLimit}); {@code 2/λ} without a spring, {@code 2/ω} without
+     * damping (there the step is marginally stable: it keeps a modified energy).
      *
      * @param dampingRate λ (in 1/s, &ge;0, may be infinite)
      * @param stiffness ω² (in 1/s², &ge;0, may be infinite)
@@ -370,7 +360,7 @@ public final class ParticleIntegrator {
             Vector3f nextPosition) {
         accelerationOf(others, particle, fieldAcceleration, netForce, acceleration);
         folded.compute(particle, stepSeconds, acceleration, nextVelocity, nextPosition);
-        if (!isFinite(nextVelocity, nextPosition)) {
+        if (!(Validate.isFinite(nextVelocity) && Validate.isFinite(nextPosition))) {
             // the folded factor 1 − h·σ can overflow where g + F/m does not (b/m beyond the
             // float range, a particle at rest)
             computeRecipe(particle, stepSeconds, nextVelocity, nextPosition);
@@ -417,7 +407,7 @@ public final class ParticleIntegrator {
     private void stepCarefully(Particle particle, float stepSeconds) {
         limits.remember(stepSeconds, particle.getMass());
         computeStep(particle, stepSeconds, nextVelocity, nextPosition);
-        if (!isFinite(nextVelocity, nextPosition)) {
+        if (!(Validate.isFinite(nextVelocity) && Validate.isFinite(nextPosition))) {
             String why = particle.isFinite()
                     ? "; the largest stable step here is " + maxStableStep(particle) + " s"
                     : "; it was already non-finite before the step";
@@ -427,20 +417,5 @@ public final class ParticleIntegrator {
         }
         particle.velocity.set(nextVelocity);
         particle.position.set(nextPosition);
-    }
-
-    /** True if both vectors are finite: one test for the usual case. */
-    private static boolean isFinite(Vector3f velocity, Vector3f position) {
-        // a finite sum means six finite terms
-        return Float.isFinite(velocity.x + velocity.y + velocity.z
-                + position.x + position.y + position.z)
-                || Validate.isFinite(velocity) && Validate.isFinite(position);
-    }
-
-    private static void checkStep(float stepSeconds) {
-        if (!(stepSeconds >= 0f) || stepSeconds == Float.POSITIVE_INFINITY) {
-            throw new IllegalArgumentException(
-                    "step h (s) must be finite and >= 0, but was " + stepSeconds);
-        }
     }
 }

@@ -143,8 +143,16 @@ final class StepLimits {
     }
 
     /**
-     * The stability limit {@code 4/(λ + sqrt(λ² + 4ω²))}, in double without squaring λ (see
-     * {@link ParticleIntegrator#stableStepLimit}).
+     * The stability limit of the step for a damped oscillator {@code x'' = −ω²·x − λ·x'}
+     * ({@link ParticleIntegrator#stableStepLimit}). One step maps (x, v) by a matrix of
+     * determinant {@code 1 − λh} and trace {@code 2 − λh − ω²h²}; both eigenvalues lie inside
+     * the unit circle (Jury's test) iff {@code λh < 2} and {@code ω²h² + 2λh < 4}, that is iff
+     * {@code h < 4/(λ + sqrt(λ² + 4ω²))}. Computed in double without squaring λ, so nothing in
+     * between overflows.
+     *
+     * @param dampingRate λ (in 1/s, &ge;0, may be infinite)
+     * @param stiffness ω² (in 1/s², &ge;0, may be infinite)
+     * @return the limit (in seconds, &ge;0; infinite when both are 0)
      */
     static double stableStepLimit(double dampingRate, double stiffness) {
         if (!(dampingRate >= 0.0) || !(stiffness >= 0.0)) {
