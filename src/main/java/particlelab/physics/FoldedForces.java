@@ -38,7 +38,7 @@ final class FoldedForces {
     float thrustSum;
     /** Folded: true if σ depends on |V| (some c or k is not zero). */
     boolean speedDependent;
-    /** Remembered for {@link #rememberedSeconds} and {@link #rememberedMass}: h·g (m/s) ... */
+    /** Remembered for one step and mass ({@link #isRememberedFor}): h·g (m/s) ... */
     float stepGravityX;
     float stepGravityY;
     float stepGravityZ;
@@ -50,10 +50,6 @@ final class FoldedForces {
     float stepQuadratic;
     /** ... h·k/m of thrust (m/s) ... */
     float stepThrust;
-    /** ... for this step (s; NaN: none since the last fold) ... */
-    float rememberedSeconds = Float.NaN;
-    /** ... and this mass (kg). */
-    float rememberedMass = Float.NaN;
 
     private final Gravity[] gravities;
     private final LinearDrag[] linearDrags;
@@ -61,6 +57,10 @@ final class FoldedForces {
     private final Thrust[] thrusts;
     /** True if a setter changed a folded force since the last fold. */
     private boolean stale;
+    /** The step the numbers above were remembered for (s; NaN: none since the last fold) ... */
+    private float rememberedSeconds = Float.NaN;
+    /** ... and the mass (kg). */
+    private float rememberedMass = Float.NaN;
     /** The mass whose inverse is {@link #cachedInverseMass} (kg; NaN: none yet). */
     private float cachedMass = Float.NaN;
     /** 1/{@link #cachedMass} (1/kg). */
@@ -129,6 +129,17 @@ final class FoldedForces {
     }
 
     /**
+     * Tell whether the numbers are remembered for this step and mass.
+     *
+     * @param stepSeconds h (in seconds)
+     * @param massKg m (in kilograms)
+     * @return true if {@link #remember} was last called with them since the last fold
+     */
+    boolean isRememberedFor(float stepSeconds, float massKg) {
+        return stepSeconds == rememberedSeconds && massKg == rememberedMass;
+    }
+
+    /**
      * Step one particle with the folded forces alone, from the numbers remembered for its
      * step and mass, and commit the result if it is finite.
      *
@@ -139,8 +150,7 @@ final class FoldedForces {
      *     careful step decides
      */
     boolean step(Particle particle, float stepSeconds) {
-        if (hasOthers || stepSeconds != rememberedSeconds
-                || particle.getMass() != rememberedMass) {
+        if (hasOthers || !isRememberedFor(stepSeconds, particle.getMass())) {
             return false;
         }
         Vector3f velocity = particle.velocity;

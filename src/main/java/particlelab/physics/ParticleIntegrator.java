@@ -42,11 +42,11 @@ import com.jme3.math.Vector3f;
  */
 public final class ParticleIntegrator {
 
-    /** The forces of the scene, in its order. */
+    /** The forces of the scene, in its order ... */
     private final Force[] forces;
-    /** The forces that are not folded: asked through the {@link Force} interface. */
+    /** ... those that are not folded, asked through the interface ... */
     private final Force[] others;
-    /** The fast form of the step: the built-in forces folded. */
+    /** ... and the built-in ones folded: the fast form of the step. */
     private final FoldedForces folded;
     /** The rates, limits and regime. */
     private final StepLimits limits;
@@ -92,9 +92,8 @@ public final class ParticleIntegrator {
      * @param particle the particle to move (not null, modified unless the step fails)
      * @param stepSeconds h, the step duration (in seconds, finite, &ge;0; 0 does nothing)
      * @throws NonFiniteStepException if the step would leave the particle with a NaN or
-     *     infinite component (the step was far beyond the stability limit, the numbers
-     *     overflowed the float range, or the particle was already non-finite): stop rather than
-     *     spread NaN. The particle then keeps its state from before the step.
+     *     infinite component (far beyond the stability limit, beyond the float range, or
+     *     non-finite already): stop rather than spread NaN; the particle keeps its state
      */
     public void step(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
@@ -102,6 +101,8 @@ public final class ParticleIntegrator {
         if (stepSeconds == 0f) {
             return;
         }
+        // the recipe in its fast form (FoldedForces); where that declines, the careful step:
+        // with the other forces, the recipe itself where the fast form overflows, the guard
         folded.refoldIfStale();
         if (!folded.step(particle, stepSeconds)) {
             stepCarefully(particle, stepSeconds);
@@ -239,16 +240,14 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * Return the drag rate σ ("sigma") of the forces at the particle's state: how fast the
-     * velocity-dependent forces slow the particle itself, so that through them one Euler step
-     * scales the velocity by {@code 1 − σh}: {@code σ = −(a(V) − a(0))·V/|V|²}. Linear drag
-     * gives {@code b/m} (equal to its λ), quadratic drag {@code c·|V|/m} (half its λ), thrust
+     * Return the drag rate σ of the forces at the particle's state: one Euler step scales the
+     * velocity by {@code 1 − σh} through them, {@code σ = −(a(V) − a(0))·V/|V|²}. Linear drag
+     * gives {@code b/m} (its λ), quadratic drag {@code c·|V|/m} (half its λ), thrust
      * {@code −k/(m·|V|)}. The step reverses the velocity once {@code σh > 1} and makes the
-     * speed grow once {@code σh > 2} (see {@link StepRegime}). Allocates nothing.
+     * speed grow once {@code σh > 2} ({@link StepRegime}). Allocates nothing.
      *
      * @param particle the particle (not null, not modified)
-     * @return σ (in 1/s; 0 at rest; may be negative; the largest float when the forces
-     *     overflow)
+     * @return σ (in 1/s; 0 at rest; may be negative; the largest float if the forces overflow)
      */
     public float dragRate(Particle particle) {
         Validate.notNull(particle, "particle");
@@ -285,9 +284,8 @@ public final class ParticleIntegrator {
 
     /**
      * Tell what a step of h does at the particle's current state: the most serious of
-     * {@link StepRegime}'s cases that applies (σ for the motion itself, λ and ω² for small
-     * changes of it). Runs for every particle every step in the demos, so most answers come
-     * from a bound remembered per step and mass ({@link StepLimits}). Allocates nothing.
+     * {@link StepRegime}'s cases that applies (σ for the motion, λ and ω² for small changes of
+     * it). The demos ask for every particle every step; allocates nothing.
      *
      * @param particle the particle (not null, not modified)
      * @param stepSeconds h (in seconds, &ge;0)
@@ -296,6 +294,12 @@ public final class ParticleIntegrator {
     public StepRegime regime(Particle particle, float stepSeconds) {
         Validate.notNull(particle, "particle");
         folded.refoldIfStale();
+        // the usual answer: a bound remembered with the step's numbers, under their h and m,
+        // so that in a demo's loop the JIT merges these checks with the step's
+        if (folded.isRememberedFor(stepSeconds, particle.getMass())
+                && limits.isStableBelowTheBound(particle)) {
+            return StepRegime.STABLE;
+        }
         return limits.regime(particle, stepSeconds);
     }
 
@@ -338,17 +342,11 @@ public final class ParticleIntegrator {
      * @return e.g. {@code "g = (0.0, -9.8, 0.0) m/s², F = -0.9·V"}, or "no force"
      */
     public String describe() {
-        if (forces.length == 0) {
-            return "no force";
-        }
         StringBuilder text = new StringBuilder();
         for (int i = 0; i < forces.length; ++i) {
-            if (i > 0) {
-                text.append(", ");
-            }
-            text.append(forces[i].describe());
+            text.append(i > 0 ? ", " : "").append(forces[i].describe());
         }
-        return text.toString();
+        return forces.length == 0 ? "no force" : text.toString();
     }
 
     /**

@@ -24,7 +24,7 @@ final class StepLimits {
     private final Force[] others;
     /**
      * Remembered with the folded step's numbers, for the same h and m
-     * ({@link FoldedForces#rememberedSeconds}): the regime of a moving particle without
+     * ({@link FoldedForces#isRememberedFor}): the regime of a moving particle without
      * speed-dependent forces ...
      */
     private StepRegime movingRegime = StepRegime.STABLE;
@@ -78,7 +78,7 @@ final class StepLimits {
      * @param massKg m (in kilograms)
      */
     void remember(float stepSeconds, float massKg) {
-        if (stepSeconds == folded.rememberedSeconds && massKg == folded.rememberedMass) {
+        if (folded.isRememberedFor(stepSeconds, massKg)) {
             return;
         }
         folded.remember(stepSeconds, massKg);
@@ -110,16 +110,40 @@ final class StepLimits {
     }
 
     /**
-     * See {@link ParticleIntegrator#regime}: the remembered answer in a few comparisons at the
-     * top, small enough for the JIT to inline into the demo loop, the rest apart.
+     * Tell whether the bound remembered for the step's h and m says the particle is
+     * {@link StepRegime#STABLE}: true only if h and m are those of
+     * {@link FoldedForces#isRememberedFor} (ask that first).
+     *
+     * @param particle the particle (not null, not modified)
+     * @return true if surely stable; false if {@link #regime} must decide
+     */
+    boolean isStableBelowTheBound(Particle particle) {
+        return stableAtAnySpeed || particle.velocity.lengthSquared() <= stableSpeedSquared;
+    }
+
+    /**
+     * See {@link ParticleIntegrator#regime}, which asks {@link #isStableBelowTheBound} first.
+     *
+     * @param particle the particle (not null, not modified)
+     * @param stepSeconds h (in seconds, &ge;0)
+     * @return the regime (not null)
      */
     StepRegime regime(Particle particle, float stepSeconds) {
-        if (stepSeconds == folded.rememberedSeconds && particle.getMass() == folded.rememberedMass
-                && (stableAtAnySpeed
-                        || particle.velocity.lengthSquared() <= stableSpeedSquared)) {
+        if (others.length > 0) {
+            return regimeByLimits(particle, stepSeconds);
+        }
+        remember(stepSeconds, particle.getMass());
+        float speedSquared = particle.velocity.lengthSquared();
+        if (stableAtAnySpeed || speedSquared <= stableSpeedSquared) {
             return StepRegime.STABLE;
         }
-        return regimeOtherwise(particle, stepSeconds);
+        if (folded.speedDependent) {
+            return regimeByProducts(particle, stepSeconds, speedSquared);
+        }
+        if (movingRegime == StepRegime.STABLE) {
+            return StepRegime.STABLE;
+        }
+        return speedSquared == 0f ? regimeByProducts(particle, stepSeconds, 0f) : movingRegime;
     }
 
     /** λ at the particle's state (see {@link ParticleIntegrator#dampingRate}). */
@@ -165,25 +189,6 @@ final class StepLimits {
         }
         // hypot: sqrt(λ² + 4ω²) without squaring λ, which would overflow for huge rates
         return 4.0 / (dampingRate + Math.hypot(dampingRate, 2.0 * Math.sqrt(stiffness)));
-    }
-
-    /** {@link #regime} where the remembered bound does not answer. */
-    private StepRegime regimeOtherwise(Particle particle, float stepSeconds) {
-        if (others.length > 0) {
-            return regimeByLimits(particle, stepSeconds);
-        }
-        remember(stepSeconds, particle.getMass());
-        float speedSquared = particle.velocity.lengthSquared();
-        if (stableAtAnySpeed || speedSquared <= stableSpeedSquared) {
-            return StepRegime.STABLE;
-        }
-        if (folded.speedDependent) {
-            return regimeByProducts(particle, stepSeconds, speedSquared);
-        }
-        if (movingRegime == StepRegime.STABLE) {
-            return StepRegime.STABLE;
-        }
-        return speedSquared == 0f ? regimeByProducts(particle, stepSeconds, 0f) : movingRegime;
     }
 
     /**

@@ -225,7 +225,7 @@ class ParticleIntegratorFoldingTest {
     }
 
     /**
-     * An integrator looks at its forces only after some folded force anywhere changed: a
+     * A setter marks stale the folds of the integrators that hold its force, and no other: a
      * change of another integrator's force leaves it as it was, a change of a force two
      * integrators share reaches both, and a change after another one was already seen is
      * seen too.
