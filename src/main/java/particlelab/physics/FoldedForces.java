@@ -51,6 +51,7 @@ final class FoldedForces {
     /** ... h·k/m of thrust (m/s) ... */
     float stepThrust;
 
+    /** The built-in forces by type, each in the scene's order. */
     private final Gravity[] gravities;
     private final LinearDrag[] linearDrags;
     private final QuadraticDrag[] quadraticDrags;
