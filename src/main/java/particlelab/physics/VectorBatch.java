@@ -6,8 +6,9 @@ import jdk.incubator.vector.VectorSpecies;
 
 /**
  * The batch step with gravity and linear drag written with the JDK's Vector API
- * ({@code jdk.incubator.vector}), for {@link ParticleIntegrator#stepPacked} when the JVM was
- * started with {@code --add-modules jdk.incubator.vector}.
+ * ({@code jdk.incubator.vector}): the second form of {@link PackedStep}'s step by axes (for
+ * {@link ParticleIntegrator#stepPacked}) when the JVM was started with
+ * {@code --add-modules jdk.incubator.vector}.
  *
  * <p>Why it exists: the JIT turns the scalar pass of one axis into vector instructions, but
  * not a check of its results (a sum over the positions is a reduction it will not reorder),

@@ -24,7 +24,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 class ParticleIntegratorFoldingTest {
 
     /** The unit round-off of float, 2^-24: one rounding errs by at most this, relatively. */
-    private static final double U = Math.ulp(1f) / 2.0;
+    static final double U = Math.ulp(1f) / 2.0;
     /**
      * Roundings per path in one velocity update, each erring by at most U of a term no larger
      * than the scale S of {@link #assertFoldedAgrees}: the folded path rounds 1/m, b/m, h·b/m,
@@ -33,7 +33,7 @@ class ParticleIntegratorFoldingTest {
      * path 1/m, c·|V|, the product by V, ·(1/m), + g, h·a and V + h·a (at most 8 with the
      * square root). Both errors add: 24.
      */
-    private static final double ROUNDINGS = 24.0;
+    static final double ROUNDINGS = 24.0;
     private static final float H = 1f / 60f;
     private static final int COUNT = 41;
 
@@ -225,7 +225,7 @@ class ParticleIntegratorFoldingTest {
     }
 
     /**
-     * An integrator looks at its forces only after some folded force anywhere changed: a
+     * A setter marks stale the folds of the integrators that hold its force, and no other: a
      * change of another integrator's force leaves it as it was, a change of a force two
      * integrators share reaches both, and a change after another one was already seen is
      * seen too.
@@ -515,7 +515,7 @@ class ParticleIntegratorFoldingTest {
     }
 
     /** σ⁺: the drag rate with every term taken positive (in 1/s). */
-    private static double positiveDragRate(Force[] forces, double speed, float mass) {
+    static double positiveDragRate(Force[] forces, double speed, float mass) {
         double rate = 0.0;
         for (Force force : forces) {
             if (force instanceof LinearDrag) {
@@ -535,7 +535,7 @@ class ParticleIntegratorFoldingTest {
     }
 
     /** Step objects and the packed copy side by side: the same floats. */
-    private static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass,
+    static void assertBatchMatchesObjects(ParticleIntegrator integrator, float mass,
             int count, int steps) {
         Particle[] particles = new Particle[count];
         float[] positions = new float[3 * count];
@@ -609,7 +609,7 @@ class ParticleIntegratorFoldingTest {
     }
 
     /** Each force behind a plain {@link Force}, so that the integrator cannot fold it. */
-    private static Force[] hide(Force... forces) {
+    static Force[] hide(Force... forces) {
         Force[] hidden = new Force[forces.length];
         for (int i = 0; i < forces.length; ++i) {
             hidden[i] = new ThroughInterface(forces[i]);
