@@ -138,6 +138,16 @@ public final class Body {
     }
 
     /**
+     * Copy the velocity at the start of the last step.
+     *
+     * @param storeResult storage for the result (in m/s, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyPreviousVelocity(Vector3f storeResult) {
+        return storeResult.set(previousVelocity);
+    }
+
+    /**
      * Copy the velocity the forces added during the last step, {@code h·a}: what Cyclone's
      * resting-contact fix removes.
      *
