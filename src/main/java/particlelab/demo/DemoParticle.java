@@ -216,6 +216,16 @@ public final class DemoParticle {
     }
 
     /**
+     * Test whether the world stepped the particle in the step just taken (it was not held at
+     * the step's start): for a demo's hook or view that follows the particle step by step.
+     *
+     * @return true if it was stepped
+     */
+    public boolean wasSteppedThisStep() {
+        return steppedThisStep;
+    }
+
+    /**
      * Test whether the particle has come down through the ground since its launch.
      *
      * @return true if it landed
