@@ -2,7 +2,7 @@ package particlelab.demo;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import particlelab.aiming.Landing;
+import java.util.function.Consumer;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.ParticleView;
@@ -16,7 +16,9 @@ import particlelab.world.Body;
  *
  * <p>A particle can be <em>held</em>: it is not stepped (a bullet still in the gun, or one
  * that has landed). A particle told to {@link #stopAtGround() stop at the ground} is held at
- * the point where it crossed {@code y = 0}, interpolated inside the step, as in the lecture.
+ * the point where it crossed {@code y = 0} inside the step, as in the lecture: by its demo
+ * world's ground stop rule (the ground plane, the swept test and the stick response), so the
+ * landing is a contact the world's listeners and log see like any other.
  */
 public final class DemoParticle {
 
@@ -30,8 +32,12 @@ public final class DemoParticle {
     /** Every state since the launch, for the export. */
     private final TrajectoryRecord record = new TrajectoryRecord();
     private boolean stopsAtGround;
+    /** Registers the particle with its demo's ground stop rule. */
+    private final Consumer<DemoParticle> groundStop;
     /** Set by the base class before each step: the world steps this particle in it. */
     boolean steppedThisStep;
+    /** The world's ground stop landed the particle in the current step. */
+    boolean landedThisStep;
     private boolean landed;
     private boolean parked;
     private float landingX = Float.NaN;
@@ -40,8 +46,9 @@ public final class DemoParticle {
     /** Created by the base class at initialisation. */
     ParticleView view;
 
-    DemoParticle(String label, ColorRGBA color, Body body) {
+    DemoParticle(String label, ColorRGBA color, Body body, Consumer<DemoParticle> groundStop) {
         this.label = label;
+        this.groundStop = groundStop;
         this.color = color.clone();
         this.body = body;
         this.particle = body.getParticle();
@@ -56,7 +63,10 @@ public final class DemoParticle {
      * @return this
      */
     public DemoParticle stopAtGround() {
-        stopsAtGround = true;
+        if (!stopsAtGround) {
+            stopsAtGround = true;
+            groundStop.accept(this);
+        }
         return this;
     }
 
@@ -206,6 +216,16 @@ public final class DemoParticle {
     }
 
     /**
+     * Test whether the world stepped the particle in the step just taken (it was not held at
+     * the step's start): for a demo's hook or view that follows the particle step by step.
+     *
+     * @return true if it was stepped
+     */
+    public boolean wasSteppedThisStep() {
+        return steppedThisStep;
+    }
+
+    /**
      * Test whether the particle has come down through the ground since its launch.
      *
      * @return true if it landed
@@ -242,22 +262,29 @@ public final class DemoParticle {
     }
 
     /**
-     * Count a step the particle just took and, if it stops at the ground and came down
-     * through {@code y = 0} in that step, land it where it crossed: the lecture's rule, with
-     * the crossing interpolated linearly inside the step ({@link Landing}). Allocates nothing.
+     * Count a step the particle just took. Allocates nothing.
      *
-     * @param previousPosition its position before the step (in metres, not null, not
-     *     modified)
      * @param stepSeconds h of the step (in seconds, &gt;0)
      */
-    void recordStep(Vector3f previousPosition, float stepSeconds) {
+    void countStep(float stepSeconds) {
         flightSeconds += stepSeconds;
-        if (stopsAtGround && Landing.crossesGround(previousPosition.y, particle.position.y)) {
-            double fraction = Landing.crossingFraction(previousPosition.y, particle.position.y);
-            float x = (float) (previousPosition.x
-                    + fraction * (particle.position.x - previousPosition.x));
-            land(x, flightSeconds - stepSeconds + fraction * stepSeconds);
-        }
+    }
+
+    /**
+     * Record the landing the world's ground stop just resolved: the stick response left the
+     * particle held at the crossing of {@code y = 0} on the step's straight segment. Called
+     * from the contact's epilogue, before {@link #countStep} counts the step.
+     *
+     * @param fraction when inside the step it crossed (0 to 1)
+     * @param stepSeconds h of the step (in seconds, &gt;0)
+     */
+    void recordLanding(float fraction, float stepSeconds) {
+        landed = true;
+        landedThisStep = true;
+        landingX = particle.position.x;
+        landingSeconds = flightSeconds + (double) fraction * stepSeconds;
+        // On the ground exactly: the segment's point is y = 0 to float round-off.
+        particle.position.y = 0f;
     }
 
     /** Put the particle back to its launch state, not held, not landed. */
@@ -270,20 +297,5 @@ public final class DemoParticle {
         landingSeconds = Double.NaN;
         flightSeconds = 0.0;
         record.clear();
-    }
-
-    /**
-     * Record a landing and hold the particle on the ground.
-     *
-     * @param x where it crossed (in metres)
-     * @param seconds when it crossed since the launch (in seconds)
-     */
-    private void land(float x, double seconds) {
-        landed = true;
-        body.setHeld(true);
-        landingX = x;
-        landingSeconds = seconds;
-        particle.position.set(x, 0f, particle.position.z);
-        particle.velocity.zero();
     }
 }

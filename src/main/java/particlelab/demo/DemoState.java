@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import particlelab.physics.NonFiniteStepException;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
@@ -21,7 +22,12 @@ import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;
+import particlelab.world.Contact;
+import particlelab.world.ContactListener;
+import particlelab.world.Detection;
+import particlelab.world.ScriptedResponse;
 import particlelab.world.StepListener;
+import particlelab.world.SurfaceRule;
 import particlelab.world.World;
 
 /**
@@ -113,6 +119,33 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder titleText = new StringBuilder(64);
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
+    /** Scratch: a particle's velocity before its step (m/s). */
+    private final Vector3f previousVelocity = new Vector3f();
+    /** Scratch: a landed particle's step without the ground, for its export row. */
+    private final Particle freeStep = new Particle();
+    /**
+     * The lecture's stop at the ground, as a rule of the world: the plane y = 0, the swept
+     * test and the stick response, for the particles told to {@link DemoParticle#stopAtGround}
+     * (created with the first of them).
+     */
+    private SurfaceRule groundStop;
+    /** Tells a particle the ground stop landed it, with when in the step. */
+    private final ContactListener landings = new ContactListener() {
+        @Override
+        public void resolved(Contact contact, World stepping) {
+            if (contact.getRule() != groundStop) {
+                return;
+            }
+            for (int i = 0; i < particles.size(); ++i) {
+                DemoParticle particle = particles.get(i);
+                if (particle.getBody() == contact.getBodyA()) {
+                    particle.recordLanding(contact.getFraction(), currentStepSeconds);
+                }
+            }
+        }
+    };
+    /** h of the step under way (s). */
+    private float currentStepSeconds;
     /** What the launches reach, for the camera to frame. */
     private final LaunchReach reach = new LaunchReach();
 
@@ -255,7 +288,7 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("label, color and integrator must not be null");
         }
         Body body = world.addBody(integrator, position, velocity, massKg, 0f);
-        DemoParticle particle = new DemoParticle(label, color, body);
+        DemoParticle particle = new DemoParticle(label, color, body, this::joinGroundStop);
         particles.add(particle);
         return particle;
     }
@@ -1058,8 +1091,10 @@ public abstract class DemoState extends BaseAppState {
     /** Before the world moves anything: which particles it steps, and what h does to them. */
     private void observeParticles(float stepSeconds) {
         warnings.beginStep(stepSeconds);
+        currentStepSeconds = stepSeconds;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
+            demoParticle.landedThisStep = false;
             demoParticle.steppedThisStep = !demoParticle.isHeld();
             if (demoParticle.steppedThisStep) {
                 demoParticle.getRecord().begin(demoParticle.getParticle());
@@ -1079,15 +1114,42 @@ public abstract class DemoState extends BaseAppState {
             if (!demoParticle.steppedThisStep) {
                 continue;
             }
-            // The export's row: the stepped state, before the ground stop moves it.
-            demoParticle.getRecord().add(demoParticle.getParticle(), stepSeconds);
-            demoParticle.getBody().copyPreviousPosition(previousPosition);
-            // Flight time, and the lecture's stop at the ground, inside the step.
-            demoParticle.recordStep(previousPosition, stepSeconds);
+            // The export's row: the stepped state, the landing step's as the Euler step left
+            // it below the ground (what `trajectory --until-ground` prints last).
+            demoParticle.getRecord().add(demoParticle.landedThisStep
+                    ? stepWithoutGround(demoParticle, stepSeconds)
+                    : demoParticle.getParticle(), stepSeconds);
+            demoParticle.countStep(stepSeconds);
         }
         ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
         warnings.endStep();
+    }
+
+    /**
+     * Put a particle under the world's ground stop rule, made with the first particle that
+     * stops at the ground.
+     */
+    private void joinGroundStop(DemoParticle particle) {
+        if (groundStop == null) {
+            groundStop = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
+            world.addRule(groundStop);
+            world.addContactListener(landings);
+        }
+        groundStop.limitTo(particle.getBody());
+    }
+
+    /**
+     * Redo a landed particle's last step without the ground: the same integrator from the same
+     * state, so the same bits the world's integration gave before the stick moved it.
+     */
+    private Particle stepWithoutGround(DemoParticle particle, float stepSeconds) {
+        Body body = particle.getBody();
+        freeStep.setMass(body.getMass());
+        freeStep.setState(body.copyPreviousPosition(previousPosition),
+                body.copyPreviousVelocity(previousVelocity));
+        particle.getIntegrator().step(freeStep, stepSeconds);
+        return freeStep;
     }
 
     /**

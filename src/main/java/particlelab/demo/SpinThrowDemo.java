@@ -15,6 +15,8 @@ import particlelab.rigid.RotationIntegrator;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
 import particlelab.view.Trail;
+import particlelab.world.StepListener;
+import particlelab.world.World;
 
 /**
  * Spin and throw: rotation combined with translation. A box is thrown with {@code V0} and
@@ -71,6 +73,17 @@ public final class SpinThrowDemo extends DemoState {
     private DemoParticle centre;
     private RigidBody body;
     private BoxView box;
+    /** The view's listener: after each step the box's trails take the new points. */
+    private final StepListener trailWriter = new StepListener() {
+        @Override
+        public void afterStep(World stepping, float stepSeconds) {
+            if (cornerTrail != null && centre.wasSteppedThisStep()) {
+                centreTrail.add(body.getParticle().position);
+                cornerTrail.add(body.bodyToWorld(CORNER, corner));
+                formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
+            }
+        }
+    };
     private Trail centreTrail;
     private Trail cornerTrail;
     private Trail formulaTrail;
@@ -183,8 +196,10 @@ public final class SpinThrowDemo extends DemoState {
         centre = addParticle("centre", new ColorRGBA(1f, 0.85f, 0.35f, 1f), LAUNCH_POSITION,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(new Gravity(), drag))
                 .stopAtGround();
-        // The rigid body shares the demo particle: translation is the particle's step.
+        // The rigid body shares the demo particle: the world steps the translation (the
+        // particle's step) and then the rotation, in the same step.
         body = new RigidBody(centre.getParticle(), inertia);
+        centre.getBody().setRotation(body, rotation);
         resetRotation();
         // The sphere's radius is the box's half diagonal, so the centre's label keeps clear
         // of the turning box; the sphere itself is hidden inside the box (initialize).
@@ -232,21 +247,19 @@ public final class SpinThrowDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
-        if (centre.isHeld() || centre.hasLanded()) {
+        if (!centre.wasSteppedThisStep()) {
             return;
         }
-        // The centre was moved by the particle step; now the rotation step.
-        rotation.step(body, stepSeconds);
+        // The world turned the box with its translation; this only measures the turn.
         double atan = Math.atan2(body.orientation.get(1, 0), body.orientation.get(0, 0));
         double turn = atan - lastAtan;
         measuredAngle += turn - 2.0 * Math.PI * Math.rint(turn / (2.0 * Math.PI));
         lastAtan = atan;
         spinSeconds += stepSeconds;
-        if (cornerTrail != null) {
-            centreTrail.add(body.getParticle().position);
-            cornerTrail.add(body.bodyToWorld(CORNER, corner));
-            formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
-        }
+    }
+
+    @Override
+    protected void afterFrame() {
         updateViews();
     }
 
@@ -287,7 +300,14 @@ public final class SpinThrowDemo extends DemoState {
         getSceneNode().attachChild(formulaTrail.getGeometry());
         getSceneNode().attachChild(cornerTrail.getGeometry());
         getSceneNode().attachChild(box.getGeometry());
+        getWorld().addStepListener(trailWriter);
         onRestart();
+    }
+
+    @Override
+    protected void cleanup(Application app) {
+        getWorld().removeStepListener(trailWriter);
+        super.cleanup(app);
     }
 
     /**

@@ -5,12 +5,14 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
+import particlelab.world.Body;
 
 /**
  * Tennis racket: the intermediate-axis flip. A torque-free flat box with principal moments
@@ -48,6 +50,8 @@ public final class TennisRacketDemo extends DemoState {
     private static final int FLIPS_SHOWN = 6;
 
     private final RigidBody[] bodies = new RigidBody[METHODS.length];
+    /** The world's bodies the rigid bodies turn about, one per method. */
+    private final Body[] worldBodies = new Body[METHODS.length];
     /** Per method: the integrator with the gyroscopic term, and without it. */
     private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
     private final RotationIntegrator[] withoutGyroscopic =
@@ -72,14 +76,12 @@ public final class TennisRacketDemo extends DemoState {
     public TennisRacketDemo() {
         super("Tennis racket (intermediate axis)");
         for (int i = 0; i < METHODS.length; ++i) {
-            bodies[i] = new RigidBody(1f, INERTIA);
             integrators[i] = new RotationIntegrator(RotationIntegrator.Orientation.EXACT,
                     METHODS[i], true);
             withoutGyroscopic[i] = new RotationIntegrator(
                     RotationIntegrator.Orientation.EXACT, METHODS[i], false);
         }
         tilt.fromAngleNormalAxis(TILT, Vector3f.UNIT_X);
-        resetBodies();
     }
 
     /**
@@ -89,6 +91,7 @@ public final class TennisRacketDemo extends DemoState {
      * @return the live body (not null)
      */
     public RigidBody getBody(int method) {
+        getWorld();
         return bodies[method];
     }
 
@@ -129,6 +132,9 @@ public final class TennisRacketDemo extends DemoState {
      */
     public void setGyroscopic(boolean on) {
         gyroscopic = on;
+        for (int i = 0; i < METHODS.length; ++i) {
+            worldBodies[i].setRotation(bodies[i], rotationStep(i));
+        }
         restart();
     }
 
@@ -143,6 +149,15 @@ public final class TennisRacketDemo extends DemoState {
 
     @Override
     protected void createScene() {
+        // One body per method, with no force and at rest: the world steps only its rotation
+        // (the translation step leaves a body at rest where it is).
+        ParticleIntegrator noForce = new ParticleIntegrator();
+        for (int i = 0; i < METHODS.length; ++i) {
+            worldBodies[i] = getWorld().addBody(noForce, centre, Vector3f.ZERO, 1f, 0f);
+            bodies[i] = new RigidBody(worldBodies[i].getParticle(), INERTIA);
+            worldBodies[i].setRotation(bodies[i], rotationStep(i));
+        }
+        resetBodies();
         setView(-5f, 5f, 5f, 1f, 2, 0.3f);
     }
 
@@ -203,9 +218,9 @@ public final class TennisRacketDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        // The world turned both plates; this only watches body-frame ωy change sign.
         elapsedSeconds += stepSeconds;
         for (int i = 0; i < METHODS.length; ++i) {
-            (gyroscopic ? integrators[i] : withoutGyroscopic[i]).step(bodies[i], stepSeconds);
             boolean positive = bodies[i].bodyAngularVelocity(bodyOmega).y > 0f;
             if (positive != positiveWy[i]) {
                 if (flips[i] < FLIPS_KEPT) {
@@ -215,6 +230,10 @@ public final class TennisRacketDemo extends DemoState {
                 positiveWy[i] = positive;
             }
         }
+    }
+
+    @Override
+    protected void afterFrame() {
         updateView();
     }
 
@@ -245,6 +264,10 @@ public final class TennisRacketDemo extends DemoState {
             flips[i] = 0;
             positiveWy[i] = BODY_SPIN.y > 0f;
         }
+    }
+
+    private RotationIntegrator rotationStep(int method) {
+        return gyroscopic ? integrators[method] : withoutGyroscopic[method];
     }
 
     private void updateView() {

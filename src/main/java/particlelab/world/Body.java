@@ -4,6 +4,8 @@ import com.jme3.math.Vector3f;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Validate;
+import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationIntegrator;
 
 /**
  * What moves in a {@link World}: a {@link Particle} (P, V, m), the {@link ParticleIntegrator}
@@ -52,6 +54,10 @@ public final class Body {
     private int mask;
     private double flightSeconds;
     private double scriptedSinceSeconds;
+    /** The optional rotation part: orientation, ω and inertia about this body's centre. */
+    private RigidBody rigidBody;
+    /** Steps {@link #rigidBody}'s ω and R after each translation step (null with it). */
+    private RotationIntegrator rotationIntegrator;
     private int id;
     boolean inWorld;
     boolean removalPending;
@@ -79,6 +85,8 @@ public final class Body {
         group = DEFAULT_GROUP;
         mask = ALL_GROUPS;
         removalPending = false;
+        rigidBody = null;
+        rotationIntegrator = null;
         restart();
     }
 
@@ -135,6 +143,16 @@ public final class Body {
      */
     public Vector3f copyPreviousPosition(Vector3f storeResult) {
         return storeResult.set(previousPosition);
+    }
+
+    /**
+     * Copy the velocity at the start of the last step.
+     *
+     * @param storeResult storage for the result (in m/s, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyPreviousVelocity(Vector3f storeResult) {
+        return storeResult.set(previousVelocity);
     }
 
     /**
@@ -348,6 +366,49 @@ public final class Body {
      */
     public double getScriptedSinceSeconds() {
         return scriptedSinceSeconds;
+    }
+
+    /**
+     * Give the body a rotation part, or take it away: the world then steps the body's
+     * translation and then its rotation in each step, as the lecture's "combine with
+     * translation" says ({@link RigidBody#step}, in this order). The rigid body must share
+     * this body's particle, so there is one centre.
+     *
+     * @param newRigidBody the orientation, ω, torque and inertia (its particle must be this
+     *     body's; null for a point body)
+     * @param newIntegrator the rotation step (not null with a rigid body, null without)
+     * @return this
+     */
+    public Body setRotation(RigidBody newRigidBody, RotationIntegrator newIntegrator) {
+        if ((newRigidBody == null) != (newIntegrator == null)) {
+            throw new IllegalArgumentException("a rotation needs both the rigid body and its"
+                    + " integrator, but was given " + newRigidBody + " and " + newIntegrator);
+        }
+        if (newRigidBody != null && newRigidBody.getParticle() != particle) {
+            throw new IllegalArgumentException("the rigid body must share the body's particle"
+                    + " (new RigidBody(body.getParticle(), inertia)), but has its own");
+        }
+        rigidBody = newRigidBody;
+        rotationIntegrator = newIntegrator;
+        return this;
+    }
+
+    /**
+     * Access the rotation part.
+     *
+     * @return the live rigid body, or null for a point body
+     */
+    public RigidBody getRigidBody() {
+        return rigidBody;
+    }
+
+    /**
+     * Access the rotation step the world uses for this body.
+     *
+     * @return the integrator, or null for a point body
+     */
+    public RotationIntegrator getRotationIntegrator() {
+        return rotationIntegrator;
     }
 
     /**

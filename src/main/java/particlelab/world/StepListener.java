@@ -5,6 +5,13 @@ package particlelab.world;
  * epilogue. Scripts move kinematic bodies in {@link #beforeStep}; trails, warnings and a
  * demo's own hook read the finished step in {@link #afterStep}. Implementations should
  * allocate nothing.
+ *
+ * <p><b>The rule: {@code afterStep} observes; it moves nothing.</b> Every motion of a scene
+ * happens inside {@link World#step}: the integrator moves the bodies (and turns those with a
+ * rotation part), the collision rules and their responses change them at contacts, the
+ * lecture's ground stop among them. A listener that set a position, a velocity or an
+ * orientation after the step would move a body that no contact, log or listener saw move.
+ * A relaunch (a new shot) is a restart of the body, not motion, and is asked for the same way.
  */
 public interface StepListener {
 

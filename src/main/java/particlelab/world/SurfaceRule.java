@@ -1,6 +1,8 @@
 package particlelab.world;
 
 import com.jme3.math.Vector3f;
+import java.util.ArrayList;
+import java.util.List;
 import particlelab.collision.Plane;
 import particlelab.collision.Surface;
 
@@ -22,6 +24,8 @@ public final class SurfaceRule implements CollisionRule {
     private final Vector3f touch = new Vector3f();
     /** Scratch: the normal of a refresh (unused result). */
     private final Vector3f refreshNormal = new Vector3f();
+    /** The only bodies the rule looks at, or null for every body of the world. */
+    private List<Body> members;
 
     /**
      * Create a rule.
@@ -88,6 +92,27 @@ public final class SurfaceRule implements CollisionRule {
         return this;
     }
 
+    /**
+     * Make the rule look only at the bodies added this way (the others never touch it, and no
+     * contact of theirs is detected or logged): e.g. the lecture's ground stop for the
+     * particles that stop there, beside a demo's other rules. Call while building a scene.
+     *
+     * @param body a body of the world the rule is for (not null)
+     * @return this
+     */
+    public SurfaceRule limitTo(Body body) {
+        if (body == null) {
+            throw new IllegalArgumentException("body must be a body, but was null");
+        }
+        if (members == null) {
+            members = new ArrayList<>();
+        }
+        if (!members.contains(body)) {
+            members.add(body);
+        }
+        return this;
+    }
+
     @Override
     public Detection getDetection() {
         return detection;
@@ -115,10 +140,10 @@ public final class SurfaceRule implements CollisionRule {
 
     @Override
     public void detect(World world, float stepSeconds, Contacts out) {
-        int count = world.countBodies();
+        int count = members == null ? world.countBodies() : members.size();
         for (int i = 0; i < count; ++i) {
-            Body body = world.getBody(i);
-            if (body.getInverseMass() == 0f) {
+            Body body = members == null ? world.getBody(i) : members.get(i);
+            if (body.getInverseMass() == 0f || !body.isInWorld()) {
                 continue;
             }
             float radius = body.getRadius();

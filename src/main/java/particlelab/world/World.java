@@ -6,6 +6,7 @@ import java.util.List;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.rigid.RigidBody;
 
 /**
  * The simulation of one scene: its bodies, collision rules and listeners, and the one
@@ -17,9 +18,10 @@ import particlelab.physics.SimulationClock;
  * <ol>
  * <li>{@link StepListener#beforeStep} (scripts set kinematic velocities here);</li>
  * <li><b>integrate</b> every body not held with its own {@link ParticleIntegrator}, the
- * lecture's semi-implicit Euler step {@code V += h·a, P += h·V}: the only thing that moves a
- * body between contacts. Within the step each body then moves on the straight segment from
- * its previous position to its new one;</li>
+ * lecture's semi-implicit Euler step {@code V += h·a, P += h·V}, and then, for a body with a
+ * rotation part ({@link Body#setRotation}), its rotation step (ω, then R): the only thing
+ * that moves a body between contacts. Within the step each body then moves on the straight
+ * segment from its previous position to its new one;</li>
  * <li><b>swept contacts</b>, earliest first: the {@link Detection#SWEPT} rules find the first
  * time of impact ahead of every body on its segment; the earliest contact goes through the
  * prologue and, if accepted, its bodies are put where they are at that moment, resolved, and
@@ -34,7 +36,9 @@ import particlelab.physics.SimulationClock;
  * <li><b>epilogue</b>: {@link ContactListener#resolved} for every resolved contact of the
  * step, in time order, then every contact goes into the {@link ContactLog}; bodies destroyed
  * during the step leave the world only now;</li>
- * <li>{@link StepListener#afterStep}.</li>
+ * <li>{@link StepListener#afterStep}: listeners observe the step (records, readouts, views);
+ * they move nothing. A demo that needs another simulation beside this one steps it beside the
+ * world, with the same clock, not inside its step.</li>
  * </ol>
  * The prologue runs the world's own filters first (ghosts, collision groups and masks,
  * one-way surfaces), then each {@link ContactListener#accept}; an accepted contact faster
@@ -488,6 +492,11 @@ public final class World implements SimulationClock.Stepper {
             body.previousVelocity.set(body.particle.velocity);
             if (!body.isHeld()) {
                 body.getIntegrator().step(body.particle, stepSeconds);
+                RigidBody rigid = body.getRigidBody();
+                if (rigid != null) {
+                    // Translation first, then rotation: the lecture's order (RigidBody.step).
+                    body.getRotationIntegrator().step(rigid, stepSeconds);
+                }
                 body.addFlightSeconds(stepSeconds);
             }
             body.gainedVelocity.set(body.particle.velocity).subtractLocal(body.previousVelocity);

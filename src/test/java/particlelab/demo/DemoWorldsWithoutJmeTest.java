@@ -8,6 +8,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import particlelab.app.DemoCatalog;
 import particlelab.physics.Particle;
+import particlelab.rigid.RigidBody;
+import particlelab.world.Body;
 
 /**
  * A demo's physics needs no jME application: every catalogued demo, made with {@code new}, has
@@ -42,22 +44,28 @@ class DemoWorldsWithoutJmeTest {
             }
             assertTrue(moved, name + ": no body moved in " + STEPS + " steps");
         } else {
-            // Demos whose bodies live outside the world's list (the rotation boxes, the
-            // fountain's packed particles) show the steps in their numbers.
+            // Demos whose bodies live outside the world's list (the rotation demo's matrices,
+            // the fountain's packed particles) show the steps in their numbers.
             String hudAfter = demo.formatHud(new StringBuilder()).toString();
             assertNotEquals(hudBefore, hudAfter, name + ": the HUD's numbers did not change");
         }
     }
 
+    /** Every body's position, and the orientation of those that turn. */
     private static float[] positions(DemoState demo) {
         int count = demo.getWorld().countBodies();
-        float[] xyz = new float[3 * count];
+        float[] state = new float[12 * count];
         for (int i = 0; i < count; ++i) {
-            Particle particle = demo.getWorld().getBody(i).getParticle();
-            xyz[3 * i] = particle.position.x;
-            xyz[3 * i + 1] = particle.position.y;
-            xyz[3 * i + 2] = particle.position.z;
+            Body body = demo.getWorld().getBody(i);
+            Particle particle = body.getParticle();
+            state[12 * i] = particle.position.x;
+            state[12 * i + 1] = particle.position.y;
+            state[12 * i + 2] = particle.position.z;
+            RigidBody rigid = body.getRigidBody();
+            for (int k = 0; k < 9 && rigid != null; ++k) {
+                state[12 * i + 3 + k] = rigid.orientation.get(k / 3, k % 3);
+            }
         }
-        return xyz;
+        return state;
     }
 }
