@@ -18,8 +18,11 @@ import particlelab.physics.Validate;
  * {@link AimStrategy#BISECTION} and {@link AimStrategy#SECANT} bracket the same way and narrow
  * differently; {@link AimStrategy#LECTURE} climbs by a fixed change instead of doubling.
  *
- * <p>With drag the reach at fixed vx has a maximum (linear drag: no launch passes
- * {@code vx·m/b}). When the reach stops growing while still short, or the bullet stops coming
+ * <p>A shot fired slower upward than {@code g·h} is under the ground after its first step and
+ * lands at the gun: every such vy reaches 0 m. That is not a peak: the search goes on doubling
+ * vy until a shot flies. With drag the reach at fixed vx has a maximum (linear drag: no launch
+ * passes {@code vx·m/b}). When the reach of shots that flew stops growing while still short,
+ * or the bullet stops coming
  * down within the allowed flight time, the answer is "out of reach" with the farthest shot
  * found. When the shots run out first, the answer is "no hit" with the closest shot found:
  * a tolerance finer than the float round-off of the stepped shot (vy is fired as a float, one
@@ -217,7 +220,10 @@ public final class IterativeAim {
             if (miss > 0.0) {
                 break;
             }
-            if (miss <= lowMiss + STALL_FRACTION * searchTolerance) {
+            // A shot whose vy is below g·h is under the ground after its first step and lands
+            // at the gun (x = 0): its reach is flat in vy, but not because of a peak.
+            boolean flew = landing.getX() > 0.0;
+            if (flew && miss <= lowMiss + STALL_FRACTION * searchTolerance) {
                 // The reach stopped growing: its peak lies between beforeLowVy and vy.
                 vy = searchPeak(horizontalSpeed, distance, beforeLowVy, vy);
                 miss = landing.getX() - distance;
