@@ -9,6 +9,7 @@ import particlelab.physics.SimulationClock;
 import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.SpinAngle;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
 
@@ -37,11 +38,22 @@ import particlelab.view.TextFormat;
  * constant ω is the polar box itself (the cure removes the stretch, not the lag), so the two
  * read the same. The boxes are drawn by moving their vertices with R itself, so what you
  * see is the matrix, drift and all.
+ *
+ * <p>Two numbers per box say how far it is behind: the angle to the exact rotation, a distance
+ * between orientations that wraps at 180° (a box a whole turn behind reads 0°), and the lag,
+ * the exact angle {@code |ω|·t} minus the angle the box has turned about ω, summed step by step
+ * so that it never wraps ({@link SpinAngle}). At {@code |ω|h = 0.8} (Up Up Right Right) the
+ * polar box soon lags by more than a turn and its angle to the exact rotation falls again,
+ * below the quaternion's: only the lag ranks them right. The plain box's restarts are named on
+ * its line, with their time, for {@value #RESTART_NOTE_SECONDS} s of simulated time after
+ * each: a box that has just started again reads det 1 and no error, which is not accuracy.
  */
 public final class RotationDemo extends DemoState {
 
     /** The plain box starts again once its det R reaches this (1.5³). */
     public static final float DET_LIMIT = 3.375f;
+    /** How long the plain box's line names its last restart (simulated seconds). */
+    public static final float RESTART_NOTE_SECONDS = 2f;
     /** The starting spin rate |ω| (rad/s), and its range for the keys. */
     public static final float DEFAULT_OMEGA = 3f;
     public static final float MIN_OMEGA = 0.75f;
@@ -74,6 +86,12 @@ public final class RotationDemo extends DemoState {
     private final Vector3f[] centres = new Vector3f[METHODS.length];
     /** Per box: the time since it started from the identity (s), for its exact rotation. */
     private final double[] elapsedSeconds = new double[METHODS.length];
+    /** Per box: the angle it has turned about ω since it started, unwrapped. */
+    private final SpinAngle[] spinAngles = new SpinAngle[METHODS.length];
+    /** The simulated time since the demo (re)started (s): the exact box never restarts. */
+    private double runSeconds;
+    /** When the plain box last started again on its own (s of {@link #runSeconds}), or NaN. */
+    private double plainRestartSeconds = Double.NaN;
     private final RotationCheck check = new RotationCheck();
     private final Matrix3f identity = new Matrix3f();
     private final Matrix3f exact = new Matrix3f();
@@ -93,8 +111,12 @@ public final class RotationDemo extends DemoState {
             integrators[i] = new RotationIntegrator(METHODS[i],
                     RotationIntegrator.Angular.EXPLICIT, true);
             centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, BOX_Z);
+            spinAngles[i] = new SpinAngle();
         }
         omega.set(AXIS).multLocal(omegaMagnitude);
+        for (int i = 0; i < METHODS.length; ++i) {
+            spinAngles[i].start(orientations[i], omega);
+        }
     }
 
     /**
@@ -115,6 +137,26 @@ public final class RotationDemo extends DemoState {
      */
     public double getElapsedSeconds(int box) {
         return elapsedSeconds[box];
+    }
+
+    /**
+     * Return how far one box lags the exact rotation in accumulated angle: {@code |ω|·t} minus
+     * the angle it has turned about ω since it last started, unwrapped (see {@link SpinAngle}).
+     *
+     * @param box 0 to 3, in the order of {@link #METHODS}
+     * @return the lag (in radians; positive when behind; grows past 2π)
+     */
+    public double getLagRadians(int box) {
+        return spinAngles[box].lagRadians(omegaMagnitude * elapsedSeconds[box]);
+    }
+
+    /**
+     * Return when the plain box last started again on its own, reaching {@link #DET_LIMIT}.
+     *
+     * @return the time since the demo started (in seconds), or NaN if it has not since then
+     */
+    public double getPlainRestartSeconds() {
+        return plainRestartSeconds;
     }
 
     /**
@@ -192,13 +234,12 @@ public final class RotationDemo extends DemoState {
             text.append(NAMES[i]).append(":  det R = ");
             TextFormat.appendFixed(text, check.determinant(r), 6).append(",  |R^T·R − I| = ");
             TextFormat.appendFixed(text, check.orthogonalityError(r), 6)
-                    .append(",  angle error = ");
+                    .append(",  to exact = ");
             TextFormat.appendFixed(text, RAD_TO_DEG * check.angleError(r, exact), 4)
-                    .append('°');
+                    .append("°,  lag = ");
+            TextFormat.appendFixed(text, RAD_TO_DEG * getLagRadians(i), 2).append('°');
             if (i == 0) {
-                text.append("   (started again at det ");
-                TextFormat.appendFixed(text, DET_LIMIT, 3).append(": ").append(plainRestarts)
-                        .append(" times)");
+                appendRestarts(text);
             }
             text.append('\n');
         }
@@ -206,14 +247,18 @@ public final class RotationDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        runSeconds += stepSeconds;
         for (int i = 0; i < METHODS.length; ++i) {
             integrators[i].stepOrientation(orientations[i], omega, stepSeconds);
             elapsedSeconds[i] += stepSeconds;
+            spinAngles[i].add(orientations[i]);
         }
         if (check.determinant(orientations[0]) >= DET_LIMIT) {
             orientations[0].loadIdentity();
             elapsedSeconds[0] = 0.0;
+            spinAngles[0].start(orientations[0], omega);
             ++plainRestarts;
+            plainRestartSeconds = runSeconds;
         }
         updateBoxes();
     }
@@ -223,7 +268,10 @@ public final class RotationDemo extends DemoState {
         for (int i = 0; i < METHODS.length; ++i) {
             orientations[i].loadIdentity();
             elapsedSeconds[i] = 0.0;
+            spinAngles[i].start(orientations[i], omega);
         }
+        runSeconds = 0.0;
+        plainRestartSeconds = Double.NaN;
         plainRestarts = 0;
         updateBoxes();
     }
@@ -259,6 +307,21 @@ public final class RotationDemo extends DemoState {
         clock.setStepSeconds(step);
         // The keys set the fixed step; the HUD's stepping line shows the new h.
         clock.setMode(SimulationClock.Mode.FIXED_STEP);
+    }
+
+    /**
+     * The plain box's restarts: the last one and its time while it is recent, else the rule
+     * and the count.
+     */
+    private void appendRestarts(StringBuilder text) {
+        if (runSeconds - plainRestartSeconds <= RESTART_NOTE_SECONDS) {
+            text.append("   RESTARTED at t = ");
+            TextFormat.appendFixed(text, plainRestartSeconds, 2).append(" s (det reached ");
+        } else {
+            text.append("   (restarts when det reaches ");
+        }
+        TextFormat.appendFixed(text, DET_LIMIT, 3).append("; ").append(plainRestarts)
+                .append(plainRestarts == 1 ? " time)" : " times)");
     }
 
     private static double square(double x) {
