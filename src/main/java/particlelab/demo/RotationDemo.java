@@ -238,11 +238,15 @@ public final class RotationDemo extends DemoState {
             TextFormat.appendFixed(text, RAD_TO_DEG * check.angleError(r, exact), 4)
                     .append("°,  lag = ");
             TextFormat.appendFixed(text, RAD_TO_DEG * getLagRadians(i), 2).append('°');
-            if (i == 0) {
-                appendRestarts(text);
+            if (i == 0 && runSeconds - plainRestartSeconds <= RESTART_NOTE_SECONDS) {
+                text.append("   RESTARTED at t = ");
+                TextFormat.appendFixed(text, plainRestartSeconds, 2).append(" s");
             }
             text.append('\n');
         }
+        text.append(NAMES[0]).append(" starts again from R = I when det R reaches ");
+        TextFormat.appendFixed(text, DET_LIMIT, 3).append(": ").append(plainRestarts)
+                .append(plainRestarts == 1 ? " time" : " times").append(" so far\n");
     }
 
     @Override
@@ -307,21 +311,6 @@ public final class RotationDemo extends DemoState {
         clock.setStepSeconds(step);
         // The keys set the fixed step; the HUD's stepping line shows the new h.
         clock.setMode(SimulationClock.Mode.FIXED_STEP);
-    }
-
-    /**
-     * The plain box's restarts: the last one and its time while it is recent, else the rule
-     * and the count.
-     */
-    private void appendRestarts(StringBuilder text) {
-        if (runSeconds - plainRestartSeconds <= RESTART_NOTE_SECONDS) {
-            text.append("   RESTARTED at t = ");
-            TextFormat.appendFixed(text, plainRestartSeconds, 2).append(" s (det reached ");
-        } else {
-            text.append("   (restarts when det reaches ");
-        }
-        TextFormat.appendFixed(text, DET_LIMIT, 3).append("; ").append(plainRestarts)
-                .append(plainRestarts == 1 ? " time)" : " times)");
     }
 
     private static double square(double x) {
