@@ -44,9 +44,10 @@ import particlelab.view.TextFormat;
  * the exact angle {@code |ω|·t} minus the angle the box has turned about ω, summed step by step
  * so that it never wraps ({@link SpinAngle}). At {@code |ω|h = 0.8} (Up Up Right Right) the
  * polar box soon lags by more than a turn and its angle to the exact rotation falls again,
- * below the quaternion's: only the lag ranks them right. The plain box's restarts are named on
- * its line, with their time, for {@value #RESTART_NOTE_SECONDS} s of simulated time after
- * each: a box that has just started again reads det 1 and no error, which is not accuracy.
+ * below the quaternion's: only the lag ranks them right. The plain box's line names its last
+ * restart and its time for {@value #RESTART_NOTE_SECONDS} s of simulated time after it (a box
+ * that has just started again reads det 1 and no error, which is not accuracy), and a line
+ * below the boxes gives the restart rule and the count.
  */
 public final class RotationDemo extends DemoState {
 
