@@ -5,7 +5,8 @@ package particlelab.aiming;
  * its first shot at the lecture's {@code vy = g·S/(2·vx)}, stops once a shot lands within the
  * tolerance, and reports "out of reach" by the same test: while the shots fall short and vy
  * grows, a reach that stops growing is searched for its peak (golden section), and a peak
- * short of S is out of reach.
+ * short of S is out of reach. A shot that lands at the gun (vy below g·h: under the ground
+ * after one step) did not fly, so its flat reach of 0 m is not taken for a peak.
  */
 public enum AimStrategy {
     /**
@@ -33,7 +34,7 @@ public enum AimStrategy {
      * Illinois search to half the tolerance), then fires a first shot that always misses and
      * moves a seeded random 30–170 % of the way toward the right vy at each later shot. Its
      * error shrinks by a factor of at most 0.7 per shot. (A tolerance so large that even a shot
- * landing at the gun is within it leaves no shot that misses.)
+     * landing at the gun is within it leaves no shot that misses.)
      */
     BELIEVABLE("believable");
 

@@ -18,8 +18,11 @@ import particlelab.physics.Validate;
  * {@link AimStrategy#BISECTION} and {@link AimStrategy#SECANT} bracket the same way and narrow
  * differently; {@link AimStrategy#LECTURE} climbs by a fixed change instead of doubling.
  *
- * <p>With drag the reach at fixed vx has a maximum (linear drag: no launch passes
- * {@code vx·m/b}). When the reach stops growing while still short, or the bullet stops coming
+ * <p>A shot fired slower upward than {@code g·h} is under the ground after its first step and
+ * lands at the gun: every such vy reaches 0 m. That is not a peak: the search goes on doubling
+ * vy until a shot flies. With drag the reach at fixed vx has a maximum (linear drag: no launch
+ * passes {@code vx·m/b}). When the reach of shots that flew stops growing while still short,
+ * or the bullet stops coming
  * down within the allowed flight time, the answer is "out of reach" with the farthest shot
  * found. When the shots run out first, the answer is "no hit" with the closest shot found:
  * a tolerance finer than the float round-off of the stepped shot (vy is fired as a float, one
@@ -52,6 +55,12 @@ public final class IterativeAim {
     private static final double PEAK_RESOLUTION = 1e-6;
     /** The believable player halves a first shot that would hit at most this often. */
     private static final int MAX_FIRST_SHOT_RETRIES = 60;
+    /** {@link #mixSeed}: 2⁶⁴ divided by the golden ratio, odd. */
+    private static final long SEED_GAMMA = 0x9E3779B97F4A7C15L;
+    /** {@link #mixSeed}: the multiplier of the first mixing round. */
+    private static final long SEED_MIX_1 = 0xBF58476D1CE4E5B9L;
+    /** {@link #mixSeed}: the multiplier of the second mixing round. */
+    private static final long SEED_MIX_2 = 0x94D049BB133111EBL;
 
     private final ShotSimulator simulator;
     private final double gravity;
@@ -217,7 +226,10 @@ public final class IterativeAim {
             if (miss > 0.0) {
                 break;
             }
-            if (miss <= lowMiss + STALL_FRACTION * searchTolerance) {
+            // A shot whose vy is below g·h is under the ground after its first step and lands
+            // at the gun (x = 0): its reach is flat in vy, but not because of a peak.
+            boolean flew = landing.getX() > 0.0;
+            if (flew && miss <= lowMiss + STALL_FRACTION * searchTolerance) {
                 // The reach stopped growing: its peak lies between beforeLowVy and vy.
                 vy = searchPeak(horizontalSpeed, distance, beforeLowVy, vy);
                 miss = landing.getX() - distance;
@@ -381,7 +393,10 @@ public final class IterativeAim {
             searchTolerance = toleranceMetres;
             right = search(distance, horizontalSpeed, AimStrategy.ILLINOIS).getVerticalSpeed();
         }
-        random.setSeed(seed);
+        // Random.setSeed only flips a few bits of the seed, so nearby seeds would start from
+        // nearby states and fire nearly the same first shot (every seed 1..20 once missed by
+        // 29.6 %): mix the seed first.
+        random.setSeed(mixSeed(seed));
         double error = BELIEVABLE_FIRST_MIN_ERROR + (BELIEVABLE_FIRST_MAX_ERROR
                 - BELIEVABLE_FIRST_MIN_ERROR) * random.nextDouble();
         double firstGuess = random.nextBoolean() ? right * (1.0 + error)
@@ -489,6 +504,21 @@ public final class IterativeAim {
             closestVy = vy;
         }
         return miss;
+    }
+
+    /**
+     * Scramble a seed so that every bit of it affects every bit of the result: SplitMix64's
+     * step (add the golden-ratio increment, then two xor-shift-multiply rounds and a final
+     * xor-shift), the mixing {@link java.util.SplittableRandom} applies to its seeds.
+     *
+     * @param seed any value
+     * @return the mixed seed (the same for the same seed)
+     */
+    static long mixSeed(long seed) {
+        long z = seed + SEED_GAMMA;
+        z = (z ^ (z >>> 30)) * SEED_MIX_1;
+        z = (z ^ (z >>> 27)) * SEED_MIX_2;
+        return z ^ (z >>> 31);
     }
 
     private AimResult hit(double horizontalSpeed, double vy, double distance) {

@@ -10,11 +10,12 @@ import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.SpinAngle;
 
 /**
  * {@code particle-lab rotate}: one torque-free rigid body turned by the
  * {@link RotationIntegrator}, one CSV row per step with the start first:
- * {@code t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum}.
+ * {@code t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum,angle_lag}.
  *
  * <p>Decisions the issue left open, also stated in the help text:
  * <ul>
@@ -25,6 +26,11 @@ import particlelab.rigid.RotationIntegrator.Orientation;
  * {@code R(t) = exp(t·[ω]×)}: without the gyroscopic term (ω then stays constant), or when ω
  * lies in one eigenspace of the inertia (a principal axis, or any axis of a sphere); otherwise
  * the column is empty.</li>
+ * <li>{@code angle_lag}, added last so that the earlier columns keep their places, is given
+ * under the same condition: {@code |ω|·t} minus the angle R has turned about ω, summed step by
+ * step ({@link SpinAngle}). {@code angle_error} is a distance between orientations and wraps
+ * at π, so at a large {@code |ω|h} a method a turn behind reads nearly 0 there; the lag does
+ * not wrap, and ranks the methods by how far behind they are.</li>
  * <li>{@code energy} and {@code angular_momentum} are computed from the printed body-frame
  * ω, in double.</li>
  * <li>The whole run is simulated before anything is printed, so a run that blows up prints one
@@ -37,7 +43,7 @@ public final class RotateCommand {
     public static final String NAME = "rotate";
     /** The CSV header, exactly. */
     public static final String HEADER =
-            "t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum";
+            "t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum,angle_lag";
 
     private static final String COMMAND = Main.PROGRAM + " " + NAME;
     private static final String OMEGA = "--omega";
@@ -100,7 +106,9 @@ public final class RotateCommand {
                         + " is omega in the body frame, R^T omega (rad/s), so each flip of a"
                         + " body spun near its middle axis shows as a sign change of wy;"
                         + " energy is 1/2 omega^T I omega (J) and angular_momentum is |I omega|"
-                        + " (kg*m^2/s), both from wx,wy,wz.")
+                        + " (kg*m^2/s), both from wx,wy,wz; angle_lag is |omega|*t minus the"
+                        + " angle (rad) R has turned about omega, summed step by step so that it"
+                        + " never wraps (angle_error wraps at pi), given when angle_error is.")
                 .note("Exit status: 0 on success; 2 on a bad command line or a step that"
                         + " overflows, with one line on stderr and no CSV.");
     }
@@ -170,14 +178,16 @@ public final class RotateCommand {
         RigidBody body = new RigidBody(1f, inertia);
         body.setAngularVelocity(omega);
         RotationCheck check = new RotationCheck();
+        SpinAngle turned = new SpinAngle();
+        turned.start(body.orientation, omega);
         Matrix3f start = new Matrix3f();
         Matrix3f exact = new Matrix3f();
         Vector3f bodyOmega = new Vector3f();
         StringBuilder row = new StringBuilder();
         if (out != null) {
             out.println(HEADER);
-            printRow(0, stepSeconds, body, omega, steady, check, start, exact, bodyOmega, row,
-                    out);
+            printRow(0, stepSeconds, body, omega, steady, check, turned, start, exact,
+                    bodyOmega, row, out);
         }
         for (int n = 1; n <= steps; ++n) {
             try {
@@ -188,16 +198,19 @@ public final class RotateCommand {
                         + "; the numbers overflowed the float range; choose a smaller step or"
                         + " a slower spin");
             }
+            if (steady) {
+                turned.add(body.orientation);
+            }
             if (out != null) {
-                printRow(n, stepSeconds, body, omega, steady, check, start, exact, bodyOmega,
-                        row, out);
+                printRow(n, stepSeconds, body, omega, steady, check, turned, start, exact,
+                        bodyOmega, row, out);
             }
         }
     }
 
     private static void printRow(int n, float stepSeconds, RigidBody body, Vector3f omega,
-            boolean steady, RotationCheck check, Matrix3f start, Matrix3f exact, Vector3f bodyOmega,
-            StringBuilder row, PrintStream out) {
+            boolean steady, RotationCheck check, SpinAngle turned, Matrix3f start,
+            Matrix3f exact, Vector3f bodyOmega, StringBuilder row, PrintStream out) {
         double t = n * (double) stepSeconds;
         Matrix3f r = body.orientation;
         body.bodyAngularVelocity(bodyOmega);
@@ -212,7 +225,12 @@ public final class RotateCommand {
         }
         row.append(',').append(bodyOmega.x).append(',').append(bodyOmega.y).append(',')
                 .append(bodyOmega.z).append(',').append(inertia.kineticEnergy(bodyOmega))
-                .append(',').append(inertia.angularMomentum(bodyOmega));
+                .append(',').append(inertia.angularMomentum(bodyOmega)).append(',');
+        if (steady) {
+            double rate = Math.sqrt((double) omega.x * omega.x + (double) omega.y * omega.y
+                    + (double) omega.z * omega.z);
+            row.append(turned.lagRadians(rate * t));
+        }
         out.println(row);
     }
 }

@@ -9,6 +9,7 @@ import particlelab.physics.SimulationClock;
 import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.SpinAngle;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
 
@@ -37,11 +38,23 @@ import particlelab.view.TextFormat;
  * constant ω is the polar box itself (the cure removes the stretch, not the lag), so the two
  * read the same. The boxes are drawn by moving their vertices with R itself, so what you
  * see is the matrix, drift and all.
+ *
+ * <p>Two numbers per box say how far it is behind: the angle to the exact rotation, a distance
+ * between orientations that wraps at 180° (a box a whole turn behind reads 0°), and the lag,
+ * the exact angle {@code |ω|·t} minus the angle the box has turned about ω, summed step by step
+ * so that it never wraps ({@link SpinAngle}). At {@code |ω|h = 0.8} (Up Up Right Right) the
+ * polar box soon lags by more than a turn and its angle to the exact rotation falls again,
+ * below the quaternion's: only the lag ranks them right. The plain box's line names its last
+ * restart and its time for {@value #RESTART_NOTE_SECONDS} s of simulated time after it (a box
+ * that has just started again reads det 1 and no error, which is not accuracy), and a line
+ * below the boxes gives the restart rule and the count.
  */
 public final class RotationDemo extends DemoState {
 
     /** The plain box starts again once its det R reaches this (1.5³). */
     public static final float DET_LIMIT = 3.375f;
+    /** How long the plain box's line names its last restart (simulated seconds). */
+    public static final float RESTART_NOTE_SECONDS = 2f;
     /** The starting spin rate |ω| (rad/s), and its range for the keys. */
     public static final float DEFAULT_OMEGA = 3f;
     public static final float MIN_OMEGA = 0.75f;
@@ -74,6 +87,12 @@ public final class RotationDemo extends DemoState {
     private final Vector3f[] centres = new Vector3f[METHODS.length];
     /** Per box: the time since it started from the identity (s), for its exact rotation. */
     private final double[] elapsedSeconds = new double[METHODS.length];
+    /** Per box: the angle it has turned about ω since it started, unwrapped. */
+    private final SpinAngle[] spinAngles = new SpinAngle[METHODS.length];
+    /** The simulated time since the demo (re)started (s): the exact box never restarts. */
+    private double runSeconds;
+    /** When the plain box last started again on its own (s of {@link #runSeconds}), or NaN. */
+    private double plainRestartSeconds = Double.NaN;
     private final RotationCheck check = new RotationCheck();
     private final Matrix3f identity = new Matrix3f();
     private final Matrix3f exact = new Matrix3f();
@@ -93,8 +112,12 @@ public final class RotationDemo extends DemoState {
             integrators[i] = new RotationIntegrator(METHODS[i],
                     RotationIntegrator.Angular.EXPLICIT, true);
             centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, BOX_Z);
+            spinAngles[i] = new SpinAngle();
         }
         omega.set(AXIS).multLocal(omegaMagnitude);
+        for (int i = 0; i < METHODS.length; ++i) {
+            spinAngles[i].start(orientations[i], omega);
+        }
     }
 
     /**
@@ -115,6 +138,26 @@ public final class RotationDemo extends DemoState {
      */
     public double getElapsedSeconds(int box) {
         return elapsedSeconds[box];
+    }
+
+    /**
+     * Return how far one box lags the exact rotation in accumulated angle: {@code |ω|·t} minus
+     * the angle it has turned about ω since it last started, unwrapped (see {@link SpinAngle}).
+     *
+     * @param box 0 to 3, in the order of {@link #METHODS}
+     * @return the lag (in radians; positive when behind; grows past 2π)
+     */
+    public double getLagRadians(int box) {
+        return spinAngles[box].lagRadians(omegaMagnitude * elapsedSeconds[box]);
+    }
+
+    /**
+     * Return when the plain box last started again on its own, reaching {@link #DET_LIMIT}.
+     *
+     * @return the time since the demo started (in seconds), or NaN if it has not since then
+     */
+    public double getPlainRestartSeconds() {
+        return plainRestartSeconds;
     }
 
     /**
@@ -192,28 +235,35 @@ public final class RotationDemo extends DemoState {
             text.append(NAMES[i]).append(":  det R = ");
             TextFormat.appendFixed(text, check.determinant(r), 6).append(",  |R^T·R − I| = ");
             TextFormat.appendFixed(text, check.orthogonalityError(r), 6)
-                    .append(",  angle error = ");
+                    .append(",  to exact = ");
             TextFormat.appendFixed(text, RAD_TO_DEG * check.angleError(r, exact), 4)
-                    .append('°');
-            if (i == 0) {
-                text.append("   (started again at det ");
-                TextFormat.appendFixed(text, DET_LIMIT, 3).append(": ").append(plainRestarts)
-                        .append(" times)");
+                    .append("°,  lag = ");
+            TextFormat.appendFixed(text, RAD_TO_DEG * getLagRadians(i), 2).append('°');
+            if (i == 0 && runSeconds - plainRestartSeconds <= RESTART_NOTE_SECONDS) {
+                text.append("   RESTARTED at t = ");
+                TextFormat.appendFixed(text, plainRestartSeconds, 2).append(" s");
             }
             text.append('\n');
         }
+        text.append(NAMES[0]).append(" starts again from R = I when det R reaches ");
+        TextFormat.appendFixed(text, DET_LIMIT, 3).append(": ").append(plainRestarts)
+                .append(plainRestarts == 1 ? " time" : " times").append(" so far\n");
     }
 
     @Override
     protected void afterStep(float stepSeconds) {
+        runSeconds += stepSeconds;
         for (int i = 0; i < METHODS.length; ++i) {
             integrators[i].stepOrientation(orientations[i], omega, stepSeconds);
             elapsedSeconds[i] += stepSeconds;
+            spinAngles[i].add(orientations[i]);
         }
         if (check.determinant(orientations[0]) >= DET_LIMIT) {
             orientations[0].loadIdentity();
             elapsedSeconds[0] = 0.0;
+            spinAngles[0].start(orientations[0], omega);
             ++plainRestarts;
+            plainRestartSeconds = runSeconds;
         }
         updateBoxes();
     }
@@ -223,7 +273,10 @@ public final class RotationDemo extends DemoState {
         for (int i = 0; i < METHODS.length; ++i) {
             orientations[i].loadIdentity();
             elapsedSeconds[i] = 0.0;
+            spinAngles[i].start(orientations[i], omega);
         }
+        runSeconds = 0.0;
+        plainRestartSeconds = Double.NaN;
         plainRestarts = 0;
         updateBoxes();
     }

@@ -77,6 +77,28 @@ class RotationSectionTest {
         }
     }
 
+    /**
+     * Issue 17: the angle error is a distance that wraps at π, so it ranks methods wrongly
+     * once one lags by more than that. Over this sweep (|ω|h ≤ 2π/15 = 0.42, 1 s) nothing
+     * comes close: polar lags at most 15·(0.42 − atan 0.42) = 0.33 rad. So the section may rank
+     * by the angle error, which for the methods that turn about ω (plain Euler's nearest
+     * rotation, polar, quaternion, exact) is the unwrapped lag itself, to float round-off
+     * (10·n·EPS, rigid.SpinAngleTest). Gram–Schmidt's axis tilts off ω, so its distance
+     * includes the tilt: at least its lag. Every error stays below π/2, far from the wrap.
+     */
+    @Test
+    void angleErrorIsTheUnwrappedLagOverTheWholeSweep() {
+        for (RotationStudy.OrientationError e : study.errors) {
+            String what = e.method + " h = " + e.stepSeconds;
+            assertTrue(e.angleError < Math.PI / 2.0, what + ": " + e.angleError);
+            if (e.method == Orientation.GRAM_SCHMIDT) {
+                assertTrue(e.angleError >= Math.abs(e.angleLag) - 10.0 * e.steps * EPS, what);
+            } else {
+                assertEquals(e.angleError, Math.abs(e.angleLag), 10.0 * e.steps * EPS, what);
+            }
+        }
+    }
+
     @Test
     void plainEulerOrthogonalityErrorIsTheClosedForm() {
         // R_n = (I + h[ω]×)ⁿ: RᵀR − I has (1 + (|ω|h)²)ⁿ − 1 twice on the plane across ω.

@@ -154,4 +154,61 @@ class IterativeAimTest {
         assertTrue(result.getExplanation().contains("beyond the float range"),
                 result.getExplanation());
     }
+
+    /**
+     * Issue 17: a first shot slower upward than g·h is under the ground after one step and
+     * lands at the gun (x = 0), and the search once read that flat reach of 0 m as a peak: it
+     * called each of these reachable targets out of reach ("the reach peaks at about 0.0 m").
+     * vx = 50 m/s, no drag; the steps are those of the command lines in the issue. Every
+     * strategy must now hit: the reach of the stepped shot grows without bound with vy, so a
+     * target beyond the first step's x = vx·h is always reached to within the tolerance.
+     */
+    @Test
+    void shortTargetsWhoseFirstShotLandsAtTheGunAreHitByEveryStrategy() {
+        double[][] cases = {{1.2, 1.0 / 60.0}, {1.5, 1.0 / 60.0}, {7.0, 0.1}, {30.0, 0.5},
+            {40.0, 0.5}, {510.0, 10.0}, {600.0, 10.0}};
+        double tolerance = 1e-3;
+        for (double[] c : cases) {
+            float h = (float) c[1];
+            ShotSimulator simulator = new ShotSimulator(new ParticleIntegrator(new Gravity(
+                    new com.jme3.math.Vector3f(0f, (float) -G, 0f))), 1f, h, MAX_FLIGHT_SECONDS);
+            // The premise: the lecture's first vy = g·S/(2·vx) is below g·h, so it lands at 0.
+            Landing first = new Landing();
+            simulator.fire(50f, (float) LevelAim.lectureVy(G, c[0], 50.0), first);
+            assertEquals(0.0, first.getX(), 0.0, "S=" + c[0] + ": first shot lands at the gun");
+            for (AimStrategy strategy : AimStrategy.values()) {
+                AimResult result = new IterativeAim(simulator, G, tolerance, MAX_SHOTS,
+                        strategy, 3L).aim(c[0], 50.0);
+                String what = strategy + " S=" + c[0] + " h=" + h + ": " + result;
+                assertTrue(result.isHit(), what);
+                assertTrue(Math.abs(result.getMiss()) <= tolerance, what);
+            }
+        }
+    }
+
+    /**
+     * A target beyond the stepped reach whose first shot also lands at the gun is still out of
+     * reach, with the true reach. Linear drag k = 0.1/s at h = 5 s (r = 1 − k·h = 0.5): the
+     * stepped bullet's x after n steps is {@code vx·r·(1 − rⁿ)/k}, below 100 m for every vy;
+     * S = 150 m, and the lecture's vy = 36.75 m/s is below g·h = 49 m/s. The reported reach
+     * must be the peak of shots that flew: within 0.1 m of 100 m (rⁿ &lt; 1e-3 after ten
+     * steps, and the chord to the ground only shortens it), not 0 m. The lecture rule climbs
+     * by a fixed 18.4 m/s a shot, so its reach creeps toward 100 m too slowly for the stall
+     * test within 100 shots: it reports no hit with its closest shot, which is no false claim.
+     */
+    @Test
+    void unreachableTargetWhoseFirstShotLandsAtTheGunReportsTheTrueReach() {
+        ShotSimulator simulator = new ShotSimulator(new ParticleIntegrator(new Gravity(),
+                new LinearDrag(0.1f)), 1f, 5f, MAX_FLIGHT_SECONDS * 10f);
+        for (AimStrategy strategy : AimStrategy.values()) {
+            AimResult result = new IterativeAim(simulator, G, 1e-3, MAX_SHOTS, strategy, 3L)
+                    .aim(150.0, VX);
+            String what = strategy + ": " + result;
+            assertFalse(result.isHit(), what);
+            assertTrue(result.getExplanation().contains(strategy == AimStrategy.LECTURE
+                    ? "no hit within" : "out of reach"), what);
+            assertTrue(result.getLandingX() > 99.9 && result.getLandingX() <= 100.0, what);
+            assertFalse(result.getExplanation().contains("about 0.0 m"), what);
+        }
+    }
 }

@@ -72,6 +72,28 @@ class AimCommandTest {
     }
 
     /**
+     * Issue 17: each of these command lines once said "out of reach ... the reach peaks at
+     * about 0.0 m", because the first shot (vy = g·S/(2·vx) below g·h) lands at the gun,
+     * while {@code trajectory} shows shots that reach S (vx = 50, vy = 0.2 lands at 1.07 m at
+     * h = 1/60). Each must now hit within the default tolerance, 1 mm.
+     */
+    @Test
+    void iterativeHitsShortTargetsWhoseFirstShotLandsAtTheGun() {
+        String[][] lines = {{"--distance", "1.2"}, {"--distance", "1.5"},
+            {"--distance", "7", "--tpf", "0.1"}, {"--distance", "30", "--tpf", "0.5"},
+            {"--distance", "40", "--tpf", "0.5"}, {"--distance", "510", "--tpf", "10"},
+            {"--distance", "600", "--tpf", "10"}};
+        for (String[] line : lines) {
+            String[] args = new String[line.length + 4];
+            System.arraycopy(line, 0, args, 0, line.length);
+            System.arraycopy(new String[] {"--vx", "50", "--method", "iterative"}, 0, args,
+                    line.length, 4);
+            Row row = csv(args);
+            assertTrue(Math.abs(row.miss) <= 1e-3, String.join(" ", line) + ": " + row.miss);
+        }
+    }
+
+    /**
      * The discrete correction lands at S up to the float round-off of the stepped position,
      * about N·ulp(S) for N = S/(vx·h) steps (measured 1.3e-4 m at S = 100, bound 2.3e-3 m).
      */

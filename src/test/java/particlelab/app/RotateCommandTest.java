@@ -37,19 +37,21 @@ class RotateCommandTest {
     void theDefaultIsTheLecturesMatrixStepOnASphereAndItsDriftIsTheClosedForm() {
         // One turn per second about z for 1 s at 60 Hz, no --inertia: a sphere, ω constant.
         List<String> lines = ok("rotate", "--omega", "0,0," + (float) TWO_PI, "--steps", "60");
-        assertEquals("t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum",
-                lines.get(0));
+        assertEquals("t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum"
+                + ",angle_lag", lines.get(0));
         assertEquals(62, lines.size());
         double wh = (float) TWO_PI / 60.0;
         for (int n = 0; n <= 60; ++n) {
             String row = lines.get(n + 1);
-            assertEquals(9, cells(row).length);
+            assertEquals(10, cells(row).length);
             // t = n·h with h the float 1/60
             assertEquals((float) (n * (double) (1f / 60f)), Float.parseFloat(cells(row)[0]),
                     0f);
             // det (1 + (ωh)²)^n; the nearest rotation lags by n·(ωh − atan(ωh))
             assertEquals(Math.pow(1.0 + wh * wh, n), cell(row, 1), 3 * n * EPS * 2.0);
             assertEquals(n * (wh - Math.atan(wh)), cell(row, 3), 4 * n * EPS);
+            // ... and so does the unwrapped lag, while it is below π the same number
+            assertEquals(n * (wh - Math.atan(wh)), cell(row, 9), 4 * n * EPS);
             assertEquals((float) TWO_PI, Float.parseFloat(cells(row)[6]), 0f, "wz constant");
             // E = ½·1·ω², |L| = ω
             assertEquals(0.5 * wh * wh * 3600.0, cell(row, 7), 1e-5);
@@ -78,6 +80,38 @@ class RotateCommandTest {
         }
     }
 
+    /**
+     * Issue 17: at |ω|h = 0.8 (12 rad/s, h = 1/15 s) for 60 steps polar lags 60·(θ − atan θ)
+     * = 7.52 rad and the quaternion 60·(θ − 2·atan(θ/2)) = 2.34 rad (closed forms derived in
+     * rigid.SpinAngleTest); angle_error wraps, so polar's reads 7.52 − 2π = 1.23 rad, less
+     * than the quaternion's 2.34. angle_lag ranks them right; angle_error never exceeds π.
+     * Tolerance 10·n·EPS for the float round-off of n steps (rigid.SpinAngleTest).
+     */
+    @Test
+    void angleLagIsUnwrappedWhereTheAngleErrorWrapsAtPi() {
+        double[] lag = new double[2];
+        double[] error = new double[2];
+        String[] methods = {"polar", "quaternion"};
+        float h = 1f / 15f;
+        double theta = 12f * (double) h;
+        for (int m = 0; m < 2; ++m) {
+            List<String> lines = ok("rotate", "--omega", "0,0,12", "--tpf", "1/15", "--steps",
+                    "60", "--orientation", methods[m]);
+            for (int i = 1; i < lines.size(); ++i) {
+                assertTrue(cell(lines.get(i), 3) <= Math.PI, lines.get(i));
+            }
+            String last = lines.get(61);
+            lag[m] = cell(last, 9);
+            error[m] = cell(last, 3);
+        }
+        double tolerance = 10 * 60 * EPS;
+        assertEquals(60 * (theta - Math.atan(theta)), lag[0], tolerance);
+        assertEquals(60 * (theta - 2.0 * Math.atan(theta / 2.0)), lag[1], tolerance);
+        assertEquals(lag[0] - 2.0 * Math.PI, error[0], tolerance);
+        assertEquals(lag[1], error[1], tolerance);
+        assertTrue(lag[1] < lag[0] && error[1] > error[0], "lag ranks right, error wrong");
+    }
+
     @Test
     void theRacketSpunNearItsMiddleAxisFlipsAndMidpointKeepsItsEnergy() {
         List<String> lines = ok("rotate", "--omega", "0.2,5,0.2", "--inertia", "1,2,3",
@@ -88,6 +122,7 @@ class RotateCommandTest {
         for (int i = 1; i < lines.size(); ++i) {
             String[] row = cells(lines.get(i));
             assertEquals("", row[3], "no exact solution off a principal axis");
+            assertEquals("", row[9], "no lag off a principal axis either");
             if (i > 1 && (Double.parseDouble(row[5]) < 0)
                     != (cell(lines.get(i - 1), 5) < 0)) {
                 ++flips;

@@ -14,6 +14,7 @@ import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.SimulationClock;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
@@ -121,6 +122,104 @@ class RigidDemosTest {
         // (1 + 0.05²)ⁿ reaches 1.5³ after 487 steps: one restart within 600.
         assertEquals(1.0, measured[0], 0.0);
         assertTrue(measured[1] < RotationDemo.DET_LIMIT);
+    }
+
+    /**
+     * Issue 17, at |ω|h = 12 rad/s · 1/15 s = 0.8 (Up Up Right Right): after 60 steps polar
+     * lags 60·(θ − atan θ) = 7.52 rad (431°) and the quaternion 60·(θ − 2·atan(θ/2)) = 2.34
+     * rad (134°); the angle to the exact rotation wraps, so polar's reads 71° and the
+     * quaternion's 134°. The HUD must give the unwrapped lag beside it, which ranks them right.
+     * Float round-off: 10·n·EPS on the lag (rigid.SpinAngleTest), and the HUD prints the lag
+     * to 0.01°. The plain box restarts every third step here ((1 + 0.64)³ = 4.4 &gt; 3.375),
+     * so its line must name the last restart and its time.
+     */
+    @Test
+    void atOmegaHPointEightTheHudGivesTheUnwrappedLagAndNamesThePlainRestart()
+            throws Exception {
+        String[] hud = harness.call(() -> {
+            SimulationClock.Mode mode = rotation.getClock().getMode();
+            try {
+                press("Up");
+                press("Up");
+                press("Right");
+                press("Right");
+                rotation.restart();
+                for (int i = 0; i < 60; ++i) {
+                    rotation.advance(1f / 15f);
+                }
+                return new String[] {rotation.formatHud(new StringBuilder()).toString(),
+                    Double.toString(rotation.getElapsedSeconds(3)),
+                    Double.toString(rotation.getLagRadians(1)),
+                    Double.toString(rotation.getLagRadians(2)),
+                    Double.toString(rotation.getPlainRestartSeconds()),
+                    Integer.toString(rotation.countPlainRestarts())};
+            } finally {
+                press("Down");
+                press("Down");
+                press("Left");
+                press("Left");
+                rotation.getClock().setMode(mode);
+                rotation.restart();
+            }
+        });
+        String text = hud[0];
+        double elapsed = Double.parseDouble(hud[1]);
+        float h = 1f / 15f;
+        int steps = (int) Math.round(elapsed / h);
+        double theta = RotationDemo.AXIS.mult(12f).length() * (double) h;
+        assertEquals(0.8, theta, 1e-6);
+        double tolerance = 10.0 * steps * Math.ulp(1f);
+        double polarLag = Double.parseDouble(hud[2]);
+        double quaternionLag = Double.parseDouble(hud[3]);
+        assertEquals(steps * (theta - Math.atan(theta)), polarLag, tolerance);
+        assertEquals(steps * (theta - 2.0 * Math.atan(theta / 2.0)), quaternionLag, tolerance);
+        assertTrue(steps >= 50, "steps taken: " + steps);
+        assertTrue(quaternionLag < polarLag && polarLag > 2.0 * Math.PI,
+                quaternionLag + " vs " + polarLag);
+        double[] polar = hudAngles(text, "polar:  det");
+        double[] quaternion = hudAngles(text, "quaternion:  det");
+        // The printed lag is the model's, to the 0.01° printed.
+        assertEquals(Math.toDegrees(polarLag), polar[1], 0.006);
+        assertEquals(Math.toDegrees(quaternionLag), quaternion[1], 0.006);
+        // The wrapped distance stays within 180° and here ranks them the other way round.
+        assertTrue(polar[0] <= 180.0 && quaternion[0] <= 180.0, text);
+        assertTrue(polar[0] < quaternion[0], text);
+        // The plain box restarted within the last three steps, and its line says when.
+        double restart = Double.parseDouble(hud[4]);
+        assertTrue(Integer.parseInt(hud[5]) >= steps / 4, text);
+        assertTrue(elapsed - restart < 3.5 * h, "last restart at " + restart);
+        String plain = line(text, "plain Euler:");
+        assertTrue(plain.contains("RESTARTED at t = " + String.format(java.util.Locale.ROOT,
+                "%.2f", restart) + " s"), plain);
+    }
+
+    /**
+     * At 3 rad/s and h = 1/60 the plain box restarts once, at step 488 (8.13 s): its line
+     * names that restart for {@link RotationDemo#RESTART_NOTE_SECONDS} of simulated time,
+     * then no more; the line below the boxes gives the rule and the count all along.
+     */
+    @Test
+    void plainBoxLineNamesItsRestartForAWhileThenOnlyTheCount() throws Exception {
+        String[] lines = harness.call(() -> {
+            rotation.restart();
+            for (int i = 0; i < 600; ++i) {
+                rotation.advance(H);
+            }
+            String soon = rotation.formatHud(new StringBuilder()).toString();
+            for (int i = 0; i < 120; ++i) {
+                rotation.advance(H);
+            }
+            String later = rotation.formatHud(new StringBuilder()).toString();
+            return new String[] {soon, later, Double.toString(rotation.getPlainRestartSeconds())};
+        });
+        // (1 + 0.05²)ⁿ ≥ 1.5³ from n = 488 (8.13 s): 600 steps are 1.87 s after it, 720 steps
+        // 3.87 s after.
+        assertEquals(488 * (double) H, Double.parseDouble(lines[2]), 1e-9);
+        String rule = "plain Euler starts again from R = I when det R reaches 3.375: 1 time so far";
+        assertTrue(line(lines[0], "plain Euler:").endsWith("RESTARTED at t = 8.13 s"), lines[0]);
+        assertTrue(lines[0].contains(rule), lines[0]);
+        assertTrue(!line(lines[1], "plain Euler:").contains("RESTARTED"), lines[1]);
+        assertTrue(lines[1].contains(rule), lines[1]);
     }
 
     @Test
@@ -289,5 +388,38 @@ class RigidDemosTest {
             assertEquals(0L, bytes[0], demo.getTitle() + ": 30 frames allocated");
             assertEquals(0L, bytes[1], demo.getTitle() + ": HUD text allocated");
         }
+    }
+
+    /** Press the rotation demo's key with this label. */
+    private static void press(String label) {
+        for (KeyBinding binding : rotation.getBindings()) {
+            if (binding.getKeyLabel().equals(label)) {
+                binding.press(0);
+                return;
+            }
+        }
+        throw new AssertionError("no key " + label);
+    }
+
+    /** The HUD line that starts with this prefix. */
+    private static String line(String text, String prefix) {
+        for (String line : text.split("\n")) {
+            if (line.startsWith(prefix)) {
+                return line;
+            }
+        }
+        throw new AssertionError("no line " + prefix + " in\n" + text);
+    }
+
+    /** A box's "to exact" and "lag" angles on its HUD line (in degrees). */
+    private static double[] hudAngles(String text, String prefix) {
+        String line = line(text, prefix);
+        return new double[] {number(line, "to exact = "), number(line, "lag = ")};
+    }
+
+    private static double number(String line, String label) {
+        int start = line.indexOf(label) + label.length();
+        int end = line.indexOf('°', start);
+        return Double.parseDouble(line.substring(start, end));
     }
 }
