@@ -2,13 +2,12 @@ package particlelab.demo;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import particlelab.files.SafeFiles;
 
 /**
  * Writes a demo's trajectories as CSV, one file per particle, {@code FOLDER/<particle>.csv}
@@ -72,16 +71,18 @@ public final class TrajectoryExport {
     }
 
     /**
-     * Write every particle's trajectory into a folder, creating the folder (and those above
-     * it) if missing. Call on the jME thread, or after the application stopped.
+     * Write every particle's trajectory into a folder, by the rules of {@link SafeFiles}:
+     * each file created new, never through a symbolic link, an existing regular file
+     * replaced only if allowed. Call on the jME thread, or after the application stopped.
      *
      * @param demo the demo (not null, initialised or not)
-     * @param folder where to write (not null)
+     * @param folder where to write (not null, an existing folder)
+     * @param replace true if the user allowed existing regular files to be replaced
      * @return the files written, in the particles' order (not null)
-     * @throws IOException if the folder or a file cannot be written
+     * @throws IOException if a file cannot be written or is refused (the message says why)
      */
-    public static List<Written> write(DemoState demo, Path folder) throws IOException {
-        Files.createDirectories(folder);
+    public static List<Written> write(DemoState demo, Path folder, boolean replace)
+            throws IOException {
         List<Written> written = new ArrayList<>();
         Set<String> taken = new HashSet<>();
         List<DemoParticle> particles = demo.getParticles();
@@ -104,7 +105,7 @@ public final class TrajectoryExport {
                 record = launchOnly;
             }
             Path file = folder.resolve(name + ".csv");
-            try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
                 record.writeCsv(out);
             }
             written.add(new Written(file, record.size(), record.countDropped()));
