@@ -30,6 +30,9 @@ final class ExportRun {
 
     /** The option's name, for messages. */
     static final String EXPORT = "--export";
+    /** Why an export wrote no file, on stdout and on the HUD. */
+    static final String NOTHING_TO_EXPORT = "this demo has no particle trajectory and no table"
+            + " to export (its bodies are not recorded)";
 
     private ExportRun() {
     }
@@ -130,8 +133,12 @@ final class ExportRun {
     static int write(DemoState demo, Path folder, boolean replace, PrintStream out,
             PrintStream err) {
         try {
-            for (TrajectoryExport.Written file : TrajectoryExport.write(demo, folder, replace)) {
+            List<TrajectoryExport.Written> files = TrajectoryExport.write(demo, folder, replace);
+            for (TrajectoryExport.Written file : files) {
                 out.println("csv " + file.describe());
+            }
+            if (files.isEmpty()) {
+                out.println("csv: none; " + NOTHING_TO_EXPORT);
             }
         } catch (IOException failure) {
             err.println("particle-lab: the export to " + SafeFiles.printable(folder)

@@ -78,7 +78,8 @@ public final class ExportState extends BaseAppState {
         DemoState demo = switcher.getSelected();
         Path folder = newFolder(demo);
         List<TrajectoryExport.Written> files = TrajectoryExport.write(demo, folder, false);
-        String what = files.size() + (files.size() == 1 ? " CSV" : " CSVs");
+        String what = files.isEmpty() ? "no CSV (" + ExportRun.NOTHING_TO_EXPORT + ")"
+                : files.size() + (files.size() == 1 ? " CSV" : " CSVs");
         if (getApplication().getContext().getType() == JmeContext.Type.Headless) {
             demo.showNotice("exported " + what + " to " + folder + " (no window: no PNG)");
             return folder;

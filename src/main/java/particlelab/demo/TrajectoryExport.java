@@ -14,7 +14,8 @@ import particlelab.files.SafeFiles;
  * with the {@code particle-lab trajectory} header and number format ({@link TrajectoryRecord}):
  * every step since the particle's launch. A particle parked by the demo (out of its current
  * preset, left out of the HUD) is left out here too; a particle not stepped since its launch
- * gets its one launch row.
+ * gets its one launch row. A demo's own tables ({@link DemoState#collectExportTables}, e.g.
+ * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header.
  *
  * <p>File names are made file-safe ({@link #fileSafeName}): lower case, letters, digits, dots
  * and hyphens only, so {@code "linear drag  F = -0.9 V"} becomes
@@ -35,11 +36,13 @@ public final class TrajectoryExport {
         private final Path file;
         private final int rows;
         private final long dropped;
+        private final int cap;
 
-        Written(Path file, int rows, long dropped) {
+        Written(Path file, int rows, long dropped, int cap) {
             this.file = file;
             this.rows = rows;
             this.dropped = dropped;
+            this.cap = cap;
         }
 
         /** @return the file written (not null) */
@@ -47,12 +50,12 @@ public final class TrajectoryExport {
             return file;
         }
 
-        /** @return the rows written, header not counted (&ge;1) */
+        /** @return the rows written, header not counted (&ge;0) */
         public int getRows() {
             return rows;
         }
 
-        /** @return the steps past {@link TrajectoryRecord#MAX_ROWS} left out (&ge;0) */
+        /** @return the steps past the record's capacity left out (&ge;0) */
         public long getDropped() {
             return dropped;
         }
@@ -65,8 +68,8 @@ public final class TrajectoryExport {
          */
         public String describe() {
             return file + ": " + rows + (rows == 1 ? " row" : " rows")
-                    + (dropped == 0L ? "" : " (the first " + TrajectoryRecord.MAX_ROWS
-                            + " states; " + dropped + " later steps were not kept)");
+                    + (dropped == 0L ? "" : " (the first " + cap + " states; " + dropped
+                            + " later steps were not kept)");
         }
     }
 
@@ -108,7 +111,23 @@ public final class TrajectoryExport {
             try (Writer out = SafeFiles.newWriter(file, replace)) {
                 record.writeCsv(out);
             }
-            written.add(new Written(file, record.size(), record.countDropped()));
+            written.add(new Written(file, record.size(), record.countDropped(),
+                    TrajectoryRecord.MAX_ROWS));
+        }
+        List<StepTable> tables = new ArrayList<>();
+        demo.collectExportTables(tables);
+        for (int i = 0; i < tables.size(); ++i) {
+            StepTable table = tables.get(i);
+            String name = table.getName();
+            for (int copy = 2; !taken.add(name); ++copy) {
+                name = table.getName() + "-" + copy;
+            }
+            Path file = folder.resolve(name + ".csv");
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
+                table.writeCsv(out);
+            }
+            written.add(new Written(file, table.size(), table.countDropped(),
+                    table.capacity()));
         }
         return written;
     }
