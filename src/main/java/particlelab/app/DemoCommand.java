@@ -383,11 +383,12 @@ public final class DemoCommand {
                         + HudScale.FACTOR_STEP + ")")
                 .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
                         + " every particle's trajectory since its launch as DIR/<particle>.csv"
-                        + " (the header and numbers of particle-lab trajectory) and list the"
-                        + " files; without --screenshot it runs without a window (no display"
-                        + " needed, no PNG). A DIR holding .csv files is refused (they are"
-                        + " replaced with " + SafeFiles.FORCE + "), and a symbolic link named"
-                        + " .csv in it always is")
+                        + " (the header and numbers of particle-lab trajectory), or the demo's"
+                        + " own table (rotation, fountain, iterate), and list the files;"
+                        + " without --screenshot it runs without a window (no display needed,"
+                        + " no PNG). A DIR holding .csv files is refused (they are replaced"
+                        + " with " + SafeFiles.FORCE + "), and a symbolic link named .csv in"
+                        + " it always is")
                 .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + ExportRun.EXPORT
                         + " replace existing regular files; a symbolic link is never written"
                         + " through, not even with it")
