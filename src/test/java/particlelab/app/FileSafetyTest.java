@@ -2,13 +2,16 @@ package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.List;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import particlelab.demo.TrajectoryRecord;
@@ -105,6 +108,25 @@ class FileSafetyTest {
         assertEquals(PLANTED, Files.readString(victim));
         // With --force an existing regular file passes the check (the window then writes it).
         DemoCommand.checkScreenshotPath(existing.toString(), true);
+    }
+
+    /**
+     * The PNG itself is written create-new too, so a file or link planted between the check
+     * and the last frame is not overwritten or followed.
+     */
+    @Test
+    void theScreenshotWriteRefusesWhatWasPlantedAfterTheCheck(@TempDir Path temp)
+            throws IOException {
+        BufferedImage image = new BufferedImage(2, 2, BufferedImage.TYPE_INT_RGB);
+        Path file = Files.writeString(temp.resolve("shot.png"), PLANTED);
+        assertThrows(IOException.class, () -> ScreenshotCapture.writePng(image, file, false));
+        assertEquals(PLANTED, Files.readString(file));
+        ScreenshotCapture.writePng(image, file, true);
+        assertEquals(2, ImageIO.read(file.toFile()).getWidth());
+        Path victim = Files.writeString(temp.resolve("victim"), PLANTED);
+        Path link = Files.createSymbolicLink(temp.resolve("link.png"), victim);
+        assertThrows(IOException.class, () -> ScreenshotCapture.writePng(image, link, true));
+        assertEquals(PLANTED, Files.readString(victim));
     }
 
     @Test
