@@ -25,6 +25,10 @@ import particlelab.files.SafeFiles;
  * so it works on a machine without a display, and there is no PNG: a headless context has no
  * frame to read back. With {@code --screenshot FILE} the window opens as usual (a display is
  * needed) and the PNG is written there; the CSV files are written when the window closes.
+ *
+ * <p>Existing files: a folder holding {@code .csv} files is refused before the demo runs
+ * unless {@value SafeFiles#FORCE} is given, and every file is created new by the rules of
+ * {@link SafeFiles}, so a symbolic link planted in the folder is never written through.
  */
 final class ExportRun {
 

@@ -59,12 +59,12 @@ public final class SafeFiles {
             return null;
         }
         if (attributes.isSymbolicLink()) {
-            return printable(file) + " is a symbolic link; files are never written through a link, not"
-                    + " even with " + FORCE + ": remove it or " + instead;
+            return printable(file) + " is a symbolic link; files are never written through a"
+                    + " link, not even with " + FORCE + ": remove it or " + instead;
         }
         if (!attributes.isRegularFile()) {
-            return printable(file) + " exists and is " + kind(attributes) + ", which is never replaced;"
-                    + " " + instead;
+            return printable(file) + " exists and is " + kind(attributes) + ", which is never"
+                    + " replaced; " + instead;
         }
         return replace ? null : printable(file) + " exists; use " + FORCE + " to replace it, or "
                 + instead;
