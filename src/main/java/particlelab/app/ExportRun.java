@@ -35,8 +35,7 @@ final class ExportRun {
     /** The option's name, for messages. */
     static final String EXPORT = "--export";
     /** Why an export wrote no file, on stdout and on the HUD. */
-    static final String NOTHING_TO_EXPORT = "this demo has no particle trajectory and no table"
-            + " to export (its bodies are not recorded)";
+    static final String NOTHING_TO_EXPORT = "this demo records no trajectory or table";
 
     private ExportRun() {
     }
