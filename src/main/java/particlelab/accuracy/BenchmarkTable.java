@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
+import particlelab.files.SafeFiles;
 
 /**
  * The rows of {@code benchmarks.csv}, written by the JMH runner and by the report's own
@@ -174,12 +175,25 @@ public final class BenchmarkTable {
     }
 
     /**
-     * Write the table as CSV.
+     * Write the table as CSV, replacing a regular file there (gradle jmh writes its table
+     * anew each run) but never writing through a symbolic link ({@link SafeFiles}).
      *
      * @param file where to write (not null; parent folders are created)
-     * @throws IOException if the file cannot be written
+     * @throws IOException if the file cannot be written or is refused
      */
     public void write(Path file) throws IOException {
+        write(file, true);
+    }
+
+    /**
+     * Write the table as CSV by the rules of {@link SafeFiles}: created new, never through a
+     * symbolic link, an existing regular file replaced only if allowed.
+     *
+     * @param file where to write (not null; parent folders are created)
+     * @param replace true if an existing regular file may be replaced
+     * @throws IOException if the file cannot be written or is refused (the message says why)
+     */
+    public void write(Path file, boolean replace) throws IOException {
         StringBuilder text = new StringBuilder(HEADER).append('\n');
         for (Row row : rows) {
             text.append(row.name).append(',')
@@ -191,7 +205,7 @@ public final class BenchmarkTable {
         if (parent != null) {
             Files.createDirectories(parent);
         }
-        Files.write(file, text.toString().getBytes(StandardCharsets.UTF_8));
+        SafeFiles.write(file, text, replace);
     }
 
     /**

@@ -4,6 +4,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.Path;
 import java.util.List;
 import org.knowm.xchart.BitmapEncoder;
@@ -15,6 +16,7 @@ import org.knowm.xchart.style.XYStyler;
 import org.knowm.xchart.style.lines.SeriesLines;
 import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
+import particlelab.files.SafeFiles;
 
 /**
  * The report's charts, drawn headless with XChart to PNG, styled for a projector: white
@@ -101,13 +103,19 @@ final class Charts {
         return result;
     }
 
+    /** Write a chart as a PNG, created new ({@link SafeFiles}: never through a link). */
     static void save(XYChart chart, Path file) throws IOException {
-        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
+        try (OutputStream out = SafeFiles.create(file, false)) {
+            BitmapEncoder.saveBitmap(chart, out, BitmapEncoder.BitmapFormat.PNG);
+        }
     }
 
+    /** Write charts side by side as one PNG, created new as {@link #save} does. */
     static void saveGrid(List<XYChart> charts, int rows, int columns, Path file)
             throws IOException {
-        BitmapEncoder.saveBitmap(charts, rows, columns, file.toString(),
-                BitmapEncoder.BitmapFormat.PNG);
+        try (OutputStream out = SafeFiles.create(file, false)) {
+            BitmapEncoder.saveBitmap(charts, rows, columns, out,
+                    BitmapEncoder.BitmapFormat.PNG);
+        }
     }
 }

@@ -1,16 +1,15 @@
 package particlelab.accuracy;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
+import particlelab.files.SafeFiles;
 import particlelab.world.Detection;
 import particlelab.world.World;
 
@@ -61,9 +60,7 @@ public final class CollisionSection {
     static void write(CollisionStudy study, Path folder) throws IOException {
         writeCsvFiles(study, folder);
         writePlots(study, folder);
-        Files.write(folder.resolve("index.md"),
-                markdown(study).getBytes(StandardCharsets.UTF_8), StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND);
+        SafeFiles.append(folder.resolve("index.md"), markdown(study));
     }
 
     // ---- CSV ----------------------------------------------------------------------------------
@@ -378,6 +375,6 @@ public final class CollisionSection {
 
     private static void writeText(Path folder, String name, CharSequence text)
             throws IOException {
-        Files.write(folder.resolve(name), text.toString().getBytes(StandardCharsets.UTF_8));
+        SafeFiles.write(folder.resolve(name), text, false);
     }
 }

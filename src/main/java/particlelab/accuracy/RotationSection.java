@@ -1,15 +1,14 @@
 package particlelab.accuracy;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
+import particlelab.files.SafeFiles;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
 
@@ -56,9 +55,7 @@ public final class RotationSection {
         writeText(folder, "rotation_error.csv", errorCsv(study));
         writeText(folder, "racket_drift.csv", driftCsv(study));
         writePlot(study, folder);
-        Files.write(folder.resolve("index.md"),
-                markdown(study).getBytes(StandardCharsets.UTF_8), StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND);
+        SafeFiles.append(folder.resolve("index.md"), markdown(study));
     }
 
     // ---- CSV ----------------------------------------------------------------------------------
@@ -275,6 +272,6 @@ public final class RotationSection {
 
     private static void writeText(Path folder, String name, CharSequence text)
             throws IOException {
-        Files.write(folder.resolve(name), text.toString().getBytes(StandardCharsets.UTF_8));
+        SafeFiles.write(folder.resolve(name), text, false);
     }
 }

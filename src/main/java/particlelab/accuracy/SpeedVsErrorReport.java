@@ -2,7 +2,6 @@ package particlelab.accuracy;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -11,6 +10,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
+import particlelab.files.SafeFiles;
 import particlelab.physics.SimulationClock;
 
 /**
@@ -157,7 +157,7 @@ public final class SpeedVsErrorReport {
         }
         writeText("stability.csv", text);
 
-        benchmarks.write(folder.resolve("benchmarks.csv"));
+        benchmarks.write(folder.resolve("benchmarks.csv"), false);
 
         text = new StringBuilder(AIMING_HEADER).append('\n');
         for (AimingStudy.Shot s : aiming.shots) {
@@ -1128,6 +1128,6 @@ public final class SpeedVsErrorReport {
     }
 
     private void writeText(String name, CharSequence text) throws IOException {
-        Files.write(folder.resolve(name), text.toString().getBytes(StandardCharsets.UTF_8));
+        SafeFiles.write(folder.resolve(name), text, false);
     }
 }

@@ -1,13 +1,12 @@
 package particlelab.app;
 
 import java.io.File;
-import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.Paths;
-import java.nio.file.StandardOpenOption;
 import java.util.Arrays;
 import java.util.List;
 import java.util.logging.Level;
@@ -15,6 +14,7 @@ import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
 import particlelab.demo.DemoState;
 import particlelab.demo.FountainDemo;
+import particlelab.files.SafeFiles;
 import particlelab.view.HudScale;
 import particlelab.world.Fountain;
 
@@ -103,6 +103,7 @@ public final class DemoCommand {
         float fixedTpf;
         int[] window;
         Path exportFolder = null;
+        boolean force;
         float uiScale;
         List<String> settings;
         int particles;
@@ -146,11 +147,17 @@ public final class DemoCommand {
                 throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
                         + " knows which frame to save");
             }
+            force = options.has(SafeFiles.FORCE);
+            if (force && screenshot == null && !options.has(ExportRun.EXPORT)) {
+                throw new UsageException(SafeFiles.FORCE + ": replaces the files of "
+                        + SCREENSHOT + " or " + ExportRun.EXPORT + "; give one of them");
+            }
             if (screenshot != null) {
-                checkScreenshotPath(file);
+                checkScreenshotPath(file, force);
             }
             if (options.has(ExportRun.EXPORT)) {
-                exportFolder = ExportRun.checkFolder(options.string(ExportRun.EXPORT, null));
+                exportFolder = ExportRun.checkFolder(options.string(ExportRun.EXPORT, null),
+                        force);
             }
             particles = options.intInRange(PARTICLES, Fountain.DEFAULT_PARTICLES, 1,
                     Fountain.MAX_PARTICLES);
@@ -172,14 +179,39 @@ public final class DemoCommand {
             err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
             return USAGE;
         }
+        // The whole command line was accepted: only now are the folders made.
+        Path shotFolder = screenshot == null ? null
+                : screenshot.toPath().toAbsolutePath().getParent();
+        Path createdForExport = null;
+        Path createdForShot = null;
+        try {
+            if (exportFolder != null) {
+                createdForExport = OutputFolders.create(ExportRun.EXPORT, exportFolder);
+            }
+            if (shotFolder != null) {
+                createdForShot = OutputFolders.create(SCREENSHOT, shotFolder);
+            }
+        } catch (UsageException e) {
+            SafeFiles.removeCreated(exportFolder, createdForExport);
+            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
+            return USAGE;
+        }
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
         ((FountainDemo) demos.get(DemoCatalog.indexOf(FOUNTAIN))).setParticleCount(particles);
         int status = exportFolder != null && screenshot == null
-                ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, out, err)
+                ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, force,
+                        out, err)
                 : openWindow(demos, index, frames, screenshot, fixedTpf, uiScale, exportFolder,
-                        out, err);
+                        force, out, err);
+        if (status != OK) {
+            // A run that failed (no display, say) leaves no empty folder it made.
+            SafeFiles.removeCreated(exportFolder, createdForExport);
+            if (shotFolder != null) {
+                SafeFiles.removeCreated(shotFolder, createdForShot);
+            }
+        }
         if (status == OK && options.has(PROFILE)) {
             out.println(profileLine(demos.get(index)));
         }
@@ -246,15 +278,17 @@ public final class DemoCommand {
     }
 
     /**
-     * Check, before the window opens, that the screenshot can be written there: not a folder
-     * (which is never replaced), not under a file, and writable (a probe file is created and
-     * deleted, a file already there is opened for appending and left as it was). Missing
-     * folders on the way are created.
+     * Check, before the window opens and without creating anything, that the screenshot may
+     * be written there ({@link SafeFiles}): nothing at the path, or a regular file and
+     * {@code replace}; never a symbolic link, a folder or a device; nothing above it a file.
+     * The folder is created and tried with a probe file once the whole command line was
+     * accepted ({@link OutputFolders#create}).
      *
      * @param text the path as given (not null)
-     * @throws UsageException if the PNG could not be written there
+     * @param replace true if {@value SafeFiles#FORCE} was given
+     * @throws UsageException if the PNG may not be written there
      */
-    static void checkScreenshotPath(String text) {
+    static void checkScreenshotPath(String text, boolean replace) {
         String shown = Options.show(text);
         Path path;
         try {
@@ -262,31 +296,19 @@ public final class DemoCommand {
         } catch (InvalidPathException bad) {
             throw new UsageException(SCREENSHOT + ": not a valid path, but was " + shown);
         }
-        if (Files.isDirectory(path)) {
+        if (Files.isDirectory(path, LinkOption.NOFOLLOW_LINKS)) {
             throw new UsageException(SCREENSHOT + ": " + shown + " is a folder; give a file"
                     + " name such as " + Options.show(path.resolve("shot.png").toString()));
         }
-        Path ancestor = path.getParent();
-        while (ancestor != null && !Files.exists(ancestor)) {
-            ancestor = ancestor.getParent();
+        String refused = SafeFiles.refusal(Paths.get(text), replace, "choose another name");
+        if (refused != null) {
+            throw new UsageException(SCREENSHOT + ": " + refused);
         }
-        if (ancestor != null && !Files.isDirectory(ancestor)) {
+        String blocked = path.getParent() == null ? null
+                : SafeFiles.folderRefusal(path.getParent());
+        if (blocked != null) {
             throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
-                    + Options.show(ancestor.toString()) + " is a file, not a folder");
-        }
-        try {
-            if (path.getParent() != null) {
-                Files.createDirectories(path.getParent());
-            }
-            if (Files.exists(path)) {
-                Files.newOutputStream(path, StandardOpenOption.APPEND).close();
-            } else {
-                Files.createFile(path);
-                Files.delete(path);
-            }
-        } catch (IOException failure) {
-            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
-                    + UsageException.reason(failure));
+                    + blocked);
         }
     }
 
@@ -331,8 +353,10 @@ public final class DemoCommand {
                 .flag(LIST, "print the demo names, one per line, and exit")
                 .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
                 .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames);"
-                        + " checked before the window opens: a folder, a path under a file or"
-                        + " an unwritable place is refused")
+                        + " checked before the window opens: an existing FILE is refused"
+                        + " (replaced with " + SafeFiles.FORCE + "), and so are a symbolic"
+                        + " link, a folder or a device there, a path under a file or an"
+                        + " unwritable place")
                 .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
                         + " (0 < H <= 1), so a run and its screenshot are reproducible")
                 .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720);"
@@ -343,9 +367,15 @@ public final class DemoCommand {
                         + HudScale.FACTOR_STEP + ")")
                 .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
                         + " every particle's trajectory since its launch as DIR/<particle>.csv"
-                        + " (the header and numbers of particle-lab trajectory) and list the"
-                        + " files; without --screenshot it runs without a window (no display"
-                        + " needed, no PNG)")
+                        + " (the header and numbers of particle-lab trajectory), or the demo's"
+                        + " own table (rotation, fountain, iterate), and list the files;"
+                        + " without --screenshot it runs without a window (no display needed,"
+                        + " no PNG). A DIR holding .csv files is refused (they are replaced"
+                        + " with " + SafeFiles.FORCE + "), and a symbolic link named .csv in"
+                        + " it always is")
+                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + ExportRun.EXPORT
+                        + " replace existing regular files; a symbolic link is never written"
+                        + " through, not even with it")
                 .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
                         + " starts, e.g. b=0.3 or h=1/10 (repeatable); the panel (F2) lists"
                         + " them, a wrong name or value lists them with their ranges")
@@ -369,12 +399,13 @@ public final class DemoCommand {
      * @param fixedTpf the fixed frame time, or NaN
      * @param uiScale the user's factor on the HUD scale
      * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
      * @param out where results go (not null)
      * @param err where errors go (not null)
      * @return the exit status
      */
     static int openWindow(List<DemoState> demos, int index, int frames, File screenshot,
-            float fixedTpf, float uiScale, Path exportFolder, PrintStream out,
+            float fixedTpf, float uiScale, Path exportFolder, boolean replace, PrintStream out,
             PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
@@ -393,6 +424,9 @@ public final class DemoCommand {
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
         app.getWindowControls().setUiFactor(uiScale);
+        if (app.getCapture() != null) {
+            app.getCapture().setReplace(replace);
+        }
         app.start();
         try {
             app.awaitFinished(Long.MAX_VALUE);
@@ -419,7 +453,8 @@ public final class DemoCommand {
                     + capture.getStatistics());
         }
         if (exportFolder != null) {
-            return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, out, err);
+            return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace, out,
+                    err);
         }
         return OK;
     }

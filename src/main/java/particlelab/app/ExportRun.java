@@ -3,13 +3,17 @@ package particlelab.app;
 import com.jme3.system.JmeContext;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import particlelab.demo.DemoState;
 import particlelab.demo.TrajectoryExport;
+import particlelab.files.SafeFiles;
 
 /**
  * {@code particle-lab demo NAME --frames N [--fixed-tpf H] --export DIR}: run a demo for N
@@ -21,24 +25,36 @@ import particlelab.demo.TrajectoryExport;
  * so it works on a machine without a display, and there is no PNG: a headless context has no
  * frame to read back. With {@code --screenshot FILE} the window opens as usual (a display is
  * needed) and the PNG is written there; the CSV files are written when the window closes.
+ *
+ * <p>Existing files: a folder holding {@code .csv} files is refused before the demo runs
+ * unless {@value SafeFiles#FORCE} is given, and every file is created new by the rules of
+ * {@link SafeFiles}, so a symbolic link planted in the folder is never written through.
  */
 final class ExportRun {
 
     /** The option's name, for messages. */
     static final String EXPORT = "--export";
+    /** Why an export wrote no file, on stdout and on the HUD. */
+    static final String NOTHING_TO_EXPORT = "this demo records no trajectory or table";
 
     private ExportRun() {
     }
 
     /**
-     * Check, before anything runs, that the CSV files can be written into a folder: it is
-     * created if missing (with those above it), and a probe file is created and deleted.
+     * Check, before anything runs and without creating anything, that the CSV files may be
+     * written into a folder: it is a folder or can be made one (nothing above it is a file),
+     * and no {@code .csv} file in it is in the way. The export names its files after the
+     * particles, whose labels a demo may change while it runs, so every {@code .csv} name in
+     * the folder counts as one it may write: an existing regular file is refused unless
+     * {@code replace}; a symbolic link, a folder, a device is always refused. The folder
+     * itself may be a link: the user named it.
      *
      * @param text the folder as given (not null)
-     * @return the folder (not null)
-     * @throws UsageException if it is a file, under a file, or not writable
+     * @param replace true if {@value SafeFiles#FORCE} was given
+     * @return the folder (not null), to create with {@link OutputFolders#create}
+     * @throws UsageException if it is a file, under a file, or holds a CSV in the way
      */
-    static Path checkFolder(String text) {
+    static Path checkFolder(String text, boolean replace) {
         String shown = Options.show(text);
         Path folder;
         try {
@@ -46,18 +62,30 @@ final class ExportRun {
         } catch (InvalidPathException bad) {
             throw new UsageException(EXPORT + ": not a valid path, but was " + shown);
         }
-        if (Files.exists(folder) && !Files.isDirectory(folder)) {
-            throw new UsageException(EXPORT + ": " + shown + " is a file; give a folder");
+        String blocked = SafeFiles.folderRefusal(folder);
+        if (blocked != null) {
+            throw new UsageException(EXPORT + ": cannot write into "
+                    + SafeFiles.printable(folder) + ": " + blocked);
         }
-        try {
-            Files.createDirectories(folder);
-            Path probe = Files.createTempFile(folder, ".particle-lab-probe", ".csv");
-            Files.delete(probe);
-        } catch (IOException failure) {
-            throw new UsageException(EXPORT + ": cannot write into " + shown + ": "
-                    + UsageException.reason(failure));
-        } catch (SecurityException | UnsupportedOperationException failure) {
-            throw new UsageException(EXPORT + ": cannot write into " + shown);
+        if (!Files.isDirectory(folder)) {
+            return folder;
+        }
+        List<Path> csvFiles = new ArrayList<>();
+        try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, "*.csv")) {
+            for (Path entry : entries) {
+                csvFiles.add(entry);
+            }
+        } catch (IOException | SecurityException failure) {
+            throw new UsageException(EXPORT + ": cannot read the folder " + shown + ": "
+                    + (failure instanceof IOException
+                            ? UsageException.reason((IOException) failure) : "not allowed"));
+        }
+        Collections.sort(csvFiles);
+        for (Path csv : csvFiles) {
+            String why = SafeFiles.refusal(csv, replace, "choose an empty folder");
+            if (why != null) {
+                throw new UsageException(EXPORT + ": " + why);
+            }
         }
         return folder;
     }
@@ -69,13 +97,14 @@ final class ExportRun {
      * @param index the demo to run
      * @param frames how many frames (&gt;0)
      * @param fixedTpf the fixed frame time (in seconds), or NaN for the real clock
-     * @param folder where to write (checked by {@link #checkFolder})
+     * @param folder where to write (checked by {@link #checkFolder}, created)
+     * @param replace true if existing regular files may be replaced
      * @param out where the listing goes (not null)
      * @param err where errors go (not null)
      * @return the exit status
      */
     static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
-            Path folder, PrintStream out, PrintStream err) {
+            Path folder, boolean replace, PrintStream out, PrintStream err) {
         DemoCommand.quietLogs();
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, null, fixedTpf, false);
         app.start(JmeContext.Type.Headless);
@@ -91,25 +120,31 @@ final class ExportRun {
             err.println("particle-lab: the demo failed: " + app.getFailure());
             return DemoCommand.FAILED;
         }
-        return write(app.getSwitcher().getSelected(), folder, out, err);
+        return write(app.getSwitcher().getSelected(), folder, replace, out, err);
     }
 
     /**
      * Export a demo whose application has stopped, listing the files.
      *
      * @param demo the demo (not null)
-     * @param folder where to write (not null)
+     * @param folder where to write (not null, exists)
+     * @param replace true if existing regular files may be replaced
      * @param out where the listing goes (not null)
      * @param err where errors go (not null)
      * @return the exit status
      */
-    static int write(DemoState demo, Path folder, PrintStream out, PrintStream err) {
+    static int write(DemoState demo, Path folder, boolean replace, PrintStream out,
+            PrintStream err) {
         try {
-            for (TrajectoryExport.Written file : TrajectoryExport.write(demo, folder)) {
+            List<TrajectoryExport.Written> files = TrajectoryExport.write(demo, folder, replace);
+            for (TrajectoryExport.Written file : files) {
                 out.println("csv " + file.describe());
             }
+            if (files.isEmpty()) {
+                out.println("csv: none; " + NOTHING_TO_EXPORT);
+            }
         } catch (IOException failure) {
-            err.println("particle-lab: the export to " + Options.show(folder.toString())
+            err.println("particle-lab: the export to " + SafeFiles.printable(folder)
                     + " failed: " + UsageException.reason(failure));
             return DemoCommand.FAILED;
         }

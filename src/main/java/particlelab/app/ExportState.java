@@ -5,6 +5,7 @@ import com.jme3.app.state.BaseAppState;
 import com.jme3.input.KeyInput;
 import com.jme3.system.JmeContext;
 import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -30,6 +31,8 @@ public final class ExportState extends BaseAppState {
     public static final Path BASE_FOLDER = Paths.get("particle-lab-export");
     /** The screenshot's file name in an export's folder. */
     public static final String SCREENSHOT_NAME = "screenshot.png";
+    /** How many folders of the same second it tries before giving up. */
+    private static final int MAX_COPIES = 1000;
     private static final DateTimeFormatter STAMP =
             DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss");
 
@@ -74,8 +77,9 @@ public final class ExportState extends BaseAppState {
     public Path exportNow() throws IOException {
         DemoState demo = switcher.getSelected();
         Path folder = newFolder(demo);
-        List<TrajectoryExport.Written> files = TrajectoryExport.write(demo, folder);
-        String what = files.size() + (files.size() == 1 ? " CSV" : " CSVs");
+        List<TrajectoryExport.Written> files = TrajectoryExport.write(demo, folder, false);
+        String what = files.isEmpty() ? "no CSV (" + ExportRun.NOTHING_TO_EXPORT + ")"
+                : files.size() + (files.size() == 1 ? " CSV" : " CSVs");
         if (getApplication().getContext().getType() == JmeContext.Type.Headless) {
             demo.showNotice("exported " + what + " to " + folder + " (no window: no PNG)");
             return folder;
@@ -124,15 +128,24 @@ public final class ExportState extends BaseAppState {
         }
     }
 
+    /**
+     * Make a folder no one else has written into: created here ({@code mkdir}, which fails on
+     * any name taken, a symbolic link included), so its files are new by construction.
+     */
     private Path newFolder(DemoState demo) throws IOException {
         String name = TrajectoryExport.fileSafeName(demo.getTitle()) + "-"
                 + LocalDateTime.now().format(STAMP);
-        Path folder = baseFolder.resolve(name);
-        for (int copy = 2; Files.exists(folder); ++copy) {
-            folder = baseFolder.resolve(name + "-" + copy);
+        Files.createDirectories(baseFolder);
+        for (int copy = 1; ; ++copy) {
+            Path folder = baseFolder.resolve(copy == 1 ? name : name + "-" + copy);
+            try {
+                return Files.createDirectory(folder);
+            } catch (FileAlreadyExistsException taken) {
+                if (copy == MAX_COPIES) {
+                    throw taken;
+                }
+            }
         }
-        Files.createDirectories(folder);
-        return folder;
     }
 
     private void removeCapture() {

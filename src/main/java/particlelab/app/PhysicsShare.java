@@ -3,10 +3,7 @@ package particlelab.app;
 import com.jme3.system.AppSettings;
 import com.jme3.system.JmeContext;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -19,6 +16,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import particlelab.accuracy.ReportConfig;
 import particlelab.demo.DemoState;
+import particlelab.files.SafeFiles;
 import particlelab.physics.SimulationClock;
 import particlelab.world.StepListener;
 import particlelab.world.World;
@@ -174,9 +172,8 @@ public final class PhysicsShare {
                     .append(',').append(fix(row.meanMillis / BUDGET_MS, 6)).append(',')
                     .append(fix(row.maxMillis / BUDGET_MS, 6)).append('\n');
         }
-        Files.write(folder.resolve(CSV), csv.toString().getBytes(StandardCharsets.UTF_8));
-        Files.write(folder.resolve("index.md"), markdown().getBytes(StandardCharsets.UTF_8),
-                StandardOpenOption.CREATE, StandardOpenOption.APPEND);
+        SafeFiles.write(folder.resolve(CSV), csv, false);
+        SafeFiles.append(folder.resolve("index.md"), markdown());
     }
 
     private String markdown() {

@@ -6,10 +6,12 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
 import java.util.List;
 import particlelab.accuracy.BenchmarkTable;
 import particlelab.accuracy.ReportConfig;
 import particlelab.accuracy.SpeedVsErrorReport;
+import particlelab.files.SafeFiles;
 
 /**
  * {@code particle-lab report}: writes the speed-against-error report (see
@@ -53,7 +55,13 @@ public final class ReportCommand {
                 + " aiming misses and frame hitches, and the physics share of a frame for every"
                 + " demo (run headless), as index.md, CSV files and PNG plots.")
                 .value(OUT, "DIR", "the folder to write (created if missing). Default "
-                        + DEFAULT_OUT + ".")
+                        + DEFAULT_OUT + ". If one of the report's files is already in DIR,"
+                        + " nothing runs unless " + SafeFiles.FORCE + " is given; a symbolic"
+                        + " link or anything but a regular file at one of their names is"
+                        + " always refused.")
+                .flag(SafeFiles.FORCE, "replace the report's files already in DIR: they are"
+                        + " removed when the command line is accepted, before the work starts;"
+                        + " links are never written through, not even with it.")
                 .flag(QUICK, "a smaller sweep, in about half a minute.")
                 .flag(TINY, "the smallest sweep (a few seconds): every file, rough numbers.")
                 .value(JMH, "FILE", "take the benchmark rows from this benchmarks.csv, written"
@@ -78,6 +86,7 @@ public final class ReportCommand {
         Options options = options();
         Path folder;
         Path jmh;
+        boolean force;
         ReportConfig.Size size;
         try {
             options.parse(args);
@@ -89,14 +98,27 @@ public final class ReportCommand {
             size = options.has(QUICK) ? ReportConfig.Size.QUICK
                     : options.has(TINY) ? ReportConfig.Size.TINY : ReportConfig.Size.FULL;
             folder = path(OUT, options.string(OUT, DEFAULT_OUT));
-            if (Files.exists(folder) && !Files.isDirectory(folder)) {
-                throw new UsageException(OUT + ": " + Options.show(folder.toString())
-                        + " is a file, not a folder");
+            String blocked = SafeFiles.folderRefusal(folder);
+            if (blocked != null) {
+                throw new UsageException(OUT + ": cannot write to "
+                        + SafeFiles.printable(folder) + ": " + blocked);
             }
             jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
-            checkWritable(folder);
+            force = options.has(SafeFiles.FORCE);
+            checkTargets(folder, force);
+            // The whole command line was accepted: only now is the folder made.
+            OutputFolders.create(OUT, folder);
         } catch (UsageException problem) {
             return CommandSupport.reportUsage(COMMAND, problem, err);
+        }
+        if (force) {
+            try {
+                for (String name : targets()) {
+                    SafeFiles.removeToReplace(folder.resolve(name));
+                }
+            } catch (IOException failure) {
+                return unwritable(folder, failure, err);
+            }
         }
         if (System.getProperty("java.awt.headless") == null) {
             System.setProperty("java.awt.headless", "true");
@@ -133,7 +155,7 @@ public final class ReportCommand {
 
     private static int unwritable(Path folder, IOException failure, PrintStream err) {
         err.println(COMMAND + ": " + OUT + ": could not write to "
-                + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
+                + SafeFiles.printable(folder) + ": " + UsageException.reason(failure));
         return FAILED;
     }
 
@@ -146,26 +168,44 @@ public final class ReportCommand {
         }
     }
 
+    /** Every file the report writes, relative to its folder. */
+    private static List<String> targets() {
+        List<String> names = new ArrayList<>(SpeedVsErrorReport.FILES);
+        names.addAll(PhysicsShare.FILES);
+        return names;
+    }
+
     /**
-     * Create the folder and a probe file in it, so that an unwritable folder is refused in
-     * one line before a minute of work, with the system's reason.
+     * Refuse, before the work starts, a folder in which one of the report's files is in the
+     * way: an existing regular file without {@code --force}, or a symbolic link, a folder or
+     * a device at its name (always). Each file is then also created new when written.
      */
-    private static void checkWritable(Path folder) {
-        try {
-            Files.createDirectories(folder);
-            Path probe = Files.createTempFile(folder, ".write-check", ".tmp");
-            Files.delete(probe);
-        } catch (IOException failure) {
-            throw new UsageException(OUT + ": cannot write to "
-                    + Options.show(folder.toString()) + ": " + UsageException.reason(failure));
+    private static void checkTargets(Path folder, boolean replace) {
+        if (!Files.isDirectory(folder)) {
+            return;
+        }
+        for (String name : targets()) {
+            String why = SafeFiles.refusal(folder.resolve(name), replace,
+                    "choose an empty folder");
+            if (why != null) {
+                throw new UsageException(OUT + ": " + why);
+            }
         }
     }
 
     private static Path benchmarks(String text) {
         Path file = path(JMH, text);
         String shown = Options.show(text);
-        if (!Files.isRegularFile(file)) {
+        if (Files.isDirectory(file)) {
+            throw new UsageException(JMH + ": " + shown + " is a folder, not a file; give the"
+                    + " benchmarks.csv that gradle jmh writes");
+        }
+        if (!Files.exists(file)) {
             throw new UsageException(JMH + ": the file " + shown + " does not exist");
+        }
+        if (!Files.isRegularFile(file)) {
+            throw new UsageException(JMH + ": " + shown + " is not a regular file ("
+                    + SafeFiles.kind(file) + ")");
         }
         BenchmarkTable table;
         try {

@@ -14,10 +14,11 @@ import java.io.File;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
-import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import particlelab.files.SafeFiles;
 
 /**
  * Reads the finished frame back from the GPU when asked and writes it as a PNG, then measures
@@ -28,6 +29,7 @@ import javax.imageio.ImageIO;
 public final class ScreenshotCapture implements SceneProcessor {
 
     private final File file;
+    private boolean replace;
     private Renderer renderer;
     private int width;
     private int height;
@@ -43,6 +45,16 @@ public final class ScreenshotCapture implements SceneProcessor {
      */
     public ScreenshotCapture(File file) {
         this.file = file;
+    }
+
+    /**
+     * Allow an existing regular file at the path to be replaced ({@code --force}); a symbolic
+     * link, a folder or a device there is refused even so ({@link SafeFiles}).
+     *
+     * @param allowed true to replace, false (the default) to refuse an existing file
+     */
+    public void setReplace(boolean allowed) {
+        replace = allowed;
     }
 
     /** Capture the next frame to finish rendering. */
@@ -117,19 +129,8 @@ public final class ScreenshotCapture implements SceneProcessor {
         statistics = String.format("%dx%d pixels, %d distinct colours,"
                 + " the most common covers %.1f%%", width, height, counts.size(),
                 100.0 * most / (width * height));
-        // Our own stream: ImageIO.write(File) deletes what is at the path first (an empty
-        // folder included) and prints a stack trace when it cannot open the file.
-        ImageIO.setUseCache(false);
         try {
-            File parent = file.getAbsoluteFile().getParentFile();
-            if (parent != null) {
-                Files.createDirectories(parent.toPath());
-            }
-            try (OutputStream stream = Files.newOutputStream(file.toPath())) {
-                if (!ImageIO.write(image, "png", stream)) {
-                    throw new IOException("no PNG writer is installed");
-                }
-            }
+            writePng(image, file.toPath(), replace);
             written = true;
         } catch (IOException e) {
             failure = e;
@@ -142,5 +143,25 @@ public final class ScreenshotCapture implements SceneProcessor {
 
     @Override
     public void setProfiler(AppProfiler profiler) {
+    }
+
+    /**
+     * Write a picture as a PNG by the rules of {@link SafeFiles}: created new, never through a
+     * symbolic link, an existing regular file replaced only if allowed.
+     *
+     * @param image the picture (not null)
+     * @param path where (not null; its folder exists)
+     * @param replace true if an existing regular file may be replaced
+     * @throws IOException if it cannot be written or is refused (the message says why)
+     */
+    static void writePng(BufferedImage image, Path path, boolean replace) throws IOException {
+        // Our own stream: ImageIO.write(File) deletes what is at the path first (an empty
+        // folder included) and prints a stack trace when it cannot open the file.
+        ImageIO.setUseCache(false);
+        try (OutputStream stream = SafeFiles.create(path, replace)) {
+            if (!ImageIO.write(image, "png", stream)) {
+                throw new IOException("no PNG writer is installed");
+            }
+        }
     }
 }

@@ -643,6 +643,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Add the demo's own tables to an export, beside its particles' trajectories: what a demo
+     * with no free particle has to show (the rotation boxes per step, the fountain's counts,
+     * the aimer's shots). Called on the jME thread, or after the application stopped; may
+     * allocate. The default adds none.
+     *
+     * @param storeResult where to add them (not null, modified)
+     */
+    public void collectExportTables(List<StepTable> storeResult) {
+    }
+
+    /**
      * Copy the screen rectangle of every post of the scene (targets, a gun) into a list: what
      * a test checks particle labels against.
      *

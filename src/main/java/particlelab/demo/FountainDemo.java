@@ -3,6 +3,7 @@ package particlelab.demo;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
+import java.util.List;
 import particlelab.view.PointCloudView;
 import particlelab.view.TextFormat;
 import particlelab.world.Fountain;
@@ -42,6 +43,11 @@ public final class FountainDemo extends DemoState {
      * saturates at 10^6 nor fades at 10^3.
      */
     private static final float WATER_BRIGHTNESS = 0.15f;
+    /** The export's table of counts per step (file name without .csv). */
+    public static final String COUNTS_TABLE = "fountain-counts";
+    /** Its header: the time, the particles in flight (all, then by kind), those recycled. */
+    public static final String COUNTS_HEADER = "t_s,in_flight,water,shells,stars,sparks,"
+            + "recycled_at_rest,recycled_left_region,recycled_burnt";
     private static final float MILLIS_PER_SECOND = 1000f;
     private static final float GRAMS_PER_KG = 1000f;
 
@@ -53,6 +59,11 @@ public final class FountainDemo extends DemoState {
     private final FrameTimes frameTimes = new FrameTimes();
     private long renderStartNanos = -1L;
     private long lastUpdateNanos = -1L;
+    /** The fountain's counts after each step, for the export. */
+    private final StepTable counts = new StepTable(COUNTS_TABLE, COUNTS_HEADER,
+            StepTable.DEFAULT_CAPACITY);
+    /** The time simulated since the last reset (in seconds). */
+    private double simulatedSeconds;
 
     /** Create the demo with {@link Fountain#DEFAULT_PARTICLES}. */
     public FountainDemo() {
@@ -176,9 +187,26 @@ public final class FountainDemo extends DemoState {
                 .append(" fps)\n");
     }
 
+    /**
+     * Add the fountain's counts per step to an export ({@value #COUNTS_TABLE}.csv): it has
+     * no particle of its own to trace, and its 10^5 pooled ones come and go.
+     *
+     * @param storeResult where to add the table (not null, modified)
+     */
+    @Override
+    public void collectExportTables(List<StepTable> storeResult) {
+        storeResult.add(counts);
+    }
+
     @Override
     protected void afterStep(float stepSeconds) {
         fountain.step(stepSeconds);
+        simulatedSeconds += stepSeconds;
+        counts.startRow().put(simulatedSeconds).put(fountain.countLive())
+                .put(fountain.countLive(Fountain.WATER)).put(fountain.countLive(Fountain.SHELL))
+                .put(fountain.countLive(Fountain.STAR)).put(fountain.countLive(Fountain.SPARK))
+                .put(fountain.countRecycledResting()).put(fountain.countRecycledLeaving())
+                .put(fountain.countRecycledBurnt());
     }
 
     @Override
@@ -199,6 +227,8 @@ public final class FountainDemo extends DemoState {
         if (fountain != null) {
             fountain.reset();
         }
+        counts.clear();
+        simulatedSeconds = 0.0;
     }
 
     @Override

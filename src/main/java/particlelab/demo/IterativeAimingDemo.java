@@ -3,6 +3,7 @@ package particlelab.demo;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.AimStrategy;
 import particlelab.aiming.IterativeAim;
@@ -71,6 +72,11 @@ public final class IterativeAimingDemo extends DemoState {
     public static final int VISIBLE_SHOTS = 4;
     /** The most shots a round may take. */
     public static final int MAX_SHOTS = 40;
+    /** The export's table of the round's shots (file name without .csv). */
+    public static final String SHOTS_TABLE = "shots";
+    /** Its header: one row per attempt, as planned and as flown. */
+    public static final String SHOTS_HEADER = "shot,vx_m_per_s,vy_m_per_s,predicted_landing_x_m,"
+            + "predicted_flight_s,predicted_miss_m,flown_landing_x_m";
     /** The believable player's seed at the start. */
     public static final long DEFAULT_SEED = 1L;
     /** The strategies the G key cycles through, in order. */
@@ -360,6 +366,25 @@ public final class IterativeAimingDemo extends DemoState {
     }
 
     // ------------------------------------------------------------- framework overrides ----
+
+    /**
+     * Add the round's shots to an export ({@value #SHOTS_TABLE}.csv): each attempt's launch
+     * velocity, where and when the aimer predicted it lands, its predicted miss, and where it
+     * landed in the scene (NaN while it has not). The shots fly parked between attempts, so
+     * their trajectories are not what the round is about.
+     *
+     * @param storeResult where to add the table (not null, modified)
+     */
+    @Override
+    public void collectExportTables(List<StepTable> storeResult) {
+        StepTable shots = new StepTable(SHOTS_TABLE, SHOTS_HEADER, MAX_SHOTS);
+        for (int i = 0; i < plan.size(); ++i) {
+            shots.startRow().put(i + 1).put(plan.getHorizontalSpeed(i))
+                    .put(plan.getVerticalSpeed(i)).put(plan.getLandingX(i))
+                    .put(plan.getFlightSeconds(i)).put(plan.getMiss(i)).put(flownLanding[i]);
+        }
+        storeResult.add(shots);
+    }
 
     @Override
     protected void createScene() {

@@ -5,6 +5,7 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.physics.SimulationClock;
 import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator;
@@ -80,6 +81,13 @@ public final class RotationDemo extends DemoState {
     /** The boxes spin in front of the grid's plane, so no grid line shows on them (m). */
     private static final float BOX_Z = 1.3f;
     private static final float RAD_TO_DEG = (float) (180.0 / Math.PI);
+    /**
+     * The header of each box's export table, one row per step: the time, the time since the
+     * box last started from the identity, R row by row, det R, |RᵀR − I| and the angle error
+     * against the exact rotation.
+     */
+    public static final String BOX_HEADER = "t_s,box_t_s,r00,r01,r02,r10,r11,r12,r20,r21,r22,"
+            + "det,orthogonality_error,angle_error_deg";
 
     private final Matrix3f[] orientations = new Matrix3f[METHODS.length];
     private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
@@ -97,6 +105,10 @@ public final class RotationDemo extends DemoState {
     private final Matrix3f identity = new Matrix3f();
     private final Matrix3f exact = new Matrix3f();
     private final Vector3f omega = new Vector3f();
+    /** Per box: its states after each step, for the export. */
+    private final StepTable[] tables = new StepTable[METHODS.length];
+    /** The time simulated since the last restart (in seconds). */
+    private double simulatedSeconds;
     private float omegaMagnitude = DEFAULT_OMEGA;
     private int plainRestarts;
     private KeyBinding fasterKey;
@@ -113,6 +125,8 @@ public final class RotationDemo extends DemoState {
                     RotationIntegrator.Angular.EXPLICIT, true);
             centres[i] = new Vector3f(FIRST_X + SPACING_X * i, BOX_Y, BOX_Z);
             spinAngles[i] = new SpinAngle();
+            tables[i] = new StepTable("rotation-" + TrajectoryExport.fileSafeName(NAMES[i]),
+                    BOX_HEADER, StepTable.DEFAULT_CAPACITY);
         }
         omega.set(AXIS).multLocal(omegaMagnitude);
         for (int i = 0; i < METHODS.length; ++i) {
@@ -265,7 +279,24 @@ public final class RotationDemo extends DemoState {
             ++plainRestarts;
             plainRestartSeconds = runSeconds;
         }
+        simulatedSeconds += stepSeconds;
+        for (int i = 0; i < METHODS.length; ++i) {
+            record(i);
+        }
         updateBoxes();
+    }
+
+    /**
+     * Add the boxes' states per step to an export, one table each
+     * ({@code rotation-<box>.csv}, {@link #BOX_HEADER}): the demo has no particle to trace.
+     *
+     * @param storeResult where to add the tables (not null, modified)
+     */
+    @Override
+    public void collectExportTables(List<StepTable> storeResult) {
+        for (StepTable table : tables) {
+            storeResult.add(table);
+        }
     }
 
     @Override
@@ -278,6 +309,10 @@ public final class RotationDemo extends DemoState {
         runSeconds = 0.0;
         plainRestartSeconds = Double.NaN;
         plainRestarts = 0;
+        simulatedSeconds = 0.0;
+        for (StepTable table : tables) {
+            table.clear();
+        }
         updateBoxes();
     }
 
@@ -290,6 +325,20 @@ public final class RotationDemo extends DemoState {
             getSceneNode().attachChild(views[i].getGeometry());
         }
         updateBoxes();
+    }
+
+    /** Record one box's state after a step. Allocates nothing. */
+    private void record(int box) {
+        Matrix3f r = orientations[box];
+        check.exactRotation(identity, omega, elapsedSeconds[box], exact);
+        StepTable table = tables[box].startRow().put(simulatedSeconds).put(elapsedSeconds[box]);
+        for (int row = 0; row < 3; ++row) {
+            for (int column = 0; column < 3; ++column) {
+                table.put(r.get(row, column));
+            }
+        }
+        table.put(check.determinant(r)).put(check.orthogonalityError(r))
+                .put(RAD_TO_DEG * check.angleError(r, exact));
     }
 
     private void updateBoxes() {

@@ -2,20 +2,20 @@ package particlelab.demo;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import particlelab.files.SafeFiles;
 
 /**
  * Writes a demo's trajectories as CSV, one file per particle, {@code FOLDER/<particle>.csv}
  * with the {@code particle-lab trajectory} header and number format ({@link TrajectoryRecord}):
  * every step since the particle's launch. A particle parked by the demo (out of its current
  * preset, left out of the HUD) is left out here too; a particle not stepped since its launch
- * gets its one launch row.
+ * gets its one launch row. A demo's own tables ({@link DemoState#collectExportTables}, e.g.
+ * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header.
  *
  * <p>File names are made file-safe ({@link #fileSafeName}): lower case, letters, digits, dots
  * and hyphens only, so {@code "linear drag  F = -0.9 V"} becomes
@@ -36,11 +36,13 @@ public final class TrajectoryExport {
         private final Path file;
         private final int rows;
         private final long dropped;
+        private final int cap;
 
-        Written(Path file, int rows, long dropped) {
+        Written(Path file, int rows, long dropped, int cap) {
             this.file = file;
             this.rows = rows;
             this.dropped = dropped;
+            this.cap = cap;
         }
 
         /** @return the file written (not null) */
@@ -48,12 +50,12 @@ public final class TrajectoryExport {
             return file;
         }
 
-        /** @return the rows written, header not counted (&ge;1) */
+        /** @return the rows written, header not counted (&ge;0) */
         public int getRows() {
             return rows;
         }
 
-        /** @return the steps past {@link TrajectoryRecord#MAX_ROWS} left out (&ge;0) */
+        /** @return the steps past the record's capacity left out (&ge;0) */
         public long getDropped() {
             return dropped;
         }
@@ -66,22 +68,24 @@ public final class TrajectoryExport {
          */
         public String describe() {
             return file + ": " + rows + (rows == 1 ? " row" : " rows")
-                    + (dropped == 0L ? "" : " (the first " + TrajectoryRecord.MAX_ROWS
-                            + " states; " + dropped + " later steps were not kept)");
+                    + (dropped == 0L ? "" : " (the first " + cap + " states; " + dropped
+                            + " later steps were not kept)");
         }
     }
 
     /**
-     * Write every particle's trajectory into a folder, creating the folder (and those above
-     * it) if missing. Call on the jME thread, or after the application stopped.
+     * Write every particle's trajectory into a folder, by the rules of {@link SafeFiles}:
+     * each file created new, never through a symbolic link, an existing regular file
+     * replaced only if allowed. Call on the jME thread, or after the application stopped.
      *
      * @param demo the demo (not null, initialised or not)
-     * @param folder where to write (not null)
+     * @param folder where to write (not null, an existing folder)
+     * @param replace true if the user allowed existing regular files to be replaced
      * @return the files written, in the particles' order (not null)
-     * @throws IOException if the folder or a file cannot be written
+     * @throws IOException if a file cannot be written or is refused (the message says why)
      */
-    public static List<Written> write(DemoState demo, Path folder) throws IOException {
-        Files.createDirectories(folder);
+    public static List<Written> write(DemoState demo, Path folder, boolean replace)
+            throws IOException {
         List<Written> written = new ArrayList<>();
         Set<String> taken = new HashSet<>();
         List<DemoParticle> particles = demo.getParticles();
@@ -104,10 +108,26 @@ public final class TrajectoryExport {
                 record = launchOnly;
             }
             Path file = folder.resolve(name + ".csv");
-            try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
                 record.writeCsv(out);
             }
-            written.add(new Written(file, record.size(), record.countDropped()));
+            written.add(new Written(file, record.size(), record.countDropped(),
+                    TrajectoryRecord.MAX_ROWS));
+        }
+        List<StepTable> tables = new ArrayList<>();
+        demo.collectExportTables(tables);
+        for (int i = 0; i < tables.size(); ++i) {
+            StepTable table = tables.get(i);
+            String name = table.getName();
+            for (int copy = 2; !taken.add(name); ++copy) {
+                name = table.getName() + "-" + copy;
+            }
+            Path file = folder.resolve(name + ".csv");
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
+                table.writeCsv(out);
+            }
+            written.add(new Written(file, table.size(), table.countDropped(),
+                    table.capacity()));
         }
         return written;
     }

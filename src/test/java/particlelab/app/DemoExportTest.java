@@ -13,6 +13,9 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import particlelab.demo.DragDemo;
+import particlelab.demo.FountainDemo;
+import particlelab.demo.IterativeAimingDemo;
+import particlelab.demo.RotationDemo;
 import particlelab.demo.TrajectoryRecord;
 
 /**
@@ -90,6 +93,45 @@ class DemoExportTest {
             assertEquals(0, trajectory.code, trajectory.toString());
             assertEquals(trajectory.out, read(folder.resolve(file[0])), file[0]);
         }
+    }
+
+    /**
+     * Issue 17, part 7: rotation, fountain and iterate have no free particle and wrote
+     * nothing, silently. Now each writes its own table, with a header, one row per step (per
+     * shot for iterate); a demo with nothing to write says so.
+     */
+    @Test
+    void demosWithoutFreeParticlesWriteTheirOwnTables(@TempDir Path temp) throws IOException {
+        String[][] cases = {
+            {"rotation", RotationDemo.BOX_HEADER, "rotation-plain-euler.csv",
+                "rotation-polar.csv", "rotation-quaternion.csv", "rotation-exact.csv"},
+            {"fountain", FountainDemo.COUNTS_HEADER, "fountain-counts.csv"},
+            {"iterate", IterativeAimingDemo.SHOTS_HEADER, "shots.csv"},
+        };
+        for (String[] c : cases) {
+            Path folder = temp.resolve(c[0]);
+            CommandRun run = CommandRun.of("demo", c[0], "--frames", "30", "--fixed-tpf",
+                    FRAME, "--export", folder.toString());
+            assertEquals(0, run.code, run.toString());
+            assertEquals(c.length - 2, run.outLines().size(), run.toString());
+            for (int i = 2; i < c.length; ++i) {
+                List<String> lines = Files.readAllLines(folder.resolve(c[i]));
+                assertEquals(c[1], lines.get(0), c[i]);
+                int columns = c[1].split(",").length;
+                assertTrue(lines.size() > 1, c[i] + " has no row");
+                for (String line : lines.subList(1, lines.size())) {
+                    assertEquals(columns, line.split(",").length, c[i] + ": " + line);
+                }
+                if (!c[0].equals("iterate")) {
+                    // one row per step: 30 frames of one fixed step h = 1/60 s each
+                    assertEquals(31, lines.size(), c[i]);
+                }
+            }
+        }
+        CommandRun racket = CommandRun.of("demo", "racket", "--frames", "3", "--export",
+                temp.resolve("racket").toString());
+        assertEquals(0, racket.code, racket.toString());
+        assertEquals(List.of("csv: none; " + ExportRun.NOTHING_TO_EXPORT), racket.outLines());
     }
 
     @Test
