@@ -103,6 +103,8 @@ public final class FountainDemo extends DemoState {
     @Override
     protected void createScene() {
         fountain = new Fountain(particleCount);
+        // The packed particles are a simulation beside the world, stepped by the same clock.
+        addSimulation(fountain::step);
         waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
                 * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
         if (getApplication() != null) {
@@ -174,11 +176,6 @@ public final class FountainDemo extends DemoState {
         TextFormat.appendFixed(text, frame, 1).append(" ms (");
         TextFormat.appendFixed(text, frame > 0.0 ? MILLIS_PER_SECOND / frame : 0.0, 0)
                 .append(" fps)\n");
-    }
-
-    @Override
-    protected void afterStep(float stepSeconds) {
-        fountain.step(stepSeconds);
     }
 
     @Override
