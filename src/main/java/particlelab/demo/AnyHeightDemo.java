@@ -86,6 +86,8 @@ public final class AnyHeightDemo extends DemoState {
     private float worldStep = Float.NaN;
     /** Both shots stopped this long ago (in seconds; &lt;0: not both yet). */
     private float stoppedSeconds = -1f;
+    /** The shots have rested long enough: fire again at the next step's start. */
+    private boolean refireDue;
     private KeyBinding fartherKey;
     private KeyBinding nearerKey;
     private KeyBinding higherKey;
@@ -191,6 +193,7 @@ public final class AnyHeightDemo extends DemoState {
      */
     public void fire() {
         stoppedSeconds = -1f;
+        refireDue = false;
         if (angles == null || solvedDistance != targetDistance || solvedHeight != targetHeight) {
             // Solved again only when the target moved: firing again allocates nothing.
             angles = LaunchAngles.solve(LAUNCH_SPEED, targetDistance, targetHeight, GRAVITY);
@@ -288,7 +291,13 @@ public final class AnyHeightDemo extends DemoState {
             return;
         }
         stoppedSeconds = stoppedSeconds < 0f ? 0f : stoppedSeconds + stepSeconds;
-        if (stoppedSeconds >= REFIRE_SECONDS) {
+        refireDue = stoppedSeconds >= REFIRE_SECONDS;
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        if (refireDue) {
+            refireDue = false;
             fire();
         }
     }

@@ -104,6 +104,8 @@ public final class BounceDemo extends DemoState {
         otherRecorder = new BounceRecorder(otherBall);
         other.addContactListener(otherRecorder);
         other.addStepListener(otherRecorder);
+        // The other detection's lane is a second world beside this one, on the same clock.
+        addSimulation(other);
         applyRules();
         sounds = new CollisionSounds(getApplication() == null
                 ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
@@ -150,11 +152,6 @@ public final class BounceDemo extends DemoState {
                 + " R = ");
         TextFormat.appendFixed(text, RADIUS, 2).append(" m,  m = ");
         TextFormat.appendFixed(text, MASS_KG, 0).append(" kg\n");
-    }
-
-    @Override
-    protected void afterStep(float stepSeconds) {
-        other.step(stepSeconds);
     }
 
     @Override

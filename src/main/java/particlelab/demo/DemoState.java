@@ -100,11 +100,14 @@ public abstract class DemoState extends BaseAppState {
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
     private final SimulationClock.Stepper stepper = this::stepWorld;
+    /** Simulations beside the world (a second world, a packed batch), stepped after it. */
+    private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
     /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
     private final FrameTimes physicsTimes = new FrameTimes();
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
+            DemoState.this.beforeStep(stepSeconds);
             observeParticles(stepSeconds);
         }
 
@@ -244,7 +247,19 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * React to one simulation step, after every particle moved. The default does nothing.
+     * Act at the start of a step, before anything moves: the place to relaunch a shot that
+     * {@link #afterStep} found due (a new launch is a restart of the body, done before the
+     * step as a script moves a kinematic body). The default does nothing.
+     *
+     * @param stepSeconds h of the step about to be taken (in seconds, &gt;0)
+     */
+    protected void beforeStep(float stepSeconds) {
+    }
+
+    /**
+     * React to one simulation step, after every particle moved: observe it (counters,
+     * readouts, what is due next); move nothing, the world did all the moving (see
+     * {@link particlelab.world.StepListener}). The default does nothing.
      *
      * @param stepSeconds h of the step just taken (in seconds, &gt;0)
      */
@@ -351,6 +366,21 @@ public abstract class DemoState extends BaseAppState {
     protected KeyBinding bindKey(int keyCode, String keyLabel, String description,
             Runnable action) {
         return keys.addOwn(keyCode, keyLabel, description, action);
+    }
+
+    /**
+     * Add a simulation beside the demo's world, stepped right after it with every step of the
+     * same clock: a second world (Bounce's other detection lane) or a packed batch (the
+     * fountain). Not inside the world's step: its listeners observe, they move nothing. Call
+     * in {@link #createScene()}.
+     *
+     * @param simulation what takes each step (not null)
+     */
+    protected void addSimulation(SimulationClock.Stepper simulation) {
+        if (simulation == null) {
+            throw new IllegalArgumentException("simulation must be a stepper, but was null");
+        }
+        simulations.add(simulation);
     }
 
     /**
@@ -1097,6 +1127,9 @@ public abstract class DemoState extends BaseAppState {
             return;
         }
         world.step(stepSeconds);
+        for (int i = 0; i < simulations.size(); ++i) {
+            simulations.get(i).step(stepSeconds);
+        }
     }
 
     /** Before the world moves anything: which particles it steps, and what h does to them. */

@@ -80,6 +80,8 @@ public final class FastBulletsDemo extends DemoState {
     private float worldStep = Float.NaN;
     /** The bullet stopped (on the disc or on the ground) this long ago (in seconds; <0: no). */
     private float stoppedSeconds = -1f;
+    /** The shots have rested long enough: fire again at the next step's start. */
+    private boolean refireDue;
     private KeyBinding fasterKey;
     private KeyBinding slowerKey;
 
@@ -117,6 +119,7 @@ public final class FastBulletsDemo extends DemoState {
      * Fire the projectile from the muzzle, level, at the target's centre.
      */
     public void fire() {
+        refireDue = false;
         launchVelocity.set(getSpeed(), 0f, 0f);
         bullet.setLaunch(muzzle, launchVelocity);
         launch(bullet, launchVelocity);
@@ -257,9 +260,15 @@ public final class FastBulletsDemo extends DemoState {
             } else {
                 stoppedSeconds += stepSeconds;
             }
-            if (stoppedSeconds >= REFIRE_SECONDS) {
-                fire();
-            }
+            refireDue = stoppedSeconds >= REFIRE_SECONDS;
+        }
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        if (refireDue) {
+            refireDue = false;
+            fire();
         }
     }
 

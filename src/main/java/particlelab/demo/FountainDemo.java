@@ -114,6 +114,8 @@ public final class FountainDemo extends DemoState {
     @Override
     protected void createScene() {
         fountain = new Fountain(particleCount);
+        // The packed particles are a simulation beside the world, stepped by the same clock.
+        addSimulation(this::stepFountain);
         waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
                 * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
         if (getApplication() != null) {
@@ -198,8 +200,8 @@ public final class FountainDemo extends DemoState {
         storeResult.add(counts);
     }
 
-    @Override
-    protected void afterStep(float stepSeconds) {
+    /** The fountain's step beside the world, then its counts for the export. */
+    private void stepFountain(float stepSeconds) {
         fountain.step(stepSeconds);
         simulatedSeconds += stepSeconds;
         counts.startRow().put(simulatedSeconds).put(fountain.countLive())

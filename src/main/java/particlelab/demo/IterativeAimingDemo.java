@@ -136,6 +136,8 @@ public final class IterativeAimingDemo extends DemoState {
     private SurfaceRule groundRule;
     /** Where the shot in the air came down in this step (in metres; NaN: not yet). */
     private float pendingLandingX = Float.NaN;
+    /** The last shot landed and the plan has more: fire the next at the next step's start. */
+    private boolean nextShotDue;
     private final Vector3f launchVelocity = new Vector3f();
     /** Steps a shot up to its apex, to frame it. */
     private final Particle apexProbe = new Particle();
@@ -458,7 +460,13 @@ public final class IterativeAimingDemo extends DemoState {
         pendingLandingX = Float.NaN;
         landed = fired;
         labelChanged[shot % VISIBLE_SHOTS] = true;
-        if (fired < plan.size()) {
+        nextShotDue = fired < plan.size();
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        if (nextShotDue) {
+            nextShotDue = false;
             fireNext();
         }
     }
@@ -534,6 +542,7 @@ public final class IterativeAimingDemo extends DemoState {
             labelChanged[i] = true;
         }
         pendingLandingX = Float.NaN;
+        nextShotDue = false;
         flyStep = getClock().getCurrentStepSeconds();
         predictStep = mismatch ? PREDICT_STEP : flyStep;
         if (flySimulator == null || flySimulator.getStepSeconds() != flyStep) {
@@ -584,6 +593,7 @@ public final class IterativeAimingDemo extends DemoState {
 
     /** Fire the next attempt from the gun in the next slot; fade the older trails. */
     private void fireNext() {
+        nextShotDue = false;
         int shot = fired;
         int slot = shot % VISIBLE_SHOTS;
         DemoParticle bullet = slots[slot];

@@ -63,6 +63,8 @@ public final class TunnellingDemo extends DemoState {
     private final Vector3f launchVelocity = new Vector3f();
     private float speed = START_SPEED;
     private float lastStepSeconds;
+    /** Both lanes' shots are through: fire the next pair at the next step's start. */
+    private boolean nextShotDue;
 
     /** One lane's ball and counts. */
     private static final class Lane {
@@ -138,7 +140,13 @@ public final class TunnellingDemo extends DemoState {
         lastStepSeconds = stepSeconds;
         passed(overlap);
         passed(swept);
-        if (overlap.done && swept.done) {
+        nextShotDue = overlap.done && swept.done;
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        if (nextShotDue) {
+            nextShotDue = false;
             fire();
         }
     }
@@ -254,6 +262,7 @@ public final class TunnellingDemo extends DemoState {
 
     /** Both lanes again, from the same random phase before the start line. */
     private void fire() {
+        nextShotDue = false;
         float h = stepSeconds();
         float start = -phases.nextFloat() * speed * h;
         launchVelocity.set(speed, 0f, 0f);

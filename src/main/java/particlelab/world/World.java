@@ -2,6 +2,7 @@ package particlelab.world;
 
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
@@ -67,6 +68,8 @@ public final class World implements SimulationClock.Stepper {
     private static final ContactListener[] NO_CONTACT_LISTENERS = {};
     private static final StepListener[] NO_STEP_LISTENERS = {};
     private static final BodyListener[] NO_BODY_LISTENERS = {};
+    /** The audit's floats per body: P, V, then R (9) and ω of a rotation part. */
+    private static final int AUDIT_FLOATS = 18;
 
     private final List<Body> bodies = new ArrayList<>();
     private final List<Body> recycled = new ArrayList<>();
@@ -92,6 +95,10 @@ public final class World implements SimulationClock.Stepper {
     private long capHits;
     private boolean lastStepHitCap;
     private boolean stepping;
+    /** Check that no step listener moves a body ({@link #setAuditingListeners}). */
+    private boolean auditingListeners;
+    /** The bodies' states after the epilogue, for the audit. */
+    private float[] audit = new float[0];
     private int maxImpactsPerStep = DEFAULT_MAX_IMPACTS_PER_STEP;
     private int maxResolutionIterations = DEFAULT_MAX_RESOLUTION_ITERATIONS;
 
@@ -475,13 +482,64 @@ public final class World implements SimulationClock.Stepper {
             removals.clear();
             timeSeconds = startSeconds + stepSeconds;
             ++stepCount;
+            if (auditingListeners) {
+                auditBodies(false);
+            }
             for (int i = 0; i < listeners.length; ++i) {
                 listeners[i].afterStep(this, stepSeconds);
+            }
+            if (auditingListeners) {
+                auditBodies(true);
             }
         } finally {
             stepContacts.clear();
             candidates.clear();
             stepping = false;
+        }
+    }
+
+    /**
+     * Check, after every step, that no {@link StepListener#afterStep} moved a body: the
+     * world's rule that listeners observe and move nothing, made testable. With the check
+     * on, each step copies every body's state after the epilogue and compares it after the
+     * listeners; a difference throws. For tests: the copy allocates as the world grows.
+     *
+     * @param newAuditing true to check every step from now on
+     */
+    public void setAuditingListeners(boolean newAuditing) {
+        auditingListeners = newAuditing;
+    }
+
+    /** Copy or compare every body's position, velocity and rotation (see the audit). */
+    private void auditBodies(boolean compare) {
+        int size = AUDIT_FLOATS * bodies.size();
+        if (audit.length < size) {
+            audit = Arrays.copyOf(audit, size);
+        }
+        for (int i = 0; i < bodies.size(); ++i) {
+            Body body = bodies.get(i);
+            RigidBody rigid = body.getRigidBody();
+            int at = AUDIT_FLOATS * i;
+            for (int k = 0; k < AUDIT_FLOATS; ++k) {
+                float value;
+                if (k < 3) {
+                    value = body.particle.position.get(k);
+                } else if (k < 6) {
+                    value = body.particle.velocity.get(k - 3);
+                } else if (rigid == null) {
+                    value = 0f;
+                } else if (k < 15) {
+                    value = rigid.orientation.get((k - 6) / 3, (k - 6) % 3);
+                } else {
+                    value = rigid.angularVelocity.get(k - 15);
+                }
+                if (!compare) {
+                    audit[at + k] = value;
+                } else if (Float.floatToIntBits(audit[at + k]) != Float.floatToIntBits(value)) {
+                    throw new IllegalStateException("a step listener moved " + body
+                            + " after the step (listeners observe; they move nothing)");
+                }
+            }
         }
     }
 

@@ -1,5 +1,6 @@
 package particlelab.demo;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,11 +11,13 @@ import particlelab.app.DemoCatalog;
 import particlelab.physics.Particle;
 import particlelab.rigid.RigidBody;
 import particlelab.world.Body;
+import particlelab.world.StepListener;
+import particlelab.world.World;
 
 /**
  * A demo's physics needs no jME application: every catalogued demo, made with {@code new}, has
- * its world stepped here in plain JUnit (no application, no asset manager, no scene graph), and
- * its particles move. The views (trails, dots, labels) are the view's business, written after
+ * its simulation (its world and what steps beside it) stepped here in plain JUnit (no
+ * application, no asset manager, no scene graph), and its bodies move. The views (trails, dots, labels) are the view's business, written after
  * the step by listeners the view registers when it is built.
  */
 class DemoWorldsWithoutJmeTest {
@@ -34,8 +37,10 @@ class DemoWorldsWithoutJmeTest {
         String hudBefore = demo.formatHud(new StringBuilder()).toString();
         float[] before = positions(demo);
         for (int i = 0; i < STEPS; ++i) {
-            demo.getWorld().step(STEP_SECONDS);
+            // The frame's physics: the world and the simulations beside it, by the clock.
+            demo.advancePhysics(STEP_SECONDS);
         }
+        assertTrue(demo.getWorld().getStepCount() > 0, name + ": the world never stepped");
         float[] after = positions(demo);
         if (before.length > 0) {
             boolean moved = false;
@@ -48,6 +53,35 @@ class DemoWorldsWithoutJmeTest {
             // the fountain's packed particles) show the steps in their numbers.
             String hudAfter = demo.formatHud(new StringBuilder()).toString();
             assertNotEquals(hudBefore, hudAfter, name + ": the HUD's numbers did not change");
+        }
+    }
+
+    /**
+     * The rule the world's listeners keep: they observe, they move nothing. Twenty seconds of
+     * every demo (shots land and are fired again, rounds go on) with the world checking,
+     * after each step, that its after-step listeners (the demo's hook among them) left every
+     * body as the step did.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("demoNames")
+    void noAfterStepHookMovesABody(String name) {
+        DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
+        demo.getWorld().setAuditingListeners(true);
+        long[] steps = {0L};
+        demo.getWorld().addStepListener(new StepListener() {
+            @Override
+            public void afterStep(World stepping, float stepSeconds) {
+                ++steps[0];
+            }
+        });
+        for (int i = 0; i < 20 * 60; ++i) {
+            demo.advancePhysics(STEP_SECONDS);
+        }
+        // Each frame of 1/60 s is one step of the default h, each checked by the audit, until
+        // a demo whose shots have all landed stops stepping (its scene is over).
+        assertTrue(steps[0] > 60, name + ": " + steps[0] + " steps");
+        if (!demo.isSceneOver()) {
+            assertEquals(20 * 60, steps[0], name);
         }
     }
 
