@@ -3,7 +3,7 @@ package particlelab.accuracy;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import particlelab.aiming.Landing;
+import particlelab.aiming.Flight;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -60,15 +60,15 @@ final class HitchStudy {
     }
 
     /** Follows one shot step by step until it lands. */
-    private static final class Flight implements SimulationClock.Stepper {
-        private final ParticleIntegrator integrator;
+    private static final class Shot implements SimulationClock.Stepper {
+        private final Flight flight;
         private final Particle particle;
         private boolean landed;
         private double landingX = Double.NaN;
         private int steps;
 
-        Flight(ForceModel forces) {
-            integrator = new ParticleIntegrator(forces.toForces());
+        Shot(ForceModel forces) {
+            flight = new Flight(new ParticleIntegrator(forces.toForces()));
             particle = new Particle(new Vector3f(), new Vector3f(20f, 30f, 0f), 1f);
         }
 
@@ -77,15 +77,11 @@ final class HitchStudy {
             if (landed) {
                 return;
             }
-            float x0 = particle.position.x;
-            float y0 = particle.position.y;
-            integrator.step(particle, stepSeconds);
+            double fraction = flight.step(particle, stepSeconds);
             ++steps;
-            float y1 = particle.position.y;
-            if (Landing.crossesGround(y0, y1)) {
+            if (fraction != Flight.NO_LANDING) {
                 landed = true;
-                float x1 = particle.position.x;
-                landingX = x0 + (x1 - x0) * Landing.crossingFraction(y0, y1);
+                landingX = flight.crossingX(fraction);
             }
         }
     }
@@ -116,7 +112,7 @@ final class HitchStudy {
             double range) {
         SimulationClock clock = new SimulationClock();
         clock.setMode(mode);
-        Flight flight = new Flight(forces);
+        Shot flight = new Shot(forces);
         boolean finite = true;
         try {
             for (int frame = 0; frame < MAX_FRAMES && !flight.landed; ++frame) {

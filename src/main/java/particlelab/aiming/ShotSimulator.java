@@ -1,18 +1,18 @@
 package particlelab.aiming;
 
-import com.jme3.math.Vector3f;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Validate;
 
 /**
  * Fires a bullet from the origin along the x axis and steps it with the shared integrator and
- * the scene's own forces until it comes down through the ground plane {@code y = 0}.
+ * the scene's own forces until it comes down through the ground plane {@code y = 0} (a
+ * {@link Flight}).
  * Reuses one particle: firing allocates nothing.
  */
 public final class ShotSimulator {
 
-    private final ParticleIntegrator integrator;
+    private final Flight flight;
     private final Particle bullet;
     /** The mass of the bullets fired by {@link #fire(float, float, Landing)}. */
     private final float massKg;
@@ -30,7 +30,7 @@ public final class ShotSimulator {
      */
     public ShotSimulator(ParticleIntegrator integrator, float massKg, float stepSeconds,
             float maxFlightSeconds) {
-        this.integrator = Validate.notNull(integrator, "integrator");
+        this.flight = new Flight(Validate.notNull(integrator, "integrator"));
         this.bullet = new Particle();
         bullet.setMass(massKg);
         this.massKg = massKg;
@@ -84,21 +84,6 @@ public final class ShotSimulator {
     }
 
     private boolean flyUntilGround(Landing storeResult) {
-        Vector3f position = bullet.position;
-        for (int step = 1; step <= maxSteps; ++step) {
-            float previousX = position.x;
-            float previousY = position.y;
-            integrator.step(bullet, stepSeconds);
-            if (Landing.crossesGround(previousY, position.y)) {
-                // Interpolate the crossing inside this step.
-                double fraction = Landing.crossingFraction(previousY, position.y);
-                double x = previousX + fraction * ((double) position.x - previousX);
-                double time = (step - 1 + fraction) * stepSeconds;
-                storeResult.set(true, x, time, step);
-                return true;
-            }
-        }
-        storeResult.set(false, Double.NaN, Double.NaN, maxSteps);
-        return false;
+        return flight.fly(bullet, stepSeconds, maxSteps, storeResult);
     }
 }

@@ -199,7 +199,15 @@ public final class RotateCommand {
                         + " a slower spin");
             }
             if (steady) {
-                turned.add(body.orientation);
+                try {
+                    turned.add(body.orientation);
+                } catch (IllegalArgumentException unmeasurable) {
+                    // Finite, but its determinant left the float range: no nearest rotation.
+                    throw new UsageException(OMEGA + ": after step " + n + " of " + stepSeconds
+                            + " s, R is too far from a rotation (det R out of the float range)"
+                            + " to measure the angle it turned; choose a slower spin or a"
+                            + " smaller " + TPF);
+                }
             }
             if (out != null) {
                 printRow(n, stepSeconds, body, omega, steady, check, turned, start, exact,

@@ -1,6 +1,6 @@
 package particlelab.demo;
 
-import particlelab.aiming.Landing;
+import particlelab.aiming.Flight;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -23,6 +23,8 @@ final class LaunchReach {
     static final int MAX_STEPS = 20_000;
 
     private final Particle scratch = new Particle();
+    /** Flies the launches ahead, each with its own particle's integrator. */
+    private final Flight flight = new Flight(new ParticleIntegrator());
     private float xMin;
     private float xMax;
     private float yMax;
@@ -41,19 +43,18 @@ final class LaunchReach {
      * @return true if it landed within {@value #MAX_STEPS} steps (the box now holds its path)
      */
     boolean include(DemoParticle particle, float stepSeconds) {
-        ParticleIntegrator integrator = particle.getIntegrator();
+        flight.setIntegrator(particle.getIntegrator());
         scratch.copyFrom(particle.getParticle());
         float left = scratch.position.x;
         float right = left;
         float top = scratch.position.y;
         try {
             for (int n = 0; n < MAX_STEPS; ++n) {
-                float previousY = scratch.position.y;
-                integrator.step(scratch, stepSeconds);
+                double landing = flight.step(scratch, stepSeconds);
                 left = Math.min(left, scratch.position.x);
                 right = Math.max(right, scratch.position.x);
                 top = Math.max(top, scratch.position.y);
-                if (Landing.crossesGround(previousY, scratch.position.y)) {
+                if (landing != Flight.NO_LANDING) {
                     widen(left, right, top);
                     return true;
                 }
