@@ -572,6 +572,7 @@ public abstract class DemoState extends BaseAppState {
      * @return a new list (not null)
      */
     public List<KeyBinding> getBindings() {
+        ensureScene();
         return keys.copyMapped();
     }
 
