@@ -122,6 +122,8 @@ public abstract class DemoState extends BaseAppState {
     private Node sceneRoot;
     private String helpText = "";
     private float hudAgeSeconds;
+    /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
+    private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
     private int blowUps;
@@ -729,6 +731,21 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Choose how often the HUD text is rebuilt and handed to the screen: every
+     * {@link #HUD_REFRESH_SECONDS} by default, or every frame (0), as a lecture hall's
+     * projector may want. Either way a frame allocates nothing.
+     *
+     * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
+     */
+    public void setHudRefreshSeconds(float seconds) {
+        if (!(seconds >= 0f) || Float.isInfinite(seconds)) {
+            throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
+                    + " >= 0, but was " + seconds);
+        }
+        hudRefreshSeconds = seconds;
+    }
+
+    /**
      * Make the next frame last {@link #HITCH_SECONDS}, as if the game had stalled: in raw-tpf
      * mode that is one long Euler step; in fixed-step mode the clock clamps it.
      */
@@ -860,7 +877,7 @@ public abstract class DemoState extends BaseAppState {
             refreshEquations();
         }
         hudAgeSeconds += tpf;
-        if (hudDirty || hudAgeSeconds >= HUD_REFRESH_SECONDS) {
+        if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
             hudAgeSeconds = 0f;
             hudDirty = false;
             hud.setBody(formatHud(hudText));
