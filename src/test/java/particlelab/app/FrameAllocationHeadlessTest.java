@@ -1,0 +1,211 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.physics.SimulationClock;
+
+/**
+ * A whole frame of every catalogued demo, in a real headless application, allocates nothing
+ * on the render thread while things move and the HUD's numbers change: jME's
+ * {@code app.update()} as the window's loop calls it (input, every AppState's update, the
+ * demo's steps, views and HUD text, the scene's logical and geometric state, and the render
+ * manager's pass over the viewports), measured with the thread's allocation counter around
+ * each window of frames. Tested at the HUD's usual refresh rate and with the HUD refreshed
+ * every frame, as a lecture hall's projector may want it.
+ *
+ * <p>The tests of {@code advance} and {@code formatHud} alone could not see the HUD text
+ * handed to jME, which made about 12 KB per frame in the fountain.
+ */
+class FrameAllocationHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    /** Frames per measured window: one HUD refresh of 0.1 s at 60 frames per second. */
+    private static final int FRAMES_PER_WINDOW = 6;
+    private static final int WINDOWS = 20;
+    /** Warm-up before measuring: at least this many frames (the JIT compiles the path). */
+    private static final int MIN_WARM_UP_FRAMES = 240;
+    /**
+     * And at most this many, while a window still allocates: code the JIT has not compiled
+     * yet allocates where its compiled form does not (jME's input manager iterates a map
+     * with a new iterator until escape analysis removes it).
+     */
+    private static final int MAX_WARM_UP_FRAMES = 1200;
+    /** Windows per warm-up call. */
+    private static final int WARM_UP_WINDOWS = 10;
+    /** Calls of jME's input update before the first demo (see {@link #compileInputManager}). */
+    private static final int INPUT_WARM_UP_CALLS = 30_000;
+    /** Frames run unmeasured after a restart (its panel and legend update allocate once). */
+    private static final int FRAMES_AFTER_RESTART = 3;
+
+    private static final com.sun.management.ThreadMXBean THREADS =
+            (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+    private static List<DemoState> demos;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        demos = DemoCatalog.createAll();
+        harness = HeadlessHarness.start(demos);
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void everyDemosRunningFrameAllocatesNothing() throws Exception {
+        assertEquals(List.of(), measureAll(DemoState.HUD_REFRESH_SECONDS));
+    }
+
+    @Test
+    void everyDemosRunningFrameAllocatesNothingWithTheHudRefreshedEveryFrame()
+            throws Exception {
+        assertEquals(List.of(), measureAll(0f));
+    }
+
+    /** Measure each demo in turn; return a line for each that allocated or did not move. */
+    private static List<String> measureAll(float hudRefreshSeconds) throws Exception {
+        harness.call(FrameAllocationHeadlessTest::compileInputManager);
+        List<String> problems = new ArrayList<>();
+        for (int i = 0; i < demos.size(); ++i) {
+            int index = i;
+            harness.call(() -> begin(index, hudRefreshSeconds));
+            try {
+                // Warm up in calls of a few windows each, so none outlasts the harness's wait.
+                int frames = 0;
+                boolean quiet = false;
+                while (frames < MAX_WARM_UP_FRAMES && !(quiet && frames >= MIN_WARM_UP_FRAMES)) {
+                    quiet = harness.call(() -> warmUp(demos.get(index)));
+                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW;
+                }
+                String problem = harness.call(() -> measure(index));
+                if (!problem.isEmpty()) {
+                    problems.add(problem);
+                }
+            } finally {
+                harness.call(() -> end(demos.get(index)));
+            }
+        }
+        return problems;
+    }
+
+    /**
+     * Let the JIT compile jME's input manager, as a minute or two of frames would: until then
+     * {@code InputManager.invokeUpdateActions} makes two map iterators a frame (64 bytes),
+     * which escape analysis removes once C2 has compiled it. jME's code, not the app's; the
+     * app's frame is measured as it runs from then on.
+     */
+    private static Boolean compileInputManager() {
+        for (int i = 0; i < INPUT_WARM_UP_CALLS; ++i) {
+            harness.app().getInputManager().update(H);
+        }
+        return true;
+    }
+
+    /** Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate. */
+    private static Boolean begin(int index, float hudRefreshSeconds) {
+        ParticleLabApp app = harness.app();
+        DemoState demo = demos.get(index);
+        app.setTimer(new FixedTimer(H));
+        app.getSwitcher().select(index);
+        app.update();
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        demo.getClock().setPaused(false);
+        demo.setHudRefreshSeconds(hudRefreshSeconds);
+        restart(demo);
+        return true;
+    }
+
+    /** Put the HUD's refresh rate back and let jME's own loop run with tpf 0 again. */
+    private static Boolean end(DemoState demo) {
+        demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+        harness.app().setTimer(new FixedTimer(0f));
+        return true;
+    }
+
+    /** Run a few windows unmeasured; return true if the last allocated nothing. */
+    private static boolean warmUp(DemoState demo) {
+        long bytes = 0L;
+        for (int w = 0; w < WARM_UP_WINDOWS; ++w) {
+            bytes = window(demo);
+        }
+        return bytes == 0L;
+    }
+
+    /**
+     * Measure a demo's windows and check them: each must advance the simulation, the HUD's
+     * text must change, and at most one window may allocate (a one-off of the JVM's, as
+     * {@code ExactGhostsHeadlessTest} allows: a method recompiled after a deoptimisation
+     * runs interpreted for a while). Allocation per frame shows in every window.
+     *
+     * @return empty if fine, else what went wrong (not null: jME's task result must not be)
+     */
+    private static String measure(int index) {
+        DemoState demo = demos.get(index);
+        long[] bytes = new long[WINDOWS];
+        double[] simulated = new double[WINDOWS];
+        int textChanges = demo.getHud().countTextChanges();
+        int allocating = 0;
+        for (int w = 0; w < WINDOWS; ++w) {
+            if (demo.isSceneOver()) {
+                restart(demo);
+            }
+            double before = demo.getClock().getSimulatedSeconds();
+            bytes[w] = window(demo);
+            simulated[w] = demo.getClock().getSimulatedSeconds() - before;
+            if (bytes[w] != 0L) {
+                ++allocating;
+            }
+        }
+        textChanges = demo.getHud().countTextChanges() - textChanges;
+        String name = (index + 1) + ". " + demo.getTitle();
+        if (allocating > 1) {
+            return name + ": " + allocating + " of " + WINDOWS + " windows of "
+                    + FRAMES_PER_WINDOW + " frames allocated " + Arrays.toString(bytes)
+                    + " bytes";
+        }
+        for (int w = 0; w < WINDOWS; ++w) {
+            if (!(simulated[w] > 0.0)) {
+                return name + ": nothing moved in window " + w + " "
+                        + Arrays.toString(simulated);
+            }
+        }
+        if (textChanges < WINDOWS / 2) {
+            return name + ": the HUD's text changed only " + textChanges + " times in "
+                    + WINDOWS + " windows";
+        }
+        return "";
+    }
+
+    /**
+     * Run one window of whole frames and return what they allocated. A scene that is over
+     * (every particle landed) is restarted first, outside the window.
+     */
+    private static long window(DemoState demo) {
+        ParticleLabApp app = harness.app();
+        if (demo.isSceneOver()) {
+            restart(demo);
+        }
+        long start = THREADS.getCurrentThreadAllocatedBytes();
+        for (int frame = 0; frame < FRAMES_PER_WINDOW; ++frame) {
+            app.update();
+        }
+        return THREADS.getCurrentThreadAllocatedBytes() - start;
+    }
+
+    private static void restart(DemoState demo) {
+        demo.restart();
+        for (int frame = 0; frame < FRAMES_AFTER_RESTART; ++frame) {
+            harness.app().update();
+        }
+    }
+}
