@@ -57,8 +57,9 @@ import particlelab.world.World;
  * stability warnings look at the particles before it, and after it the lecture's stop at the
  * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
  * particles. None of this allocates; the HUD text is
- * rebuilt in a reused {@link StringBuilder} ten times a second and handed to jME only when it
- * changed (jME's text mesh allocates on each change).
+ * rebuilt in a reused {@link StringBuilder} ten times a second (or every frame, see
+ * {@link #setHudRefreshSeconds}) and shown in {@code HudText}s, whose glyph meshes are
+ * rewritten in place, so a whole frame allocates nothing (FrameAllocationHeadlessTest).
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
  * scene and shows why, instead of crashing the window. Once every particle has landed the
@@ -356,8 +357,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Change the label shown next to a particle and in the HUD, e.g. to a shot's result once
-     * it landed. jME rebuilds the text's mesh, which allocates: call it on such events, not
-     * every frame.
+     * it landed. The label's glyphs are rewritten in place; the label String is the caller's
+     * (build it on such events, not every frame).
      *
      * @param particle the particle (one of this demo's, not null)
      * @param label the new label, one line (not null)

@@ -89,7 +89,7 @@ class HudTextTest {
             for (int i = 0; i < 100; ++i) {
                 text.setLength(0);
                 text.append("t = ");
-                TextFormat.appendFixed(text, 0.0167 * ++frame[0], 2).append(" s  λ² ").append('\n');
+                TextFormat.appendFixed(text, 0.0167 * ++frame[0], 2).append(" s  λ²\n");
                 TextFormat.appendFixed(text, 1.0 / frame[0], 4).append(" m/s²\n");
                 shown.setText(text);
             }
