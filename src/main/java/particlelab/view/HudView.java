@@ -23,7 +23,7 @@ import java.util.List;
  * allocates nothing (jME's {@code BitmapText} built new glyph quads on each change), so the
  * HUD may be refreshed every frame. Callers rebuild their text into a reused
  * {@link StringBuilder}; {@link #setBody} compares before it sets. A text wider than the
- * window is wrapped, which allocates (small windows only).
+ * window is wrapped, into reused builders.
  */
 public final class HudView {
 
@@ -34,6 +34,8 @@ public final class HudView {
     /** The help panel hides the scene and the HUD below the title (opaque). */
     private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
 
+    /** The spaces {@link HudLayout#wrap} puts before a continuation line. */
+    private static final int CONTINUATION_INDENT = 4;
     /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
     private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
 
@@ -52,6 +54,10 @@ public final class HudView {
     private float screenWidth;
     private float screenHeight;
     private float scale;
+    /** Scratch for wrapping: the text unwrapped, one line, and the text wrapped. */
+    private final StringBuilder unwrapped = new StringBuilder(2048);
+    private final StringBuilder wrapLine = new StringBuilder(256);
+    private final StringBuilder wrapped = new StringBuilder(2048);
     private String titleSource = "";
     private String footerSource = "";
     private String helpSource = "";
@@ -372,12 +378,43 @@ public final class HudView {
         if (measure.width(text, size) <= maxWidth) {
             return set(target, text);
         }
-        return set(target, layout.wrap(unwrap(text), size, maxWidth));
+        unwrap(text, unwrapped);
+        return set(target, layout.wrap(unwrapped, size, maxWidth, wrapLine, wrapped));
     }
 
-    /** Undo an earlier wrap: a newline followed by the continuation indent becomes a space. */
+    /** Undo an earlier wrap, as a new String (for the getters). */
     private static String unwrap(CharSequence text) {
-        return text.toString().replace("\n    ", " ");
+        return unwrap(text, new StringBuilder(text.length())).toString();
+    }
+
+    /**
+     * Undo an earlier wrap: a newline followed by the continuation indent becomes a space.
+     * Allocates nothing once storeResult is large enough.
+     */
+    private static StringBuilder unwrap(CharSequence text, StringBuilder storeResult) {
+        storeResult.setLength(0);
+        int length = text.length();
+        int indent = CONTINUATION_INDENT;
+        for (int i = 0; i < length; ++i) {
+            char c = text.charAt(i);
+            if (c == '\n' && i + indent < length && isIndent(text, i + 1, indent)) {
+                storeResult.append(' ');
+                i += indent;
+            } else {
+                storeResult.append(c);
+            }
+        }
+        return storeResult;
+    }
+
+    /** @return true if text has {@code indent} spaces from {@code start} */
+    private static boolean isIndent(CharSequence text, int start, int indent) {
+        for (int k = 0; k < indent; ++k) {
+            if (text.charAt(start + k) != ' ') {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static void place(HudText text, ScreenRect where, float size, float z) {

@@ -1,6 +1,7 @@
 package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.app.state.AppStateManager;
 import com.jme3.renderer.RenderManager;
@@ -13,6 +14,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 import particlelab.physics.SimulationClock;
+import particlelab.view.HudScale;
 
 /**
  * A whole frame of every catalogued demo, in a real headless application, allocates nothing
@@ -32,6 +34,9 @@ class FrameAllocationHeadlessTest {
     /** Frames per measured window: one HUD refresh of 0.1 s at 60 frames per second. */
     private static final int FRAMES_PER_WINDOW = 6;
     private static final int WINDOWS = 20;
+    /** A small window (pixels), where HUD lines at the largest HUD factor wrap. */
+    private static final int SMALL_WIDTH = 800;
+    private static final int SMALL_HEIGHT = 600;
     /**
      * Warm-up before measuring: at least this many frames, 12 s of flight, so the JIT has
      * compiled the path and the buffers that grow to a flight's length (the export's rows,
@@ -63,7 +68,7 @@ class FrameAllocationHeadlessTest {
         // catch the JIT recompiling it for the next demo's paths.
         for (int i = 0; i < demos.size(); ++i) {
             int index = i;
-            harness.call(() -> begin(index, DemoState.HUD_REFRESH_SECONDS));
+            harness.call(() -> begin(index, DemoState.HUD_REFRESH_SECONDS, 0, 0));
             for (int frames = 0; frames < MIN_WARM_UP_FRAMES;
                     frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW) {
                 harness.call(() -> warmUp(demos.get(index)));
@@ -79,21 +84,40 @@ class FrameAllocationHeadlessTest {
 
     @Test
     void everyDemosRunningFrameAllocatesNothing() throws Exception {
-        assertEquals(List.of(), measureAll(DemoState.HUD_REFRESH_SECONDS));
+        assertEquals(List.of(), measureAll(DemoState.HUD_REFRESH_SECONDS, 0, 0, new int[1]));
     }
 
     @Test
     void everyDemosRunningFrameAllocatesNothingWithTheHudRefreshedEveryFrame()
             throws Exception {
-        assertEquals(List.of(), measureAll(0f));
+        assertEquals(List.of(), measureAll(0f, 0, 0, new int[1]));
     }
 
-    /** Measure each demo in turn; return a line for each that allocated or did not move. */
-    private static List<String> measureAll(float hudRefreshSeconds) throws Exception {
+    /**
+     * In a small window with the HUD's text enlarged all the way (a lecture hall's back row),
+     * the HUD's lines are wrapped to its width at every refresh: that too allocates nothing,
+     * with the HUD refreshed every frame.
+     */
+    @Test
+    void aSmallWindowsWrappedHudAllocatesNothingRefreshedEveryFrame() throws Exception {
+        int[] wrapped = new int[1];
+        assertEquals(List.of(), measureAll(0f, SMALL_WIDTH, SMALL_HEIGHT, wrapped));
+        // The test means something only if the window is small enough to wrap some HUDs.
+        assertTrue(wrapped[0] >= 1, wrapped[0] + " demos wrapped their HUD");
+    }
+
+    /**
+     * Measure each demo in turn; return a line for each that allocated or did not move.
+     *
+     * @param width the window to lay the HUD out for (in pixels), 0 for the application's
+     * @param wrapped storage: counts the demos whose body was wrapped (modified)
+     */
+    private static List<String> measureAll(float hudRefreshSeconds, int width, int height,
+            int[] wrapped) throws Exception {
         List<String> problems = new ArrayList<>();
         for (int i = 0; i < demos.size(); ++i) {
             int index = i;
-            harness.call(() -> begin(index, hudRefreshSeconds));
+            harness.call(() -> begin(index, hudRefreshSeconds, width, height));
             try {
                 // Warm up in calls of a few windows each, so none outlasts the harness's wait.
                 int frames = 0;
@@ -106,6 +130,9 @@ class FrameAllocationHeadlessTest {
                 if (!problem.isEmpty()) {
                     problems.add(problem);
                 }
+                if (harness.call(() -> isBodyWrapped(demos.get(index)))) {
+                    ++wrapped[0];
+                }
             } finally {
                 harness.call(() -> end(demos.get(index)));
             }
@@ -113,10 +140,19 @@ class FrameAllocationHeadlessTest {
         return problems;
     }
 
-    /** Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate. */
-    private static Boolean begin(int index, float hudRefreshSeconds) {
+    /**
+     * Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate and laid
+     * out for a window resized to a size at the largest HUD factor (width 0: as it is).
+     */
+    private static Boolean begin(int index, float hudRefreshSeconds, int width, int height) {
         DemoState demo = demos.get(index);
         harness.app().getSwitcher().select(index);
+        if (width > 0) {
+            // As the window's resize and the HUD-factor key do: the window's controls lay
+            // the demo out again at its next frame.
+            resize(width, height);
+            harness.app().getWindowControls().setUiFactor(HudScale.MAX_FACTOR);
+        }
         frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.getClock().setPaused(false);
@@ -125,10 +161,25 @@ class FrameAllocationHeadlessTest {
         return true;
     }
 
-    /** Put the HUD's refresh rate back. */
+    /** Put the HUD's refresh rate, the window's size and the HUD factor back. */
     private static Boolean end(DemoState demo) {
         demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+        resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+        harness.app().getWindowControls().setUiFactor(1f);
+        frame();
         return true;
+    }
+
+    /** Resize the scene's and the GUI's cameras, as a resized window does. */
+    private static void resize(int width, int height) {
+        harness.app().getCamera().resize(width, height, true);
+        harness.app().getGuiViewPort().getCamera().resize(width, height, true);
+    }
+
+    /** @return true if the body shown is the HUD's text wrapped, not the text itself */
+    private static Boolean isBodyWrapped(DemoState demo) {
+        return !demo.getHud().getBodyText().equals(demo.formatHud(new StringBuilder())
+                .toString());
     }
 
     /** Run a few windows unmeasured; return true if the last allocated nothing. */
