@@ -63,8 +63,9 @@ import particlelab.world.World;
  * stability warnings look at the particles before it, and after it the lecture's stop at the
  * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
  * particles. None of this allocates; the HUD text is
- * rebuilt in a reused {@link StringBuilder} ten times a second and handed to jME only when it
- * changed (jME's text mesh allocates on each change).
+ * rebuilt in a reused {@link StringBuilder} ten times a second (or every frame, see
+ * {@link #setHudRefreshSeconds}) and shown in {@code HudText}s, whose glyph meshes are
+ * rewritten in place, so a whole frame allocates nothing (FrameAllocationHeadlessTest).
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
  * scene and shows why, instead of crashing the window. Once every particle has landed the
@@ -160,6 +161,8 @@ public abstract class DemoState extends BaseAppState {
     private Node sceneRoot;
     private String helpText = "";
     private float hudAgeSeconds;
+    /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
+    private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
     private boolean hudDirty = true;
     private float pendingHitchSeconds;
     private int blowUps;
@@ -422,8 +425,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Change the label shown next to a particle and in the HUD, e.g. to a shot's result once
-     * it landed. jME rebuilds the text's mesh, which allocates: call it on such events, not
-     * every frame.
+     * it landed. The label's glyphs are rewritten in place; the label String is the caller's
+     * (build it on such events, not every frame).
      *
      * @param particle the particle (one of this demo's, not null)
      * @param label the new label, one line (not null)
@@ -812,6 +815,21 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Choose how often the HUD text is rebuilt and handed to the screen: every
+     * {@link #HUD_REFRESH_SECONDS} by default, or every frame (0), as a lecture hall's
+     * projector may want. Either way a frame allocates nothing.
+     *
+     * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
+     */
+    public void setHudRefreshSeconds(float seconds) {
+        if (!(seconds >= 0f) || Float.isInfinite(seconds)) {
+            throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
+                    + " >= 0, but was " + seconds);
+        }
+        hudRefreshSeconds = seconds;
+    }
+
+    /**
      * Make the next frame last {@link #HITCH_SECONDS}, as if the game had stalled: in raw-tpf
      * mode that is one long Euler step; in fixed-step mode the clock clamps it.
      */
@@ -955,7 +973,7 @@ public abstract class DemoState extends BaseAppState {
             refreshEquations();
         }
         hudAgeSeconds += tpf;
-        if (hudDirty || hudAgeSeconds >= HUD_REFRESH_SECONDS) {
+        if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
             hudAgeSeconds = 0f;
             hudDirty = false;
             hud.setBody(formatHud(hudText));

@@ -472,9 +472,8 @@ public final class IterativeAimingDemo extends DemoState {
     }
 
     /**
-     * Show the labels and trail tints that changed, before the frame: jME rebuilds a text's
-     * mesh when its text changes, which allocates, so this happens here, once per change,
-     * and not in the allocation-free {@link #advance}.
+     * Show the labels and trail tints that changed, before the frame: once per change, here
+     * rather than in {@link #advance}, which only steps and moves the views.
      */
     @Override
     public void update(float tpf) {

@@ -228,8 +228,24 @@ public final class HudLayout {
         if (measure.width(text, size) <= maxWidth) {
             return text.toString();
         }
-        StringBuilder out = new StringBuilder(text.length() + 16);
-        StringBuilder line = new StringBuilder();
+        return wrap(text, size, maxWidth, new StringBuilder(),
+                new StringBuilder(text.length() + 16)).toString();
+    }
+
+    /**
+     * Wrap a text like {@link #wrap(CharSequence, float, float)}, into a builder: allocates
+     * nothing once the builders have held texts this long (a HUD refreshed every frame).
+     *
+     * @param text the text (not null, not modified, not one of the builders)
+     * @param size the text size (in pixels, &gt;0)
+     * @param maxWidth the widest a line may be (in pixels, &gt;0)
+     * @param line scratch for one line (not null, modified)
+     * @param storeResult storage for the wrapped text (not null, cleared and modified)
+     * @return storeResult
+     */
+    public StringBuilder wrap(CharSequence text, float size, float maxWidth, StringBuilder line,
+            StringBuilder storeResult) {
+        storeResult.setLength(0);
         int start = 0;
         int length = text.length();
         while (start <= length) {
@@ -237,13 +253,13 @@ public final class HudLayout {
             while (end < length && text.charAt(end) != '\n') {
                 ++end;
             }
-            wrapLine(text.subSequence(start, end), size, maxWidth, line, out);
+            wrapLine(text, start, end, size, maxWidth, line, storeResult);
             if (end < length) {
-                out.append('\n');
+                storeResult.append('\n');
             }
             start = end + 1;
         }
-        return out.toString();
+        return storeResult;
     }
 
     /** @return the HUD scale in use */
@@ -432,23 +448,25 @@ public final class HudLayout {
         return sections;
     }
 
-    private void wrapLine(CharSequence text, float size, float maxWidth, StringBuilder line,
-            StringBuilder out) {
-        if (measure.width(text, size) <= maxWidth) {
-            out.append(text);
+    /** Wrap the line text[from, to) into out, at spaces; line is scratch. */
+    private void wrapLine(CharSequence text, int from, int to, float size, float maxWidth,
+            StringBuilder line, StringBuilder out) {
+        line.setLength(0);
+        line.append(text, from, to);
+        if (measure.width(line, size) <= maxWidth) {
+            out.append(line);
             return;
         }
         line.setLength(0);
-        int i = 0;
-        int length = text.length();
-        while (i < length) {
+        int i = from;
+        while (i < to) {
             // One word with the spaces before it.
             int wordStart = i;
-            while (wordStart < length && text.charAt(wordStart) == ' ') {
+            while (wordStart < to && text.charAt(wordStart) == ' ') {
                 ++wordStart;
             }
             int wordEnd = wordStart;
-            while (wordEnd < length && text.charAt(wordEnd) != ' ') {
+            while (wordEnd < to && text.charAt(wordEnd) != ' ') {
                 ++wordEnd;
             }
             int kept = line.length();

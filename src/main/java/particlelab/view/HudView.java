@@ -2,7 +2,6 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.font.BitmapText;
 import com.jme3.material.Material;
 import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
@@ -20,10 +19,11 @@ import java.util.List;
  * decided by a {@link HudLayout} from the window's size and the text's measured size, so no
  * text covers another at any window size; text wider than the window is wrapped.
  *
- * <p>Text is only handed to jME when it differs from what is shown: {@code BitmapText.setText}
- * copies the text into a new String and rebuilds its glyph quads, so each change allocates.
- * Callers therefore rebuild their text into a reused {@link StringBuilder}, at a bounded rate,
- * and {@link #setBody} compares before it sets.
+ * <p>Every text is a {@link HudText}, whose mesh is rewritten in place: a new body or warning
+ * allocates nothing (jME's {@code BitmapText} built new glyph quads on each change), so the
+ * HUD may be refreshed every frame. Callers rebuild their text into a reused
+ * {@link StringBuilder}; {@link #setBody} compares before it sets. A text wider than the
+ * window is wrapped, into reused builders.
  */
 public final class HudView {
 
@@ -34,6 +34,8 @@ public final class HudView {
     /** The help panel hides the scene and the HUD below the title (opaque). */
     private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
 
+    /** The spaces {@link HudLayout#wrap} puts before a continuation line. */
+    private static final int CONTINUATION_INDENT = 4;
     /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
     private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
 
@@ -42,16 +44,20 @@ public final class HudView {
     private final BitmapFont font;
     private final TextMeasure measure;
     private final HudLayout layout;
-    private final BitmapText title;
-    private final BitmapText body;
-    private final BitmapText warning;
-    private final BitmapText footer;
+    private final HudText title;
+    private final HudText body;
+    private final HudText warning;
+    private final HudText footer;
     private final Node helpPanel = new Node("help panel");
-    private final List<BitmapText> helpColumns = new ArrayList<>();
+    private final List<HudText> helpColumns = new ArrayList<>();
     private final Geometry helpBackground;
     private float screenWidth;
     private float screenHeight;
     private float scale;
+    /** Scratch for wrapping: the text unwrapped, one line, and the text wrapped. */
+    private final StringBuilder unwrapped = new StringBuilder(2048);
+    private final StringBuilder wrapLine = new StringBuilder(256);
+    private final StringBuilder wrapped = new StringBuilder(2048);
     private String titleSource = "";
     private String footerSource = "";
     private String helpSource = "";
@@ -164,7 +170,7 @@ public final class HudView {
     public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
         storeResult.add(rectOf(title));
         if (isHelpVisible()) {
-            for (BitmapText column : helpColumns) {
+            for (HudText column : helpColumns) {
                 storeResult.add(rectOf(column));
             }
         } else {
@@ -315,14 +321,14 @@ public final class HudView {
      */
     public List<String> getHelpColumnTexts() {
         List<String> texts = new ArrayList<>();
-        for (BitmapText column : helpColumns) {
+        for (HudText column : helpColumns) {
             texts.add(column.getText());
         }
         return texts;
     }
 
     /**
-     * Count how often a text was actually handed to jME (each such change allocates).
+     * Count how often a text actually changed (each rewrites its glyphs).
      *
      * @return the count since creation (&ge;0)
      */
@@ -331,7 +337,7 @@ public final class HudView {
     }
 
     private void relayOut() {
-        layout.layOut(screenWidth, screenHeight, scale, titleSource, body.getText(),
+        layout.layOut(screenWidth, screenHeight, scale, titleSource, body.getChars(),
                 footerSource, helpSource);
         place(title, layout.getTitle(), layout.getTitleSize(), 1f);
         set(title, layout.getTitleText());
@@ -353,7 +359,7 @@ public final class HudView {
         List<ScreenRect> rects = layout.getHelpColumns();
         List<String> texts = layout.getHelpColumnTexts();
         while (helpColumns.size() < rects.size()) {
-            BitmapText column = text(font, BODY_COLOR);
+            HudText column = text(font, BODY_COLOR);
             helpColumns.add(column);
             helpPanel.attachChild(column);
         }
@@ -367,45 +373,73 @@ public final class HudView {
     }
 
     /** Set a text wrapped to the body's width, if it differs from what is shown. */
-    private boolean setWrapped(BitmapText target, CharSequence text, float size) {
+    private boolean setWrapped(HudText target, CharSequence text, float size) {
         float maxWidth = layout.getBody().getWidth();
         if (measure.width(text, size) <= maxWidth) {
             return set(target, text);
         }
-        return set(target, layout.wrap(unwrap(text), size, maxWidth));
+        unwrap(text, unwrapped);
+        return set(target, layout.wrap(unwrapped, size, maxWidth, wrapLine, wrapped));
     }
 
-    /** Undo an earlier wrap: a newline followed by the continuation indent becomes a space. */
+    /** Undo an earlier wrap, as a new String (for the getters). */
     private static String unwrap(CharSequence text) {
-        return text.toString().replace("\n    ", " ");
+        return unwrap(text, new StringBuilder(text.length())).toString();
     }
 
-    private static void place(BitmapText text, ScreenRect where, float size, float z) {
+    /**
+     * Undo an earlier wrap: a newline followed by the continuation indent becomes a space.
+     * Allocates nothing once storeResult is large enough.
+     */
+    private static StringBuilder unwrap(CharSequence text, StringBuilder storeResult) {
+        storeResult.setLength(0);
+        int length = text.length();
+        int indent = CONTINUATION_INDENT;
+        for (int i = 0; i < length; ++i) {
+            char c = text.charAt(i);
+            if (c == '\n' && i + indent < length && isIndent(text, i + 1, indent)) {
+                storeResult.append(' ');
+                i += indent;
+            } else {
+                storeResult.append(c);
+            }
+        }
+        return storeResult;
+    }
+
+    /** @return true if text has {@code indent} spaces from {@code start} */
+    private static boolean isIndent(CharSequence text, int start, int indent) {
+        for (int k = 0; k < indent; ++k) {
+            if (text.charAt(start + k) != ' ') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static void place(HudText text, ScreenRect where, float size, float z) {
         text.setSize(size);
         text.setLocalTranslation(where.getX(), where.getTop(), z);
     }
 
-    private ScreenRect rectOf(BitmapText text) {
+    private ScreenRect rectOf(HudText text) {
         // The text's own measure: its top-left corner, its widest line, its lines.
         return new ScreenRect(text.getLocalTranslation().x,
                 text.getLocalTranslation().y - text.getLineCount() * text.getLineHeight(),
-                measure.width(text.getText(), text.getSize()),
-                text.getText().isEmpty() ? 0f : text.getLineCount() * text.getLineHeight());
+                measure.width(text.getChars(), text.getSize()),
+                text.getChars().length() == 0 ? 0f
+                        : text.getLineCount() * text.getLineHeight());
     }
 
-    private boolean set(BitmapText target, CharSequence text) {
-        if (TextFormat.sameText(text, target.getText())) {
+    private boolean set(HudText target, CharSequence text) {
+        if (!target.setText(text)) {
             return false;
         }
-        target.setText(text);
         ++textChanges;
         return true;
     }
 
-    private static BitmapText text(BitmapFont font, ColorRGBA color) {
-        BitmapText text = new BitmapText(font);
-        text.setColor(color);
-        text.setText("");
-        return text;
+    private static HudText text(BitmapFont font, ColorRGBA color) {
+        return new HudText(font, color);
     }
 }

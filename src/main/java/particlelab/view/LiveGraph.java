@@ -2,7 +2,6 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.font.BitmapText;
 import com.jme3.material.Material;
 import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
@@ -28,7 +27,7 @@ import java.util.List;
  * 0). The axes run from 0 (or the lowest height) to a round number above the largest value
  * (1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten), and only grow until the next clear.
  * {@link #refresh} writes the curves into preallocated line meshes; only a change of an axis's
- * range sets the labels' text (jME's text mesh allocates then, a few times a flight).
+ * range sets the labels' text ({@link HudText}s, rewritten in place).
  */
 public final class LiveGraph {
 
@@ -67,7 +66,7 @@ public final class LiveGraph {
     private final VertexBuffer frameBuffer;
     private final FloatBuffer curvePositions;
     private final VertexBuffer curveBuffer;
-    private final BitmapText[] labels = new BitmapText[4];
+    private final HudText[] labels = new HudText[4];
     private final StringBuilder labelText = new StringBuilder(64);
     private final ScreenRect[] labelRects = new ScreenRect[4];
 
@@ -167,9 +166,7 @@ public final class LiveGraph {
         node.attachChild(curves);
 
         for (int i = 0; i < labels.length; ++i) {
-            labels[i] = new BitmapText(font);
-            labels[i].setColor(TEXT.clone());
-            labels[i].setText("");
+            labels[i] = new HudText(font, TEXT);
             labels[i].setQueueBucket(RenderQueue.Bucket.Gui);
             node.attachChild(labels[i]);
             labelRects[i] = new ScreenRect();
@@ -291,7 +288,7 @@ public final class LiveGraph {
     }
 
     /**
-     * Count the times an axis label's text was set: each allocates in jME's text mesh.
+     * Count the times an axis label's text was set (a few times a flight).
      *
      * @return the count since the graph was created (&ge;0)
      */
@@ -357,13 +354,13 @@ public final class LiveGraph {
             return storeResult;
         }
         for (int i = 0; i < labels.length; ++i) {
-            BitmapText label = labels[i];
-            if (label.getText().isEmpty()) {
+            HudText label = labels[i];
+            if (label.getChars().length() == 0) {
                 continue;
             }
             storeResult.add(new ScreenRect(label.getLocalTranslation().x,
                     label.getLocalTranslation().y - label.getLineCount() * label.getLineHeight(),
-                    measure.width(label.getText(), label.getSize()),
+                    measure.width(label.getChars(), label.getSize()),
                     label.getLineCount() * label.getLineHeight()));
         }
         return storeResult;

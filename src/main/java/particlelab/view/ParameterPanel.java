@@ -175,7 +175,7 @@ public final class ParameterPanel {
      * @param text the text (not null, copied)
      */
     public void setLegend(CharSequence text) {
-        if (!TextFormat.sameText(legendText, text.toString())) {
+        if (!TextFormat.sameText(legendText, text)) {
             legendText.setLength(0);
             legendText.append(text);
             legendChanged = true;

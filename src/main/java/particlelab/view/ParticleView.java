@@ -2,7 +2,6 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.font.BitmapText;
 import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
@@ -29,7 +28,7 @@ public final class ParticleView {
     private final Geometry sphere;
     private final Trail trail;
     private final VelocityArrow arrow;
-    private final BitmapText label;
+    private final HudText label;
     private final float radius;
     /** Where the label is on the screen (in pixels), and which slot it took. */
     private final ScreenRect labelRect = new ScreenRect();
@@ -69,8 +68,7 @@ public final class ParticleView {
                 ColorRGBA.White.clone(), unshaded);
         node.attachChild(arrow.getGeometry());
 
-        label = new BitmapText(font);
-        label.setColor(color.clone());
+        label = new HudText(font, color);
         label.setText(name);
         label.setQueueBucket(RenderQueue.Bucket.Transparent);
         node.attachChild(label);
@@ -108,7 +106,7 @@ public final class ParticleView {
      *
      * @return the live label (not null)
      */
-    public BitmapText getLabel() {
+    public HudText getLabel() {
         return label;
     }
 
@@ -162,12 +160,12 @@ public final class ParticleView {
     }
 
     /**
-     * Change the label's text. jME rebuilds the text's quads, which allocates: for events
-     * (a shot landed), not for every frame.
+     * Change the label's text; rewrites its glyphs in place, allocating nothing once the
+     * label has held a text this long.
      *
-     * @param text the new text, one line (not null)
+     * @param text the new text, one line (not null, not modified)
      */
-    public void setLabelText(String text) {
+    public void setLabelText(CharSequence text) {
         label.setText(text);
     }
 
@@ -185,7 +183,6 @@ public final class ParticleView {
         labelSlot = slot;
         float worldSize = size / view.getPixelsPerMetre();
         if (label.getSize() != worldSize) {
-            // A new size makes jME rebuild the text's quads: only after a new layout.
             label.setSize(worldSize);
         }
         label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);

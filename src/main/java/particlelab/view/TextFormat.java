@@ -72,15 +72,15 @@ public final class TextFormat {
     }
 
     /**
-     * Test whether a character sequence spells the same text as a string, without
-     * allocating.
+     * Test whether a character sequence spells the same text as another (a string, a
+     * builder), without allocating.
      *
      * @param sequence the sequence (not null)
-     * @param string the string (null counts as empty)
+     * @param string the other sequence (null counts as empty)
      * @return true if both hold the same characters
      */
-    public static boolean sameText(CharSequence sequence, String string) {
-        String other = string == null ? "" : string;
+    public static boolean sameText(CharSequence sequence, CharSequence string) {
+        CharSequence other = string == null ? "" : string;
         int length = sequence.length();
         if (length != other.length()) {
             return false;

@@ -60,6 +60,11 @@ class FountainDemoTest {
         assertEquals(times[2], times[1], 1e-6);
     }
 
+    /**
+     * The fountain's own part of a frame: its steps, mesh buffers and HUD text. The whole
+     * frame, with the text handed to the screen, the scene graph and the render pass, is
+     * measured for every demo by {@code particlelab.app.FrameAllocationHeadlessTest}.
+     */
     @Test
     void aRunningFrameAllocatesNothing() throws Exception {
         StringBuilder hud = new StringBuilder(4096);

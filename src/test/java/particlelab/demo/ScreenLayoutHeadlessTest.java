@@ -3,6 +3,7 @@ package particlelab.demo;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import com.jme3.font.BitmapCharacterSet;
+import com.jme3.font.BitmapFont;
 import com.jme3.font.BitmapText;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
@@ -16,6 +17,7 @@ import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
+import particlelab.view.HudText;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.Trail;
@@ -249,15 +251,24 @@ class ScreenLayoutHeadlessTest {
         texts.add(demo.getHud().getFooterText());
         texts.addAll(demo.getHud().getHelpColumnTexts());
         List<BitmapText> shown = new ArrayList<>();
-        collectTexts(demo.getSceneNode(), shown);
-        collectTexts(demo.getHud().getNode(), shown);
+        collectTexts(demo.getSceneNode(), BitmapText.class, shown);
+        collectTexts(demo.getHud().getNode(), BitmapText.class, shown);
         for (BitmapText text : shown) {
             texts.add(text.getText());
-            if (!HudFont.BASE_NAME.equals(fontName(text))) {
+            if (!HudFont.BASE_NAME.equals(fontName(text.getFont()))) {
                 found.add("text '" + text.getText() + "' is not in " + HudFont.ASSET);
             }
         }
-        BitmapCharacterSet font = shown.get(0).getFont().getCharSet();
+        List<HudText> hudTexts = new ArrayList<>();
+        collectTexts(demo.getSceneNode(), HudText.class, hudTexts);
+        collectTexts(demo.getHud().getNode(), HudText.class, hudTexts);
+        for (HudText text : hudTexts) {
+            texts.add(text.getText());
+            if (!HudFont.BASE_NAME.equals(fontName(text.getFont()))) {
+                found.add("text '" + text.getText() + "' is not in " + HudFont.ASSET);
+            }
+        }
+        BitmapCharacterSet font = hudTexts.get(0).getFont().getCharSet();
         for (String text : texts) {
             for (int i = 0; i < text.length(); ++i) {
                 char c = text.charAt(i);
@@ -268,19 +279,20 @@ class ScreenLayoutHeadlessTest {
         }
     }
 
-    private static String fontName(BitmapText text) {
-        String key = text.getFont().getPage(0).getTextureParam("ColorMap").getTextureValue()
+    private static String fontName(BitmapFont font) {
+        String key = font.getPage(0).getTextureParam("ColorMap").getTextureValue()
                 .getKey().getName();
         String file = key.substring(key.lastIndexOf('/') + 1);
         return file.substring(0, file.lastIndexOf('.'));
     }
 
-    private static void collectTexts(Spatial spatial, List<BitmapText> storeResult) {
-        if (spatial instanceof BitmapText) {
-            storeResult.add((BitmapText) spatial);
+    private static <T extends Spatial> void collectTexts(Spatial spatial, Class<T> type,
+            List<T> storeResult) {
+        if (type.isInstance(spatial)) {
+            storeResult.add(type.cast(spatial));
         } else if (spatial instanceof Node) {
             for (Spatial child : ((Node) spatial).getChildren()) {
-                collectTexts(child, storeResult);
+                collectTexts(child, type, storeResult);
             }
         }
     }

@@ -1,0 +1,289 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.app.state.AppStateManager;
+import com.jme3.renderer.RenderManager;
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.physics.SimulationClock;
+import particlelab.view.HudScale;
+
+/**
+ * A whole frame of every catalogued demo, in a real headless application, allocates nothing
+ * on the render thread while things move and the HUD's numbers change: the steps of jME's
+ * {@code SimpleApplication.update()} as the window's loop runs them (every AppState's update,
+ * the demo's steps, views, HUD text and panel, the scene's logical and geometric state, and
+ * the render manager's pass over the viewports; see {@link #frame}), measured with the
+ * thread's allocation counter. Tested at the HUD's usual refresh rate and with the HUD refreshed
+ * every frame, as a lecture hall's projector may want it.
+ *
+ * <p>The tests of {@code advance} and {@code formatHud} alone could not see the HUD text
+ * handed to jME, which made about 12 KB per frame in the fountain.
+ */
+class FrameAllocationHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    /** Frames per measured window: one HUD refresh of 0.1 s at 60 frames per second. */
+    private static final int FRAMES_PER_WINDOW = 6;
+    private static final int WINDOWS = 20;
+    /** A small window (pixels), where HUD lines at the largest HUD factor wrap. */
+    private static final int SMALL_WIDTH = 800;
+    private static final int SMALL_HEIGHT = 600;
+    /**
+     * Warm-up before measuring: at least this many frames, 12 s of flight, so the JIT has
+     * compiled the path and the buffers that grow to a flight's length (the export's rows,
+     * doubling from 256 steps) have grown, as they do once in the window's first flights.
+     */
+    private static final int MIN_WARM_UP_FRAMES = 720;
+    /**
+     * And at most this many, while a window still allocates: code the JIT has not compiled
+     * yet allocates where its compiled form does not (jME's input manager iterates a map
+     * with a new iterator until escape analysis removes it).
+     */
+    private static final int MAX_WARM_UP_FRAMES = 1800;
+    /** Windows per warm-up call. */
+    private static final int WARM_UP_WINDOWS = 10;
+    /** Frames run unmeasured after a restart (its panel and legend update allocate once). */
+    private static final int FRAMES_AFTER_RESTART = 3;
+
+    private static final com.sun.management.ThreadMXBean THREADS =
+            (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+    private static List<DemoState> demos;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        demos = DemoCatalog.createAll();
+        harness = HeadlessHarness.start(demos);
+        // Every demo runs once before any is measured: the code they share (the world, views,
+        // HUD, jME's scene graph) is compiled by then, so the first demo measured does not
+        // catch the JIT recompiling it for the next demo's paths.
+        for (int i = 0; i < demos.size(); ++i) {
+            int index = i;
+            harness.call(() -> begin(index, DemoState.HUD_REFRESH_SECONDS, 0, 0));
+            for (int frames = 0; frames < MIN_WARM_UP_FRAMES;
+                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW) {
+                harness.call(() -> warmUp(demos.get(index)));
+            }
+            harness.call(() -> end(demos.get(index)));
+        }
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void everyDemosRunningFrameAllocatesNothing() throws Exception {
+        assertEquals(List.of(), measureAll(DemoState.HUD_REFRESH_SECONDS, 0, 0, new int[1]));
+    }
+
+    @Test
+    void everyDemosRunningFrameAllocatesNothingWithTheHudRefreshedEveryFrame()
+            throws Exception {
+        assertEquals(List.of(), measureAll(0f, 0, 0, new int[1]));
+    }
+
+    /**
+     * In a small window with the HUD's text enlarged all the way (a lecture hall's back row),
+     * the HUD's lines are wrapped to its width at every refresh: that too allocates nothing,
+     * with the HUD refreshed every frame.
+     */
+    @Test
+    void aSmallWindowsWrappedHudAllocatesNothingRefreshedEveryFrame() throws Exception {
+        int[] wrapped = new int[1];
+        assertEquals(List.of(), measureAll(0f, SMALL_WIDTH, SMALL_HEIGHT, wrapped));
+        // The test means something only if the window is small enough to wrap some HUDs.
+        assertTrue(wrapped[0] >= 1, wrapped[0] + " demos wrapped their HUD");
+    }
+
+    /**
+     * Measure each demo in turn; return a line for each that allocated or did not move.
+     *
+     * @param width the window to lay the HUD out for (in pixels), 0 for the application's
+     * @param wrapped storage: counts the demos whose body was wrapped (modified)
+     */
+    private static List<String> measureAll(float hudRefreshSeconds, int width, int height,
+            int[] wrapped) throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (int i = 0; i < demos.size(); ++i) {
+            int index = i;
+            harness.call(() -> begin(index, hudRefreshSeconds, width, height));
+            try {
+                // Warm up in calls of a few windows each, so none outlasts the harness's wait.
+                int frames = 0;
+                boolean quiet = false;
+                while (frames < MAX_WARM_UP_FRAMES && !(quiet && frames >= MIN_WARM_UP_FRAMES)) {
+                    quiet = harness.call(() -> warmUp(demos.get(index)));
+                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW;
+                }
+                String problem = harness.call(() -> measure(index));
+                if (!problem.isEmpty()) {
+                    problems.add(problem);
+                }
+                if (harness.call(() -> isBodyWrapped(demos.get(index)))) {
+                    ++wrapped[0];
+                }
+            } finally {
+                harness.call(() -> end(demos.get(index)));
+            }
+        }
+        return problems;
+    }
+
+    /**
+     * Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate and laid
+     * out for a window resized to a size at the largest HUD factor (width 0: as it is).
+     */
+    private static Boolean begin(int index, float hudRefreshSeconds, int width, int height) {
+        DemoState demo = demos.get(index);
+        harness.app().getSwitcher().select(index);
+        if (width > 0) {
+            // As the window's resize and the HUD-factor key do: the window's controls lay
+            // the demo out again at its next frame.
+            resize(width, height);
+            harness.app().getWindowControls().setUiFactor(HudScale.MAX_FACTOR);
+        }
+        frame();
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        demo.getClock().setPaused(false);
+        demo.setHudRefreshSeconds(hudRefreshSeconds);
+        restart(demo);
+        return true;
+    }
+
+    /** Put the HUD's refresh rate, the window's size and the HUD factor back. */
+    private static Boolean end(DemoState demo) {
+        demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+        resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+        harness.app().getWindowControls().setUiFactor(1f);
+        frame();
+        return true;
+    }
+
+    /** Resize the scene's and the GUI's cameras, as a resized window does. */
+    private static void resize(int width, int height) {
+        harness.app().getCamera().resize(width, height, true);
+        harness.app().getGuiViewPort().getCamera().resize(width, height, true);
+    }
+
+    /** @return true if the body shown is the HUD's text wrapped, not the text itself */
+    private static Boolean isBodyWrapped(DemoState demo) {
+        return !demo.getHud().getBodyText().equals(demo.formatHud(new StringBuilder())
+                .toString());
+    }
+
+    /** Run a few windows unmeasured; return true if the last allocated nothing. */
+    private static boolean warmUp(DemoState demo) {
+        long bytes = 0L;
+        for (int w = 0; w < WARM_UP_WINDOWS; ++w) {
+            bytes = window(demo);
+        }
+        return bytes == 0L;
+    }
+
+    /**
+     * Measure a demo's windows and check them: each must advance the simulation, the HUD's
+     * text must change, and at most one window may allocate (a one-off of the JVM's, as
+     * {@code ExactGhostsHeadlessTest} allows: a method recompiled after a deoptimisation
+     * runs interpreted for a while). Allocation per frame shows in every window.
+     *
+     * @return empty if fine, else what went wrong (not null: jME's task result must not be)
+     */
+    private static String measure(int index) {
+        DemoState demo = demos.get(index);
+        long[] bytes = new long[WINDOWS];
+        double[] simulated = new double[WINDOWS];
+        int textChanges = demo.getHud().countTextChanges();
+        int allocating = 0;
+        for (int w = 0; w < WINDOWS; ++w) {
+            if (demo.isSceneOver()) {
+                restart(demo);
+            }
+            double before = demo.getClock().getSimulatedSeconds();
+            bytes[w] = window(demo);
+            simulated[w] = demo.getClock().getSimulatedSeconds() - before;
+            if (bytes[w] != 0L) {
+                ++allocating;
+            }
+        }
+        textChanges = demo.getHud().countTextChanges() - textChanges;
+        String name = (index + 1) + ". " + demo.getTitle();
+        if (allocating > 1) {
+            return name + ": " + allocating + " of " + WINDOWS + " windows of "
+                    + FRAMES_PER_WINDOW + " frames allocated " + Arrays.toString(bytes)
+                    + " bytes";
+        }
+        for (int w = 0; w < WINDOWS; ++w) {
+            if (!(simulated[w] > 0.0)) {
+                return name + ": nothing moved in window " + w + " "
+                        + Arrays.toString(simulated);
+            }
+        }
+        if (textChanges < WINDOWS / 2) {
+            return name + ": the HUD's text changed only " + textChanges + " times in "
+                    + WINDOWS + " windows";
+        }
+        return "";
+    }
+
+    /**
+     * Run one window of whole frames and return what they allocated. A scene that is over
+     * (every particle landed) is restarted first, outside the window.
+     */
+    private static long window(DemoState demo) {
+        if (demo.isSceneOver()) {
+            restart(demo);
+        }
+        long bytes = 0L;
+        for (int frame = 0; frame < FRAMES_PER_WINDOW; ++frame) {
+            bytes += frame();
+        }
+        return bytes;
+    }
+
+    private static void restart(DemoState demo) {
+        demo.restart();
+        for (int frame = 0; frame < FRAMES_AFTER_RESTART; ++frame) {
+            frame();
+        }
+    }
+
+    /**
+     * Run one frame of jME's {@code SimpleApplication.update()}, step by step at the fixed
+     * tpf, and return what it allocated: every AppState's update (the demo's steps, views, HUD
+     * text and panel), the scene graph's logical and geometric state, and the render pass.
+     * Only jME's input poll runs before the measurement: {@code InputManager.invokeUpdateActions}
+     * makes two map iterators a frame (64 bytes), which C2's escape analysis removes in some
+     * runs and not in others, depending on what it inlined; that is jME's code, not the app's.
+     *
+     * @return the bytes allocated (&ge;0)
+     */
+    private static long frame() {
+        ParticleLabApp app = harness.app();
+        app.getInputManager().update(H);
+        long start = THREADS.getCurrentThreadAllocatedBytes();
+        AppStateManager states = app.getStateManager();
+        RenderManager render = app.getRenderManager();
+        states.update(H);
+        app.simpleUpdate(H);
+        app.getRootNode().updateLogicalState(H);
+        app.getGuiNode().updateLogicalState(H);
+        app.getRootNode().updateGeometricState();
+        app.getGuiNode().updateGeometricState();
+        states.render(render);
+        render.render(H, app.getContext().isRenderable());
+        app.simpleRender(render);
+        states.postRender();
+        return THREADS.getCurrentThreadAllocatedBytes() - start;
+    }
+}
