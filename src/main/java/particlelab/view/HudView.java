@@ -49,12 +49,17 @@ public final class HudView {
     private final Node helpPanel = new Node("help panel");
     private final List<BitmapText> helpColumns = new ArrayList<>();
     private final Geometry helpBackground;
+    /** The body and the warning as given, unwrapped and whole (the bands may show less). */
+    private final StringBuilder bodySource = new StringBuilder(2048);
+    private final StringBuilder warningSource = new StringBuilder(256);
     private float screenWidth;
     private float screenHeight;
     private float scale;
     private String titleSource = "";
     private String footerSource = "";
     private String helpSource = "";
+    /** How many lines the last {@link #setWrapped} wrapped its text to, before any cut. */
+    private int wrappedLines;
     private boolean layoutChanged;
     private int textChanges;
 
@@ -203,8 +208,14 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setBody(CharSequence text) {
-        boolean changed = setWrapped(body, text, layout.getBodySize());
-        if (changed && body.getLineCount() > layout.getBodyLines()) {
+        if (sameText(text, bodySource)) {
+            return false;
+        }
+        bodySource.setLength(0);
+        bodySource.append(text);
+        boolean changed = setWrapped(body, bodySource, layout.getBodySize(),
+                layout.getBodyLines());
+        if (wrappedLines > layout.getBodyLinesNeeded()) {
             relayOut();
             layoutChanged = true;
         }
@@ -218,7 +229,13 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setWarning(CharSequence text) {
-        return setWrapped(warning, text, layout.getWarningSize());
+        if (sameText(text, warningSource)) {
+            return false;
+        }
+        warningSource.setLength(0);
+        warningSource.append(text);
+        return setWrapped(warning, warningSource, layout.getWarningSize(),
+                layout.getWarningLines());
     }
 
     /**
@@ -291,12 +308,13 @@ public final class HudView {
     }
 
     /**
-     * Return the warning shown, as one line (without the breaks it was wrapped at).
+     * Return the warning, as given (without the breaks it is wrapped at, and whole even when
+     * a small window's band shows only its first line).
      *
      * @return the text, empty if none (not null)
      */
     public String getWarningText() {
-        return unwrap(warning.getText());
+        return warningSource.toString();
     }
 
     /**
@@ -331,7 +349,7 @@ public final class HudView {
     }
 
     private void relayOut() {
-        layout.layOut(screenWidth, screenHeight, scale, titleSource, body.getText(),
+        layout.layOut(screenWidth, screenHeight, scale, titleSource, bodySource,
                 footerSource, helpSource);
         place(title, layout.getTitle(), layout.getTitleSize(), 1f);
         set(title, layout.getTitleText());
@@ -340,8 +358,8 @@ public final class HudView {
         place(footer, layout.getFooter(), layout.getFooterSize(), 1f);
         set(footer, layout.getFooterText());
         // Text set before this layout was wrapped for the old width: wrap it again.
-        setWrapped(body, body.getText(), layout.getBodySize());
-        setWrapped(warning, warning.getText(), layout.getWarningSize());
+        setWrapped(body, bodySource, layout.getBodySize(), layout.getBodyLines());
+        setWrapped(warning, warningSource, layout.getWarningSize(), layout.getWarningLines());
 
         ScreenRect scene = layout.getScene();
         backdrop.setLocalScale(screenWidth, screenHeight - scene.getTop(), 1f);
@@ -366,18 +384,29 @@ public final class HudView {
         }
     }
 
-    /** Set a text wrapped to the body's width, if it differs from what is shown. */
-    private boolean setWrapped(BitmapText target, CharSequence text, float size) {
+    /**
+     * Set a text wrapped to the body's width and cut to a band's lines, if that differs from
+     * what is shown; {@link #wrappedLines} counts the lines before the cut.
+     */
+    private boolean setWrapped(BitmapText target, CharSequence text, float size,
+            int maxLines) {
         float maxWidth = layout.getBody().getWidth();
-        if (measure.width(text, size) <= maxWidth) {
-            return set(target, text);
-        }
-        return set(target, layout.wrap(unwrap(text), size, maxWidth));
+        CharSequence wrapped = measure.width(text, size) <= maxWidth ? text
+                : layout.wrap(text, size, maxWidth);
+        wrappedLines = HudLayout.countLines(wrapped);
+        return set(target, HudLayout.firstLines(wrapped, maxLines));
     }
 
-    /** Undo an earlier wrap: a newline followed by the continuation indent becomes a space. */
-    private static String unwrap(CharSequence text) {
-        return text.toString().replace("\n    ", " ");
+    private static boolean sameText(CharSequence a, CharSequence b) {
+        if (a.length() != b.length()) {
+            return false;
+        }
+        for (int i = 0; i < a.length(); ++i) {
+            if (a.charAt(i) != b.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static void place(BitmapText text, ScreenRect where, float size, float z) {
