@@ -532,7 +532,12 @@ public final class HudLayout {
         List<List<String>> columns = new ArrayList<>();
         List<String> column = new ArrayList<>();
         columns.add(column);
-        for (List<String> section : sections) {
+        for (List<String> given : sections) {
+            // A line wider than the panel (a narrow window) is wrapped, like the body.
+            List<String> section = new ArrayList<>();
+            for (String line : given) {
+                section.addAll(List.of(wrap(line, size, innerWidth).split("\n", -1)));
+            }
             int needed = section.size() + (column.isEmpty() ? 0 : 1);
             if (!column.isEmpty() && column.size() + needed > maxLines
                     && section.size() <= maxLines) {
