@@ -26,7 +26,7 @@ import java.util.List;
  * <li>the text shrinks: {@link HudScale#layOut} lowers the HUD scale, down to
  * {@link HudScale#MIN_SCALE}, while this layout reports {@link #isTooSmall()};</li>
  * <li>at the smallest scale, HUD lines are hidden, least important first: the footer's key
- * summary gives its place to one line "window too small (W x H): HUD lines hidden" (the help
+ * summary gives its place to one line "window too small (WxH): HUD lines hidden" (the help
  * still lists every key), then the warning band's second line, then the body's lines from
  * its end (the equations at its top stay longest), and last the warning band's first
  * line;</li>
@@ -634,7 +634,7 @@ public final class HudLayout {
     }
 
     private static String tooSmallLine(float width, float height) {
-        return "window too small (" + Math.round(width) + " x " + Math.round(height)
+        return "window too small (" + Math.round(width) + "x" + Math.round(height)
                 + "): HUD lines hidden";
     }
 }

@@ -148,7 +148,7 @@ class HudLayoutTest {
         String body = lines(30);
         layout.layOut(width, height, HudScale.MIN_SCALE, "3.  Drag", body, FOOTER, help(40));
         assertTrue(layout.isTooSmall());
-        assertEquals("window too small (" + width + " x " + height + "): HUD lines hidden",
+        assertEquals("window too small (" + width + "x" + height + "): HUD lines hidden",
                 layout.getFooterText().replace("\n    ", " "));
         assertTrue(layout.getBodyLines() < layout.getBodyLinesNeeded(),
                 layout.getBodyLines() + " of " + layout.getBodyLinesNeeded());
