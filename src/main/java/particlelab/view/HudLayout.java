@@ -494,7 +494,8 @@ public final class HudLayout {
 
     /**
      * At the smallest help text, keep the columns that end left of a limit (at least the
-     * first); if some had to go, the last one kept ends with {@value #HELP_CUT_LINE} instead of its last line.
+     * first); if some had to go, the last one kept ends with {@value #HELP_CUT_LINE}
+     * instead of its last line.
      */
     private void keepFittingColumns(float size, float right) {
         int kept = 1;
