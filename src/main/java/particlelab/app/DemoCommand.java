@@ -15,6 +15,7 @@ import org.lwjgl.glfw.GLFW;
 import particlelab.demo.DemoState;
 import particlelab.demo.FountainDemo;
 import particlelab.files.SafeFiles;
+import particlelab.view.HudLayout;
 import particlelab.view.HudScale;
 import particlelab.world.Fountain;
 
@@ -57,9 +58,12 @@ public final class DemoCommand {
     private static final String PARTICLES = "--particles";
     private static final String PROFILE = "--profile";
     private static final String FOUNTAIN = "fountain";
-    /** The window sizes --window accepts (in pixels): a small laptop to 8K. */
-    private static final int MIN_WINDOW_WIDTH = 640;
-    private static final int MIN_WINDOW_HEIGHT = 360;
+    /**
+     * The window sizes --window accepts (in pixels): from the smallest the HUD is laid out
+     * for without overlaps (lines hidden, "window too small" said in the window) to 8K.
+     */
+    private static final int MIN_WINDOW_WIDTH = HudLayout.MIN_WIDTH;
+    private static final int MIN_WINDOW_HEIGHT = HudLayout.MIN_HEIGHT;
     private static final int MAX_WINDOW_SIDE = 7680;
     /** Kept so the level set on jME's loggers is not lost to garbage collection. */
     private static final Logger JME_LOGGER = Logger.getLogger("com.jme3");

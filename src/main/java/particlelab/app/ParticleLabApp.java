@@ -13,6 +13,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.view.ParameterPanel;
@@ -39,6 +41,7 @@ public final class ParticleLabApp extends SimpleApplication {
     /** The window's title. */
     public static final String TITLE = "Particle Lab - game particle physics, lecture demos";
     private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
+    private static final Logger LOGGER = Logger.getLogger(ParticleLabApp.class.getName());
 
     private final DemoSwitcher switcher;
     private final WindowControls windowControls;
@@ -258,6 +261,14 @@ public final class ParticleLabApp extends SimpleApplication {
     public void destroy() {
         try {
             super.destroy();
+        } catch (RuntimeException tidyFailure) {
+            if (failure == null) {
+                throw tidyFailure;
+            }
+            // jME's failure handler destroys the application after handleError: a second
+            // exception from tidying up after the first would escape that handler (the JVM
+            // prints "thrown from the UncaughtExceptionHandler") and hide the first reason.
+            LOGGER.log(Level.FINE, "tidying up after a failure failed too", tidyFailure);
         } finally {
             finished.countDown();
         }

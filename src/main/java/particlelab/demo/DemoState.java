@@ -630,7 +630,11 @@ public abstract class DemoState extends BaseAppState {
      *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
      */
     public void layOut(int width, int height, float userScale) {
-        HudScale.layOut(hud, width, height, userScale, userScale != uiScale);
+        // A new size or factor sizes the body's band afresh: the lines the old width or text
+        // size needed mean nothing now (a band grown on a small window would stay grown).
+        boolean afresh = userScale != uiScale || width != laidOutWidth
+                || height != laidOutHeight;
+        HudScale.layOut(hud, width, height, userScale, afresh);
         laidOutWidth = width;
         laidOutHeight = height;
         uiScale = userScale;
@@ -929,8 +933,10 @@ public abstract class DemoState extends BaseAppState {
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
         buildPanel(app, font);
-        // The body's lines size the HUD's band, and the band the scene's area.
+        // The body's lines size the HUD's band, and the band the scene's area; on a small
+        // window the text shrinks first, then lines are hidden (HudScale, HudLayout).
         hud.setBody(formatHud(hudText));
+        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
         scene.layOut(hud.getLayout());
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
@@ -957,6 +963,11 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     protected void onDisable() {
+        if (hud == null) {
+            // Cleaned up without having been initialised (another state failed first, and
+            // jME tidies up every attached state): onEnable never ran, nothing to undo.
+            return;
+        }
         keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
         hud.getNode().removeFromParent();

@@ -17,12 +17,17 @@ public final class CameraFraming {
     }
 
     /**
-     * Frame the plane as a view maps it.
+     * Frame the plane as a view maps it; a camera of no size (a minimised window) is left
+     * as it is.
      *
      * @param camera the camera (not null, modified)
      * @param view the mapping of the plane to the window (not null, not modified)
      */
     public static void frame(Camera camera, PlaneView view) {
+        if (camera.getWidth() <= 0 || camera.getHeight() <= 0) {
+            // A window minimised to nothing: no aspect to frame for; the next size frames.
+            return;
+        }
         float aspect = camera.getWidth() / (float) camera.getHeight();
         float halfHeight = view.getHalfHeightMetres();
         // At this distance the plane z = 0 fills the view's height with 2·halfHeight metres.

@@ -15,8 +15,29 @@ import java.util.List;
  * demo's own keys) first; it shrinks its text until every column fits the window.
  *
  * <p>Text wider than the window is wrapped at spaces, continuation lines indented. The body
- * keeps the most lines it has needed so far ({@link #getBodyLines()}), so that the numbers
- * changing from one refresh to the next never move the scene.
+ * keeps the most lines it has needed so far ({@link #getBodyLinesNeeded()}), so that the
+ * numbers changing from one refresh to the next never move the scene.
+ *
+ * <h2>A small window</h2>
+ * At any size the layout gives every view a rectangle inside the window, and the scene at
+ * least {@value #MIN_SCENE_SHARE} of the window's height; it never throws for a size &gt; 0.
+ * Text too large for the window gives way in this order:
+ * <ol>
+ * <li>the text shrinks: {@link HudScale#layOut} lowers the HUD scale, down to
+ * {@link HudScale#MIN_SCALE}, while this layout reports {@link #isTooSmall()};</li>
+ * <li>at the smallest scale, HUD lines are hidden, least important first: the footer's key
+ * summary gives its place to one line "window too small (WxH): HUD lines hidden" (the help
+ * still lists every key), then the warning band's second line, then the body's lines from
+ * its end (the equations at its top stay longest), and last the warning band's first
+ * line;</li>
+ * <li>the help overlay, at its smallest text, keeps the columns that fit and ends with
+ * "{@value #HELP_CUT_LINE}".</li>
+ * </ol>
+ * {@link #getBodyLines()} and {@link #getWarningLines()} say how many lines each band shows;
+ * the text beyond is not drawn. The simulation is not touched: a small window only shows less.
+ * From {@value #MIN_WIDTH}x{@value #MIN_HEIGHT} up no two texts overlap; below that the scene
+ * still gets a rectangle inside the window (at least one pixel high), over the title if need
+ * be.
  */
 public final class HudLayout {
 
@@ -40,12 +61,21 @@ public final class HudLayout {
     /** The HUD scale's range: text stays legible and leaves room for the scene. */
     public static final float MIN_SCALE = 0.75f;
     public static final float MAX_SCALE = 4f;
+    /** The least share of the window's height the scene gets, at any size. */
+    public static final float MIN_SCENE_SHARE = 0.4f;
+    /** The smallest window laid out with no text over another (in pixels). */
+    public static final int MIN_WIDTH = 200;
+    public static final int MIN_HEIGHT = 150;
+    /** The last help line when the window cannot hold the whole help. */
+    public static final String HELP_CUT_LINE = "(window too small: more help hidden)";
     private static final String CONTINUATION = "    ";
     private static final float HELP_SHRINK = 0.92f;
     /** The largest share of the window's width the side panel takes. */
     private static final float MAX_PANEL_SHARE = 0.4f;
     /** The largest share of the scene's width and height the graph takes. */
     private static final float MAX_GRAPH_SHARE = 0.45f;
+    /** The least a view's rectangle is high, however small the window (in pixels). */
+    private static final float MIN_VIEW_PIXELS = 1f;
 
     private final TextMeasure measure;
     private final ScreenRect window = new ScreenRect();
@@ -61,7 +91,14 @@ public final class HudLayout {
     private final List<String> helpColumnTexts = new ArrayList<>();
     private float scale = 1f;
     private float helpSize = HELP_SIZE;
+    /** The most lines the body has needed so far, wrapped. */
+    private int bodyLinesNeeded = 1;
+    /** The lines the body band shows: all it needs, or fewer on a small window. */
     private int bodyLines = 1;
+    /** The lines the warning band holds. */
+    private int warningLines = WARNING_LINES;
+    /** True when the window cannot hold every HUD line (some are hidden). */
+    private boolean tooSmall;
     private String titleText = "";
     private String footerText = "";
     /** The side panel's width at HUD scale 1 (pixels; 0: no panel). */
@@ -116,7 +153,8 @@ public final class HudLayout {
         window.set(0f, 0f, width, height);
         scale = hudScale;
         float margin = getMargin();
-        float titleWidth = width - 2f * margin;
+        float gap = 0.5f * margin;
+        float titleWidth = Math.max(1f, width - 2f * margin);
 
         titleText = wrap(titleLine, getTitleSize(), titleWidth);
         float titleHeight = countLines(titleText) * measure.lineHeight(getTitleSize());
@@ -126,26 +164,56 @@ public final class HudLayout {
         float panelPixels = panelWidth <= 0f ? 0f
                 : Math.min(panelWidth * scale, MAX_PANEL_SHARE * width);
         float leftWidth = width - panelPixels;
-        float textWidth = leftWidth - 2f * margin;
+        float textWidth = Math.max(1f, leftWidth - 2f * margin);
 
         float bodyLineHeight = measure.lineHeight(getBodySize());
-        String wrappedBody = wrap(bodyText, getBodySize(), textWidth);
-        bodyLines = Math.max(bodyLines, countLines(wrappedBody));
+        float warningLineHeight = measure.lineHeight(getWarningSize());
+        float footerLineHeight = measure.lineHeight(getFooterSize());
+        bodyLinesNeeded = Math.max(bodyLinesNeeded,
+                countLines(wrap(bodyText, getBodySize(), textWidth)));
+        String keys = wrap(footerLine, getFooterSize(), titleWidth);
+        // Room for the body, the warning band and the footer: the window less the margins,
+        // the title, the spaces around the body, the gaps around the scene and the scene's
+        // least share.
+        float room = height - 2f * margin - titleHeight - 0.6f * bodyLineHeight - 2f * gap
+                - MIN_SCENE_SHARE * height;
+        float needed = bodyLinesNeeded * bodyLineHeight + WARNING_LINES * warningLineHeight
+                + countLines(keys) * footerLineHeight;
+        tooSmall = needed > room;
+        if (tooSmall) {
+            footerText = wrap(tooSmallLine(width, height), getFooterSize(), titleWidth);
+            float left = room - countLines(footerText) * footerLineHeight;
+            warningLines = left >= warningLineHeight ? 1 : 0;
+            left -= warningLines * warningLineHeight;
+            bodyLines = Math.max(0, Math.min(bodyLinesNeeded,
+                    (int) Math.floor(left / bodyLineHeight)));
+            left -= bodyLines * bodyLineHeight;
+            while (warningLines > 0 && warningLines < WARNING_LINES
+                    && left >= warningLineHeight) {
+                ++warningLines;
+                left -= warningLineHeight;
+            }
+        } else {
+            footerText = keys;
+            bodyLines = bodyLinesNeeded;
+            warningLines = WARNING_LINES;
+        }
+
         float bodyTop = title.getY() - 0.3f * bodyLineHeight;
         body.set(margin, bodyTop - bodyLines * bodyLineHeight, textWidth,
                 bodyLines * bodyLineHeight);
-
-        float warningHeight = WARNING_LINES * measure.lineHeight(getWarningSize());
+        float warningHeight = warningLines * warningLineHeight;
         warning.set(margin, body.getY() - 0.3f * bodyLineHeight - warningHeight, textWidth,
                 warningHeight);
-
-        footerText = wrap(footerLine, getFooterSize(), titleWidth);
-        float footerHeight = countLines(footerText) * measure.lineHeight(getFooterSize());
+        float footerHeight = countLines(footerText) * footerLineHeight;
         footer.set(margin, margin, measure.width(footerText, getFooterSize()), footerHeight);
 
-        float gap = 0.5f * margin;
-        scene.set(0f, footer.getTop() + gap, leftWidth,
-                warning.getY() - gap - (footer.getTop() + gap));
+        // Below the smallest window the texts cannot all fit: the scene still gets a
+        // rectangle of at least a pixel inside the window.
+        float sceneBottom = footer.getTop() + gap;
+        float sceneHeight = Math.max(MIN_VIEW_PIXELS, warning.getY() - gap - sceneBottom);
+        float sceneY = Math.max(0f, Math.min(sceneBottom, height - sceneHeight));
+        scene.set(0f, sceneY, leftWidth, Math.min(sceneHeight, height));
         if (panelPixels > 0f) {
             float panelBottom = footer.getTop() + gap;
             sidePanel.set(leftWidth, panelBottom, panelPixels - margin,
@@ -202,7 +270,67 @@ public final class HudLayout {
      * count (wrapped for another width or text size) means nothing.
      */
     public void forgetBodyLines() {
-        bodyLines = 1;
+        bodyLinesNeeded = 1;
+    }
+
+    /**
+     * Test whether the window is too small for every HUD line at this scale: then the footer
+     * says so and some lines are hidden (see the class's Javadoc).
+     *
+     * @return true if lines are hidden
+     */
+    public boolean isTooSmall() {
+        return tooSmall;
+    }
+
+    /**
+     * Return the first lines of a text, for a band that holds only so many.
+     *
+     * @param text the text (not null)
+     * @param maxLines how many lines to keep (&ge;0)
+     * @return its first maxLines lines, or all of it if it has no more (not null, new)
+     */
+    public static CharSequence firstLines(CharSequence text, int maxLines) {
+        return firstLines(text, maxLines, new StringBuilder(text.length())).toString();
+    }
+
+    /**
+     * Copy the first lines of a text into storeResult, allocating nothing once it is large
+     * enough (what the HUD does every refresh).
+     *
+     * @param text the text (not null, not modified)
+     * @param maxLines how many lines to keep (&ge;0)
+     * @param storeResult storage for the lines kept (not null, cleared and modified)
+     * @return storeResult
+     */
+    public static StringBuilder firstLines(CharSequence text, int maxLines,
+            StringBuilder storeResult) {
+        storeResult.setLength(0);
+        int lines = 0;
+        for (int i = 0; i < text.length() && maxLines > 0; ++i) {
+            char c = text.charAt(i);
+            if (c == '\n' && ++lines >= maxLines) {
+                break;
+            }
+            storeResult.append(c);
+        }
+        return storeResult;
+    }
+
+    /**
+     * Count the lines of a text.
+     *
+     * @param text the text (not null)
+     * @return one more than its newlines (&ge;1)
+     */
+    public static int countLines(CharSequence text) {
+        int lines = 1;
+        for (int i = 0; i < text.length(); ++i) {
+            if (text.charAt(i) == '\n') {
+                ++lines;
+            }
+        }
+        return lines;
     }
 
     /** @return the side panel (live, do not modify; empty when none was asked for) */
@@ -302,9 +430,19 @@ public final class HudLayout {
         return helpSize;
     }
 
-    /** @return how many body lines the body band holds */
+    /** @return how many body lines the body band shows (fewer than needed when too small) */
     public int getBodyLines() {
         return bodyLines;
+    }
+
+    /** @return the most lines the body has needed so far, wrapped to the band's width */
+    public int getBodyLinesNeeded() {
+        return bodyLinesNeeded;
+    }
+
+    /** @return how many lines the warning band holds (fewer than 2 when too small) */
+    public int getWarningLines() {
+        return warningLines;
     }
 
     /** @return the title, wrapped (not null) */
@@ -373,10 +511,41 @@ public final class HudLayout {
         float innerHeight = helpPanel.getHeight() - 2f * margin;
         float minSize = MIN_HELP_SIZE * Math.min(1f, scale);
         float size = HELP_SIZE * scale;
-        while (!flowHelp(sections, size, innerWidth, innerHeight) && size > minSize) {
+        boolean fits = flowHelp(sections, size, innerWidth, innerHeight);
+        while (!fits && size > minSize) {
             size = Math.max(minSize, size * HELP_SHRINK);
+            fits = flowHelp(sections, size, innerWidth, innerHeight);
         }
         helpSize = size;
+        if (!fits) {
+            keepFittingColumns(size, helpPanel.getX() + margin + innerWidth);
+        }
+    }
+
+    /**
+     * At the smallest help text, keep the columns that end left of a limit (at least the
+     * first); if some had to go, the last one kept ends with {@value #HELP_CUT_LINE}
+     * instead of its last line.
+     */
+    private void keepFittingColumns(float size, float right) {
+        int kept = 1;
+        while (kept < helpColumns.size() && helpColumns.get(kept).getRight() <= right) {
+            ++kept;
+        }
+        if (kept == helpColumns.size()) {
+            return;
+        }
+        while (helpColumns.size() > kept) {
+            helpColumns.remove(helpColumns.size() - 1);
+            helpColumnTexts.remove(helpColumnTexts.size() - 1);
+        }
+        String text = helpColumnTexts.get(kept - 1);
+        int lastLine = text.lastIndexOf('\n');
+        String cut = (lastLine < 0 ? "" : text.substring(0, lastLine + 1)) + HELP_CUT_LINE;
+        helpColumnTexts.set(kept - 1, cut);
+        ScreenRect column = helpColumns.get(kept - 1);
+        float height = countLines(cut) * measure.lineHeight(size);
+        column.set(column.getX(), column.getTop() - height, measure.width(cut, size), height);
     }
 
     /**
@@ -394,7 +563,12 @@ public final class HudLayout {
         List<List<String>> columns = new ArrayList<>();
         List<String> column = new ArrayList<>();
         columns.add(column);
-        for (List<String> section : sections) {
+        for (List<String> given : sections) {
+            // A line wider than the panel (a narrow window) is wrapped, like the body.
+            List<String> section = new ArrayList<>();
+            for (String line : given) {
+                section.addAll(List.of(wrap(line, size, innerWidth).split("\n", -1)));
+            }
             int needed = section.size() + (column.isEmpty() ? 0 : 1);
             if (!column.isEmpty() && column.size() + needed > maxLines
                     && section.size() <= maxLines) {
@@ -492,13 +666,8 @@ public final class HudLayout {
         return false;
     }
 
-    private static int countLines(CharSequence text) {
-        int lines = 1;
-        for (int i = 0; i < text.length(); ++i) {
-            if (text.charAt(i) == '\n') {
-                ++lines;
-            }
-        }
-        return lines;
+    private static String tooSmallLine(float width, float height) {
+        return "window too small (" + Math.round(width) + "x" + Math.round(height)
+                + "): HUD lines hidden";
     }
 }

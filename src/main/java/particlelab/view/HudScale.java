@@ -15,26 +15,27 @@ public final class HudScale {
     public static final float MIN_SCALE = 0.5f;
 
     /** The least share of the window's height a layout leaves to the scene. */
-    public static final float MIN_SCENE_SHARE = 0.4f;
-    /** What each try multiplies the scale by while the scene gets less than that. */
+    public static final float MIN_SCENE_SHARE = HudLayout.MIN_SCENE_SHARE;
+    /** What each try multiplies the scale by while HUD lines would be hidden. */
     private static final float SHRINK = 0.9f;
 
     private HudScale() {
     }
 
     /**
-     * Lay a HUD out for a window at the scale {@link #of} gives, smaller if that leaves the
-     * scene less than {@value #MIN_SCENE_SHARE} of the window's height (large text on a
-     * small window), down to {@value #MIN_SCALE}. The body's band keeps the most lines it
-     * has needed so far, except for a new factor and while shrinking: then it is sized for
-     * the text as it is.
+     * Lay a HUD out for a window at the scale {@link #of} gives, smaller while the window
+     * cannot hold every HUD line with {@value #MIN_SCENE_SHARE} of its height left to the
+     * scene ({@link HudLayout#isTooSmall()}: large text on a small window), down to
+     * {@value #MIN_SCALE}; below that the layout hides lines (see {@link HudLayout}). The
+     * body's band keeps the most lines it has needed so far, except when asked afresh and
+     * while shrinking: then it is sized for the text as it is.
      *
      * @param hud the HUD (not null, modified)
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)
      * @param factor the user's factor (from {@value #MIN_FACTOR} to {@value #MAX_FACTOR})
-     * @param afresh true to size the body's band for the body as it is (the factor changed:
-     *     the lines the old text size needed mean nothing now)
+     * @param afresh true to size the body's band for the body as it is (the size or the
+     *     factor changed: the lines the old width or text size needed mean nothing now)
      * @return the scale used
      */
     public static float layOut(HudView hud, int width, int height, float factor,
@@ -45,8 +46,7 @@ public final class HudScale {
         } else {
             hud.layOut(width, height, scale);
         }
-        while (hud.getLayout().getScene().getHeight() < MIN_SCENE_SHARE * height
-                && scale > MIN_SCALE) {
+        while (hud.getLayout().isTooSmall() && scale > MIN_SCALE) {
             scale = Math.max(MIN_SCALE, SHRINK * scale);
             hud.layOutAfresh(width, height, scale);
         }

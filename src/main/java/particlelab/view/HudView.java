@@ -33,9 +33,6 @@ public final class HudView {
     private static final ColorRGBA FOOTER_COLOR = new ColorRGBA(0.7f, 0.76f, 0.86f, 1f);
     /** The help panel hides the scene and the HUD below the title (opaque). */
     private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
-
-    /** The spaces {@link HudLayout#wrap} puts before a continuation line. */
-    private static final int CONTINUATION_INDENT = 4;
     /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
     private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
 
@@ -54,10 +51,15 @@ public final class HudView {
     private float screenWidth;
     private float screenHeight;
     private float scale;
-    /** Scratch for wrapping: the text unwrapped, one line, and the text wrapped. */
-    private final StringBuilder unwrapped = new StringBuilder(2048);
+    /** Scratch for wrapping: one line, the text wrapped, and its lines that fit a band. */
     private final StringBuilder wrapLine = new StringBuilder(256);
     private final StringBuilder wrapped = new StringBuilder(2048);
+    private final StringBuilder cut = new StringBuilder(2048);
+    /** The body and the warning as given, unwrapped and whole (the bands may show less). */
+    private final StringBuilder bodySource = new StringBuilder(2048);
+    private final StringBuilder warningSource = new StringBuilder(256);
+    /** How many lines the last {@link #setWrapped} wrapped its text to, before any cut. */
+    private int wrappedLines;
     private String titleSource = "";
     private String footerSource = "";
     private String helpSource = "";
@@ -209,8 +211,14 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setBody(CharSequence text) {
-        boolean changed = setWrapped(body, text, layout.getBodySize());
-        if (changed && body.getLineCount() > layout.getBodyLines()) {
+        if (TextFormat.sameText(text, bodySource)) {
+            return false;
+        }
+        bodySource.setLength(0);
+        bodySource.append(text);
+        boolean changed = setWrapped(body, bodySource, layout.getBodySize(),
+                layout.getBodyLines());
+        if (wrappedLines > layout.getBodyLinesNeeded()) {
             relayOut();
             layoutChanged = true;
         }
@@ -224,7 +232,13 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setWarning(CharSequence text) {
-        return setWrapped(warning, text, layout.getWarningSize());
+        if (TextFormat.sameText(text, warningSource)) {
+            return false;
+        }
+        warningSource.setLength(0);
+        warningSource.append(text);
+        return setWrapped(warning, warningSource, layout.getWarningSize(),
+                layout.getWarningLines());
     }
 
     /**
@@ -302,7 +316,7 @@ public final class HudView {
      * @return the text, empty if none (not null)
      */
     public String getWarningText() {
-        return unwrap(warning.getText());
+        return warningSource.toString();
     }
 
     /**
@@ -337,7 +351,7 @@ public final class HudView {
     }
 
     private void relayOut() {
-        layout.layOut(screenWidth, screenHeight, scale, titleSource, body.getChars(),
+        layout.layOut(screenWidth, screenHeight, scale, titleSource, bodySource,
                 footerSource, helpSource);
         place(title, layout.getTitle(), layout.getTitleSize(), 1f);
         set(title, layout.getTitleText());
@@ -346,8 +360,8 @@ public final class HudView {
         place(footer, layout.getFooter(), layout.getFooterSize(), 1f);
         set(footer, layout.getFooterText());
         // Text set before this layout was wrapped for the old width: wrap it again.
-        setWrapped(body, body.getText(), layout.getBodySize());
-        setWrapped(warning, warning.getText(), layout.getWarningSize());
+        setWrapped(body, bodySource, layout.getBodySize(), layout.getBodyLines());
+        setWrapped(warning, warningSource, layout.getWarningSize(), layout.getWarningLines());
 
         ScreenRect scene = layout.getScene();
         backdrop.setLocalScale(screenWidth, screenHeight - scene.getTop(), 1f);
@@ -372,49 +386,17 @@ public final class HudView {
         }
     }
 
-    /** Set a text wrapped to the body's width, if it differs from what is shown. */
-    private boolean setWrapped(HudText target, CharSequence text, float size) {
-        float maxWidth = layout.getBody().getWidth();
-        if (measure.width(text, size) <= maxWidth) {
-            return set(target, text);
-        }
-        unwrap(text, unwrapped);
-        return set(target, layout.wrap(unwrapped, size, maxWidth, wrapLine, wrapped));
-    }
-
-    /** Undo an earlier wrap, as a new String (for the getters). */
-    private static String unwrap(CharSequence text) {
-        return unwrap(text, new StringBuilder(text.length())).toString();
-    }
-
     /**
-     * Undo an earlier wrap: a newline followed by the continuation indent becomes a space.
-     * Allocates nothing once storeResult is large enough.
+     * Set a text wrapped to the body's width and cut to a band's lines, if that differs from
+     * what is shown; {@link #wrappedLines} counts the lines before the cut. Allocates nothing
+     * once the scratch builders are large enough.
      */
-    private static StringBuilder unwrap(CharSequence text, StringBuilder storeResult) {
-        storeResult.setLength(0);
-        int length = text.length();
-        int indent = CONTINUATION_INDENT;
-        for (int i = 0; i < length; ++i) {
-            char c = text.charAt(i);
-            if (c == '\n' && i + indent < length && isIndent(text, i + 1, indent)) {
-                storeResult.append(' ');
-                i += indent;
-            } else {
-                storeResult.append(c);
-            }
-        }
-        return storeResult;
-    }
-
-    /** @return true if text has {@code indent} spaces from {@code start} */
-    private static boolean isIndent(CharSequence text, int start, int indent) {
-        for (int k = 0; k < indent; ++k) {
-            if (text.charAt(start + k) != ' ') {
-                return false;
-            }
-        }
-        return true;
+    private boolean setWrapped(HudText target, CharSequence text, float size, int maxLines) {
+        float maxWidth = layout.getBody().getWidth();
+        CharSequence shown = measure.width(text, size) <= maxWidth ? text
+                : layout.wrap(text, size, maxWidth, wrapLine, wrapped);
+        wrappedLines = HudLayout.countLines(shown);
+        return set(target, HudLayout.firstLines(shown, maxLines, cut));
     }
 
     private static void place(HudText text, ScreenRect where, float size, float z) {

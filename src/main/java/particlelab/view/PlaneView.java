@@ -8,6 +8,9 @@ package particlelab.view;
  */
 public final class PlaneView {
 
+    /** The least size an area or a window is taken to have (in pixels). */
+    public static final float MIN_PIXELS = 1f;
+
     private float pixelsPerMetre = 1f;
     /** The plane point at the window's centre (in metres). */
     private float centreX;
@@ -16,35 +19,37 @@ public final class PlaneView {
     private float windowHeight = 1f;
 
     /**
-     * Fit a region of the plane into a screen area.
+     * Fit a region of the plane into a screen area. A degenerate area or window (empty, as a
+     * window shrunk to nothing may give) is taken as {@value #MIN_PIXELS} pixel(s) on each
+     * side, so the mapping stays finite and the view is drawn tiny, rather than refused on
+     * the render thread.
      *
      * @param xMin the region's left edge (in metres)
      * @param xMax its right edge (in metres, &gt;xMin)
      * @param yMin its bottom edge (in metres)
      * @param yMax its top edge (in metres, &gt;yMin)
-     * @param area where it goes on the window (in pixels, not empty, not modified)
-     * @param width the window's width (in pixels, &gt;0)
-     * @param height the window's height (in pixels, &gt;0)
+     * @param area where it goes on the window (in pixels, not null, not modified)
+     * @param width the window's width (in pixels)
+     * @param height the window's height (in pixels)
      * @return this
      */
     public PlaneView fit(float xMin, float xMax, float yMin, float yMax, ScreenRect area,
             float width, float height) {
-        if (!(xMax > xMin && yMax > yMin && !area.isEmpty() && width > 0f && height > 0f)) {
-            throw new IllegalArgumentException("plane view needs xMin < xMax, yMin < yMax, a"
-                    + " non-empty area and a window > 0, but got x " + xMin + ".." + xMax
-                    + ", y " + yMin + ".." + yMax + ", area " + area + ", window " + width
-                    + "x" + height);
+        if (!(xMax > xMin && yMax > yMin)) {
+            throw new IllegalArgumentException("plane view needs xMin < xMax and yMin < yMax,"
+                    + " but got x " + xMin + ".." + xMax + ", y " + yMin + ".." + yMax);
         }
-        pixelsPerMetre = Math.min(area.getWidth() / (xMax - xMin),
-                area.getHeight() / (yMax - yMin));
-        windowWidth = width;
-        windowHeight = height;
+        float areaWidth = atLeastOnePixel(area.getWidth());
+        float areaHeight = atLeastOnePixel(area.getHeight());
+        pixelsPerMetre = Math.min(areaWidth / (xMax - xMin), areaHeight / (yMax - yMin));
+        windowWidth = atLeastOnePixel(width);
+        windowHeight = atLeastOnePixel(height);
         // The region's centre goes to the area's centre; then find the plane point that
         // lands on the window's centre.
-        float areaCentreX = area.getX() + area.getWidth() / 2f;
-        float areaCentreY = area.getY() + area.getHeight() / 2f;
-        centreX = (xMin + xMax) / 2f + (width / 2f - areaCentreX) / pixelsPerMetre;
-        centreY = (yMin + yMax) / 2f + (height / 2f - areaCentreY) / pixelsPerMetre;
+        float areaCentreX = area.getX() + areaWidth / 2f;
+        float areaCentreY = area.getY() + areaHeight / 2f;
+        centreX = (xMin + xMax) / 2f + (windowWidth / 2f - areaCentreX) / pixelsPerMetre;
+        centreY = (yMin + yMax) / 2f + (windowHeight / 2f - areaCentreY) / pixelsPerMetre;
         return this;
     }
 
@@ -116,5 +121,10 @@ public final class PlaneView {
      */
     public float planeY(float y) {
         return centreY + (y - windowHeight / 2f) / pixelsPerMetre;
+    }
+
+    /** Clamp a size to at least {@link #MIN_PIXELS} (NaN too). */
+    private static float atLeastOnePixel(float pixels) {
+        return pixels >= MIN_PIXELS ? pixels : MIN_PIXELS;
     }
 }

@@ -19,12 +19,14 @@ class DemoWindowOptionTest {
     void aWindowSizeIsReadAsWidthByHeight() {
         assertArrayEquals(new int[] {1920, 1080}, DemoCommand.parseWindow("1920x1080"));
         assertArrayEquals(new int[] {640, 360}, DemoCommand.parseWindow("640x360"));
+        // The smallest window the layout is made for (it hides HUD lines and says so).
+        assertArrayEquals(new int[] {200, 150}, DemoCommand.parseWindow("200x150"));
         assertNull(DemoCommand.parseWindow(null));
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"1920", "1920x", "x1080", "1920X1080", "-1x5", "639x480",
-        "1024x359", "7681x1000", "1e3x768", "99999x99999", "1024x768x2", "10\u0007x20"})
+    @ValueSource(strings = {"1920", "1920x", "x1080", "1920X1080", "-1x5", "199x480",
+        "1024x149", "7681x1000", "1e3x768", "99999x99999", "1024x768x2", "10\u0007x20"})
     void aBadWindowSizeIsOneLineAndExitTwo(String value) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();

@@ -40,6 +40,9 @@ class HudLayoutTest {
             + "t = 1.62 s\nball:  P = (16.17, 3.23, 0.00) m   V = (10.00, -5.84, 0.00) m/s\n"
             + "Stepping: fixed h = 16.7 ms   time x1.00";
 
+    private static final String FOOTER =
+            "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
+
     @ParameterizedTest
     @CsvSource({"1024, 768", "1280, 720", "1920, 1080", "3840, 2160", "800, 600"})
     void hudBlocksNeverOverlapAndStayInsideTheWindow(int width, int height) {
@@ -138,6 +141,87 @@ class HudLayoutTest {
         assertEquals(expected, shown);
     }
 
+    @ParameterizedTest
+    @CsvSource({"200, 150", "320, 240", "400, 300", "640, 360"})
+    void aSmallWindowHidesHudLinesFooterFirstAndKeepsTheSceneItsShare(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        String body = lines(30);
+        layout.layOut(width, height, HudScale.MIN_SCALE, "3.  Drag", body, FOOTER, help(40));
+        assertTrue(layout.isTooSmall());
+        assertEquals("window too small (" + width + "x" + height + "): HUD lines hidden",
+                layout.getFooterText().replace("\n    ", " "));
+        assertTrue(layout.getBodyLines() < layout.getBodyLinesNeeded(),
+                layout.getBodyLines() + " of " + layout.getBodyLinesNeeded());
+        assertTrue(layout.getScene().getHeight() >= HudLayout.MIN_SCENE_SHARE * height,
+                layout.getScene().toString());
+        List<ScreenRect> blocks = List.of(layout.getTitle(), layout.getBody(),
+                layout.getWarning(), layout.getScene(), layout.getFooter());
+        for (int i = 0; i < blocks.size(); ++i) {
+            assertTrue(layout.getWindow().contains(blocks.get(i)), i + " " + blocks.get(i));
+            for (int j = 0; j < i; ++j) {
+                assertFalse(blocks.get(i).intersects(blocks.get(j)), i + " over " + j);
+            }
+        }
+        // The lines shown fill the band: as many as its height holds, the first ones.
+        assertEquals(layout.getBodyLines() * MONO.lineHeight(layout.getBodySize()),
+                layout.getBody().getHeight(), 1e-3f);
+        assertEquals(lines(layout.getBodyLines()).strip(),
+                HudLayout.firstLines(body, layout.getBodyLines()).toString().strip());
+    }
+
+    @Test
+    void theBodysBandStopsGrowingWhereTheScenesShareBegins() {
+        // Issue 17: the band kept the most lines the body ever needed, so lines added by keys
+        // grew it until the scene had no height left.
+        HudLayout layout = new HudLayout(MONO);
+        for (int count = 1; count <= 60; ++count) {
+            layout.layOut(800, 450, HudScale.MIN_SCALE, "3.  Drag", lines(count), FOOTER,
+                    help(40));
+            assertTrue(layout.getScene().getHeight() >= HudLayout.MIN_SCENE_SHARE * 450f,
+                    count + " lines: " + layout.getScene());
+            assertTrue(layout.getWindow().contains(layout.getBody()), count + " lines");
+        }
+        assertEquals(60, layout.getBodyLinesNeeded());
+    }
+
+    @ParameterizedTest
+    @CsvSource({"1, 1", "30, 20", "120, 90", "199, 149"})
+    void belowTheSmallestWindowTheSceneStillGetsAPlaceInsideIt(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        layout.setPanelWidth(320f);
+        layout.setGraphSize(360f, 200f);
+        layout.layOut(width, height, HudScale.MIN_SCALE, "3.  Drag", lines(12), FOOTER,
+                help(40));
+        ScreenRect scene = layout.getScene();
+        assertFalse(scene.isEmpty(), scene.toString());
+        assertTrue(layout.getWindow().contains(scene), scene.toString());
+    }
+
+    @Test
+    void helpOnTheSmallestWindowKeepsTheColumnsThatFitAndSaysMoreIsHidden() {
+        HudLayout layout = new HudLayout(MONO);
+        String help = help(80);
+        layout.layOut(HudLayout.MIN_WIDTH, HudLayout.MIN_HEIGHT, HudScale.MIN_SCALE,
+                "5.  HelloAiming", BODY, FOOTER, help);
+        List<ScreenRect> columns = layout.getHelpColumns();
+        for (ScreenRect column : columns) {
+            assertTrue(layout.getHelpPanel().contains(column), column.toString());
+        }
+        List<String> texts = layout.getHelpColumnTexts();
+        assertTrue(texts.get(texts.size() - 1).endsWith("\n" + HudLayout.HELP_CUT_LINE),
+                texts.get(texts.size() - 1));
+        assertTrue(texts.get(0).startsWith("Demo - keys\n   F  -  fire"), texts.get(0));
+    }
+
+    @Test
+    void firstLinesKeepsWholeLinesFromTheTop() {
+        assertEquals("a\nb", HudLayout.firstLines("a\nb\nc", 2).toString());
+        assertEquals("a\nb\nc", HudLayout.firstLines("a\nb\nc", 3).toString());
+        assertEquals("a\nb\nc", HudLayout.firstLines("a\nb\nc", 9).toString());
+        assertEquals("", HudLayout.firstLines("a\nb", 0).toString());
+        assertEquals(3, HudLayout.countLines("a\nb\nc"));
+    }
+
     @Test
     void wrapBreaksAtSpacesAndIndentsContinuations() {
         HudLayout layout = new HudLayout(MONO);
@@ -156,6 +240,15 @@ class HudLayoutTest {
         assertEquals(3f, HudLayout.scaleFor(3840, 2160), 0f);
         assertEquals(0.8f, HudLayout.scaleFor(1024, 768), 1e-6f);
         assertEquals(HudLayout.MIN_SCALE, HudLayout.scaleFor(320, 200), 0f);
+    }
+
+    /** A body of numbered lines, each ending in a newline but the last. */
+    private static String lines(int count) {
+        StringBuilder text = new StringBuilder();
+        for (int i = 1; i <= count; ++i) {
+            text.append("line ").append(i).append(i < count ? "\n" : "");
+        }
+        return text.toString();
     }
 
     /** A help text like the demos': the demo's section first, then sections of 8 keys. */

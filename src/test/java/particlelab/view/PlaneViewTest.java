@@ -1,6 +1,7 @@
 package particlelab.view;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -25,5 +26,18 @@ class PlaneViewTest {
         assertEquals(32f, view.getPixelsPerMetre(), 0f);
         assertEquals(250f, view.screenY(2.5f), 1e-3f);
         assertEquals(0f, view.screenX(0f), 1e-3f);
+    }
+
+    @Test
+    void aDegenerateAreaIsTakenAsOnePixelRatherThanRefused() {
+        // Issue 17: an empty scene area threw on the render thread and killed the window.
+        ScreenRect empty = new ScreenRect(0f, 32.4f, 640f, 0f);
+        PlaneView view = new PlaneView().fit(-4f, 74f, -6f, 23.6f, empty, 640f, 360f);
+        // One pixel for 29.6 m: height-limited.
+        assertEquals(PlaneView.MIN_PIXELS / 29.6f, view.getPixelsPerMetre(), 1e-6f);
+        assertTrue(Float.isFinite(view.getCentreX()) && Float.isFinite(view.getCentreY()));
+        view.fit(0f, 10f, 0f, 5f, new ScreenRect(), 0f, 0f);
+        assertEquals(PlaneView.MIN_PIXELS / 10f, view.getPixelsPerMetre(), 1e-6f);
+        assertEquals(PlaneView.MIN_PIXELS, view.getWindowWidth(), 0f);
     }
 }
