@@ -97,7 +97,8 @@ public final class BounceCommand {
                         + " exactly still.")
                 .note("Without the resting fix a ball with e > 0 never rests unless the"
                         + " threshold stops it, and a threshold is no sure cure: with the swept"
-                        + " test the rest of an impact's step has no gravity, so the hops settle on K whole steps"
+                        + " test the rest of an impact's step has no gravity, so the hops settle"
+                        + " on K whole steps"
                         + " each and impact speed w* = K*g*h/(1+e) (K at most (1+e)/(1-e); which"
                         + " K depends on the drop). The threshold stops the ball only if it is"
                         + " at or above w*: H0 = 4 with e = 0.8 and h = 1/60 settles on K = 4,"

@@ -7,9 +7,9 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
-import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.SpinAngle;
 
 /**

@@ -18,6 +18,7 @@ import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
 import particlelab.view.HudScale;
 import particlelab.view.HudView;
+import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
@@ -29,6 +30,7 @@ import particlelab.world.ScriptedResponse;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
 import particlelab.world.World;
+import particlelab.lecture.DragDemo;
 
 /**
  * The one base class of every demo. A demo declares its particles and their forces, its keys
@@ -372,6 +374,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Access the view of one of the demo's particles (its sphere, label, trail and arrow),
+     * for a demo that draws a particle its own way. Views exist only in a window.
+     *
+     * @param particle one of this demo's particles (not null)
+     * @return the live view, or null before the views are built (no window yet, or none)
+     */
+    public ParticleView getView(DemoParticle particle) {
+        return particle.view;
+    }
+
+    /**
      * Add a simulation beside the demo's world, stepped right after it with every step of the
      * same clock: a second world (Bounce's other detection lane) or a packed batch (the
      * fountain). Not inside the world's step: its listeners observe, they move nothing. Call
@@ -472,7 +485,7 @@ public abstract class DemoState extends BaseAppState {
      *
      * @return the live node (not null)
      */
-    protected Node getSceneNode() {
+    public Node getSceneNode() {
         return sceneNode;
     }
 
@@ -1228,7 +1241,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Declare the scene the first time anything needs it (the world, the particles, the HUD's
-     * text or the window): the particles, then the parameters and the keys. So {@code new DragDemo().getWorld().step(h)} steps the demo's physics with no jME
+     * text or the window): the particles, then the parameters and the keys. So
+     * {@code new DragDemo().getWorld().step(h)} steps the demo's physics with no jME
      * application at all; the views are built later, by {@link #initialize}, if a window
      * comes.
      */

@@ -15,17 +15,17 @@ import particlelab.physics.Gravity;
  * declared defaults it is the demo's own V0, exactly (so a default run is the run the lecture
  * shows, to the bit, whatever the cosine's round-off).
  */
-final class LaunchControl {
+public final class LaunchControl {
 
     /** The angle's range (in degrees above the horizontal). */
-    static final float MIN_ANGLE_DEGREES = -30f;
-    static final float MAX_ANGLE_DEGREES = 85f;
+    public static final float MIN_ANGLE_DEGREES = -30f;
+    public static final float MAX_ANGLE_DEGREES = 85f;
     /** The mass's range (in kilograms). */
-    static final float MIN_MASS_KG = 0.1f;
-    static final float MAX_MASS_KG = 10f;
+    public static final float MIN_MASS_KG = 0.1f;
+    public static final float MAX_MASS_KG = 10f;
     /** g's range (in m/s²): from a small moon to more than Jupiter's 24.8. */
-    static final float MIN_G = 0.5f;
-    static final float MAX_G = 30f;
+    public static final float MIN_G = 0.5f;
+    public static final float MAX_G = 30f;
 
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<Gravity> gravities = new ArrayList<>();
@@ -44,7 +44,7 @@ final class LaunchControl {
      *
      * @param launchVelocity the demo's own V0 (in m/s, finite, not zero, z = 0; copied)
      */
-    LaunchControl(Vector3f launchVelocity) {
+    public LaunchControl(Vector3f launchVelocity) {
         defaultVelocity.set(launchVelocity);
         defaultSpeed = (float) Math.hypot(launchVelocity.x, launchVelocity.y);
         defaultAngleDegrees = (float) Math.toDegrees(Math.atan2(launchVelocity.y,
@@ -59,7 +59,7 @@ final class LaunchControl {
      * @param particle the particle (not null)
      * @return particle
      */
-    DemoParticle add(DemoParticle particle) {
+    public DemoParticle add(DemoParticle particle) {
         particles.add(particle);
         return particle;
     }
@@ -70,18 +70,18 @@ final class LaunchControl {
      * @param gravity a force of the scene (not null)
      * @return gravity
      */
-    Gravity add(Gravity gravity) {
+    public Gravity add(Gravity gravity) {
         gravities.add(gravity);
         return gravity;
     }
 
     /** @return the demo's own launch speed |V0| (in m/s) */
-    float getDefaultSpeed() {
+    public float getDefaultSpeed() {
         return defaultSpeed;
     }
 
     /** @return the demo's own launch angle (in degrees) */
-    float getDefaultAngle() {
+    public float getDefaultAngle() {
         return defaultAngleDegrees;
     }
 
@@ -91,7 +91,7 @@ final class LaunchControl {
      * @param storeResult storage for the result (not null, modified)
      * @return storeResult (in m/s)
      */
-    Vector3f copyVelocity(Vector3f storeResult) {
+    public Vector3f copyVelocity(Vector3f storeResult) {
         if (speed == defaultSpeed && angleDegrees == defaultAngleDegrees) {
             return storeResult.set(defaultVelocity);
         }
@@ -109,7 +109,8 @@ final class LaunchControl {
      * @param defaultKg the mass at the start (in kg, &gt;0)
      * @return the four declarations (not null)
      */
-    List<DemoParameter> projectileParameters(float maxSpeed, float speedStep, float defaultKg) {
+    public List<DemoParameter> projectileParameters(float maxSpeed, float speedStep,
+            float defaultKg) {
         return List.of(speedParameter(maxSpeed, speedStep), angleParameter(),
                 massParameter(defaultKg), gravityParameter());
     }
@@ -121,7 +122,7 @@ final class LaunchControl {
      * @param step what a key press changes it by (in m/s, &gt;0)
      * @return the declaration (not null)
      */
-    DemoParameter speedParameter(float maxSpeed, float step) {
+    public DemoParameter speedParameter(float maxSpeed, float step) {
         return new DemoParameter("speed", "launch speed", "m/s", step, maxSpeed, step,
                 defaultSpeed, 2, DemoParameter.Applies.NEXT_LAUNCH, value -> {
                     speed = value;
@@ -134,7 +135,7 @@ final class LaunchControl {
      *
      * @return the declaration (not null)
      */
-    DemoParameter angleParameter() {
+    public DemoParameter angleParameter() {
         return new DemoParameter("angle", "launch angle", "deg", MIN_ANGLE_DEGREES,
                 MAX_ANGLE_DEGREES, 1f, defaultAngleDegrees, 1,
                 DemoParameter.Applies.NEXT_LAUNCH, value -> {
@@ -149,7 +150,7 @@ final class LaunchControl {
      * @param defaultKg the mass at the start (in kg, in the range)
      * @return the declaration (not null)
      */
-    DemoParameter massParameter(float defaultKg) {
+    public DemoParameter massParameter(float defaultKg) {
         return new DemoParameter("mass", "mass", "kg", MIN_MASS_KG, MAX_MASS_KG, 0.1f,
                 defaultKg, 2, DemoParameter.Applies.NEXT_LAUNCH, value -> {
                     for (int i = 0; i < particles.size(); ++i) {
@@ -163,7 +164,7 @@ final class LaunchControl {
      *
      * @return the declaration (not null)
      */
-    DemoParameter gravityParameter() {
+    public DemoParameter gravityParameter() {
         return new DemoParameter("g", "gravity", "m/s²", MIN_G, MAX_G, 0.1f,
                 Gravity.STANDARD_G, 2, DemoParameter.Applies.LIVE, value -> {
                     acceleration.set(0f, -value, 0f);
@@ -182,7 +183,7 @@ final class LaunchControl {
      * @param parameters the demo's parameters, with "mass" and "g" declared (not null)
      * @return text
      */
-    StringBuilder appendLaunch(StringBuilder text, DemoParameters parameters) {
+    public StringBuilder appendLaunch(StringBuilder text, DemoParameters parameters) {
         float g = parameters.getValueInScene(parameters.indexOf("g"));
         text.append("m = ");
         DemoParameter.appendShort(text, parameters.getValueInScene(parameters.indexOf("mass")),

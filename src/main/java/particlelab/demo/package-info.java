@@ -1,5 +1,6 @@
 /**
- * The lecture's demos: {@link particlelab.demo.DemoState}, the one base class a demo extends,
- * and one class per demo, each reading like the lecture notes it shows.
+ * The demo framework: {@link particlelab.demo.DemoState}, the one base class a demo extends,
+ * and its kit (particles, keys, parameters, the HUD's lines, the scene, exact ghosts,
+ * exports). The demos themselves are in {@code particlelab.lecture}.
  */
 package particlelab.demo;

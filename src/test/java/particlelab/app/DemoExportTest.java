@@ -12,11 +12,11 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import particlelab.demo.DragDemo;
-import particlelab.demo.FountainDemo;
-import particlelab.demo.IterativeAimingDemo;
-import particlelab.demo.RotationDemo;
 import particlelab.demo.TrajectoryRecord;
+import particlelab.lecture.DragDemo;
+import particlelab.lecture.FountainDemo;
+import particlelab.lecture.IterativeAimingDemo;
+import particlelab.lecture.RotationDemo;
 
 /**
  * {@code particle-lab demo NAME --frames N --fixed-tpf H --export DIR}: each particle's CSV is

@@ -8,7 +8,7 @@ import com.jme3.math.Vector3f;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
-import particlelab.demo.DragDemo;
+import particlelab.lecture.DragDemo;
 
 /**
  * {@code particle-lab demo NAME --set NAME=VALUE}: a bad setting is one line and exit 2,

@@ -13,8 +13,8 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import particlelab.demo.DemoState;
-import particlelab.demo.DragDemo;
 import particlelab.demo.TrajectoryExport;
+import particlelab.lecture.DragDemo;
 
 /**
  * The E key's export ({@link ExportState}) in a headless application: each export gets a

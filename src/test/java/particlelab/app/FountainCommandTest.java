@@ -9,7 +9,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
-import particlelab.demo.FountainDemo;
+import particlelab.lecture.FountainDemo;
 
 /**
  * {@code demo fountain --particles N} and {@code demo NAME --profile}: the options are checked

@@ -9,7 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import particlelab.demo.DragDemo;
+import particlelab.lecture.DragDemo;
 import particlelab.physics.Particle;
 
 /**

@@ -13,7 +13,7 @@ import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import particlelab.demo.WindDemo;
+import particlelab.lecture.WindDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.AudioNodeSoundPlayer;

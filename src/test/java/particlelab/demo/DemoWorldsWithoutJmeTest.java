@@ -17,8 +17,9 @@ import particlelab.world.World;
 /**
  * A demo's physics needs no jME application: every catalogued demo, made with {@code new}, has
  * its simulation (its world and what steps beside it) stepped here in plain JUnit (no
- * application, no asset manager, no scene graph), and its bodies move. The views (trails, dots, labels) are the view's business, written after
- * the step by listeners the view registers when it is built.
+ * application, no asset manager, no scene graph), and its bodies move. The views (trails,
+ * dots, labels) are the view's business, written after the step by listeners the view
+ * registers when it is built.
  */
 class DemoWorldsWithoutJmeTest {
 

@@ -19,6 +19,8 @@ import particlelab.accuracy.ForceModel;
 import particlelab.accuracy.MotionState;
 import particlelab.accuracy.RungeKutta4;
 import particlelab.app.HeadlessHarness;
+import particlelab.lecture.DragDemo;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -70,7 +72,7 @@ class ExactGhostsHeadlessTest {
                 pull.advance(H);
             }
             Vector3f ball = pull.getParticles().get(0).getParticle().position;
-            ExactPath path = pull.getExactGhosts().getPath(0);
+            ExactPath path = ((DemoState) pull).getExactGhosts().getPath(0);
             return new double[] {path.getTimeSeconds(), ball.x, ball.y, ball.z,
                 path.distanceTo(ball)};
         });
@@ -101,8 +103,8 @@ class ExactGhostsHeadlessTest {
             for (int frame = 0; frame < steps; ++frame) {
                 drag.advance(H);
             }
-            ExactPath linear = drag.getExactGhosts().getPath(1);
-            ExactPath quadratic = drag.getExactGhosts().getPath(2);
+            ExactPath linear = ((DemoState) drag).getExactGhosts().getPath(1);
+            ExactPath quadratic = ((DemoState) drag).getExactGhosts().getPath(2);
             return new double[] {linear.getTimeSeconds(), linear.getPosition(0),
                 linear.getPosition(1), quadratic.getPosition(0), quadratic.getPosition(1),
                 linear.hasClosedForm() ? 1 : 0, quadratic.hasClosedForm() ? 1 : 0};
@@ -134,7 +136,7 @@ class ExactGhostsHeadlessTest {
             for (int frame = 0; frame < 200 && !pull.isSceneOver(); ++frame) {
                 pull.advance(H);
             }
-            ExactGhosts ghosts = pull.getExactGhosts();
+            ExactGhosts ghosts = ((DemoState) pull).getExactGhosts();
             ExactPath path = ghosts.getPath(0);
             DemoParticle ball = pull.getParticles().get(0);
             return new double[] {pull.isSceneOver() ? 1 : 0, path.hasLanded() ? 1 : 0,
@@ -184,7 +186,7 @@ class ExactGhostsHeadlessTest {
             throws Exception {
         List<String> problems = harness.call(() -> {
             List<String> found = new ArrayList<>();
-            ExactGhosts ghosts = drag.getExactGhosts();
+            ExactGhosts ghosts = ((DemoState) drag).getExactGhosts();
             press(drag, "G");
             if (ghosts.areGhostsVisible()) {
                 found.add("G did not hide the ghosts");
@@ -255,7 +257,7 @@ class ExactGhostsHeadlessTest {
                 }
             }
             drag.restart();
-            LiveGraph graph = drag.getExactGhosts().getGraph();
+            LiveGraph graph = ((DemoState) drag).getExactGhosts().getGraph();
             long[][] bytes = new long[3][windows];
             for (int window = 0; window < windows; ++window) {
                 int labels = graph.countLabelChanges();

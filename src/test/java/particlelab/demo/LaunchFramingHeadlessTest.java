@@ -10,6 +10,8 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.app.HeadlessHarness;
+import particlelab.lecture.DragDemo;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 

@@ -12,6 +12,14 @@ import org.junit.jupiter.api.Test;
 import particlelab.Allocations;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
+import particlelab.lecture.BounceDemo;
+import particlelab.lecture.CollisionsDemo;
+import particlelab.lecture.DragDemo;
+import particlelab.lecture.GravitationalPullDemo;
+import particlelab.lecture.HelloAimingDemo;
+import particlelab.lecture.ThrustDemo;
+import particlelab.lecture.UniformMotionDemo;
+import particlelab.lecture.WindDemo;
 import particlelab.physics.SimulationClock;
 import particlelab.view.ParameterPanel;
 
@@ -157,7 +165,7 @@ class ParameterPanelHeadlessTest {
     void panelButtonsAndSlidersGoThroughTheSameModel() throws Exception {
         Object[] seen = harness.call(() -> {
             DragDemo drag = demo(DragDemo.class);
-            ParameterPanel panel = drag.getParameterControls().getPanel();
+            ParameterPanel panel = ((DemoState) drag).getParameterControls().getPanel();
             DemoParameters parameters = drag.getParameters();
             int b = parameters.indexOf("b");
             panel.drag(b, 0.5f);
@@ -228,7 +236,7 @@ class ParameterPanelHeadlessTest {
             DragDemo drag = demo(DragDemo.class);
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.getClock().setPaused(false);
-            ParameterControls controls = drag.getParameterControls();
+            ParameterControls controls = ((DemoState) drag).getParameterControls();
             controls.getKeptShots().clear();
             drag.restart();
             for (int shot = 0; shot < KeptShots.SHOTS + 2; ++shot) {
@@ -261,7 +269,7 @@ class ParameterPanelHeadlessTest {
             DragDemo drag = demo(DragDemo.class);
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.getClock().setPaused(false);
-            ParameterControls controls = drag.getParameterControls();
+            ParameterControls controls = ((DemoState) drag).getParameterControls();
             pressF2(drag);
             boolean shown = controls.isPanelVisible()
                     && !drag.getHud().getLayout().getSidePanel().isEmpty();

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
+import particlelab.lecture.HelloAimingDemo;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
 import particlelab.view.HudText;

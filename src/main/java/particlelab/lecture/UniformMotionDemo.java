@@ -1,7 +1,11 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.LaunchControl;
 import particlelab.physics.ParticleIntegrator;
 
 /**

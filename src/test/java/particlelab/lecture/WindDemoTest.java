@@ -1,10 +1,12 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.Particle;
 
 /**

@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -214,7 +214,7 @@ class AimingDemosTest {
                 cheat.advance(H);
                 ++frames;
             }
-            Trail trail = cheat.getBullet().view.getTrail();
+            Trail trail = cheat.getView(cheat.getBullet()).getTrail();
             Vector3f newest = trail.copyPoint(trail.size() - 1, new Vector3f());
             return new Object[] {cheat.isHit(), cheat.copyImpact(new Vector3f()),
                 cheat.getBullet().getParticle().position.clone(), newest,

@@ -1,10 +1,12 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.util.Random;
 import particlelab.collision.ThinWall;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;

@@ -1,10 +1,11 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
 import particlelab.world.StepListener;
 import particlelab.world.World;
+
 
 /**
  * The measurements of a bouncing ball, heard from its world: each impact (in the epilogue),

@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
@@ -6,6 +6,9 @@ import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Spatial;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -13,6 +16,7 @@ import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.view.BoxView;
+import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
 import particlelab.view.Trail;
 import particlelab.world.StepListener;
@@ -285,9 +289,10 @@ public final class SpinThrowDemo extends DemoState {
         // The box is the body now: hide the centre's sphere, and draw its trail thinner
         // (the shared one is as wide as half the sphere, here the box's half diagonal). The
         // label stays, placed clear of the box.
-        centre.view.getNode().getChild(centre.getLabel() + " sphere")
+        ParticleView centreView = getView(centre);
+        centreView.getNode().getChild(centre.getLabel() + " sphere")
                 .setCullHint(Spatial.CullHint.Always);
-        centre.view.getNode().detachChild(centre.view.getTrail().getGeometry());
+        centreView.getNode().detachChild(centreView.getTrail().getGeometry());
         centreTrail = new Trail("centre trail", TRAIL_POINTS, TRAIL_WIDTH,
                 centre.getColor(), unshaded);
         cornerTrail = new Trail("corner trail", TRAIL_POINTS, TRAIL_WIDTH,

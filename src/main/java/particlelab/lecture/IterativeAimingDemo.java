@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
@@ -11,6 +11,10 @@ import particlelab.aiming.LevelAim;
 import particlelab.aiming.PredictorMismatch;
 import particlelab.aiming.ShotLog;
 import particlelab.aiming.ShotSimulator;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.demo.StepTable;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
@@ -487,9 +491,9 @@ public final class IterativeAimingDemo extends DemoState {
         if (tintsChanged) {
             tintsChanged = false;
             for (int i = 0; i < VISIBLE_SHOTS; ++i) {
-                if (slotShot[i] >= 0 && slots[i].view != null) {
+                if (slotShot[i] >= 0 && getView(slots[i]) != null) {
                     int age = Math.min(fired - 1 - slotShot[i], tints.length - 1);
-                    slots[i].view.getTrail().setTint(tints[age]);
+                    getView(slots[i]).getTrail().setTint(tints[age]);
                 }
             }
         }

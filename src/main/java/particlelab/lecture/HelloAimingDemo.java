@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
@@ -6,6 +6,11 @@ import com.jme3.math.Vector3f;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
+import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.demo.LaunchControl;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;

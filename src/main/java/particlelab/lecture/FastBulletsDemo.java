@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
@@ -7,6 +7,9 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
 import particlelab.aiming.Hitscan;
 import particlelab.collision.Plane;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;

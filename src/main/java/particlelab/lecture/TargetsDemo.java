@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
@@ -8,6 +8,8 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
 import particlelab.collision.Plane;
 import particlelab.collision.ThinWall;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.BodyViews;

@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
@@ -6,13 +6,17 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
 import java.util.List;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.demo.StepTable;
+import particlelab.demo.TrajectoryExport;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
-import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.SpinAngle;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;

@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,6 +11,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;

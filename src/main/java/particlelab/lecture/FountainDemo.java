@@ -1,9 +1,12 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import java.util.List;
+import particlelab.demo.DemoState;
+import particlelab.demo.FrameTimes;
+import particlelab.demo.StepTable;
 import particlelab.view.PointCloudView;
 import particlelab.view.TextFormat;
 import particlelab.world.Fountain;

@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -10,8 +10,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
-import particlelab.world.Body;
 import particlelab.view.TextFormat;
+import particlelab.world.Body;
 import particlelab.world.Detection;
 import particlelab.world.HopCycle;
 

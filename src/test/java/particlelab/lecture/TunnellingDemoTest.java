@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

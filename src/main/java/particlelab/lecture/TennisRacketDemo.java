@@ -1,15 +1,17 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
-import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
+import particlelab.rigid.RotationIntegrator;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;

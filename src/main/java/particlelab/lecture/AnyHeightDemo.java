@@ -1,4 +1,4 @@
-package particlelab.demo;
+package particlelab.lecture;
 
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
@@ -6,6 +6,9 @@ import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
 import particlelab.aiming.LaunchAngles;
 import particlelab.collision.Plane;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.CurveView;
