@@ -34,6 +34,7 @@ final class KeyTables {
     /** What comes before the range in {@link DemoParameter#appendRange}. */
     private static final String RANGE_FROM = " from ";
 
+    /** Not instantiated: static tools only. */
     private KeyTables() {
     }
 
@@ -163,6 +164,12 @@ final class KeyTables {
         }
     }
 
+    /**
+     * Test whether a demo's bindings begin with the shared keys of a demo with exact ghosts.
+     *
+     * @param bindings a demo's bindings, shared first (not null)
+     * @return true if its shared keys include the ghost keys
+     */
     private static boolean hasGhostKeys(List<KeyBinding> bindings) {
         List<KeyBinding> withGhosts = sharedBindings(true);
         if (bindings.size() < withGhosts.size()) {
@@ -189,6 +196,12 @@ final class KeyTables {
         return new BareDemo(ghosts).getBindings();
     }
 
+    /**
+     * Write bindings as a Markdown table: each binding's keys in code spans, its description.
+     *
+     * @param bindings the bindings, in the order to list them (not null)
+     * @return the table, ending in a newline (not null)
+     */
     private static String table(List<KeyBinding> bindings) {
         StringBuilder text = new StringBuilder("| key | what it does |\n|---|---|\n");
         for (KeyBinding binding : bindings) {
@@ -206,6 +219,9 @@ final class KeyTables {
     /**
      * Escape a description for a table cell: a {@code |} would end the cell and a {@code <}
      * before a letter would start an HTML tag ({@code <demo>}); {@code <->} stays as it is.
+     *
+     * @param description the text (not null)
+     * @return the escaped text (not null)
      */
     private static String escape(String description) {
         return description.replace("|", "\\|").replaceAll("<(?=[A-Za-z/!?])", "\\\\<");
@@ -214,8 +230,14 @@ final class KeyTables {
     /** A demo that declares one particle and nothing else: its keys are the shared ones. */
     private static final class BareDemo extends DemoState {
 
+        /** Whether the demo shows exact ghosts (and so has their keys). */
         private final boolean ghosts;
 
+        /**
+         * Create the demo.
+         *
+         * @param ghosts whether it shows exact ghosts
+         */
         BareDemo(boolean ghosts) {
             super("bare");
             this.ghosts = ghosts;

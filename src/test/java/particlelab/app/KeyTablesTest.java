@@ -37,6 +37,12 @@ class KeyTablesTest {
     private static final Pattern BLOCK = Pattern.compile(
             "(<!-- (keys|params):([a-z]+) -->\\n)(.*?)(<!-- /\\2 -->)", Pattern.DOTALL);
 
+    /**
+     * Compare every marked block with what the generator writes now; with
+     * {@value #WRITE_DOCS}=1, rewrite the stale ones instead of failing.
+     *
+     * @throws IOException if a page cannot be read or written
+     */
     @Test
     void everyKeyBlockIsWhatTheBindingsWrite() throws IOException {
         boolean write = "1".equals(System.getenv(WRITE_DOCS));
@@ -71,6 +77,11 @@ class KeyTablesTest {
         }
     }
 
+    /**
+     * Every demo of the catalogue has its page with its keys and its parameters.
+     *
+     * @throws IOException if a page cannot be read
+     */
     @Test
     void everyDemoHasAPageWithItsKeyBlock() throws IOException {
         for (String name : DemoCatalog.names()) {
@@ -84,6 +95,7 @@ class KeyTablesTest {
         }
     }
 
+    /** The generator reads the real bindings: known keys of each kind appear in its tables. */
     @Test
     void theTablesNameTheKeysTheBindingsDeclare() {
         // Drag adds none of its own; Bounce adds Up (restitution) among others; the shared
@@ -99,6 +111,12 @@ class KeyTablesTest {
         assertTrue(KeyTables.parameterTable("wind").contains("| `w` |"), "wind's w");
     }
 
+    /**
+     * List the pages whose blocks are checked: README.md and every Markdown page under docs/.
+     *
+     * @return the pages, README first (not null)
+     * @throws IOException if docs/ cannot be listed
+     */
     private static List<Path> pages() throws IOException {
         List<Path> pages = new ArrayList<>();
         pages.add(Paths.get("README.md"));
