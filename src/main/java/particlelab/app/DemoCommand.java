@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
+import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
 import particlelab.files.SafeFiles;
 import particlelab.lecture.FountainDemo;
@@ -241,7 +242,8 @@ public final class DemoCommand {
 
     /**
      * Set a demo's parameters from {@code --set NAME=VALUE} values, before its scene starts.
-     * A value is a number or a fraction such as {@code 1/60}.
+     * A value is a number or a fraction such as {@code 1/60}, or for a named state (a
+     * {@link particlelab.demo.DemoParameter#choice choice}) one of its names.
      *
      * @param demo the demo (not null, not initialised yet)
      * @param settings each {@code NAME=VALUE} given, in order (not null)
@@ -249,18 +251,32 @@ public final class DemoCommand {
      *     ranges if a name is unknown, a value is not a number or out of its range
      */
     static void applySettings(DemoState demo, List<String> settings) {
+        DemoParameters parameters = demo.getParameters();
         for (String setting : settings) {
             int equals = setting.indexOf('=');
             String name = equals < 0 ? setting : setting.substring(0, equals);
-            // The grammar of every numeric option; an infinite value is no number either.
-            float value = equals < 0 ? Float.NaN : Options.number(setting.substring(equals + 1));
+            String text = equals < 0 ? "" : setting.substring(equals + 1);
+            int index = parameters.indexOf(name);
             String shown = SET + " " + Options.show(setting) + ": ";
+            if (equals >= 0 && index >= 0 && parameters.get(index).isChoice()) {
+                // A named state (a preset, a strategy): its value is one of its names.
+                int choice = parameters.get(index).indexOfChoice(text);
+                if (choice < 0) {
+                    throw new UsageException(shown + Options.show(text) + " is not one of"
+                            + " the names of " + name + "; " + parameters.describeAll());
+                }
+                parameters.set(index, choice);
+                continue;
+            }
+            // The grammar of every numeric option; an infinite value is no number either.
+            float value = equals < 0 ? Float.NaN : Options.number(text);
             if (equals < 0 || !Float.isFinite(value)) {
-                throw new UsageException(shown + "must be NAME=VALUE with a number or a"
-                        + " fraction such as 1/60; " + demo.getParameters().describeAll());
+                throw new UsageException(shown + "must be NAME=VALUE with a number, a fraction"
+                        + " such as 1/60 or one of a choice's names; "
+                        + parameters.describeAll());
             }
             try {
-                demo.getParameters().set(name, value);
+                parameters.set(name, value);
             } catch (IllegalArgumentException refused) {
                 throw new UsageException(shown + refused.getMessage());
             }
