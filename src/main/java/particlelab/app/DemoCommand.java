@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
 import particlelab.files.SafeFiles;
@@ -405,8 +406,43 @@ public final class DemoCommand {
                 .flag(PROFILE, "at exit, print one line: physics_ms_mean=X physics_ms_max=Y"
                         + " particles=P frames=N, the wall time of each frame's simulation"
                         + " steps of the demo the window opened on")
+                .note(describeChoices())
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
+    }
+
+    /**
+     * Write the demos' named states for the help: what {@code --set} accepts besides
+     * numbers, e.g. "collisions: preset=head-on|glancing|cradle|paddle". Read from the
+     * demos' declarations (no scene is built), so it cannot drift from them.
+     *
+     * @return one paragraph (not null)
+     */
+    static String describeChoices() {
+        StringBuilder text = new StringBuilder("Named states for --set (the lecture's"
+                + " presets):");
+        List<DemoState> demos = DemoCatalog.createAll();
+        List<String> names = DemoCatalog.names();
+        for (int d = 0; d < demos.size(); ++d) {
+            DemoParameters parameters = demos.get(d).getParameters();
+            String separator = " " + names.get(d) + ": ";
+            for (int i = 0; i < parameters.size(); ++i) {
+                DemoParameter parameter = parameters.get(i);
+                if (!parameter.isChoice()) {
+                    continue;
+                }
+                text.append(separator).append(parameter.getName()).append('=');
+                for (int c = 0; c < parameter.countChoices(); ++c) {
+                    text.append(c == 0 ? "" : "|").append(parameter.getChoice(c));
+                }
+                separator = ", ";
+            }
+            if (!separator.startsWith(" " + names.get(d))) {
+                text.append(';');
+            }
+        }
+        text.setLength(text.length() - 1);
+        return text.append('.').toString();
     }
 
     /**
