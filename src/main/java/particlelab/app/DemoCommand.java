@@ -231,7 +231,7 @@ public final class DemoCommand {
     }
 
     /** Read --ui-scale: the user's factor on the HUD scale, 1 when not given. */
-    private static float parseUiScale(Options options) {
+    static float parseUiScale(Options options) {
         float factor = options.positiveFloat(UI_SCALE, 1f);
         if (!(factor >= HudScale.MIN_FACTOR && factor <= HudScale.MAX_FACTOR)) {
             throw new UsageException(UI_SCALE + ": must be from " + HudScale.MIN_FACTOR + " to "
@@ -463,6 +463,30 @@ public final class DemoCommand {
     static int openWindow(List<DemoState> demos, int index, int frames, File screenshot,
             float fixedTpf, float uiScale, Path exportFolder, boolean replace, PrintStream out,
             PrintStream err) {
+        return openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
+                uiScale, exportFolder, replace, out, err);
+    }
+
+    /**
+     * Open the window, on a demo or on a stop of the lecture tour, and wait until it closes.
+     *
+     * @param demos the demos, in {@link DemoCatalog} order for a tour (not null, not empty)
+     * @param index the demo to open on (a tour stop's demo)
+     * @param tourStop the tour stop to open on (from 0), or
+     *     {@link TourGuide#NOT_TOURING}
+     * @param frames the frame limit, 0 for none
+     * @param screenshot the PNG to write, or null
+     * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
+            File screenshot, float fixedTpf, float uiScale, Path exportFolder, boolean replace,
+            PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println("particle-lab: cannot open the window: " + noDisplay);
@@ -480,6 +504,10 @@ public final class DemoCommand {
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
         app.getWindowControls().setUiFactor(uiScale);
+        if (tourStop != TourGuide.NOT_TOURING) {
+            // index is the stop's demo, so the window opens on it.
+            app.getTour().go(tourStop);
+        }
         if (app.getCapture() != null) {
             app.getCapture().setReplace(replace);
         }
