@@ -248,7 +248,14 @@ public final class LectureTour {
         HelloAimingDemo aiming = (HelloAimingDemo) demo;
         text.append(WATCH).append("vy = ");
         TextFormat.appendFixed(text, aiming.getVerticalSpeed(), 2).append(" m/s from the"
-                + " formula; shot ").append(aiming.getLandedShotNumber()).append(" landed at x = ");
+                + " formula; ");
+        if (aiming.getLandedShotNumber() == 0) {
+            text.append("shot ").append(aiming.getShotNumber()).append(" in flight, t = ");
+            TextFormat.appendFixed(text, demo.getClock().getSimulatedSeconds(), 2)
+                    .append(" s: does it land on the target?\n");
+            return;
+        }
+        text.append("shot ").append(aiming.getLandedShotNumber()).append(" landed at x = ");
         TextFormat.appendFixed(text, aiming.getLastLandingX(), 2).append(" m\n");
     }
 
