@@ -69,15 +69,16 @@ public final class LectureTour {
         }
 
         /**
-         * Write the stop as {@code tour --list} prints it, e.g. "3  Kinematics vs dynamics:
-         * demo collisions --set preset=paddle".
+         * Write the stop as {@code tour --list} prints it, e.g. "3   Kinematics vs dynamics:
+         * collisions --set preset=paddle": what follows the colon, after {@code particle-lab
+         * demo}, opens the same state.
          *
          * @param number the stop's number (from 1)
          * @return the line (not null)
          */
         public String describe(int number) {
             StringBuilder text = new StringBuilder();
-            text.append(number).append(number < 10 ? "   " : "  ").append(slide).append(": demo ")
+            text.append(number).append(number < 10 ? "   " : "  ").append(slide).append(": ")
                     .append(demo);
             for (String setting : settings) {
                 text.append(" --set ").append(setting);

@@ -33,7 +33,7 @@ class TourCommandTest {
             LectureTour.Stop stop = stops.get(i);
             String line = lines.get(i);
             assertTrue(line.startsWith((i + 1) + " "), line);
-            assertTrue(line.contains(" " + stop.getSlide() + ": demo " + stop.getDemo()), line);
+            assertTrue(line.contains(" " + stop.getSlide() + ": " + stop.getDemo()), line);
             for (String setting : stop.getSettings()) {
                 assertTrue(line.contains("--set " + setting), line);
             }
