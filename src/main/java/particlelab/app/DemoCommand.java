@@ -398,8 +398,9 @@ public final class DemoCommand {
                         + " replace existing regular files; a symbolic link is never written"
                         + " through, not even with it")
                 .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
-                        + " starts, e.g. b=0.3 or h=1/10 (repeatable); the panel (F2) lists"
-                        + " them, a wrong name or value lists them with their ranges")
+                        + " starts, e.g. b=0.3 or h=1/10, or a named state such as"
+                        + " preset=glancing (repeatable); the panel (F2) lists them, a wrong"
+                        + " name or value lists them with their ranges and names")
                 .value(PARTICLES, "N", "demo fountain only: how many particles it steps,"
                         + " 1 to " + Fountain.MAX_PARTICLES + " (default "
                         + Fountain.DEFAULT_PARTICLES + ")")

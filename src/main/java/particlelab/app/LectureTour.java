@@ -1,7 +1,6 @@
 package particlelab.app;
 
 import com.jme3.math.Vector3f;
-import java.util.Collections;
 import java.util.List;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -123,7 +122,7 @@ public final class LectureTour {
      * @return the stops (not null, unmodifiable)
      */
     public static List<Stop> stops() {
-        return Collections.unmodifiableList(STOPS);
+        return STOPS;
     }
 
     /**
