@@ -41,6 +41,9 @@ public final class Commands {
             new Command(DemoCommand.NAME,
                     "open the window on one demo (--list, --frames, --screenshot)",
                     DemoCommand::declareOptions, DemoCommand::run),
+            new Command(TourCommand.NAME, "walk lecture 15 slide by slide, each stop a demo in"
+                    + " the slide's state (--list, --stop N)", TourCommand::options,
+                    TourCommand::run),
             new Command(ReportCommand.NAME,
                     "write the accuracy and speed report",
                     ReportCommand::options, ReportCommand::run));

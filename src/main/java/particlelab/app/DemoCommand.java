@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
+import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
 import particlelab.files.SafeFiles;
 import particlelab.lecture.FountainDemo;
@@ -229,7 +231,7 @@ public final class DemoCommand {
     }
 
     /** Read --ui-scale: the user's factor on the HUD scale, 1 when not given. */
-    private static float parseUiScale(Options options) {
+    static float parseUiScale(Options options) {
         float factor = options.positiveFloat(UI_SCALE, 1f);
         if (!(factor >= HudScale.MIN_FACTOR && factor <= HudScale.MAX_FACTOR)) {
             throw new UsageException(UI_SCALE + ": must be from " + HudScale.MIN_FACTOR + " to "
@@ -241,7 +243,8 @@ public final class DemoCommand {
 
     /**
      * Set a demo's parameters from {@code --set NAME=VALUE} values, before its scene starts.
-     * A value is a number or a fraction such as {@code 1/60}.
+     * A value is a number or a fraction such as {@code 1/60}, or for a named state (a
+     * {@link particlelab.demo.DemoParameter#choice choice}) one of its names.
      *
      * @param demo the demo (not null, not initialised yet)
      * @param settings each {@code NAME=VALUE} given, in order (not null)
@@ -249,18 +252,32 @@ public final class DemoCommand {
      *     ranges if a name is unknown, a value is not a number or out of its range
      */
     static void applySettings(DemoState demo, List<String> settings) {
+        DemoParameters parameters = demo.getParameters();
         for (String setting : settings) {
             int equals = setting.indexOf('=');
             String name = equals < 0 ? setting : setting.substring(0, equals);
-            // The grammar of every numeric option; an infinite value is no number either.
-            float value = equals < 0 ? Float.NaN : Options.number(setting.substring(equals + 1));
+            String text = equals < 0 ? "" : setting.substring(equals + 1);
+            int index = parameters.indexOf(name);
             String shown = SET + " " + Options.show(setting) + ": ";
+            if (equals >= 0 && index >= 0 && parameters.get(index).isChoice()) {
+                // A named state (a preset, a strategy): its value is one of its names.
+                int choice = parameters.get(index).indexOfChoice(text);
+                if (choice < 0) {
+                    throw new UsageException(shown + Options.show(text) + " is not one of"
+                            + " the names of " + name + "; " + parameters.describeAll());
+                }
+                parameters.set(index, choice);
+                continue;
+            }
+            // The grammar of every numeric option; an infinite value is no number either.
+            float value = equals < 0 ? Float.NaN : Options.number(text);
             if (equals < 0 || !Float.isFinite(value)) {
-                throw new UsageException(shown + "must be NAME=VALUE with a number or a"
-                        + " fraction such as 1/60; " + demo.getParameters().describeAll());
+                throw new UsageException(shown + "must be NAME=VALUE with a number, a fraction"
+                        + " such as 1/60 or one of a choice's names; "
+                        + parameters.describeAll());
             }
             try {
-                demo.getParameters().set(name, value);
+                parameters.set(name, value);
             } catch (IllegalArgumentException refused) {
                 throw new UsageException(shown + refused.getMessage());
             }
@@ -381,16 +398,52 @@ public final class DemoCommand {
                         + " replace existing regular files; a symbolic link is never written"
                         + " through, not even with it")
                 .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
-                        + " starts, e.g. b=0.3 or h=1/10 (repeatable); the panel (F2) lists"
-                        + " them, a wrong name or value lists them with their ranges")
+                        + " starts, e.g. b=0.3 or h=1/10, or a named state such as"
+                        + " preset=glancing (repeatable); the panel (F2) lists them, a wrong"
+                        + " name or value lists them with their ranges and names")
                 .value(PARTICLES, "N", "demo fountain only: how many particles it steps,"
                         + " 1 to " + Fountain.MAX_PARTICLES + " (default "
                         + Fountain.DEFAULT_PARTICLES + ")")
                 .flag(PROFILE, "at exit, print one line: physics_ms_mean=X physics_ms_max=Y"
                         + " particles=P frames=N, the wall time of each frame's simulation"
                         + " steps of the demo the window opened on")
+                .note(describeChoices())
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
+    }
+
+    /**
+     * Write the demos' named states for the help: what {@code --set} accepts besides
+     * numbers, e.g. "collisions: preset=head-on|glancing|cradle|paddle". Read from the
+     * demos' declarations (no scene is built), so it cannot drift from them.
+     *
+     * @return one paragraph (not null)
+     */
+    static String describeChoices() {
+        StringBuilder text = new StringBuilder("Named states for --set (the lecture's"
+                + " presets):");
+        List<DemoState> demos = DemoCatalog.createAll();
+        List<String> names = DemoCatalog.names();
+        for (int d = 0; d < demos.size(); ++d) {
+            DemoParameters parameters = demos.get(d).getParameters();
+            String separator = " " + names.get(d) + ": ";
+            for (int i = 0; i < parameters.size(); ++i) {
+                DemoParameter parameter = parameters.get(i);
+                if (!parameter.isChoice()) {
+                    continue;
+                }
+                text.append(separator).append(parameter.getName()).append('=');
+                for (int c = 0; c < parameter.countChoices(); ++c) {
+                    text.append(c == 0 ? "" : "|").append(parameter.getChoice(c));
+                }
+                separator = ", ";
+            }
+            if (!separator.startsWith(" " + names.get(d))) {
+                text.append(';');
+            }
+        }
+        text.setLength(text.length() - 1);
+        return text.append('.').toString();
     }
 
     /**
@@ -411,6 +464,30 @@ public final class DemoCommand {
     static int openWindow(List<DemoState> demos, int index, int frames, File screenshot,
             float fixedTpf, float uiScale, Path exportFolder, boolean replace, PrintStream out,
             PrintStream err) {
+        return openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
+                uiScale, exportFolder, replace, out, err);
+    }
+
+    /**
+     * Open the window, on a demo or on a stop of the lecture tour, and wait until it closes.
+     *
+     * @param demos the demos, in {@link DemoCatalog} order for a tour (not null, not empty)
+     * @param index the demo to open on (a tour stop's demo)
+     * @param tourStop the tour stop to open on (from 0), or
+     *     {@link TourGuide#NOT_TOURING}
+     * @param frames the frame limit, 0 for none
+     * @param screenshot the PNG to write, or null
+     * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
+            File screenshot, float fixedTpf, float uiScale, Path exportFolder, boolean replace,
+            PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println("particle-lab: cannot open the window: " + noDisplay);
@@ -428,6 +505,10 @@ public final class DemoCommand {
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
         app.getWindowControls().setUiFactor(uiScale);
+        if (tourStop != TourGuide.NOT_TOURING) {
+            // index is the stop's demo, so the window opens on it.
+            app.getTour().go(tourStop);
+        }
         if (app.getCapture() != null) {
             app.getCapture().setReplace(replace);
         }

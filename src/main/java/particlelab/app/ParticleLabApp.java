@@ -45,6 +45,7 @@ public final class ParticleLabApp extends SimpleApplication {
 
     private final DemoSwitcher switcher;
     private final WindowControls windowControls;
+    private final TourGuide tour;
     private final ExportState export;
     private final int frameLimit;
     private final ScreenshotCapture capture;
@@ -98,6 +99,8 @@ public final class ParticleLabApp extends SimpleApplication {
         this.export = new ExportState(switcher, ExportState.BASE_FOLDER);
         List<KeyBinding> windowKeys = new ArrayList<>(windowControls.getBindings());
         windowKeys.add(export.getBinding());
+        this.tour = new TourGuide(switcher);
+        windowKeys.addAll(tour.getBindings());
         switcher.addBindings(windowKeys);
         this.frameLimit = frameLimit;
         this.capture = screenshot == null ? null : new ScreenshotCapture(screenshot);
@@ -156,6 +159,15 @@ public final class ParticleLabApp extends SimpleApplication {
      */
     public WindowControls getWindowControls() {
         return windowControls;
+    }
+
+    /**
+     * Access the lecture tour's guide: which stop is shown, PageDown and PageUp.
+     *
+     * @return the live guide (not null)
+     */
+    TourGuide getTour() {
+        return tour;
     }
 
     /**

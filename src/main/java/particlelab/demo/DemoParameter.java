@@ -11,7 +11,9 @@ import particlelab.view.TextFormat;
  * Immutable.
  *
  * <p>Values are floats, as the physics is. The setter is a primitive functional interface,
- * so applying a value boxes nothing.
+ * so applying a value boxes nothing. A state that is no number (a preset, a strategy, a
+ * switch) is a {@link #choice}: its values are the indexes 0, 1, ... of a few named values,
+ * set by name from the command line ({@code --set preset=glancing}) and shown by name.
  */
 public final class DemoParameter {
 
@@ -65,6 +67,8 @@ public final class DemoParameter {
     private final Display display;
     /** The values the keys and the slider step through, ascending; null: every step. */
     private final float[] stops;
+    /** A choice's names, by index; null for a number. */
+    private final String[] choices;
 
     /**
      * Declare a parameter shown with a fixed number of decimals and its unit.
@@ -84,12 +88,12 @@ public final class DemoParameter {
     public DemoParameter(String name, String label, String unit, float min, float max,
             float step, float defaultValue, int decimals, Applies applies, Setter setter) {
         this(name, label, unit, min, max, step, defaultValue, decimals, applies, setter, null,
-                null);
+                null, null);
     }
 
     private DemoParameter(String name, String label, String unit, float min, float max,
             float step, float defaultValue, int decimals, Applies applies, Setter setter,
-            Display display, float[] stops) {
+            Display display, float[] stops, String[] choices) {
         if (name == null || !name.matches("[a-z][a-z0-9_]*")) {
             throw new IllegalArgumentException("parameter name must be a lower-case letter"
                     + " followed by letters, digits or '_', but was "
@@ -131,6 +135,43 @@ public final class DemoParameter {
         this.setter = setter;
         this.display = display;
         this.stops = stops;
+        this.choices = choices;
+    }
+
+    /**
+     * Declare a state that is one of a few named values, e.g. a collision preset: its values
+     * are the indexes 0 to n − 1, the keys step through them, the command line names them
+     * ({@code --set preset=glancing}) and the panel shows the name.
+     *
+     * @param name the command-line name (as for a number)
+     * @param label what it is, e.g. "collision preset" (not null, not empty)
+     * @param names the values' names in key order (at least 2, each a lower-case letter or
+     *     a digit, then letters, digits, '.', '-' or '_'; distinct; copied)
+     * @param defaultIndex the value at the start (0 to n − 1)
+     * @param applies when a change reaches the scene (not null)
+     * @param setter puts an index into the scene, as a whole float (not null)
+     * @return the declaration (not null)
+     */
+    public static DemoParameter choice(String name, String label, String[] names,
+            int defaultIndex, Applies applies, Setter setter) {
+        if (names == null || names.length < 2) {
+            throw new IllegalArgumentException("choice " + name + " needs at least 2 names");
+        }
+        for (int i = 0; i < names.length; ++i) {
+            if (names[i] == null || !names[i].matches("[a-z0-9][a-z0-9._-]*")) {
+                throw new IllegalArgumentException("choice " + name + ": a name must be a"
+                        + " lower-case letter or a digit, then letters, digits, '.', '-' or"
+                        + " '_', but name " + i + " was " + names[i]);
+            }
+            for (int j = 0; j < i; ++j) {
+                if (names[j].equals(names[i])) {
+                    throw new IllegalArgumentException("choice " + name + ": the name "
+                            + names[i] + " is given twice");
+                }
+            }
+        }
+        return new DemoParameter(name, label, "", 0f, names.length - 1f, 1f, defaultIndex, 0,
+                applies, setter, null, null, names.clone());
     }
 
     /**
@@ -145,7 +186,7 @@ public final class DemoParameter {
                     + " must not be null");
         }
         return new DemoParameter(name, label, unit, min, max, step, defaultValue, decimals,
-                applies, setter, newDisplay, stops);
+                applies, setter, newDisplay, stops, choices);
     }
 
     /**
@@ -169,7 +210,7 @@ public final class DemoParameter {
             }
         }
         return new DemoParameter(name, label, unit, min, max, step, defaultValue, decimals,
-                applies, setter, display, newStops.clone());
+                applies, setter, display, newStops.clone(), choices);
     }
 
     /**
@@ -255,14 +296,59 @@ public final class DemoParameter {
         return applies;
     }
 
+    /** @return true if this is a {@link #choice} of named values, false for a number */
+    public boolean isChoice() {
+        return choices != null;
+    }
+
+    /**
+     * Count a choice's values.
+     *
+     * @return how many names (&ge;2), or 0 for a number
+     */
+    public int countChoices() {
+        return choices == null ? 0 : choices.length;
+    }
+
+    /**
+     * Return one of a choice's names.
+     *
+     * @param index which (0 to {@link #countChoices()} − 1)
+     * @return the name, e.g. "glancing" (not null)
+     */
+    public String getChoice(int index) {
+        if (choices == null || index < 0 || index >= choices.length) {
+            throw new IllegalArgumentException("parameter " + name + " has no choice "
+                    + index);
+        }
+        return choices[index];
+    }
+
+    /**
+     * Find a choice's value by its name, as {@code --set NAME=VALUE} gives it.
+     *
+     * @param text the name (case-sensitive)
+     * @return the index, or -1 if this is no choice or none has that name
+     */
+    public int indexOfChoice(String text) {
+        if (choices != null) {
+            for (int i = 0; i < choices.length; ++i) {
+                if (choices[i].equals(text)) {
+                    return i;
+                }
+            }
+        }
+        return -1;
+    }
+
     /**
      * Test whether a value is allowed.
      *
      * @param value the value
-     * @return true if finite and from min to max
+     * @return true if finite and from min to max (for a choice: one of its indexes)
      */
     public boolean accepts(float value) {
-        return value >= min && value <= max;
+        return value >= min && value <= max && (choices == null || value == Math.round(value));
     }
 
     /**
@@ -291,6 +377,10 @@ public final class DemoParameter {
      * @return text
      */
     public StringBuilder appendValue(StringBuilder text, float value) {
+        if (choices != null) {
+            return text.append(choices[Math.max(0, Math.min(choices.length - 1,
+                    Math.round(value)))]);
+        }
         if (display != null) {
             return display.append(text, value);
         }
@@ -318,12 +408,20 @@ public final class DemoParameter {
 
     /**
      * Write the declaration and its range for the command line, e.g. "b (linear drag) from
-     * 0.00 N s/m to 5.00 N s/m" (in ASCII: "g (gravity) from 1.0 m/s^2 to ...").
+     * 0.00 N s/m to 5.00 N s/m" (in ASCII: "g (gravity) from 1.0 m/s^2 to ..."); a choice's
+     * names, e.g. "preset (collision preset) one of head-on|glancing|cradle|paddle".
      *
      * @param text where to append (not null, modified)
      * @return text
      */
     public StringBuilder appendRange(StringBuilder text) {
+        if (choices != null) {
+            text.append(name).append(" (").append(label).append(") one of ");
+            for (int i = 0; i < choices.length; ++i) {
+                text.append(i == 0 ? "" : "|").append(choices[i]);
+            }
+            return text;
+        }
         text.append(name).append(" (").append(label).append(") from ");
         appendAsciiValue(text, min).append(" to ");
         return appendAsciiValue(text, max);

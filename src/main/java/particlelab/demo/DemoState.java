@@ -166,6 +166,8 @@ public abstract class DemoState extends BaseAppState {
     /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
     private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
     private boolean hudDirty = true;
+    /** Lines after the demo's own on the HUD (a tour stop's), or null. */
+    private HudNote note;
     private float pendingHitchSeconds;
     private int blowUps;
     /** A restart asked for inside a step: done once the frame's steps are over. */
@@ -921,7 +923,25 @@ public abstract class DemoState extends BaseAppState {
         ensureScene();
         hudWriter.write(storeResult, isSceneOver());
         writeHudLines(storeResult);
+        if (note != null) {
+            note.append(this, storeResult);
+        }
         return storeResult;
+    }
+
+    /**
+     * Show lines after the demo's own on its HUD, e.g. a tour stop's "what to watch for".
+     *
+     * @param newNote writes the lines from the demo's numbers, or null for none
+     */
+    public void setNote(HudNote newNote) {
+        note = newNote;
+        hudDirty = true;
+    }
+
+    /** @return the lines shown after the demo's own, or null if none */
+    public HudNote getNote() {
+        return note;
     }
 
     // ------------------------------------------------------------- framework overrides ----

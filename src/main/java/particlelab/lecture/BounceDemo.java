@@ -65,6 +65,8 @@ public final class BounceDemo extends DemoState {
         ImpulseResponse.BOX2D_THRESHOLD};
     /** The presets' names, in the order of {@link #THRESHOLDS}. */
     static final String[] THRESHOLD_NAMES = {"none", "Cyclone", "Box2D/Jolt"};
+    /** The presets' command-line names, in the order of {@link #THRESHOLDS}. */
+    static final String[] THRESHOLD_KEYS = {"none", "cyclone", "box2d"};
     /** Apexes shown on the HUD, the latest ones. */
     private static final int APEXES_SHOWN = 4;
     /**
@@ -124,6 +126,29 @@ public final class BounceDemo extends DemoState {
                     int tenths = Math.round(value * 10f);
                     if (tenths != eTenths) {
                         configure(tenths, thresholdPreset, response.isRestingFix(), detection);
+                    }
+                }));
+        // The threshold, the resting fix and the detection test, as P, F and O switch them.
+        declareParameter(DemoParameter.choice("threshold", "threshold speed", THRESHOLD_KEYS,
+                thresholdPreset, DemoParameter.Applies.LIVE, value -> {
+                    if (Math.round(value) != thresholdPreset) {
+                        configure(eTenths, Math.round(value), response.isRestingFix(),
+                                detection);
+                    }
+                }));
+        declareParameter(DemoParameter.choice("fix", "resting fix", new String[] {"off", "on"},
+                response.isRestingFix() ? 1 : 0, DemoParameter.Applies.LIVE, value -> {
+                    if ((Math.round(value) == 1) != response.isRestingFix()) {
+                        configure(eTenths, thresholdPreset, Math.round(value) == 1, detection);
+                    }
+                }));
+        declareParameter(DemoParameter.choice("detection", "ground test",
+                new String[] {"swept", "overlap"}, detection == Detection.SWEPT ? 0 : 1,
+                DemoParameter.Applies.LIVE, value -> {
+                    Detection wanted = Math.round(value) == 0 ? Detection.SWEPT
+                            : Detection.OVERLAP;
+                    if (wanted != detection) {
+                        configure(eTenths, thresholdPreset, response.isRestingFix(), wanted);
                     }
                 }));
     }
@@ -274,6 +299,9 @@ public final class BounceDemo extends DemoState {
         refreshEquations();
         // The panel shows the e the keys or a caller chose.
         getParameters().set("e", eTenths / 10f);
+        getParameters().set("threshold", thresholdPreset);
+        getParameters().set("fix", restingFix ? 1 : 0);
+        getParameters().set("detection", detection == Detection.SWEPT ? 0 : 1);
         restart();
     }
 

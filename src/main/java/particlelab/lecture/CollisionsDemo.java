@@ -47,6 +47,9 @@ import particlelab.world.World;
  */
 public final class CollisionsDemo extends DemoState {
 
+    /** The presets' command-line names, in the order of {@link Preset}. */
+    public static final String[] PRESET_NAMES = {"head-on", "glancing", "cradle", "paddle"};
+
     /** The presets, in the order the P key cycles them. */
     public enum Preset {
         /** Two balls meeting along the line of centres. */
@@ -215,6 +218,13 @@ public final class CollisionsDemo extends DemoState {
                         setRestitutionTenths(tenths);
                     }
                 }));
+        // The preset, as the P key steps through them.
+        declareParameter(DemoParameter.choice("preset", "collision preset", PRESET_NAMES,
+                preset.ordinal(), DemoParameter.Applies.LIVE, value -> {
+                    if (Math.round(value) != preset.ordinal()) {
+                        choose(Preset.values()[Math.round(value)]);
+                    }
+                }));
     }
 
     @Override
@@ -309,6 +319,8 @@ public final class CollisionsDemo extends DemoState {
             throw new IllegalArgumentException("preset must be one of the presets, not null");
         }
         preset = newPreset;
+        // The panel and --set show the preset the key or a caller chose.
+        getParameters().set("preset", preset.ordinal());
         arrange();
         restart();
     }

@@ -7,6 +7,7 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
 import particlelab.aiming.Hitscan;
 import particlelab.collision.Plane;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
@@ -115,6 +116,8 @@ public final class FastBulletsDemo extends DemoState {
                     + ", but was " + index);
         }
         speedIndex = index;
+        // The panel and --set show the speed the keys or a caller chose.
+        getParameters().set("speed", index);
         fire();
     }
 
@@ -234,6 +237,21 @@ public final class FastBulletsDemo extends DemoState {
         setView(-3f, DISTANCE + 12f, GUN_HEIGHT + 4f, 2f, 5, 0.3f);
         hideArrowsAtStart();
         fire();
+    }
+
+    @Override
+    protected void declareParameters() {
+        // The speeds the Up and Down keys step through, named by their value in m/s.
+        String[] names = new String[SPEEDS.length];
+        for (int i = 0; i < SPEEDS.length; ++i) {
+            names[i] = Integer.toString(Math.round(SPEEDS[i]));
+        }
+        declareParameter(DemoParameter.choice("speed", "launch speed, m/s", names, speedIndex,
+                DemoParameter.Applies.LIVE, value -> {
+                    if (Math.round(value) != speedIndex) {
+                        setSpeedIndex(Math.round(value));
+                    }
+                }));
     }
 
     @Override

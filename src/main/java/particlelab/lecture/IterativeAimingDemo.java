@@ -11,6 +11,7 @@ import particlelab.aiming.LevelAim;
 import particlelab.aiming.PredictorMismatch;
 import particlelab.aiming.ShotLog;
 import particlelab.aiming.ShotSimulator;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
@@ -83,6 +84,8 @@ public final class IterativeAimingDemo extends DemoState {
             + "predicted_flight_s,predicted_miss_m,flown_landing_x_m";
     /** The believable player's seed at the start. */
     public static final long DEFAULT_SEED = 1L;
+    /** The names of a switch's two states, off first. */
+    private static final String[] OFF_ON = {"off", "on"};
     /** The strategies the G key cycles through, in order. */
     private static final AimStrategy[] STRATEGIES = {AimStrategy.LECTURE,
         AimStrategy.BISECTION, AimStrategy.SECANT, AimStrategy.BELIEVABLE};
@@ -200,6 +203,7 @@ public final class IterativeAimingDemo extends DemoState {
                     + " believable, but was " + newStrategy);
         }
         strategy = newStrategy;
+        getParameters().set("strategy", indexOfStrategy(strategy));
         restart();
     }
 
@@ -222,6 +226,7 @@ public final class IterativeAimingDemo extends DemoState {
             throw new IllegalArgumentException("drag must be LINEAR or QUADRATIC, but was null");
         }
         drag = newDrag;
+        getParameters().set("drag", drag.ordinal());
         linearDrag.setCoefficient(drag == Drag.LINEAR ? LINEAR_DRAG : 0f);
         quadraticDrag.setCoefficient(drag == Drag.QUADRATIC ? QUADRATIC_DRAG : 0f);
         refreshEquations();
@@ -244,6 +249,7 @@ public final class IterativeAimingDemo extends DemoState {
      */
     public void setInstant(boolean newInstant) {
         instant = newInstant;
+        getParameters().set("instant", instant ? 1 : 0);
         restart();
     }
 
@@ -264,6 +270,7 @@ public final class IterativeAimingDemo extends DemoState {
      */
     public void setMismatch(boolean newMismatch) {
         mismatch = newMismatch;
+        getParameters().set("predictor", mismatch ? 1 : 0);
         restart();
     }
 
@@ -414,6 +421,41 @@ public final class IterativeAimingDemo extends DemoState {
         setView(-4f, TARGET_DISTANCE + 14f, MAX_VIEW_TOP, 4f, 5, 0.7f);
         hideArrowsAtStart();
         startRound();
+    }
+
+    @Override
+    protected void declareParameters() {
+        // The states the G, L, I and P keys switch; each setter mirrors into its parameter.
+        String[] strategies = new String[STRATEGIES.length];
+        for (int i = 0; i < STRATEGIES.length; ++i) {
+            strategies[i] = STRATEGIES[i].cliName();
+        }
+        declareParameter(DemoParameter.choice("strategy", "aiming strategy", strategies,
+                indexOfStrategy(strategy), DemoParameter.Applies.LIVE, value -> {
+                    if (Math.round(value) != indexOfStrategy(strategy)) {
+                        setStrategy(STRATEGIES[Math.round(value)]);
+                    }
+                }));
+        String[] laws = {"linear", "quadratic"};
+        declareParameter(DemoParameter.choice("drag", "drag law", laws, drag.ordinal(),
+                DemoParameter.Applies.LIVE, value -> {
+                    if (Math.round(value) != drag.ordinal()) {
+                        setDrag(Drag.values()[Math.round(value)]);
+                    }
+                }));
+        declareParameter(DemoParameter.choice("instant", "instant mode", OFF_ON, instant ? 1 : 0,
+                DemoParameter.Applies.LIVE, value -> {
+                    if ((Math.round(value) == 1) != instant) {
+                        setInstant(Math.round(value) == 1);
+                    }
+                }));
+        declareParameter(DemoParameter.choice("predictor", "predictor's step",
+                new String[] {"own", "mismatch"}, mismatch ? 1 : 0, DemoParameter.Applies.LIVE,
+                value -> {
+                    if ((Math.round(value) == 1) != mismatch) {
+                        setMismatch(Math.round(value) == 1);
+                    }
+                }));
     }
 
     @Override

@@ -6,6 +6,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
 import java.util.List;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.demo.StepTable;
@@ -68,8 +69,10 @@ public final class RotationDemo extends DemoState {
     public static final float DEFAULT_OMEGA = 3f;
     public static final float MIN_OMEGA = 0.75f;
     public static final float MAX_OMEGA = 12f;
-    /** The range of h for the keys (s). */
-    public static final float MIN_STEP = 1f / 480f;
+    /** The |ω| the keys and the panel step through (rad/s): halving and doubling. */
+    private static final float[] OMEGA_STOPS = {0.75f, 1.5f, 3f, 6f, 12f};
+    /** The range of h for the keys (s): the shared step parameter's, so --set reaches it. */
+    public static final float MIN_STEP = 1f / 240f;
     public static final float MAX_STEP = 1f / 15f;
     /** The spin axis, tilted toward the camera so the boxes tumble (unit vector). */
     public static final Vector3f AXIS = new Vector3f(0.2f, 0.4f, 0.9f).normalizeLocal();
@@ -234,6 +237,17 @@ public final class RotationDemo extends DemoState {
     }
 
     @Override
+    protected void declareParameters() {
+        // |ω|, as the Up and Down keys double and halve it; h is the shared step parameter.
+        declareParameter(new DemoParameter("omega", "spin |ω|", "rad/s", MIN_OMEGA, MAX_OMEGA,
+                MIN_OMEGA, DEFAULT_OMEGA, 2, DemoParameter.Applies.LIVE, value -> {
+                    if (value != omegaMagnitude) {
+                        setOmega(value);
+                    }
+                }).withStops(OMEGA_STOPS));
+    }
+
+    @Override
     protected void declareKeys() {
         fasterKey = bindKey(KeyInput.KEY_UP, "Up", "|ω| x2 (restarts the boxes)",
                 () -> changeOmega(2f));
@@ -385,8 +399,14 @@ public final class RotationDemo extends DemoState {
     }
 
     private void changeOmega(float factor) {
-        omegaMagnitude = Math.max(MIN_OMEGA, Math.min(MAX_OMEGA, omegaMagnitude * factor));
+        setOmega(Math.max(MIN_OMEGA, Math.min(MAX_OMEGA, omegaMagnitude * factor)));
+    }
+
+    private void setOmega(float magnitude) {
+        omegaMagnitude = magnitude;
         omega.set(AXIS).multLocal(omegaMagnitude);
+        // The panel and --set show the |ω| the keys chose.
+        getParameters().set("omega", magnitude);
         restart();
     }
 
@@ -394,6 +414,7 @@ public final class RotationDemo extends DemoState {
         SimulationClock clock = getClock();
         float step = Math.max(MIN_STEP, Math.min(MAX_STEP, clock.getStepSeconds() * factor));
         clock.setStepSeconds(step);
+        getParameters().set("h", step);
         // The keys set the fixed step; the HUD's stepping line shows the new h.
         clock.setMode(SimulationClock.Mode.FIXED_STEP);
     }

@@ -8,6 +8,7 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
 import particlelab.collision.Plane;
 import particlelab.collision.ThinWall;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.physics.Gravity;
@@ -76,6 +77,10 @@ public final class TargetsDemo extends DemoState {
     private static final float X_MIN = -2f;
     private static final float Y_MAX = 8f;
     private static final float ANGLE_STEP_DEGREES = 2.5f;
+    /** The lowest aim the keys give (in degrees above the horizontal). */
+    private static final float MIN_AIM_DEGREES = 5f;
+    /** The highest aim the keys give (in degrees above the horizontal). */
+    private static final float MAX_AIM_DEGREES = 85f;
     private static final int FRAGMENT_GROUP = 4;
     private static final ColorRGBA TARGET_COLOR = new ColorRGBA(1f, 0.3f, 0.3f, 1f);
     private static final ColorRGBA FRAGMENT_COLOR = new ColorRGBA(1f, 0.7f, 0.3f, 1f);
@@ -170,6 +175,26 @@ public final class TargetsDemo extends DemoState {
         }
         spawnTargets();
         setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
+    }
+
+    @Override
+    protected void declareParameters() {
+        // The aim, as the Up and Down keys change it; the pane, as G switches it.
+        declareParameter(new DemoParameter("angle", "aim above the horizontal", "deg",
+                MIN_AIM_DEGREES, MAX_AIM_DEGREES, ANGLE_STEP_DEGREES, angleDegrees, 1,
+                DemoParameter.Applies.LIVE, value -> {
+                    if (value != angleDegrees) {
+                        angleDegrees = value;
+                        fire();
+                    }
+                }));
+        String[] panes = {"ghost", "solid"};
+        declareParameter(DemoParameter.choice("pane", "the pane", panes, paneGhost ? 0 : 1,
+                DemoParameter.Applies.LIVE, value -> {
+                    if ((Math.round(value) == 0) != paneGhost) {
+                        togglePane();
+                    }
+                }));
     }
 
     @Override
@@ -462,12 +487,15 @@ public final class TargetsDemo extends DemoState {
     }
 
     private void aimBy(float degrees) {
-        angleDegrees = Math.max(5f, Math.min(85f, angleDegrees + degrees));
+        angleDegrees = Math.max(MIN_AIM_DEGREES, Math.min(MAX_AIM_DEGREES,
+                angleDegrees + degrees));
+        getParameters().set("angle", angleDegrees);
         fire();
     }
 
     private void togglePane() {
         paneGhost = !paneGhost;
+        getParameters().set("pane", paneGhost ? 0 : 1);
         if (paneView != null) {
             WallView.setColor(paneView, paneGhost ? PANE_GHOST : PANE_SOLID);
         }

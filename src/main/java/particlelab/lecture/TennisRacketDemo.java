@@ -5,6 +5,7 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.physics.ParticleIntegrator;
@@ -134,6 +135,7 @@ public final class TennisRacketDemo extends DemoState {
      */
     public void setGyroscopic(boolean on) {
         gyroscopic = on;
+        getParameters().set("gyro", on ? 1 : 0);
         for (int i = 0; i < METHODS.length; ++i) {
             worldBodies[i].setRotation(bodies[i], rotationStep(i));
         }
@@ -164,10 +166,25 @@ public final class TennisRacketDemo extends DemoState {
     }
 
     @Override
+    protected void declareParameters() {
+        // The racket shown and the gyroscopic term, as the I and G keys switch them.
+        String[] methods = {"explicit", "midpoint"};
+        declareParameter(DemoParameter.choice("method", "racket shown", methods, shown,
+                DemoParameter.Applies.LIVE, value -> shown = Math.round(value)));
+        declareParameter(DemoParameter.choice("gyro", "gyroscopic term",
+                new String[] {"off", "on"}, gyroscopic ? 1 : 0, DemoParameter.Applies.LIVE,
+                value -> {
+                    if ((Math.round(value) == 1) != gyroscopic) {
+                        setGyroscopic(Math.round(value) == 1);
+                    }
+                }));
+    }
+
+    @Override
     protected void declareKeys() {
         methodKey = bindKey(KeyInput.KEY_I, "I",
                 "racket shown: explicit Euler <-> implicit midpoint for ω",
-                () -> shown = 1 - shown);
+                () -> getParameters().set("method", 1 - shown));
         gyroscopicKey = bindKey(KeyInput.KEY_G, "G",
                 "gyroscopic term ω × (I·ω) on <-> off (starts again; off, it never flips)",
                 () -> setGyroscopic(!gyroscopic));

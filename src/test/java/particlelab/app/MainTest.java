@@ -119,7 +119,7 @@ class MainTest {
      */
     @Test
     void everyDeclaredCommandHasHelpAndRefusesABadOption() {
-        assertEquals(9, Commands.all().size(), "the launcher's commands");
+        assertEquals(10, Commands.all().size(), "the launcher's commands");
         for (Command command : Commands.all()) {
             CommandRun help = CommandRun.of(command.name(), "--help");
             assertEquals(0, help.code, command.name() + ": " + help);

@@ -155,4 +155,45 @@ class DemoParametersTest {
         assertEquals("b = 0.90 N s/m vs 0.30 N s/m,  speed = 14.00 m/s vs 20.00 m/s",
                 text.toString());
     }
+
+    @Test
+    void aChoiceIsSetByIndexShownByNameAndStepsThroughItsNames() {
+        DemoParameters parameters = new DemoParameters();
+        parameters.add(DemoParameter.choice("preset", "collision preset",
+                new String[] {"head-on", "glancing", "cradle"}, 0, DemoParameter.Applies.LIVE,
+                value -> record(0, value)));
+        DemoParameter preset = parameters.get(0);
+        assertTrue(preset.isChoice());
+        assertEquals(1, preset.indexOfChoice("glancing"));
+        assertEquals(-1, preset.indexOfChoice("Glancing"));
+        assertEquals("preset (collision preset) one of head-on|glancing|cradle",
+                preset.toString());
+        parameters.start();
+        parameters.set(0, 2f);
+        assertEquals(2f, applied[0]);
+        assertEquals("> preset = cradle   collision preset\n",
+                parameters.formatPanel(new StringBuilder()).toString());
+        // The panel's keys step one name at a time and stop at the ends.
+        parameters.nudgeSelected(1);
+        assertEquals(2f, parameters.getValue(0));
+        parameters.nudgeSelected(-1);
+        assertEquals(1f, parameters.getValue(0));
+        // Between two names is no value.
+        assertFalse(preset.accepts(0.5f));
+        assertThrows(IllegalArgumentException.class, () -> parameters.set(0, 0.5f));
+        assertEquals(1f, parameters.getValue(0));
+    }
+
+    @Test
+    void aChoiceNeedsTwoDistinctCommandLineNames() {
+        DemoParameter.Setter none = value -> { };
+        assertThrows(IllegalArgumentException.class, () -> DemoParameter.choice("mode",
+                "mode", new String[] {"only"}, 0, DemoParameter.Applies.LIVE, none));
+        assertThrows(IllegalArgumentException.class, () -> DemoParameter.choice("mode",
+                "mode", new String[] {"on", "on"}, 0, DemoParameter.Applies.LIVE, none));
+        assertThrows(IllegalArgumentException.class, () -> DemoParameter.choice("mode",
+                "mode", new String[] {"on", "Off"}, 0, DemoParameter.Applies.LIVE, none));
+        assertThrows(IllegalArgumentException.class, () -> DemoParameter.choice("mode",
+                "mode", new String[] {"on", "off"}, 2, DemoParameter.Applies.LIVE, none));
+    }
 }

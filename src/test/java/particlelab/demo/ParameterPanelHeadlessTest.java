@@ -94,8 +94,8 @@ class ParameterPanelHeadlessTest {
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k");
         assertNames(HelloAimingDemo.class, "h", "vx", "g");
-        assertNames(BounceDemo.class, "h", "e");
-        assertNames(CollisionsDemo.class, "h", "e");
+        assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");
+        assertNames(CollisionsDemo.class, "h", "e", "preset");
         assertNames(WindDemo.class, "h", "w");
     }
 

@@ -1,0 +1,287 @@
+package particlelab.app;
+
+import com.jme3.math.Vector3f;
+import java.util.List;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.HudNote;
+import particlelab.lecture.AnyHeightDemo;
+import particlelab.lecture.CollisionsDemo;
+import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.HelloAimingDemo;
+import particlelab.lecture.IterativeAimingDemo;
+import particlelab.lecture.RotationDemo;
+import particlelab.lecture.TunnellingDemo;
+import particlelab.view.TextFormat;
+
+/**
+ * Lecture 15 in slide order: one explicit list, like {@link DemoCatalog}. Each stop names its
+ * slide as the lecture titles it, the demo that shows it, the {@code --set} values that put
+ * the demo in the state the slide needs, and what to watch for: lines on the HUD written
+ * from the demo's live numbers at each refresh (allocating nothing). {@code particle-lab tour}
+ * walks them ({@link TourCommand}), PageDown and PageUp step through them in the window, and
+ * {@code docs/lecturing.md} is checked against this list.
+ */
+public final class LectureTour {
+
+    /** One slide of the lecture and the demo state it needs. */
+    public static final class Stop {
+
+        private final String slide;
+        private final String demo;
+        private final List<String> settings;
+        private final HudNote watch;
+
+        /**
+         * Declare a stop.
+         *
+         * @param slide the slide's title as the lecture has it (not null, not empty)
+         * @param demo the demo's command-line name, one of {@link DemoCatalog#names()}
+         * @param watch writes the "what to watch for" lines from the demo's numbers (not null)
+         * @param settings the demo's {@code --set NAME=VALUE} values, none for its defaults
+         */
+        Stop(String slide, String demo, HudNote watch, String... settings) {
+            this.slide = slide;
+            this.demo = demo;
+            this.watch = watch;
+            this.settings = List.of(settings);
+        }
+
+        /** @return the slide's title, e.g. "Collision Response" (not null) */
+        public String getSlide() {
+            return slide;
+        }
+
+        /** @return the demo's command-line name, e.g. "collisions" (not null) */
+        public String getDemo() {
+            return demo;
+        }
+
+        /** @return the demo's {@code NAME=VALUE} settings, in order (not null, unmodifiable) */
+        public List<String> getSettings() {
+            return settings;
+        }
+
+        /** @return what writes the "what to watch for" lines (not null) */
+        public HudNote getWatch() {
+            return watch;
+        }
+
+        /**
+         * Write the stop as {@code tour --list} prints it, e.g. "3   Kinematics vs dynamics:
+         * collisions --set preset=paddle": what follows the colon, after {@code particle-lab
+         * demo}, opens the same state.
+         *
+         * @param number the stop's number (from 1)
+         * @return the line (not null)
+         */
+        public String describe(int number) {
+            StringBuilder text = new StringBuilder();
+            text.append(number).append(number < 10 ? "   " : "  ").append(slide).append(": ")
+                    .append(demo);
+            for (String setting : settings) {
+                text.append(" --set ").append(setting);
+            }
+            return text.toString();
+        }
+    }
+
+    /** What every stop's first HUD line starts with. */
+    public static final String WATCH = "Watch: ";
+
+    /** The stops, in slide order. */
+    private static final List<Stop> STOPS = List.of(
+            new Stop("Collision Response", "collisions", LectureTour::watchImpulse,
+                    "preset=head-on", "e=0.8"),
+            new Stop("Collision Resolution", "collisions", LectureTour::watchCradle,
+                    "preset=cradle", "e=1"),
+            new Stop("Kinematics vs dynamics", "collisions", LectureTour::watchPaddle,
+                    "preset=paddle"),
+            new Stop("Discrete particle motion", "uniform", LectureTour::watchUniform),
+            new Stop("Example: gravitational pull", "pull", LectureTour::watchFall),
+            new Stop("Example: pull + drag", "drag", LectureTour::watchDrag),
+            new Stop("Example: pull + drag + thrust", "thrust", LectureTour::watchThrust),
+            new Stop("Rotation", "rotation", LectureTour::watchRotation, "omega=6"),
+            new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
+                    "h=1/10"),
+            new Stop("Targeting problem", "height", LectureTour::watchHeights),
+            new Stop("HelloAiming", "aiming", LectureTour::watchAiming),
+            new Stop("Euler steps: advantages and disadvantages", "tunnelling",
+                    LectureTour::watchTunnelling),
+            new Stop("If accuracy matters: cheat", "cheat", LectureTour::watchCheat,
+                    "speed=900"),
+            new Stop("Computer science approach: iterations", "iterate",
+                    LectureTour::watchIterations, "strategy=bisection", "drag=quadratic"));
+
+    private LectureTour() {
+    }
+
+    /**
+     * Access the stops in slide order.
+     *
+     * @return the stops (not null, unmodifiable)
+     */
+    public static List<Stop> stops() {
+        return STOPS;
+    }
+
+    /**
+     * Write a stop's HUD heading: "Tour 3/14: Kinematics vs dynamics (PageDown: next)".
+     *
+     * @param text where to append (not null, modified)
+     * @param index the stop (from 0)
+     * @return text
+     */
+    static StringBuilder appendHeading(StringBuilder text, int index) {
+        return text.append("Tour ").append(index + 1).append('/').append(STOPS.size())
+                .append(": ").append(STOPS.get(index).getSlide())
+                .append("   (PageDown next, PageUp back)\n");
+    }
+
+    // ------------------------------------------------ what to watch for, per stop ----
+
+    private static void watchImpulse(DemoState demo, StringBuilder text) {
+        CollisionsDemo collisions = (CollisionsDemo) demo;
+        text.append(WATCH);
+        if (collisions.countImpactSteps() == 0) {
+            text.append("the balls close in; the impulse j acts along n in one step\n");
+            return;
+        }
+        text.append("momentum is kept, kinetic energy is not: lost ");
+        TextFormat.appendFixed(text, collisions.getImpactEnergyBefore()
+                - collisions.getImpactEnergyAfter(), 3).append(" J, and ½·μ·(1 − e²)·v_n² = ");
+        TextFormat.appendFixed(text, collisions.getImpactPredictedLoss(), 3)
+                .append(" J predicts it\n");
+    }
+
+    private static void watchCradle(DemoState demo, StringBuilder text) {
+        CollisionsDemo collisions = (CollisionsDemo) demo;
+        text.append(WATCH).append("contacts resolved worst first, one step at a time: ")
+                .append(collisions.countImpactSteps()).append(" impact steps so far, kinetic"
+                        + " energy now ");
+        TextFormat.appendFixed(text, collisions.kineticEnergy(), 3)
+                .append(" J (e = 1: it should stay)\n");
+    }
+
+    private static void watchPaddle(DemoState demo, StringBuilder text) {
+        CollisionsDemo collisions = (CollisionsDemo) demo;
+        text.append(WATCH).append("the balls' kinetic energy is ");
+        TextFormat.appendFixed(text, collisions.kineticEnergy(), 3)
+                .append(" J, from 0: the scripted paddle (kinematics) does work no force"
+                        + " accounts for\n");
+    }
+
+    private static void watchUniform(DemoState demo, StringBuilder text) {
+        DemoParticle sphere = demo.getParticles().get(0);
+        Vector3f position = sphere.getParticle().position;
+        text.append(WATCH).append("P += h·V each step; at t = ");
+        TextFormat.appendFixed(text, demo.getClock().getSimulatedSeconds(), 2)
+                .append(" s the sphere is at x = ");
+        TextFormat.appendFixed(text, position.x, 2).append(" m, a straight line\n");
+    }
+
+    private static void watchFall(DemoState demo, StringBuilder text) {
+        Vector3f velocity = demo.getParticles().get(0).getParticle().velocity;
+        text.append(WATCH).append("V += h·g, then P += h·V: vy is ");
+        TextFormat.appendFixed(text, velocity.y, 2)
+                .append(" m/s now, falling by g·h each step; vx stays ");
+        TextFormat.appendFixed(text, velocity.x, 2).append(" m/s\n");
+    }
+
+    private static void watchDrag(DemoState demo, StringBuilder text) {
+        List<DemoParticle> particles = demo.getParticles();
+        text.append(WATCH).append("|V| without drag ");
+        TextFormat.appendFixed(text, particles.get(0).getParticle().velocity.length(), 2)
+                .append(" m/s, linear ");
+        TextFormat.appendFixed(text, particles.get(1).getParticle().velocity.length(), 2)
+                .append(" m/s, quadratic ");
+        TextFormat.appendFixed(text, particles.get(2).getParticle().velocity.length(), 2)
+                .append(" m/s: drag caps the speed\n");
+    }
+
+    private static void watchThrust(DemoState demo, StringBuilder text) {
+        List<DemoParticle> particles = demo.getParticles();
+        text.append(WATCH).append("|V| pull + drag ");
+        TextFormat.appendFixed(text, particles.get(0).getParticle().velocity.length(), 2)
+                .append(" m/s, with thrust ");
+        TextFormat.appendFixed(text, particles.get(1).getParticle().velocity.length(), 2)
+                .append(" m/s: a force is one more term in the sum\n");
+    }
+
+    private static void watchRotation(DemoState demo, StringBuilder text) {
+        RotationDemo rotation = (RotationDemo) demo;
+        text.append(WATCH).append("R += h·[ω]×R is no rotation: plain Euler restarted ")
+                .append(rotation.countPlainRestarts()).append(" times; the quaternion box"
+                        + " lags the exact one by ");
+        TextFormat.appendFixed(text, rotation.getLagRadians(2), 4).append(" rad\n");
+    }
+
+    private static void watchCoarseFall(DemoState demo, StringBuilder text) {
+        DemoParticle ball = demo.getParticles().get(0);
+        text.append(WATCH).append("h = ");
+        TextFormat.appendFixed(text, demo.getClock().getStepSeconds(), 3).append(" s: ");
+        if (ball.hasLanded()) {
+            text.append("landed at x = ");
+            TextFormat.appendFixed(text, ball.getLandingX(), 2)
+                    .append(" m; compare with h = 1/60 (one stop back)\n");
+        } else {
+            text.append("the dots are the steps; the path between them is a guess\n");
+        }
+    }
+
+    private static void watchHeights(DemoState demo, StringBuilder text) {
+        AnyHeightDemo height = (AnyHeightDemo) demo;
+        text.append(WATCH).append("two launch angles reach the target: arrival height direct ");
+        appendArrival(text, height, false).append(", lob ");
+        appendArrival(text, height, true).append('\n');
+    }
+
+    private static StringBuilder appendArrival(StringBuilder text, AnyHeightDemo height,
+            boolean lob) {
+        if (!height.hasArrived(lob)) {
+            return text.append("(flying)");
+        }
+        return TextFormat.appendFixed(text, height.getArrivalHeight(lob), 2).append(" m");
+    }
+
+    private static void watchAiming(DemoState demo, StringBuilder text) {
+        HelloAimingDemo aiming = (HelloAimingDemo) demo;
+        text.append(WATCH).append("vy = ");
+        TextFormat.appendFixed(text, aiming.getVerticalSpeed(), 2).append(" m/s from the"
+                + " formula; ");
+        if (aiming.getLandedShotNumber() == 0) {
+            text.append("shot ").append(aiming.getShotNumber()).append(" in flight, t = ");
+            TextFormat.appendFixed(text, demo.getClock().getSimulatedSeconds(), 2)
+                    .append(" s: does it land on the target?\n");
+            return;
+        }
+        text.append("shot ").append(aiming.getLandedShotNumber()).append(" landed at x = ");
+        TextFormat.appendFixed(text, aiming.getLastLandingX(), 2).append(" m\n");
+    }
+
+    private static void watchTunnelling(DemoState demo, StringBuilder text) {
+        TunnellingDemo tunnelling = (TunnellingDemo) demo;
+        text.append(WATCH).append("overlap test hit ").append(tunnelling.countHits(false))
+                .append(" of ").append(tunnelling.countShots(false)).append(", swept test ")
+                .append(tunnelling.countHits(true)).append(" of ")
+                .append(tunnelling.countShots(true)).append("; predicted miss chance ");
+        TextFormat.appendFixed(text, 100.0 * tunnelling.predictedMissProbability(), 0)
+                .append(" %\n");
+    }
+
+    private static void watchCheat(DemoState demo, StringBuilder text) {
+        FastBulletsDemo cheat = (FastBulletsDemo) demo;
+        text.append(WATCH).append("at ");
+        TextFormat.appendFixed(text, cheat.getSpeed(), 0).append(" m/s the stepped shot drops ");
+        TextFormat.appendFixed(text, cheat.getSteppedDrop(), 3).append(" m by the target: the"
+                + " ray's straight line is ").append(cheat.isHit() ? "close enough" : "off")
+                .append('\n');
+    }
+
+    private static void watchIterations(DemoState demo, StringBuilder text) {
+        IterativeAimingDemo iterate = (IterativeAimingDemo) demo;
+        text.append(WATCH).append(iterate.getStrategy().cliName()).append(": ")
+                .append(iterate.countLanded()).append(" shots landed so far; no formula,"
+                        + " the simulation itself is the predictor\n");
+    }
+}

@@ -1,0 +1,151 @@
+package particlelab.app;
+
+import java.io.File;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.List;
+import particlelab.demo.DemoState;
+import particlelab.files.SafeFiles;
+import particlelab.view.HudScale;
+
+/**
+ * {@code particle-lab tour [options]}: walk lecture 15 slide by slide ({@link LectureTour}).
+ * Each stop opens its demo in the state the slide needs and shows what to watch for on the
+ * HUD; PageDown and PageUp go forward and back, F7 leaves the tour (and starts it from any
+ * demo window).
+ *
+ * <pre>
+ *   particle-lab tour --list
+ *   particle-lab tour
+ *   particle-lab tour --stop 3 --frames 120 --fixed-tpf 0.016666668 --screenshot stop3.png
+ * </pre>
+ *
+ * Exit status: 0 when the window ran (and the screenshot was written), 1 when it could not
+ * run (no display, no OpenGL), 2 for a usage error.
+ */
+public final class TourCommand {
+
+    /** The subcommand's name. */
+    public static final String NAME = "tour";
+    private static final String LIST = "--list";
+    private static final String STOP = "--stop";
+    private static final String FRAMES = "--frames";
+    private static final String SCREENSHOT = "--screenshot";
+    private static final String FIXED_TPF = "--fixed-tpf";
+    private static final float MAX_FIXED_TPF = 1f;
+    private static final String WINDOW = "--window";
+    private static final String UI_SCALE = "--ui-scale";
+
+    private TourCommand() {
+    }
+
+    /**
+     * Declare the command's options, for parsing and for its help.
+     *
+     * @return new options (not null)
+     */
+    static Options options() {
+        int count = LectureTour.stops().size();
+        return new Options(Main.PROGRAM + " " + NAME,
+                "Walk lecture 15 slide by slide: each stop opens the slide's demo in the state"
+                        + " it needs and shows what to watch for on the HUD; PageDown and"
+                        + " PageUp go forward and back, F7 leaves the tour.")
+                .flag(LIST, "print the stops (number, slide, demo and settings) and exit")
+                .value(STOP, "N", "open on stop N, 1 to " + count + " (default 1)")
+                .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
+                .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames);"
+                        + " an existing FILE is refused (replaced with " + SafeFiles.FORCE
+                        + ")")
+                .value(FIXED_TPF, "H", "feed every frame the same time H seconds"
+                        + " (0 < H <= 1), so a run and its screenshot are reproducible")
+                .value(WINDOW, "WxH", "open the window at W x H pixels (default 1280x720)")
+                .value(UI_SCALE, "S", "make the HUD's text S times the size that suits the"
+                        + " window (" + HudScale.MIN_FACTOR + " <= S <= " + HudScale.MAX_FACTOR
+                        + ", default 1)")
+                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " replace an existing regular"
+                        + " file")
+                .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
+                        + " no OpenGL), 2 on a bad command line.");
+    }
+
+    /**
+     * Run the command.
+     *
+     * @param args the arguments after {@code tour} (not null)
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int run(String[] args, PrintStream out, PrintStream err) {
+        Options options = options();
+        List<LectureTour.Stop> stops = LectureTour.stops();
+        int stop;
+        int frames;
+        File screenshot;
+        float fixedTpf;
+        int[] window;
+        float uiScale;
+        boolean force;
+        try {
+            options.parse(args);
+            if (options.isHelpRequested()) {
+                out.print(options.help());
+                return DemoCommand.OK;
+            }
+            if (options.has(LIST)) {
+                for (int i = 0; i < stops.size(); ++i) {
+                    out.println(stops.get(i).describe(i + 1));
+                }
+                return DemoCommand.OK;
+            }
+            stop = options.intInRange(STOP, 1, 1, stops.size()) - 1;
+            frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
+            String file = options.string(SCREENSHOT, null);
+            screenshot = file == null ? null : new File(file);
+            fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF) : Float.NaN;
+            if (fixedTpf > MAX_FIXED_TPF) {
+                throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
+                        + " s, but was " + fixedTpf);
+            }
+            window = DemoCommand.parseWindow(options.string(WINDOW, null));
+            uiScale = DemoCommand.parseUiScale(options);
+            if (screenshot != null && frames == 0) {
+                throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
+                        + " knows which frame to save");
+            }
+            force = options.has(SafeFiles.FORCE);
+            if (force && screenshot == null) {
+                throw new UsageException(SafeFiles.FORCE + ": replaces the file of "
+                        + SCREENSHOT + "; give it");
+            }
+            if (screenshot != null) {
+                DemoCommand.checkScreenshotPath(file, force);
+            }
+        } catch (UsageException e) {
+            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
+            return DemoCommand.USAGE;
+        }
+        Path shotFolder = screenshot == null ? null
+                : screenshot.toPath().toAbsolutePath().getParent();
+        Path created = null;
+        try {
+            if (shotFolder != null) {
+                created = OutputFolders.create(SCREENSHOT, shotFolder);
+            }
+        } catch (UsageException e) {
+            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
+            return DemoCommand.USAGE;
+        }
+        if (window != null) {
+            System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
+        }
+        List<DemoState> demos = DemoCatalog.createAll();
+        int demoIndex = DemoCatalog.indexOf(stops.get(stop).getDemo());
+        int status = DemoCommand.openWindow(demos, demoIndex, stop, frames, screenshot,
+                fixedTpf, uiScale, null, force, out, err);
+        if (status != DemoCommand.OK && shotFolder != null) {
+            SafeFiles.removeCreated(shotFolder, created);
+        }
+        return status;
+    }
+}

@@ -1,0 +1,113 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+
+/**
+ * The lecture tour in a real headless application: PageDown opens every stop in turn (its
+ * demo shown, in the stop's state, its heading and watch line on the HUD), PageUp goes
+ * back, F7 leaves the tour, and every demo's help lists the three keys.
+ */
+class TourHeadlessTest {
+
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        harness = HeadlessHarness.start(DemoCatalog.createAll());
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void pageDownOpensEveryStopInItsStateAndPageUpGoesBack() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<LectureTour.Stop> stops = LectureTour.stops();
+        for (int i = 0; i < stops.size(); ++i) {
+            press("PageDown");
+            harness.awaitFrames(3);
+            assertStopShown(app, i);
+        }
+        // The last stop stays the last.
+        press("PageDown");
+        harness.awaitFrames(2);
+        assertStopShown(app, stops.size() - 1);
+        press("PageUp");
+        harness.awaitFrames(2);
+        assertStopShown(app, stops.size() - 2);
+        // Back at the first stop, collisions is head-on again after the cradle and paddle.
+        for (int i = 0; i < stops.size(); ++i) {
+            press("PageUp");
+        }
+        harness.awaitFrames(2);
+        assertStopShown(app, 0);
+
+        press("F7");
+        harness.awaitFrames(2);
+        assertEquals(TourGuide.NOT_TOURING, (int) harness.call(() -> app.getTour().getStop()));
+        for (DemoState demo : app.getSwitcher().getDemos()) {
+            assertNull(demo.getNote(), demo.getTitle() + " kept a tour note");
+        }
+    }
+
+    @Test
+    void everyDemosHelpListsTheTourKeys() throws Exception {
+        ParticleLabApp app = harness.app();
+        for (DemoState demo : app.getSwitcher().getDemos()) {
+            String help = harness.call(demo::getHelpText);
+            for (String key : new String[] {"PageDown", "PageUp", "F7"}) {
+                assertTrue(help.contains(key + " "), demo.getTitle() + ": " + key + " in\n"
+                        + help);
+            }
+        }
+    }
+
+    /** The stop's demo is shown, in the stop's state, with its lines on the HUD. */
+    private static void assertStopShown(ParticleLabApp app, int index) throws Exception {
+        LectureTour.Stop stop = LectureTour.stops().get(index);
+        assertEquals(index, (int) harness.call(() -> app.getTour().getStop()));
+        DemoState expected = app.getSwitcher().getDemos()
+                .get(DemoCatalog.indexOf(stop.getDemo()));
+        assertSame(expected, harness.call(() -> app.getSwitcher().getSelected()),
+                stop.getSlide());
+        String hud = harness.call(() -> expected.formatHud(new StringBuilder()).toString());
+        String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": "
+                + stop.getSlide();
+        assertTrue(hud.contains(heading) && hud.contains(LectureTour.WATCH), hud);
+        // The state: each setting's value is the one the demo holds now.
+        DemoState reference = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
+        DemoCommand.applySettings(reference, stop.getSettings());
+        String panel = harness.call(() -> expected.getParameters()
+                .formatPanel(new StringBuilder()).toString().replace("> ", "  "));
+        assertEquals(reference.getParameters().formatPanel(new StringBuilder()).toString()
+                .replace("> ", "  "), panel, stop.getSlide());
+    }
+
+    /** Press one of the application's keys on the jME thread, as the window does. */
+    private static void press(String label) throws Exception {
+        ParticleLabApp app = harness.app();
+        harness.call(() -> {
+            for (KeyBinding binding : app.getSwitcher().getBindings()) {
+                for (int i = 0; i < binding.countKeys(); ++i) {
+                    if (binding.getKeyLabel(i).equals(label)) {
+                        binding.press(i);
+                        return true;
+                    }
+                }
+            }
+            throw new AssertionError("no application key " + label);
+        });
+    }
+}
