@@ -129,10 +129,20 @@ final class KeyTables {
             text.append("| `").append(parameter.getName()).append("` | ")
                     .append(escape(parameter.getLabel())).append(" | ");
             StringBuilder cell = new StringBuilder();
-            parameter.appendRange(cell);
-            // appendRange writes "name (label) from A to B": the row has name and label.
-            text.append(escape(cell.substring(cell.lastIndexOf(RANGE_FROM)
-                    + RANGE_FROM.length()))).append(" | ");
+            if (parameter.isChoice()) {
+                // A named state: its names, as --set takes them.
+                cell.append("one of ");
+                for (int k = 0; k < parameter.countChoices(); ++k) {
+                    cell.append(k == 0 ? "" : ", ").append('`').append(parameter.getChoice(k))
+                            .append('`');
+                }
+                text.append(escape(cell.toString())).append(" | ");
+            } else {
+                parameter.appendRange(cell);
+                // appendRange writes "name (label) from A to B": the row has name and label.
+                text.append(escape(cell.substring(cell.lastIndexOf(RANGE_FROM)
+                        + RANGE_FROM.length()))).append(" | ");
+            }
             cell.setLength(0);
             parameter.appendValue(cell, parameter.getDefault());
             text.append(escape(cell.toString())).append(" | ")

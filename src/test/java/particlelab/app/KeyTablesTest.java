@@ -25,9 +25,10 @@ import org.junit.jupiter.api.Test;
  * and {@code <!-- /params -->} what {@link KeyTables#parameterTable} writes for the demo NAME.
  * Every demo's page has both blocks.
  *
- * <p>After a key was added or renamed, rewrite every block in one command:
- * {@code PARTICLELAB_WRITE_DOCS=1 gradle test --tests 'particlelab.app.KeyTablesTest'}
- * (the test then rewrites the pages and passes; rerun it without the variable to check).
+ * <p>After a key was added or renamed, rewrite every block in one command (docs/testing.md):
+ * {@code PARTICLELAB_WRITE_DOCS=1 gradle --no-daemon test --tests ...KeyTablesTest} (a
+ * Gradle daemon started earlier would not see the variable); the test then rewrites the pages
+ * and passes; rerun it without the variable to check.
  */
 class KeyTablesTest {
 
@@ -72,7 +73,8 @@ class KeyTablesTest {
         assertTrue(blocks > 0, "the pages have key blocks");
         if (!write && !stale.isEmpty()) {
             fail(stale.size() + " key block(s) differ from the bindings; regenerate with "
-                    + WRITE_DOCS + "=1 gradle test --tests 'particlelab.app.KeyTablesTest'\n"
+                    + WRITE_DOCS + "=1 gradle --no-daemon test"
+                    + " --tests 'particlelab.app.KeyTablesTest'\n"
                     + String.join("\n", stale));
         }
     }
