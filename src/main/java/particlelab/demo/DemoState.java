@@ -716,6 +716,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Copy the rectangle the scene (its grid, ground and bodies) is drawn into on the screen,
+     * as last laid out: the region the camera frames, widened to the scene area's shape.
+     *
+     * @param storeResult storage for the rectangle (in pixels, not null, modified)
+     * @return storeResult
+     */
+    public ScreenRect copySceneRect(ScreenRect storeResult) {
+        return scene.copyDrawnRect(hud.getLayout().getScene(), storeResult);
+    }
+
+    /**
      * Copy the screen rectangle of every text shown, HUD and scene, into a list: what a test
      * checks for overlaps. The scene's texts are left out while the help hides them.
      *
