@@ -120,6 +120,8 @@ final class DemoScene {
     private float[] nearX = new float[0];
     private float[] nearY = new float[0];
     private int nearCount;
+    /** How many of the near points, the first ones, are trail points (not arrow samples). */
+    private int nearTrailCount;
     /**
      * The view's own listener on the demo's world: after each step, every particle the step
      * moved adds its position to its trail. The step itself writes no view.
@@ -638,15 +640,26 @@ final class DemoScene {
             int slot = keep ? current : best;
             LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
             if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
-                    || (keep ? currentScore : bestScore) > 0) {
+                    || (keep ? currentScore : bestScore) >= SPHERE_PENALTY
+                    || coversNearPoint(chosen)) {
                 // The sphere is under the panel or the graph, or every slot beside it covers
-                // text, a sphere or a trail, or leaves the window (large text on a crowded
-                // scene): the label waits for a free slot.
+                // text, a sphere or a trail point, or leaves the window (large text on a
+                // crowded scene): the label waits for a free slot.
                 view.hideLabel();
             } else {
                 view.placeLabel(plane, labelSize, slot, chosen);
             }
         }
+    }
+
+    /** Test whether a rectangle holds one of the trail points gathered last. */
+    private boolean coversNearPoint(ScreenRect place) {
+        for (int i = 0; i < nearTrailCount; ++i) {
+            if (place.contains(nearX[i], nearY[i])) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Collect the trail and arrow points within reach of any slot of a label, on screen. */
@@ -663,6 +676,9 @@ final class DemoScene {
                 float y = plane.screenY(trailPoint.y);
                 keepIfNear(x, y);
             }
+        }
+        nearTrailCount = nearCount;
+        for (int i = 0; i < particles.size(); ++i) {
             if (arrowsVisible) {
                 Vector3f position = particles.get(i).getParticle().position;
                 Vector3f velocity = particles.get(i).getParticle().velocity;
