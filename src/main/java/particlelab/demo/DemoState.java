@@ -633,9 +633,9 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
-     * suits it times the user's factor ({@link HudScale#layOut}: less if the scene would get
-     * too little of the window), and frame the camera for it if
-     * it has that size. Call on the jME thread, after initialisation.
+     * suits it times the user's factor ({@link HudScale#layOut}: a larger factor always gives
+     * larger text; lines are hidden where the window cannot hold them), and frame the camera
+     * for it if it has that size. Call on the jME thread, after initialisation.
      *
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)

@@ -6,10 +6,12 @@ import java.util.List;
 /**
  * Where the HUD's text goes on a window of a given size: pure arithmetic on the window's size
  * and the text's measured size, so it is tested without rendering. Top to bottom: the title,
- * the body (equations and live numbers), the warning band (kept even when empty, so the scene
- * does not jump when a warning comes and goes), the scene, and the footer at the bottom. Two
+ * the body (equations and live numbers), then the scene down to the window's bottom edge: the
+ * warning band is drawn over its sky (kept even when empty, so the scene does not jump when a
+ * warning comes and goes) and the footer on its ground, below {@link #getSceneFloor()}. Two
  * optional slots: a side panel down the right edge, between the title and the footer (the
- * body, warning and scene then stay left of it), and a graph in the scene's top right corner.
+ * body, warning and scene then stay left of it), and a graph in the scene's top right corner,
+ * below the warning band.
  * Each is asked for by its size at HUD scale 1 and is empty when not asked for. The
  * help overlay covers everything below the title and is set in columns, its first section (the
  * demo's own keys) first; it shrinks its text until every column fits the window.
@@ -181,8 +183,8 @@ public final class HudLayout {
         // Room for the body, the warning band and the footer: the window less the margins,
         // the title, the spaces around the body, the gaps around the scene and the scene's
         // least share.
-        float room = height - 2f * margin - titleHeight - 2f * BAND_SPACE * bodyLineHeight - 2f * gap
-                - MIN_SCENE_SHARE * height;
+        float room = height - 2f * margin - titleHeight - 2f * BAND_SPACE * bodyLineHeight
+                - 2f * gap - MIN_SCENE_SHARE * height;
         float needed = bodyLinesNeeded * bodyLineHeight + WARNING_LINES * warningLineHeight
                 + countLines(keys) * footerLineHeight;
         tooSmall = needed > room;
