@@ -81,6 +81,14 @@ final class DemoScene {
     /** How many of fixedLabels are posts' names (the grid's marks follow them). */
     private int markerLabels;
     private boolean dotsVisible = true;
+    /** The region the grid covers: the framed one widened to the scene area's shape (m). */
+    private float gridLeft = xMin;
+    private float gridRight = xMax;
+    private float gridTop = yMax;
+    /** The bottom of the ground band the last layout framed (in metres, &lt;0). */
+    private float gridBottom = yMin;
+    /** True when the grid's spacing changed since it was built (frameReach). */
+    private boolean gridStale;
 
     private final PlaneView plane = new PlaneView();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
@@ -112,6 +120,8 @@ final class DemoScene {
     private float[] nearX = new float[0];
     private float[] nearY = new float[0];
     private int nearCount;
+    /** How many of the near points, the first ones, are trail points (not arrow samples). */
+    private int nearTrailCount;
     /**
      * The view's own listener on the demo's world: after each step, every particle the step
      * moved adds its position to its trail. The step itself writes no view.
@@ -169,6 +179,9 @@ final class DemoScene {
         declaredXMax = xMax;
         declaredYMax = yMax;
         declaredSpacing = gridSpacingMetres;
+        gridLeft = xMin;
+        gridRight = xMax;
+        gridTop = yMax;
     }
 
     /**
@@ -211,9 +224,8 @@ final class DemoScene {
         yMax = top;
         frameTop = top;
         yMin = -GROUND_BAND_SPACINGS * gridSpacing;
-        if (grid != null) {
-            buildGrid();
-        }
+        // The grid is built again for the new spacing at the next layOut.
+        gridStale = true;
         return true;
     }
 
@@ -305,25 +317,51 @@ final class DemoScene {
         ScreenRect area = hud.getScene();
         labelSize = hud.getSceneLabelSize();
         labelHeight = measure.lineHeight(labelSize);
-        // Frame enough ground below y = 0 for the distance marks: at least the declared band,
-        // and at least GROUND_LABEL_ROOM label heights on the screen (refined as the scale
-        // settles).
+        // Frame enough ground below y = 0 for the footer drawn on it and the distance marks
+        // above the footer: at least the declared band, and at least the floor and
+        // GROUND_LABEL_ROOM label heights on the screen (refined as the scale settles).
+        float floor = Math.max(0f, hud.getSceneFloor() - area.getY());
         float bottom = yMin;
         for (int pass = 0; pass < 3; ++pass) {
             plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(),
                     window.getHeight());
-            bottom = Math.min(yMin, -GROUND_LABEL_ROOM * labelHeight
+            bottom = Math.min(yMin, -(GROUND_LABEL_ROOM * labelHeight + floor)
                     / plane.getPixelsPerMetre());
         }
-        plane.fit(xMin, xMax, bottom, frameTop, area, window.getWidth(), window.getHeight());
+        // Widen the framed region to the area's shape, as a camera with the area's aspect
+        // would: wider (about its centre) when the area is wider than the region, higher
+        // (above the ground) when it is narrower, so the scene fills the area, no bands.
+        float left = xMin;
+        float right = xMax;
+        float top = frameTop;
+        float areaAspect = Math.max(PlaneView.MIN_PIXELS, area.getWidth())
+                / Math.max(PlaneView.MIN_PIXELS, area.getHeight());
+        if ((right - left) < areaAspect * (top - bottom)) {
+            float extra = areaAspect * (top - bottom) - (right - left);
+            left -= extra / 2f;
+            right += extra / 2f;
+        } else {
+            top = bottom + (right - left) / areaAspect;
+        }
+        plane.fit(left, right, bottom, top, area, window.getWidth(), window.getHeight());
+        if (grid == null || gridStale || left != gridLeft || right != gridRight
+                || top != gridTop) {
+            gridStale = false;
+            gridLeft = left;
+            gridRight = right;
+            gridTop = top;
+            buildGrid();
+        }
+        gridBottom = bottom;
         grid.setGroundDepth(-bottom);
         float margin = hud.getMargin();
         textArea.set(margin, margin, window.getWidth() - 2f * margin,
                 window.getHeight() - 2f * margin);
         // The fixed labels stay inside the scene's area (marks above the frame are hidden).
-        fixedArea.set(Math.max(area.getX(), margin), area.getY(),
+        float fixedBottom = Math.max(area.getY(), margin);
+        fixedArea.set(Math.max(area.getX(), margin), fixedBottom,
                 Math.min(area.getRight(), window.getWidth() - margin)
-                        - Math.max(area.getX(), margin), area.getHeight());
+                        - Math.max(area.getX(), margin), area.getTop() - fixedBottom);
         trailClearance = TRAIL_CLEARANCE * hud.getScale();
         hudRects.clear();
         hudRects.add(hud.getTitle());
@@ -382,6 +420,24 @@ final class DemoScene {
      */
     PlaneView getPlaneView() {
         return plane;
+    }
+
+    /**
+     * Copy the rectangle the scene is drawn into, as the last layout framed it: the grid and
+     * the ground band's extent on the screen, within the scene's area (the HUD's backdrop
+     * covers the rest).
+     *
+     * @param area the scene's area the layout was given (not null, not modified)
+     * @param storeResult storage for the rectangle (not null, modified)
+     * @return storeResult
+     */
+    ScreenRect copyDrawnRect(ScreenRect area, ScreenRect storeResult) {
+        float left = Math.max(area.getX(), plane.screenX(gridLeft));
+        float right = Math.min(area.getRight(), plane.screenX(gridRight));
+        float bottom = Math.max(area.getY(), plane.screenY(gridBottom));
+        float top = Math.min(area.getTop(), plane.screenY(Math.max(yMax, gridTop)));
+        storeResult.set(left, bottom, Math.max(0f, right - left), Math.max(0f, top - bottom));
+        return storeResult;
     }
 
     /**
@@ -521,8 +577,8 @@ final class DemoScene {
                 fixedLabels.remove(i);
             }
         }
-        grid = new DistanceGrid(assets, font, xMin, xMax, yMin, yMax, gridSpacing,
-                gridLabelEvery);
+        grid = new DistanceGrid(assets, font, gridLeft, gridRight, yMin,
+                Math.max(yMax, gridTop), gridSpacing, gridLabelEvery);
         sceneNode.attachChild(grid.getNode());
         fixedLabels.addAll(grid.getLabels());
     }
@@ -583,13 +639,27 @@ final class DemoScene {
                     && LabelSlots.ring(best) >= LabelSlots.ring(current);
             int slot = keep ? current : best;
             LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
-            if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)) {
-                // The sphere is under the panel or the graph: no slot beside it is free.
+            if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
+                    || (keep ? currentScore : bestScore) >= SPHERE_PENALTY
+                    || coversNearPoint(chosen)) {
+                // The sphere is under the panel or the graph, or every slot beside it covers
+                // text, a sphere or a trail point, or leaves the window (large text on a
+                // crowded scene): the label waits for a free slot.
                 view.hideLabel();
             } else {
                 view.placeLabel(plane, labelSize, slot, chosen);
             }
         }
+    }
+
+    /** Test whether a rectangle holds one of the trail points gathered last. */
+    private boolean coversNearPoint(ScreenRect place) {
+        for (int i = 0; i < nearTrailCount; ++i) {
+            if (place.contains(nearX[i], nearY[i])) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Collect the trail and arrow points within reach of any slot of a label, on screen. */
@@ -606,6 +676,9 @@ final class DemoScene {
                 float y = plane.screenY(trailPoint.y);
                 keepIfNear(x, y);
             }
+        }
+        nearTrailCount = nearCount;
+        for (int i = 0; i < particles.size(); ++i) {
             if (arrowsVisible) {
                 Vector3f position = particles.get(i).getParticle().position;
                 Vector3f velocity = particles.get(i).getParticle().velocity;

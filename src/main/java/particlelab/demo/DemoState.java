@@ -635,9 +635,9 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
-     * suits it times the user's factor ({@link HudScale#layOut}: less if the scene would get
-     * too little of the window), and frame the camera for it if
-     * it has that size. Call on the jME thread, after initialisation.
+     * suits it times the user's factor ({@link HudScale#layOut}: a larger factor always gives
+     * larger text; lines are hidden where the window cannot hold them), and frame the camera
+     * for it if it has that size. Call on the jME thread, after initialisation.
      *
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)
@@ -715,6 +715,17 @@ public abstract class DemoState extends BaseAppState {
      */
     List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
         return scene.copyPostRects(storeResult);
+    }
+
+    /**
+     * Copy the rectangle the scene (its grid, ground and bodies) is drawn into on the screen,
+     * as last laid out: the region the camera frames, widened to the scene area's shape.
+     *
+     * @param storeResult storage for the rectangle (in pixels, not null, modified)
+     * @return storeResult
+     */
+    public ScreenRect copySceneRect(ScreenRect storeResult) {
+        return scene.copyDrawnRect(hud.getLayout().getScene(), storeResult);
     }
 
     /**

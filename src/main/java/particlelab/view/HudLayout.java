@@ -6,10 +6,12 @@ import java.util.List;
 /**
  * Where the HUD's text goes on a window of a given size: pure arithmetic on the window's size
  * and the text's measured size, so it is tested without rendering. Top to bottom: the title,
- * the body (equations and live numbers), the warning band (kept even when empty, so the scene
- * does not jump when a warning comes and goes), the scene, and the footer at the bottom. Two
+ * the body (equations and live numbers), then the scene down to the window's bottom edge: the
+ * warning band is drawn over its sky (kept even when empty, so the scene does not jump when a
+ * warning comes and goes) and the footer on its ground, below {@link #getSceneFloor()}. Two
  * optional slots: a side panel down the right edge, between the title and the footer (the
- * body, warning and scene then stay left of it), and a graph in the scene's top right corner.
+ * body, warning and scene then stay left of it), and a graph in the scene's top right corner,
+ * below the warning band.
  * Each is asked for by its size at HUD scale 1 and is empty when not asked for. The
  * help overlay covers everything below the title and is set in columns, its first section (the
  * demo's own keys) first; it shrinks its text until every column fits the window.
@@ -69,7 +71,11 @@ public final class HudLayout {
     /** The last help line when the window cannot hold the whole help. */
     public static final String HELP_CUT_LINE = "(window too small: more help hidden)";
     private static final String CONTINUATION = "    ";
+    /** The space above and below the body (in body line heights). */
+    private static final float BAND_SPACE = 0.2f;
     private static final float HELP_SHRINK = 0.92f;
+    /** The most columns the help is set in. */
+    private static final int MAX_HELP_COLUMNS = 4;
     /** The largest share of the window's width the side panel takes. */
     private static final float MAX_PANEL_SHARE = 0.4f;
     /** The largest share of the scene's width and height the graph takes. */
@@ -106,6 +112,8 @@ public final class HudLayout {
     /** The graph's size at HUD scale 1 (pixels; 0: no graph). */
     private float graphWidth;
     private float graphHeight;
+    /** How high above the window's bottom the scene's ground must reach (in pixels). */
+    private float sceneFloor;
 
     /**
      * Create a layout.
@@ -175,8 +183,8 @@ public final class HudLayout {
         // Room for the body, the warning band and the footer: the window less the margins,
         // the title, the spaces around the body, the gaps around the scene and the scene's
         // least share.
-        float room = height - 2f * margin - titleHeight - 0.6f * bodyLineHeight - 2f * gap
-                - MIN_SCENE_SHARE * height;
+        float room = height - 2f * margin - titleHeight - 2f * BAND_SPACE * bodyLineHeight
+                - 2f * gap - MIN_SCENE_SHARE * height;
         float needed = bodyLinesNeeded * bodyLineHeight + WARNING_LINES * warningLineHeight
                 + countLines(keys) * footerLineHeight;
         tooSmall = needed > room;
@@ -199,21 +207,22 @@ public final class HudLayout {
             warningLines = WARNING_LINES;
         }
 
-        float bodyTop = title.getY() - 0.3f * bodyLineHeight;
+        float bodyTop = title.getY() - BAND_SPACE * bodyLineHeight;
         body.set(margin, bodyTop - bodyLines * bodyLineHeight, textWidth,
                 bodyLines * bodyLineHeight);
         float warningHeight = warningLines * warningLineHeight;
-        warning.set(margin, body.getY() - 0.3f * bodyLineHeight - warningHeight, textWidth,
+        warning.set(margin, body.getY() - BAND_SPACE * bodyLineHeight - warningHeight, textWidth,
                 warningHeight);
         float footerHeight = countLines(footerText) * footerLineHeight;
         footer.set(margin, margin, measure.width(footerText, getFooterSize()), footerHeight);
 
-        // Below the smallest window the texts cannot all fit: the scene still gets a
-        // rectangle of at least a pixel inside the window.
-        float sceneBottom = footer.getTop() + gap;
-        float sceneHeight = Math.max(MIN_VIEW_PIXELS, warning.getY() - gap - sceneBottom);
-        float sceneY = Math.max(0f, Math.min(sceneBottom, height - sceneHeight));
-        scene.set(0f, sceneY, leftWidth, Math.min(sceneHeight, height));
+        // The scene reaches from the window's bottom edge (the footer is drawn on its ground,
+        // above sceneFloor) up to the body: the warning band is drawn over its sky, so no
+        // empty strip is kept between the HUD and the scene. Below the smallest window the
+        // texts cannot all fit: the scene still gets a rectangle of at least a pixel.
+        sceneFloor = footer.getTop() + gap;
+        float sceneHeight = Math.max(MIN_VIEW_PIXELS, warning.getTop());
+        scene.set(0f, 0f, leftWidth, Math.min(sceneHeight, height));
         if (panelPixels > 0f) {
             float panelBottom = footer.getTop() + gap;
             sidePanel.set(leftWidth, panelBottom, panelPixels - margin,
@@ -224,8 +233,9 @@ public final class HudLayout {
         if (graphWidth > 0f && graphHeight > 0f) {
             float graphW = Math.min(graphWidth * scale, MAX_GRAPH_SHARE * scene.getWidth());
             float graphH = Math.min(graphHeight * scale, MAX_GRAPH_SHARE * scene.getHeight());
-            graph.set(scene.getRight() - margin - graphW, scene.getTop() - graphH, graphW,
-                    graphH);
+            float graphTop = Math.min(scene.getTop(), warning.getY() - gap);
+            graphH = Math.max(0f, Math.min(graphH, graphTop - sceneFloor));
+            graph.set(scene.getRight() - margin - graphW, graphTop - graphH, graphW, graphH);
         } else {
             graph.set(0f, 0f, 0f, 0f);
         }
@@ -480,9 +490,22 @@ public final class HudLayout {
         return footer;
     }
 
-    /** @return the area left to the scene, between the warning band and the footer (live) */
+    /**
+     * @return the area left to the scene, from the window's bottom edge (the footer is drawn
+     *     on its ground) up to the warning band's top (the band is drawn over its sky; live)
+     */
     public ScreenRect getScene() {
         return scene;
+    }
+
+    /**
+     * Return how high above the scene's bottom edge its content must begin: the footer is
+     * drawn on the scene's ground below this line.
+     *
+     * @return the height above the window's bottom edge (in pixels, &ge;0)
+     */
+    public float getSceneFloor() {
+        return sceneFloor;
     }
 
     /** @return the help panel's background: the window below the title (live) */
@@ -501,7 +524,9 @@ public final class HudLayout {
     }
 
     /**
-     * Set the help in as many columns as it needs, at the largest size that fits the panel.
+     * Set the help in columns across the window's width, at the largest size that fits the
+     * panel: at each size, one column, then two, up to {@value #MAX_HELP_COLUMNS} equal
+     * columns, each line wrapped to its column's width.
      */
     private void layOutHelp(CharSequence helpText) {
         float margin = getMargin();
@@ -511,15 +536,37 @@ public final class HudLayout {
         float innerHeight = helpPanel.getHeight() - 2f * margin;
         float minSize = MIN_HELP_SIZE * Math.min(1f, scale);
         float size = HELP_SIZE * scale;
-        boolean fits = flowHelp(sections, size, innerWidth, innerHeight);
+        boolean fits = flowHelpInColumns(sections, size, innerWidth, innerHeight);
         while (!fits && size > minSize) {
             size = Math.max(minSize, size * HELP_SHRINK);
-            fits = flowHelp(sections, size, innerWidth, innerHeight);
+            fits = flowHelpInColumns(sections, size, innerWidth, innerHeight);
         }
         helpSize = size;
         if (!fits) {
+            flowHelp(sections, size, innerWidth, innerHeight, innerWidth);
             keepFittingColumns(size, helpPanel.getX() + margin + innerWidth);
         }
+    }
+
+    /**
+     * Flow the sections at one size into the fewest equal columns that hold them.
+     *
+     * @return true if some count of columns fits the panel
+     */
+    private boolean flowHelpInColumns(List<List<String>> sections, float size,
+            float innerWidth, float innerHeight) {
+        float space = 2f * getMargin();
+        for (int count = 1; count <= MAX_HELP_COLUMNS; ++count) {
+            float columnWidth = (innerWidth - (count - 1) * space) / count;
+            if (columnWidth < 1f) {
+                break;
+            }
+            if (flowHelp(sections, size, innerWidth, innerHeight, columnWidth)
+                    && helpColumns.size() <= count) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -554,7 +601,7 @@ public final class HudLayout {
      * @return true if every column fits the panel
      */
     private boolean flowHelp(List<List<String>> sections, float size, float innerWidth,
-            float innerHeight) {
+            float innerHeight, float columnWidth) {
         helpColumns.clear();
         helpColumnTexts.clear();
         float margin = getMargin();
@@ -567,7 +614,7 @@ public final class HudLayout {
             // A line wider than the panel (a narrow window) is wrapped, like the body.
             List<String> section = new ArrayList<>();
             for (String line : given) {
-                section.addAll(List.of(wrap(line, size, innerWidth).split("\n", -1)));
+                section.addAll(List.of(wrap(line, size, columnWidth).split("\n", -1)));
             }
             int needed = section.size() + (column.isEmpty() ? 0 : 1);
             if (!column.isEmpty() && column.size() + needed > maxLines
@@ -596,7 +643,7 @@ public final class HudLayout {
             ScreenRect rect = new ScreenRect(left, top - height, width, height);
             helpColumns.add(rect);
             helpColumnTexts.add(text);
-            left += width + 2f * margin;
+            left += Math.max(width, columnWidth < innerWidth ? columnWidth : 0f) + 2f * margin;
             fits &= rect.getRight() <= helpPanel.getX() + margin + innerWidth
                     && height <= innerHeight;
         }

@@ -23,12 +23,15 @@ public final class HudScale {
     }
 
     /**
-     * Lay a HUD out for a window at the scale {@link #of} gives, smaller while the window
-     * cannot hold every HUD line with {@value #MIN_SCENE_SHARE} of its height left to the
-     * scene ({@link HudLayout#isTooSmall()}: large text on a small window), down to
-     * {@value #MIN_SCALE}; below that the layout hides lines (see {@link HudLayout}). The
-     * body's band keeps the most lines it has needed so far, except when asked afresh and
-     * while shrinking: then it is sized for the text as it is.
+     * Lay a HUD out for a window. First the scale that suits the window is found: the one
+     * {@link HudLayout#scaleFor} gives, smaller while the window cannot hold every HUD line
+     * with {@value #MIN_SCENE_SHARE} of its height left to the scene ({@link
+     * HudLayout#isTooSmall()}: a small window), down to {@value #MIN_SCALE}. Then the user's
+     * factor multiplies it, and nothing shrinks it again: a larger factor always gives larger
+     * text (the projector's control works one way), and where the window cannot hold every
+     * line at that size, the layout hides lines (see {@link HudLayout}). The body's band
+     * keeps the most lines it has needed so far, except when asked afresh, while shrinking
+     * and at a factor other than 1: then it is sized for the text as it is.
      *
      * @param hud the HUD (not null, modified)
      * @param width the window's width (in pixels, &gt;0)
@@ -40,16 +43,22 @@ public final class HudScale {
      */
     public static float layOut(HudView hud, int width, int height, float factor,
             boolean afresh) {
-        float scale = of(width, height, factor);
-        if (afresh) {
-            hud.layOutAfresh(width, height, scale);
+        checkFactor(factor, "HUD scale factor");
+        float suits = of(width, height, 1f);
+        if (afresh || factor != 1f) {
+            hud.layOutAfresh(width, height, suits);
         } else {
-            hud.layOut(width, height, scale);
+            hud.layOut(width, height, suits);
         }
-        while (hud.getLayout().isTooSmall() && scale > MIN_SCALE) {
-            scale = Math.max(MIN_SCALE, SHRINK * scale);
-            hud.layOutAfresh(width, height, scale);
+        while (hud.getLayout().isTooSmall() && suits > MIN_SCALE) {
+            suits = Math.max(MIN_SCALE, SHRINK * suits);
+            hud.layOutAfresh(width, height, suits);
         }
+        if (factor == 1f) {
+            return suits;
+        }
+        float scale = clamp(suits * factor);
+        hud.layOutAfresh(width, height, scale);
         return scale;
     }
 
@@ -63,8 +72,7 @@ public final class HudScale {
      */
     public static float of(float width, float height, float factor) {
         checkFactor(factor, "HUD scale factor");
-        float scale = HudLayout.scaleFor(width, height) * factor;
-        return Math.max(MIN_SCALE, Math.min(HudLayout.MAX_SCALE, scale));
+        return clamp(HudLayout.scaleFor(width, height) * factor);
     }
 
     /**
@@ -92,5 +100,10 @@ public final class HudScale {
             throw new IllegalArgumentException(what + " must be from " + MIN_FACTOR + " to "
                     + MAX_FACTOR + ", but was " + factor);
         }
+    }
+
+    /** Keep a scale from {@value #MIN_SCALE} to {@link HudLayout#MAX_SCALE}. */
+    private static float clamp(float scale) {
+        return Math.max(MIN_SCALE, Math.min(HudLayout.MAX_SCALE, scale));
     }
 }

@@ -38,8 +38,8 @@ public final class ParameterPanel {
 
     /** The panel's width at HUD scale 1 (in pixels), asked of the HUD layout. */
     public static final float WIDTH_AT_SCALE_ONE = 320f;
-    /** The panel's text size at HUD scale 1 (in pixels). */
-    private static final float TEXT_SIZE = 14f;
+    /** The panel's text size at HUD scale 1 (in pixels): legible on a projector. */
+    public static final float TEXT_SIZE = 17f;
     /** The most buttons in one row (more start another row), so every label fits. */
     private static final int BUTTONS_PER_ROW = 4;
     /** The slider's thumb's width at HUD scale 1 (in pixels). */
@@ -226,6 +226,11 @@ public final class ParameterPanel {
         size.set(where.getWidth(), container.getPreferredSize().y, 0f);
         container.setPreferredSize(size.clone());
         container.setLocalTranslation(where.getX(), where.getTop(), 0f);
+    }
+
+    /** @return the text size of the last {@link #place} (in pixels; NaN before it) */
+    public float getTextSize() {
+        return TEXT_SIZE * scale;
     }
 
     /**

@@ -14,7 +14,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 import particlelab.physics.SimulationClock;
-import particlelab.view.HudScale;
 
 /**
  * A whole frame of every catalogued demo, in a real headless application, allocates nothing
@@ -34,7 +33,13 @@ class FrameAllocationHeadlessTest {
     /** Frames per measured window: one HUD refresh of 0.1 s at 60 frames per second. */
     private static final int FRAMES_PER_WINDOW = 6;
     private static final int WINDOWS = 20;
-    /** A small window (pixels), where HUD lines at the largest HUD factor wrap. */
+    /**
+     * A small window (pixels), where HUD lines at a large HUD factor wrap. The factor is not
+     * the largest: since issue 19 nothing shrinks the text the user chose, and at x2 the band
+     * holds only the equations, so the HUD would not change at all.
+     */
+    private static final float LARGE_FACTOR = 1.5f;
+    /** A small window (pixels), where HUD lines at {@link #LARGE_FACTOR} wrap. */
     private static final int SMALL_WIDTH = 800;
     private static final int SMALL_HEIGHT = 600;
     /**
@@ -142,7 +147,7 @@ class FrameAllocationHeadlessTest {
 
     /**
      * Switch to a demo and start it moving at a fixed tpf, the HUD at a refresh rate and laid
-     * out for a window resized to a size at the largest HUD factor (width 0: as it is).
+     * out for a window resized to a size at a large HUD factor (width 0: as it is).
      */
     private static Boolean begin(int index, float hudRefreshSeconds, int width, int height) {
         DemoState demo = demos.get(index);
@@ -151,7 +156,7 @@ class FrameAllocationHeadlessTest {
             // As the window's resize and the HUD-factor key do: the window's controls lay
             // the demo out again at its next frame.
             resize(width, height);
-            harness.app().getWindowControls().setUiFactor(HudScale.MAX_FACTOR);
+            harness.app().getWindowControls().setUiFactor(LARGE_FACTOR);
         }
         frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);

@@ -51,7 +51,7 @@ class HudLayoutTest {
                 "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo",
                 help(40));
         List<ScreenRect> blocks = List.of(layout.getTitle(), layout.getBody(),
-                layout.getWarning(), layout.getScene(), layout.getFooter());
+                layout.getWarning(), layout.getFooter());
         for (int i = 0; i < blocks.size(); ++i) {
             assertTrue(layout.getWindow().contains(blocks.get(i)), blocks.get(i).toString());
             assertFalse(blocks.get(i).isEmpty(), "block " + i);
@@ -59,6 +59,7 @@ class HudLayoutTest {
                 assertFalse(blocks.get(i).intersects(blocks.get(j)), i + " over " + j);
             }
         }
+        assertSceneUnderTheTextAndOverTheFooter(layout);
         // The long equation line was wrapped to the window, not clipped.
         assertTrue(layout.getBody().getWidth() <= width - 2f * layout.getMargin());
         assertTrue(MONO.width(layout.wrap(BODY, layout.getBodySize(),
@@ -155,13 +156,14 @@ class HudLayoutTest {
         assertTrue(layout.getScene().getHeight() >= HudLayout.MIN_SCENE_SHARE * height,
                 layout.getScene().toString());
         List<ScreenRect> blocks = List.of(layout.getTitle(), layout.getBody(),
-                layout.getWarning(), layout.getScene(), layout.getFooter());
+                layout.getWarning(), layout.getFooter());
         for (int i = 0; i < blocks.size(); ++i) {
             assertTrue(layout.getWindow().contains(blocks.get(i)), i + " " + blocks.get(i));
             for (int j = 0; j < i; ++j) {
                 assertFalse(blocks.get(i).intersects(blocks.get(j)), i + " over " + j);
             }
         }
+        assertSceneUnderTheTextAndOverTheFooter(layout);
         // The lines shown fill the band: as many as its height holds, the first ones.
         assertEquals(layout.getBodyLines() * MONO.lineHeight(layout.getBodySize()),
                 layout.getBody().getHeight(), 1e-3f);
@@ -262,5 +264,21 @@ class HudLayoutTest {
                     .append(i).append('\n');
         }
         return text.toString();
+    }
+
+    /**
+     * The scene reaches from the window's bottom up to the warning band's top, below the title
+     * and the body; the warning band is drawn over its sky and the footer on its ground,
+     * below the floor the scene's content keeps above.
+     */
+    private static void assertSceneUnderTheTextAndOverTheFooter(HudLayout layout) {
+        ScreenRect scene = layout.getScene();
+        assertTrue(layout.getWindow().contains(scene), scene.toString());
+        assertFalse(scene.intersects(layout.getTitle()), scene + " over the title");
+        assertFalse(scene.intersects(layout.getBody()), scene + " over the body");
+        assertEquals(0f, scene.getY(), 0f);
+        assertEquals(layout.getWarning().getTop(), scene.getTop(), 1e-3f);
+        assertTrue(layout.getFooter().getTop() <= layout.getSceneFloor(),
+                layout.getFooter() + " above the floor " + layout.getSceneFloor());
     }
 }
