@@ -64,10 +64,11 @@ import particlelab.lecture.DragDemo;
  * Nothing else moves a particle. This class hears each step as a {@link StepListener}: the
  * stability warnings look at the particles before it, and after it the lecture's stop at the
  * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
- * particles. None of this allocates; the HUD text is
- * rebuilt in a reused {@link StringBuilder} ten times a second (or every frame, see
- * {@link #setHudRefreshSeconds}) and shown in {@code HudText}s, whose glyph meshes are
- * rewritten in place, so a whole frame allocates nothing (FrameAllocationHeadlessTest).
+ * particles. None of this allocates; the HUD text is rebuilt in a reused
+ * {@link StringBuilder} every frame, after the frame's steps and views, so its numbers are
+ * those of the picture (or less often, see {@link #setHudRefreshSeconds}), and shown in
+ * {@code HudText}s, whose glyph meshes are rewritten in place, so a whole frame allocates
+ * nothing (FrameAllocationHeadlessTest).
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
  * scene and shows why, instead of crashing the window. Once every particle has landed the
@@ -85,8 +86,13 @@ public abstract class DemoState extends BaseAppState {
 
     /** The frame time injected by the hitch key (in seconds). */
     public static final float HITCH_SECONDS = 0.5f;
-    /** How often the HUD text is rebuilt (in seconds of real time). */
-    public static final float HUD_REFRESH_SECONDS = 0.1f;
+    /**
+     * How often the HUD text is rebuilt by default (in seconds of frame time): 0, every frame,
+     * so the HUD's numbers are those of the picture they are drawn on.
+     */
+    public static final float HUD_REFRESH_SECONDS = 0f;
+    /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
+    public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
     /** What the time scale keys multiply or divide by. */
     private static final float TIME_SCALE_FACTOR = 2f;
 
@@ -102,6 +108,8 @@ public abstract class DemoState extends BaseAppState {
     private final ParameterControls parameterControls = new ParameterControls();
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
+    /** Pause at the next contact the world resolves (its key, its HUD line). */
+    private final ContactPause contactPause = new ContactPause(clock, particles);
     private final SimulationClock.Stepper stepper = this::stepWorld;
     /** Simulations beside the world (a second world, a packed batch), stepped after it. */
     private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
@@ -110,6 +118,7 @@ public abstract class DemoState extends BaseAppState {
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
+            contactPause.beforeStep();
             DemoState.this.beforeStep(stepSeconds);
             observeParticles(stepSeconds);
         }
@@ -196,7 +205,9 @@ public abstract class DemoState extends BaseAppState {
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
         hudWriter.setWarnings(warnings);
+        hudWriter.setContactPause(contactPause);
         world.addStepListener(stepListener);
+        world.addContactListener(contactPause);
         hudWriter.setGhosts(ghosts);
     }
 
@@ -243,8 +254,8 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Append the demo's own HUD lines, each ending in a newline. Called ten times a second:
-     * append with {@link TextFormat} and constant strings, so nothing is allocated.
+     * Append the demo's own HUD lines, each ending in a newline. Called every frame: append
+     * with {@link TextFormat} and constant strings, so nothing is allocated.
      *
      * @param text where to append (not null, modified)
      */
@@ -785,6 +796,7 @@ public abstract class DemoState extends BaseAppState {
         ghosts.restartAll();
         clock.reset();
         warnings.clear();
+        contactPause.restart();
         onRestart();
         frameLaunches();
         hudDirty = true;
@@ -832,9 +844,9 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Choose how often the HUD text is rebuilt and handed to the screen: every
-     * {@link #HUD_REFRESH_SECONDS} by default, or every frame (0), as a lecture hall's
-     * projector may want. Either way a frame allocates nothing.
+     * Choose how often the HUD text is rebuilt and handed to the screen: every frame by
+     * default ({@link #HUD_REFRESH_SECONDS}, 0), so the numbers match the picture, or less
+     * often, e.g. {@link #SLOW_HUD_REFRESH_SECONDS}. Either way a frame allocates nothing.
      *
      * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
      */
@@ -1028,6 +1040,11 @@ public abstract class DemoState extends BaseAppState {
         KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
                 "reset: launch again, reframe the camera", this::restartAndReframe)
                 .withSummary("reset"));
+        KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
+                "pause at the next contact, on the step that resolves it (the HUD names it);"
+                        + " there, on to the next one; while waiting, cancel",
+                contactPause::press).withSummary("stop at contact"));
+        contactPause.setKey(atContact);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
                 "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
         StringBuilder hitch = new StringBuilder("inject one ");

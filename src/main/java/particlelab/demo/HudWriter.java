@@ -8,7 +8,7 @@ import particlelab.view.TextFormat;
 /**
  * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
- * dropped, and the keys that change it), a short notice if one is up, one line per particle
+ * dropped, and the keys that change it), the pause at the next contact, a short notice if one is up, one line per particle
  * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
  * tpf) and the stability line (the smallest limit and the particle it belongs to). In a demo
  * with exact ghosts a particle's line ends with its distance to its ghost, and once landed it
@@ -36,6 +36,8 @@ final class HudWriter {
     private ExactGhosts ghosts;
     /** The demo's warning line, which the stability line agrees with (null: none). */
     private StepWarnings warnings;
+    /** The pause at the next contact, whose line follows the time line (null: none). */
+    private ContactPause contactPause;
 
     /**
      * Create a writer for one demo.
@@ -69,6 +71,16 @@ final class HudWriter {
      */
     void setWarnings(StepWarnings stepWarnings) {
         warnings = stepWarnings;
+    }
+
+    /**
+     * Let the pause at the next contact write its line below the time line: armed, or which
+     * contact the clock stands at.
+     *
+     * @param pause the demo's pause (not null)
+     */
+    void setContactPause(ContactPause pause) {
+        contactPause = pause;
     }
 
     /**
@@ -145,6 +157,9 @@ final class HudWriter {
         text.setLength(0);
         text.append(equations);
         appendTimeLines(text, sceneOver);
+        if (contactPause != null) {
+            contactPause.appendLine(text);
+        }
         if (notice != null) {
             text.append(notice).append('\n');
         }
