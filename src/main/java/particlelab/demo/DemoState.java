@@ -537,6 +537,16 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Tell the demo the application's demos, so that its help overlay lists them by the
+     * numbers the digit keys reach. Call before the demo is initialised.
+     *
+     * @param titles the demos' titles in catalogue order, demo 1 first (not null, copied)
+     */
+    public void setDemoTitles(List<String> titles) {
+        keys.setDemoTitles(titles);
+    }
+
+    /**
      * Access the demo's parameters (the shared step h, then the demo's own), declared at the
      * first call: {@code --set} changes them before the window opens, the panel after.
      *
