@@ -89,7 +89,7 @@ public final class DemoSwitcher extends BaseAppState {
                 "next demo; with Shift, the previous one (both wrap around)",
                 () -> step(isShiftDown() ? -1 : 1))
                 .withKeyLabel("Tab / Shift+Tab")
-                .withSummary("next / previous demo (" + range() + " by number)"));
+                .withSummary("demos (or " + range() + ")"));
     }
 
     /**

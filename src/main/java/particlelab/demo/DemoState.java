@@ -1053,7 +1053,7 @@ public abstract class DemoState extends BaseAppState {
         KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
                 "pause at the next contact, on the step that resolves it (the HUD names it);"
                         + " there, on to the next one; while waiting, cancel",
-                contactPause::press).withSummary("stop at contact"));
+                contactPause::press));
         contactPause.setKey(atContact);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
                 "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));

@@ -139,7 +139,7 @@ class DemoSwitcherTest {
         }
 
         assertEquals(List.of("1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "Tab"), keys);
-        assertEquals(List.of("Tab / Shift+Tab  next / previous demo (1-17 by number)"), footer);
+        assertEquals(List.of("Tab / Shift+Tab  demos (or 1-17)"), footer);
         assertEquals(List.of("0-9: type a demo's number (1-17): 2-9 choose at once; 1 waits"
                 + " 1 s for a second digit (1 then 2: demo 12), else it is demo 1",
                 "Tab / Shift+Tab: next demo; with Shift, the previous one (both wrap around)"),
