@@ -14,8 +14,9 @@ import particlelab.world.World;
  * epilogue of the demo's world ({@link ContactListener#resolved}) and pauses the clock from
  * inside the step that resolved the contact, which ends the frame right there
  * ({@link SimulationClock#setPaused}): {@code t} is the end of that step, and the views show
- * the bodies as the resolution left them. The HUD then says which bodies met, when inside the
- * step and how fast they approached, until the next step is taken.
+ * the bodies as the resolution left them. The HUD's time line then says which bodies met, how
+ * fast they approached and when inside the step, until the next step is taken; while armed it
+ * says so.
  *
  * <p>The key: when idle or while paused by Space, arm and run to the next contact; at a
  * contact, run on to the next one; while armed and running, cancel. Space resumes as ever
@@ -39,6 +40,7 @@ final class ContactPause implements ContactListener {
     /** The world's step count during the step that paused. */
     private long pausedStep;
     private KeyBinding key;
+    private KeyBinding pauseKey;
 
     /**
      * Create a disarmed pause for one demo.
@@ -52,12 +54,14 @@ final class ContactPause implements ContactListener {
     }
 
     /**
-     * Name the key the HUD line mentions.
+     * Name the keys the HUD mentions.
      *
-     * @param binding the pause's key (not null)
+     * @param binding this pause's key (not null)
+     * @param pause the demo's pause / resume key (not null)
      */
-    void setKey(KeyBinding binding) {
+    void setKeys(KeyBinding binding, KeyBinding pause) {
         key = binding;
+        pauseKey = pause;
     }
 
     /**
@@ -103,23 +107,30 @@ final class ContactPause implements ContactListener {
     }
 
     /**
-     * Append the HUD's line about the pause, if it is armed or stands at a contact, e.g.
-     * {@code paused at contact: ball - ground at t = 0.8937 s, approach speed 8.82 m/s}.
-     * Allocates nothing.
+     * Append, for the time line of a clock paused at a contact, which contact and the keys,
+     * e.g. {@code PAUSED at contact: ball - ground, approach 8.82 m/s at t = 0.8952 s (Enter:
+     * next contact, Space resumes)}. Allocates nothing.
      *
      * @param text where to append (not null, modified)
      */
-    void appendLine(StringBuilder text) {
-        if (isAtContact()) {
-            text.append("paused at contact: ").append(description);
-            if (moreContacts > 0) {
-                text.append(" (+").append(moreContacts).append(" more in this step)");
-            }
-            text.append("   ").append(key.getKeyLabel(0)).append(": on to the next contact\n");
-        } else if (armed) {
-            text.append("pause at the next contact: armed (").append(key.getKeyLabel(0))
-                    .append(" cancels)\n");
+    void appendAtContact(StringBuilder text) {
+        text.append("PAUSED at contact: ").append(description);
+        if (moreContacts > 0) {
+            text.append(" (+").append(moreContacts).append(" more in this step)");
         }
+        text.append(" (").append(key.getKeyLabel()).append(": next contact, ")
+                .append(pauseKey.getKeyLabel()).append(" resumes)");
+    }
+
+    /**
+     * Append, for the time line of an armed pause, that it waits for a contact, e.g.
+     * {@code pausing at the next contact (Enter cancels)}. Allocates nothing.
+     *
+     * @param text where to append (not null, modified)
+     */
+    void appendArmed(StringBuilder text) {
+        text.append("pausing at the next contact (").append(key.getKeyLabel())
+                .append(" cancels)");
     }
 
     @Override
@@ -148,10 +159,9 @@ final class ContactPause implements ContactListener {
         } else {
             description.append("a surface");
         }
-        description.append(" at t = ");
-        TextFormat.appendFixed(description, contact.getTimeSeconds(), 4)
-                .append(" s, approach speed ");
-        TextFormat.appendFixed(description, contact.getApproachSpeed(), 2).append(" m/s");
+        description.append(", approach ");
+        TextFormat.appendFixed(description, contact.getApproachSpeed(), 2).append(" m/s at t = ");
+        TextFormat.appendFixed(description, contact.getTimeSeconds(), 4).append(" s");
     }
 
     /** A body by its particle's label, else by its number in the world. */

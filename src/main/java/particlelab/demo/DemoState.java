@@ -1054,7 +1054,7 @@ public abstract class DemoState extends BaseAppState {
                 "pause at the next contact, on the step that resolves it (the HUD names it);"
                         + " there, on to the next one; while waiting, cancel",
                 contactPause::press));
-        contactPause.setKey(atContact);
+        contactPause.setKeys(atContact, pause);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
                 "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
         StringBuilder hitch = new StringBuilder("inject one ");

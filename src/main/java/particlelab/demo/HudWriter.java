@@ -8,7 +8,7 @@ import particlelab.view.TextFormat;
 /**
  * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
- * dropped, and the keys that change it), the pause at the next contact, a short notice if one is up, one line per particle
+ * dropped, the pause at the next contact, and the keys that change it), a short notice if one is up, one line per particle
  * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
  * tpf) and the stability line (the smallest limit and the particle it belongs to). In a demo
  * with exact ghosts a particle's line ends with its distance to its ghost, and once landed it
@@ -74,8 +74,8 @@ final class HudWriter {
     }
 
     /**
-     * Let the pause at the next contact write its line below the time line: armed, or which
-     * contact the clock stands at.
+     * Let the pause at the next contact write in the time line: that it is armed, or which
+     * contact the clock stands at (in place of the usual pause text).
      *
      * @param pause the demo's pause (not null)
      */
@@ -157,9 +157,6 @@ final class HudWriter {
         text.setLength(0);
         text.append(equations);
         appendTimeLines(text, sceneOver);
-        if (contactPause != null) {
-            contactPause.appendLine(text);
-        }
         if (notice != null) {
             text.append(notice).append('\n');
         }
@@ -207,7 +204,8 @@ final class HudWriter {
     }
 
     /**
-     * The time line: t, then what stops it (pause, a finished scene), the time scale asked
+     * The time line: t, then what stops it (the contact the pause at the next contact stopped
+     * at, a finished scene, pause) and whether that pause is armed, the time scale asked
      * for and, when it matters, the one measured and why they differ; then, unless the scale
      * is x1 and nothing is dropped, the keys that change it and its limits.
      */
@@ -215,12 +213,17 @@ final class HudWriter {
         text.append("t = ");
         TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s");
         boolean running = !sceneOver && !clock.isPaused();
-        if (sceneOver) {
+        if (contactPause != null && contactPause.isAtContact()) {
+            contactPause.appendAtContact(text.append("   "));
+        } else if (sceneOver) {
             text.append("   stopped: every particle has landed (").append(resetKey.getKeyLabel())
                     .append(" launches again)");
         } else if (clock.isPaused()) {
             text.append("   PAUSED: ").append(pauseKey.getKeyLabel()).append(" resumes, ")
                     .append(stepKey.getKeyLabel()).append(" takes one step");
+        }
+        if (contactPause != null && contactPause.isArmed()) {
+            contactPause.appendArmed(text.append("   "));
         }
         float scale = clock.getTimeScale();
         float measured = clock.getMeasuredTimeScale();
