@@ -22,7 +22,7 @@ import particlelab.view.TextFormat;
  * <p>Typing a number: a digit that no two-digit demo starts with chooses its demo at once
  * (with 17 demos, 2 to 9); a digit that one does (1) waits up to {@link #ENTRY_SECONDS} of
  * frame time for a second digit, which completes the number (1 then 2: demo 12), and chooses
- * demo 1 if none comes. A number with no demo behind it (0, 18) says so on the HUD instead of
+ * demo 1 if none comes; meanwhile the title says what was typed ("typed 1_"). A number with no demo behind it (0, 18) says so on the HUD instead of
  * doing nothing. Tab or Shift+Tab during an entry drops it and steps from the demo shown.
  * The help overlay states this rule, generated with the bindings, and lists the demos by
  * number.
@@ -59,6 +59,8 @@ public final class DemoSwitcher extends BaseAppState {
     private int pendingDigit = -1;
     /** How long the pending digit has waited (in seconds of frame time). */
     private float pendingSeconds;
+    /** The demo whose title shows the pending digit, or null. */
+    private DemoState showingEntry;
 
     /**
      * Create a switcher.
@@ -207,9 +209,7 @@ public final class DemoSwitcher extends BaseAppState {
         if (pendingDigit >= 0) {
             pendingSeconds += tpf;
             if (pendingSeconds >= ENTRY_SECONDS) {
-                int digit = pendingDigit;
-                pendingDigit = -1;
-                choose(digit);
+                choose(endEntry());
             }
         }
         if (requested != selected) {
@@ -225,17 +225,15 @@ public final class DemoSwitcher extends BaseAppState {
      */
     private void typeDigit(int digit) {
         if (pendingDigit >= 0) {
-            int number = 10 * pendingDigit + digit;
-            pendingDigit = -1;
-            choose(number);
+            choose(10 * endEntry() + digit);
         } else if (startsTwoDigitNumber(digit)) {
             pendingDigit = digit;
             pendingSeconds = 0f;
             int first = 10 * digit;
             int last = Math.min(demos.size(), first + 9);
-            getSelected().showNotice(digit + "_: a second digit within "
-                    + TextFormat.appendFixed(new StringBuilder(), ENTRY_SECONDS, 0)
-                    + " s for demos " + first + "-" + last + ", else demo " + digit);
+            showingEntry = getSelected();
+            showingEntry.setTitleNote("typed " + digit + "_  (a second digit for " + first
+                    + "-" + last + ")");
         } else {
             choose(digit);
         }
@@ -251,9 +249,24 @@ public final class DemoSwitcher extends BaseAppState {
         }
     }
 
+    /**
+     * End the pending entry: forget it and take its note off the title.
+     *
+     * @return the digit that was pending (or -1 if none was)
+     */
+    private int endEntry() {
+        int digit = pendingDigit;
+        pendingDigit = -1;
+        if (showingEntry != null) {
+            showingEntry.setTitleNote(null);
+            showingEntry = null;
+        }
+        return digit;
+    }
+
     /** Tab (+1) or Shift+Tab (-1): the next or previous demo, wrapping around. */
     private void step(int direction) {
-        pendingDigit = -1;
+        endEntry();
         select(Math.floorMod(requested + direction, demos.size()));
     }
 

@@ -95,6 +95,8 @@ public abstract class DemoState extends BaseAppState {
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
     /** What the time scale keys multiply or divide by. */
     private static final float TIME_SCALE_FACTOR = 2f;
+    /** Between the title and its note. */
+    private static final String TITLE_NOTE_GAP = "      ";
 
     private final String title;
     private final SimulationClock clock = new SimulationClock();
@@ -132,6 +134,10 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
     private final StringBuilder titleText = new StringBuilder(64);
+    /** The demo's place in the catalogue, shown before the title (0: none). */
+    private int catalogNumber;
+    /** A short note after the title ({@link #setTitleNote}), or null. */
+    private String titleNote;
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
     /** Scratch: a particle's velocity before its step (m/s). */
@@ -517,11 +523,33 @@ public abstract class DemoState extends BaseAppState {
      * @param number the number (&ge;1)
      */
     public void setCatalogNumber(int number) {
-        titleText.setLength(0);
-        titleText.append(number).append(".  ").append(title);
-        if (hud != null) {
-            hud.setTitle(titleText);
+        catalogNumber = number;
+        showTitle();
+    }
+
+    /**
+     * Show a short note after the title, or none: what the application is in the middle of,
+     * e.g. a demo number being typed ("typed 1_"). Not meant for every frame (the title is
+     * laid out again).
+     *
+     * @param note one short line, or null for none
+     */
+    public void setTitleNote(String note) {
+        if (note != null && (note.isEmpty() || note.indexOf('\n') >= 0)) {
+            throw new IllegalArgumentException("a title note must be null or one non-empty"
+                    + " line, but was \"" + note + "\"");
         }
+        titleNote = note;
+        showTitle();
+    }
+
+    /**
+     * Return the note shown after the title.
+     *
+     * @return the note, or null if none
+     */
+    public String getTitleNote() {
+        return titleNote;
     }
 
     /**
@@ -1132,6 +1160,21 @@ public abstract class DemoState extends BaseAppState {
     private void toggleGraph() {
         ghosts.toggleGraph(hud.getLayout());
         layOutAgain();
+    }
+
+    /** The title line: the catalogue number, the title, and the note if there is one. */
+    private void showTitle() {
+        titleText.setLength(0);
+        if (catalogNumber > 0) {
+            titleText.append(catalogNumber).append(".  ");
+        }
+        titleText.append(title);
+        if (titleNote != null) {
+            titleText.append(TITLE_NOTE_GAP).append(titleNote);
+        }
+        if (hud != null) {
+            hud.setTitle(titleText);
+        }
     }
 
     /** After a slot came or went: the same window, at the user's HUD factor in use. */

@@ -67,8 +67,13 @@ class DemoSwitcherHeadlessTest {
             } else {
                 tap(digitKey(number));
                 if (number == 1) {
-                    // A lone 1 waits for a second digit: let its wait pass by hand.
+                    // A lone 1 waits for a second digit, and the title says so; let its
+                    // wait pass by hand.
                     assertTrue(harness.call(() -> harness.app().getSwitcher().isEntryPending()));
+                    String title = harness.call(() -> harness.app().getSwitcher().getSelected()
+                            .getHud().getTitleText());
+                    assertEquals("4.  " + demos.get(3).getTitle()
+                            + "      typed 1_  (a second digit for 10-17)", title);
                     harness.call(() -> {
                         harness.app().getSwitcher().update(DemoSwitcher.ENTRY_SECONDS);
                         return true;

@@ -64,8 +64,7 @@ class DemoSwitcherTest {
         }
         assertTrue(switcher.isEntryPending());
         assertEquals(4, demos.indexOf(switcher.getSelected()));
-        assertEquals("1_: a second digit within 1 s for demos 10-17, else demo 1",
-                demos.get(4).getNotice());
+        assertEquals("typed 1_  (a second digit for 10-17)", demos.get(4).getTitleNote());
 
         for (int i = 0; i < 4; ++i) {
             switcher.update(FRAME);
@@ -73,6 +72,7 @@ class DemoSwitcherTest {
 
         assertFalse(switcher.isEntryPending());
         assertEquals(0, demos.indexOf(switcher.getSelected()));
+        assertNull(demos.get(4).getTitleNote(), "the note leaves the title with the entry");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -117,6 +117,7 @@ class DemoSwitcherTest {
         type(switcher, "1 Tab");
 
         assertFalse(switcher.isEntryPending());
+        assertNull(demos.get(0).getTitleNote());
         assertEquals(1, demos.indexOf(switcher.getSelected()));
     }
 
