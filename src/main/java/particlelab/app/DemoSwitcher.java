@@ -22,8 +22,9 @@ import particlelab.view.TextFormat;
  * <p>Typing a number: a digit that no two-digit demo starts with chooses its demo at once
  * (with 17 demos, 2 to 9); a digit that one does (1) waits up to {@link #ENTRY_SECONDS} of
  * frame time for a second digit, which completes the number (1 then 2: demo 12), and chooses
- * demo 1 if none comes; meanwhile the title says what was typed ("typed 1_"). A number with no demo behind it (0, 18) says so on the HUD instead of
- * doing nothing. Tab or Shift+Tab during an entry drops it and steps from the demo shown.
+ * demo 1 if none comes; meanwhile the title says what was typed ("typed 1_"). A number with
+ * no demo behind it (0, 18) says so on the HUD instead of doing nothing. Tab or Shift+Tab
+ * during an entry drops it and steps from the demo shown.
  * The help overlay states this rule, generated with the bindings, and lists the demos by
  * number.
  *

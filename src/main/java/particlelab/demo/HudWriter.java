@@ -8,13 +8,13 @@ import particlelab.view.TextFormat;
 /**
  * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
- * dropped, the pause at the next contact, and the keys that change it), a short notice if one is up, one line per particle
- * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
- * tpf) and the stability line (the smallest limit and the particle it belongs to). In a demo
- * with exact ghosts a particle's line ends with its distance to its ghost, and once landed it
- * is the particle's readouts, Euler against exact ({@link ExactGhosts}). The demo's own lines
- * follow, from {@link DemoState#writeHudLines}. Key names come from the bindings. Writing
- * allocates nothing.
+ * dropped, the pause at the next contact, and the keys that change it), a short notice if
+ * one is up, one line per particle (position, velocity, speed and where and when it landed),
+ * the stepping line (fixed h or raw tpf) and the stability line (the smallest limit and the
+ * particle it belongs to). In a demo with exact ghosts a particle's line ends with its
+ * distance to its ghost, and once landed it is the particle's readouts, Euler against exact
+ * ({@link ExactGhosts}). The demo's own lines follow, from {@link DemoState#writeHudLines}.
+ * Key names come from the bindings. Writing allocates nothing.
  */
 final class HudWriter {
 
