@@ -29,10 +29,10 @@ import particlelab.world.World;
  * {@link DemoState#advance} is timed with {@link System#nanoTime}. That is the whole
  * simulation side of a frame: the clock, the world's steps (integration, collisions, the
  * contact phases), the stability bookkeeping, the demo's own hooks, trails and moving the
- * views; not the HUD text (rebuilt every {@value DemoState#HUD_REFRESH_SECONDS} s) and not
- * rendering. A scene that is over (every particle landed) is restarted between two frames,
- * outside the timing, so every measured frame simulates; a full garbage collection runs before
- * each demo's warm-up. Writes {@value #CSV} and appends its section to {@code index.md}.
+ * views; not the HUD text (rebuilt every frame, after the steps) and not rendering. A scene
+ * that is over (every particle landed) is restarted between two frames, outside the timing,
+ * so every measured frame simulates; a full garbage collection runs before each demo's
+ * warm-up. Writes {@value #CSV} and appends its section to {@code index.md}.
  */
 public final class PhysicsShare {
 
@@ -188,10 +188,10 @@ public final class PhysicsShare {
                 + "(the clock, the world's steps with integration, collisions and the contact "
                 + "phases, the stability bookkeeping, the demo's own hooks, trails and moving "
                 + "the views), so it is an upper bound on the physics alone; the HUD text "
-                + "(rebuilt every ").append(fix(DemoState.HUD_REFRESH_SECONDS, 1))
-                .append(" s) and rendering are not in it. A scene that is over (every particle "
-                + "landed) is restarted between frames, outside the timing, and a full garbage "
-                + "collection runs before each demo. Share = time / ")
+                + "(rebuilt every frame, after the steps) and rendering are not in it. A scene "
+                + "that is over (every particle landed) is restarted between frames, outside "
+                + "the timing, and a full garbage collection runs before each demo. Share = "
+                + "time / ")
                 .append(fix(BUDGET_MS, 1)).append(" ms, the budget of a frame at ")
                 .append(Math.round(1.0 / FRAME_SECONDS)).append(" frames per second. The "
                 + "largest times include whatever the garbage collector or the JIT compiler "

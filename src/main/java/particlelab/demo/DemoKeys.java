@@ -24,6 +24,8 @@ final class DemoKeys {
     private final List<KeyBinding> shared = new ArrayList<>();
     private final List<KeyBinding> own = new ArrayList<>();
     private final List<KeyBinding> application = new ArrayList<>();
+    /** The application's demos, in catalogue order: numbered from 1 in the help. */
+    private final List<String> demoTitles = new ArrayList<>();
 
     /**
      * Declare a key every demo has.
@@ -63,6 +65,16 @@ final class DemoKeys {
     }
 
     /**
+     * Replace the list of demos the help shows by number, the numbers a digit entry reaches.
+     *
+     * @param titles the demos' titles, in catalogue order (not null, copied)
+     */
+    void setDemoTitles(List<String> titles) {
+        demoTitles.clear();
+        demoTitles.addAll(titles);
+    }
+
+    /**
      * Copy the keys the demo maps: the shared ones, then its own.
      *
      * @return a new list (not null)
@@ -74,8 +86,8 @@ final class DemoKeys {
     }
 
     /**
-     * Write the help overlay: the demo's keys, the shared ones, the application's and the
-     * camera's.
+     * Write the help overlay: the demo's keys, the shared ones, the application's, the demos
+     * by number and the camera's.
      *
      * @param title the demo's name, heading its own keys (not null)
      * @return the text (not null)
@@ -89,6 +101,12 @@ final class DemoKeys {
         if (!application.isEmpty()) {
             help.section("Choosing a demo");
             addSection(help, application);
+        }
+        if (!demoTitles.isEmpty()) {
+            help.section("The demos, by number");
+            for (int i = 0; i < demoTitles.size(); ++i) {
+                help.key(Integer.toString(i + 1), demoTitles.get(i));
+            }
         }
         help.jmeKeys();
         return help.toString();

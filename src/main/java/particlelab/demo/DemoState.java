@@ -64,10 +64,11 @@ import particlelab.lecture.DragDemo;
  * Nothing else moves a particle. This class hears each step as a {@link StepListener}: the
  * stability warnings look at the particles before it, and after it the lecture's stop at the
  * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
- * particles. None of this allocates; the HUD text is
- * rebuilt in a reused {@link StringBuilder} ten times a second (or every frame, see
- * {@link #setHudRefreshSeconds}) and shown in {@code HudText}s, whose glyph meshes are
- * rewritten in place, so a whole frame allocates nothing (FrameAllocationHeadlessTest).
+ * particles. None of this allocates; the HUD text is rebuilt in a reused
+ * {@link StringBuilder} every frame, after the frame's steps and views, so its numbers are
+ * those of the picture (or less often, see {@link #setHudRefreshSeconds}), and shown in
+ * {@code HudText}s, whose glyph meshes are rewritten in place, so a whole frame allocates
+ * nothing (FrameAllocationHeadlessTest).
  *
  * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
  * scene and shows why, instead of crashing the window. Once every particle has landed the
@@ -85,10 +86,17 @@ public abstract class DemoState extends BaseAppState {
 
     /** The frame time injected by the hitch key (in seconds). */
     public static final float HITCH_SECONDS = 0.5f;
-    /** How often the HUD text is rebuilt (in seconds of real time). */
-    public static final float HUD_REFRESH_SECONDS = 0.1f;
+    /**
+     * How often the HUD text is rebuilt by default (in seconds of frame time): 0, every frame,
+     * so the HUD's numbers are those of the picture they are drawn on.
+     */
+    public static final float HUD_REFRESH_SECONDS = 0f;
+    /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
+    public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
     /** What the time scale keys multiply or divide by. */
     private static final float TIME_SCALE_FACTOR = 2f;
+    /** Between the title and its note. */
+    private static final String TITLE_NOTE_GAP = "      ";
 
     private final String title;
     private final SimulationClock clock = new SimulationClock();
@@ -102,6 +110,8 @@ public abstract class DemoState extends BaseAppState {
     private final ParameterControls parameterControls = new ParameterControls();
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
+    /** Pause at the next contact the world resolves (its key, its HUD line). */
+    private final ContactPause contactPause = new ContactPause(clock, particles);
     private final SimulationClock.Stepper stepper = this::stepWorld;
     /** Simulations beside the world (a second world, a packed batch), stepped after it. */
     private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
@@ -110,6 +120,7 @@ public abstract class DemoState extends BaseAppState {
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
+            contactPause.beforeStep();
             DemoState.this.beforeStep(stepSeconds);
             observeParticles(stepSeconds);
         }
@@ -123,6 +134,10 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
     private final StringBuilder titleText = new StringBuilder(64);
+    /** The demo's place in the catalogue, shown before the title (0: none). */
+    private int catalogNumber;
+    /** A short note after the title ({@link #setTitleNote}), or null. */
+    private String titleNote;
     /** Scratch: a particle's position before its step (m). */
     private final Vector3f previousPosition = new Vector3f();
     /** Scratch: a particle's velocity before its step (m/s). */
@@ -198,7 +213,9 @@ public abstract class DemoState extends BaseAppState {
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         titleText.append(title);
         hudWriter.setWarnings(warnings);
+        hudWriter.setContactPause(contactPause);
         world.addStepListener(stepListener);
+        world.addContactListener(contactPause);
         hudWriter.setGhosts(ghosts);
     }
 
@@ -245,8 +262,8 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Append the demo's own HUD lines, each ending in a newline. Called ten times a second:
-     * append with {@link TextFormat} and constant strings, so nothing is allocated.
+     * Append the demo's own HUD lines, each ending in a newline. Called every frame: append
+     * with {@link TextFormat} and constant strings, so nothing is allocated.
      *
      * @param text where to append (not null, modified)
      */
@@ -508,11 +525,33 @@ public abstract class DemoState extends BaseAppState {
      * @param number the number (&ge;1)
      */
     public void setCatalogNumber(int number) {
-        titleText.setLength(0);
-        titleText.append(number).append(".  ").append(title);
-        if (hud != null) {
-            hud.setTitle(titleText);
+        catalogNumber = number;
+        showTitle();
+    }
+
+    /**
+     * Show a short note after the title, or none: what the application is in the middle of,
+     * e.g. a demo number being typed ("typed 1_"). Not meant for every frame (the title is
+     * laid out again).
+     *
+     * @param note one short line, or null for none
+     */
+    public void setTitleNote(String note) {
+        if (note != null && (note.isEmpty() || note.indexOf('\n') >= 0)) {
+            throw new IllegalArgumentException("a title note must be null or one non-empty"
+                    + " line, but was \"" + note + "\"");
         }
+        titleNote = note;
+        showTitle();
+    }
+
+    /**
+     * Return the note shown after the title.
+     *
+     * @return the note, or null if none
+     */
+    public String getTitleNote() {
+        return titleNote;
     }
 
     /**
@@ -525,6 +564,16 @@ public abstract class DemoState extends BaseAppState {
     public void setApplicationBindings(List<KeyBinding> bindings) {
         keys.setApplication(bindings);
         applicationBindings = new ArrayList<>(bindings);
+    }
+
+    /**
+     * Tell the demo the application's demos, so that its help overlay lists them by the
+     * numbers the digit keys reach. Call before the demo is initialised.
+     *
+     * @param titles the demos' titles in catalogue order, demo 1 first (not null, copied)
+     */
+    public void setDemoTitles(List<String> titles) {
+        keys.setDemoTitles(titles);
     }
 
     /**
@@ -798,6 +847,7 @@ public abstract class DemoState extends BaseAppState {
         ghosts.restartAll();
         clock.reset();
         warnings.clear();
+        contactPause.restart();
         onRestart();
         frameLaunches();
         hudDirty = true;
@@ -845,9 +895,9 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Choose how often the HUD text is rebuilt and handed to the screen: every
-     * {@link #HUD_REFRESH_SECONDS} by default, or every frame (0), as a lecture hall's
-     * projector may want. Either way a frame allocates nothing.
+     * Choose how often the HUD text is rebuilt and handed to the screen: every frame by
+     * default ({@link #HUD_REFRESH_SECONDS}, 0), so the numbers match the picture, or less
+     * often, e.g. {@link #SLOW_HUD_REFRESH_SECONDS}. Either way a frame allocates nothing.
      *
      * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
      */
@@ -1059,6 +1109,11 @@ public abstract class DemoState extends BaseAppState {
         KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
                 "reset: launch again, reframe the camera", this::restartAndReframe)
                 .withSummary("reset"));
+        KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
+                "pause at the next contact, on the step that resolves it (the HUD names it);"
+                        + " there, on to the next one; while waiting, cancel",
+                contactPause::press));
+        contactPause.setKeys(atContact, pause);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
                 "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
         StringBuilder hitch = new StringBuilder("inject one ");
@@ -1136,6 +1191,21 @@ public abstract class DemoState extends BaseAppState {
     private void toggleGraph() {
         ghosts.toggleGraph(hud.getLayout());
         layOutAgain();
+    }
+
+    /** The title line: the catalogue number, the title, and the note if there is one. */
+    private void showTitle() {
+        titleText.setLength(0);
+        if (catalogNumber > 0) {
+            titleText.append(catalogNumber).append(".  ");
+        }
+        titleText.append(title);
+        if (titleNote != null) {
+            titleText.append(TITLE_NOTE_GAP).append(titleNote);
+        }
+        if (hud != null) {
+            hud.setTitle(titleText);
+        }
     }
 
     /** After a slot came or went: the same window, at the user's HUD factor in use. */

@@ -8,13 +8,13 @@ import particlelab.view.TextFormat;
 /**
  * The part of a demo's HUD body that every demo shows: the equations it runs, the time line
  * (simulated time, pause, the time scale asked for and the one measured, whether time is being
- * dropped, and the keys that change it), a short notice if one is up, one line per particle
- * (position, velocity, speed and where and when it landed), the stepping line (fixed h or raw
- * tpf) and the stability line (the smallest limit and the particle it belongs to). In a demo
- * with exact ghosts a particle's line ends with its distance to its ghost, and once landed it
- * is the particle's readouts, Euler against exact ({@link ExactGhosts}). The demo's own lines
- * follow, from {@link DemoState#writeHudLines}. Key names come from the bindings. Writing
- * allocates nothing.
+ * dropped, the pause at the next contact, and the keys that change it), a short notice if
+ * one is up, one line per particle (position, velocity, speed and where and when it landed),
+ * the stepping line (fixed h or raw tpf) and the stability line (the smallest limit and the
+ * particle it belongs to). In a demo with exact ghosts a particle's line ends with its
+ * distance to its ghost, and once landed it is the particle's readouts, Euler against exact
+ * ({@link ExactGhosts}). The demo's own lines follow, from {@link DemoState#writeHudLines}.
+ * Key names come from the bindings. Writing allocates nothing.
  */
 final class HudWriter {
 
@@ -36,6 +36,8 @@ final class HudWriter {
     private ExactGhosts ghosts;
     /** The demo's warning line, which the stability line agrees with (null: none). */
     private StepWarnings warnings;
+    /** The pause at the next contact, whose line follows the time line (null: none). */
+    private ContactPause contactPause;
 
     /**
      * Create a writer for one demo.
@@ -69,6 +71,16 @@ final class HudWriter {
      */
     void setWarnings(StepWarnings stepWarnings) {
         warnings = stepWarnings;
+    }
+
+    /**
+     * Let the pause at the next contact write in the time line: that it is armed, or which
+     * contact the clock stands at (in place of the usual pause text).
+     *
+     * @param pause the demo's pause (not null)
+     */
+    void setContactPause(ContactPause pause) {
+        contactPause = pause;
     }
 
     /**
@@ -192,7 +204,8 @@ final class HudWriter {
     }
 
     /**
-     * The time line: t, then what stops it (pause, a finished scene), the time scale asked
+     * The time line: t, then what stops it (the contact the pause at the next contact stopped
+     * at, a finished scene, pause) and whether that pause is armed, the time scale asked
      * for and, when it matters, the one measured and why they differ; then, unless the scale
      * is x1 and nothing is dropped, the keys that change it and its limits.
      */
@@ -200,12 +213,17 @@ final class HudWriter {
         text.append("t = ");
         TextFormat.appendFixed(text, clock.getSimulatedSeconds(), 2).append(" s");
         boolean running = !sceneOver && !clock.isPaused();
-        if (sceneOver) {
+        if (contactPause != null && contactPause.isAtContact()) {
+            contactPause.appendAtContact(text.append("   "));
+        } else if (sceneOver) {
             text.append("   stopped: every particle has landed (").append(resetKey.getKeyLabel())
                     .append(" launches again)");
         } else if (clock.isPaused()) {
             text.append("   PAUSED: ").append(pauseKey.getKeyLabel()).append(" resumes, ")
                     .append(stepKey.getKeyLabel()).append(" takes one step");
+        }
+        if (contactPause != null && contactPause.isArmed()) {
+            contactPause.appendArmed(text.append("   "));
         }
         float scale = clock.getTimeScale();
         float measured = clock.getMeasuredTimeScale();

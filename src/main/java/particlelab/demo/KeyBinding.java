@@ -56,6 +56,22 @@ public final class KeyBinding {
      */
     public KeyBinding(int[] keyCodes, String[] keyLabels, String description, String summary,
             Action action) {
+        this(keyCodes, keyLabels, null, description, summary, action);
+    }
+
+    /**
+     * Create a binding, printed with the joined key labels or a label of its own.
+     *
+     * @param keyCodes the keys (as for the public constructor)
+     * @param keyLabels each key as printed (as for the public constructor)
+     * @param printedLabel how the help and footer print the keys, e.g. "0-9", or null to join
+     *     the key labels
+     * @param description what the action does (not null, not empty)
+     * @param summary the action in a word or two for the footer, or null
+     * @param action run once per press of any of the keys (not null)
+     */
+    private KeyBinding(int[] keyCodes, String[] keyLabels, String printedLabel,
+            String description, String summary, Action action) {
         if (keyCodes == null || keyLabels == null || keyCodes.length == 0
                 || keyCodes.length != keyLabels.length) {
             throw new IllegalArgumentException("a binding needs one label per key code and at"
@@ -92,9 +108,13 @@ public final class KeyBinding {
         if (action == null) {
             throw new IllegalArgumentException("action of key " + joined + " must not be null");
         }
+        if (printedLabel != null && printedLabel.isEmpty()) {
+            throw new IllegalArgumentException("printed label of key " + joined
+                    + " must be null or a non-empty text");
+        }
         this.keyCodes = keyCodes.clone();
         this.keyLabels = keyLabels.clone();
-        this.keyLabel = joined.toString();
+        this.keyLabel = printedLabel != null ? printedLabel : joined.toString();
         this.description = description;
         this.summary = summary;
         this.action = action;
@@ -111,7 +131,23 @@ public final class KeyBinding {
             throw new IllegalArgumentException("footer summary of key " + keyLabel
                     + " must be a non-empty text, but was null");
         }
-        return new KeyBinding(keyCodes, keyLabels, description, newSummary, action);
+        return new KeyBinding(keyCodes, keyLabels, keyLabel, description, newSummary, action);
+    }
+
+    /**
+     * Copy this binding, printed in the help and the footer with a label of its own instead
+     * of its keys' labels joined: "0-9" for the ten digits, "Tab / Shift+Tab" for a key whose
+     * action reads the Shift key. Each key keeps its own label ({@link #getKeyLabel(int)}).
+     *
+     * @param printedLabel the label (not null, not empty)
+     * @return a new binding (not null)
+     */
+    public KeyBinding withKeyLabel(String printedLabel) {
+        if (printedLabel == null) {
+            throw new IllegalArgumentException("printed label of key " + keyLabel
+                    + " must be a non-empty text, but was null");
+        }
+        return new KeyBinding(keyCodes, keyLabels, printedLabel, description, summary, action);
     }
 
     /** @return how many keys run the action (&ge;1) */
@@ -139,7 +175,10 @@ public final class KeyBinding {
         return keyLabels[keyIndex];
     }
 
-    /** @return every key as printed, joined by {@link #LABEL_SEPARATOR}, e.g. "+ / keypad +" */
+    /**
+     * @return every key as printed, joined by {@link #LABEL_SEPARATOR}, e.g. "+ / keypad +",
+     *     or the label given to {@link #withKeyLabel}
+     */
     public String getKeyLabel() {
         return keyLabel;
     }

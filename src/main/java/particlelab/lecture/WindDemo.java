@@ -149,7 +149,7 @@ public final class WindDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        // Step 6: HUD lines, ten times a second: append numbers with TextFormat (no garbage).
+        // Step 6: HUD lines, every frame: append numbers with TextFormat (no garbage).
         text.append("Wind W = ");
         TextFormat.appendVector(text, windVelocity, 1).append(" m/s   (Left/Right change it)\n");
     }

@@ -28,6 +28,11 @@ package particlelab.physics;
  * <p>A {@link #reset()} from inside the stepper (a scene that restarts itself during a step)
  * wins over the step that asked for it: that step is not counted and the rest of the frame is
  * forgotten, so {@code t} reads 0 with the scene at its start and the leftover stays in range.
+ *
+ * <p>A {@link #setPaused pause} from inside the stepper (a demo that stops at a contact) ends
+ * the frame right after that step, which is counted: {@code t} reads the end of the step that
+ * paused, not of the frame. The frame's remaining whole steps are dropped (resuming does not
+ * catch up on them in one burst); the leftover below h is carried as usual.
  */
 public final class SimulationClock {
 
@@ -257,7 +262,8 @@ public final class SimulationClock {
     }
 
     /**
-     * Pause or resume the simulation.
+     * Pause or resume the simulation. Called from inside the stepper, a pause ends the frame
+     * after the step under way (see the class comment).
      *
      * @param newPaused true to pause
      */
@@ -288,8 +294,9 @@ public final class SimulationClock {
     }
 
     /**
-     * Return the frame time dropped since the last reset: by the clamp and the step cap, and
-     * the leftover ended by a mode switch. In fixed-step mode, the scaled frame time fed while
+     * Return the frame time dropped since the last reset: by the clamp and the step cap, the
+     * leftover ended by a mode switch, and the whole steps left in a frame that a pause from
+     * inside a step cut short. In fixed-step mode, the scaled frame time fed while
      * running equals {@code simulated + dropped + leftover} (up to double round-off, and up to
      * h·1e-4 per mode switch), as long as no single step was taken.
      *
@@ -467,15 +474,36 @@ public final class SimulationClock {
                 return steps;
             }
             accumulatorSeconds -= stepSeconds;
+            if (paused) {
+                // The stepper paused the clock: the frame ends with this step.
+                dropWholeSteps(false);
+                return steps;
+            }
         }
+        dropWholeSteps(true);
+        return steps;
+    }
+
+    /**
+     * Drop the whole steps left in the leftover, keeping the part below h: what the step cap
+     * or a pause from inside a step left untaken.
+     *
+     * @param measured true to count them in the measuring window too (the cap: the HUD says
+     *     time is being dropped), false for a pause (which started a new window)
+     */
+    private void dropWholeSteps(boolean measured) {
+        double dueSeconds = stepSeconds * (1.0 - STEP_DUE_FRACTION);
         if (accumulatorSeconds >= dueSeconds) {
-            // The cap stopped us: drop the whole steps we could not take, keep the leftover.
+            // Drop the whole steps not taken, keep the leftover below h.
             double wholeSteps = Math.floor(accumulatorSeconds / stepSeconds + STEP_DUE_FRACTION);
             double excess = wholeSteps * stepSeconds;
-            drop(excess);
+            if (measured) {
+                drop(excess);
+            } else {
+                droppedSeconds += excess;
+            }
             accumulatorSeconds -= excess;
         }
-        return steps;
     }
 
     private void drop(double seconds) {

@@ -60,6 +60,15 @@ public final class SurfaceRule implements CollisionRule {
     }
 
     /**
+     * Return what the HUD calls the surface.
+     *
+     * @return the name given, e.g. "ground" (not null)
+     */
+    public String getName() {
+        return name;
+    }
+
+    /**
      * Access the surface.
      *
      * @return the surface (not null)

@@ -1,66 +1,176 @@
 package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 
-/** The switcher's keys, generated from the number of demos; no jME application needed. */
+/**
+ * The switcher's keys, generated from the number of demos, and the digit entry's rule; no jME
+ * application needed (the switch happens in {@link DemoSwitcher#update}, called here with a
+ * fixed frame time). Shift+Tab, which needs jME's key events, is in
+ * {@code DemoSwitcherHeadlessTest}.
+ */
 class DemoSwitcherTest {
 
+    /** A frame of the window (s). */
+    private static final float FRAME = 1f / 60f;
+
+    /**
+     * Key sequences on the catalogue's 17 demos and the demo each ends on: digits 2-9 choose
+     * at once, 1 waits for a second digit (1 then 0-7: demos 10-17), or, alone, is demo 1
+     * once {@link DemoSwitcher#ENTRY_SECONDS} have passed.
+     */
+    @ParameterizedTest(name = "{0} -> demo {1}")
+    @CsvSource({
+        "'1 2', 12",
+        "'1 0', 10",
+        "'1 7', 17",
+        "'2', 2",
+        "'9', 9",
+        "'1 wait', 1",
+        "'1 wait 5', 5",
+        "'5 1 3', 13",
+        "'1 2 1 6', 16",
+        "'9 1 4 wait', 14",
+    })
+    void aKeySequenceChoosesTheDemoOfItsNumber(String keys, int demo) {
+        List<DemoState> demos = DemoCatalog.createAll();
+        DemoSwitcher switcher = new DemoSwitcher(demos, 0);
+
+        type(switcher, keys);
+
+        assertEquals(demo, demos.indexOf(switcher.getSelected()) + 1);
+        assertFalse(switcher.isEntryPending());
+    }
+
     @Test
-    void aDigitWithNoDemoShowsANoticeNamingTheDigitAndTheCount() {
+    void aLoneOneWaitsForTheSecondDigitAndChoosesDemoOneOnlyAfterTheEntryTime() {
+        List<DemoState> demos = DemoCatalog.createAll();
+        DemoSwitcher switcher = new DemoSwitcher(demos, 4);
+        press(switcher, "1");
+        // Just short of the entry time (frames of 1/60 s, summed in float): still waiting.
+        int frames = (int) (DemoSwitcher.ENTRY_SECONDS / FRAME) - 2;
+        for (int i = 0; i < frames; ++i) {
+            switcher.update(FRAME);
+        }
+        assertTrue(switcher.isEntryPending());
+        assertEquals(4, demos.indexOf(switcher.getSelected()));
+        assertEquals("typed 1_  (a second digit for 10-17)", demos.get(4).getTitleNote());
+
+        for (int i = 0; i < 4; ++i) {
+            switcher.update(FRAME);
+        }
+
+        assertFalse(switcher.isEntryPending());
+        assertEquals(0, demos.indexOf(switcher.getSelected()));
+        assertNull(demos.get(4).getTitleNote(), "the note leaves the title with the entry");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({
+        "'1 8', no demo 18: there are 17; Tab cycles",
+        "'0', no demo 0: there are 17; Tab cycles",
+    })
+    void aNumberWithNoDemoSaysSoAndKeepsTheDemo(String keys, String notice) {
+        List<DemoState> demos = DemoCatalog.createAll();
+        DemoSwitcher switcher = new DemoSwitcher(demos, 2);
+
+        type(switcher, keys);
+
+        assertEquals(notice, demos.get(2).getNotice());
+        assertEquals(2, demos.indexOf(switcher.getSelected()));
+    }
+
+    @Test
+    void withFewDemosEveryDigitChoosesAtOnceAndOneBeyondThemSaysSo() {
         List<DemoState> demos = DemoCatalog.createAll().subList(0, 2);
         DemoSwitcher switcher = new DemoSwitcher(demos, 0);
 
+        press(switcher, "1");
+        assertFalse(switcher.isEntryPending(), "no demo 10 to wait for");
+        press(switcher, "2");
+        switcher.update(FRAME);
+        assertEquals(1, demos.indexOf(switcher.getSelected()));
         press(switcher, "7");
 
-        assertEquals("no demo 7: there are 2; Tab cycles", demos.get(0).getNotice());
-        assertNull(demos.get(1).getNotice());
-        assertEquals(0, demos.indexOf(switcher.getSelected()));
+        assertEquals("no demo 7: there are 2; Tab cycles", demos.get(1).getNotice());
+        assertNull(demos.get(0).getNotice());
+        assertEquals(1, demos.indexOf(switcher.getSelected()));
     }
 
     @Test
-    void everyDigitIsBoundOnceAndTheFooterNamesTheRangeInUse() {
-        List<DemoState> demos = DemoCatalog.createAll().subList(0, 2);
+    void tabStepsOnFromTheLastDemoToTheFirstAndDropsAPendingEntry() {
+        List<DemoState> demos = DemoCatalog.createAll();
+        DemoSwitcher switcher = new DemoSwitcher(demos, demos.size() - 1);
+
+        type(switcher, "Tab");
+        assertEquals(0, demos.indexOf(switcher.getSelected()));
+        type(switcher, "1 Tab");
+
+        assertFalse(switcher.isEntryPending());
+        assertNull(demos.get(0).getTitleNote());
+        assertEquals(1, demos.indexOf(switcher.getSelected()));
+    }
+
+    @Test
+    void theTenDigitsAndTabAreBoundOnceAndTheFooterAndHelpSayHow() {
+        List<DemoState> demos = DemoCatalog.createAll();
         DemoSwitcher switcher = new DemoSwitcher(demos, 0);
 
-        List<String> digits = new ArrayList<>();
-        String footer = null;
+        List<String> keys = new ArrayList<>();
+        List<String> footer = new ArrayList<>();
+        List<String> help = new ArrayList<>();
         for (KeyBinding binding : switcher.getBindings()) {
             for (int i = 0; i < binding.countKeys(); ++i) {
-                if (binding.getKeyLabel(i).matches("[1-9]")) {
-                    digits.add(binding.getKeyLabel(i));
-                }
+                keys.add(binding.getKeyLabel(i));
             }
             if (binding.getSummary() != null) {
-                footer = binding.getKeyLabel() + "  " + binding.getSummary();
+                footer.add(binding.getKeyLabel() + "  " + binding.getSummary());
             }
+            help.add(binding.toString());
         }
 
-        assertEquals(List.of("1", "2", "3", "4", "5", "6", "7", "8", "9"), digits);
-        assertEquals("Tab  next demo (1-2 by number)", footer);
+        assertEquals(List.of("1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "Tab"), keys);
+        assertEquals(List.of("Tab / Shift+Tab  demos (or 1-17)"), footer);
+        assertEquals(List.of("0-9: type a demo's number (1-17): 2-9 choose at once; 1 waits"
+                + " 1 s for a second digit (1 then 2: demo 12), else it is demo 1",
+                "Tab / Shift+Tab: next demo; with Shift, the previous one (both wrap around)"),
+                help);
     }
 
     @Test
-    void withNineDemosOrMoreNoDigitIsLeftOver() {
-        List<DemoState> demos = new ArrayList<>();
-        while (demos.size() < 10) {
-            demos.addAll(DemoCatalog.createAll());
-        }
-        DemoSwitcher switcher = new DemoSwitcher(demos, 0);
+    void withNineDemosOrFewerTheHelpSaysEveryNumberIsChosenAtOnce() {
+        DemoSwitcher switcher = new DemoSwitcher(DemoCatalog.createAll().subList(0, 9), 0);
 
-        int keys = 0;
-        for (KeyBinding binding : switcher.getBindings()) {
-            keys += binding.countKeys();
-            assertTrue(!binding.getDescription().startsWith("no demo"), binding.toString());
+        assertEquals("type a demo's number (1-9): it is chosen at once",
+                switcher.getBindings().get(0).getDescription());
+    }
+
+    /**
+     * Press keys by label, "wait" for the entry time to pass, then let a frame switch.
+     *
+     * @param keys labels separated by spaces, e.g. "1 2" or "1 wait"
+     */
+    private static void type(DemoSwitcher switcher, String keys) {
+        for (String key : keys.split(" ")) {
+            if (key.equals("wait")) {
+                for (float t = 0f; t < DemoSwitcher.ENTRY_SECONDS + FRAME; t += FRAME) {
+                    switcher.update(FRAME);
+                }
+            } else {
+                press(switcher, key);
+                switcher.update(FRAME);
+            }
         }
-        assertEquals(10, keys); // 1-9 and Tab
     }
 
     private static void press(DemoSwitcher switcher, String label) {

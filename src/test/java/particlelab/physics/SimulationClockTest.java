@@ -368,6 +368,40 @@ class SimulationClockTest {
     }
 
     @Test
+    void aPauseFromInsideTheStepperEndsTheFrameAfterThatStepAndResumesWithoutABurst() {
+        // A demo that stops at a contact found in the third of a frame's five steps.
+        SimulationClock clock = new SimulationClock();
+        int[] calls = {0};
+        SimulationClock.Stepper pausesInThirdStep = seconds -> {
+            if (++calls[0] == 3) {
+                clock.setPaused(true);
+            }
+        };
+        double fed = 5.5 * H;
+
+        int steps = clock.advance((float) fed, pausesInThirdStep);
+
+        assertEquals(3, steps);
+        assertEquals(3, calls[0]);
+        assertTrue(clock.isPaused());
+        // The step that paused is counted: t is the end of the third step, not of the frame
+        // (three float steps summed in double: exact to ~1e-16, see ACCOUNTING_TOLERANCE).
+        assertEquals(3.0 * H, clock.getSimulatedSeconds(), ACCOUNTING_TOLERANCE);
+        assertLeftoverInRange(clock);
+        assertConserved(clock, (float) fed);
+        // Frames keep coming: nothing more is simulated.
+        for (int i = 0; i < 10; ++i) {
+            assertEquals(0, clock.advance(H, pausesInThirdStep));
+        }
+        assertEquals(3.0 * H, clock.getSimulatedSeconds(), ACCOUNTING_TOLERANCE);
+        // Resumed, a frame of h takes one step: the two steps the pause cut off are dropped.
+        clock.setPaused(false);
+        assertEquals(1, clock.advance(H, pausesInThirdStep));
+        assertEquals(4.0 * H, clock.getSimulatedSeconds(), ACCOUNTING_TOLERANCE);
+        assertFalse(clock.isDroppingTime(), "a pause is not the clamp or the cap");
+    }
+
+    @Test
     void aResetFromInsideARawStepIsNotCountedEither() {
         SimulationClock clock = new SimulationClock();
         clock.setMode(SimulationClock.Mode.RAW_TPF);
