@@ -73,9 +73,9 @@ public final class HudLayout {
     private static final String CONTINUATION = "    ";
     /** The space above and below the body (in body line heights). */
     private static final float BAND_SPACE = 0.2f;
-    private static final float HELP_SHRINK = 0.92f;
+    private static final float HELP_SHRINK = 0.96f;
     /** The most columns the help is set in. */
-    private static final int MAX_HELP_COLUMNS = 4;
+    private static final int MAX_HELP_COLUMNS = 5;
     /** The largest share of the window's width the side panel takes. */
     private static final float MAX_PANEL_SHARE = 0.4f;
     /** The largest share of the scene's width and height the graph takes. */
