@@ -5,12 +5,14 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationCheck;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.view.BoxView;
@@ -28,12 +30,15 @@ import particlelab.world.Body;
  * then comes back, again and again. Each flip is a sign change of the body-frame
  * {@code ωy}; the HUD lists the flip times and the period of {@code ωy} (two flips).
  *
- * <p>What to watch for: the racket's front face (bright) and back face (dark) swap every few
- * seconds. I switches the angular integrator of the racket shown: explicit Euler gains
- * kinetic energy and |L| every step (its HUD drift grows), implicit midpoint keeps both to
- * round-off. Both are stepped all the time (the other one unseen), so the HUD compares them.
- * G leaves out the gyroscopic term (as some engines do): then ω stays constant and the racket
- * never flips.
+ * <p>What to watch for: two rackets side by side, the same plate from the same start, turned
+ * by the same world with the same clock: on the left its ω stepped by explicit Euler, on the
+ * right by the implicit midpoint, a post under each naming its method. Their front faces
+ * (bright) and back faces (dark) swap every few seconds; explicit Euler gains kinetic energy
+ * and |L| every step (its HUD drift grows, its flips come ever sooner), implicit midpoint
+ * keeps both to round-off, and the HUD gives the angle between the two plates as they part.
+ * I shows both, explicit Euler alone or the midpoint alone (the other slot stays empty; both
+ * are stepped all the time, so the HUD still compares them). G leaves out the gyroscopic
+ * term (as some engines do): then ω stays constant and neither racket ever flips.
  */
 public final class TennisRacketDemo extends DemoState {
 
@@ -44,10 +49,28 @@ public final class TennisRacketDemo extends DemoState {
     /** The methods, in the order of the HUD lines. */
     public static final Angular[] METHODS = {Angular.EXPLICIT, Angular.IMPLICIT_MIDPOINT};
     private static final String[] NAMES = {"explicit Euler", "implicit midpoint"};
+    /** The value of {@link #getShownMethod()} that shows both rackets. */
+    public static final int BOTH = METHODS.length;
+    /** The {@code method} parameter's names: one racket alone, by index, or both. */
+    private static final String[] SHOWN_NAMES = {"explicit", "midpoint", "both"};
+    /** Each racket's front-face colour, in the order of {@link #METHODS}. */
+    private static final ColorRGBA[] COLORS = {new ColorRGBA(1f, 0.55f, 0.3f, 1f),
+        new ColorRGBA(0.35f, 0.75f, 1f, 1f)};
     /** The starting tilt toward the camera, so the plate's face is seen (rad). */
     private static final float TILT = -0.45f;
     /** The plate's half sides, with the proportions that give moments (1, 2, 3) (m). */
     private static final Vector3f HALF_EXTENTS = new Vector3f(1.414f, 1f, 0.04f);
+    /**
+     * How far each racket's centre is from x = 0 (m): more than the plate's half diagonal
+     * (1.73 m) as the perspective enlarges it, so the two never touch on the screen.
+     */
+    private static final float SLOT_X = 2.9f;
+    /** The height of the rackets' centres (m). */
+    private static final float CENTRE_Y = 3.1f;
+    /** The rackets spin in front of the grid's plane, so no grid line shows on them (m). */
+    private static final float CENTRE_Z = 1.8f;
+    /** The posts naming the methods (m): short, below the lowest corner's reach. */
+    private static final float POST_HEIGHT = 0.35f;
     /** How many flip times are kept per method. */
     private static final int FLIPS_KEPT = 64;
     private static final int FLIPS_SHOWN = 6;
@@ -66,12 +89,16 @@ public final class TennisRacketDemo extends DemoState {
     private final int[] flips = new int[METHODS.length];
     private final boolean[] positiveWy = new boolean[METHODS.length];
     private final Vector3f bodyOmega = new Vector3f();
-    /** Where the racket spins: in front of the grid's plane, so no grid line shows on it. */
-    private final Vector3f centre = new Vector3f(0f, 2.6f, 1.8f);
+    /** Where each racket spins, left and right of x = 0 (m). */
+    private final Vector3f[] centres = {new Vector3f(-SLOT_X, CENTRE_Y, CENTRE_Z),
+        new Vector3f(SLOT_X, CENTRE_Y, CENTRE_Z)};
     private final Matrix3f tilt = new Matrix3f();
-    private int shown = 0;
+    /** Measures the angle between the two plates. */
+    private final RotationCheck check = new RotationCheck();
+    /** 0 or 1: that method's racket alone; {@link #BOTH}: both. */
+    private int shown = BOTH;
     private double elapsedSeconds;
-    private BoxView view;
+    private final BoxView[] views = new BoxView[METHODS.length];
     private KeyBinding methodKey;
     private KeyBinding gyroscopicKey;
 
@@ -120,12 +147,44 @@ public final class TennisRacketDemo extends DemoState {
     }
 
     /**
-     * Return which method's racket is shown.
+     * Return which rackets are shown.
      *
-     * @return 0 for explicit Euler, 1 for implicit midpoint
+     * @return 0 for explicit Euler alone, 1 for implicit midpoint alone, {@link #BOTH} for
+     *     both side by side
      */
     public int getShownMethod() {
         return shown;
+    }
+
+    /**
+     * Test whether one method's racket is drawn.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @return true if it is shown (alone or beside the other)
+     */
+    public boolean isShown(int method) {
+        return shown == BOTH || shown == method;
+    }
+
+    /**
+     * Access where one method's racket spins: its body's position, left or right of x = 0.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @return the live centre (in metres, not null; do not modify)
+     */
+    public Vector3f getCentre(int method) {
+        return centres[method];
+    }
+
+    /**
+     * Return the angle between the two rackets' orientations, the explicit one's nearest
+     * rotation against the midpoint's: 0 while they agree, up to 180° once they part.
+     *
+     * @return the angle (in radians, from 0 to π)
+     */
+    public double angleBetweenRadians() {
+        getWorld();
+        return check.angleError(bodies[0].orientation, bodies[1].orientation);
     }
 
     /**
@@ -154,23 +213,24 @@ public final class TennisRacketDemo extends DemoState {
     @Override
     protected void createScene() {
         // One body per method, with no force and at rest: the world steps only its rotation
-        // (the translation step leaves a body at rest where it is).
+        // (the translation step leaves a body at rest where it is). A post names each.
         ParticleIntegrator noForce = new ParticleIntegrator();
         for (int i = 0; i < METHODS.length; ++i) {
-            worldBodies[i] = getWorld().addBody(noForce, centre, Vector3f.ZERO, 1f, 0f);
+            worldBodies[i] = getWorld().addBody(noForce, centres[i], Vector3f.ZERO, 1f, 0f);
             bodies[i] = new RigidBody(worldBodies[i].getParticle(), INERTIA);
             worldBodies[i].setRotation(bodies[i], rotationStep(i));
+            addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
         }
         resetBodies();
-        setView(-5f, 5f, 5f, 1f, 2, 0.3f);
+        // Both slots with room for a plate's half diagonal, enlarged by the perspective.
+        setView(-2f * SLOT_X, 2f * SLOT_X, 5.8f, 1f, 2, 0.3f);
     }
 
     @Override
     protected void declareParameters() {
-        // The racket shown and the gyroscopic term, as the I and G keys switch them.
-        String[] methods = {"explicit", "midpoint"};
-        declareParameter(DemoParameter.choice("method", "racket shown", methods, shown,
-                DemoParameter.Applies.LIVE, value -> shown = Math.round(value)));
+        // The rackets shown and the gyroscopic term, as the I and G keys switch them.
+        declareParameter(DemoParameter.choice("method", "rackets shown", SHOWN_NAMES, shown,
+                DemoParameter.Applies.LIVE, value -> show(Math.round(value))));
         declareParameter(DemoParameter.choice("gyro", "gyroscopic term",
                 new String[] {"off", "on"}, gyroscopic ? 1 : 0, DemoParameter.Applies.LIVE,
                 value -> {
@@ -183,8 +243,8 @@ public final class TennisRacketDemo extends DemoState {
     @Override
     protected void declareKeys() {
         methodKey = bindKey(KeyInput.KEY_I, "I",
-                "racket shown: explicit Euler <-> implicit midpoint for ω",
-                () -> getParameters().set("method", 1 - shown));
+                "rackets shown: both -> explicit Euler -> implicit midpoint for ω",
+                () -> getParameters().set("method", (shown + 1) % SHOWN_NAMES.length));
         gyroscopicKey = bindKey(KeyInput.KEY_G, "G",
                 "gyroscopic term ω × (I·ω) on <-> off (starts again; off, it never flips)",
                 () -> setGyroscopic(!gyroscopic));
@@ -198,12 +258,13 @@ public final class TennisRacketDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
+        // Both rackets start from the same state: one E0 and one |L0| for both.
         text.append("shown (").append(methodKey.getKeyLabel()).append("): ")
-                .append(NAMES[shown]).append(",  gyroscopic term (")
+                .append(shown == BOTH ? "both" : NAMES[shown]).append(",  gyroscopic term (")
                 .append(gyroscopicKey.getKeyLabel()).append(") ")
                 .append(gyroscopic ? "on" : "off").append(",  E0 = ");
-        TextFormat.appendFixed(text, startEnergy[shown], 3).append(" J,  |L0| = ");
-        TextFormat.appendFixed(text, startMomentum[shown], 3).append(" kg·m²/s\n");
+        TextFormat.appendFixed(text, startEnergy[0], 3).append(" J,  |L0| = ");
+        TextFormat.appendFixed(text, startMomentum[0], 3).append(" kg·m²/s\n");
         for (int i = 0; i < METHODS.length; ++i) {
             RigidBody body = bodies[i];
             text.append(NAMES[i]).append(":  E drift ");
@@ -233,6 +294,9 @@ public final class TennisRacketDemo extends DemoState {
                 text.append("after 3 flips\n");
             }
         }
+        text.append("explicit Euler vs implicit midpoint: the plates are ");
+        TextFormat.appendFixed(text, Math.toDegrees(angleBetweenRadians()), 1)
+                .append("° apart\n");
     }
 
     @Override
@@ -265,10 +329,12 @@ public final class TennisRacketDemo extends DemoState {
     @Override
     protected void initialize(Application app) {
         super.initialize(app);
-        view = new BoxView(app.getAssetManager(), "racket", HALF_EXTENTS,
-                new ColorRGBA(1f, 0.55f, 0.3f, 1f));
-        getSceneNode().attachChild(view.getGeometry());
-        updateView();
+        for (int i = 0; i < METHODS.length; ++i) {
+            views[i] = new BoxView(app.getAssetManager(), NAMES[i] + " racket", HALF_EXTENTS,
+                    COLORS[i]);
+            getSceneNode().attachChild(views[i].getGeometry());
+        }
+        show(shown);
     }
 
     private void resetBodies() {
@@ -289,9 +355,28 @@ public final class TennisRacketDemo extends DemoState {
         return gyroscopic ? integrators[method] : withoutGyroscopic[method];
     }
 
+    /**
+     * Show one racket alone or both: the method parameter's setter. Both are stepped either
+     * way; a racket not shown leaves its slot empty.
+     *
+     * @param which 0 or 1 for that method alone, {@link #BOTH} for both
+     */
+    private void show(int which) {
+        shown = which;
+        for (int i = 0; i < METHODS.length; ++i) {
+            if (views[i] != null) {
+                views[i].getGeometry().setCullHint(isShown(i) ? Spatial.CullHint.Never
+                        : Spatial.CullHint.Always);
+            }
+        }
+        updateView();
+    }
+
     private void updateView() {
-        if (view != null) {
-            view.update(bodies[shown].orientation, centre);
+        for (int i = 0; i < METHODS.length; ++i) {
+            if (views[i] != null) {
+                views[i].update(bodies[i].orientation, centres[i]);
+            }
         }
     }
 }

@@ -74,7 +74,9 @@ class DemoPresetsTest {
 
     @Test
     void racketMethodAndGyroscopicTermMatchTheKeys() {
-        assertSameState(TennisRacketDemo::new, new String[] {"I"}, "method=midpoint");
+        // Both rackets by default; I shows explicit Euler alone, then the midpoint alone.
+        assertSameState(TennisRacketDemo::new, new String[] {"I"}, "method=explicit");
+        assertSameState(TennisRacketDemo::new, new String[] {"I", "I"}, "method=midpoint");
         assertSameState(TennisRacketDemo::new, new String[] {"G"}, "gyro=off");
     }
 
@@ -115,7 +117,7 @@ class DemoPresetsTest {
         for (String named : new String[] {"preset=head-on|glancing|cradle|paddle",
             "strategy=lecture|bisection|secant|believable", "drag=linear|quadratic",
             "threshold=none|cyclone|box2d", "detection=swept|overlap",
-            "method=explicit|midpoint", "speed=35|50|70"}) {
+            "method=explicit|midpoint|both", "speed=35|50|70"}) {
             assertTrue(help.contains(named), named + " in " + help);
         }
     }
