@@ -89,6 +89,9 @@ public final class LectureTour {
     /** What every stop's first HUD line starts with. */
     public static final String WATCH = "Watch: ";
 
+    /** HelloAiming's aims, in order, without the copy {@code values()} makes. */
+    private static final HelloAimingDemo.Aim[] AIMS = HelloAimingDemo.Aim.values();
+
     /** The stops, in slide order. */
     private static final List<Stop> STOPS = List.of(
             new Stop("Collision Response", "collisions", LectureTour::watchImpulse,
@@ -246,17 +249,30 @@ public final class LectureTour {
 
     private static void watchAiming(DemoState demo, StringBuilder text) {
         HelloAimingDemo aiming = (HelloAimingDemo) demo;
-        text.append(WATCH).append("vy = ");
-        TextFormat.appendFixed(text, aiming.getVerticalSpeed(), 2).append(" m/s from the"
-                + " formula; ");
-        if (aiming.getLandedShotNumber() == 0) {
-            text.append("shot ").append(aiming.getShotNumber()).append(" in flight, t = ");
+        text.append(WATCH);
+        int landed = aiming.getLandedShotNumber();
+        if (landed == 0) {
+            text.append("vy = ");
+            TextFormat.appendFixed(text, aiming.getVerticalSpeed(HelloAimingDemo.Aim.LECTURE), 2)
+                    .append(" m/s from the lecture's formula, ");
+            TextFormat.appendFixed(text, aiming.getVerticalSpeed(HelloAimingDemo.Aim.DISCRETE),
+                    2).append(" m/s corrected; shot ").append(aiming.getShotNumber())
+                    .append(" in flight, t = ");
             TextFormat.appendFixed(text, demo.getClock().getSimulatedSeconds(), 2)
-                    .append(" s: does it land on the target?\n");
+                    .append(" s: which lands on the target?\n");
             return;
         }
-        text.append("shot ").append(aiming.getLandedShotNumber()).append(" landed at x = ");
-        TextFormat.appendFixed(text, aiming.getLastLandingX(), 2).append(" m\n");
+        text.append("shot ").append(landed).append(" landed:");
+        char separator = ' ';
+        for (HelloAimingDemo.Aim aim : AIMS) {
+            if (aiming.getLandedShotNumber(aim) == landed) {
+                text.append(separator).append(aim == HelloAimingDemo.Aim.LECTURE
+                        ? " the lecture's aim at x = " : " the discrete correction at x = ");
+                TextFormat.appendFixed(text, aiming.getLastLandingX(aim), 2).append(" m");
+                separator = ',';
+            }
+        }
+        text.append('\n');
     }
 
     private static void watchTunnelling(DemoState demo, StringBuilder text) {

@@ -1,8 +1,10 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
@@ -14,6 +16,7 @@ import particlelab.demo.LaunchControl;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
 
 /**
@@ -28,12 +31,17 @@ import particlelab.view.TextFormat;
  * {@code vy = g·(S/vx + h)/2} ({@link LevelAim#discreteVy}). With raw tpf the step changes
  * from frame to frame and so does the landing: aim for the h you will actually step with.
  *
- * <p>What to watch for: the HUD predicts the landing under the current stepping (a simulated
- * shot with the same integrator) and shows where the shot actually landed; press L to switch
- * formulas and F to fire. The bullet stops at the ground, as in the lecture. {@code t} is the
- * flight time of the shot in the air: firing starts it again from 0, and it stops when the
- * shot lands. The shot line names the shot it describes: while shot N flies, it shows shot N
- * in the air and where shot N−1 landed.
+ * <p>What to watch for: the gun fires two shots at once, with the same vx, the same step and
+ * the same world: the lecture's aim (yellow) and the discrete correction (cyan), each
+ * labelled. The HUD predicts each one's landing under the current stepping (a simulated shot
+ * with the same integrator) and shows, side by side, where each actually landed and its miss:
+ * the lecture's lands {@code vx·h} short, the correction on the target. At 20 m/s and h = 1/60
+ * the two arcs are a few centimetres apart, inside one sphere: a longer h (F2's panel) pulls
+ * them apart. F fires; L chooses what the next F fires: both, the lecture's aim alone or the
+ * correction alone. The bullets stop at the ground, as in the lecture. {@code t} is the
+ * flight time of the shots in the air: firing starts it again from 0, and it stops when they
+ * land. The shot lines name the shot they describe: while shot N flies, they show shot N in
+ * the air and where shot N−1 landed.
  */
 public final class HelloAimingDemo extends DemoState {
 
@@ -58,14 +66,27 @@ public final class HelloAimingDemo extends DemoState {
     /** Shots in the air longer than this count as lost (s). */
     private static final float MAX_FLIGHT_SECONDS = 60f;
     private static final float GRAVITY = Gravity.STANDARD_G;
+    /** The value of {@link #getFiring()} that fires both aims at once. */
+    public static final int BOTH = 2;
+    /** The {@code aim} parameter's names: one aim alone, by {@link Aim} ordinal, or both. */
+    private static final String[] FIRING_NAMES = {"lecture", "discrete", "both"};
+    /** Each aim's HUD line start, by {@link Aim} ordinal. */
+    private static final String[] FORMULAS = {"lecture   vy = g·S/(2·vx) = ",
+        "discrete  vy = g·(S/vx + h)/2 = "};
+    /** Each aim's bullet colour, by {@link Aim} ordinal. */
+    private static final ColorRGBA[] COLORS = {ColorRGBA.Yellow,
+        new ColorRGBA(0.3f, 0.85f, 1f, 1f)};
 
-    /** Which formula aims the gun. */
+    /** Which formula aims a shot. */
     public enum Aim {
         /** The lecture's {@code vy = g·S/(2·vx)}: lands {@code vx·h} short when stepped. */
         LECTURE,
         /** Corrected for the stepped bullet: {@code vy = g·(S/vx + h)/2}. */
         DISCRETE
     }
+
+    /** The aims in ordinal order, without the copy {@code values()} makes. */
+    private static final Aim[] AIMS = Aim.values();
 
     private final Gravity gravity = new Gravity();
     private final ParticleIntegrator integrator = new ParticleIntegrator(gravity);
@@ -74,29 +95,34 @@ public final class HelloAimingDemo extends DemoState {
     /** g, pointing down (m/s²): a parameter. */
     private float g = GRAVITY;
     private float predictedG = Float.NaN;
-    private final Landing predicted = new Landing();
+    /** Each aim's predicted landing, by ordinal. */
+    private final Landing[] predicted = {new Landing(), new Landing()};
     private final Vector3f launchVelocity = new Vector3f();
-    private DemoParticle bullet;
-    private Aim aim = Aim.LECTURE;
+    /** Each aim's bullet, by ordinal: both fly every shot (see {@link #fire()}). */
+    private final DemoParticle[] bullets = new DemoParticle[AIMS.length];
+    /** What F fires: an aim's ordinal for that aim alone, or {@link #BOTH}. */
+    private int firing = BOTH;
     private float vx = DEFAULT_VX;
     private ShotSimulator simulator;
-    /** The step, vx and aim the prediction was made for. */
+    /** The step and vx the predictions were made for. */
     private float predictedStep = Float.NaN;
     private float predictedVx = Float.NaN;
-    private Aim predictedAim;
     /** The number of the shot in the air, or of the last one fired (1 for the first). */
     private int shots;
-    private boolean landingRecorded;
-    /** The last shot that landed: its number (0 if none yet), where, when, vx and formula. */
-    private int landedShot;
-    private float lastLandingX = Float.NaN;
-    private double lastFlightSeconds = Double.NaN;
+    /** Per aim: whether the shot in the air fired it, and whether its landing is recorded. */
+    private final boolean[] inShot = new boolean[AIMS.length];
+    private final boolean[] landingRecorded = new boolean[AIMS.length];
+    /** Per aim: the last shot that landed with it: its number (0 if none), where and when. */
+    private final int[] landedShot = new int[AIMS.length];
+    private final float[] lastLandingX = {Float.NaN, Float.NaN};
+    private final double[] lastFlightSeconds = {Double.NaN, Double.NaN};
+    /** What the shot in the air fired: an aim's ordinal, or {@link #BOTH}. */
+    private int shotFiring = BOTH;
+    /** The vx of the last shot that landed, and of the shot in the air (m/s). */
     private float lastShotVx;
-    private Aim lastShotAim = Aim.LECTURE;
-    /** The vx and formula of the shot in the air. */
     private float shotVx;
+    /** The highest vy of the shot in the air (m/s), for the framing. */
     private float shotVy;
-    private Aim shotAim = Aim.LECTURE;
     /** The demo's keys, named in the HUD. */
     private KeyBinding fireKey;
     private KeyBinding fasterKey;
@@ -111,16 +137,16 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Return the formula in use.
+     * Return what F fires.
      *
-     * @return the aim (not null)
+     * @return {@link Aim#ordinal()} of the aim fired alone, or {@link #BOTH}
      */
-    public Aim getAim() {
-        return aim;
+    public int getFiring() {
+        return firing;
     }
 
     /**
-     * Choose the formula; the next shot uses it.
+     * Fire one formula alone from the next shot on (the panel's and L's {@code aim}).
      *
      * @param newAim the aim (not null)
      */
@@ -128,7 +154,22 @@ public final class HelloAimingDemo extends DemoState {
         if (newAim == null) {
             throw new IllegalArgumentException("aim must be LECTURE or DISCRETE, but was null");
         }
-        aim = newAim;
+        getParameters().set("aim", newAim.ordinal());
+    }
+
+    /** Fire both formulas at once from the next shot on: the default. */
+    public void setBothAims() {
+        getParameters().set("aim", BOTH);
+    }
+
+    /**
+     * Test whether the next shot fires one aim (alone or beside the other).
+     *
+     * @param aim the aim (not null)
+     * @return true if F fires it
+     */
+    public boolean firesAim(Aim aim) {
+        return firing == BOTH || firing == aim.ordinal();
     }
 
     /**
@@ -141,11 +182,12 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Return the vertical speed the current formula gives for the current step.
+     * Return the vertical speed one formula gives for the current step.
      *
+     * @param aim the formula (not null)
      * @return vy (in m/s)
      */
-    public float getVerticalSpeed() {
+    public float getVerticalSpeed(Aim aim) {
         if (aim == Aim.LECTURE) {
             return (float) LevelAim.lectureVy(g, TARGET_DISTANCE, vx);
         }
@@ -154,12 +196,37 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Return where the last shot landed.
+     * Return where one aim's bullet of the last shot that fired it landed.
      *
-     * @return x (in metres; NaN until a shot lands)
+     * @param aim the aim (not null)
+     * @return x (in metres; NaN until such a shot lands)
      */
-    public float getLastLandingX() {
-        return lastLandingX;
+    public float getLastLandingX(Aim aim) {
+        return lastLandingX[aim.ordinal()];
+    }
+
+    /**
+     * Return one aim's predicted landing for the next shot under the current step: a shot
+     * simulated with the demo's integrator, g, vx and h.
+     *
+     * @param aim the aim (not null)
+     * @return x (in metres; NaN if it never lands)
+     */
+    public double getPredictedLandingX(Aim aim) {
+        updatePrediction(getClock().getCurrentStepSeconds());
+        Landing landing = predicted[aim.ordinal()];
+        return landing.hasLanded() ? landing.getX() : Double.NaN;
+    }
+
+    /**
+     * Access one aim's bullet.
+     *
+     * @param aim the aim (not null)
+     * @return the live particle (not null)
+     */
+    public DemoParticle getBullet(Aim aim) {
+        getWorld();
+        return bullets[aim.ordinal()];
     }
 
     /**
@@ -172,50 +239,81 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Return the number of the last shot that landed.
+     * Return the number of the last shot that landed with one aim.
+     *
+     * @param aim the aim (not null)
+     * @return the number (0 until such a shot lands)
+     */
+    public int getLandedShotNumber(Aim aim) {
+        return landedShot[aim.ordinal()];
+    }
+
+    /**
+     * Return the number of the last shot that landed, whichever aims it fired.
      *
      * @return the number (0 until a shot lands)
      */
     public int getLandedShotNumber() {
-        return landedShot;
+        return Math.max(landedShot[0], landedShot[1]);
     }
 
     /**
-     * Return the flight time of the last shot that landed, its ground crossing interpolated
-     * inside the step.
+     * Return the flight time of one aim's bullet of the last shot that fired it, its ground
+     * crossing interpolated inside the step.
      *
-     * @return the time (in seconds; NaN until a shot lands)
+     * @param aim the aim (not null)
+     * @return the time (in seconds; NaN until such a shot lands)
      */
-    public double getLastFlightSeconds() {
-        return lastFlightSeconds;
+    public double getLastFlightSeconds(Aim aim) {
+        return lastFlightSeconds[aim.ordinal()];
     }
 
     /**
-     * Fire a shot from the gun with the current vx and formula, and start {@code t} again:
-     * the HUD's time is this shot's flight time.
+     * Fire a shot from the gun with the current vx, and start {@code t} again: the HUD's time
+     * is this shot's flight time. Both bullets always fly, from the same gun with the same vx
+     * and step: each with its own formula when both are fired; when one aim is fired alone,
+     * the other bullet flies the same shot, hidden and left out of the HUD.
      */
     public void fire() {
-        launchVelocity.set(vx, getVerticalSpeed(), 0f);
-        launch(bullet, launchVelocity);
+        // The bullets exist once the scene does (a test may fire before any frame).
+        getWorld();
+        int alone = firing == BOTH ? -1 : firing;
+        shotVy = 0f;
+        for (int a = 0; a < AIMS.length; ++a) {
+            boolean fired = alone < 0 || alone == a;
+            float vy = getVerticalSpeed(AIMS[fired ? a : alone]);
+            launchVelocity.set(vx, vy, 0f);
+            launch(bullets[a], launchVelocity);
+            bullets[a].setParked(!fired);
+            inShot[a] = fired;
+            landingRecorded[a] = false;
+            shotVy = Math.max(shotVy, vy);
+        }
+        shotFiring = firing;
+        showFiredBullets();
         getClock().reset();
         shotVx = vx;
-        shotVy = launchVelocity.y;
-        shotAim = aim;
         frameArcs();
-        landingRecorded = false;
         ++shots;
     }
 
     @Override
     protected void createScene() {
-        launchVelocity.set(vx, (float) LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, vx), 0f);
-        // The gun fires once as the demo starts: the first shot is in the air at t = 0.
-        bullet = addParticle("bullet", ColorRGBA.Yellow, Vector3f.ZERO, launchVelocity, 1f,
-                integrator).stopAtGround();
+        // The gun fires once as the demo starts: the first shot, both aims, is in the air at
+        // t = 0. The discrete aim is for the clock's step.
+        float step = getClock().getCurrentStepSeconds();
+        for (int a = 0; a < AIMS.length; ++a) {
+            float vy = (float) (AIMS[a] == Aim.LECTURE
+                    ? LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, vx)
+                    : LevelAim.discreteVy(GRAVITY, TARGET_DISTANCE, vx, step));
+            launchVelocity.set(vx, vy, 0f);
+            bullets[a] = addParticle(FIRING_NAMES[a], COLORS[a], Vector3f.ZERO, launchVelocity,
+                    1f, integrator).stopAtGround();
+            inShot[a] = true;
+            shotVy = Math.max(shotVy, vy);
+        }
         shots = 1;
         shotVx = vx;
-        shotVy = launchVelocity.y;
-        shotAim = aim;
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
         // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
@@ -232,13 +330,16 @@ public final class HelloAimingDemo extends DemoState {
     @Override
     protected void declareParameters() {
         // The launch is vx; the formula gives vy, so the angle follows from the aim. Both
-        // apply to the next shot (the one the HUD predicts), at once.
+        // apply to the next shot (the one the HUD predicts), at once, and so does which aims
+        // the gun fires.
         declareParameter(new DemoParameter("vx", "launch vx (next shot)",
                 "m/s", MIN_VX, MAX_VX, VX_STEP, DEFAULT_VX, 1, DemoParameter.Applies.LIVE,
                 this::applyVx));
         declareParameter(new DemoParameter("g", "gravity", "m/s²",
                 LaunchControl.MIN_G, LaunchControl.MAX_G, 0.1f, GRAVITY, 2,
                 DemoParameter.Applies.LIVE, this::setGravity));
+        declareParameter(DemoParameter.choice("aim", "aims fired (next shot)", FIRING_NAMES,
+                firing, DemoParameter.Applies.LIVE, value -> firing = Math.round(value)));
     }
 
     @Override
@@ -249,29 +350,40 @@ public final class HelloAimingDemo extends DemoState {
         fasterKey = bindKey(KeyInput.KEY_UP, "Up", "vx + " + step, () -> changeVx(VX_STEP));
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
                 () -> changeVx(-VX_STEP));
-        aimKey = bindKey(KeyInput.KEY_L, "L", "aim: lecture formula <-> discrete correction",
-                () -> setAim(aim == Aim.LECTURE ? Aim.DISCRETE : Aim.LECTURE));
+        aimKey = bindKey(KeyInput.KEY_L, "L",
+                "next shot fires: both aims -> lecture formula -> discrete correction",
+                () -> getParameters().set("aim", (firing + 1) % FIRING_NAMES.length));
     }
 
     @Override
     protected void onRestart() {
         shots = 0;
-        landedShot = 0;
-        lastLandingX = Float.NaN;
-        lastFlightSeconds = Double.NaN;
+        for (int a = 0; a < AIMS.length; ++a) {
+            landedShot[a] = 0;
+            lastLandingX[a] = Float.NaN;
+            lastFlightSeconds[a] = Double.NaN;
+        }
         fire();
     }
 
     @Override
     protected void afterStep(float stepSeconds) {
-        if (bullet.hasLanded() && !landingRecorded) {
-            landingRecorded = true;
-            landedShot = shots;
-            lastLandingX = bullet.getLandingX();
-            lastFlightSeconds = bullet.getLandingSeconds();
-            lastShotVx = shotVx;
-            lastShotAim = shotAim;
+        for (int a = 0; a < AIMS.length; ++a) {
+            DemoParticle bullet = bullets[a];
+            if (inShot[a] && bullet.hasLanded() && !landingRecorded[a]) {
+                landingRecorded[a] = true;
+                landedShot[a] = shots;
+                lastLandingX[a] = bullet.getLandingX();
+                lastFlightSeconds[a] = bullet.getLandingSeconds();
+                lastShotVx = shotVx;
+            }
         }
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        showFiredBullets();
     }
 
     @Override
@@ -284,43 +396,49 @@ public final class HelloAimingDemo extends DemoState {
     protected void writeHudLines(StringBuilder text) {
         float step = getClock().getCurrentStepSeconds();
         updatePrediction(step);
-        text.append(aim == Aim.LECTURE ? "Aim: LECTURE vy = g·S/(2·vx)"
-                : "Aim: DISCRETE vy = g·(S/vx + h)/2");
-        text.append("   (").append(aimKey.getKeyLabel()).append(" switches, ")
-                .append(fireKey.getKeyLabel()).append(" fires, ")
+        text.append("Next shot fires (").append(aimKey.getKeyLabel()).append("): ")
+                .append(firing == BOTH ? "both aims at once" : FIRING_NAMES[firing] + " alone")
+                .append("   (").append(fireKey.getKeyLabel()).append(" fires, ")
                 .append(fasterKey.getKeyLabel()).append('/').append(slowerKey.getKeyLabel())
                 .append(" change vx)\n");
         text.append(distanceText).append(",  vx = ");
-        TextFormat.appendFixed(text, vx, 1).append(" m/s,  vy = ");
-        TextFormat.appendFixed(text, getVerticalSpeed(), 3).append(" m/s,  flight S/vx = ");
-        TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3).append(" s\n");
-        text.append("Predicted landing with h = ");
-        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms:  x = ");
-        if (predicted.hasLanded()) {
-            TextFormat.appendFixed(text, predicted.getX(), 3).append(" m,  miss ");
-            TextFormat.appendFixed(text, predicted.getX() - TARGET_DISTANCE, 3);
-            text.append(" m   (vx·h = ");
-            TextFormat.appendFixed(text, vx * step, 3).append(" m)\n");
-        } else {
-            text.append("never lands\n");
+        TextFormat.appendFixed(text, vx, 1).append(" m/s,  flight S/vx = ");
+        TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3)
+                .append(" s;  predicted landings with h = ");
+        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms  (vx·h = ");
+        TextFormat.appendFixed(text, vx * step, 3).append(" m):\n");
+        for (int a = 0; a < AIMS.length; ++a) {
+            text.append(FORMULAS[a]);
+            TextFormat.appendFixed(text, getVerticalSpeed(AIMS[a]), 3).append(" m/s:  x = ");
+            if (predicted[a].hasLanded()) {
+                TextFormat.appendFixed(text, predicted[a].getX(), 3).append(" m,  miss ");
+                TextFormat.appendFixed(text, predicted[a].getX() - TARGET_DISTANCE, 3)
+                        .append(" m\n");
+            } else {
+                text.append("never lands\n");
+            }
         }
-        if (landedShot != shots) {
+        if (getLandedShotNumber() != shots) {
             text.append("Shot ").append(shots).append(": in the air for ");
-            TextFormat.appendFixed(text, bullet.getFlightSeconds(), 2).append(" s  (");
-            appendShot(text, shotAim, shotVx).append(")\n");
+            DemoParticle flying = bullets[shotFiring == BOTH ? 0 : shotFiring];
+            TextFormat.appendFixed(text, flying.getFlightSeconds(), 2).append(" s  (")
+                    .append(FIRING_NAMES[shotFiring]).append(", vx ");
+            TextFormat.appendFixed(text, shotVx, 1).append(" m/s)\n");
         }
-        if (landedShot > 0) {
-            text.append("Shot ").append(landedShot).append(": landed at x = ");
-            TextFormat.appendFixed(text, lastLandingX, 3).append(" m after ");
-            TextFormat.appendFixed(text, lastFlightSeconds, 3).append(" s,  miss ");
-            TextFormat.appendFixed(text, lastLandingX - TARGET_DISTANCE, 3).append(" m  (");
-            appendShot(text, lastShotAim, lastShotVx).append(")\n");
+        // The last shot that landed, a line per aim it fired: the misses one above the other.
+        int landed = getLandedShotNumber();
+        for (int a = 0; a < AIMS.length; ++a) {
+            if (landed == 0 || landedShot[a] != landed) {
+                continue;
+            }
+            text.append("Shot ").append(landed).append(", ").append(FIRING_NAMES[a])
+                    .append(": landed at x = ");
+            TextFormat.appendFixed(text, lastLandingX[a], 3).append(" m after ");
+            TextFormat.appendFixed(text, lastFlightSeconds[a], 3).append(" s,  miss ");
+            TextFormat.appendFixed(text, lastLandingX[a] - TARGET_DISTANCE, 3)
+                    .append(" m  (vx ");
+            TextFormat.appendFixed(text, lastShotVx, 1).append(" m/s)\n");
         }
-    }
-
-    private static StringBuilder appendShot(StringBuilder text, Aim shotAim, float shotVx) {
-        text.append(shotAim == Aim.LECTURE ? "lecture" : "discrete").append(", vx ");
-        return TextFormat.appendFixed(text, shotVx, 1).append(" m/s");
     }
 
     /**
@@ -363,7 +481,8 @@ public final class HelloAimingDemo extends DemoState {
      * Frame both the shot in the air and the one the gun would fire now, apex and all.
      */
     private void frameArcs() {
-        float highest = Math.max(apex(shotVy), apex(getVerticalSpeed()));
+        // The discrete aim is the higher of the two (for h > 0): it bounds the next shot.
+        float highest = Math.max(apex(shotVy), apex(getVerticalSpeed(Aim.DISCRETE)));
         setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
     }
 
@@ -379,21 +498,36 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
-     * Simulate the shot the gun would fire now, with the current step; only when the step, vx
-     * or the formula changed (a new simulator is made only when the step changed).
+     * Simulate the shots each formula would fire now, with the current step; only when the
+     * step, vx or g changed (a new simulator is made only when the step changed).
      */
     private void updatePrediction(float step) {
-        if (step == predictedStep && vx == predictedVx && aim == predictedAim
-                && g == predictedG) {
+        if (step == predictedStep && vx == predictedVx && g == predictedG) {
             return;
         }
         if (simulator == null || simulator.getStepSeconds() != step) {
             simulator = new ShotSimulator(integrator, 1f, step, MAX_FLIGHT_SECONDS);
         }
-        simulator.fire(vx, getVerticalSpeed(), predicted);
+        for (int a = 0; a < AIMS.length; ++a) {
+            simulator.fire(vx, getVerticalSpeed(AIMS[a]), predicted[a]);
+        }
         predictedStep = step;
         predictedVx = vx;
-        predictedAim = aim;
         predictedG = g;
+    }
+
+    /**
+     * Hide the bullet of an aim the shot in the air did not fire (it flies the fired one's
+     * shot, so its sphere, trail and label would only cover the other's; its exact ghost is
+     * the fired one's path, drawn twice); show the others. Views exist only in a window.
+     */
+    private void showFiredBullets() {
+        for (int a = 0; a < AIMS.length; ++a) {
+            ParticleView view = getView(bullets[a]);
+            if (view != null) {
+                view.getNode().setCullHint(inShot[a] ? Spatial.CullHint.Inherit
+                        : Spatial.CullHint.Always);
+            }
+        }
     }
 }

@@ -13,6 +13,7 @@ import particlelab.demo.KeyBinding;
 import particlelab.lecture.BounceDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.TargetsDemo;
@@ -81,6 +82,13 @@ class DemoPresetsTest {
     }
 
     @Test
+    void helloAimingAimsFiredMatchTheKeys() {
+        // Both aims by default; L fires the lecture's alone, then the correction alone.
+        assertSameState(HelloAimingDemo::new, new String[] {"L"}, "aim=lecture");
+        assertSameState(HelloAimingDemo::new, new String[] {"L", "L"}, "aim=discrete");
+    }
+
+    @Test
     void targetsAimAndPaneMatchTheKeys() {
         assertSameState(TargetsDemo::new, new String[] {"Up", "Up"}, "angle=40");
         assertSameState(TargetsDemo::new, new String[] {"Down"}, "angle=32.5");
@@ -117,7 +125,7 @@ class DemoPresetsTest {
         for (String named : new String[] {"preset=head-on|glancing|cradle|paddle",
             "strategy=lecture|bisection|secant|believable", "drag=linear|quadratic",
             "threshold=none|cyclone|box2d", "detection=swept|overlap",
-            "method=explicit|midpoint|both", "speed=35|50|70"}) {
+            "method=explicit|midpoint|both", "aim=lecture|discrete|both", "speed=35|50|70"}) {
             assertTrue(help.contains(named), named + " in " + help);
         }
     }

@@ -110,7 +110,7 @@ class ScreenLayoutHeadlessTest {
                     aiming.setHorizontalSpeed(HelloAimingDemo.MIN_VX);
                     aiming.fire();
                     // The lowest vx flies S/vx = 8.3 s: 600 frames see it land.
-                    DemoParticle bullet = aiming.getParticles().get(0);
+                    DemoParticle bullet = aiming.getBullet(aim);
                     ScreenRect area = aiming.getHud().getLayout().getScene();
                     for (int frame = 0; frame < 600; ++frame) {
                         aiming.update(H);
@@ -130,7 +130,7 @@ class ScreenLayoutHeadlessTest {
                     }
                 }
                 aiming.setHorizontalSpeed(HelloAimingDemo.DEFAULT_VX);
-                aiming.setAim(HelloAimingDemo.Aim.LECTURE);
+                aiming.setBothAims();
                 aiming.layOut(1280, 720);
                 return found;
             });
