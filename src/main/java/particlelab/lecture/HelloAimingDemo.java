@@ -396,20 +396,21 @@ public final class HelloAimingDemo extends DemoState {
     protected void writeHudLines(StringBuilder text) {
         float step = getClock().getCurrentStepSeconds();
         updatePrediction(step);
-        text.append("Next shot fires (").append(aimKey.getKeyLabel()).append("): ")
-                .append(firing == BOTH ? "both aims at once" : FIRING_NAMES[firing] + " alone")
-                .append("   (").append(fireKey.getKeyLabel()).append(" fires, ")
-                .append(fasterKey.getKeyLabel()).append('/').append(slowerKey.getKeyLabel())
-                .append(" change vx)\n");
-        text.append(distanceText).append(",  vx = ");
-        TextFormat.appendFixed(text, vx, 1).append(" m/s,  flight S/vx = ");
-        TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3)
-                .append(" s;  predicted landings with h = ");
-        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms  (vx·h = ");
-        TextFormat.appendFixed(text, vx * step, 3).append(" m):\n");
+        // Few lines: two aims' numbers share the HUD with two ghost readouts.
+        text.append("Next shot (").append(aimKey.getKeyLabel()).append("): ")
+                .append(firing == BOTH ? "both aims" : FIRING_NAMES[firing])
+                .append(firing == BOTH ? "" : " alone").append(",  ")
+                .append(fireKey.getKeyLabel()).append(" fires;  ").append(distanceText)
+                .append(",  vx = ");
+        TextFormat.appendFixed(text, vx, 1).append(" m/s (").append(fasterKey.getKeyLabel())
+                .append('/').append(slowerKey.getKeyLabel()).append("),  S/vx = ");
+        TextFormat.appendFixed(text, TARGET_DISTANCE / vx, 3).append(" s,  vx·h = ");
+        TextFormat.appendFixed(text, vx * step, 3).append(" m at h = ");
+        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms\n");
         for (int a = 0; a < AIMS.length; ++a) {
             text.append(FORMULAS[a]);
-            TextFormat.appendFixed(text, getVerticalSpeed(AIMS[a]), 3).append(" m/s:  x = ");
+            TextFormat.appendFixed(text, getVerticalSpeed(AIMS[a]), 3)
+                    .append(" m/s:  predicted x = ");
             if (predicted[a].hasLanded()) {
                 TextFormat.appendFixed(text, predicted[a].getX(), 3).append(" m,  miss ");
                 TextFormat.appendFixed(text, predicted[a].getX() - TARGET_DISTANCE, 3)
@@ -425,20 +426,24 @@ public final class HelloAimingDemo extends DemoState {
                     .append(FIRING_NAMES[shotFiring]).append(", vx ");
             TextFormat.appendFixed(text, shotVx, 1).append(" m/s)\n");
         }
-        // The last shot that landed, a line per aim it fired: the misses one above the other.
+        // The last shot that landed, its aims' misses side by side.
         int landed = getLandedShotNumber();
+        if (landed == 0) {
+            return;
+        }
+        text.append("Shot ").append(landed).append(" landed (vx ");
+        TextFormat.appendFixed(text, lastShotVx, 1).append(" m/s):");
+        char separator = ' ';
         for (int a = 0; a < AIMS.length; ++a) {
-            if (landed == 0 || landedShot[a] != landed) {
+            if (landedShot[a] != landed) {
                 continue;
             }
-            text.append("Shot ").append(landed).append(", ").append(FIRING_NAMES[a])
-                    .append(": landed at x = ");
-            TextFormat.appendFixed(text, lastLandingX[a], 3).append(" m after ");
-            TextFormat.appendFixed(text, lastFlightSeconds[a], 3).append(" s,  miss ");
-            TextFormat.appendFixed(text, lastLandingX[a] - TARGET_DISTANCE, 3)
-                    .append(" m  (vx ");
-            TextFormat.appendFixed(text, lastShotVx, 1).append(" m/s)\n");
+            text.append(separator).append(' ').append(FIRING_NAMES[a]).append(" x = ");
+            TextFormat.appendFixed(text, lastLandingX[a], 3).append(" m, miss ");
+            TextFormat.appendFixed(text, lastLandingX[a] - TARGET_DISTANCE, 3).append(" m");
+            separator = ';';
         }
+        text.append('\n');
     }
 
     /**

@@ -34,7 +34,7 @@ import particlelab.world.Body;
  * by the same world with the same clock: on the left its ω stepped by explicit Euler, on the
  * right by the implicit midpoint, a post under each naming its method. Their front faces
  * (bright) and back faces (dark) swap every few seconds; explicit Euler gains kinetic energy
- * and |L| every step (its HUD drift grows, its flips come ever sooner), implicit midpoint
+ * and |L| every step (its HUD drift grows, its flips drift from the midpoint's), implicit midpoint
  * keeps both to round-off, and the HUD gives the angle between the two plates as they part.
  * I shows both, explicit Euler alone or the midpoint alone (the other slot stays empty; both
  * are stepped all the time, so the HUD still compares them). G leaves out the gyroscopic

@@ -1,6 +1,7 @@
 package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.scene.Spatial;
@@ -64,6 +65,7 @@ class HelloAimingDemoTest {
 
     @Test
     void tAndTheShotLinesDescribeTheShotInTheAir() throws Exception {
+        boolean[] tooSmall = {true};
         Object[] inTheAir = harness.call(() -> {
             aiming.setBothAims();
             aiming.restart(); // shot 1 in the air at t = 0
@@ -72,9 +74,11 @@ class HelloAimingDemoTest {
             }
             double landedAt = aiming.getClock().getSimulatedSeconds();
             aiming.fire(); // shot 2
+            aiming.layOut(1280, 720);
             for (int frame = 0; frame < 60; ++frame) {
-                aiming.advance(H);
+                aiming.update(H);
             }
+            tooSmall[0] = aiming.getHud().getLayout().isTooSmall();
             return new Object[] {landedAt, aiming.getClock().getSimulatedSeconds(),
                 aiming.getShotNumber(), aiming.getLandedShotNumber(),
                 aiming.getLastFlightSeconds(HelloAimingDemo.Aim.DISCRETE),
@@ -90,12 +94,13 @@ class HelloAimingDemoTest {
         assertEquals(2, inTheAir[2]);
         assertEquals(1, inTheAir[3]);
         String hud = (String) inTheAir[5];
+        // Its most lines (two ghost readouts, both aims, the shot in the air and the one
+        // that landed) all show at 1280x720, the footer's keys too.
+        assertFalse(tooSmall[0], hud);
         assertTrue(hud.contains("t = 1.00 s"), hud);
         assertTrue(hud.contains("Shot 2: in the air for 1.00 s  (both, vx 20.0 m/s)"), hud);
-        assertTrue(hud.contains("Shot 1, lecture: landed at x = 99.667 m after 4.983 s,"
-                + "  miss -0.333 m"), hud);
-        assertTrue(hud.contains("Shot 1, discrete: landed at x = 100.000 m after 5.000 s,"
-                + "  miss 0.000 m"), hud);
+        assertTrue(hud.contains("Shot 1 landed (vx 20.0 m/s):  lecture x = 99.667 m, miss -0.333"
+                + " m; discrete x = 100.000 m, miss 0.000 m"), hud);
     }
 
     /** Whether an aim's bullet is drawn: its view's node is not culled. */

@@ -45,15 +45,14 @@ class HelloAimingTwoShotsTest {
         assertEquals(100.0 - 20.0 / 60.0, both.getLastLandingX(Aim.LECTURE), 1e-3);
         assertEquals(100.0, both.getLastLandingX(Aim.DISCRETE), 1e-3);
         String hud = both.formatHud(new StringBuilder()).toString();
-        assertTrue(hud.contains("Next shot fires (L): both aims at once"), hud);
-        assertTrue(hud.contains("lecture   vy = g·S/(2·vx) = 24.500 m/s:  x = 99.667 m,"
+        assertTrue(hud.contains("Next shot (L): both aims,  F fires;  S = 100 m,  vx = 20.0 m/s"
+                + " (Up/Down),  S/vx = 5.000 s,  vx·h = 0.333 m at h = 16.7 ms"), hud);
+        assertTrue(hud.contains("lecture   vy = g·S/(2·vx) = 24.500 m/s:  predicted x = 99.667 m,"
                 + "  miss -0.333 m"), hud);
-        assertTrue(hud.contains("discrete  vy = g·(S/vx + h)/2 = 24.582 m/s:  x = 100.000 m,"
-                + "  miss 0.000 m"), hud);
-        assertTrue(hud.contains("Shot 1, lecture: landed at x = 99.667 m after 4.983 s,"
-                + "  miss -0.333 m  (vx 20.0 m/s)"), hud);
-        assertTrue(hud.contains("Shot 1, discrete: landed at x = 100.000 m after 5.000 s,"
-                + "  miss 0.000 m  (vx 20.0 m/s)"), hud);
+        assertTrue(hud.contains("discrete  vy = g·(S/vx + h)/2 = 24.582 m/s:  predicted"
+                + " x = 100.000 m,  miss 0.000 m"), hud);
+        assertTrue(hud.contains("Shot 1 landed (vx 20.0 m/s):  lecture x = 99.667 m, miss -0.333"
+                + " m; discrete x = 100.000 m, miss 0.000 m"), hud);
         assertFalse(hud.contains("NaN"), hud);
     }
 
@@ -82,10 +81,11 @@ class HelloAimingTwoShotsTest {
         assertEquals(2, aiming.getLandedShotNumber(Aim.LECTURE));
         assertEquals(1, aiming.getLandedShotNumber(Aim.DISCRETE));
         String hud = aiming.formatHud(new StringBuilder()).toString();
-        assertTrue(hud.contains("Next shot fires (L): lecture alone"), hud);
-        assertTrue(hud.contains("Shot 2, lecture: landed at x = 99.667 m"), hud);
-        assertFalse(hud.contains("Shot 2, discrete"), hud);
-        assertFalse(hud.contains("Shot 1,"), hud);
+        assertTrue(hud.contains("Next shot (L): lecture alone,"), hud);
+        assertTrue(hud.contains("Shot 2 landed (vx 20.0 m/s):  lecture x = 99.667 m, miss -0.333"
+                + " m\n"), hud);
+        assertFalse(hud.contains("discrete x ="), hud);
+        assertFalse(hud.contains("Shot 1"), hud);
         aiming.setBothAims();
         aiming.fire();
         assertFalse(aiming.getBullet(Aim.DISCRETE).isParked());
