@@ -263,13 +263,13 @@ public final class LectureTour {
             return;
         }
         text.append("shot ").append(landed).append(" landed:");
-        char separator = ' ';
+        String separator = " ";
         for (HelloAimingDemo.Aim aim : AIMS) {
             if (aiming.getLandedShotNumber(aim) == landed) {
                 text.append(separator).append(aim == HelloAimingDemo.Aim.LECTURE
-                        ? " the lecture's aim at x = " : " the discrete correction at x = ");
+                        ? "the lecture's aim at x = " : "the discrete correction at x = ");
                 TextFormat.appendFixed(text, aiming.getLastLandingX(aim), 2).append(" m");
-                separator = ',';
+                separator = ", ";
             }
         }
         text.append('\n');
