@@ -297,6 +297,8 @@ public final class BounceDemo extends DemoState {
         } else {
             TextFormat.appendFixed(text, ideal.getRestSeconds(), 3).append(" s\n");
         }
+        // The law first: on a small window the last lines are the ones hidden.
+        appendApexTable(text, e);
         appendFixCost(text, e, g);
         for (int lane = 0; lane < balls.length; ++lane) {
             appendLane(text, lane, e);
@@ -304,7 +306,6 @@ public final class BounceDemo extends DemoState {
         if (isOnHop(SWEPT_LANE, e)) {
             appendHopCycle(text, SWEPT_LANE, e);
         }
-        appendApexTable(text, e);
         if (eTenths == 10) {
             appendDrift(text);
         }
@@ -442,10 +443,10 @@ public final class BounceDemo extends DemoState {
             text.append("on: rebound e (v - g h), e g h = ");
             TextFormat.appendFixed(text, cost, 3).append(" m/s less than e v");
         } else {
-            text.append("off: rebound e v (with the fix e (v - g h): e g h = ");
+            text.append("off: rebound e v (the fix: e (v - g h), e g h = ");
             TextFormat.appendFixed(text, cost, 3).append(" m/s less)");
         }
-        text.append("   last impact, ").append(laneName(detection)).append(": v = ");
+        text.append("   ").append(laneName(detection)).append("'s last impact: v = ");
         if (table.countImpacts() == 0) {
             text.append("-\n");
             return;
@@ -493,7 +494,7 @@ public final class BounceDemo extends DemoState {
     private void appendApexTable(StringBuilder text, float e) {
         BounceRecorder table = getRecorder();
         text.append("apex table, ").append(laneName(detection))
-                .append(" (O: the other lane): h_n (m) and h_n/h_(n-1) against e^2 = ");
+                .append(" (O: other lane): h_n (m) and h_n/h_(n-1) against e^2 = ");
         TextFormat.appendFixed(text, e * e, RATIO_DIGITS).append(", h_0 = ");
         TextFormat.appendFixed(text, DROP_HEIGHT, 3).append(" m\n");
         int count = table.countApexes();
