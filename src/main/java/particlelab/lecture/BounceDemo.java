@@ -4,7 +4,6 @@ import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import java.util.List;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -96,6 +95,8 @@ public final class BounceDemo extends DemoState {
     private static final Detection[] LANE_TESTS = {Detection.OVERLAP, Detection.SWEPT};
     /** The lanes' labels, beside the balls and at the head of their HUD lines. */
     private static final String[] LANE_NAMES = {"overlap test", "swept test"};
+    /** The lanes' names on the HUD's line that compares them. */
+    private static final String[] LANE_SHORT_NAMES = {"overlap", "swept"};
     /**
      * Where the lanes stand (x, in metres): left of the scene's middle, since the graph takes
      * the scene's top right corner.
@@ -104,7 +105,7 @@ public final class BounceDemo extends DemoState {
     private static final ColorRGBA[] LANE_COLORS = {new ColorRGBA(0.3f, 0.75f, 1f, 1f),
         ColorRGBA.Orange};
     /** The apex table's latest rows on the HUD. */
-    private static final int APEX_ROWS_SHOWN = 6;
+    private static final int APEX_ROWS_SHOWN = 4;
     /** Digits of the apex ratios: the step's O(h) error is about 0.01 at h = 1/60 s. */
     private static final int RATIO_DIGITS = 2;
     /** The graph's size at HUD scale 1 (pixels): the live graph's, as for the free flights. */
@@ -196,7 +197,7 @@ public final class BounceDemo extends DemoState {
                     }
                 }));
         // Both lanes always run; the choice is the lane whose apex table the HUD shows.
-        declareParameter(DemoParameter.choice("detection", "lane in the apex table",
+        declareParameter(DemoParameter.choice("detection", "table lane",
                 new String[] {"swept", "overlap"}, detection == Detection.SWEPT ? 0 : 1,
                 DemoParameter.Applies.LIVE, value -> {
                     Detection wanted = Math.round(value) == 0 ? Detection.SWEPT
@@ -289,20 +290,22 @@ public final class BounceDemo extends DemoState {
         TextFormat.appendFixed(text, e, 1).append(", e^2 = ");
         TextFormat.appendFixed(text, e * e, RATIO_DIGITS).append("   threshold ");
         TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s (")
-                .append(THRESHOLD_NAMES[thresholdPreset]).append(")   t0 = sqrt(2 h0/g) = ");
-        TextFormat.appendFixed(text, ideal.getFallSeconds(), 3)
-                .append(" s   time to rest: T = t0 (1+e)/(1-e) = ");
+                .append(THRESHOLD_NAMES[thresholdPreset])
+                .append(")   time to rest: T = t0 (1+e)/(1-e) = ");
         if (eTenths == 10) {
             text.append("never (e = 1)\n");
         } else {
             TextFormat.appendFixed(text, ideal.getRestSeconds(), 3).append(" s\n");
         }
         // The law first: on a small window the last lines are the ones hidden.
-        appendApexTable(text, e);
+        appendApexTable(text);
         appendFixCost(text, e, g);
+        text.append("apex, energy:");
         for (int lane = 0; lane < balls.length; ++lane) {
+            text.append(lane == 0 ? " " : "   ");
             appendLane(text, lane, e);
         }
+        text.append('\n');
         if (isOnHop(SWEPT_LANE, e)) {
             appendHopCycle(text, SWEPT_LANE, e);
         }
@@ -310,22 +313,6 @@ public final class BounceDemo extends DemoState {
             appendDrift(text);
         }
         sounds.getPlayer().getLog().appendLatest(text).append('\n');
-    }
-
-    /**
-     * Copy the screen rectangle of every text shown into a list: the HUD's and the scene's,
-     * and the height graph's labels.
-     *
-     * @param storeResult where to add them (not null, modified)
-     * @return storeResult
-     */
-    @Override
-    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
-        super.copyTextRects(storeResult);
-        if (graph != null && !getHud().isHelpVisible()) {
-            graph.copyTextRects(storeResult);
-        }
-        return storeResult;
     }
 
     @Override
@@ -438,74 +425,66 @@ public final class BounceDemo extends DemoState {
         float h = table.getImpactStepSeconds() > 0f ? table.getImpactStepSeconds()
                 : getClock().getStepSeconds();
         float cost = e * g * h;
-        text.append("resting fix ");
         if (response.isRestingFix()) {
-            text.append("on: rebound e (v - g h), e g h = ");
-            TextFormat.appendFixed(text, cost, 3).append(" m/s less than e v");
+            text.append("resting fix on: rebound e v - e g h, e g h = ");
+            TextFormat.appendFixed(text, cost, 3).append(" m/s");
         } else {
-            text.append("off: rebound e v (the fix: e (v - g h), e g h = ");
-            TextFormat.appendFixed(text, cost, 3).append(" m/s less)");
+            text.append("resting fix off: rebound e v (on: less e g h = ");
+            TextFormat.appendFixed(text, cost, 3).append(" m/s)");
         }
-        text.append("   ").append(laneName(detection)).append("'s last impact: v = ");
+        text.append("   last impact ");
         if (table.countImpacts() == 0) {
             text.append("-\n");
             return;
         }
-        TextFormat.appendFixed(text, table.getLastImpactSpeed(), 3).append(", e v = ");
-        TextFormat.appendFixed(text, e * table.getLastImpactSpeed(), 3).append(", rebound ");
+        TextFormat.appendFixed(text, table.getLastImpactSpeed(), 3).append(", rebound ");
         TextFormat.appendFixed(text, table.getLastReboundSpeed(), 3).append(" m/s\n");
     }
 
-    /** One lane's line: impacts, the latest apex, the energy and the rest time. */
+    /** One lane's part of the lanes' line: the latest apex, the energy, the rest time. */
     private void appendLane(StringBuilder text, int lane, float e) {
         BounceRecorder recorder = recorders[lane];
         Body ball = balls[lane];
-        text.append(LANE_NAMES[lane]).append(":  impacts ").append(recorder.countImpacts())
-                .append("   latest apex ");
+        text.append(LANE_SHORT_NAMES[lane]).append(' ');
         if (recorder.countApexes() == 0) {
             text.append("-");
         } else {
             TextFormat.appendFixed(text, recorder.getApex(recorder.countApexes() - 1), 3)
                     .append(" m");
         }
-        float g = Gravity.STANDARD_G;
         Vector3f v = ball.getVelocity();
         float energy = 0.5f * MASS_KG * v.lengthSquared()
-                + MASS_KG * g * (ball.getPosition().y - RADIUS);
-        text.append("   E = m v²/2 + m g (y − R) = ");
-        TextFormat.appendFixed(text, energy, 3).append(" J of m g h0 = ");
-        TextFormat.appendFixed(text, MASS_KG * g * DROP_HEIGHT, 3).append(" J   ");
+                + MASS_KG * Gravity.STANDARD_G * (ball.getPosition().y - RADIUS);
+        text.append(", ");
+        TextFormat.appendFixed(text, energy, 3).append(" J, ");
         if (recorder.isResting()) {
             text.append("at rest at ");
-            TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s\n");
+            TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s");
         } else if (eTenths == 10) {
-            text.append("never at rest (e = 1)\n");
+            text.append("never at rest (e = 1)");
         } else if (isOnHop(lane, e)) {
-            text.append("never at rest\n");
+            text.append("never at rest");
         } else {
-            text.append("still bouncing\n");
+            text.append("still bouncing");
         }
     }
 
     /**
-     * The apex table of the lane chosen: each apex h_n from impact 1 (the latest rows) and its
-     * ratio to the one before, h_n/h_(n-1) with h_0 the drop, against e², the law.
+     * The apex table of the lane chosen, one line: each apex h_n from impact 1 (the latest
+     * rows) and its ratio to the one before, h_n/h_(n-1) with h_0 the drop, to hold against
+     * the e² of the line above, the law.
      */
-    private void appendApexTable(StringBuilder text, float e) {
+    private void appendApexTable(StringBuilder text) {
         BounceRecorder table = getRecorder();
-        text.append("apex table, ").append(laneName(detection))
-                .append(" (O: other lane): h_n (m) and h_n/h_(n-1) against e^2 = ");
-        TextFormat.appendFixed(text, e * e, RATIO_DIGITS).append(", h_0 = ");
-        TextFormat.appendFixed(text, DROP_HEIGHT, 3).append(" m\n");
+        text.append(laneName(detection)).append(", h_n (h_n/h_(n-1)):");
         int count = table.countApexes();
         if (count == 0) {
-            text.append("no apex yet\n");
+            text.append(" no apex yet\n");
             return;
         }
         for (int i = Math.max(0, count - APEX_ROWS_SHOWN); i < count; ++i) {
             float previous = i == 0 ? DROP_HEIGHT : table.getApex(i - 1);
-            text.append(i == Math.max(0, count - APEX_ROWS_SHOWN) ? "" : "    ").append(i + 1)
-                    .append(": ");
+            text.append("  ").append(i + 1).append(": ");
             TextFormat.appendFixed(text, table.getApex(i), 3).append(" (");
             TextFormat.appendFixed(text, table.getApex(i) / previous, RATIO_DIGITS).append(')');
         }
