@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
@@ -9,6 +10,9 @@ import particlelab.demo.DemoState;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.CollisionSounds;
+import particlelab.view.HudFont;
+import particlelab.view.LiveGraph;
+import particlelab.view.ScreenRect;
 import particlelab.view.SilentSoundPlayer;
 import particlelab.view.SoundPlayer;
 import particlelab.view.TextFormat;
@@ -17,19 +21,25 @@ import particlelab.world.Detection;
 import particlelab.world.HopCycle;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SurfaceRule;
-import particlelab.world.World;
 
 /**
- * Demo 7, bounce: a ball of radius R dropped from rest onto the ground, the first collision
- * response of the lecture. Builds upon gravitational pull (the fall is its parabola) and adds
- * one collision rule to the demo's world: the ground {@code y = 0}, resolved by an impulse
- * along the normal, {@code v' = −e·v}.
+ * Demo 7, bounce: two balls of radius R dropped from rest onto the ground side by side, the
+ * first collision response of the lecture. Builds upon gravitational pull (the fall is its
+ * parabola) and adds one collision rule per lane to the demo's world: the ground
+ * {@code y = 0}, resolved by an impulse along the normal, {@code v' = −e·v}, found by the
+ * overlap test in the left lane and by the intersection (swept) test in the right one. Both
+ * lanes have the same e, threshold and resting fix; the balls never meet.
  *
  * <p>What to watch for:
  * <ul>
- * <li>The ideal ball climbs to {@code e^{2n}·h0} after its n-th impact and comes to rest after
- * {@code T = t0(1+e)/(1−e)}, {@code t0 = √(2h0/g)} (a geometric series of flights); the HUD
- * puts the stepped ball's apexes and rest time next to these.</li>
+ * <li>The restitution law: the ideal ball climbs to {@code h_n = e^{2n}·h0} after its n-th
+ * impact, so each apex is e² times the one before, and comes to rest after
+ * {@code T = t0(1+e)/(1−e)}, {@code t0 = √(2h0/g)} (a geometric series of flights). The HUD's
+ * apex table gives each recorded apex from impact 1 and its ratio to the one before against
+ * e²; the graph draws both balls' heights against time and the ideal ball dashed. With the
+ * defaults (e = 0.9, no resting fix, Box2D's threshold) the first ratios read e² = 0.81 to
+ * within the step's O(h) error, about 0.01 at h = 1/60 s, until the threshold stops the
+ * ball.</li>
  * <li>The restitution threshold (none, Cyclone's 0.25 m/s, Box2D's and Jolt's 1 m/s): an impact
  * at or below it is perfectly inelastic. It is no sure cure. Without the resting fix the
  * swept ball settles on hops of K whole steps (the rest of an impact's step has no gravity)
@@ -39,13 +49,15 @@ import particlelab.world.World;
  * A threshold stops a ball on its hop only when {@code w* ≤ v_t}.</li>
  * <li>The resting fix (Cyclone's): the rebound leaves out the velocity gravity added during
  * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still and
- * no hop can repeat: the only cure that always works. The price is a slightly lower apex
- * after every impact (press F and compare the apexes with {@code e^{2n}·h0}). With the fix
- * off the ball hops at w* for ever unless the threshold is at or above it.</li>
- * <li>Overlap test against intersection (swept) test: with e = 1 the overlap test finds the
- * ball inside the ground and pushes it out, and its apexes drift; the swept test finds the
- * moment of impact on the step's straight segment. A hidden second world runs the other test
- * with the same ball, so the HUD shows both drifts.</li>
+ * no hop can repeat: the only cure that always works. The price is {@code e·g·h} off every
+ * rebound (the HUD puts it beside the last impact's speeds), so every apex ratio reads below
+ * e² (press F). With the fix off the ball hops at w* for ever unless the threshold is at or
+ * above it.</li>
+ * <li>Overlap test against intersection (swept) test, lane beside lane: the overlap test finds
+ * the ball inside the ground at the step's end and pushes it out, the swept test finds the
+ * moment of impact on the step's straight segment. The HUD compares the lanes' apexes, rest
+ * times and energies; with e = 1 the overlap lane's apexes drift and the swept lane's
+ * stay.</li>
  * <li>The impact sound, as loud as the approach speed (silent without an audio device; the
  * HUD's sound line shows what would play).</li>
  * </ul>
@@ -58,8 +70,11 @@ public final class BounceDemo extends DemoState {
     public static final float DROP_HEIGHT = 4f;
     /** The ball's mass (in kilograms). */
     public static final float MASS_KG = 1f;
-    /** The restitution e at the start, in tenths. */
-    public static final int START_E_TENTHS = 8;
+    /**
+     * The restitution e at the start, in tenths: 0.9, whose many fast bounces keep the step's
+     * O(h) error of the apex ratios near 0.01 (it grows as 2·g·h over the rebound speed).
+     */
+    public static final int START_E_TENTHS = 9;
     /** The threshold presets (in m/s): none, Cyclone's, Box2D's and Jolt's. */
     static final float[] THRESHOLDS = {0f, ImpulseResponse.CYCLONE_THRESHOLD,
         ImpulseResponse.BOX2D_THRESHOLD};
@@ -67,8 +82,35 @@ public final class BounceDemo extends DemoState {
     static final String[] THRESHOLD_NAMES = {"none", "Cyclone", "Box2D/Jolt"};
     /** The presets' command-line names, in the order of {@link #THRESHOLDS}. */
     static final String[] THRESHOLD_KEYS = {"none", "cyclone", "box2d"};
-    /** Apexes shown on the HUD, the latest ones. */
-    private static final int APEXES_SHOWN = 4;
+    /**
+     * The threshold preset at the start: Box2D's 1 m/s, above every hop's fixed point of the
+     * 4 m drop with e = 0.9 the ball meets, so it stops the ball after the law has shown.
+     */
+    static final int START_THRESHOLD = 2;
+    /** The index of the overlap test's lane, in the lane arrays and the graph's series. */
+    static final int OVERLAP_LANE = 0;
+    /** The index of the swept test's lane. */
+    static final int SWEPT_LANE = 1;
+    /** The lanes' tests, in lane order. */
+    private static final Detection[] LANE_TESTS = {Detection.OVERLAP, Detection.SWEPT};
+    /** The lanes' labels, beside the balls and at the head of their HUD lines. */
+    private static final String[] LANE_NAMES = {"overlap test", "swept test"};
+    /** The lanes' names on the HUD's line that compares them. */
+    private static final String[] LANE_SHORT_NAMES = {"overlap", "swept"};
+    /**
+     * Where the lanes stand (x, in metres): left of the scene's middle, since the graph takes
+     * the scene's top right corner.
+     */
+    private static final float[] LANE_X = {-3.5f, -1.5f};
+    private static final ColorRGBA[] LANE_COLORS = {new ColorRGBA(0.3f, 0.75f, 1f, 1f),
+        ColorRGBA.Orange};
+    /** The apex table's latest rows on the HUD. */
+    private static final int APEX_ROWS_SHOWN = 4;
+    /** Digits of the apex ratios: the step's O(h) error is about 0.01 at h = 1/60 s. */
+    private static final int RATIO_DIGITS = 2;
+    /** The graph's size at HUD scale 1 (pixels): the live graph's, as for the free flights. */
+    private static final float GRAPH_WIDTH = 560f;
+    private static final float GRAPH_HEIGHT = 220f;
     /**
      * The hop counts as settled (the HUD names its fixed point) once the latest impact speed
      * is this close to w*, relatively: the speeds approach it by a factor e a hop, so a ball
@@ -76,18 +118,29 @@ public final class BounceDemo extends DemoState {
      */
     private static final double SETTLED_FRACTION = 0.05;
 
-    private final ImpulseResponse response = new ImpulseResponse(START_E_TENTHS / 10f);
-    private final ImpulseResponse otherResponse = new ImpulseResponse(START_E_TENTHS / 10f);
-    private final World other = new World();
+    /** The ground's response, the same for both lanes (it keeps no state between contacts). */
+    private final ImpulseResponse response = new ImpulseResponse(START_E_TENTHS / 10f,
+            THRESHOLDS[START_THRESHOLD], false);
+    private final Body[] balls = new Body[LANE_TESTS.length];
+    private final BounceRecorder[] recorders = new BounceRecorder[LANE_TESTS.length];
     private int eTenths = START_E_TENTHS;
-    private int thresholdPreset;
+    private int thresholdPreset = START_THRESHOLD;
+    /** The lane whose apex table and last impact the HUD shows. */
     private Detection detection = Detection.SWEPT;
-    private SurfaceRule ground;
-    private SurfaceRule otherGround;
-    private Body ball;
-    private BounceRecorder recorder;
-    private BounceRecorder otherRecorder;
+    private IdealBounce ideal = new IdealBounce(DROP_HEIGHT, START_E_TENTHS / 10.0,
+            Gravity.STANDARD_G);
     private CollisionSounds sounds;
+    /** The height graph (null without a window). */
+    private LiveGraph graph;
+    /** Simulated time since the drop, the graph's time axis (in seconds). */
+    private float graphSeconds;
+    private final float[] graphHeights = new float[LANE_TESTS.length];
+    private final float[] graphSpeeds = new float[LANE_TESTS.length];
+    private final float[] idealHeights = new float[LANE_TESTS.length];
+    private final float[] idealSpeeds = new float[LANE_TESTS.length];
+    /** The graph rectangle and HUD scale the graph was last laid out for. */
+    private final ScreenRect graphRect = new ScreenRect();
+    private float graphScale = Float.NaN;
 
     /** Create the demo. */
     public BounceDemo() {
@@ -97,30 +150,31 @@ public final class BounceDemo extends DemoState {
     @Override
     protected void createScene() {
         ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
-        Vector3f start = new Vector3f(0f, DROP_HEIGHT + RADIUS, 0f);
-        DemoParticle demoBall = addParticle("ball", ColorRGBA.Orange, start, Vector3f.ZERO,
-                MASS_KG, gravity);
-        ball = demoBall.getBody();
-        ball.setRadius(RADIUS);
-        recorder = new BounceRecorder(ball);
-        getWorld().addContactListener(recorder);
-        getWorld().addStepListener(recorder);
-        Body otherBall = other.addBody(gravity, start, Vector3f.ZERO, MASS_KG, RADIUS);
-        otherRecorder = new BounceRecorder(otherBall);
-        other.addContactListener(otherRecorder);
-        other.addStepListener(otherRecorder);
-        // The other detection's lane is a second world beside this one, on the same clock.
-        addSimulation(other);
-        applyRules();
+        Vector3f start = new Vector3f();
+        for (int lane = 0; lane < LANE_TESTS.length; ++lane) {
+            start.set(LANE_X[lane], DROP_HEIGHT + RADIUS, 0f);
+            DemoParticle demoBall = addParticle(LANE_NAMES[lane], LANE_COLORS[lane], start,
+                    Vector3f.ZERO, MASS_KG, gravity);
+            Body ball = demoBall.getBody();
+            ball.setRadius(RADIUS);
+            balls[lane] = ball;
+            // Each lane's ground sees its own ball only: the lanes share the world and the
+            // clock, and neither ball knows of the other.
+            getWorld().addRule(SurfaceRule.ground(response, LANE_TESTS[lane]).limitTo(ball));
+            recorders[lane] = new BounceRecorder(ball);
+            getWorld().addContactListener(recorders[lane]);
+            getWorld().addStepListener(recorders[lane]);
+        }
+        applyResponse();
         sounds = new CollisionSounds(getApplication() == null
                 ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
                 : SoundPlayer.forApplication(getApplication()));
-        setView(-4f, 4f, DROP_HEIGHT + 2f * RADIUS + 0.5f, 0.5f, 2, RADIUS);
+        setView(-6f, 6f, DROP_HEIGHT + 2f * RADIUS + 0.5f, 0.5f, 2, RADIUS);
     }
 
     @Override
     protected void declareParameters() {
-        // A new e drops the ball again, as the Up and Down keys do.
+        // A new e drops the balls again, as the Up and Down keys do.
         declareParameter(new DemoParameter("e", "restitution", "", 0f, 1f,
                 0.1f, START_E_TENTHS / 10f, 1, DemoParameter.Applies.LIVE, value -> {
                     int tenths = Math.round(value * 10f);
@@ -128,7 +182,7 @@ public final class BounceDemo extends DemoState {
                         configure(tenths, thresholdPreset, response.isRestingFix(), detection);
                     }
                 }));
-        // The threshold, the resting fix and the detection test, as P, F and O switch them.
+        // The threshold, the resting fix and the lane in the apex table, as P, F and O do.
         declareParameter(DemoParameter.choice("threshold", "threshold speed", THRESHOLD_KEYS,
                 thresholdPreset, DemoParameter.Applies.LIVE, value -> {
                     if (Math.round(value) != thresholdPreset) {
@@ -142,7 +196,8 @@ public final class BounceDemo extends DemoState {
                         configure(eTenths, thresholdPreset, Math.round(value) == 1, detection);
                     }
                 }));
-        declareParameter(DemoParameter.choice("detection", "ground test",
+        // Both lanes always run; the choice is the lane whose apex table the HUD shows.
+        declareParameter(DemoParameter.choice("detection", "table lane",
                 new String[] {"swept", "overlap"}, detection == Detection.SWEPT ? 0 : 1,
                 DemoParameter.Applies.LIVE, value -> {
                     Detection wanted = Math.round(value) == 0 ? Detection.SWEPT
@@ -170,7 +225,7 @@ public final class BounceDemo extends DemoState {
         bindKey(KeyInput.KEY_P, "P", presets.toString(), this::nextThreshold);
         bindKey(KeyInput.KEY_F, "F", "resting fix (Cyclone's) on / off, drop again",
                 this::toggleRestingFix);
-        bindKey(KeyInput.KEY_O, "O", "detection: swept (intersection test) <-> overlap test",
+        bindKey(KeyInput.KEY_O, "O", "apex table: swept lane <-> overlap lane (both always run)",
                 this::toggleDetection);
     }
 
@@ -183,59 +238,92 @@ public final class BounceDemo extends DemoState {
     }
 
     @Override
+    protected void afterStep(float stepSeconds) {
+        graphSeconds += stepSeconds;
+        if (graph == null) {
+            return;
+        }
+        for (int lane = 0; lane < balls.length; ++lane) {
+            graphHeights[lane] = balls[lane].getPosition().y;
+            graphSpeeds[lane] = balls[lane].getVelocity().length();
+            // The ideal ball is drawn once, dashed, as the swept lane's exact curve.
+            idealHeights[lane] = Float.NaN;
+            idealSpeeds[lane] = Float.NaN;
+        }
+        idealHeights[SWEPT_LANE] = RADIUS + (float) ideal.height(graphSeconds);
+        idealSpeeds[SWEPT_LANE] = (float) ideal.speed(graphSeconds);
+        graph.record(graphSeconds, graphHeights, graphSpeeds, idealHeights, idealSpeeds);
+    }
+
+    @Override
     protected void afterFrame() {
         sounds.playFrame(getWorld());
+        if (graph == null) {
+            return;
+        }
+        graph.setVisible(!getHud().isHelpVisible());
+        ScreenRect slot = getHud().getLayout().getGraph();
+        if (!sameRect(slot, graphRect) || getHud().getLayout().getScale() != graphScale) {
+            graphRect.set(slot);
+            graphScale = getHud().getLayout().getScale();
+            graph.layOut(slot, getHud().getLayout().getSceneLabelSize());
+        }
+        graph.refresh();
     }
 
     @Override
     protected void onRestart() {
-        other.restart();
-        recorder.clear();
-        otherRecorder.clear();
+        for (int lane = 0; lane < recorders.length; ++lane) {
+            recorders[lane].clear();
+        }
+        graphSeconds = 0f;
+        if (graph != null) {
+            graph.clear();
+        }
     }
 
     @Override
     protected void writeHudLines(StringBuilder text) {
         float e = getRestitution();
-        text.append("e = ");
-        TextFormat.appendFixed(text, e, 1).append("   threshold ");
-        TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s (")
-                .append(THRESHOLD_NAMES[thresholdPreset]).append(")   resting fix ")
-                .append(response.isRestingFix() ? "on" : "off").append("   detection: ")
-                .append(detection == Detection.SWEPT ? "swept (intersection test)"
-                        : "overlap test")
-                .append('\n');
         float g = Gravity.STANDARD_G;
-        float t0 = (float) Math.sqrt(2.0 * DROP_HEIGHT / g);
-        text.append("h0 = ");
-        TextFormat.appendFixed(text, DROP_HEIGHT, 2).append(" m   t0 = sqrt(2 h0/g) = ");
-        TextFormat.appendFixed(text, t0, 3).append(" s   impacts: ")
-                .append(recorder.countImpacts()).append("   last impact speed ");
-        TextFormat.appendFixed(text, recorder.getLastImpactSpeed(), 2).append(" m/s\n");
-        appendApexes(text, e);
-        text.append("time to rest: T = t0 (1+e)/(1-e) = ");
+        text.append("e = ");
+        TextFormat.appendFixed(text, e, 1).append(", e^2 = ");
+        TextFormat.appendFixed(text, e * e, RATIO_DIGITS).append("   threshold ");
+        TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s (")
+                .append(THRESHOLD_NAMES[thresholdPreset])
+                .append(")   time to rest: T = t0 (1+e)/(1-e) = ");
         if (eTenths == 10) {
-            text.append("never (e = 1)");
+            text.append("never (e = 1)\n");
         } else {
-            TextFormat.appendFixed(text, t0 * (1f + e) / (1f - e), 3).append(" s");
+            TextFormat.appendFixed(text, ideal.getRestSeconds(), 3).append(" s\n");
         }
-        text.append(",  measured ");
-        if (recorder.isResting()) {
-            TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s\n");
-        } else {
-            text.append("still bouncing\n");
-            appendHopCycle(text, e);
+        // The law first: on a small window the last lines are the ones hidden.
+        appendApexTable(text);
+        appendFixCost(text, e, g);
+        text.append("apex, energy:");
+        for (int lane = 0; lane < balls.length; ++lane) {
+            text.append(lane == 0 ? " " : "   ");
+            appendLane(text, lane, e);
         }
-        Vector3f v = ball.getVelocity();
-        float energy = 0.5f * MASS_KG * v.lengthSquared()
-                + MASS_KG * g * (ball.getPosition().y - RADIUS);
-        text.append("energy E = m v²/2 + m g (y − R) = ");
-        TextFormat.appendFixed(text, energy, 3).append(" J   at the drop m g h0 = ");
-        TextFormat.appendFixed(text, MASS_KG * g * DROP_HEIGHT, 3).append(" J\n");
+        text.append('\n');
+        if (isOnHop(SWEPT_LANE, e)) {
+            appendHopCycle(text, SWEPT_LANE, e);
+        }
         if (eTenths == 10) {
             appendDrift(text);
         }
         sounds.getPlayer().getLog().appendLatest(text).append('\n');
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        graph = new LiveGraph(app.getAssetManager(), HudFont.load(app.getAssetManager()),
+                LANE_COLORS);
+        getHud().getLayout().setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
+        layOut(app.getCamera().getWidth(), app.getCamera().getHeight());
+        // The graph is a GUI overlay of the demo: it comes and goes with the HUD's node.
+        getHud().getNode().attachChild(graph.getNode());
     }
 
     /**
@@ -248,40 +336,62 @@ public final class BounceDemo extends DemoState {
     }
 
     /**
-     * Access the measurements of the ball on screen.
+     * Access the measurements of one lane's ball.
      *
-     * @return the live recorder (not null after initialisation)
+     * @param test the lane's detection test (not null)
+     * @return the live recorder (not null after the scene was created)
+     */
+    BounceRecorder getRecorder(Detection test) {
+        getWorld();
+        return recorders[laneOf(test)];
+    }
+
+    /**
+     * Access the measurements of the lane in the apex table.
+     *
+     * @return the live recorder (not null after the scene was created)
      */
     BounceRecorder getRecorder() {
-        return recorder;
+        return getRecorder(detection);
     }
 
     /**
-     * Access the measurements of the hidden ball that runs the other test.
+     * Access one lane's ball.
      *
-     * @return the live recorder (not null after initialisation)
+     * @param test the lane's detection test (not null)
+     * @return the live body (not null after the scene was created)
      */
-    BounceRecorder getOtherRecorder() {
-        return otherRecorder;
+    Body getBall(Detection test) {
+        getWorld();
+        return balls[laneOf(test)];
     }
 
     /**
-     * Return the detection of the ball on screen.
+     * Access the height graph, for tests.
      *
-     * @return the detection (not null)
+     * @return the live graph (null without a window)
+     */
+    LiveGraph getGraph() {
+        return graph;
+    }
+
+    /**
+     * Return the lane in the apex table: both lanes run, this one's table is shown.
+     *
+     * @return its detection (not null)
      */
     public Detection getDetection() {
         return detection;
     }
 
     /**
-     * Set e, the threshold preset, the resting fix and the detection, then drop again (what
-     * the keys do, for tests and scripts).
+     * Set e, the threshold preset, the resting fix and the lane in the apex table, then drop
+     * both balls again (what the keys do, for tests and scripts).
      *
      * @param newETenths e in tenths (0 to 10)
      * @param preset index into the threshold presets (0 to 2)
      * @param restingFix true for the resting fix
-     * @param newDetection the ball's detection (not null)
+     * @param newDetection the lane in the apex table (not null)
      */
     public void configure(int newETenths, int preset, boolean restingFix,
             Detection newDetection) {
@@ -295,7 +405,8 @@ public final class BounceDemo extends DemoState {
         thresholdPreset = preset;
         response.setRestingFix(restingFix);
         detection = newDetection;
-        applyRules();
+        ideal = new IdealBounce(DROP_HEIGHT, eTenths / 10.0, Gravity.STANDARD_G);
+        applyResponse();
         refreshEquations();
         // The panel shows the e the keys or a caller chose.
         getParameters().set("e", eTenths / 10f);
@@ -305,51 +416,119 @@ public final class BounceDemo extends DemoState {
         restart();
     }
 
-    private void appendApexes(StringBuilder text, float e) {
-        text.append("apex after impact n, measured / ideal e^2n h0:");
-        int count = recorder.countApexes();
-        if (count == 0) {
-            text.append(" none yet");
+    /**
+     * The resting fix by name and what it costs per impact: e·g·h off the rebound, beside the
+     * table lane's last impact speed and rebound, as the world resolved them.
+     */
+    private void appendFixCost(StringBuilder text, float e, float g) {
+        BounceRecorder table = getRecorder();
+        float h = table.getImpactStepSeconds() > 0f ? table.getImpactStepSeconds()
+                : getClock().getStepSeconds();
+        float cost = e * g * h;
+        if (response.isRestingFix()) {
+            text.append("resting fix on: rebound e v - e g h, e g h = ");
+            TextFormat.appendFixed(text, cost, 3).append(" m/s");
+        } else {
+            text.append("resting fix off: rebound e v (on: less e g h = ");
+            TextFormat.appendFixed(text, cost, 3).append(" m/s)");
         }
-        for (int i = Math.max(0, count - APEXES_SHOWN); i < count; ++i) {
-            int n = i + 1;
-            text.append("   ").append(n).append(": ");
-            TextFormat.appendFixed(text, recorder.getApex(i), 3).append(" / ");
-            TextFormat.appendFixed(text, DROP_HEIGHT * Math.pow(e, 2.0 * n), 3);
+        text.append("   last impact ");
+        if (table.countImpacts() == 0) {
+            text.append("-\n");
+            return;
         }
-        text.append(" m\n");
+        TextFormat.appendFixed(text, table.getLastImpactSpeed(), 3).append(", rebound ");
+        TextFormat.appendFixed(text, table.getLastReboundSpeed(), 3).append(" m/s\n");
+    }
+
+    /** One lane's part of the lanes' line: the latest apex, the energy, the rest time. */
+    private void appendLane(StringBuilder text, int lane, float e) {
+        BounceRecorder recorder = recorders[lane];
+        Body ball = balls[lane];
+        text.append(LANE_SHORT_NAMES[lane]).append(' ');
+        if (recorder.countApexes() == 0) {
+            text.append("-");
+        } else {
+            TextFormat.appendFixed(text, recorder.getApex(recorder.countApexes() - 1), 3)
+                    .append(" m");
+        }
+        Vector3f v = ball.getVelocity();
+        float energy = 0.5f * MASS_KG * v.lengthSquared()
+                + MASS_KG * Gravity.STANDARD_G * (ball.getPosition().y - RADIUS);
+        text.append(", ");
+        TextFormat.appendFixed(text, energy, 3).append(" J, ");
+        if (recorder.isResting()) {
+            text.append("at rest at ");
+            TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s");
+        } else if (eTenths == 10) {
+            text.append("never at rest (e = 1)");
+        } else if (isOnHop(lane, e)) {
+            text.append("never at rest");
+        } else {
+            text.append("still bouncing");
+        }
     }
 
     /**
-     * When the ball, without the resting fix, has settled on a hop of K whole steps (the last
-     * two hops that long, the impact speed near w*) whose fixed-point impact speed w* is
-     * above the threshold: the reason it never rests.
+     * The apex table of the lane chosen, one line: each apex h_n from impact 1 (the latest
+     * rows) and its ratio to the one before, h_n/h_(n-1) with h_0 the drop, to hold against
+     * the e² of the line above, the law.
      */
-    private void appendHopCycle(StringBuilder text, float e) {
-        int stepsPerHop = recorder.getLastHopSteps();
-        float h = recorder.getLastStepSeconds();
-        if (response.isRestingFix() || eTenths == 10 || detection != Detection.SWEPT
-                || !recorder.isHopRepeating() || !(h > 0f)) {
+    private void appendApexTable(StringBuilder text) {
+        BounceRecorder table = getRecorder();
+        text.append(laneName(detection)).append(", h_n (h_n/h_(n-1)):");
+        int count = table.countApexes();
+        if (count == 0) {
+            text.append(" no apex yet\n");
             return;
         }
-        float threshold = THRESHOLDS[thresholdPreset];
+        for (int i = Math.max(0, count - APEX_ROWS_SHOWN); i < count; ++i) {
+            float previous = i == 0 ? DROP_HEIGHT : table.getApex(i - 1);
+            text.append("  ").append(i + 1).append(": ");
+            TextFormat.appendFixed(text, table.getApex(i), 3).append(" (");
+            TextFormat.appendFixed(text, table.getApex(i) / previous, RATIO_DIGITS).append(')');
+        }
+        text.append('\n');
+    }
+
+    /**
+     * Test whether a lane's ball, without the resting fix, has settled on a hop of K whole
+     * steps (the last two hops that long, the impact speed near w*) whose fixed-point impact
+     * speed w* is above the threshold: then it never rests. Only the swept test has such a
+     * hop ({@link HopCycle}).
+     */
+    private boolean isOnHop(int lane, float e) {
+        BounceRecorder recorder = recorders[lane];
+        float h = recorder.getLastStepSeconds();
+        if (response.isRestingFix() || eTenths == 10 || LANE_TESTS[lane] != Detection.SWEPT
+                || !recorder.isHopRepeating() || !(h > 0f)) {
+            return false;
+        }
+        int stepsPerHop = recorder.getLastHopSteps();
         float g = Gravity.STANDARD_G;
         double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, g, h);
-        if (HopCycle.thresholdStops(threshold, stepsPerHop, e, g, h) || Math.abs(
-                recorder.getLastImpactSpeed() - fixedPoint) > SETTLED_FRACTION * fixedPoint) {
-            return;
-        }
-        text.append("never at rest: hops of K = ").append(stepsPerHop)
-                .append(" steps, fixed point w* = K g h/(1+e) = ");
+        return !HopCycle.thresholdStops(THRESHOLDS[thresholdPreset], stepsPerHop, e, g, h)
+                && Math.abs(recorder.getLastImpactSpeed() - fixedPoint)
+                <= SETTLED_FRACTION * fixedPoint;
+    }
+
+    /** The reason a lane's ball on its hop ({@link #isOnHop}) never rests. */
+    private void appendHopCycle(StringBuilder text, int lane, float e) {
+        BounceRecorder recorder = recorders[lane];
+        int stepsPerHop = recorder.getLastHopSteps();
+        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, Gravity.STANDARD_G,
+                recorder.getLastStepSeconds());
+        text.append(laneName(LANE_TESTS[lane])).append(" never at rest: hops of K = ")
+                .append(stepsPerHop).append(" steps, fixed point w* = K g h/(1+e) = ");
         TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
-        TextFormat.appendFixed(text, threshold, 2).append(" m/s\n");
+        TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s\n");
     }
 
     private void appendDrift(StringBuilder text) {
-        int n = Math.min(recorder.countApexes(), otherRecorder.countApexes());
+        BounceRecorder overlap = recorders[OVERLAP_LANE];
+        BounceRecorder swept = recorders[SWEPT_LANE];
+        int n = Math.min(overlap.countApexes(), swept.countApexes());
         text.append("e = 1, apex drift (apex - h0) after ").append(n).append(" bounces:");
-        BounceRecorder overlap = detection == Detection.OVERLAP ? recorder : otherRecorder;
-        BounceRecorder swept = detection == Detection.OVERLAP ? otherRecorder : recorder;
         text.append("   overlap test ");
         appendSignedDrift(text, overlap, n);
         text.append("   swept test ");
@@ -367,6 +546,19 @@ public final class BounceDemo extends DemoState {
             text.append('+');
         }
         TextFormat.appendFixed(text, drift, 4).append(" m");
+    }
+
+    private static String laneName(Detection test) {
+        return test == Detection.SWEPT ? "swept lane" : "overlap lane";
+    }
+
+    private static int laneOf(Detection test) {
+        return test == Detection.SWEPT ? SWEPT_LANE : OVERLAP_LANE;
+    }
+
+    private static boolean sameRect(ScreenRect a, ScreenRect b) {
+        return a.getX() == b.getX() && a.getY() == b.getY() && a.getWidth() == b.getWidth()
+                && a.getHeight() == b.getHeight();
     }
 
     private void changeE(int tenths) {
@@ -388,23 +580,9 @@ public final class BounceDemo extends DemoState {
                 detection == Detection.SWEPT ? Detection.OVERLAP : Detection.SWEPT);
     }
 
-    /** Put the ground rules in both worlds: this test here, the other test in the other. */
-    private void applyRules() {
-        float e = getRestitution();
-        for (ImpulseResponse each : new ImpulseResponse[] {response, otherResponse}) {
-            each.setRestitution(e);
-            each.setThresholdSpeed(THRESHOLDS[thresholdPreset]);
-            each.setRestingFix(response.isRestingFix());
-        }
-        if (ground != null) {
-            getWorld().removeRule(ground);
-            other.removeRule(otherGround);
-        }
-        Detection otherDetection = detection == Detection.SWEPT ? Detection.OVERLAP
-                : Detection.SWEPT;
-        ground = SurfaceRule.ground(response, detection);
-        otherGround = SurfaceRule.ground(otherResponse, otherDetection);
-        getWorld().addRule(ground);
-        other.addRule(otherGround);
+    /** Give the lanes' shared ground response the e and threshold chosen. */
+    private void applyResponse() {
+        response.setRestitution(getRestitution());
+        response.setThresholdSpeed(THRESHOLDS[thresholdPreset]);
     }
 }

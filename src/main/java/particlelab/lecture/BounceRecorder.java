@@ -12,7 +12,8 @@ import particlelab.world.World;
  * the highest point after each impact (after each step) and the moment it came to rest. An
  * impact is every resolved contact of the ball except those of a ball at rest (a contact that
  * leaves it with rebound 0 after one that did too), as in the {@code bounce} command.
- * Heights are of the ball's lowest point above the ground, {@code y − R}. Allocates nothing.
+ * Heights are of the ball's lowest point above the ground, {@code y − R}. Each of Bounce's
+ * lanes has its own. Allocates nothing.
  */
 final class BounceRecorder implements ContactListener, StepListener {
 
@@ -27,6 +28,12 @@ final class BounceRecorder implements ContactListener, StepListener {
     private float apex = Float.NEGATIVE_INFINITY;
     private double restSeconds = Double.NaN;
     private float lastImpactSpeed;
+    /** The normal speed right after the latest impact's resolution (m/s, 0 before one). */
+    private float lastReboundSpeed;
+    /** The step h under way (s, 0 before one). */
+    private float currentStepSeconds;
+    /** The step h of the latest impact's step (s, 0 before one). */
+    private float impactStepSeconds;
     /** The world's step count at the latest impact, -1 before one. */
     private long lastImpactStep = -1L;
     /** Whole steps between the last two impacts, K (0 until there are two). */
@@ -57,6 +64,8 @@ final class BounceRecorder implements ContactListener, StepListener {
         closeApex();
         ++impacts;
         lastImpactSpeed = contact.getApproachSpeed();
+        lastReboundSpeed = rebound;
+        impactStepSeconds = currentStepSeconds;
         long step = world.getStepCount();
         if (lastImpactStep >= 0L) {
             previousHopSteps = lastHopSteps;
@@ -67,6 +76,11 @@ final class BounceRecorder implements ContactListener, StepListener {
         if (resting && Double.isNaN(restSeconds)) {
             restSeconds = contact.getTimeSeconds();
         }
+    }
+
+    @Override
+    public void beforeStep(World world, float stepSeconds) {
+        currentStepSeconds = stepSeconds;
     }
 
     @Override
@@ -85,6 +99,8 @@ final class BounceRecorder implements ContactListener, StepListener {
         apex = Float.NEGATIVE_INFINITY;
         restSeconds = Double.NaN;
         lastImpactSpeed = 0f;
+        lastReboundSpeed = 0f;
+        impactStepSeconds = 0f;
         lastImpactStep = -1L;
         lastHopSteps = 0;
         previousHopSteps = 0;
@@ -128,6 +144,16 @@ final class BounceRecorder implements ContactListener, StepListener {
     /** @return the normal approach speed of the latest impact (in m/s, 0 before one) */
     float getLastImpactSpeed() {
         return lastImpactSpeed;
+    }
+
+    /** @return the normal speed right after the latest impact (in m/s, 0 before one) */
+    float getLastReboundSpeed() {
+        return lastReboundSpeed;
+    }
+
+    /** @return the step h of the latest impact's step (in seconds, 0 before one) */
+    float getImpactStepSeconds() {
+        return impactStepSeconds;
     }
 
     /**

@@ -67,9 +67,10 @@ class DemoPresetsTest {
 
     @Test
     void bounceThresholdFixAndTestMatchTheKeys() {
-        assertSameState(BounceDemo::new, new String[] {"P"}, "threshold=cyclone");
-        assertSameState(BounceDemo::new, new String[] {"P", "P"}, "threshold=box2d");
-        assertSameState(BounceDemo::new, new String[] {"F"}, "fix=off");
+        // Bounce starts at Box2D's threshold with the fix off: P wraps round to none.
+        assertSameState(BounceDemo::new, new String[] {"P"}, "threshold=none");
+        assertSameState(BounceDemo::new, new String[] {"P", "P"}, "threshold=cyclone");
+        assertSameState(BounceDemo::new, new String[] {"F"}, "fix=on");
         assertSameState(BounceDemo::new, new String[] {"O"}, "detection=overlap");
     }
 

@@ -16,7 +16,7 @@ import particlelab.world.World;
 
 /**
  * Pause at the next contact (the Enter key), in plain JUnit: Bounce's physics runs without
- * jME ({@code new BounceDemo()}, {@code advancePhysics}). The ball falls from rest, so the
+ * jME ({@code new BounceDemo()}, {@code advancePhysics}). Its balls fall from rest, so the
  * step of its first impact has a closed form, and the clock must stop exactly there however
  * many steps a frame holds.
  */
@@ -53,7 +53,8 @@ class ContactPauseTest {
         assertEquals(world.getTimeSeconds(), bounce.getClock().getSimulatedSeconds(),
                 TIME_TOLERANCE);
         ContactLog.Entry contact = world.getLog().get(0);
-        assertEquals(1, world.getLog().size(), "the pause came on the first contact");
+        // Both lanes' balls fall from the same height: their first contacts share the step.
+        assertEquals(2, world.getLog().size(), "the pause came on the first contacts");
         assertTrue(contact.getTimeSeconds() > (contactStep - 1) * (double) H
                 && contact.getTimeSeconds() <= world.getTimeSeconds(),
                 "contact at " + contact.getTimeSeconds() + " s, inside step " + contactStep);
@@ -85,11 +86,12 @@ class ContactPauseTest {
         // the contact's own time is inside the step.
         StringBuilder expected = new StringBuilder("t = ");
         TextFormat.appendFixed(expected, firstContactStep() * H, 2)
-                .append(" s   PAUSED at contact: ball - ground, approach ");
+                .append(" s   PAUSED at contact: swept test - ground, approach ");
         TextFormat.appendFixed(expected, Gravity.STANDARD_G * H * firstContactStep(), 2)
                 .append(" m/s at t = ");
         TextFormat.appendFixed(expected, contact.getTimeSeconds(), 4)
-                .append(" s (Enter: next contact, Space resumes)   time x1\n");
+                .append(" s (+1 more in this step) (Enter: next contact, Space resumes)"
+                        + "   time x1\n");
         assertTrue(hud(bounce).contains(expected), expected + " in\n" + hud(bounce));
     }
 
@@ -110,14 +112,14 @@ class ContactPauseTest {
         press(bounce, "Enter");
         assertFalse(bounce.getClock().isPaused(), "Enter runs a paused clock to the contact");
         runUntilPaused(bounce, H);
-        // The second impact, after a whole hop (e = 0.8: about 1.45 s), and on its step.
+        // The next impact, after a whole hop (e = 0.9: about 1.6 s), and on its step.
         long secondStop = world.getStepCount();
         assertTrue(secondStop > firstStop + 60, firstStop + " then " + secondStop);
         ContactLog.Entry second = world.getLog().latest();
         assertTrue(second.getTimeSeconds() > (secondStop - 1) * (double) H
                 && second.getTimeSeconds() <= world.getTimeSeconds(),
                 "contact at " + second.getTimeSeconds() + " s, step " + secondStop);
-        assertEquals(2, world.getLog().size());
+        assertTrue(world.getLog().size() >= 3, "log " + world.getLog().size());
     }
 
     @Test

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
+import particlelab.view.LiveGraph;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;
 import particlelab.world.Detection;
@@ -41,7 +42,7 @@ class BounceDemoTest {
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
-            BounceRecorder recorder = bounce.getRecorder();
+            BounceRecorder recorder = bounce.getRecorder(Detection.SWEPT);
             float[] result = new float[recorder.countApexes()];
             for (int i = 0; i < result.length; ++i) {
                 result[i] = recorder.getApex(i);
@@ -67,15 +68,15 @@ class BounceDemoTest {
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
-            Body ball = bounce.getParticles().get(0).getBody();
+            Body ball = bounce.getBall(Detection.SWEPT);
             float y = ball.getPosition().y;
             boolean still = true;
             for (int frame = 0; frame < 120; ++frame) {
                 bounce.advance(H);
                 still &= ball.getPosition().y == y && ball.getVelocity().y == 0f;
             }
-            return new Object[] {bounce.getRecorder().isResting(), still, y,
-                bounce.getRecorder().getRestSeconds(),
+            return new Object[] {bounce.getRecorder(Detection.SWEPT).isResting(), still, y,
+                bounce.getRecorder(Detection.SWEPT).getRestSeconds(),
                 bounce.formatHud(new StringBuilder()).toString()};
         });
         assertTrue((Boolean) result[0]);
@@ -100,9 +101,9 @@ class BounceDemoTest {
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
-            BounceRecorder swept = bounce.getRecorder();
+            BounceRecorder swept = bounce.getRecorder(Detection.SWEPT);
             return new Object[] {swept.getApex(swept.countApexes() - 1),
-                bounce.getOtherRecorder().countApexes(),
+                bounce.getRecorder(Detection.OVERLAP).countApexes(),
                 bounce.formatHud(new StringBuilder()).toString()};
         });
         // Swept: every impact is found on the step's segment, so the apex stays within one
@@ -113,6 +114,7 @@ class BounceDemoTest {
         String hud = (String) result[2];
         assertTrue(hud.contains("time to rest: T = t0 (1+e)/(1-e) = never (e = 1)"), hud);
         assertTrue(hud.contains("e = 1, apex drift (apex - h0) after "), hud);
+        assertTrue(hud.contains("never at rest (e = 1)"), hud);
     }
 
     @Test
@@ -124,7 +126,7 @@ class BounceDemoTest {
                 bounce.advance(H);
             }
             result[0] = bounce.formatHud(new StringBuilder()).toString();
-            result[1] = String.valueOf(bounce.getRecorder().isResting());
+            result[1] = String.valueOf(bounce.getRecorder(Detection.SWEPT).isResting());
             bounce.configure(8, 2, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
@@ -139,11 +141,41 @@ class BounceDemoTest {
         TextFormat.appendFixed(expected, HopCycle.fixedPointSpeed(4, 0.8f, (float) G, H), 3)
                 .append(" m/s > threshold 0.25 m/s\n");
         assertEquals("false", huds[1], "still hopping after 60 s");
-        assertTrue(huds[0].contains(expected), huds[0]);
+        assertTrue(huds[0].contains("swept lane " + expected), huds[0]);
+        assertTrue(huds[0].contains("   swept "), huds[0]);
         assertTrue(huds[0].contains("0.363 m/s"), huds[0]);
-        // Box2D's 1 m/s is above w*: the ball rests and the line is gone.
-        assertTrue(huds[2].contains("measured "), huds[2]);
+        // Box2D's 1 m/s is above w*: both balls rest and the line is gone.
+        assertTrue(huds[2].contains("at rest at "), huds[2]);
         assertFalse(huds[2].contains("never at rest"), huds[2]);
         assertFalse(huds[2].contains("still bouncing"), huds[2]);
+    }
+
+    /**
+     * The height graph holds a bounded number of samples however long the balls bounce: it
+     * thins itself to every other sample when full, so after 60 s it still spans the whole
+     * run, from t = 0 to within its last stride of steps of 60 s.
+     */
+    @Test
+    void theHeightGraphKeepsABoundedNumberOfPointsOverTheWholeRun() throws Exception {
+        float[] result = harness.call(() -> {
+            bounce.configure(9, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 3600; ++frame) {
+                bounce.advance(H);
+            }
+            LiveGraph graph = bounce.getGraph();
+            int last = graph.size() - 1;
+            return new float[] {graph.size(), graph.getTime(0), graph.getTime(last),
+                graph.getValue(last, BounceDemo.SWEPT_LANE, false, false),
+                bounce.getBall(Detection.SWEPT).getPosition().y,
+                graph.getValue(0, BounceDemo.SWEPT_LANE, true, false)};
+        });
+        assertTrue(result[0] <= LiveGraph.CAPACITY && result[0] >= LiveGraph.CAPACITY / 2,
+                "samples " + result[0]);
+        // 3600 steps in at most 256 samples: a stride of 16 steps, so the last sample is at
+        // most 16 h (0.27 s) before the end.
+        assertEquals(H, result[1], 1e-6f, "the first sample is the first step's");
+        assertEquals(60f, result[2], 16f * H, "the last sample");
+        // The ideal ball (dashed) starts where the balls do, its lowest point at h0.
+        assertEquals(BounceDemo.DROP_HEIGHT + BounceDemo.RADIUS, result[5], 0.01f);
     }
 }
