@@ -241,7 +241,7 @@ public final class TargetsDemo extends DemoState {
             spawnTargets();
         }
         if (views != null) {
-            views.update();
+            views.update(getDrawBlend());
         }
     }
 

@@ -107,8 +107,12 @@ public final class Body {
         settle();
     }
 
-    /** Make the bookkeeping of the last step describe a body standing where it is. */
-    void settle() {
+    /**
+     * Make the bookkeeping of the last step describe a body standing where it is: after a
+     * launch or a teleport, so a view that interpolates inside the last step draws the body
+     * where it is now.
+     */
+    public void settle() {
         previousPosition.set(particle.position);
         previousVelocity.set(particle.velocity);
         gainedVelocity.zero();
@@ -522,6 +526,41 @@ public final class Body {
             slab.getVector(rigidBody.angularVelocity);
             slab.getVector(rigidBody.torque);
         }
+    }
+
+    /**
+     * Copy where a view draws the body between the last two physics states: the lecture's
+     * "fix your timestep" blend {@code P_prev + α·(P − P_prev)} of the position at the start
+     * of the last step and the position now, α being the accumulator's leftover over h.
+     *
+     * @param alpha the blend (0: the previous state, 1 or more: the state now, exactly)
+     * @param storeResult storage for the result (in metres, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyDrawnPosition(float alpha, Vector3f storeResult) {
+        return blend(previousPosition, particle.position, alpha, storeResult);
+    }
+
+    /**
+     * Blend two positions: {@code from + α·(to − from)}, exactly {@code to} for α &ge; 1 and
+     * exactly {@code from} for α &le; 0.
+     *
+     * @param from the earlier state (not null, not modified)
+     * @param to the later state (not null, not modified)
+     * @param alpha the blend (any; clamped to 0 to 1)
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult
+     */
+    public static Vector3f blend(Vector3f from, Vector3f to, float alpha,
+            Vector3f storeResult) {
+        if (!(alpha < 1f)) {
+            return storeResult.set(to);
+        }
+        if (!(alpha > 0f)) {
+            return storeResult.set(from);
+        }
+        return storeResult.set(from.x + alpha * (to.x - from.x),
+                from.y + alpha * (to.y - from.y), from.z + alpha * (to.z - from.z));
     }
 
     /** Compute where the body is at a fraction of the step on its current segment. */
