@@ -23,8 +23,11 @@ import particlelab.world.StateSlab;
  */
 public final class DemoParticle {
 
-    /** The ints of {@link #writeState}: 3 flags, x, 2 doubles, the record's counters. */
-    static final int STATE_INTS = 3 + 1 + 2 * 2 + TrajectoryRecord.STATE_INTS;
+    /**
+     * The ints of {@link #writeState}: 3 flags, x, 2 doubles, the launch state, the record's
+     * counters.
+     */
+    static final int STATE_INTS = 3 + 1 + 2 * 2 + 6 + TrajectoryRecord.STATE_INTS;
 
     private String label;
     private final ColorRGBA color;
@@ -302,6 +305,8 @@ public final class DemoParticle {
         slab.putFloat(landingX);
         slab.putDouble(landingSeconds);
         slab.putDouble(flightSeconds);
+        slab.putVector(launchPosition);
+        slab.putVector(launchVelocity);
         record.writeState(slab);
     }
 
@@ -313,6 +318,8 @@ public final class DemoParticle {
         landingX = slab.getFloat();
         landingSeconds = slab.getDouble();
         flightSeconds = slab.getDouble();
+        slab.getVector(launchPosition);
+        slab.getVector(launchVelocity);
         record.readState(slab);
     }
 

@@ -26,6 +26,8 @@ import particlelab.world.Detection;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SphereRule;
 import particlelab.world.SurfaceRule;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.World;
 
 /**
@@ -174,6 +176,7 @@ public final class TargetsDemo extends DemoState {
             getSceneNode().attachChild(flash);
         }
         spawnTargets();
+        addStateRecord(targetState());
         setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
     }
 
@@ -499,5 +502,64 @@ public final class TargetsDemo extends DemoState {
         if (paneView != null) {
             WallView.setColor(paneView, paneGhost ? PANE_GHOST : PANE_SOLID);
         }
+    }
+
+    /**
+     * The demo's own state, for the ring: which bodies are the targets and the fragments (by
+     * their place in the world's pool), when each fragment was born, the score and counts.
+     * Read back after the world's, which already brought the bodies back or took them away:
+     * the spheres follow.
+     */
+    private StateRecord targetState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                World world = getWorld();
+                for (int i = 0; i < TARGETS; ++i) {
+                    slab.putInt(targets[i] == null ? -1 : world.getPoolIndex(targets[i]));
+                }
+                for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+                    slab.putInt(fragments[i] == null ? -1 : world.getPoolIndex(fragments[i]));
+                    slab.putDouble(fragmentBorn[i]);
+                }
+                slab.putInt(score);
+                slab.putLong(destroyed);
+                slab.putLong(spawned);
+                slab.putDouble(flashUntil);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                World world = getWorld();
+                for (int i = 0; i < TARGETS; ++i) {
+                    targets[i] = pooled(world, slab.getInt(), TARGET_COLOR);
+                }
+                for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+                    fragments[i] = pooled(world, slab.getInt(), FRAGMENT_COLOR);
+                    fragmentBorn[i] = slab.getDouble();
+                }
+                score = slab.getInt();
+                destroyed = slab.getLong();
+                spawned = slab.getLong();
+                flashUntil = slab.getDouble();
+            }
+        };
+    }
+
+    /** A body of the world's pool by its place, shown in a colour; null for -1. */
+    private Body pooled(World world, int index, ColorRGBA color) {
+        if (index < 0) {
+            return null;
+        }
+        Body body = world.getPooledBody(index);
+        if (views != null && !views.isShown(body)) {
+            views.show(body, color);
+        }
+        return body;
     }
 }
