@@ -111,6 +111,8 @@ public final class BounceDemo extends DemoState {
         other.addStepListener(otherRecorder);
         // The other detection's lane is a second world beside this one, on the same clock.
         addSimulation(other);
+        addStateRecord(recorder);
+        addStateRecord(otherRecorder);
         applyRules();
         sounds = new CollisionSounds(getApplication() == null
                 ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)

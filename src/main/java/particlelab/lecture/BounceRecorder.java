@@ -3,6 +3,8 @@ package particlelab.lecture;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.World;
 
@@ -14,7 +16,7 @@ import particlelab.world.World;
  * leaves it with rebound 0 after one that did too), as in the {@code bounce} command.
  * Heights are of the ball's lowest point above the ground, {@code y − R}. Allocates nothing.
  */
-final class BounceRecorder implements ContactListener, StepListener {
+final class BounceRecorder implements ContactListener, StepListener, StateRecord {
 
     /** The most apexes kept (the rest are not recorded). */
     static final int MAX_APEXES = 64;
@@ -75,6 +77,56 @@ final class BounceRecorder implements ContactListener, StepListener {
         if (impacts > 0 && !resting) {
             apex = Math.max(apex, ball.getPosition().y - ball.getRadius());
         }
+    }
+
+    /** @return the ints of the recorder's state (for the ring) */
+    @Override
+    public int countStateInts() {
+        return MAX_APEXES + 1 + 1 + 1 + 1 + 2 + 1 + 2 + 1 + 1 + 1;
+    }
+
+    /**
+     * Write the recorder's state (apexes, impacts, the hop) for the ring. Allocates nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    @Override
+    public void writeState(StateSlab slab) {
+        for (int i = 0; i < MAX_APEXES; ++i) {
+            slab.putFloat(apexes[i]);
+        }
+        slab.putInt(apexCount);
+        slab.putInt(impacts);
+        slab.putBoolean(resting);
+        slab.putFloat(apex);
+        slab.putDouble(restSeconds);
+        slab.putFloat(lastImpactSpeed);
+        slab.putLong(lastImpactStep);
+        slab.putInt(lastHopSteps);
+        slab.putInt(previousHopSteps);
+        slab.putFloat(lastStepSeconds);
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    @Override
+    public void readState(StateSlab slab) {
+        for (int i = 0; i < MAX_APEXES; ++i) {
+            apexes[i] = slab.getFloat();
+        }
+        apexCount = slab.getInt();
+        impacts = slab.getInt();
+        resting = slab.getBoolean();
+        apex = slab.getFloat();
+        restSeconds = slab.getDouble();
+        lastImpactSpeed = slab.getFloat();
+        lastImpactStep = slab.getLong();
+        lastHopSteps = slab.getInt();
+        previousHopSteps = slab.getInt();
+        lastStepSeconds = slab.getFloat();
     }
 
     /** Forget everything: the ball was dropped again. */

@@ -15,6 +15,8 @@ import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 
 /**
  * Demo 5, HelloAiming: a gun at the origin, a target on the same level at {@code S = 100} m,
@@ -227,6 +229,7 @@ public final class HelloAimingDemo extends DemoState {
                 / (2f * LaunchControl.MAX_G), 5f, 2, 1.1f);
         showExactGhosts();
         frameArcs();
+        addStateRecord(shotState());
     }
 
     @Override
@@ -395,5 +398,44 @@ public final class HelloAimingDemo extends DemoState {
         predictedVx = vx;
         predictedAim = aim;
         predictedG = g;
+    }
+
+    /** The demo's own state, for the ring: the shot in the air and the last one landed. */
+    private StateRecord shotState() {
+        Aim[] aims = Aim.values();
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1 + 1 + 1 + 1 + 2 + 1 + 1 + 1 + 1 + 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putInt(shots);
+                slab.putBoolean(landingRecorded);
+                slab.putInt(landedShot);
+                slab.putFloat(lastLandingX);
+                slab.putDouble(lastFlightSeconds);
+                slab.putFloat(lastShotVx);
+                slab.putInt(lastShotAim.ordinal());
+                slab.putFloat(shotVx);
+                slab.putFloat(shotVy);
+                slab.putInt(shotAim.ordinal());
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                shots = slab.getInt();
+                landingRecorded = slab.getBoolean();
+                landedShot = slab.getInt();
+                lastLandingX = slab.getFloat();
+                lastFlightSeconds = slab.getDouble();
+                lastShotVx = slab.getFloat();
+                lastShotAim = aims[slab.getInt()];
+                shotVx = slab.getFloat();
+                shotVy = slab.getFloat();
+                shotAim = aims[slab.getInt()];
+            }
+        };
     }
 }

@@ -88,6 +88,12 @@ public final class TargetsDemo extends DemoState {
     private static final ColorRGBA FRAGMENT_COLOR = new ColorRGBA(1f, 0.7f, 0.3f, 1f);
     private static final ColorRGBA PANE_SOLID = new ColorRGBA(0.7f, 0.8f, 1f, 0.9f);
     private static final ColorRGBA PANE_GHOST = new ColorRGBA(0.7f, 0.8f, 1f, 0.25f);
+    /** Every text the three phases' HUD lines show, so a state record names one by place. */
+    private static final String[] STEP_TEXTS = {"none yet",
+        "ignored: friendly (the gun's own platform)", "ignored: the pane is a ghost (G)",
+        "accepted: the shot hits target", "accepted: the shot hits a surface",
+        "impulse off the solid pane", "impulse off the ground, a wall or the ceiling",
+        "impulse off the target", "destroyed target"};
 
     private final ParticleIntegrator still = new ParticleIntegrator();
     private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
@@ -514,7 +520,7 @@ public final class TargetsDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2;
+                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2 + 6;
             }
 
             @Override
@@ -531,6 +537,12 @@ public final class TargetsDemo extends DemoState {
                 slab.putLong(destroyed);
                 slab.putLong(spawned);
                 slab.putDouble(flashUntil);
+                slab.putInt(indexOfText(prologue));
+                slab.putInt(prologueTarget);
+                slab.putInt(indexOfText(resolution));
+                slab.putFloat(resolutionImpulse);
+                slab.putInt(indexOfText(epilogue));
+                slab.putInt(epilogueTarget);
             }
 
             @Override
@@ -547,6 +559,12 @@ public final class TargetsDemo extends DemoState {
                 destroyed = slab.getLong();
                 spawned = slab.getLong();
                 flashUntil = slab.getDouble();
+                prologue = STEP_TEXTS[slab.getInt()];
+                prologueTarget = slab.getInt();
+                resolution = STEP_TEXTS[slab.getInt()];
+                resolutionImpulse = slab.getFloat();
+                epilogue = STEP_TEXTS[slab.getInt()];
+                epilogueTarget = slab.getInt();
             }
         };
     }
@@ -561,5 +579,15 @@ public final class TargetsDemo extends DemoState {
             views.show(body, color);
         }
         return body;
+    }
+
+    /** The place of a phase's text in {@link #STEP_TEXTS}. */
+    private static int indexOfText(String text) {
+        for (int i = 0; i < STEP_TEXTS.length; ++i) {
+            if (STEP_TEXTS[i].equals(text)) {
+                return i;
+            }
+        }
+        throw new IllegalStateException("a phase text missing from STEP_TEXTS: " + text);
     }
 }

@@ -17,7 +17,8 @@ import particlelab.world.StateRing;
  * re-simulates them, and every recorded state (every body's P, V, rotation, the alive set,
  * the particles' and the demo's own counters) has the same bits as the first time; Home N
  * times and End N times reads them back to the live end's state. No tolerance: the step is
- * deterministic, so any difference is state the ring failed to record.
+ * deterministic, so any difference is state the ring failed to record. The demo's own HUD
+ * lines, compared step by step too, catch counters that feed no step but are shown.
  */
 class ReplayDeterminismTest {
 
@@ -34,10 +35,12 @@ class ReplayDeterminismTest {
     @MethodSource("demoNames")
     void stepBackThenReplayGivesTheSameBits(String name) {
         DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
+        StateRing ring = demo.getStateRing();
+        String[] ownLines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
             demo.advancePhysics(H);
+            ownLines[(int) ring.getLastIndex()] = ownLines(demo);
         }
-        StateRing ring = demo.getStateRing();
         long last = ring.getLastIndex();
         assertTrue(last > 0, name + ": no step recorded");
         int[][] first = new int[(int) last + 1][];
@@ -60,6 +63,11 @@ class ReplayDeterminismTest {
                 long index = ring.getLastIndex();
                 assertArrayEquals(first[(int) index], ring.copyEntry(index),
                         name + ": step " + index + " re-simulated after " + steps + " back");
+                // The demo's own HUD lines (its counters, scores, readouts) see state the ring
+                // might have missed.
+                assertEquals(ownLines[(int) index], ownLines(demo),
+                        name + ": HUD at step " + index + " re-simulated after " + steps
+                                + " back");
             }
             assertFalse(demo.isReplaying());
             assertEquals(last, ring.getLastIndex());
@@ -72,6 +80,22 @@ class ReplayDeterminismTest {
         }
         assertFalse(demo.isReplaying(), name + ": End came back to the live end");
         assertArrayEquals(first[(int) last], writeNow(demo), name + ": End read back");
+    }
+
+    /**
+     * The demo's own HUD lines, without those that measure wall time (the fountain's
+     * milliseconds per frame).
+     */
+    private static String ownLines(DemoState demo) {
+        StringBuilder text = new StringBuilder();
+        demo.writeHudLines(text);
+        StringBuilder kept = new StringBuilder();
+        for (String line : text.toString().split("\n")) {
+            if (!line.contains("ms/frame")) {
+                kept.append(line).append('\n');
+            }
+        }
+        return kept.toString();
     }
 
     /** The demo's state now, as one ring entry. */
