@@ -1156,6 +1156,19 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Draw the bodies between their last two physics states, or at the raw steps (what F6
+     * switches).
+     *
+     * @param newInterpolating true to interpolate
+     */
+    public void setInterpolating(boolean newInterpolating) {
+        if (newInterpolating != replay.isInterpolating()) {
+            replay.toggleInterpolation();
+            hudDirty = true;
+        }
+    }
+
+    /**
      * Access the ring of recorded states (steps back, the timeline, the span export).
      *
      * @return the live ring (not null)

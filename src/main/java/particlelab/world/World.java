@@ -155,7 +155,19 @@ public final class World implements SimulationClock.Stepper, StateRecord {
             body = new Body();
             body.poolIndex = pool.size();
         }
-        body.reset(nextBodyId, integrator, position, velocity, massKg, radiusMetres);
+        try {
+            body.reset(nextBodyId, integrator, position, velocity, massKg, radiusMetres);
+        } catch (IllegalArgumentException bad) {
+            if (last < 0) {
+                // A new body refused: it joins the pool as a spare, as a recycled one stays.
+                if (body.poolIndex == pool.size()) {
+                    pool.add(body);
+                }
+                ++poolSize;
+                recycled.add(body);
+            }
+            throw bad;
+        }
         if (last >= 0) {
             recycled.remove(last);
         } else {
