@@ -234,25 +234,19 @@ public final class Fountain implements StateRecord {
      */
     @Override
     public void writeState(StateSlab slab) {
-        for (int i = 0; i < 3 * capacity; ++i) {
-            slab.putFloat(positions[i]);
-            slab.putFloat(velocities[i]);
-        }
+        slab.putFloats(positions, 0, 3 * capacity);
+        slab.putFloats(velocities, 0, 3 * capacity);
         for (int i = 0; i < capacity; ++i) {
             slab.putInt(kinds[i]);
-            slab.putFloat(births[i]);
-            slab.putFloat(fuses[i]);
-            slab.putFloat(fusesLeft[i]);
-            slab.putInt(colours[i]);
         }
+        slab.putFloats(births, 0, capacity);
+        slab.putFloats(fuses, 0, capacity);
+        slab.putFloats(fusesLeft, 0, capacity);
+        slab.putInts(colours, 0, capacity);
         slab.putInt(freeCount);
-        for (int i = 0; i < freeCount; ++i) {
-            slab.putInt(free[i]);
-        }
+        slab.putInts(free, 0, freeCount);
         slab.putInt(fireworkCount);
-        for (int i = 0; i < fireworkCount; ++i) {
-            slab.putInt(fireworkSlots[i]);
-        }
+        slab.putInts(fireworkSlots, 0, fireworkCount);
         for (int i = 0; i < liveByKind.length; ++i) {
             slab.putInt(liveByKind[i]);
         }
@@ -284,25 +278,19 @@ public final class Fountain implements StateRecord {
      */
     @Override
     public void readState(StateSlab slab) {
-        for (int i = 0; i < 3 * capacity; ++i) {
-            positions[i] = slab.getFloat();
-            velocities[i] = slab.getFloat();
-        }
+        slab.getFloats(positions, 0, 3 * capacity);
+        slab.getFloats(velocities, 0, 3 * capacity);
         for (int i = 0; i < capacity; ++i) {
             kinds[i] = (byte) slab.getInt();
-            births[i] = slab.getFloat();
-            fuses[i] = slab.getFloat();
-            fusesLeft[i] = slab.getFloat();
-            colours[i] = slab.getInt();
         }
+        slab.getFloats(births, 0, capacity);
+        slab.getFloats(fuses, 0, capacity);
+        slab.getFloats(fusesLeft, 0, capacity);
+        slab.getInts(colours, 0, capacity);
         freeCount = slab.getInt();
-        for (int i = 0; i < freeCount; ++i) {
-            free[i] = slab.getInt();
-        }
+        slab.getInts(free, 0, freeCount);
         fireworkCount = slab.getInt();
-        for (int i = 0; i < fireworkCount; ++i) {
-            fireworkSlots[i] = slab.getInt();
-        }
+        slab.getInts(fireworkSlots, 0, fireworkCount);
         for (int i = 0; i < liveByKind.length; ++i) {
             liveByKind[i] = slab.getInt();
         }

@@ -126,6 +126,62 @@ public final class StateSlab {
     }
 
     /**
+     * Write a run of floats, as their raw bits: one loop, for a packed batch.
+     *
+     * @param values the array (not null, not modified)
+     * @param from the first index written
+     * @param count how many (&ge;0)
+     */
+    public void putFloats(float[] values, int from, int count) {
+        ensure(count, "wrote more than");
+        for (int i = 0; i < count; ++i) {
+            data[at + i] = Float.floatToRawIntBits(values[from + i]);
+        }
+        at += count;
+    }
+
+    /**
+     * Write a run of ints: one copy, for a packed batch.
+     *
+     * @param values the array (not null, not modified)
+     * @param from the first index written
+     * @param count how many (&ge;0)
+     */
+    public void putInts(int[] values, int from, int count) {
+        ensure(count, "wrote more than");
+        System.arraycopy(values, from, data, at, count);
+        at += count;
+    }
+
+    /**
+     * Read a run of floats written by {@link #putFloats}.
+     *
+     * @param storeResult where to put them (not null, modified)
+     * @param from the first index read into
+     * @param count how many (&ge;0)
+     */
+    public void getFloats(float[] storeResult, int from, int count) {
+        ensure(count, "read more than");
+        for (int i = 0; i < count; ++i) {
+            storeResult[from + i] = Float.intBitsToFloat(data[at + i]);
+        }
+        at += count;
+    }
+
+    /**
+     * Read a run of ints written by {@link #putInts}.
+     *
+     * @param storeResult where to put them (not null, modified)
+     * @param from the first index read into
+     * @param count how many (&ge;0)
+     */
+    public void getInts(int[] storeResult, int from, int count) {
+        ensure(count, "read more than");
+        System.arraycopy(data, at, storeResult, from, count);
+        at += count;
+    }
+
+    /**
      * Read an int.
      *
      * @return the value written there
@@ -202,5 +258,12 @@ public final class StateSlab {
             }
         }
         return storeResult;
+    }
+
+    private void ensure(int count, String what) {
+        if (count < 0 || count > limit - at) {
+            throw new IllegalStateException("a state record " + what + " the "
+                    + (limit - start) + " ints it has (countStateInts), by a run of " + count);
+        }
     }
 }
