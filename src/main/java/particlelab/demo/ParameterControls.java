@@ -222,7 +222,7 @@ final class ParameterControls {
             TextFormat.appendFixed(timelineScratch, replay.getShownSeconds(), 2)
                     .append(" s\n");
         } else {
-            timelineScratch.append("timeline: live (Home or the slider steps back)\n");
+            timelineScratch.append("timeline: live, Home steps back\n");
         }
         replay.appendRing(timelineScratch);
         if (!TextFormat.sameText(timelineText, timelineScratch)) {
