@@ -7,6 +7,7 @@ import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.ParticleView;
 import particlelab.world.Body;
+import particlelab.world.StateSlab;
 
 /**
  * One particle of a demo with everything the base class needs to run and draw it: the
@@ -21,6 +22,12 @@ import particlelab.world.Body;
  * landing is a contact the world's listeners and log see like any other.
  */
 public final class DemoParticle {
+
+    /**
+     * The ints of {@link #writeState}: 3 flags, x, 2 doubles, the launch state, the record's
+     * counters.
+     */
+    static final int STATE_INTS = 3 + 1 + 2 * 2 + 6 + TrajectoryRecord.STATE_INTS;
 
     private String label;
     private final ColorRGBA color;
@@ -287,10 +294,41 @@ public final class DemoParticle {
         particle.position.y = 0f;
     }
 
+    /**
+     * Write the particle's own per-step state (landing, flight time, the export record's
+     * counters) into a state slab: {@link #STATE_INTS} ints. Allocates nothing.
+     */
+    void writeState(StateSlab slab) {
+        slab.putBoolean(steppedThisStep);
+        slab.putBoolean(landedThisStep);
+        slab.putBoolean(landed);
+        slab.putFloat(landingX);
+        slab.putDouble(landingSeconds);
+        slab.putDouble(flightSeconds);
+        slab.putVector(launchPosition);
+        slab.putVector(launchVelocity);
+        record.writeState(slab);
+    }
+
+    /** Read back what {@link #writeState} wrote. */
+    void readState(StateSlab slab) {
+        steppedThisStep = slab.getBoolean();
+        landedThisStep = slab.getBoolean();
+        landed = slab.getBoolean();
+        landingX = slab.getFloat();
+        landingSeconds = slab.getDouble();
+        flightSeconds = slab.getDouble();
+        slab.getVector(launchPosition);
+        slab.getVector(launchVelocity);
+        record.readState(slab);
+    }
+
     /** Put the particle back to its launch state, not held, not landed. */
     void restart() {
         particle.position.set(launchPosition);
         particle.velocity.set(launchVelocity);
+        // A launch is no step: the view draws it where it is, not between two states.
+        body.settle();
         body.setHeld(false);
         landed = false;
         landingX = Float.NaN;

@@ -122,6 +122,10 @@ final class DemoScene {
     private int nearCount;
     /** How many of the near points, the first ones, are trail points (not arrow samples). */
     private int nearTrailCount;
+    /** Where the views draw between the last two physics states (0 to 1; 1: the last). */
+    private float drawBlend = 1f;
+    /** Scratch: a particle's drawn position (m). */
+    private final Vector3f drawn = new Vector3f();
     /**
      * The view's own listener on the demo's world: after each step, every particle the step
      * moved adds its position to its trail. The step itself writes no view.
@@ -395,12 +399,24 @@ final class DemoScene {
     }
 
     /**
-     * Move every particle's view (sphere, label, arrow) to its particle. Allocates nothing.
+     * Choose where the views draw the particles between their last two physics states.
+     *
+     * @param alpha the blend (0: the previous state, 1: the state now)
+     */
+    void setDrawBlend(float alpha) {
+        drawBlend = alpha;
+    }
+
+    /**
+     * Move every particle's view (sphere, label, arrow) to its particle, or between its last
+     * two states ({@link #setDrawBlend}). Allocates nothing.
      */
     void updateViews() {
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
-            particle.view.update(particle.getParticle().position,
+            // Drawn between the last two physics states (the replay's blend); the arrow is
+            // the physics velocity.
+            particle.view.update(particle.getBody().copyDrawnPosition(drawBlend, drawn),
                     particle.getParticle().velocity);
         }
         if (laidOut) {

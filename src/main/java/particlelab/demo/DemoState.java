@@ -27,6 +27,9 @@ import particlelab.world.Contact;
 import particlelab.world.ContactListener;
 import particlelab.world.Detection;
 import particlelab.world.ScriptedResponse;
+import particlelab.world.StateRecord;
+import particlelab.world.StateRing;
+import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
 import particlelab.world.World;
@@ -117,6 +120,58 @@ public abstract class DemoState extends BaseAppState {
     private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
     /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
     private final FrameTimes physicsTimes = new FrameTimes();
+    // ------------------------------------ the state ring: step back, replay, interpolation --
+    /** What a demo declared as its own state, and the simulations beside that have one. */
+    private final List<StateRecord> stateRecords = new ArrayList<>();
+    /**
+     * The demo's whole state, one ring entry: t and each particle's P and V first (what the
+     * export of the recorded span reads), then the world, each particle's own counters, and
+     * the declared records in the order declared.
+     */
+    private final StateRecord wholeState = new StateRecord() {
+        @Override
+        public int countStateInts() {
+            int ints = 2 + particles.size() * (6 + DemoParticle.STATE_INTS)
+                    + world.countStateInts();
+            for (int i = 0; i < stateRecords.size(); ++i) {
+                ints += stateRecords.get(i).countStateInts();
+            }
+            return ints;
+        }
+
+        @Override
+        public void writeState(StateSlab slab) {
+            slab.putDouble(world.getTimeSeconds());
+            for (int i = 0; i < particles.size(); ++i) {
+                slab.putVector(particles.get(i).getParticle().position);
+                slab.putVector(particles.get(i).getParticle().velocity);
+            }
+            world.writeState(slab);
+            for (int i = 0; i < particles.size(); ++i) {
+                particles.get(i).writeState(slab);
+            }
+            for (int i = 0; i < stateRecords.size(); ++i) {
+                stateRecords.get(i).writeState(slab);
+            }
+        }
+
+        @Override
+        public void readState(StateSlab slab) {
+            slab.getDouble();
+            for (int i = 0; i < 6 * particles.size(); ++i) {
+                slab.getFloat();
+            }
+            world.readState(slab);
+            for (int i = 0; i < particles.size(); ++i) {
+                particles.get(i).readState(slab);
+            }
+            for (int i = 0; i < stateRecords.size(); ++i) {
+                stateRecords.get(i).readState(slab);
+            }
+        }
+    };
+    private final Replay replay = new Replay(new StateRing(), wholeState, clock, world,
+            particles);
     private final StepListener stepListener = new StepListener() {
         @Override
         public void beforeStep(World stepping, float stepSeconds) {
@@ -217,6 +272,8 @@ public abstract class DemoState extends BaseAppState {
         world.addStepListener(stepListener);
         world.addContactListener(contactPause);
         hudWriter.setGhosts(ghosts);
+        hudWriter.setReplay(replay);
+        parameterControls.setReplay(replay);
     }
 
     // ---------------------------------------------------------------- hooks for a demo ----
@@ -416,6 +473,37 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("simulation must be a stepper, but was null");
         }
         simulations.add(simulation);
+        if (simulation instanceof StateRecord) {
+            // A second world: its state goes into the ring with the demo's own.
+            stateRecords.add((StateRecord) simulation);
+        }
+    }
+
+    /**
+     * Declare state of the demo's own that its steps change and its next step reads (impact
+     * counts, kept-shot records, a recorder, a batch beside the world), so a step back and a
+     * replay give the same bits: the ring records it after every step with the world's
+     * (see {@code Replay}). Call in {@link #createScene()}.
+     *
+     * @param record writes and reads the state (not null)
+     */
+    protected void addStateRecord(StateRecord record) {
+        if (record == null) {
+            throw new IllegalArgumentException("state record must not be null");
+        }
+        stateRecords.add(record);
+    }
+
+    /**
+     * Return the blend the views draw with this frame: {@code α = leftover / h} between the
+     * last two physics states, or 1 (the physics state) with interpolation off, in raw tpf,
+     * paused or while replaying. For a demo that draws bodies of its own
+     * ({@link particlelab.world.Body#copyDrawnPosition}).
+     *
+     * @return α (0 to 1)
+     */
+    protected float getDrawBlend() {
+        return replay.getFrameBlend();
     }
 
     /**
@@ -452,6 +540,7 @@ public abstract class DemoState extends BaseAppState {
         scene.restartTrail(particle);
         ghosts.restart(particles.indexOf(particle));
         frameLaunches();
+        replay.stateChanged();
         hudDirty = true;
     }
 
@@ -846,6 +935,7 @@ public abstract class DemoState extends BaseAppState {
         }
         ghosts.restartAll();
         clock.reset();
+        replay.clear();
         warnings.clear();
         contactPause.restart();
         onRestart();
@@ -928,6 +1018,7 @@ public abstract class DemoState extends BaseAppState {
         advancePhysics(tpf);
         afterFrame();
         world.getImpacts().clear();
+        scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
         scene.updateViews();
         ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
         warnings.age(tpf);
@@ -1003,6 +1094,101 @@ public abstract class DemoState extends BaseAppState {
     /** @return the lines shown after the demo's own, or null if none */
     public HudNote getNote() {
         return note;
+    }
+
+    // ------------------------------------------ step back, replay, timeline (issue 21) ----
+
+    /**
+     * Step back one recorded step: the ring's previous state is put back and the clock
+     * paused. Allocates nothing.
+     *
+     * @return false if the ring holds no earlier step
+     */
+    public boolean stepBack() {
+        ensureScene();
+        boolean done = replay.stepBack();
+        if (!done) {
+            showNotice("no earlier step recorded (the ring starts at the last reset)");
+        }
+        hudDirty = true;
+        return done;
+    }
+
+    /**
+     * Step forward one step: the ring's next state while behind the live end, else a new
+     * step of h like N. Allocates nothing.
+     */
+    public void stepForward() {
+        ensureScene();
+        if (!replay.stepForward()) {
+            singleStep();
+        }
+        hudDirty = true;
+    }
+
+    /**
+     * Show a recorded step by its place on the timeline, pausing first (the panel's slider).
+     *
+     * @param fraction 0 for the oldest step the ring holds, 1 for the newest (clamped)
+     */
+    public void scrubTo(double fraction) {
+        ensureScene();
+        replay.scrub(fraction);
+        hudDirty = true;
+    }
+
+    /**
+     * Test whether a recorded step, not the live end, is shown.
+     *
+     * @return true while behind the live end
+     */
+    public boolean isReplaying() {
+        return replay.isBehind();
+    }
+
+    /**
+     * Test whether the views blend the last two physics states (F6 switches).
+     *
+     * @return true if interpolating
+     */
+    public boolean isInterpolating() {
+        return replay.isInterpolating();
+    }
+
+    /**
+     * Draw the bodies between their last two physics states, or at the raw steps (what F6
+     * switches).
+     *
+     * @param newInterpolating true to interpolate
+     */
+    public void setInterpolating(boolean newInterpolating) {
+        if (newInterpolating != replay.isInterpolating()) {
+            replay.toggleInterpolation();
+            hudDirty = true;
+        }
+    }
+
+    /**
+     * Access the ring of recorded states (steps back, the timeline, the span export).
+     *
+     * @return the live ring (not null)
+     */
+    public StateRing getStateRing() {
+        return replay.getRing();
+    }
+
+    /**
+     * Return the ring entry shown: the newest while live.
+     *
+     * @return the entry's number
+     */
+    public long getShownStep() {
+        return replay.getShownIndex();
+    }
+
+    /** @return the demo's replay: the ring, the step shown, the blend (for this package) */
+    Replay getReplay() {
+        return replay;
     }
 
     // ------------------------------------------------------------- framework overrides ----
@@ -1106,6 +1292,7 @@ public abstract class DemoState extends BaseAppState {
                 () -> clock.setPaused(!clock.isPaused())).withSummary("pause"));
         KeyBinding step = keys.addShared(new KeyBinding(KeyInput.KEY_N, "N",
                 "single step of h (pauses first)", this::singleStep).withSummary("step"));
+        declareReplayKeys();
         KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
                 "reset: launch again, reframe the camera", this::restartAndReframe)
                 .withSummary("reset"));
@@ -1148,6 +1335,25 @@ public abstract class DemoState extends BaseAppState {
         }
         hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
         parameterControls.declareKeys(keys, this::relayOutPanel);
+    }
+
+    /**
+     * The replay's keys: Home steps back one recorded step, End forward (a new step at the
+     * live end), F6 switches the interpolated drawing off and on.
+     */
+    private void declareReplayKeys() {
+        keys.addShared(new KeyBinding(KeyInput.KEY_HOME, "Home",
+                "step back one recorded step (pauses first; Space or N then go on from there"
+                        + " and drop the later steps)", this::stepBack));
+        keys.addShared(new KeyBinding(KeyInput.KEY_END, "End",
+                "step forward one recorded step (at the live end: a new step, like N)",
+                this::stepForward));
+        keys.addShared(new KeyBinding(KeyInput.KEY_F6, "F6",
+                "drawing: interpolated between the last two steps <-> the raw steps",
+                () -> {
+                    replay.toggleInterpolation();
+                    hudDirty = true;
+                }));
     }
 
     /** @return the parameters' panel and kept shots (for tests of this package) */
@@ -1270,9 +1476,13 @@ public abstract class DemoState extends BaseAppState {
         if (restartRequested) {
             return;
         }
+        replay.beforeStep();
         world.step(stepSeconds);
         for (int i = 0; i < simulations.size(); ++i) {
             simulations.get(i).step(stepSeconds);
+        }
+        if (!restartRequested) {
+            replay.afterStep(stepSeconds);
         }
     }
 

@@ -34,6 +34,8 @@ final class HudWriter {
     private float noticeAgeSeconds;
     /** The demo's exact ghosts, which add to the particle lines (null: none). */
     private ExactGhosts ghosts;
+    /** Says what is drawn and where the replay is, on the stepping line (null: nothing). */
+    private Replay replay;
     /** The demo's warning line, which the stability line agrees with (null: none). */
     private StepWarnings warnings;
     /** The pause at the next contact, whose line follows the time line (null: none). */
@@ -48,6 +50,15 @@ final class HudWriter {
     HudWriter(SimulationClock clock, List<DemoParticle> particles) {
         this.clock = clock;
         this.particles = particles;
+    }
+
+    /**
+     * Say on the stepping line what is drawn (interpolated or raw) and where the replay is.
+     *
+     * @param newReplay the demo's replay (not null)
+     */
+    void setReplay(Replay newReplay) {
+        replay = newReplay;
     }
 
     /**
@@ -282,6 +293,9 @@ final class HudWriter {
             text.append("raw tpf, last h = ");
             TextFormat.appendFixed(text, clock.getCurrentStepSeconds() * 1000f, 1)
                     .append(" ms");
+        }
+        if (replay != null) {
+            replay.appendHudText(text);
         }
         text.append('\n');
     }

@@ -8,6 +8,8 @@ import java.util.List;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudLayout;
 import particlelab.view.ParameterPanel;
+import particlelab.view.TextFormat;
+import particlelab.world.StateRing;
 
 /**
  * What {@link DemoState} does with a demo's parameters, in one place: declares the shared
@@ -37,6 +39,11 @@ final class ParameterControls {
     private boolean legendDirty = true;
     /** The parameters' version the legend was written for. */
     private int legendVersion = Integer.MIN_VALUE;
+    /** The demo's recorded steps, shown and scrubbed by the timeline (null: no timeline). */
+    private Replay replay;
+    /** The timeline's text, rebuilt only when what it says changed. */
+    private final StringBuilder timelineText = new StringBuilder(128);
+    private final StringBuilder timelineScratch = new StringBuilder(128);
 
     /**
      * Access the parameters.
@@ -108,7 +115,19 @@ final class ParameterControls {
         keptShots.launched(parameters);
         panel = new ParameterPanel(parameters, font, "Parameters  (F2 hides)", labels,
                 actions);
+        if (replay != null) {
+            panel.addTimeline();
+        }
         layout.setPanelWidth(panelVisible ? ParameterPanel.WIDTH_AT_SCALE_ONE : 0f);
+    }
+
+    /**
+     * Give the panel a timeline over the demo's recorded steps. Call before {@link #build}.
+     *
+     * @param newReplay the demo's replay (not null)
+     */
+    void setReplay(Replay newReplay) {
+        replay = newReplay;
     }
 
     /**
@@ -176,8 +195,41 @@ final class ParameterControls {
             keptShots.formatLegend(legend, parameters);
             panel.setLegend(legend);
         }
+        updateTimeline();
         panel.place(layout.getSidePanel(), layout.getScale());
         panel.refresh();
+    }
+
+    /**
+     * The timeline: a move of its slider shows that recorded step (pausing); otherwise it
+     * follows the step shown. While the clock runs at the live end it says so and stays at
+     * the right end, so its text (a Lemur label, rewritten only on change) stays the same.
+     */
+    private void updateTimeline() {
+        if (replay == null) {
+            return;
+        }
+        double moved = panel.takeTimelineMove();
+        if (!Double.isNaN(moved)) {
+            replay.scrub(moved);
+        }
+        StateRing ring = replay.getRing();
+        timelineScratch.setLength(0);
+        if (replay.isBehind() || replay.isPaused()) {
+            timelineScratch.append("timeline: step ")
+                    .append(replay.getShownIndex() - ring.getFirstIndex()).append(" of ")
+                    .append(Math.max(0, ring.size() - 1)).append(", t = ");
+            TextFormat.appendFixed(timelineScratch, replay.getShownSeconds(), 2)
+                    .append(" s\n");
+        } else {
+            timelineScratch.append("timeline: live, Home steps back\n");
+        }
+        replay.appendRing(timelineScratch);
+        if (!TextFormat.sameText(timelineText, timelineScratch)) {
+            timelineText.setLength(0);
+            timelineText.append(timelineScratch);
+        }
+        panel.setTimeline(timelineText, replay.getFraction());
     }
 
     private void clearShots() {

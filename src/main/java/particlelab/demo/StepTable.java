@@ -2,6 +2,7 @@ package particlelab.demo;
 
 import java.io.IOException;
 import java.io.Writer;
+import particlelab.world.StateSlab;
 
 /**
  * Numbers a demo records for its export where it has no free particle to trace (the rotation
@@ -76,6 +77,28 @@ public final class StepTable {
     /** @return the rows past the capacity that were counted, not kept (&ge;0) */
     public long countDropped() {
         return dropped;
+    }
+
+    /**
+     * Write the table's counters into a state slab (the rows are only appended to by the
+     * steps): 3 ints. For a demo's state record, so a step back forgets the rows after it.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    public void writeState(StateSlab slab) {
+        slab.putInt(size);
+        slab.putLong(dropped);
+    }
+
+    /**
+     * Put back counters {@link #writeState} wrote: the rows after that state's are forgotten.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    public void readState(StateSlab slab) {
+        size = slab.getInt();
+        dropped = slab.getLong();
+        column = -1;
     }
 
     /** Forget every row (a reset). Allocates nothing. */

@@ -8,6 +8,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import particlelab.files.SafeFiles;
+import particlelab.world.StateRing;
 
 /**
  * Writes a demo's trajectories as CSV, one file per particle, {@code FOLDER/<particle>.csv}
@@ -16,6 +17,9 @@ import particlelab.files.SafeFiles;
  * preset, left out of the HUD) is left out here too; a particle not stepped since its launch
  * gets its one launch row. A demo's own tables ({@link DemoState#collectExportTables}, e.g.
  * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header.
+ * While the demo shows a recorded step (stepped back with Home, or scrubbed on the timeline),
+ * each particle's states over the ring's whole recorded span follow its own file, as
+ * {@code FOLDER/<particle>-recorded.csv}, same header and format.
  *
  * <p>File names are made file-safe ({@link #fileSafeName}): lower case, letters, digits, dots
  * and hyphens only, so {@code "linear drag  F = -0.9 V"} becomes
@@ -114,6 +118,9 @@ public final class TrajectoryExport {
             written.add(new Written(file, record.size(), record.countDropped(),
                     TrajectoryRecord.MAX_ROWS));
         }
+        if (demo.isReplaying()) {
+            writeRecordedSpan(demo, folder, replace, taken, written);
+        }
         List<StepTable> tables = new ArrayList<>();
         demo.collectExportTables(tables);
         for (int i = 0; i < tables.size(); ++i) {
@@ -130,6 +137,48 @@ public final class TrajectoryExport {
                     table.capacity()));
         }
         return written;
+    }
+
+    /**
+     * While a recorded step is shown (stepped back, scrubbed): every particle's states over
+     * the ring's whole span, oldest first, {@code FOLDER/<particle>-recorded.csv}, with the
+     * same header and number format. A row per entry: t is the world's time of the entry
+     * (a launch outside a step is an entry of its own, at the same t as the step before).
+     */
+    private static void writeRecordedSpan(DemoState demo, Path folder, boolean replace,
+            Set<String> taken, List<Written> written) throws IOException {
+        Replay replay = demo.getReplay();
+        StateRing ring = replay.getRing();
+        List<DemoParticle> particles = demo.getParticles();
+        float[] row = new float[1 + 6 * particles.size()];
+        String newline = System.lineSeparator();
+        StringBuilder line = new StringBuilder(128);
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            if (particle.isParked()) {
+                continue;
+            }
+            String base = fileSafeName(particle.getLabel()) + "-recorded";
+            String name = base;
+            for (int copy = 2; !taken.add(name); ++copy) {
+                name = base + "-" + copy;
+            }
+            Path file = folder.resolve(name + ".csv");
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
+                out.write(TrajectoryRecord.HEADER);
+                out.write(newline);
+                for (long entry = ring.getFirstIndex(); entry <= ring.getLastIndex(); ++entry) {
+                    replay.copyRow(entry, row);
+                    line.setLength(0);
+                    line.append(row[0]);
+                    for (int k = 0; k < 6; ++k) {
+                        line.append(',').append(row[1 + 6 * i + k]);
+                    }
+                    out.append(line.append(newline));
+                }
+            }
+            written.add(new Written(file, ring.size(), 0L, ring.getCapacity()));
+        }
     }
 
     /**

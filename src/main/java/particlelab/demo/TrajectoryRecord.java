@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.util.Arrays;
 import particlelab.physics.Particle;
+import particlelab.world.StateSlab;
 
 /**
  * Every state one particle has had since its launch, kept for the export: one row
@@ -32,6 +33,8 @@ public final class TrajectoryRecord {
     public static final int INITIAL_ROWS = 256;
     /** The most rows a record keeps; later steps are counted, not kept. */
     public static final int MAX_ROWS = 1 << 16;
+    /** The ints of {@link #writeState}. */
+    static final int STATE_INTS = 1 + 2 + 2 + 1 + 2;
     /** Values per row: t, P, V. */
     private static final int ROW_VALUES = 7;
 
@@ -156,6 +159,35 @@ public final class TrajectoryRecord {
             appendCsvRow(row, line).append(newline);
             out.append(line);
         }
+    }
+
+    /**
+     * Write the record's counters (not its rows, which the steps only append to) into a
+     * state slab: {@value #STATE_INTS} ints. Allocates nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    void writeState(StateSlab slab) {
+        slab.putInt(size);
+        slab.putLong(dropped);
+        slab.putDouble(baseSeconds);
+        slab.putFloat(uniformStepSeconds);
+        slab.putLong(uniformSteps);
+    }
+
+    /**
+     * Put back counters {@link #writeState} wrote: the rows after that state's are forgotten.
+     * A state older than the last launch (whose rows were written over since) leaves the
+     * rows it names as they are now.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    void readState(StateSlab slab) {
+        size = slab.getInt();
+        dropped = slab.getLong();
+        baseSeconds = slab.getDouble();
+        uniformStepSeconds = slab.getFloat();
+        uniformSteps = slab.getLong();
     }
 
     /** t after the steps since the last change of h: {@code t_change + n'·h}. */

@@ -164,6 +164,7 @@ public final class BounceDemo extends DemoState {
             recorders[lane] = new BounceRecorder(ball);
             getWorld().addContactListener(recorders[lane]);
             getWorld().addStepListener(recorders[lane]);
+            addStateRecord(recorders[lane]);
         }
         applyResponse();
         sounds = new CollisionSounds(getApplication() == null

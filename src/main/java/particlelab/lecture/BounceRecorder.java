@@ -3,6 +3,8 @@ package particlelab.lecture;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.World;
 
@@ -15,7 +17,7 @@ import particlelab.world.World;
  * Heights are of the ball's lowest point above the ground, {@code y − R}. Each of Bounce's
  * lanes has its own. Allocates nothing.
  */
-final class BounceRecorder implements ContactListener, StepListener {
+final class BounceRecorder implements ContactListener, StepListener, StateRecord {
 
     /** The most apexes kept (the rest are not recorded). */
     static final int MAX_APEXES = 64;
@@ -89,6 +91,62 @@ final class BounceRecorder implements ContactListener, StepListener {
         if (impacts > 0 && !resting) {
             apex = Math.max(apex, ball.getPosition().y - ball.getRadius());
         }
+    }
+
+    /** @return the ints of the recorder's state (for the ring) */
+    @Override
+    public int countStateInts() {
+        return MAX_APEXES + 1 + 1 + 1 + 1 + 2 + 1 + 2 + 1 + 1 + 1 + 3;
+    }
+
+    /**
+     * Write the recorder's state (apexes, impacts, the hop) for the ring. Allocates nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    @Override
+    public void writeState(StateSlab slab) {
+        for (int i = 0; i < MAX_APEXES; ++i) {
+            slab.putFloat(apexes[i]);
+        }
+        slab.putInt(apexCount);
+        slab.putInt(impacts);
+        slab.putBoolean(resting);
+        slab.putFloat(apex);
+        slab.putDouble(restSeconds);
+        slab.putFloat(lastImpactSpeed);
+        slab.putLong(lastImpactStep);
+        slab.putInt(lastHopSteps);
+        slab.putInt(previousHopSteps);
+        slab.putFloat(lastStepSeconds);
+        slab.putFloat(lastReboundSpeed);
+        slab.putFloat(currentStepSeconds);
+        slab.putFloat(impactStepSeconds);
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    @Override
+    public void readState(StateSlab slab) {
+        for (int i = 0; i < MAX_APEXES; ++i) {
+            apexes[i] = slab.getFloat();
+        }
+        apexCount = slab.getInt();
+        impacts = slab.getInt();
+        resting = slab.getBoolean();
+        apex = slab.getFloat();
+        restSeconds = slab.getDouble();
+        lastImpactSpeed = slab.getFloat();
+        lastImpactStep = slab.getLong();
+        lastHopSteps = slab.getInt();
+        previousHopSteps = slab.getInt();
+        lastStepSeconds = slab.getFloat();
+        lastReboundSpeed = slab.getFloat();
+        currentStepSeconds = slab.getFloat();
+        impactStepSeconds = slab.getFloat();
     }
 
     /** Forget everything: the ball was dropped again. */

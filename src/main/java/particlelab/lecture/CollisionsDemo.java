@@ -11,6 +11,8 @@ import particlelab.demo.DemoState;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
@@ -206,6 +208,7 @@ public final class CollisionsDemo extends DemoState {
         }
         setView(X_MIN, X_MAX, Y_MAX, 1f, 2, RADIUS);
         arrange();
+        addStateRecord(impactState());
     }
 
     @Override
@@ -541,5 +544,56 @@ public final class CollisionsDemo extends DemoState {
         body.setLaunch(position, velocity);
         body.setParked(false);
         body.setHeld(false);
+    }
+
+    /**
+     * The demo's own state, for the ring: the latest impact step's readouts and the exit
+     * velocities once recorded.
+     */
+    private StateRecord impactState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 4 * 3 + 1 + 3 + 2 + 5;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putVector(impactMomentumBefore);
+                slab.putVector(impactMomentumAfter);
+                slab.putVector(exitVelocity1);
+                slab.putVector(exitVelocity2);
+                slab.putBoolean(exitRecorded);
+                slab.putFloat(energyBefore);
+                slab.putFloat(stepLoss);
+                slab.putInt(stepContacts);
+                slab.putInt(impactSteps);
+                slab.putInt(impactContacts);
+                slab.putFloat(impactEnergyBefore);
+                slab.putFloat(impactEnergyAfter);
+                slab.putFloat(impactPredictedLoss);
+                slab.putFloat(impactNormalSpeed);
+                slab.putFloat(impactReducedMass);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                slab.getVector(impactMomentumBefore);
+                slab.getVector(impactMomentumAfter);
+                slab.getVector(exitVelocity1);
+                slab.getVector(exitVelocity2);
+                exitRecorded = slab.getBoolean();
+                energyBefore = slab.getFloat();
+                stepLoss = slab.getFloat();
+                stepContacts = slab.getInt();
+                impactSteps = slab.getInt();
+                impactContacts = slab.getInt();
+                impactEnergyBefore = slab.getFloat();
+                impactEnergyAfter = slab.getFloat();
+                impactPredictedLoss = slab.getFloat();
+                impactNormalSpeed = slab.getFloat();
+                impactReducedMass = slab.getFloat();
+            }
+        };
     }
 }

@@ -21,6 +21,8 @@ import particlelab.world.Detection;
 import particlelab.world.ScriptedResponse;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.World;
 
 /**
@@ -234,6 +236,7 @@ public final class FastBulletsDemo extends DemoState {
             getSceneNode().attachChild(impactMark);
         }
         impact.set(Float.NaN, Float.NaN, 0f);
+        addStateRecord(shotState());
         setView(-3f, DISTANCE + 12f, GUN_HEIGHT + 4f, 2f, 5, 0.3f);
         hideArrowsAtStart();
         fire();
@@ -363,5 +366,47 @@ public final class FastBulletsDemo extends DemoState {
             impactMark.setLocalTranslation(point.x, point.y, 0.01f);
             impactMark.setCullHint(Spatial.CullHint.Inherit);
         }
+    }
+
+    /**
+     * The shot's own state, for the ring: where and when it reached the disc's plane, the h
+     * it was fired and stepped with, how long it has been stopped and whether it refires.
+     */
+    private StateRecord shotState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 3 + 2 + 2 + 1 + 1 + 1 + 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putVector(impact);
+                slab.putBoolean(reached);
+                slab.putBoolean(hit);
+                slab.putDouble(arrivalSeconds);
+                slab.putFloat(shotStep);
+                slab.putFloat(worldStep);
+                slab.putFloat(stoppedSeconds);
+                slab.putBoolean(refireDue);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                slab.getVector(impact);
+                reached = slab.getBoolean();
+                hit = slab.getBoolean();
+                arrivalSeconds = slab.getDouble();
+                shotStep = slab.getFloat();
+                worldStep = slab.getFloat();
+                stoppedSeconds = slab.getFloat();
+                refireDue = slab.getBoolean();
+                if (impactMark != null) {
+                    impactMark.setCullHint(reached && hit ? Spatial.CullHint.Inherit
+                            : Spatial.CullHint.Always);
+                    impactMark.setLocalTranslation(impact.x, impact.y, 0.01f);
+                }
+            }
+        };
     }
 }

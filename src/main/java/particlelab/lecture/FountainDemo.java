@@ -11,6 +11,8 @@ import particlelab.view.PointCloudView;
 import particlelab.view.TextFormat;
 import particlelab.world.Fountain;
 import particlelab.world.GroundBounce;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 
 /**
  * Demo "fountain": many particles. A fountain of water and a display of fireworks, 10^5
@@ -119,6 +121,8 @@ public final class FountainDemo extends DemoState {
         fountain = new Fountain(particleCount);
         // The packed particles are a simulation beside the world, stepped by the same clock.
         addSimulation(this::stepFountain);
+        addStateRecord(fountain);
+        addStateRecord(countsState());
         waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
                 * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
         if (getApplication() != null) {
@@ -288,5 +292,27 @@ public final class FountainDemo extends DemoState {
         TextFormat.appendFixed(notice, ground.getRestitution(), 1);
         showNotice(notice.toString());
         refreshEquations();
+    }
+
+    /** The demo's own state, for the ring: its clock and its counts table's length. */
+    private StateRecord countsState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 2 + 3;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putDouble(simulatedSeconds);
+                counts.writeState(slab);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                simulatedSeconds = slab.getDouble();
+                counts.readState(slab);
+            }
+        };
     }
 }

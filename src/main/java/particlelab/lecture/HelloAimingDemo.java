@@ -18,6 +18,8 @@ import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 
 /**
  * Demo 5, HelloAiming: a gun at the origin, a target on the same level at {@code S = 100} m,
@@ -325,6 +327,7 @@ public final class HelloAimingDemo extends DemoState {
                 / (2f * LaunchControl.MAX_G), 5f, 2, 1.1f);
         showExactGhosts();
         frameArcs();
+        addStateRecord(shotState());
     }
 
     @Override
@@ -534,5 +537,48 @@ public final class HelloAimingDemo extends DemoState {
                         : Spatial.CullHint.Always);
             }
         }
+    }
+
+    /** The demo's own state, for the ring: the shot in the air and the last ones landed. */
+    private StateRecord shotState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putInt(shots);
+                for (int a = 0; a < AIMS.length; ++a) {
+                    slab.putBoolean(inShot[a]);
+                    slab.putBoolean(landingRecorded[a]);
+                    slab.putInt(landedShot[a]);
+                    slab.putFloat(lastLandingX[a]);
+                    slab.putDouble(lastFlightSeconds[a]);
+                }
+                slab.putInt(shotFiring);
+                slab.putFloat(lastShotVx);
+                slab.putFloat(shotVx);
+                slab.putFloat(shotVy);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                shots = slab.getInt();
+                for (int a = 0; a < AIMS.length; ++a) {
+                    inShot[a] = slab.getBoolean();
+                    landingRecorded[a] = slab.getBoolean();
+                    landedShot[a] = slab.getInt();
+                    lastLandingX[a] = slab.getFloat();
+                    lastFlightSeconds[a] = slab.getDouble();
+                }
+                shotFiring = slab.getInt();
+                lastShotVx = slab.getFloat();
+                shotVx = slab.getFloat();
+                shotVy = slab.getFloat();
+                showFiredBullets();
+            }
+        };
     }
 }

@@ -27,6 +27,8 @@ import particlelab.world.ContactListener;
 import particlelab.world.Detection;
 import particlelab.world.ScriptedResponse;
 import particlelab.world.SurfaceRule;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.World;
 
 /**
@@ -420,6 +422,7 @@ public final class IterativeAimingDemo extends DemoState {
         // The grid reaches the highest apex a round may need; the camera frames the round's.
         setView(-4f, TARGET_DISTANCE + 14f, MAX_VIEW_TOP, 4f, 5, 0.7f);
         hideArrowsAtStart();
+        addStateRecord(roundState());
         startRound();
     }
 
@@ -778,5 +781,49 @@ public final class IterativeAimingDemo extends DemoState {
             }
         }
         return -1;
+    }
+
+    /**
+     * The round's own state, for the ring: the shots fired and landed, each shot's flown
+     * landing, which shot each slot shows and what the next step does. The plan is the
+     * aimer's, made at the round's start, and not changed by a step.
+     */
+    private StateRecord roundState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1 + 1 + 1 + 1 + 2 * MAX_SHOTS + VISIBLE_SHOTS;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putFloat(pendingLandingX);
+                slab.putBoolean(nextShotDue);
+                slab.putInt(fired);
+                slab.putInt(landed);
+                for (int i = 0; i < MAX_SHOTS; ++i) {
+                    slab.putDouble(flownLanding[i]);
+                }
+                for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+                    slab.putInt(slotShot[i]);
+                }
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                pendingLandingX = slab.getFloat();
+                nextShotDue = slab.getBoolean();
+                fired = slab.getInt();
+                landed = slab.getInt();
+                for (int i = 0; i < MAX_SHOTS; ++i) {
+                    flownLanding[i] = slab.getDouble();
+                }
+                for (int i = 0; i < VISIBLE_SHOTS; ++i) {
+                    slotShot[i] = slab.getInt();
+                    labelChanged[i] = true;
+                }
+                tintsChanged = true;
+            }
+        };
     }
 }

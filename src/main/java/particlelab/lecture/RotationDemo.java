@@ -21,6 +21,8 @@ import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.SpinAngle;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.Body;
 
 /**
@@ -234,6 +236,7 @@ public final class RotationDemo extends DemoState {
             addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
         }
         setView(0f, FIRST_X * 2f + SPACING_X * (METHODS.length - 1), 5.2f, 1f, 5, 0.3f);
+        addStateRecord(runState());
     }
 
     @Override
@@ -421,5 +424,51 @@ public final class RotationDemo extends DemoState {
 
     private static double square(double x) {
         return x * x;
+    }
+
+    /**
+     * The demo's own state, for the ring: the run's clock, each box's time and spin angle,
+     * the plain box's restarts and each box's table's length.
+     */
+    private StateRecord runState() {
+        double[] angles = new double[SpinAngle.STATE_DOUBLES];
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 2 + 2 + 2 + 1 + METHODS.length * (2 + 2 * SpinAngle.STATE_DOUBLES + 3);
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putDouble(runSeconds);
+                slab.putDouble(simulatedSeconds);
+                slab.putDouble(plainRestartSeconds);
+                slab.putInt(plainRestarts);
+                for (int i = 0; i < METHODS.length; ++i) {
+                    slab.putDouble(elapsedSeconds[i]);
+                    spinAngles[i].copyState(angles, 0);
+                    for (int k = 0; k < angles.length; ++k) {
+                        slab.putDouble(angles[k]);
+                    }
+                    tables[i].writeState(slab);
+                }
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                runSeconds = slab.getDouble();
+                simulatedSeconds = slab.getDouble();
+                plainRestartSeconds = slab.getDouble();
+                plainRestarts = slab.getInt();
+                for (int i = 0; i < METHODS.length; ++i) {
+                    elapsedSeconds[i] = slab.getDouble();
+                    for (int k = 0; k < angles.length; ++k) {
+                        angles[k] = slab.getDouble();
+                    }
+                    spinAngles[i].setState(angles, 0);
+                    tables[i].readState(slab);
+                }
+            }
+        };
     }
 }

@@ -19,6 +19,8 @@ import particlelab.view.BoxView;
 import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
 import particlelab.view.Trail;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.World;
 
@@ -208,6 +210,7 @@ public final class SpinThrowDemo extends DemoState {
         // The sphere's radius is the box's half diagonal, so the centre's label keeps clear
         // of the turning box; the sphere itself is hidden inside the box (initialize).
         setView(-1f, 14f, 7f, 1f, 5, 0.5f * SIDES.length());
+        addStateRecord(spinState());
     }
 
     @Override
@@ -349,5 +352,29 @@ public final class SpinThrowDemo extends DemoState {
             cornerTrail.refresh();
             formulaTrail.refresh();
         }
+    }
+
+    /** The demo's own state, for the ring: the angle measured so far and for how long. */
+    private StateRecord spinState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 3 * 2;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putDouble(measuredAngle);
+                slab.putDouble(lastAtan);
+                slab.putDouble(spinSeconds);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                measuredAngle = slab.getDouble();
+                lastAtan = slab.getDouble();
+                spinSeconds = slab.getDouble();
+            }
+        };
     }
 }

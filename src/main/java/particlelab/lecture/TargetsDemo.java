@@ -26,6 +26,8 @@ import particlelab.world.Detection;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SphereRule;
 import particlelab.world.SurfaceRule;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.World;
 
 /**
@@ -86,6 +88,12 @@ public final class TargetsDemo extends DemoState {
     private static final ColorRGBA FRAGMENT_COLOR = new ColorRGBA(1f, 0.7f, 0.3f, 1f);
     private static final ColorRGBA PANE_SOLID = new ColorRGBA(0.7f, 0.8f, 1f, 0.9f);
     private static final ColorRGBA PANE_GHOST = new ColorRGBA(0.7f, 0.8f, 1f, 0.25f);
+    /** Every text the three phases' HUD lines show, so a state record names one by place. */
+    private static final String[] STEP_TEXTS = {"none yet",
+        "ignored: friendly (the gun's own platform)", "ignored: the pane is a ghost (G)",
+        "accepted: the shot hits target", "accepted: the shot hits a surface",
+        "impulse off the solid pane", "impulse off the ground, a wall or the ceiling",
+        "impulse off the target", "destroyed target"};
 
     private final ParticleIntegrator still = new ParticleIntegrator();
     private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
@@ -174,6 +182,7 @@ public final class TargetsDemo extends DemoState {
             getSceneNode().attachChild(flash);
         }
         spawnTargets();
+        addStateRecord(targetState());
         setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
     }
 
@@ -241,7 +250,7 @@ public final class TargetsDemo extends DemoState {
             spawnTargets();
         }
         if (views != null) {
-            views.update();
+            views.update(getDrawBlend());
         }
     }
 
@@ -499,5 +508,86 @@ public final class TargetsDemo extends DemoState {
         if (paneView != null) {
             WallView.setColor(paneView, paneGhost ? PANE_GHOST : PANE_SOLID);
         }
+    }
+
+    /**
+     * The demo's own state, for the ring: which bodies are the targets and the fragments (by
+     * their place in the world's pool), when each fragment was born, the score and counts.
+     * Read back after the world's, which already brought the bodies back or took them away:
+     * the spheres follow.
+     */
+    private StateRecord targetState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2 + 6;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                World world = getWorld();
+                for (int i = 0; i < TARGETS; ++i) {
+                    slab.putInt(targets[i] == null ? -1 : world.getPoolIndex(targets[i]));
+                }
+                for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+                    slab.putInt(fragments[i] == null ? -1 : world.getPoolIndex(fragments[i]));
+                    slab.putDouble(fragmentBorn[i]);
+                }
+                slab.putInt(score);
+                slab.putLong(destroyed);
+                slab.putLong(spawned);
+                slab.putDouble(flashUntil);
+                slab.putInt(indexOfText(prologue));
+                slab.putInt(prologueTarget);
+                slab.putInt(indexOfText(resolution));
+                slab.putFloat(resolutionImpulse);
+                slab.putInt(indexOfText(epilogue));
+                slab.putInt(epilogueTarget);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                World world = getWorld();
+                for (int i = 0; i < TARGETS; ++i) {
+                    targets[i] = pooled(world, slab.getInt(), TARGET_COLOR);
+                }
+                for (int i = 0; i < MAX_FRAGMENTS; ++i) {
+                    fragments[i] = pooled(world, slab.getInt(), FRAGMENT_COLOR);
+                    fragmentBorn[i] = slab.getDouble();
+                }
+                score = slab.getInt();
+                destroyed = slab.getLong();
+                spawned = slab.getLong();
+                flashUntil = slab.getDouble();
+                prologue = STEP_TEXTS[slab.getInt()];
+                prologueTarget = slab.getInt();
+                resolution = STEP_TEXTS[slab.getInt()];
+                resolutionImpulse = slab.getFloat();
+                epilogue = STEP_TEXTS[slab.getInt()];
+                epilogueTarget = slab.getInt();
+            }
+        };
+    }
+
+    /** A body of the world's pool by its place, shown in a colour; null for -1. */
+    private Body pooled(World world, int index, ColorRGBA color) {
+        if (index < 0) {
+            return null;
+        }
+        Body body = world.getPooledBody(index);
+        if (views != null && !views.isShown(body)) {
+            views.show(body, color);
+        }
+        return body;
+    }
+
+    /** The place of a phase's text in {@link #STEP_TEXTS}. */
+    private static int indexOfText(String text) {
+        for (int i = 0; i < STEP_TEXTS.length; ++i) {
+            if (STEP_TEXTS[i].equals(text)) {
+                return i;
+            }
+        }
+        throw new IllegalStateException("a phase text missing from STEP_TEXTS: " + text);
     }
 }

@@ -17,6 +17,8 @@ import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.view.BoxView;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.Body;
 
 /**
@@ -224,6 +226,7 @@ public final class TennisRacketDemo extends DemoState {
         resetBodies();
         // Both slots with room for a plate's half diagonal, enlarged by the perspective.
         setView(-2f * SLOT_X, 2f * SLOT_X, 5.8f, 1f, 2, 0.3f);
+        addStateRecord(flipState());
     }
 
     @Override
@@ -378,5 +381,39 @@ public final class TennisRacketDemo extends DemoState {
                 views[i].update(bodies[i].orientation, centres[i]);
             }
         }
+    }
+
+    /** The demo's own state, for the ring: the clock and each plate's flips so far. */
+    private StateRecord flipState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 2 + METHODS.length * (2 + 2 * FLIPS_KEPT);
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putDouble(elapsedSeconds);
+                for (int i = 0; i < METHODS.length; ++i) {
+                    slab.putInt(flips[i]);
+                    slab.putBoolean(positiveWy[i]);
+                    for (int k = 0; k < FLIPS_KEPT; ++k) {
+                        slab.putDouble(flipTimes[i][k]);
+                    }
+                }
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                elapsedSeconds = slab.getDouble();
+                for (int i = 0; i < METHODS.length; ++i) {
+                    flips[i] = slab.getInt();
+                    positiveWy[i] = slab.getBoolean();
+                    for (int k = 0; k < FLIPS_KEPT; ++k) {
+                        flipTimes[i][k] = slab.getDouble();
+                    }
+                }
+            }
+        };
     }
 }

@@ -3,7 +3,6 @@ package particlelab.lecture;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import java.util.Random;
 import particlelab.collision.ThinWall;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -16,6 +15,9 @@ import particlelab.world.ContactListener;
 import particlelab.world.Detection;
 import particlelab.world.ImpulseResponse;
 import particlelab.world.SurfaceRule;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
+import particlelab.world.StepRandom;
 import particlelab.world.World;
 
 /**
@@ -58,7 +60,7 @@ public final class TunnellingDemo extends DemoState {
     private static final int SWEPT_GROUP = 4;
 
     private final ThinWall wall = new ThinWall(new Vector3f(-1f, 0f, 0f), -WALL_X, THICKNESS);
-    private final Random phases = new Random(SEED);
+    private final StepRandom phases = new StepRandom(SEED);
     private final Lane overlap = new Lane();
     private final Lane swept = new Lane();
     private final Vector3f launchPosition = new Vector3f();
@@ -114,6 +116,7 @@ public final class TunnellingDemo extends DemoState {
         }
         setView(-1f, 12f, 4.5f, 1f, 2, RADIUS);
         hideArrowsAtStart();
+        addStateRecord(laneState());
         fire();
     }
 
@@ -277,5 +280,48 @@ public final class TunnellingDemo extends DemoState {
         lane.ball.setLaunch(launchPosition, launchVelocity);
         launch(lane.ball, launchVelocity);
         lane.done = false;
+    }
+
+    /**
+     * The demo's own state, for the ring: the random phase's sequence, the lanes' counts
+     * and whether the next shot is due.
+     */
+    private StateRecord laneState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 2 + 1 + 1 + 2 * 3;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putLong(phases.getState());
+                slab.putFloat(lastStepSeconds);
+                slab.putBoolean(nextShotDue);
+                writeLane(slab, overlap);
+                writeLane(slab, swept);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                phases.setState(slab.getLong());
+                lastStepSeconds = slab.getFloat();
+                nextShotDue = slab.getBoolean();
+                readLane(slab, overlap);
+                readLane(slab, swept);
+            }
+        };
+    }
+
+    private static void writeLane(StateSlab slab, Lane lane) {
+        slab.putInt(lane.shots);
+        slab.putInt(lane.hits);
+        slab.putBoolean(lane.done);
+    }
+
+    private static void readLane(StateSlab slab, Lane lane) {
+        lane.shots = slab.getInt();
+        lane.hits = slab.getInt();
+        lane.done = slab.getBoolean();
     }
 }

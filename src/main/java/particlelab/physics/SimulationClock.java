@@ -412,6 +412,20 @@ public final class SimulationClock {
         }
     }
 
+    /**
+     * Put the simulated time back to a recorded step's (a step back or a replay), keeping
+     * everything else: the leftover, the dropped time, the mode, the scale and the pause.
+     *
+     * @param seconds the time of the step shown (in seconds, finite, &ge;0)
+     */
+    public void restoreSimulatedSeconds(double seconds) {
+        if (!(seconds >= 0.0) || Double.isInfinite(seconds)) {
+            throw new IllegalArgumentException("simulated time (s) must be finite and >= 0,"
+                    + " but was " + seconds);
+        }
+        simulatedSeconds = seconds;
+    }
+
     private int takeSteps(float tpf, Stepper stepper) {
         if (paused) {
             if (singleStepRequested) {

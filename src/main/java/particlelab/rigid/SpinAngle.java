@@ -37,6 +37,9 @@ public final class SpinAngle {
     /** The angle accumulated since {@link #start} (in radians). */
     private double accumulatedRadians;
 
+    /** The doubles of {@link #copyState}: the last rotation, the axis, the angle. */
+    public static final int STATE_DOUBLES = 9 + 3 + 1;
+
     /**
      * Create a tracker about the z axis, starting from the identity.
      */
@@ -67,6 +70,35 @@ public final class SpinAngle {
         axisY = omega.y * inverse;
         axisZ = omega.z * inverse;
         accumulatedRadians = 0.0;
+    }
+
+    /**
+     * Copy the tracker's state (the last rotation seen, the axis, the angle) into an array,
+     * for a demo's record of its steps. Allocates nothing.
+     *
+     * @param storeResult storage ({@link #STATE_DOUBLES} from offset, not null, modified)
+     * @param offset where to start
+     */
+    public void copyState(double[] storeResult, int offset) {
+        System.arraycopy(previous, 0, storeResult, offset, 9);
+        storeResult[offset + 9] = axisX;
+        storeResult[offset + 10] = axisY;
+        storeResult[offset + 11] = axisZ;
+        storeResult[offset + 12] = accumulatedRadians;
+    }
+
+    /**
+     * Put back a state {@link #copyState} copied.
+     *
+     * @param state the state ({@link #STATE_DOUBLES} from offset, not null, not modified)
+     * @param offset where it starts
+     */
+    public void setState(double[] state, int offset) {
+        System.arraycopy(state, offset, previous, 0, 9);
+        axisX = state[offset + 9];
+        axisY = state[offset + 10];
+        axisZ = state[offset + 11];
+        accumulatedRadians = state[offset + 12];
     }
 
     /**

@@ -3,6 +3,7 @@ package particlelab.view;
 import com.jme3.asset.AssetManager;
 import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
@@ -27,6 +28,8 @@ public final class BodyViews implements BodyListener {
     private final Geometry[] spheres;
     private final Body[] bodies;
     private int shown;
+    /** Scratch: a body's drawn position (m). */
+    private final Vector3f drawn = new Vector3f();
 
     /**
      * Create the pool.
@@ -89,9 +92,19 @@ public final class BodyViews implements BodyListener {
 
     /** Move every shown sphere to its body. Allocates nothing. */
     public void update() {
+        update(1f);
+    }
+
+    /**
+     * Move every shown sphere to its body, drawn between its last two physics states.
+     * Allocates nothing.
+     *
+     * @param alpha the blend ({@link Body#copyDrawnPosition}: 0 the previous state, 1 now)
+     */
+    public void update(float alpha) {
         for (int i = 0; i < bodies.length; ++i) {
             if (bodies[i] != null) {
-                spheres[i].setLocalTranslation(bodies[i].getPosition());
+                spheres[i].setLocalTranslation(bodies[i].copyDrawnPosition(alpha, drawn));
             }
         }
     }

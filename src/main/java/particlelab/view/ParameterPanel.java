@@ -74,6 +74,10 @@ public final class ParameterPanel {
     private boolean placeAgain = true;
     private boolean legendChanged;
     private final StringBuilder legendText = new StringBuilder(256);
+    /** The timeline's text and slider ({@link #addTimeline}), or null. */
+    private Label timelineLabel;
+    private Slider timeline;
+    private VersionedReference<Double> timelineReference;
 
     /**
      * Build the panel. Call after {@link #initializeLemur} ran for the application.
@@ -163,6 +167,81 @@ public final class ParameterPanel {
         }
     }
 
+    /**
+     * Add the timeline under the legend: a line of text and a slider over the recorded
+     * steps. Call once, before the panel is first placed.
+     */
+    public void addTimeline() {
+        timelineLabel = text(" ", TEXT_COLOR);
+        container.addChild(timelineLabel);
+        timeline = new Slider(new DefaultRangedValueModel(0.0, 1.0, 1.0), Axis.X);
+        timeline.setBackground(new QuadBackgroundComponent(TRACK_COLOR));
+        timeline.getThumbButton().setBackground(new QuadBackgroundComponent(SELECTED_COLOR));
+        timeline.getThumbButton().setText("|");
+        timeline.getThumbButton().setFont(font);
+        timeline.getThumbButton().setColor(PANEL_COLOR);
+        timeline.getIncrementButton().setText(">");
+        timeline.getDecrementButton().setText("<");
+        for (Button end : new Button[] {timeline.getIncrementButton(),
+            timeline.getDecrementButton()}) {
+            end.setBackground(new QuadBackgroundComponent(BUTTON_COLOR));
+            end.setFont(font);
+            end.setColor(TEXT_COLOR);
+            buttons.add(end);
+        }
+        buttons.add(timeline.getThumbButton());
+        timelineReference = timeline.getModel().createReference();
+        container.addChild(timeline);
+        placeAgain = true;
+    }
+
+    /**
+     * Show the timeline's text and place; what is set here is no move of the mouse's.
+     * Allocates only when the text changed.
+     *
+     * @param text the line above the slider (not null)
+     * @param fraction the slider's place, 0 (the oldest step) to 1 (the newest)
+     */
+    public void setTimeline(CharSequence text, double fraction) {
+        if (timeline == null) {
+            return;
+        }
+        if (!TextFormat.sameText(timelineLabel.getText(), text)) {
+            timelineLabel.setText(text.toString());
+            placeAgain = true;
+        }
+        if (timeline.getModel().getValue() != fraction) {
+            timeline.getModel().setValue(fraction);
+        }
+        timelineReference.update();
+    }
+
+    /**
+     * Return where the mouse moved the timeline's slider since the last call, once.
+     *
+     * @return the place (0 to 1), or NaN if it was not moved
+     */
+    public double takeTimelineMove() {
+        if (timeline == null || !timelineReference.update()) {
+            return Double.NaN;
+        }
+        return timeline.getModel().getValue();
+    }
+
+    /**
+     * Move the timeline's slider, as the mouse does (for tests).
+     *
+     * @param fraction the place, from 0 (left) to 1 (right)
+     */
+    public void dragTimeline(double fraction) {
+        timeline.getModel().setValue(fraction);
+    }
+
+    /** @return the timeline's text as shown (empty without a timeline) */
+    public String getTimelineText() {
+        return timelineLabel == null ? "" : timelineLabel.getText();
+    }
+
     /** @return the live node, to attach to the GUI scene (not null) */
     public Node getNode() {
         return node;
@@ -217,6 +296,11 @@ public final class ParameterPanel {
                 slider.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * hudScale, 0f));
                 slider.getThumbButton().setPreferredSize(new Vector3f(THUMB_WIDTH * hudScale,
                         SLIDER_HEIGHT * hudScale, 0f));
+            }
+            if (timeline != null) {
+                timeline.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * hudScale, 0f));
+                timeline.getThumbButton().setPreferredSize(new Vector3f(
+                        THUMB_WIDTH * hudScale, SLIDER_HEIGHT * hudScale, 0f));
             }
             container.setInsets(new Insets3f(6f * hudScale, 8f * hudScale, 6f * hudScale,
                     8f * hudScale));

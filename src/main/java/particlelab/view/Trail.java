@@ -217,6 +217,17 @@ public final class Trail {
     }
 
     /**
+     * Forget the newest point, if any: a step taken back. Allocates nothing.
+     */
+    public void removeNewest() {
+        if (count > 0) {
+            newest = (newest - 1 + capacity) % capacity;
+            --count;
+            changed = true;
+        }
+    }
+
+    /**
      * Remember a point, dropping the oldest when full.
      *
      * @param point the position (in metres, not null, not modified)

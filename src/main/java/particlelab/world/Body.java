@@ -1,6 +1,7 @@
 package particlelab.world;
 
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Validate;
@@ -30,6 +31,11 @@ public final class Body {
     public static final int DEFAULT_GROUP = 1;
     /** The mask every body starts with: it may touch every group. */
     public static final int ALL_GROUPS = -1;
+    /**
+     * The most ints one body's state takes in a {@link StateSlab}: 4 numbers, 8 vectors, h's
+     * fraction, 5 flags and filters, 2 doubles, 2 flags, and a rotation part's R, ω, τ.
+     */
+    static final int STATE_INTS = 4 + 8 * 3 + 1 + 5 + 2 * 2 + 2 + 9 + 3 + 3;
 
     final Particle particle = new Particle();
     /** P at the start of the current (or last) step (in metres). */
@@ -59,6 +65,8 @@ public final class Body {
     /** Steps {@link #rigidBody}'s ω and R after each translation step (null with it). */
     private RotationIntegrator rotationIntegrator;
     private int id;
+    /** Where the world's pool keeps this body (its place in creation order). */
+    int poolIndex;
     boolean inWorld;
     boolean removalPending;
 
@@ -99,8 +107,12 @@ public final class Body {
         settle();
     }
 
-    /** Make the bookkeeping of the last step describe a body standing where it is. */
-    void settle() {
+    /**
+     * Make the bookkeeping of the last step describe a body standing where it is: after a
+     * launch or a teleport, so a view that interpolates inside the last step draws the body
+     * where it is now.
+     */
+    public void settle() {
         previousPosition.set(particle.position);
         previousVelocity.set(particle.velocity);
         gainedVelocity.zero();
@@ -442,6 +454,113 @@ public final class Body {
 
     void startScript(double worldSeconds) {
         scriptedSinceSeconds = worldSeconds;
+    }
+
+    /**
+     * Write everything a step reads of this body into a slab: {@link #STATE_INTS} ints at
+     * most (see {@link World#writeState}).
+     */
+    void writeState(StateSlab slab, int integratorIndex) {
+        slab.putInt(id);
+        slab.putInt(integratorIndex);
+        slab.putFloat(particle.getMass());
+        slab.putFloat(radiusMetres);
+        slab.putVector(particle.position);
+        slab.putVector(particle.velocity);
+        slab.putVector(previousPosition);
+        slab.putVector(previousVelocity);
+        slab.putVector(gainedVelocity);
+        slab.putVector(sweepStart);
+        slab.putFloat(sweepFraction);
+        slab.putVector(launchPosition);
+        slab.putVector(launchVelocity);
+        slab.putBoolean(held);
+        slab.putBoolean(kinematic);
+        slab.putBoolean(ghost);
+        slab.putInt(group);
+        slab.putInt(mask);
+        slab.putDouble(flightSeconds);
+        slab.putDouble(scriptedSinceSeconds);
+        slab.putBoolean(inWorld);
+        slab.putBoolean(rigidBody != null);
+        if (rigidBody != null) {
+            slab.putMatrix(rigidBody.orientation);
+            slab.putVector(rigidBody.angularVelocity);
+            slab.putVector(rigidBody.torque);
+        }
+    }
+
+    /**
+     * Read back what {@link #writeState} wrote; the rotation part, if written, goes into the
+     * body's current one (rotation parts are given at creation and kept).
+     */
+    void readState(StateSlab slab, List<ParticleIntegrator> integrators) {
+        id = slab.getInt();
+        integrator = integrators.get(slab.getInt());
+        particle.setMass(slab.getFloat());
+        radiusMetres = slab.getFloat();
+        slab.getVector(particle.position);
+        slab.getVector(particle.velocity);
+        slab.getVector(previousPosition);
+        slab.getVector(previousVelocity);
+        slab.getVector(gainedVelocity);
+        slab.getVector(sweepStart);
+        sweepFraction = slab.getFloat();
+        slab.getVector(launchPosition);
+        slab.getVector(launchVelocity);
+        held = slab.getBoolean();
+        kinematic = slab.getBoolean();
+        ghost = slab.getBoolean();
+        group = slab.getInt();
+        mask = slab.getInt();
+        flightSeconds = slab.getDouble();
+        scriptedSinceSeconds = slab.getDouble();
+        inWorld = slab.getBoolean();
+        removalPending = false;
+        if (slab.getBoolean()) {
+            if (rigidBody == null) {
+                throw new IllegalStateException("a recorded rotation part for " + this
+                        + ", which has none now");
+            }
+            slab.getMatrix(rigidBody.orientation);
+            slab.getVector(rigidBody.angularVelocity);
+            slab.getVector(rigidBody.torque);
+        }
+    }
+
+    /**
+     * Copy where a view draws the body between the last two physics states: the lecture's
+     * "fix your timestep" blend {@code P_prev + α·(P − P_prev)} of the position at the start
+     * of the last step and the position now, α being the accumulator's leftover over h.
+     *
+     * @param alpha the blend (0: the previous state, 1 or more: the state now, exactly)
+     * @param storeResult storage for the result (in metres, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyDrawnPosition(float alpha, Vector3f storeResult) {
+        return blend(previousPosition, particle.position, alpha, storeResult);
+    }
+
+    /**
+     * Blend two positions: {@code from + α·(to − from)}, exactly {@code to} for α &ge; 1 and
+     * exactly {@code from} for α &le; 0.
+     *
+     * @param from the earlier state (not null, not modified)
+     * @param to the later state (not null, not modified)
+     * @param alpha the blend (any; clamped to 0 to 1)
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult
+     */
+    public static Vector3f blend(Vector3f from, Vector3f to, float alpha,
+            Vector3f storeResult) {
+        if (!(alpha < 1f)) {
+            return storeResult.set(to);
+        }
+        if (!(alpha > 0f)) {
+            return storeResult.set(from);
+        }
+        return storeResult.set(from.x + alpha * (to.x - from.x),
+                from.y + alpha * (to.y - from.y), from.z + alpha * (to.z - from.z));
     }
 
     /** Compute where the body is at a fraction of the step on its current segment. */

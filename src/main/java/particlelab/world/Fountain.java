@@ -1,7 +1,6 @@
 package particlelab.world;
 
 import java.util.Arrays;
-import java.util.SplittableRandom;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -37,7 +36,7 @@ import particlelab.physics.ParticleIntegrator;
  * recycled within {@link #MAX_AGE_SECONDS}), so no velocity becomes a subnormal float (see
  * {@code docs/numerics.md}). A step allocates nothing.
  */
-public final class Fountain {
+public final class Fountain implements StateRecord {
 
     /** The default pool size (particles). */
     public static final int DEFAULT_PARTICLES = 100_000;
@@ -151,7 +150,7 @@ public final class Fountain {
     private final float[] burstStates = new float[MAX_BURSTS_PER_STEP * BURST_FLOATS];
     private final int[] burstColours = new int[MAX_BURSTS_PER_STEP];
     private int burstCount;
-    private SplittableRandom random;
+    private SplitMixRandom random;
     private float waterCarry;
     private float shellTimerSeconds;
     private int shellsLaunched;
@@ -200,7 +199,7 @@ public final class Fountain {
         }
         Arrays.fill(liveByKind, 0);
         fireworkCount = 0;
-        random = new SplittableRandom(SEED);
+        random = new SplitMixRandom(SEED);
         waterCarry = 0f;
         shellTimerSeconds = 0f;
         shellsLaunched = 0;
@@ -211,6 +210,109 @@ public final class Fountain {
         recycledLeaving = 0L;
         recycledBurnt = 0L;
         bursts = 0L;
+    }
+
+    /**
+     * Count the ints of the fountain's state: every slot's P, V, kind, birth, fuses and
+     * colour, the free list, the fireworks' list, the bursts waiting, the counters.
+     *
+     * @return the count (&gt;0, fixed by the pool size)
+     */
+    @Override
+    public int countStateInts() {
+        return 3 * capacity + 3 * capacity + 5 * capacity + 1 + capacity + 1 + capacity
+                + liveByKind.length + 1 + burstKinds.length + burstStates.length
+                + burstColours.length + 2 + 1 + 1 + 1 + 1 + 2 + 2 + 4 * 2 + 2;
+    }
+
+    /**
+     * Write the fountain's state: everything its next step reads, so a step from the state
+     * read back gives the same bits (the random sequence's state included). Allocates
+     * nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    @Override
+    public void writeState(StateSlab slab) {
+        slab.putFloats(positions, 0, 3 * capacity);
+        slab.putFloats(velocities, 0, 3 * capacity);
+        for (int i = 0; i < capacity; ++i) {
+            slab.putInt(kinds[i]);
+        }
+        slab.putFloats(births, 0, capacity);
+        slab.putFloats(fuses, 0, capacity);
+        slab.putFloats(fusesLeft, 0, capacity);
+        slab.putInts(colours, 0, capacity);
+        slab.putInt(freeCount);
+        slab.putInts(free, 0, freeCount);
+        slab.putInt(fireworkCount);
+        slab.putInts(fireworkSlots, 0, fireworkCount);
+        for (int i = 0; i < liveByKind.length; ++i) {
+            slab.putInt(liveByKind[i]);
+        }
+        slab.putInt(burstCount);
+        for (int i = 0; i < burstKinds.length; ++i) {
+            slab.putInt(burstKinds[i]);
+            slab.putInt(burstColours[i]);
+        }
+        for (int i = 0; i < burstStates.length; ++i) {
+            slab.putFloat(burstStates[i]);
+        }
+        slab.putLong(random.getState());
+        slab.putFloat(waterCarry);
+        slab.putFloat(shellTimerSeconds);
+        slab.putInt(shellsLaunched);
+        slab.putBoolean(fireworks);
+        slab.putDouble(timeSeconds);
+        slab.putLong(steps);
+        slab.putLong(recycledResting);
+        slab.putLong(recycledLeaving);
+        slab.putLong(recycledBurnt);
+        slab.putLong(bursts);
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    @Override
+    public void readState(StateSlab slab) {
+        slab.getFloats(positions, 0, 3 * capacity);
+        slab.getFloats(velocities, 0, 3 * capacity);
+        for (int i = 0; i < capacity; ++i) {
+            kinds[i] = (byte) slab.getInt();
+        }
+        slab.getFloats(births, 0, capacity);
+        slab.getFloats(fuses, 0, capacity);
+        slab.getFloats(fusesLeft, 0, capacity);
+        slab.getInts(colours, 0, capacity);
+        freeCount = slab.getInt();
+        slab.getInts(free, 0, freeCount);
+        fireworkCount = slab.getInt();
+        slab.getInts(fireworkSlots, 0, fireworkCount);
+        for (int i = 0; i < liveByKind.length; ++i) {
+            liveByKind[i] = slab.getInt();
+        }
+        burstCount = slab.getInt();
+        for (int i = 0; i < burstKinds.length; ++i) {
+            burstKinds[i] = (byte) slab.getInt();
+            burstColours[i] = slab.getInt();
+        }
+        for (int i = 0; i < burstStates.length; ++i) {
+            burstStates[i] = slab.getFloat();
+        }
+        random.setState(slab.getLong());
+        waterCarry = slab.getFloat();
+        shellTimerSeconds = slab.getFloat();
+        shellsLaunched = slab.getInt();
+        fireworks = slab.getBoolean();
+        timeSeconds = slab.getDouble();
+        steps = slab.getLong();
+        recycledResting = slab.getLong();
+        recycledLeaving = slab.getLong();
+        recycledBurnt = slab.getLong();
+        bursts = slab.getLong();
     }
 
     /**

@@ -49,7 +49,7 @@ import particlelab.rigid.RigidBody;
  * the integrator, or from the world after a contact); the bodies already stepped keep their
  * new state. Not thread-safe.
  */
-public final class World implements SimulationClock.Stepper {
+public final class World implements SimulationClock.Stepper, StateRecord {
 
     /** The default cap on swept impacts in one step. */
     public static final int DEFAULT_MAX_IMPACTS_PER_STEP = 16;
@@ -71,8 +71,22 @@ public final class World implements SimulationClock.Stepper {
     /** The audit's floats per body: P, V, then R (9) and ω of a rotation part. */
     private static final int AUDIT_FLOATS = 18;
 
+    /** The world's ints in a state record before its lists and bodies. */
+    private static final int STATE_HEADER_INTS = 2 + 2 + 2 + 1 + 2 + 1 + 1 + 2;
+
     private final List<Body> bodies = new ArrayList<>();
     private final List<Body> recycled = new ArrayList<>();
+    /**
+     * Every body this world ever created, in creation order: the first {@link #poolSize}
+     * are in use (alive or recycled); the rest were created after a state that was put back,
+     * and are handed out again in the same order.
+     */
+    private final List<Body> pool = new ArrayList<>();
+    private int poolSize;
+    /** Every integrator a body was given, so a state names a body's by its place here. */
+    private final List<ParticleIntegrator> integrators = new ArrayList<>();
+    /** Scratch for {@link #readState}: which pooled bodies were alive before it. */
+    private boolean[] wasAlive = new boolean[0];
     private final List<Body> removals = new ArrayList<>();
     /** Listener and rule arrays are replaced on change, so a step's loops never see one. */
     private CollisionRule[] rules = NO_RULES;
@@ -132,12 +146,38 @@ public final class World implements SimulationClock.Stepper {
     public Body addBody(ParticleIntegrator integrator, Vector3f position, Vector3f velocity,
             float massKg, float radiusMetres) {
         int last = recycled.size() - 1;
-        Body body = last >= 0 ? recycled.remove(last) : new Body();
+        Body body;
+        if (last >= 0) {
+            body = recycled.get(last);
+        } else if (poolSize < pool.size()) {
+            body = pool.get(poolSize);
+        } else {
+            body = new Body();
+            body.poolIndex = pool.size();
+        }
         try {
             body.reset(nextBodyId, integrator, position, velocity, massKg, radiusMetres);
         } catch (IllegalArgumentException bad) {
-            recycled.add(body);
+            if (last < 0) {
+                // A new body refused: it joins the pool as a spare, as a recycled one stays.
+                if (body.poolIndex == pool.size()) {
+                    pool.add(body);
+                }
+                ++poolSize;
+                recycled.add(body);
+            }
             throw bad;
+        }
+        if (last >= 0) {
+            recycled.remove(last);
+        } else {
+            if (body.poolIndex == pool.size()) {
+                pool.add(body);
+            }
+            ++poolSize;
+        }
+        if (indexOfIntegrator(integrator) < 0) {
+            integrators.add(integrator);
         }
         ++nextBodyId;
         body.inWorld = true;
@@ -440,6 +480,138 @@ public final class World implements SimulationClock.Stepper {
         lastStepHitCap = false;
         log.clear();
         impacts.clear();
+    }
+
+    /**
+     * Count the ints {@link #writeState} writes now: the counters, the alive and recycled
+     * sets, and every pooled body's state.
+     *
+     * @return the count (&gt;0; grows only when a body is created)
+     */
+    @Override
+    public int countStateInts() {
+        return STATE_HEADER_INTS + poolSize * (2 + Body.STATE_INTS);
+    }
+
+    /**
+     * Write the world's state: time, step count, contact sequence, next body id, cap counts,
+     * which bodies are alive (in order) and which recycled, and every body ever created's P,
+     * V, last step's bookkeeping, launch state, flags, filters, integrator and rotation part:
+     * everything a step reads, so a step from the state read back gives the same bits. The
+     * contact log and the impact queue are not state: they record what happened. Allocates
+     * nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    @Override
+    public void writeState(StateSlab slab) {
+        if (stepping) {
+            throw new IllegalStateException("writeState() was called inside a step");
+        }
+        slab.putDouble(timeSeconds);
+        slab.putLong(stepCount);
+        slab.putLong(nextSequence);
+        slab.putInt(nextBodyId);
+        slab.putLong(capHits);
+        slab.putBoolean(lastStepHitCap);
+        slab.putInt(poolSize);
+        slab.putInt(bodies.size());
+        for (int i = 0; i < bodies.size(); ++i) {
+            slab.putInt(bodies.get(i).poolIndex);
+        }
+        slab.putInt(recycled.size());
+        for (int i = 0; i < recycled.size(); ++i) {
+            slab.putInt(recycled.get(i).poolIndex);
+        }
+        for (int i = 0; i < poolSize; ++i) {
+            Body body = pool.get(i);
+            body.writeState(slab, indexOfIntegrator(body.getIntegrator()));
+        }
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote: bodies alive then and not now come back
+     * ({@link BodyListener#bodyAdded}), bodies alive now and not then leave
+     * ({@link BodyListener#bodyRemoved}); bodies created since are kept aside and handed out
+     * again, in the same order, by the next {@link #addBody}. The impact queue is cleared.
+     * Allocates nothing once the scratch fits the pool.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    @Override
+    public void readState(StateSlab slab) {
+        if (stepping) {
+            throw new IllegalStateException("readState() was called inside a step");
+        }
+        if (wasAlive.length < pool.size()) {
+            wasAlive = new boolean[pool.size()];
+        }
+        for (int i = 0; i < pool.size(); ++i) {
+            wasAlive[i] = pool.get(i).inWorld;
+        }
+        timeSeconds = slab.getDouble();
+        stepCount = slab.getLong();
+        nextSequence = slab.getLong();
+        nextBodyId = slab.getInt();
+        capHits = slab.getLong();
+        lastStepHitCap = slab.getBoolean();
+        poolSize = slab.getInt();
+        bodies.clear();
+        int alive = slab.getInt();
+        for (int i = 0; i < alive; ++i) {
+            bodies.add(pool.get(slab.getInt()));
+        }
+        recycled.clear();
+        int spare = slab.getInt();
+        for (int i = 0; i < spare; ++i) {
+            recycled.add(pool.get(slab.getInt()));
+        }
+        for (int i = 0; i < poolSize; ++i) {
+            pool.get(i).readState(slab, integrators);
+        }
+        for (int i = poolSize; i < pool.size(); ++i) {
+            pool.get(i).inWorld = false;
+        }
+        removals.clear();
+        impacts.clear();
+        BodyListener[] listeners = bodyListeners;
+        for (int i = 0; i < pool.size(); ++i) {
+            Body body = pool.get(i);
+            if (wasAlive[i] && !body.inWorld) {
+                for (int k = 0; k < listeners.length; ++k) {
+                    listeners[k].bodyRemoved(this, body);
+                }
+            } else if (!wasAlive[i] && body.inWorld) {
+                for (int k = 0; k < listeners.length; ++k) {
+                    listeners[k].bodyAdded(this, body);
+                }
+            }
+        }
+    }
+
+    /**
+     * Return a body's place in the world's pool (creation order), for a demo's state record
+     * that refers to a body.
+     *
+     * @param body a body of this world, alive or recycled (not null)
+     * @return the place (&ge;0)
+     */
+    public int getPoolIndex(Body body) {
+        if (body == null || body.poolIndex >= pool.size() || pool.get(body.poolIndex) != body) {
+            throw new IllegalArgumentException("body must be one of this world's, but was "
+                    + body);
+        }
+        return body.poolIndex;
+    }
+
+    /**
+     * Access a body by its place in the pool ({@link #getPoolIndex}).
+     *
+     * @param index the place (&ge;0, less than the bodies ever created)
+     * @return the body, alive or not (not null)
+     */
+    public Body getPooledBody(int index) {
+        return pool.get(index);
     }
 
     /**
@@ -802,6 +974,15 @@ public final class World implements SimulationClock.Stepper {
             listeners[i].bodyRemoved(this, body);
         }
         recycled.add(body);
+    }
+
+    private int indexOfIntegrator(ParticleIntegrator integrator) {
+        for (int i = 0; i < integrators.size(); ++i) {
+            if (integrators.get(i) == integrator) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private static <T> T[] append(T[] array, T item, T[] larger) {

@@ -71,12 +71,14 @@ class DemoStateHeadlessTest {
      * Issue 19: with the HUD rebuilt at 10 Hz, {@code demo tunnelling --frames 1200} showed
      * P = (3.56, 3.00) m while the ball was drawn at x = 6.9 m. Rebuilt every frame (the
      * default), the HUD's P of each ball is its sphere's drawn position after every one of
-     * the issue's 1200 frames, to the 2 decimals it prints.
+     * the issue's 1200 frames, to the 2 decimals it prints, when the raw steps are drawn
+     * (F6; issue 21: interpolated, the sphere is between the last two states, below).
      */
     @Test
     void theHudsPositionIsWhereTheBallIsDrawnAfterEveryFrame() throws Exception {
         DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
         String mismatch = harness.call(() -> {
+            tunnelling.setInterpolating(false);
             tunnelling.restart();
             StringBuilder expected = new StringBuilder();
             for (int frame = 1; frame <= 1200; ++frame) {
@@ -90,6 +92,58 @@ class DemoStateHeadlessTest {
                     TextFormat.appendVector(expected, sphere.getLocalTranslation(), 2);
                     if (!shown.contains(expected)) {
                         return "frame " + frame + ": drawn at" + expected + ", HUD:\n" + shown;
+                    }
+                }
+            }
+            tunnelling.setInterpolating(true);
+            return "";
+        });
+        assertEquals("", mismatch);
+    }
+
+    /**
+     * Issue 21: interpolated, each ball is drawn on the segment between its last two physics
+     * states at α = leftover / h, the HUD's P is the physics state, and the HUD says what is
+     * drawn, with α.
+     */
+    @Test
+    void theInterpolatedBallIsDrawnBetweenItsLastTwoStates() throws Exception {
+        DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
+        String mismatch = harness.call(() -> {
+            tunnelling.setInterpolating(true);
+            tunnelling.restart();
+            StringBuilder expected = new StringBuilder();
+            Vector3f drawn = new Vector3f();
+            for (int frame = 1; frame <= 300; ++frame) {
+                // 1.5 h a frame: the leftover is 0 or h/2, so α is 0 or 0.5.
+                tunnelling.update(1.5f * H);
+                String shown = tunnelling.getHud().getBodyText();
+                float alpha = tunnelling.getDrawBlend();
+                double leftover = tunnelling.getClock().getLeftoverSeconds()
+                        / tunnelling.getClock().getStepSeconds();
+                if (Math.abs(alpha - leftover) > 1e-6) {
+                    return "frame " + frame + ": α " + alpha + ", leftover/h " + leftover;
+                }
+                expected.setLength(0);
+                expected.append("drawn: interpolated (α = ");
+                TextFormat.appendFixed(expected, alpha, 2);
+                if (!shown.contains(expected)) {
+                    return "frame " + frame + ": no " + expected + " in the HUD:\n" + shown;
+                }
+                for (DemoParticle ball : tunnelling.getParticles()) {
+                    Spatial sphere = tunnelling.getView(ball).getNode()
+                            .getChild(ball.getLabel() + " sphere");
+                    ball.getBody().copyDrawnPosition(alpha, drawn);
+                    if (!sphere.getLocalTranslation().equals(drawn)) {
+                        return "frame " + frame + ": " + sphere.getLocalTranslation()
+                                + " drawn, the blend is " + drawn;
+                    }
+                    expected.setLength(0);
+                    expected.append('\n').append(ball.getLabel()).append(":  P = ");
+                    TextFormat.appendVector(expected, ball.getParticle().position, 2);
+                    if (!shown.contains(expected)) {
+                        return "frame " + frame + ": physics at" + expected + ", HUD:\n"
+                                + shown;
                     }
                 }
             }
