@@ -170,8 +170,8 @@ public final class FountainDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        text.append("particles: ").append(fountain.countLive()).append(" in flight of ")
-                .append(fountain.getCapacity()).append(" stepped: water ")
+        text.append("particles: ").append(fountain.countLive()).append(" in flight (stepped) of ")
+                .append(fountain.getCapacity()).append(": water ")
                 .append(fountain.countLive(Fountain.WATER)).append(", shells ")
                 .append(fountain.countLive(Fountain.SHELL)).append(", stars ")
                 .append(fountain.countLive(Fountain.STAR)).append(", sparks ")

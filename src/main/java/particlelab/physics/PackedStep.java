@@ -72,39 +72,52 @@ final class PackedStep {
      *
      * @throws NonFiniteStepException as {@link ParticleIntegrator#stepPacked}
      */
-    void step(float[] positions, float[] velocities, int count, float massKg,
+    void step(float[] positions, float[] velocities, int stride, int count, float massKg,
             float stepSeconds) {
         float factor = Float.NaN;
         int bad;
         if (folded.hasOthers || !Float.isFinite(folded.stepFactor)) {
             // other forces, or h·b/m beyond the float range, which the recipe may survive
-            bad = stepOneByOne(positions, velocities, count, massKg, stepSeconds);
+            bad = stepOneByOne(positions, velocities, stride, count, massKg, stepSeconds);
         } else if (folded.speedDependent) {
-            bad = stepBySpeed(positions, velocities, count, stepSeconds);
+            bad = stepBySpeed(positions, velocities, stride, count, stepSeconds);
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
             factor = folded.stepFactor;
-            bad = stepByAxes(positions, velocities, count, stepSeconds);
+            bad = stepByAxes(positions, velocities, stride, count, stepSeconds);
         }
         if (bad >= 0) {
-            throw failure(positions, velocities, count, bad % count, stepSeconds,
+            throw failure(positions, velocities, stride, count, bad, stepSeconds,
                     factor < -1f ? factor : Float.NaN);
         }
     }
 
     /** Refuse arrays too short for count particles, or a negative count, by name. */
     static void checkArrays(float[] positions, float[] velocities, int count) {
+        checkArrays(positions, velocities, count, count);
+    }
+
+    /**
+     * Refuse a negative count, a stride below it, or arrays too short for three axes of
+     * stride floats, by name.
+     */
+    static void checkArrays(float[] positions, float[] velocities, int stride, int count) {
         if (count < 0) {
             throw new IllegalArgumentException("particle count must be >= 0, but was " + count);
         }
-        long needed = 3L * count;
+        if (stride < count) {
+            throw new IllegalArgumentException("the stride between the axes must be >= the"
+                    + " particle count " + count + ", but was " + stride);
+        }
+        long needed = 3L * stride;
+        String name = stride == count ? "3*count" : "3*stride";
         if (positions == null || positions.length < needed) {
-            throw new IllegalArgumentException("positions must hold 3*count = " + needed
+            throw new IllegalArgumentException("positions must hold " + name + " = " + needed
                     + " floats, but " + (positions == null ? "was null"
                     : "held " + positions.length));
         }
         if (velocities == null || velocities.length < needed) {
-            throw new IllegalArgumentException("velocities must hold 3*count = " + needed
+            throw new IllegalArgumentException("velocities must hold " + name + " = " + needed
                     + " floats, but " + (velocities == null ? "was null"
                     : "held " + velocities.length));
         }
@@ -125,7 +138,7 @@ final class PackedStep {
      *
      * @return the index of the first non-finite value, or -1
      */
-    private int stepByAxes(float[] positions, float[] velocities, int count,
+    private int stepByAxes(float[] positions, float[] velocities, int stride, int count,
             float stepSeconds) {
         float factor = folded.stepFactor;
         float gx = folded.stepGravityX;
@@ -134,8 +147,8 @@ final class PackedStep {
         boolean finite = true;
         for (int start = 0; start < count; start += BATCH_BLOCK) {
             int n = Math.min(BATCH_BLOCK, count - start);
-            int y = count + start;
-            int z = 2 * count + start;
+            int y = stride + start;
+            int z = 2 * stride + start;
             // & rather than &&: every block is stepped and checked whatever the one before
             // found, with no branch per axis
             if (vectorBatch) {
@@ -153,7 +166,7 @@ final class PackedStep {
                         & isSumFinite(positions, z, n);
             }
         }
-        return finite ? -1 : searchNonFinite(positions, 3 * count);
+        return finite ? -1 : searchNonFinite(positions, stride, count);
     }
 
     /** One axis of gravity and linear drag: V ← r·V + h·g, then P ← P + h·V with the new V. */
@@ -175,14 +188,14 @@ final class PackedStep {
      *
      * @return the index of the first non-finite value, or -1
      */
-    private int stepBySpeed(float[] positions, float[] velocities, int count,
+    private int stepBySpeed(float[] positions, float[] velocities, int stride, int count,
             float stepSeconds) {
         FoldedForces forces = folded;
         float gx = forces.stepGravityX;
         float gy = forces.stepGravityY;
         float gz = forces.stepGravityZ;
         float check = 0f;
-        for (int x = 0, y = count, z = 2 * count; x < count; ++x, ++y, ++z) {
+        for (int x = 0, y = stride, z = 2 * stride; x < count; ++x, ++y, ++z) {
             float vx = velocities[x];
             float vy = velocities[y];
             float vz = velocities[z];
@@ -201,7 +214,7 @@ final class PackedStep {
             positions[z] = pz;
             check += (px + py) + pz;
         }
-        return Float.isFinite(check) ? -1 : searchNonFinite(positions, 3 * count);
+        return Float.isFinite(check) ? -1 : searchNonFinite(positions, stride, count);
     }
 
     /**
@@ -211,12 +224,12 @@ final class PackedStep {
      *
      * @return the index of the first non-finite value, or -1
      */
-    private int stepOneByOne(float[] positions, float[] velocities, int count, float massKg,
-            float stepSeconds) {
+    private int stepOneByOne(float[] positions, float[] velocities, int stride, int count,
+            float massKg, float stepSeconds) {
         particle.setMass(massKg);
         for (int i = 0; i < count; ++i) {
-            int y = count + i;
-            int z = 2 * count + i;
+            int y = stride + i;
+            int z = 2 * stride + i;
             particle.position.set(positions[i], positions[y], positions[z]);
             particle.velocity.set(velocities[i], velocities[y], velocities[z]);
             integrator.computeStep(particle, stepSeconds, nextVelocity, nextPosition);
@@ -227,7 +240,9 @@ final class PackedStep {
             velocities[y] = nextVelocity.y;
             velocities[z] = nextVelocity.z;
         }
-        return isSumFinite(positions, 0, 3 * count) ? -1 : searchNonFinite(positions, 3 * count);
+        boolean finite = isSumFinite(positions, 0, count)
+                & isSumFinite(positions, stride, count) & isSumFinite(positions, 2 * stride, count);
+        return finite ? -1 : searchNonFinite(positions, stride, count);
     }
 
     /**
@@ -258,20 +273,22 @@ final class PackedStep {
         return Float.isFinite((sum0 + sum1) + (sum2 + sum3));
     }
 
-    /** The index of the first non-finite value, or -1. */
-    private static int searchNonFinite(float[] values, int length) {
-        for (int j = 0; j < length; ++j) {
-            if (!Float.isFinite(values[j])) {
-                return j;
+    /** The particle of the first non-finite value, axis by axis (x, then y, z), or -1. */
+    private static int searchNonFinite(float[] values, int stride, int count) {
+        for (int axis = 0; axis < 3 * stride; axis += stride) {
+            for (int i = 0; i < count; ++i) {
+                if (!Float.isFinite(values[axis + i])) {
+                    return i;
+                }
             }
         }
         return -1;
     }
 
     private static NonFiniteStepException failure(float[] positions, float[] velocities,
-            int count, int particle, float stepSeconds, float unstableFactor) {
-        int y = count + particle;
-        int z = 2 * count + particle;
+            int stride, int count, int particle, float stepSeconds, float unstableFactor) {
+        int y = stride + particle;
+        int z = 2 * stride + particle;
         String why = Float.isNaN(unstableFactor)
                 ? "its state was already non-finite or the numbers overflowed the float range"
                 : "the velocity factor 1 - h*b/m = " + unstableFactor + " is beyond -1"

@@ -157,7 +157,27 @@ public final class ParticleIntegrator {
      */
     public void stepPacked(float[] positions, float[] velocities, int count, float massKg,
             float stepSeconds) {
-        PackedStep.checkArrays(positions, velocities, count);
+        stepPacked(positions, velocities, count, count, massKg, stepSeconds);
+    }
+
+    /**
+     * {@link #stepPacked(float[], float[], int, float, float)} for the first count particles
+     * of arrays laid out for stride particles: particle i has {@code P = (positions[i],
+     * positions[stride + i], positions[2·stride + i])}, V likewise; the rest are not touched.
+     * A pool that keeps its particles in flight first steps only those.
+     *
+     * @param positions P, planar with the stride (in m, finite, length &ge; 3·stride, modified)
+     * @param velocities V, likewise (in m/s, finite, length &ge; 3·stride, modified)
+     * @param stride the particles the layout has room for (&ge;count)
+     * @param count the particles to step, the first ones (&ge;0)
+     * @param massKg as above
+     * @param stepSeconds as above
+     * @throws IllegalArgumentException if stride &lt; count or the arrays hold fewer than
+     *     3·stride floats
+     */
+    public void stepPacked(float[] positions, float[] velocities, int stride, int count,
+            float massKg, float stepSeconds) {
+        PackedStep.checkArrays(positions, velocities, stride, count);
         Particle.checkMass(massKg);
         Validate.nonNegative(stepSeconds, "step h (s)");
         if (stepSeconds == 0f || count == 0) {
@@ -165,7 +185,7 @@ public final class ParticleIntegrator {
         }
         folded.refoldIfStale();
         limits.remember(stepSeconds, massKg);
-        packed.step(positions, velocities, count, massKg, stepSeconds);
+        packed.step(positions, velocities, stride, count, massKg, stepSeconds);
     }
 
     /**

@@ -14,11 +14,16 @@ import particlelab.physics.ParticleIntegrator;
  * <ol>
  * <li>the Euler step of every slot of the pool, gravity and linear drag
  * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V});</li>
- * <li>the ground: restitution e with Cyclone's resting fix, in one packed loop;</li>
- * <li>the lifecycle: water that touches the ground slower than {@link #REST_SPEED}, any
- * particle that leaves the region or outlives {@link #MAX_AGE_SECONDS}, a spark whose fuse has
- * burnt, go back to the pool; a shell bursts at its apex or when its fuse has burnt, a star
- * when its fuse has burnt;</li>
+ * <li>the ground: restitution e with Cyclone's resting fix ({@link GroundBounce}: one
+ * branch-free pass that finds the particles in contact, then the rule on those alone);</li>
+ * <li>the lifecycle, on the particles it concerns and no others: water in contact whose
+ * rebound is slower than {@link #REST_SPEED} (it no longer bounces: it joins the puddle), or
+ * that has left the region or outlived {@link #MAX_AGE_SECONDS}, goes back to the pool, found
+ * among the contacts (water always comes down: gravity brings every drop to the ground within
+ * seconds, so the ground is where its region and age are checked); the fireworks, a short list
+ * of their own, burn their fuses and are checked against the region and the age: a shell
+ * bursts at its apex or when its fuse has burnt, a star when its fuse has burnt, a spark goes
+ * out;</li>
  * <li>the bursts' payloads, then a new shell when the launch timer says so, then new water
  * from the nozzle, all from the pool.</li>
  * </ol>
@@ -29,10 +34,13 @@ import particlelab.physics.ParticleIntegrator;
  * parent's velocity plus a random one. Here a shell leaves {@value #STARS_PER_SHELL} stars, a
  * star {@value #SPARKS_PER_STAR} sparks, a spark nothing.
  *
- * <p>The pool never grows: a slot not in flight is dormant, resting at the nozzle
- * ({@code P = (0, r, 0)}, {@code V = 0}), which the Euler step and the resting fix keep
- * exactly where it is, and invisible. A twentieth of the pool is kept for the fireworks: water
- * takes a slot only while more are free. Nothing decays for ever (every particle in flight is
+ * <p>The pool never grows, and the particles in flight are kept first: slots 0 to
+ * {@link #countLive()} − 1 are in flight, the rest dormant (at the nozzle, {@code P = (0, r,
+ * 0)}, {@code V = 0}, invisible), so every pass touches only the particles in flight (the
+ * Euler step too: {@link ParticleIntegrator#stepPacked(float[], float[], int, int, float,
+ * float)} with the pool as the stride). A particle going back to the pool takes the last one
+ * in flight into its slot; a new one takes the first dormant slot. A twentieth of the pool is
+ * kept for the fireworks: water takes a slot only while more are free. Nothing decays for ever (every particle in flight is
  * recycled within {@link #MAX_AGE_SECONDS}), so no velocity becomes a subnormal float (see
  * {@code docs/numerics.md}). A step allocates nothing.
  */
@@ -60,7 +68,7 @@ public final class Fountain implements StateRecord {
     public static final float RADIUS_METRES = 0.05f;
     /** The ground's default restitution e. */
     public static final float DEFAULT_RESTITUTION = 0.5f;
-    /** Water touching the ground slower than this is at rest (in m/s). */
+    /** Water that rebounds off the ground slower than this is at rest (in m/s). */
     public static final float REST_SPEED = 1f;
     /** Anything older than this is recycled (in seconds). */
     public static final float MAX_AGE_SECONDS = 20f;
@@ -129,21 +137,25 @@ public final class Fountain implements StateRecord {
     /** vy of every slot before the step, for the resting fix (m/s). */
     private final float[] velocityYBefore;
     private final byte[] kinds;
-    /** The slots in contact with the ground after the step: {@link GroundBounce}'s output. */
+    /**
+     * The slots in contact with the ground after the step ({@link GroundBounce}'s output),
+     * then, in place, the slots going back to the pool this step.
+     */
     private final int[] contacts;
     /** When each particle was launched (s; +∞ for a dormant slot). */
     private final float[] births;
     /** The slots holding a firework (shell, star, spark), in no order. */
     private final int[] fireworkSlots;
     private int fireworkCount;
+    /** Where each firework's slot is in {@link #fireworkSlots} (−1 for water, dormant). */
+    private final int[] fireworkEntries;
     /** A firework's fuse at launch, and what is left of it (s). */
     private final float[] fuses;
     private final float[] fusesLeft;
     /** The colour each particle was given (0xRRGGBB). */
     private final int[] colours;
-    /** The dormant slots: a stack. */
-    private final int[] free;
-    private int freeCount;
+    /** How many slots are in flight: slots 0 to live − 1. */
+    private int live;
     private final int[] liveByKind = new int[RULES.length];
     /** The bursts of the current step: parent kind, and P, V, colour. */
     private final byte[] burstKinds = new byte[MAX_BURSTS_PER_STEP];
@@ -181,10 +193,10 @@ public final class Fountain implements StateRecord {
         contacts = new int[particles];
         births = new float[particles];
         fireworkSlots = new int[particles];
+        fireworkEntries = new int[particles];
         fuses = new float[particles];
         fusesLeft = new float[particles];
         colours = new int[particles];
-        free = new int[particles];
         reset();
     }
 
@@ -192,10 +204,9 @@ public final class Fountain implements StateRecord {
      * Put every slot back in the pool and replay from the start.
      */
     public void reset() {
-        freeCount = 0;
-        for (int i = capacity - 1; i >= 0; --i) {
+        live = 0;
+        for (int i = 0; i < capacity; ++i) {
             park(i);
-            free[freeCount++] = i;
         }
         Arrays.fill(liveByKind, 0);
         fireworkCount = 0;
@@ -323,14 +334,14 @@ public final class Fountain implements StateRecord {
      *     non-finite; {@link #reset} before stepping again
      */
     public void step(float stepSeconds) {
-        System.arraycopy(velocities, capacity, velocityYBefore, 0, capacity);
-        integrator.stepPacked(positions, velocities, capacity, MASS_KG, stepSeconds);
-        int touching = ground.resolve(positions, velocities, velocityYBefore, capacity,
+        System.arraycopy(velocities, capacity, velocityYBefore, 0, live);
+        integrator.stepPacked(positions, velocities, capacity, live, MASS_KG, stepSeconds);
+        int touching = ground.resolve(positions, velocities, velocityYBefore, capacity, live,
                 contacts);
         timeSeconds += stepSeconds;
-        restOnTheGround(touching);
-        leaveTheRegion();
-        burnFuses(stepSeconds);
+        int leaving = settleWater(touching);
+        leaving = burnFuses(stepSeconds, leaving);
+        compact(leaving);
         for (int b = 0; b < burstCount; ++b) {
             spawnPayload(b);
         }
@@ -360,7 +371,7 @@ public final class Fountain implements StateRecord {
      * @return the count (from 0 to the pool size)
      */
     public int countLive() {
-        return capacity - freeCount;
+        return live;
     }
 
     /**
@@ -508,48 +519,68 @@ public final class Fountain implements StateRecord {
 
     // ---------------------------------------------------------------- private helpers ----
 
-    /** Water on the ground slower than {@link #REST_SPEED} goes back to the pool. */
-    private void restOnTheGround(int touching) {
+    /**
+     * Water in contact with the ground goes back to the pool if its rebound is slower than
+     * {@link #REST_SPEED} (at rest), or if it is out of the region or older than
+     * {@link #MAX_AGE_SECONDS} (leaving). Only the contacts are looked at: a firework in
+     * contact is left to the ground and to {@link #burnFuses}.
+     *
+     * @return how many slots go back: their indices are now at the start of contacts
+     */
+    private int settleWater(int touching) {
+        int y = capacity;
+        float oldestBirth = oldestBirth();
+        int leaving = 0;
         for (int c = 0; c < touching; ++c) {
             int i = contacts[c];
-            if (kinds[i] == WATER && speedSquared(i) < REST_SPEED * REST_SPEED) {
+            if (kinds[i] != WATER) {
+                continue;
+            }
+            if (velocities[y + i] < REST_SPEED) {
                 ++recycledResting;
-                recycle(i, WATER);
+                contacts[leaving++] = retire(i);
+            } else if (isLeaving(i, oldestBirth)) {
+                ++recycledLeaving;
+                contacts[leaving++] = retire(i);
             }
         }
+        return leaving;
     }
 
-    /**
-     * Anything out of the region or older than {@link #MAX_AGE_SECONDS} goes back to the
-     * pool: one simple pass over every slot (a dormant slot sits at the nozzle, born at +∞,
-     * so it never qualifies and needs no test of its kind).
-     */
-    private void leaveTheRegion() {
+    /** The least birth time that is not too old: now − {@link #MAX_AGE_SECONDS} (s). */
+    private float oldestBirth() {
+        return (float) timeSeconds - MAX_AGE_SECONDS;
+    }
+
+    /** Whether slot i is out of the region or was born before oldestBirth. */
+    private boolean isLeaving(int i, float oldestBirth) {
         int n = capacity;
-        float oldestBirth = (float) timeSeconds - MAX_AGE_SECONDS;
-        for (int i = 0; i < n; ++i) {
-            if (Math.abs(positions[i]) > REGION_HALF_WIDTH || positions[n + i] > REGION_TOP
-                    || Math.abs(positions[2 * n + i]) > REGION_HALF_DEPTH
-                    || births[i] < oldestBirth) {
-                ++recycledLeaving;
-                recycle(i, kinds[i]);
-            }
-        }
+        return Math.abs(positions[i]) > REGION_HALF_WIDTH || positions[n + i] > REGION_TOP
+                || Math.abs(positions[2 * n + i]) > REGION_HALF_DEPTH || births[i] < oldestBirth;
     }
 
     /**
      * The fireworks' fuses burn: a shell bursts at its apex or when its fuse has burnt, a
-     * star when its fuse has burnt (queued, spawned after this pass), a spark just goes out.
-     * Slots recycled earlier in the step leave the list here.
+     * star when its fuse has burnt (queued, spawned after this pass), a spark just goes out;
+     * a firework out of the region or older than {@link #MAX_AGE_SECONDS} goes back to the
+     * pool unburst.
+     *
+     * @param leaving how many slots at the start of contacts go back already
+     * @return how many go back now (those this pass retires appended)
      */
-    private void burnFuses(float stepSeconds) {
+    private int burnFuses(float stepSeconds, int leaving) {
         burstCount = 0;
+        float oldestBirth = oldestBirth();
         int k = 0;
         while (k < fireworkCount) {
             int i = fireworkSlots[k];
             byte kind = kinds[i];
-            boolean gone = kind == DORMANT;
-            if (!gone) {
+            boolean gone = false;
+            if (isLeaving(i, oldestBirth)) {
+                ++recycledLeaving;
+                contacts[leaving++] = retire(i);
+                gone = true;
+            } else {
                 float left = fusesLeft[i] - stepSeconds;
                 fusesLeft[i] = left;
                 boolean apex = kind == SHELL && velocities[capacity + i] <= 0f;
@@ -563,15 +594,40 @@ public final class Fountain implements StateRecord {
                     // else the queue is full: burst next step
                     if (gone) {
                         ++recycledBurnt;
-                        recycle(i, kind);
+                        contacts[leaving++] = retire(i);
                     }
                 }
             }
             if (gone) {
-                fireworkSlots[k] = fireworkSlots[--fireworkCount];
+                int last = fireworkSlots[--fireworkCount];
+                fireworkSlots[k] = last;
+                fireworkEntries[last] = k;
+                fireworkEntries[i] = -1;
             } else {
                 ++k;
             }
+        }
+        return leaving;
+    }
+
+    /**
+     * Give the retired slots back to the pool and keep the ones in flight first: each retired
+     * slot below the live end takes the last particle in flight. Retired slots are dormant
+     * already ({@link #retire}), so the last slot moved is always one in flight and no retired
+     * index ever points at a moved particle: any order works.
+     */
+    private void compact(int leaving) {
+        for (int k = 0; k < leaving; ++k) {
+            while (live > 0 && kinds[live - 1] == DORMANT) {
+                park(--live);
+            }
+            int i = contacts[k];
+            if (i < live) {
+                move(--live, i);
+            }
+        }
+        while (live > 0 && kinds[live - 1] == DORMANT) {
+            park(--live);
         }
     }
 
@@ -594,7 +650,7 @@ public final class Fountain implements StateRecord {
         int at = burst * BURST_FLOATS;
         int colour = parent.payloadKind == SPARK ? brighten(burstColours[burst])
                 : burstColours[burst];
-        for (int c = 0; c < parent.payloadCount && freeCount > 0; ++c) {
+        for (int c = 0; c < parent.payloadCount && live < capacity; ++c) {
             int i = take(parent.payloadKind);
             float speed = between(child.minSpeed, child.maxSpeed);
             // a random direction, uniform on the sphere: z = cos θ uniform in [−1, 1]
@@ -613,7 +669,7 @@ public final class Fountain implements StateRecord {
     }
 
     private void launchShell() {
-        if (freeCount == 0) {
+        if (live == capacity) {
             return;
         }
         int i = take(SHELL);
@@ -630,7 +686,7 @@ public final class Fountain implements StateRecord {
         waterCarry += WATER_RATE_PER_POOL * capacity * stepSeconds;
         int wanted = (int) waterCarry;
         waterCarry -= wanted;
-        int count = Math.min(wanted, freeCount - reserve);
+        int count = Math.min(wanted, capacity - live - reserve);
         for (int n = 0; n < count; ++n) {
             int i = take(WATER);
             launchInCone(i, 0f, between(WATER_MIN_SPEED, WATER_MAX_SPEED), WATER_CONE_RADIANS);
@@ -650,27 +706,52 @@ public final class Fountain implements StateRecord {
                 speed * cosTheta, speed * sinTheta * (float) Math.sin(phi));
     }
 
-    /** Pop a dormant slot for a new particle of a kind. */
+    /** The first dormant slot, for a new particle of a kind. */
     private int take(byte kind) {
-        int i = free[--freeCount];
+        int i = live++;
         kinds[i] = kind;
         births[i] = (float) timeSeconds;
         ++liveByKind[kind];
         if (kind != WATER) {
+            fireworkEntries[i] = fireworkCount;
             fireworkSlots[fireworkCount++] = i;
         }
         return i;
     }
 
-    private void recycle(int i, byte kind) {
-        --liveByKind[kind];
-        park(i);
-        free[freeCount++] = i;
+    /**
+     * A particle goes back to the pool: counted out of its kind and marked dormant, its slot
+     * given back by {@link #compact} at the end of the lifecycle passes.
+     *
+     * @return the slot
+     */
+    private int retire(int i) {
+        --liveByKind[kinds[i]];
+        kinds[i] = DORMANT;
+        return i;
+    }
+
+    /** The particle in slot from moves to slot to (dormant), and from becomes dormant. */
+    private void move(int from, int to) {
+        place(to, positions[from], positions[capacity + from], positions[2 * capacity + from],
+                velocities[from], velocities[capacity + from], velocities[2 * capacity + from]);
+        kinds[to] = kinds[from];
+        births[to] = births[from];
+        fuses[to] = fuses[from];
+        fusesLeft[to] = fusesLeft[from];
+        colours[to] = colours[from];
+        int entry = fireworkEntries[from];
+        fireworkEntries[to] = entry;
+        if (entry >= 0) {
+            fireworkSlots[entry] = to;
+        }
+        park(from);
     }
 
     /** Dormant: at rest on the ground at the nozzle. */
     private void park(int i) {
         kinds[i] = DORMANT;
+        fireworkEntries[i] = -1;
         place(i, 0f, RADIUS_METRES, 0f, 0f, 0f, 0f);
         births[i] = Float.POSITIVE_INFINITY;
         fuses[i] = 0f;
@@ -687,13 +768,6 @@ public final class Fountain implements StateRecord {
         velocities[i] = vx;
         velocities[y] = vy;
         velocities[z] = vz;
-    }
-
-    private float speedSquared(int i) {
-        float vx = velocities[i];
-        float vy = velocities[capacity + i];
-        float vz = velocities[2 * capacity + i];
-        return vx * vx + vy * vy + vz * vz;
     }
 
     private float between(float least, float most) {

@@ -106,47 +106,82 @@ public final class GroundBounce {
      */
     public int resolve(float[] positions, float[] velocities, float[] velocitiesYBefore,
             int count, int[] storeContacts) {
-        if (count < 0 || positions.length < 3L * count || velocities.length < 3L * count
-                || velocitiesYBefore.length < count || storeContacts.length < count) {
+        return resolve(positions, velocities, velocitiesYBefore, count, count, storeContacts);
+    }
+
+    /**
+     * {@link #resolve(float[], float[], float[], int, int[])} for the first count particles
+     * of arrays laid out for stride particles, as
+     * {@link particlelab.physics.ParticleIntegrator#stepPacked(float[], float[], int, int,
+     * float, float)} lays them out: y of particle i is {@code positions[stride + i]}.
+     *
+     * @param positions P, planar with the stride (in metres, length &ge; 3·stride, modified)
+     * @param velocities V after the step, likewise (in m/s, length &ge; 3·stride, modified)
+     * @param velocitiesYBefore vy of the first count particles before the step (in m/s,
+     *     length &ge; count, not modified)
+     * @param stride the particles the layout has room for (&ge;count)
+     * @param count the particles to resolve, the first ones (&ge;0)
+     * @param storeContacts as above (length &ge; count)
+     * @return how many particles were in contact
+     */
+    public int resolve(float[] positions, float[] velocities, float[] velocitiesYBefore,
+            int stride, int count, int[] storeContacts) {
+        if (count < 0 || stride < count || positions.length < 3L * stride
+                || velocities.length < 3L * stride || velocitiesYBefore.length < count
+                || storeContacts.length < count) {
             throw new IllegalArgumentException("count must be >= 0 with 3*count positions and"
                     + " velocities and count previous vy and contact indices, but count was "
-                    + count);
+                    + count + (stride == count ? "" : " with a stride of " + stride));
         }
-        float radiusFloat = radiusMetres;
-        double radius = radiusMetres;
-        float e = restitution;
+        // two passes: the contact test over every particle, then the rule on the few in
+        // contact
+        int contacts = findContacts(positions, stride, count, storeContacts);
+        for (int c = 0; c < contacts; ++c) {
+            resolveContact(positions, velocities, velocitiesYBefore, stride, storeContacts[c]);
+        }
+        return contacts;
+    }
+
+    /**
+     * The overlap test of every particle: y &le; r, which is {@code d = r − y ≥ 0} in double
+     * too (floats convert exactly). One read per particle and a store only for a contact,
+     * which is rare: the branch is well predicted, and the pass reads one axis alone.
+     */
+    private int findContacts(float[] positions, int stride, int count, int[] storeContacts) {
+        float radius = radiusMetres;
         int contacts = 0;
-        for (int i = 0, y = count; i < count; ++i, ++y) {
-            float py = positions[y];
-            if (py > radiusFloat) {
-                continue; // r − y < 0 in double too (floats convert exactly): no contact
-            }
-            double overlap = radius - py;
-            if (!(overlap >= 0.0)) {
-                continue;
-            }
-            storeContacts[contacts++] = i;
-            float depth = (float) overlap;
-            float separating = velocities[y];
-            if (!(-separating > World.CLOSING_TOLERANCE || depth > World.PENETRATION_TOLERANCE)) {
-                continue;
-            }
-            if (separating < 0f) {
-                float closing = -separating;
-                float bounce = closing > thresholdSpeed ? e : 0f;
-                float wanted = -bounce * separating;
-                if (restingFix) {
-                    float gained = separating - velocitiesYBefore[i];
-                    if (gained < 0f) {
-                        wanted = Math.max(0f, wanted + bounce * gained);
-                    }
-                }
-                velocities[y] = separating + (wanted - separating);
-            }
-            if (depth > 0f) {
-                positions[y] = py + depth;
+        for (int i = 0, y = stride; i < count; ++i, ++y) {
+            if (positions[y] <= radius) {
+                storeContacts[contacts++] = i;
             }
         }
         return contacts;
+    }
+
+    /** The rule of the class comment for particle i, which is in contact. */
+    private void resolveContact(float[] positions, float[] velocities,
+            float[] velocitiesYBefore, int stride, int i) {
+        int y = stride + i;
+        float py = positions[y];
+        float depth = (float) ((double) radiusMetres - py);
+        float separating = velocities[y];
+        if (!(-separating > World.CLOSING_TOLERANCE || depth > World.PENETRATION_TOLERANCE)) {
+            return;
+        }
+        if (separating < 0f) {
+            float closing = -separating;
+            float bounce = closing > thresholdSpeed ? restitution : 0f;
+            float wanted = -bounce * separating;
+            if (restingFix) {
+                float gained = separating - velocitiesYBefore[i];
+                if (gained < 0f) {
+                    wanted = Math.max(0f, wanted + bounce * gained);
+                }
+            }
+            velocities[y] = separating + (wanted - separating);
+        }
+        if (depth > 0f) {
+            positions[y] = py + depth;
+        }
     }
 }

@@ -94,8 +94,8 @@ class FountainDemoTest {
                 demo.advance(H);
             }
             Fountain fountain = demo.getFountain();
-            String expected = "particles: " + fountain.countLive() + " in flight of "
-                    + PARTICLES + " stepped: water " + fountain.countLive(Fountain.WATER);
+            String expected = "particles: " + fountain.countLive() + " in flight (stepped) of "
+                    + PARTICLES + ": water " + fountain.countLive(Fountain.WATER);
             return new String[] {demo.formatHud(new StringBuilder()).toString(), expected};
         });
         assertTrue(texts[0].contains(texts[1]), texts[0]);

@@ -56,6 +56,72 @@ class ParticleIntegratorBatchTest {
         }
     }
 
+    /**
+     * With a stride, the first count particles of a larger layout step to the same bits as
+     * the same particles packed alone, and the slots beyond them are not touched: in each of
+     * the batch's three forms (by axes, by speed, one by one).
+     */
+    @Test
+    void aStrideStepsTheFirstParticlesAloneToTheSameBits() {
+        ParticleIntegrator[] integrators = {
+            new ParticleIntegrator(new Gravity(), new LinearDrag(0.9f)),
+            new ParticleIntegrator(new Gravity(), new QuadraticDrag(0.02f), new Thrust(3f)),
+            new ParticleIntegrator(new Gravity(), new Spring(new Vector3f(0f, 1f, 0f), 0.5f, 4f)),
+        };
+        int stride = COUNT + 11;
+        for (ParticleIntegrator integrator : integrators) {
+            float[] positions = new float[3 * COUNT];
+            float[] velocities = new float[3 * COUNT];
+            pack(launch(2f), positions, velocities);
+            float[] widePositions = new float[3 * stride];
+            float[] wideVelocities = new float[3 * stride];
+            java.util.Arrays.fill(widePositions, -7f);
+            java.util.Arrays.fill(wideVelocities, 5f);
+            for (int axis = 0; axis < 3; ++axis) {
+                System.arraycopy(positions, axis * COUNT, widePositions, axis * stride, COUNT);
+                System.arraycopy(velocities, axis * COUNT, wideVelocities, axis * stride, COUNT);
+            }
+            for (int n = 0; n < 120; ++n) {
+                integrator.stepPacked(positions, velocities, COUNT, 2f, H);
+                integrator.stepPacked(widePositions, wideVelocities, stride, COUNT, 2f, H);
+            }
+            for (int axis = 0; axis < 3; ++axis) {
+                for (int i = 0; i < stride; ++i) {
+                    float p = widePositions[axis * stride + i];
+                    float v = wideVelocities[axis * stride + i];
+                    if (i < COUNT) {
+                        // the same code on the same floats: identical
+                        assertEquals(positions[axis * COUNT + i], p, 0f, integrator.describe());
+                        assertEquals(velocities[axis * COUNT + i], v, 0f, integrator.describe());
+                    } else {
+                        assertEquals(-7f, p, 0f, "slot " + i + " beyond count moved");
+                        assertEquals(5f, v, 0f, "slot " + i + " beyond count moved");
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void aStrideBelowTheCountOrArraysTooShortForItAreRefused() {
+        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
+        IllegalArgumentException below = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(new float[30], new float[30], 9, 10, 1f, H));
+        assertTrue(below.getMessage().contains("stride between the axes must be >= the"
+                + " particle count 10, but was 9"), below.getMessage());
+        float[] positions = new float[3 * 20];
+        float[] velocities = new float[3 * 20];
+        velocities[20 + 3] = Float.NaN;
+        NonFiniteStepException nan = assertThrows(NonFiniteStepException.class,
+                () -> integrator.stepPacked(positions, velocities, 20, 10, 1f, H));
+        assertTrue(nan.getMessage().contains("packed particle 3 of 10 non-finite"),
+                nan.getMessage());
+        IllegalArgumentException shortArrays = assertThrows(IllegalArgumentException.class,
+                () -> integrator.stepPacked(new float[30], new float[60], 20, 10, 1f, H));
+        assertTrue(shortArrays.getMessage().contains("positions must hold 3*stride = 60"),
+                shortArrays.getMessage());
+    }
+
     @Test
     void batchFarBeyondTheLimitStopsInsteadOfSpreadingNaN() {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(), new LinearDrag(10f));

@@ -89,6 +89,61 @@ class GroundBounceTest {
         }
     }
 
+    /**
+     * The first count particles of a layout with a larger stride bounce to the same bits, and
+     * give the same contacts, as the same particles packed alone; the slots beyond count are
+     * not touched.
+     */
+    @Test
+    void aStrideResolvesTheFirstParticlesAloneToTheSameBits() {
+        int count = 200;
+        int stride = 233;
+        java.util.SplittableRandom random = new java.util.SplittableRandom(5);
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        float[] before = new float[count];
+        for (int i = 0; i < 3 * count; ++i) {
+            // heights from 0 to 2r: about half in contact; velocities of both signs
+            positions[i] = (float) (2.0 * RADIUS * random.nextDouble());
+            velocities[i] = (float) (4.0 * random.nextDouble() - 2.0);
+        }
+        for (int i = 0; i < count; ++i) {
+            before[i] = velocities[count + i] + 0.1f;
+        }
+        float[] widePositions = new float[3 * stride];
+        float[] wideVelocities = new float[3 * stride];
+        java.util.Arrays.fill(widePositions, -1f);
+        for (int axis = 0; axis < 3; ++axis) {
+            System.arraycopy(positions, axis * count, widePositions, axis * stride, count);
+            System.arraycopy(velocities, axis * count, wideVelocities, axis * stride, count);
+        }
+        GroundBounce ground = new GroundBounce(RADIUS, 0.7f, 0.2f, true);
+        int[] touched = new int[count];
+        int[] wideTouched = new int[count];
+        int contacts = ground.resolve(positions, velocities, before, count, touched);
+        int wideContacts = ground.resolve(widePositions, wideVelocities, before, stride, count,
+                wideTouched);
+        assertTrue(contacts > count / 4 && contacts < count, "contacts " + contacts);
+        assertEquals(contacts, wideContacts, "contacts");
+        for (int c = 0; c < contacts; ++c) {
+            assertEquals(touched[c], wideTouched[c], "contact " + c);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int i = 0; i < stride; ++i) {
+                if (i < count) {
+                    assertEquals(positions[axis * count + i], widePositions[axis * stride + i],
+                            0f, "P" + axis + " of " + i);
+                    assertEquals(velocities[axis * count + i],
+                            wideVelocities[axis * stride + i], 0f, "V" + axis + " of " + i);
+                } else {
+                    // below the ground, so in contact if it were looked at
+                    assertEquals(-1f, widePositions[axis * stride + i], 0f, "slot " + i);
+                    assertEquals(0f, wideVelocities[axis * stride + i], 0f, "slot " + i);
+                }
+            }
+        }
+    }
+
     @Test
     void aParticleAtRestStaysExactlyAtRestWithTheRestingFix() {
         // Dormant fountain slots rely on this: V = 0 at y = r; the step gives it −g·h, the

@@ -1,0 +1,181 @@
+package particlelab.bench;
+
+import java.lang.invoke.MethodHandle;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.MethodType;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Two builds of the project side by side in one JVM: the same workloads ({@code MixBenchmark}'s
+ * single and bulk rows) of an older and a newer build, each loaded by a class loader of its
+ * own, timed in rotating rounds (the order of the two alternates from row to row and round to
+ * round) by the thread's CPU time, so time the machine gives to other jobs does not count.
+ * Prints each row's median ns per particle-step of both builds and the ratio newer ÷ older
+ * per round, min / median / max: a ratio is trusted only as far as the rows of code neither
+ * build changed (the primitive loop) stay near 1.
+ *
+ * <p>Usage: {@code CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS [MILLIS]]}, where each
+ * classes folder is a build's {@code build/classes/java/main}; jME's core jar comes from this
+ * JVM's class path. Defaults: 7 rounds of 300 ms per row and build. Run it with
+ * {@code --add-modules jdk.incubator.vector} to include the Vector API rows.
+ */
+public final class CompareBuilds {
+
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+    private static final String[] MIXES = {"gravity", "linear", "quadratic", "thrust-linear"};
+    private static final int[] COUNTS = {1000, 100_000};
+    /** The one-particle rows: the scene's method and the path's row name. */
+    private static final String[][] SINGLE = {
+        {"flySharedObjects", "shared-objects"},
+        {"flySharedWithRegime", "shared-objects-regime"},
+        {"flyPrimitiveLoop", "primitive-loop"},
+    };
+    /** The bulk rows. */
+    private static final String[][] BULK = {
+        {"stepSharedEach", "shared-objects"},
+        {"stepSharedBatch", "shared-batch"},
+        {"stepSharedBatchVector", "shared-batch-vector"},
+        {"stepPrimitiveLoop", "primitive-loop"},
+    };
+    /** Keeps the results alive so no work is dead code. */
+    private static volatile Object sink;
+
+    private CompareBuilds() {
+    }
+
+    /**
+     * Compare two builds.
+     *
+     * @param args the older and newer classes folders, then rounds and milliseconds per row
+     * @throws Throwable if a build cannot be loaded or a workload fails
+     */
+    public static void main(String[] args) throws Throwable {
+        if (args.length < 2) {
+            System.err.println("usage: CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS"
+                    + " [MILLIS]]");
+            System.exit(2);
+        }
+        int rounds = args.length > 2 ? Integer.parseInt(args[2]) : 7;
+        long budget = (args.length > 3 ? Long.parseLong(args[3]) : 300L) * 1_000_000L;
+        ClassLoader[] builds = {loader(args[0]), loader(args[1])};
+        List<String> names = new ArrayList<>();
+        List<MethodHandle[]> workloads = new ArrayList<>();
+        List<Integer> units = new ArrayList<>();
+        boolean vector = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
+        for (String mix : MIXES) {
+            for (String[] path : SINGLE) {
+                MethodHandle[] pair = new MethodHandle[2];
+                for (int b = 0; b < 2; ++b) {
+                    Object scene = scene(builds[b], "OneParticleMixScene", mix, -1);
+                    pair[b] = bind(scene, path[0]);
+                }
+                names.add("single/" + mix + "/" + path[1]);
+                workloads.add(pair);
+                units.add(1000);
+            }
+            for (int count : COUNTS) {
+                for (String[] path : BULK) {
+                    boolean vectorRow = path[0].endsWith("Vector");
+                    if (vectorRow && (!vector || !(mix.equals("gravity")
+                            || mix.equals("linear")))) {
+                        continue;
+                    }
+                    MethodHandle[] pair = new MethodHandle[2];
+                    for (int b = 0; b < 2; ++b) {
+                        pair[b] = bind(scene(builds[b], "BulkScene", mix, count), path[0]);
+                    }
+                    names.add("bulk/" + mix + "/" + path[1] + "/" + count);
+                    workloads.add(pair);
+                    units.add(count);
+                }
+            }
+        }
+        int rows = names.size();
+        double[][][] nanos = new double[rows][2][rounds];
+        for (int r = 0; r < rows; ++r) {
+            for (int b = 0; b < 2; ++b) {
+                time(workloads.get(r)[b], 2 * budget);
+            }
+        }
+        for (int round = 0; round < rounds; ++round) {
+            for (int r = 0; r < rows; ++r) {
+                int first = (round + r) % 2;
+                for (int k = 0; k < 2; ++k) {
+                    int b = (first + k) % 2;
+                    nanos[r][b][round] = time(workloads.get(r)[b], budget) / units.get(r);
+                }
+            }
+        }
+        System.out.printf("| row | older (ns) | newer (ns) | newer ÷ older per round:"
+                + " min / median / max |%n|---|---|---|---|%n");
+        for (int r = 0; r < rows; ++r) {
+            double[] ratio = new double[rounds];
+            for (int i = 0; i < rounds; ++i) {
+                ratio[i] = nanos[r][1][i] / nanos[r][0][i];
+            }
+            Arrays.sort(ratio);
+            String control = names.get(r).contains("primitive-loop") ? " (control)" : "";
+            System.out.printf("| `%s`%s | %.3f | %.3f | %.3f / **%.3f** / %.3f |%n",
+                    names.get(r), control, median(nanos[r][0]), median(nanos[r][1]), ratio[0],
+                    median(ratio), ratio[rounds - 1]);
+        }
+    }
+
+    private static ClassLoader loader(String classes) throws Exception {
+        Path folder = Paths.get(classes);
+        if (!Files.isDirectory(folder.resolve("particlelab"))) {
+            throw new IllegalArgumentException("not a build's classes folder (no particlelab/"
+                    + " in it): " + classes);
+        }
+        URL jme = com.jme3.math.Vector3f.class.getProtectionDomain().getCodeSource()
+                .getLocation();
+        return new URLClassLoader(new URL[] {folder.toUri().toURL(), jme},
+                ClassLoader.getPlatformClassLoader());
+    }
+
+    private static Object scene(ClassLoader build, String name, String mix, int count)
+            throws Exception {
+        Class<?> mixes = build.loadClass("particlelab.accuracy.ForceMix");
+        Object forces = mixes.getMethod("named", String.class).invoke(null, mix);
+        Class<?> type = build.loadClass("particlelab.accuracy." + name);
+        return count < 0 ? type.getConstructor(mixes).newInstance(forces)
+                : type.getConstructor(mixes, int.class).newInstance(forces, count);
+    }
+
+    private static MethodHandle bind(Object scene, String method) throws Exception {
+        java.lang.reflect.Method found = scene.getClass().getMethod(method);
+        return MethodHandles.publicLookup().unreflect(found).bindTo(scene)
+                .asType(MethodType.methodType(Object.class));
+    }
+
+    /** The CPU time of one call, over calls that fill the budget (ns). */
+    private static double time(MethodHandle workload, long budgetNanos) throws Throwable {
+        long start = THREADS.getCurrentThreadCpuTime();
+        long calls = 0;
+        long now;
+        do {
+            for (int i = 0; i < 16; ++i) {
+                sink = workload.invoke();
+            }
+            calls += 16;
+            now = THREADS.getCurrentThreadCpuTime();
+        } while (now - start < budgetNanos);
+        return (double) (now - start) / calls;
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+}
