@@ -23,7 +23,8 @@ import java.util.List;
  * per round, min / median / max: a ratio is trusted only as far as the rows of code neither
  * build changed (the primitive loop) stay near 1.
  *
- * <p>Usage: {@code CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS [MILLIS]]}, where each
+ * <p>Usage: {@code CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS [MILLIS [REGEX]]]}, where
+ * REGEX keeps only the rows whose name it finds (default: every row), and each
  * classes folder is a build's {@code build/classes/java/main}; jME's core jar comes from this
  * JVM's class path. Defaults: 7 rounds of 300 ms per row and build. Run it with
  * {@code --add-modules jdk.incubator.vector} to include the Vector API rows.
@@ -61,11 +62,13 @@ public final class CompareBuilds {
     public static void main(String[] args) throws Throwable {
         if (args.length < 2) {
             System.err.println("usage: CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS"
-                    + " [MILLIS]]");
+                    + " [MILLIS [REGEX]]]");
             System.exit(2);
         }
         int rounds = args.length > 2 ? Integer.parseInt(args[2]) : 7;
         long budget = (args.length > 3 ? Long.parseLong(args[3]) : 300L) * 1_000_000L;
+        java.util.regex.Pattern keep = java.util.regex.Pattern.compile(
+                args.length > 4 ? args[4] : "");
         ClassLoader[] builds = {loader(args[0]), loader(args[1])};
         List<String> names = new ArrayList<>();
         List<MethodHandle[]> workloads = new ArrayList<>();
@@ -73,6 +76,9 @@ public final class CompareBuilds {
         boolean vector = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
         for (String mix : MIXES) {
             for (String[] path : SINGLE) {
+                if (!keep.matcher("single/" + mix + "/" + path[1]).find()) {
+                    continue;
+                }
                 MethodHandle[] pair = new MethodHandle[2];
                 for (int b = 0; b < 2; ++b) {
                     Object scene = scene(builds[b], "OneParticleMixScene", mix, -1);
@@ -86,7 +92,8 @@ public final class CompareBuilds {
                 for (String[] path : BULK) {
                     boolean vectorRow = path[0].endsWith("Vector");
                     if (vectorRow && (!vector || !(mix.equals("gravity")
-                            || mix.equals("linear")))) {
+                            || mix.equals("linear")))
+                            || !keep.matcher("bulk/" + mix + "/" + path[1] + "/" + count).find()) {
                         continue;
                     }
                     MethodHandle[] pair = new MethodHandle[2];

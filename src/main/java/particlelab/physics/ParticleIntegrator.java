@@ -83,7 +83,7 @@ public final class ParticleIntegrator {
         folded = new FoldedForces(this.forces);
         others = FoldedForces.others(this.forces);
         limits = new StepLimits(folded, others);
-        packed = new PackedStep(folded, this);
+        packed = new PackedStep(folded, limits, this);
     }
 
     /**
@@ -157,7 +157,7 @@ public final class ParticleIntegrator {
      */
     public void stepPacked(float[] positions, float[] velocities, int count, float massKg,
             float stepSeconds) {
-        stepPacked(positions, velocities, count, count, massKg, stepSeconds);
+        packed.step(positions, velocities, count, count, massKg, stepSeconds);
     }
 
     /**
@@ -177,14 +177,6 @@ public final class ParticleIntegrator {
      */
     public void stepPacked(float[] positions, float[] velocities, int stride, int count,
             float massKg, float stepSeconds) {
-        PackedStep.checkArrays(positions, velocities, stride, count);
-        Particle.checkMass(massKg);
-        Validate.nonNegative(stepSeconds, "step h (s)");
-        if (stepSeconds == 0f || count == 0) {
-            return;
-        }
-        folded.refoldIfStale();
-        limits.remember(stepSeconds, massKg);
         packed.step(positions, velocities, stride, count, massKg, stepSeconds);
     }
 

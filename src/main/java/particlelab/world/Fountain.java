@@ -15,7 +15,7 @@ import particlelab.physics.ParticleIntegrator;
  * <li>the Euler step of every slot of the pool, gravity and linear drag
  * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V});</li>
  * <li>the ground: restitution e with Cyclone's resting fix ({@link GroundBounce}: one
- * branch-free pass that finds the particles in contact, then the rule on those alone);</li>
+ * pass that finds the particles in contact, then the rule on those alone);</li>
  * <li>the lifecycle, on the particles it concerns and no others: water in contact whose
  * rebound is slower than {@link #REST_SPEED} (it no longer bounces: it joins the puddle), or
  * that has left the region or outlived {@link #MAX_AGE_SECONDS}, goes back to the pool, found
@@ -40,9 +40,9 @@ import particlelab.physics.ParticleIntegrator;
  * Euler step too: {@link ParticleIntegrator#stepPacked(float[], float[], int, int, float,
  * float)} with the pool as the stride). A particle going back to the pool takes the last one
  * in flight into its slot; a new one takes the first dormant slot. A twentieth of the pool is
- * kept for the fireworks: water takes a slot only while more are free. Nothing decays for ever (every particle in flight is
- * recycled within {@link #MAX_AGE_SECONDS}), so no velocity becomes a subnormal float (see
- * {@code docs/numerics.md}). A step allocates nothing.
+ * kept for the fireworks: water takes a slot only while more are free. Nothing decays for
+ * ever (every particle in flight is recycled within {@link #MAX_AGE_SECONDS}), so no velocity
+ * becomes a subnormal float (see {@code docs/numerics.md}). A step allocates nothing.
  */
 public final class Fountain implements StateRecord {
 
@@ -225,13 +225,13 @@ public final class Fountain implements StateRecord {
 
     /**
      * Count the ints of the fountain's state: every slot's P, V, kind, birth, fuses and
-     * colour, the free list, the fireworks' list, the bursts waiting, the counters.
+     * colour, how many are in flight, the fireworks' list, the bursts waiting, the counters.
      *
      * @return the count (&gt;0, fixed by the pool size)
      */
     @Override
     public int countStateInts() {
-        return 3 * capacity + 3 * capacity + 5 * capacity + 1 + capacity + 1 + capacity
+        return 3 * capacity + 3 * capacity + 5 * capacity + 1 + 1 + capacity
                 + liveByKind.length + 1 + burstKinds.length + burstStates.length
                 + burstColours.length + 2 + 1 + 1 + 1 + 1 + 2 + 2 + 4 * 2 + 2;
     }
@@ -254,8 +254,7 @@ public final class Fountain implements StateRecord {
         slab.putFloats(fuses, 0, capacity);
         slab.putFloats(fusesLeft, 0, capacity);
         slab.putInts(colours, 0, capacity);
-        slab.putInt(freeCount);
-        slab.putInts(free, 0, freeCount);
+        slab.putInt(live);
         slab.putInt(fireworkCount);
         slab.putInts(fireworkSlots, 0, fireworkCount);
         for (int i = 0; i < liveByKind.length; ++i) {
@@ -298,10 +297,13 @@ public final class Fountain implements StateRecord {
         slab.getFloats(fuses, 0, capacity);
         slab.getFloats(fusesLeft, 0, capacity);
         slab.getInts(colours, 0, capacity);
-        freeCount = slab.getInt();
-        slab.getInts(free, 0, freeCount);
+        live = slab.getInt();
         fireworkCount = slab.getInt();
         slab.getInts(fireworkSlots, 0, fireworkCount);
+        Arrays.fill(fireworkEntries, -1);
+        for (int k = 0; k < fireworkCount; ++k) {
+            fireworkEntries[fireworkSlots[k]] = k;
+        }
         for (int i = 0; i < liveByKind.length; ++i) {
             liveByKind[i] = slab.getInt();
         }
