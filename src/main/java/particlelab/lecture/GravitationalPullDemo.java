@@ -68,4 +68,15 @@ public final class GravitationalPullDemo extends DemoState {
         TextFormat.appendFixed(text, 2f * shownVelocity.y / g, 2)
                 .append(" s (continuous)\n");
     }
+
+    /** The slide: g alone changes V, only its y; the ball's V now. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        particlelab.physics.Particle ball = getParticles().get(0).getParticle();
+        DemoParameter.appendShort(slide.formula().append("a = g:  V += h·g,  P += h·V,   g = "),
+                getParameters().getValue("g"), 2).append(" m/s²");
+        StringBuilder readout = slide.readout().append("V = ");
+        TextFormat.appendVector(readout, ball.velocity, 2).append(" m/s   at t = ");
+        TextFormat.appendFixed(readout, getClock().getSimulatedSeconds(), 2).append(" s");
+    }
 }

@@ -396,4 +396,21 @@ public final class HelloAimingDemo extends DemoState {
         predictedAim = aim;
         predictedG = g;
     }
+
+    /** The slide: the aim formula with its vx and vy; the last shot's miss. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        StringBuilder formula = slide.formula().append(getAim() == Aim.LECTURE
+                ? "lecture  vy = g·S/(2·vx) = " : "discrete  vy = g·(S/vx + h)/2 = ");
+        TextFormat.appendFixed(formula, getVerticalSpeed(), 3).append(" m/s,   vx = ");
+        TextFormat.appendFixed(formula, getHorizontalSpeed(), 1).append(" m/s");
+        StringBuilder readout = slide.readout();
+        if (getLandedShotNumber() == 0) {
+            readout.append("shot ").append(getShotNumber()).append(" in the air");
+        } else {
+            readout.append("shot ").append(getLandedShotNumber()).append(":  miss ");
+            TextFormat.appendFixed(readout, getLastLandingX() - TARGET_DISTANCE, 3)
+                    .append(" m");
+        }
+    }
 }
