@@ -362,6 +362,26 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Append a particle's state for a slide ({@link #writePresentation}) as its HUD line shows
+     * it on the same frame: its speed while it flies ("11.84 m/s"), where it landed once it
+     * has ("at x = 9.81 m", the HUD's landing x, which is the range Euler gives for a launch
+     * from x = 0). Allocates nothing.
+     *
+     * @param text where to append (not null, modified)
+     * @param particle one of the demo's particles (not null)
+     * @return text
+     */
+    protected static StringBuilder appendSpeedOrLanding(StringBuilder text,
+            DemoParticle particle) {
+        if (particle.hasLanded()) {
+            return TextFormat.appendFixed(text.append("at x = "), particle.getLandingX(), 2)
+                    .append(" m");
+        }
+        return TextFormat.appendFixed(text, particle.getParticle().velocity.length(), 2)
+                .append(" m/s");
+    }
+
+    /**
      * Choose the region of the x-y plane the camera frames, the grid and the sphere size.
      *
      * @param xMin the left edge (in metres)

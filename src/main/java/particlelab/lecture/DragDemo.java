@@ -92,7 +92,7 @@ public final class DragDemo extends DemoState {
         DemoParameter.appendShort(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
     }
 
-    /** The slide: the two drag laws with b/m and c/m; the three speeds now. */
+    /** The slide: the two drag laws with b/m and c/m; the three speeds (or landings). */
     @Override
     protected void writePresentation(particlelab.demo.Presentation slide) {
         java.util.List<particlelab.demo.DemoParticle> balls = getParticles();
@@ -103,12 +103,9 @@ public final class DragDemo extends DemoState {
         particlelab.view.TextFormat.appendFixed(slide.formula()
                 .append("quadratic:  a = g - (c/m)|V|V,   c/m = "),
                 quadraticDrag.getCoefficient() / mass, 3).append(" /m");
-        StringBuilder readout = slide.readout().append("|V|:  gravity only ");
-        particlelab.view.TextFormat.appendFixed(readout,
-                balls.get(0).getParticle().velocity.length(), 2).append(",  linear ");
-        particlelab.view.TextFormat.appendFixed(readout,
-                balls.get(1).getParticle().velocity.length(), 2).append(",  quadratic ");
-        particlelab.view.TextFormat.appendFixed(readout,
-                balls.get(2).getParticle().velocity.length(), 2).append(" m/s");
+        StringBuilder readout = slide.readout().append("gravity only ");
+        appendSpeedOrLanding(readout, balls.get(0)).append(",  linear ");
+        appendSpeedOrLanding(readout, balls.get(1)).append(",  quadratic ");
+        appendSpeedOrLanding(readout, balls.get(2));
     }
 }

@@ -86,17 +86,15 @@ public final class ThrustDemo extends DemoState {
                 .append(" N along the sphere's OWN velocity\n");
     }
 
-    /** The slide: thrust along the sphere's own velocity against drag; both speeds now. */
+    /** The slide: thrust along its own velocity against drag; both speeds (or landings). */
     @Override
     protected void writePresentation(Presentation slide) {
         StringBuilder formula = slide.formula().append("a = g - (b/m)V + (k/m)V/|V|,   b = ");
         DemoParameter.appendShort(formula, drag.getCoefficient(), 2).append(" N s/m,  k = ");
         DemoParameter.appendShort(formula, thrust.getMagnitude(), 2).append(" N");
         List<DemoParticle> spheres = getParticles();
-        StringBuilder readout = slide.readout().append("|V|:  pull + drag ");
-        TextFormat.appendFixed(readout, spheres.get(0).getParticle().velocity.length(), 2)
-                .append(",  with thrust ");
-        TextFormat.appendFixed(readout, spheres.get(1).getParticle().velocity.length(), 2)
-                .append(" m/s");
+        StringBuilder readout = slide.readout().append("pull + drag ");
+        appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
+        appendSpeedOrLanding(readout, spheres.get(1));
     }
 }

@@ -291,10 +291,10 @@ public final class TunnellingDemo extends DemoState {
         StringBuilder formula = slide.formula().append("overlap test misses when v h > 2r + d:"
                 + "   v h = ");
         TextFormat.appendFixed(formula, speed * h, 3).append(" m");
-        TextFormat.appendFixed(slide.formula().append("2r + d = "), 2f * RADIUS + THICKNESS, 3)
-                .append(" m,   miss probability ");
-        TextFormat.appendFixed(slide.formula(), wall.overlapMissProbability(RADIUS, speed, h),
-                3);
+        StringBuilder second = slide.formula().append("2r + d = ");
+        TextFormat.appendFixed(second, 2f * RADIUS + THICKNESS, 3).append(" m,   miss"
+                + " probability ");
+        TextFormat.appendFixed(second, wall.overlapMissProbability(RADIUS, speed, h), 3);
         StringBuilder readout = slide.readout().append("overlap test, ball passed through the"
                 + " wall: ");
         if (overlap.shots == 0) {
