@@ -422,8 +422,12 @@ public final class BounceDemo extends DemoState {
             return;
         }
         float before = count == 1 ? DROP_HEIGHT : recorder.getApex(count - 2);
-        readout.append("apex ").append(count).append(" / apex ").append(count - 1)
-                .append(" = ");
+        if (count == 1) {
+            readout.append("apex 1 / h0 = ");
+        } else {
+            readout.append("apex ").append(count).append(" / apex ").append(count - 1)
+                    .append(" = ");
+        }
         TextFormat.appendFixed(readout, recorder.getApex(count - 1) / before, 3)
                 .append("   (e² = ");
         TextFormat.appendFixed(readout, e * e, 3).append(')');
