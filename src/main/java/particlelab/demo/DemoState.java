@@ -364,7 +364,7 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Append a particle's state for a slide ({@link #writePresentation}) as its HUD line shows
      * it on the same frame: its speed while it flies ("11.84 m/s"), where it landed once it
-     * has ("at x = 9.81 m", the HUD's landing x, which is the range Euler gives for a launch
+     * has ("x = 9.81 m", the HUD's landing x, which is the range Euler gives for a launch
      * from x = 0). Allocates nothing.
      *
      * @param text where to append (not null, modified)
@@ -374,7 +374,7 @@ public abstract class DemoState extends BaseAppState {
     protected static StringBuilder appendSpeedOrLanding(StringBuilder text,
             DemoParticle particle) {
         if (particle.hasLanded()) {
-            return TextFormat.appendFixed(text.append("at x = "), particle.getLandingX(), 2)
+            return TextFormat.appendFixed(text.append("x = "), particle.getLandingX(), 2)
                     .append(" m");
         }
         return TextFormat.appendFixed(text, particle.getParticle().velocity.length(), 2)
