@@ -56,6 +56,8 @@ public final class DemoCommand {
     private static final float MAX_FIXED_TPF = 1f;
     private static final String WINDOW = "--window";
     private static final String UI_SCALE = "--ui-scale";
+    /** Open the window in presentation mode (F8 in the window). */
+    static final String PRESENT = "--present";
     private static final String SET = "--set";
     private static final String PARTICLES = "--particles";
     private static final String PROFILE = "--profile";
@@ -111,6 +113,7 @@ public final class DemoCommand {
         Path exportFolder = null;
         boolean force;
         float uiScale;
+        boolean present;
         List<String> settings;
         int particles;
         try {
@@ -144,6 +147,12 @@ public final class DemoCommand {
             }
             window = parseWindow(options.string(WINDOW, null));
             uiScale = parseUiScale(options);
+            present = options.has(PRESENT);
+            if (present && options.has(ExportRun.EXPORT) && !options.has(SCREENSHOT)) {
+                throw new UsageException(PRESENT + ": shows the window in presentation mode,"
+                        + " but " + ExportRun.EXPORT + " without " + SCREENSHOT + " runs with"
+                        + " no window; add " + SCREENSHOT + " FILE or drop " + PRESENT);
+            }
             if (options.has(ExportRun.EXPORT) && frames == 0) {
                 throw new UsageException(ExportRun.EXPORT + ": needs " + FRAMES + " N, so the"
                         + " app knows when to write the files");
@@ -209,8 +218,8 @@ public final class DemoCommand {
         int status = exportFolder != null && screenshot == null
                 ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, force,
                         out, err)
-                : openWindow(demos, index, frames, screenshot, fixedTpf, uiScale, exportFolder,
-                        force, out, err);
+                : openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
+                        uiScale, present, exportFolder, force, out, err);
         if (status != OK) {
             // A run that failed (no display, say) leaves no empty folder it made.
             SafeFiles.removeCreated(exportFolder, createdForExport);
@@ -386,6 +395,10 @@ public final class DemoCommand {
                         + " window (" + HudScale.MIN_FACTOR + " <= S <= " + HudScale.MAX_FACTOR
                         + ", default 1; the F9 and F10 keys change it by "
                         + HudScale.FACTOR_STEP + ")")
+                .flag(PRESENT, "open in presentation mode: the scene large, the HUD reduced to"
+                        + " the demo's title, its formula lines and readout in large type;"
+                        + " F8 gives the full HUD back (and presentation mode again), and it"
+                        + " stays on across demos")
                 .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
                         + " every particle's trajectory since its launch as DIR/<particle>.csv"
                         + " (the header and numbers of particle-lab trajectory), or the demo's"
@@ -465,7 +478,7 @@ public final class DemoCommand {
             float fixedTpf, float uiScale, Path exportFolder, boolean replace, PrintStream out,
             PrintStream err) {
         return openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
-                uiScale, exportFolder, replace, out, err);
+                uiScale, false, exportFolder, replace, out, err);
     }
 
     /**
@@ -479,6 +492,7 @@ public final class DemoCommand {
      * @param screenshot the PNG to write, or null
      * @param fixedTpf the fixed frame time, or NaN
      * @param uiScale the user's factor on the HUD scale
+     * @param present true to open in presentation mode ({@code --present})
      * @param exportFolder where to export the trajectories when the window closes, or null
      * @param replace true if the screenshot and the export may replace existing files
      * @param out where results go (not null)
@@ -486,8 +500,8 @@ public final class DemoCommand {
      * @return the exit status
      */
     static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
-            File screenshot, float fixedTpf, float uiScale, Path exportFolder, boolean replace,
-            PrintStream out, PrintStream err) {
+            File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
+            boolean replace, PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println("particle-lab: cannot open the window: " + noDisplay);
@@ -505,6 +519,7 @@ public final class DemoCommand {
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, screenshot, fixedTpf,
                 noAudio == null);
         app.getWindowControls().setUiFactor(uiScale);
+        app.getWindowControls().setPresenting(present);
         if (tourStop != TourGuide.NOT_TOURING) {
             // index is the stop's demo, so the window opens on it.
             app.getTour().go(tourStop);

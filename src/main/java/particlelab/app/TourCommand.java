@@ -35,6 +35,7 @@ public final class TourCommand {
     private static final float MAX_FIXED_TPF = 1f;
     private static final String WINDOW = "--window";
     private static final String UI_SCALE = "--ui-scale";
+    private static final String PRESENT = DemoCommand.PRESENT;
 
     private TourCommand() {
     }
@@ -62,6 +63,9 @@ public final class TourCommand {
                 .value(UI_SCALE, "S", "make the HUD's text S times the size that suits the"
                         + " window (" + HudScale.MIN_FACTOR + " <= S <= " + HudScale.MAX_FACTOR
                         + ", default 1)")
+                .flag(PRESENT, "run the tour in presentation mode: the scene large, the HUD"
+                        + " reduced to the demo's title, its formula lines and readout in large"
+                        + " type; it stays on from stop to stop, F8 gives the full HUD back")
                 .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " replace an existing regular"
                         + " file")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
@@ -142,7 +146,7 @@ public final class TourCommand {
         List<DemoState> demos = DemoCatalog.createAll();
         int demoIndex = DemoCatalog.indexOf(stops.get(stop).getDemo());
         int status = DemoCommand.openWindow(demos, demoIndex, stop, frames, screenshot,
-                fixedTpf, uiScale, null, force, out, err);
+                fixedTpf, uiScale, options.has(PRESENT), null, force, out, err);
         if (status != DemoCommand.OK && shotFolder != null) {
             SafeFiles.removeCreated(shotFolder, created);
         }

@@ -31,6 +31,11 @@ public final class WindowControls extends BaseAppState {
     private final DemoSwitcher switcher;
     private final List<KeyBinding> bindings;
     private float uiFactor = 1f;
+    /** Presentation mode, for every demo shown. */
+    private boolean presenting;
+    /** The demo last put in {@link #presenting}'s mode, and that mode. */
+    private DemoState presentedDemo;
+    private boolean presentedMode;
     private boolean fullscreenRequested;
     private int windowedWidth;
     private int windowedHeight;
@@ -52,7 +57,11 @@ public final class WindowControls extends BaseAppState {
                 new KeyBinding(KeyInput.KEY_F10, "F10", larger.toString(),
                         () -> changeFactor(1)),
                 new KeyBinding(KeyInput.KEY_F9, "F9", smaller.toString(),
-                        () -> changeFactor(-1)));
+                        () -> changeFactor(-1)),
+                new KeyBinding(KeyInput.KEY_F8, "F8", "presentation mode <-> full HUD: the"
+                        + " scene large, the title, the slide's formulas and readout in large"
+                        + " type (stays on across demos and tour stops)",
+                        () -> presenting = !switcher.getSelected().isPresenting()));
     }
 
     /**
@@ -85,6 +94,25 @@ public final class WindowControls extends BaseAppState {
     }
 
     /**
+     * Return whether the window is in presentation mode.
+     *
+     * @return true if presenting
+     */
+    public boolean isPresenting() {
+        return presenting;
+    }
+
+    /**
+     * Switch presentation mode on or off for every demo; the demo on screen follows on the
+     * next update, and each demo switched to after it.
+     *
+     * @param on true for presentation mode
+     */
+    public void setPresenting(boolean on) {
+        presenting = on;
+    }
+
+    /**
      * Ask for fullscreen if windowed, or the window if fullscreen; done on the next update.
      */
     public void requestFullscreenToggle() {
@@ -114,6 +142,12 @@ public final class WindowControls extends BaseAppState {
             toggleFullscreen();
         }
         DemoState demo = switcher.getSelected();
+        if (demo.isInitialized() && (demo != presentedDemo || presenting != presentedMode)) {
+            // A new demo on screen (Tab, digits, a tour stop) or F8: the demo takes the mode.
+            demo.setPresenting(presenting);
+            presentedDemo = demo;
+            presentedMode = presenting;
+        }
         Camera camera = getApplication().getCamera();
         int width = camera.getWidth();
         int height = camera.getHeight();

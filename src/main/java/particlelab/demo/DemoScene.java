@@ -372,6 +372,8 @@ final class DemoScene {
         hudRects.add(hud.getBody());
         hudRects.add(hud.getWarning());
         hudRects.add(hud.getFooter());
+        // Presentation mode's readout strip (empty in the full HUD).
+        hudRects.add(hud.getReadout());
         // The side panel's and the graph's slots (empty, covering nothing, when not asked for).
         hudRects.add(hud.getSidePanel());
         hudRects.add(hud.getGraph());

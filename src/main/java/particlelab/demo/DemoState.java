@@ -52,6 +52,9 @@ import particlelab.lecture.DragDemo;
  * may change (the panel, its keys and {@code --set} are built from them).</li>
  * <li>{@link #writeHudLines(StringBuilder)}: append the demo's own HUD lines (use
  * {@link TextFormat} for numbers: it allocates nothing).</li>
+ * <li>{@link #writePresentation(Presentation)}: the slide presentation mode shows (F8,
+ * {@code --present}): one or two formula lines with their live numbers and the one readout
+ * the slide is about, from the demo's own numbers.</li>
  * <li>{@link #afterStep(float)} and {@link #onRestart()}: react to each step, and to a
  * reset.</li>
  * <li>Collisions: add a rule to {@link #getWorld()} ({@link World#addRule}, e.g. a
@@ -189,6 +192,10 @@ public abstract class DemoState extends BaseAppState {
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
     private final StringBuilder titleText = new StringBuilder(64);
+    /** Presentation mode's slide, written every frame while presenting. */
+    private final Presentation presentation = new Presentation();
+    /** True in presentation mode: the scene large, the HUD reduced to the slide. */
+    private boolean presenting;
     /** The demo's place in the catalogue, shown before the title (0: none). */
     private int catalogNumber;
     /** A short note after the title ({@link #setTitleNote}), or null. */
@@ -328,6 +335,28 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Write the slide presentation mode shows (F8, {@code --present}) beside the title: one
+     * or two key formula lines with their live numbers ({@link Presentation#formula()}) and
+     * the one readout the slide is about ({@link Presentation#readout()}), each one line, in
+     * large type. Write them from the same numbers the HUD lines show, so the two agree on
+     * every frame. Called every frame while presenting: append with {@link TextFormat} and
+     * constant strings, so nothing is allocated. The default shows the first equation line
+     * and the first particle's speed; every catalogue demo writes its own.
+     *
+     * @param slide where to write (not null, emptied before the call)
+     */
+    protected void writePresentation(Presentation slide) {
+        String equations = hudWriter.getEquations();
+        int end = equations.indexOf('\n');
+        slide.formula().append(equations, 0, end < 0 ? equations.length() : end);
+        if (!particles.isEmpty()) {
+            DemoParticle first = particles.get(0);
+            TextFormat.appendFixed(slide.readout().append(first.getLabel()).append(":  |V| = "),
+                    first.getParticle().velocity.length(), 2).append(" m/s");
+        }
+    }
+
+    /**
      * Act at the start of a step, before anything moves: the place to relaunch a shot that
      * {@link #afterStep} found due (a new launch is a restart of the body, done before the
      * step as a script moves a kinematic body). The default does nothing.
@@ -387,6 +416,26 @@ public abstract class DemoState extends BaseAppState {
         DemoParticle particle = new DemoParticle(label, color, body, this::joinGroundStop);
         particles.add(particle);
         return particle;
+    }
+
+    /**
+     * Append a particle's state for a slide ({@link #writePresentation}) as its HUD line shows
+     * it on the same frame: its speed while it flies ("11.84 m/s"), where it landed once it
+     * has ("x = 9.81 m", the HUD's landing x, which is the range Euler gives for a launch
+     * from x = 0). Allocates nothing.
+     *
+     * @param text where to append (not null, modified)
+     * @param particle one of the demo's particles (not null)
+     * @return text
+     */
+    protected static StringBuilder appendSpeedOrLanding(StringBuilder text,
+            DemoParticle particle) {
+        if (particle.hasLanded()) {
+            return TextFormat.appendFixed(text.append("x = "), particle.getLandingX(), 2)
+                    .append(" m");
+        }
+        return TextFormat.appendFixed(text, particle.getParticle().velocity.length(), 2)
+                .append(" m/s");
     }
 
     /**
@@ -1082,6 +1131,43 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Switch presentation mode on or off: the scene large (at least 75 % of the window), the
+     * HUD reduced to the title, the slide's formula lines and its readout in large type
+     * ({@link #writePresentation}), and a footer saying which key gives the full HUD back.
+     * The application's F8 and {@code --present} call it, and keep it on across demos and
+     * tour stops. Before initialisation it is remembered and applied when the window comes.
+     *
+     * @param on true for presentation mode
+     */
+    public void setPresenting(boolean on) {
+        if (on == presenting) {
+            return;
+        }
+        presenting = on;
+        if (hud != null) {
+            applyPresentation();
+        }
+    }
+
+    /** @return true in presentation mode */
+    public boolean isPresenting() {
+        return presenting;
+    }
+
+    /**
+     * Write the slide presentation mode shows now, without allocating: what the HUD shows
+     * each frame while presenting (for tests: the same numbers as {@link #formatHud}).
+     *
+     * @return the slide (live: rewritten by the next call or frame)
+     */
+    public Presentation formatPresentation() {
+        ensureScene();
+        presentation.clear();
+        writePresentation(presentation);
+        return presentation;
+    }
+
+    /**
      * Show lines after the demo's own on its HUD, e.g. a tour stop's "what to watch for".
      *
      * @param newNote writes the lines from the demo's numbers, or null for none
@@ -1089,6 +1175,10 @@ public abstract class DemoState extends BaseAppState {
     public void setNote(HudNote newNote) {
         note = newNote;
         hudDirty = true;
+        if (hud != null && presenting) {
+            // On a tour stop the footer names the tour's keys too.
+            hud.setFooter(buildPresentationFooter());
+        }
     }
 
     /** @return the lines shown after the demo's own, or null if none */
@@ -1222,6 +1312,9 @@ public abstract class DemoState extends BaseAppState {
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
         scene.updateViews();
+        if (presenting) {
+            applyPresentation();
+        }
     }
 
     @Override
@@ -1267,7 +1360,13 @@ public abstract class DemoState extends BaseAppState {
         if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
             hudAgeSeconds = 0f;
             hudDirty = false;
-            hud.setBody(formatHud(hudText));
+            if (presenting) {
+                formatPresentation();
+                hud.setBody(presentation.getFormulas());
+                hud.setReadout(presentation.getReadout());
+            } else {
+                hud.setBody(formatHud(hudText));
+            }
             hud.setWarning(warnings.format(warningText));
             if (hud.takeLayoutChange()) {
                 // The body needed a line more: the scene's area shrank.
@@ -1279,6 +1378,56 @@ public abstract class DemoState extends BaseAppState {
     }
 
     // ---------------------------------------------------------------- private helpers ----
+
+    /**
+     * Lay the HUD out for the mode now chosen: presentation's slide or the full HUD, its
+     * footer, the scale that suits the window for it, and the scene for the new area.
+     */
+    private void applyPresentation() {
+        hud.setPresenting(presenting);
+        hud.setFooter(presenting ? buildPresentationFooter() : keys.buildFooter());
+        if (presenting) {
+            formatPresentation();
+            hud.setBody(presentation.getFormulas());
+            hud.setReadout(presentation.getReadout());
+        } else {
+            hud.setBody(formatHud(hudText));
+        }
+        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
+        hud.takeLayoutChange();
+        scene.layOut(hud.getLayout());
+        scene.updateViews();
+        if (isEnabled()) {
+            frameCamera();
+        }
+        hudDirty = true;
+    }
+
+    /**
+     * Presentation mode's footer, one short line: the key back to the full HUD and, on a
+     * tour stop, the tour's keys (both the application's, found by their keys).
+     */
+    private String buildPresentationFooter() {
+        StringBuilder footer = new StringBuilder();
+        appendApplicationKey(footer, KeyInput.KEY_F8, "full HUD");
+        if (note != null) {
+            appendApplicationKey(footer, KeyInput.KEY_PGDN, "next stop");
+            appendApplicationKey(footer, KeyInput.KEY_PGUP, "previous stop");
+        }
+        return footer.toString();
+    }
+
+    /** Append an application key's label and what it does here, if the application has it. */
+    private void appendApplicationKey(StringBuilder footer, int keyCode, String what) {
+        for (int i = 0; i < applicationBindings.size(); ++i) {
+            KeyBinding binding = applicationBindings.get(i);
+            if (binding.getKeyCode(0) == keyCode) {
+                footer.append(footer.length() == 0 ? "" : "     ")
+                        .append(binding.getKeyLabel()).append("  ").append(what);
+                return;
+            }
+        }
+    }
 
     /**
      * The controls every demo shares. The footer, the help and the HUD's key hints are all

@@ -104,6 +104,15 @@ final class HudWriter {
     }
 
     /**
+     * Return the equations shown at the top.
+     *
+     * @return the lines, each ending in a newline (not null)
+     */
+    String getEquations() {
+        return equations;
+    }
+
+    /**
      * Name the keys the time line mentions.
      *
      * @param pause pause / resume (not null)

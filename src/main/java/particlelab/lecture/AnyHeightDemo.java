@@ -9,6 +9,7 @@ import particlelab.collision.Plane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.CurveView;
@@ -485,5 +486,30 @@ public final class AnyHeightDemo extends DemoState {
                     GRAVITY));
         }
         envelope.setPoints(curveX, curveY, CURVE_POINTS);
+    }
+
+    /** The slide: the two angles of the fixed speed; how far each arc is off the target. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        slide.formula().append("tan θ = (s² ± √(s⁴ − g·(g·x² + 2·y·s²)))/(g·x)");
+        StringBuilder formula = slide.formula().append("s = ");
+        TextFormat.appendFixed(formula, LAUNCH_SPEED, 0).append(" m/s,  x = ");
+        TextFormat.appendFixed(formula, targetDistance, 0).append(" m,  y = ");
+        TextFormat.appendFixed(formula, targetHeight, 0).append(" m");
+        StringBuilder readout = slide.readout();
+        if (!angles.isReachable()) {
+            readout.append("OUT OF REACH: above the envelope");
+            return;
+        }
+        for (int i = 0; i < 2; ++i) {
+            Shot shot = i == 0 ? low : high;
+            readout.append(i == 0 ? "low arc " : ",   high arc ");
+            if (!shot.arrived) {
+                readout.append(shot.particle.isHeld() ? "came down" : "in flight");
+            } else {
+                TextFormat.appendFixed(readout.append("off by "),
+                        shot.arrivalHeight - targetHeight, 3).append(" m");
+            }
+        }
     }
 }

@@ -586,4 +586,31 @@ public final class BounceDemo extends DemoState {
         response.setRestitution(getRestitution());
         response.setThresholdSpeed(THRESHOLDS[thresholdPreset]);
     }
+
+    /** The slide: the impact law and the apex it predicts; the latest apex ratio. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        float e = getRestitution();
+        TextFormat.appendFixed(slide.formula().append("impact: v_n' = -e v_n,   e = "), e, 1)
+                .append(";   apex h_n = e^2n h0");
+        StringBuilder readout = slide.readout();
+        // the table's lane, the one the HUD's apex table shows
+        BounceRecorder recorder = getRecorder();
+        int count = recorder.countApexes();
+        if (count == 0) {
+            TextFormat.appendFixed(readout.append("apex ratio: no bounce yet   (e² = "), e * e, 3)
+                    .append(')');
+            return;
+        }
+        float before = count == 1 ? DROP_HEIGHT : recorder.getApex(count - 2);
+        if (count == 1) {
+            readout.append("apex 1 / h0 = ");
+        } else {
+            readout.append("apex ").append(count).append(" / apex ").append(count - 1)
+                    .append(" = ");
+        }
+        TextFormat.appendFixed(readout, recorder.getApex(count - 1) / before, 3)
+                .append("   (e² = ");
+        TextFormat.appendFixed(readout, e * e, 3).append(')');
+    }
 }

@@ -8,6 +8,7 @@ import particlelab.collision.Plane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Presentation;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;
@@ -595,5 +596,25 @@ public final class CollisionsDemo extends DemoState {
                 impactReducedMass = slab.getFloat();
             }
         };
+    }
+
+    /** The slide: the impulse with e and the masses; the latest impact's j. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        TextFormat.appendFixed(slide.formula()
+                .append("j = -(1+e) v_rel·n / (1/m1 + 1/m2),   e = "), getRestitution(), 1);
+        StringBuilder formula = slide.formula().append("V1 += j n/m1,  V2 -= j n/m2,   m1 = ");
+        TextFormat.appendFixed(formula, MASSES[mass1], 1).append(" kg,  m2 = ");
+        TextFormat.appendFixed(formula, MASSES[mass2], 1).append(" kg");
+        StringBuilder readout = slide.readout();
+        if (impactSteps == 0) {
+            readout.append("no impact yet");
+            return;
+        }
+        // |j| = (1+e)·μ·v_n, from the numbers the HUD's energy line shows.
+        readout.append("latest impact:  j = (1+e)·μ·v_n = ");
+        TextFormat.appendFixed(readout,
+                (1f + getRestitution()) * impactReducedMass * impactNormalSpeed, 3)
+                .append(" N s");
     }
 }

@@ -91,4 +91,21 @@ public final class DragDemo extends DemoState {
                 .append(" N s/m;   quadratic: F = -c |V| V, c = ");
         DemoParameter.appendShort(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
     }
+
+    /** The slide: the two drag laws with b/m and c/m; the three speeds (or landings). */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        java.util.List<particlelab.demo.DemoParticle> balls = getParticles();
+        float mass = balls.get(1).getParticle().getMass();
+        particlelab.view.TextFormat.appendFixed(slide.formula()
+                .append("linear:  a = g - (b/m)V,   b/m = "),
+                linearDrag.getCoefficient() / mass, 2).append(" /s");
+        particlelab.view.TextFormat.appendFixed(slide.formula()
+                .append("quadratic:  a = g - (c/m)|V|V,   c/m = "),
+                quadraticDrag.getCoefficient() / mass, 3).append(" /m");
+        StringBuilder readout = slide.readout().append("gravity only ");
+        appendSpeedOrLanding(readout, balls.get(0)).append(",  linear ");
+        appendSpeedOrLanding(readout, balls.get(1)).append(",  quadratic ");
+        appendSpeedOrLanding(readout, balls.get(2));
+    }
 }

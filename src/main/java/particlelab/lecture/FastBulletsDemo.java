@@ -11,6 +11,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -408,5 +409,22 @@ public final class FastBulletsDemo extends DemoState {
                 }
             }
         };
+    }
+
+    /** The slide: the drop the straight line ignores, against r; the projectile's result. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        slide.formula().append("ray: straight, no drop;   projectile: V += h·g,  P += h·V");
+        StringBuilder formula = slide.formula().append("drop ½·g·(d/v)² = ");
+        TextFormat.appendFixed(formula, Hitscan.formulaDrop(GRAVITY, DISTANCE, getSpeed()), 3)
+                .append(" m  against r = ");
+        TextFormat.appendFixed(formula, TARGET_RADIUS, 2).append(" m");
+        StringBuilder readout = slide.readout().append("projectile: ");
+        if (!reached) {
+            readout.append(bullet.isHeld() ? "came down before the disc" : "in flight");
+        } else {
+            readout.append(hit ? "HIT" : "MISS").append(", ");
+            TextFormat.appendFixed(readout, getSteppedDrop(), 3).append(" m low at x = d");
+        }
     }
 }

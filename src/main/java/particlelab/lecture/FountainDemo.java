@@ -6,6 +6,7 @@ import com.jme3.renderer.RenderManager;
 import java.util.List;
 import particlelab.demo.DemoState;
 import particlelab.demo.FrameTimes;
+import particlelab.demo.Presentation;
 import particlelab.demo.StepTable;
 import particlelab.view.PointCloudView;
 import particlelab.view.TextFormat;
@@ -314,5 +315,15 @@ public final class FountainDemo extends DemoState {
                 counts.readState(slab);
             }
         };
+    }
+
+    /** The slide: the batch's Euler step and its limit; how many particles fly. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        TextFormat.appendFixed(slide.formula()
+                .append("V = (1 − h·b/m)·V + h·g,  P += h·V;   h < 2m/b = "),
+                2f * Fountain.MASS_KG / Fountain.DRAG_B, 1).append(" s");
+        slide.readout().append("particles: ").append(fountain.countLive())
+                .append(" in flight of ").append(fountain.getCapacity());
     }
 }

@@ -68,4 +68,22 @@ public final class GravitationalPullDemo extends DemoState {
         TextFormat.appendFixed(text, 2f * shownVelocity.y / g, 2)
                 .append(" s (continuous)\n");
     }
+
+    /** The slide: g alone changes V, only its y; the ball's V now, or where it landed. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        particlelab.demo.DemoParticle ball = getParticles().get(0);
+        DemoParameter.appendShort(slide.formula().append("a = g:  V += h·g,  P += h·V,   g = "),
+                getParameters().getValue("g"), 2).append(" m/s²");
+        StringBuilder readout = slide.readout();
+        if (ball.hasLanded()) {
+            TextFormat.appendFixed(readout.append("landed at x = "), ball.getLandingX(), 2)
+                    .append(" m after ");
+            TextFormat.appendFixed(readout, ball.getLandingSeconds(), 2).append(" s");
+            return;
+        }
+        TextFormat.appendVector(readout.append("V = "), ball.getParticle().velocity, 2)
+                .append(" m/s   at t = ");
+        TextFormat.appendFixed(readout, getClock().getSimulatedSeconds(), 2).append(" s");
+    }
 }

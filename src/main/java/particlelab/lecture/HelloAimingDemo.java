@@ -581,4 +581,29 @@ public final class HelloAimingDemo extends DemoState {
             }
         };
     }
+
+    /** The slide: the two aims' vy; the last landed shot's misses side by side. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        for (int a = 0; a < AIMS.length; ++a) {
+            StringBuilder formula = slide.formula().append(FORMULAS[a]);
+            TextFormat.appendFixed(formula, getVerticalSpeed(AIMS[a]), 3).append(" m/s");
+        }
+        StringBuilder readout = slide.readout();
+        int landed = getLandedShotNumber();
+        if (landed == 0) {
+            readout.append("shot ").append(getShotNumber()).append(" in the air");
+            return;
+        }
+        readout.append("shot ").append(landed).append(":");
+        char separator = ' ';
+        for (int a = 0; a < AIMS.length; ++a) {
+            if (landedShot[a] != landed) {
+                continue;
+            }
+            readout.append(separator).append(' ').append(FIRING_NAMES[a]).append(" miss ");
+            TextFormat.appendFixed(readout, lastLandingX[a] - TARGET_DISTANCE, 3).append(" m");
+            separator = ';';
+        }
+    }
 }

@@ -15,6 +15,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.Presentation;
 import particlelab.demo.StepTable;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -825,5 +826,35 @@ public final class IterativeAimingDemo extends DemoState {
                 tintsChanged = true;
             }
         };
+    }
+
+    /** The slide: the drag law the aimer steps; the latest shot's miss. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        StringBuilder formula = slide.formula();
+        if (drag == Drag.LINEAR) {
+            TextFormat.appendFixed(formula.append("V += h·(g − (b/m)·V),   b/m = "),
+                    LINEAR_DRAG / MASS_KG, 2).append(" /s");
+        } else {
+            TextFormat.appendFixed(formula.append("V += h·(g − (c/m)·|V|·V),   c/m = "),
+                    QUADRATIC_DRAG / MASS_KG, 2).append(" /m");
+        }
+        TextFormat.appendFixed(slide.formula().append("first guess g·S/(2·vx) = "),
+                LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, HORIZONTAL_SPEED), 2)
+                .append(" m/s, then the aimer's search");
+        StringBuilder readout = slide.readout();
+        if (landed == 0) {
+            readout.append("shot 1 in the air");
+            return;
+        }
+        int shot = landed - 1;
+        double landingX = shot < firstFlown ? plan.getLandingX(shot) : flownLanding[shot];
+        readout.append("shot ").append(shot + 1).append(" of ").append(plan.size());
+        if (Double.isNaN(landingX)) {
+            readout.append(":  never landed");
+        } else {
+            TextFormat.appendFixed(readout.append(":  miss "), landingX - TARGET_DISTANCE, 2)
+                    .append(" m");
+        }
     }
 }

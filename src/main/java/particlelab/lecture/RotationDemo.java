@@ -9,6 +9,7 @@ import java.util.List;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.Presentation;
 import particlelab.demo.StepTable;
 import particlelab.demo.TrajectoryExport;
 import particlelab.physics.ParticleIntegrator;
@@ -470,5 +471,17 @@ public final class RotationDemo extends DemoState {
                 }
             }
         };
+    }
+
+    /** The slide: plain Euler's growth per step; its determinant now. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        slide.formula().append("plain Euler R += h[ω]×R:  det R x(1 + (|ω|h)²) per step");
+        float omegaH = omegaMagnitude * getClock().getStepSeconds();
+        StringBuilder formula = slide.formula().append("|ω|h = ");
+        TextFormat.appendFixed(formula, omegaH, 4).append(":  x");
+        TextFormat.appendFixed(formula, 1.0 + square(omegaH), 6).append(" per step");
+        StringBuilder readout = slide.readout().append(NAMES[0]).append(":  det R = ");
+        TextFormat.appendFixed(readout, check.determinant(orientations[0]), 6);
     }
 }

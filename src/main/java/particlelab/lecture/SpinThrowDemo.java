@@ -9,6 +9,7 @@ import com.jme3.scene.Spatial;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -376,5 +377,16 @@ public final class SpinThrowDemo extends DemoState {
                 spinSeconds = slab.getDouble();
             }
         };
+    }
+
+    /** The slide: the spin's Euler step under τ; the stepped angle against the closed form. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        StringBuilder formula = slide.formula().append("ω += h·τ/I_z,   τ = ");
+        TextFormat.appendFixed(formula, getTorque(), 2).append(" N·m,  I_z = ");
+        TextFormat.appendFixed(formula, inertia.getMoment(2), 4).append(" kg·m²");
+        StringBuilder readout = slide.readout().append("θ stepped ");
+        TextFormat.appendFixed(readout, measuredAngle, 4).append(" rad,  formula ");
+        TextFormat.appendFixed(readout, formulaAngle(spinSeconds), 4).append(" rad");
     }
 }

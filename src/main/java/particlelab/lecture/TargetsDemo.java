@@ -11,6 +11,7 @@ import particlelab.collision.ThinWall;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.BodyViews;
@@ -589,5 +590,20 @@ public final class TargetsDemo extends DemoState {
             }
         }
         throw new IllegalStateException("a phase text missing from STEP_TEXTS: " + text);
+    }
+
+    /** The slide: the three stages of a contact; the score and the last impulse. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        slide.formula().append("1 prologue: ignore or flash   2 collision: impulse j");
+        TextFormat.appendFixed(slide.formula().append("e = "), RESTITUTION, 1)
+                .append("   3 epilogue: destroy, fragments, score");
+        StringBuilder readout = slide.readout().append("score ").append(score)
+                .append("   last collision ");
+        if (resolutionImpulse == 0f) {
+            readout.append("none yet");
+        } else {
+            TextFormat.appendFixed(readout.append("j = "), resolutionImpulse, 2).append(" N s");
+        }
     }
 }

@@ -416,4 +416,14 @@ public final class TennisRacketDemo extends DemoState {
             }
         };
     }
+
+    /** The slide: Euler's equations without torque; each method's flips so far. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        slide.formula().append("I·dω/dt = −ω × (I·ω),   I = diag(1, 2, 3) kg·m²");
+        StringBuilder readout = slide.readout().append("flips of ωy:");
+        for (int i = 0; i < NAMES.length; ++i) {
+            readout.append(i == 0 ? "  " : ",  ").append(NAMES[i]).append(' ').append(flips[i]);
+        }
+    }
 }

@@ -2,13 +2,17 @@ package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Thrust;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 4, thrust: two spheres launched together with {@code V0 = (10, 10, 0)} m/s: pull + drag
@@ -80,5 +84,17 @@ public final class ThrustDemo extends DemoState {
                 + " F = k V/|V|, k = ");
         DemoParameter.appendShort(text, thrust.getMagnitude(), 2)
                 .append(" N along the sphere's OWN velocity\n");
+    }
+
+    /** The slide: thrust along its own velocity against drag; both speeds (or landings). */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        StringBuilder formula = slide.formula().append("a = g - (b/m)V + (k/m)V/|V|,   b = ");
+        DemoParameter.appendShort(formula, drag.getCoefficient(), 2).append(" N s/m,  k = ");
+        DemoParameter.appendShort(formula, thrust.getMagnitude(), 2).append(" N");
+        List<DemoParticle> spheres = getParticles();
+        StringBuilder readout = slide.readout().append("pull + drag ");
+        appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
+        appendSpeedOrLanding(readout, spheres.get(1));
     }
 }

@@ -6,6 +6,7 @@ import com.jme3.math.Vector3f;
 import particlelab.collision.ThinWall;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Presentation;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;
@@ -77,6 +78,8 @@ public final class TunnellingDemo extends DemoState {
         int shots;
         int hits;
         boolean done;
+        /** True if the lane's last ball whose result is known went through the wall. */
+        boolean lastPassed;
     }
 
     /** Create the demo. */
@@ -253,6 +256,7 @@ public final class TunnellingDemo extends DemoState {
             lane.done = true;
             ++lane.shots;
             ++lane.hits;
+            lane.lastPassed = false;
         }
     }
 
@@ -262,6 +266,7 @@ public final class TunnellingDemo extends DemoState {
                 > WALL_X + THICKNESS / 2f + RADIUS) {
             lane.done = true;
             ++lane.shots;
+            lane.lastPassed = true;
         }
     }
 
@@ -323,5 +328,25 @@ public final class TunnellingDemo extends DemoState {
         lane.shots = slab.getInt();
         lane.hits = slab.getInt();
         lane.done = slab.getBoolean();
+    }
+
+    /** The slide: one step's travel against the wall; whether the last ball went through. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        float h = stepSeconds();
+        StringBuilder formula = slide.formula().append("overlap test misses when v h > 2r + d:"
+                + "   v h = ");
+        TextFormat.appendFixed(formula, speed * h, 3).append(" m");
+        StringBuilder second = slide.formula().append("2r + d = ");
+        TextFormat.appendFixed(second, 2f * RADIUS + THICKNESS, 3).append(" m,   miss"
+                + " probability ");
+        TextFormat.appendFixed(second, wall.overlapMissProbability(RADIUS, speed, h), 3);
+        StringBuilder readout = slide.readout().append("overlap test, ball passed through the"
+                + " wall: ");
+        if (overlap.shots == 0) {
+            readout.append("not yet");
+        } else {
+            readout.append(overlap.lastPassed ? "yes" : "no");
+        }
     }
 }

@@ -6,7 +6,10 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.Presentation;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 1, uniform motion: no force at all, so {@code a = 0} and the Euler step only moves the
@@ -76,5 +79,16 @@ public final class UniformMotionDemo extends DemoState {
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
         DemoParameter.appendShort(text, shownVelocity.y, 2)
                 .append(", 0) m/s stays,  and P = P0 + V·t\n");
+    }
+
+    /** The slide: no force, so V stays; where the sphere is now. */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        Particle particle = sphere.getParticle();
+        TextFormat.appendVector(slide.formula().append("a = 0,  so V = "), particle.velocity, 2)
+                .append(" m/s stays:  P = P0 + V·t");
+        StringBuilder readout = slide.readout().append("P = ");
+        TextFormat.appendVector(readout, particle.position, 2).append(" m   at t = ");
+        TextFormat.appendFixed(readout, getClock().getSimulatedSeconds(), 2).append(" s");
     }
 }

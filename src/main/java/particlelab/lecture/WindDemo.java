@@ -3,8 +3,11 @@ package particlelab.lecture;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Presentation;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
@@ -161,5 +164,26 @@ public final class WindDemo extends DemoState {
         // The equations at the top of the HUD show the new W.
         refreshEquations();
         restart();
+    }
+
+    /**
+     * Step 7: the slide presentation mode shows (F8): the force with its W, and where each
+     * ball lands.
+     */
+    @Override
+    protected void writePresentation(Presentation slide) {
+        TextFormat.appendFixed(slide.formula().append("a = g + (b/m)(W - V),   Wx = "),
+                windVelocity.x, 1).append(" m/s");
+        StringBuilder readout = slide.readout().append("lands at x:");
+        List<DemoParticle> balls = getParticles();
+        for (int i = 0; i < balls.size(); ++i) {
+            DemoParticle ball = balls.get(i);
+            readout.append(i == 0 ? "  " : ",  ").append(ball.getLabel()).append(' ');
+            if (ball.hasLanded()) {
+                TextFormat.appendFixed(readout, ball.getLandingX(), 2).append(" m");
+            } else {
+                readout.append("(in flight)");
+            }
+        }
     }
 }

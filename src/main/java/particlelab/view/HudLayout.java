@@ -49,6 +49,12 @@ public final class HudLayout {
     public static final float WARNING_SIZE = 22f;
     public static final float FOOTER_SIZE = 19f;
     public static final float HELP_SIZE = 21f;
+    /**
+     * Presentation mode's text, the title, the formula lines and the readout (pixels at scale
+     * 1): twice the body's, so it stays at least twice the full HUD's body at the same factor
+     * (the full HUD's shrinks on a crowded window, this one rarely needs to).
+     */
+    public static final float PRESENT_SIZE = 2f * BODY_SIZE;
     /** Scene labels: grid distances, particle and post labels (pixels at scale 1). */
     public static final float SCENE_LABEL_SIZE = 19f;
     /** The smallest help text the shrinking goes to (pixels at scale 1). */
@@ -73,6 +79,8 @@ public final class HudLayout {
     private static final String CONTINUATION = "    ";
     /** The space above and below the body (in body line heights). */
     private static final float BAND_SPACE = 0.2f;
+    /** Presentation mode's space below the title and the formulas (in its line heights). */
+    private static final float PRESENT_BAND_SPACE = 0.1f;
     private static final float HELP_SHRINK = 0.96f;
     /** The most columns the help is set in. */
     private static final int MAX_HELP_COLUMNS = 5;
@@ -89,6 +97,8 @@ public final class HudLayout {
     private final ScreenRect body = new ScreenRect();
     private final ScreenRect warning = new ScreenRect();
     private final ScreenRect footer = new ScreenRect();
+    /** Presentation mode's readout, above the footer on the scene's ground (empty if not). */
+    private final ScreenRect readout = new ScreenRect();
     private final ScreenRect scene = new ScreenRect();
     private final ScreenRect helpPanel = new ScreenRect();
     private final ScreenRect sidePanel = new ScreenRect();
@@ -114,6 +124,15 @@ public final class HudLayout {
     private float graphHeight;
     /** How high above the window's bottom the scene's ground must reach (in pixels). */
     private float sceneFloor;
+    /** True when laid out for presentation mode ({@link #layOutPresentation}). */
+    private boolean presenting;
+    /** Presentation mode: the readout, wrapped, and the most lines it has needed so far. */
+    private String readoutText = "";
+    private int readoutLinesNeeded = 1;
+    /** The lines the readout shows (0 when a small window hides it). */
+    private int readoutLines = 1;
+    /** The user's factor on the scale that suits the window ({@code --ui-scale}, F9/F10). */
+    private float userFactor = 1f;
 
     /**
      * Create a layout.
@@ -158,8 +177,11 @@ public final class HudLayout {
             throw new IllegalArgumentException("window " + width + "x" + height + " and scale "
                     + hudScale + " must all be > 0");
         }
+        presenting = false;
         window.set(0f, 0f, width, height);
         scale = hudScale;
+        readout.set(0f, 0f, 0f, 0f);
+        readoutText = "";
         float margin = getMargin();
         float gap = 0.5f * margin;
         float titleWidth = Math.max(1f, width - 2f * margin);
@@ -189,7 +211,8 @@ public final class HudLayout {
                 + countLines(keys) * footerLineHeight;
         tooSmall = needed > room;
         if (tooSmall) {
-            footerText = wrap(tooSmallLine(width, height), getFooterSize(), titleWidth);
+            footerText = wrap(tooSmallLine(width, height, "HUD lines hidden"),
+                    getFooterSize(), titleWidth);
             float left = room - countLines(footerText) * footerLineHeight;
             warningLines = left >= warningLineHeight ? 1 : 0;
             left -= warningLines * warningLineHeight;
@@ -243,6 +266,113 @@ public final class HudLayout {
     }
 
     /**
+     * Lay presentation mode out on a window (F8, {@code --present}): the scene large, the text
+     * reduced to the title and the slide's formula lines at the top, and its readout above a
+     * one-line footer on the scene's ground, all at {@link #PRESENT_SIZE} but the footer. No
+     * warning band, no side panel (the graph keeps its slot in the scene's corner). The
+     * {@link #getBody()} band holds the formula lines, at {@link #getBodySize()} (the
+     * presentation size while so laid out). On a window too small for every line at the
+     * smallest scale, lines go in this order: the second formula line, the first, then the
+     * readout; the footer then says the window is too small. Every rectangle stays inside
+     * the window.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param hudScale the text scale ({@link #scaleFor} suits the window; &gt;0)
+     * @param titleLine the title (not null)
+     * @param formulaText the slide's formula lines (not null); the band keeps at least as many
+     *     lines as it had before
+     * @param readoutLine the slide's readout (not null); likewise
+     * @param footerLine the footer, one short line (not null)
+     * @param helpText the help overlay's text, as for {@link #layOut} (not null)
+     */
+    public void layOutPresentation(float width, float height, float hudScale,
+            CharSequence titleLine, CharSequence formulaText, CharSequence readoutLine,
+            CharSequence footerLine, CharSequence helpText) {
+        if (!(width > 0f && height > 0f && hudScale > 0f)) {
+            throw new IllegalArgumentException("window " + width + "x" + height + " and scale "
+                    + hudScale + " must all be > 0");
+        }
+        presenting = true;
+        window.set(0f, 0f, width, height);
+        scale = hudScale;
+        float margin = getMargin();
+        float gap = 0.5f * margin;
+        float textWidth = Math.max(1f, width - 2f * margin);
+        float size = getBodySize();
+        float lineHeight = measure.lineHeight(size);
+        float footerLineHeight = measure.lineHeight(getFooterSize());
+
+        titleText = wrap(titleLine, getTitleSize(), textWidth);
+        float titleHeight = countLines(titleText) * measure.lineHeight(getTitleSize());
+        bodyLinesNeeded = Math.max(bodyLinesNeeded,
+                countLines(wrap(formulaText, size, textWidth)));
+        readoutText = wrap(readoutLine, size, textWidth);
+        readoutLinesNeeded = Math.max(readoutLinesNeeded, countLines(readoutText));
+        String keys = wrap(footerLine, getFooterSize(), textWidth);
+        float room = height - 2f * margin - titleHeight - 2f * PRESENT_BAND_SPACE * lineHeight
+                - 2f * gap - MIN_SCENE_SHARE * height;
+        float needed = (bodyLinesNeeded + readoutLinesNeeded) * lineHeight
+                + countLines(keys) * footerLineHeight;
+        tooSmall = needed > room;
+        if (tooSmall) {
+            footerText = wrap(tooSmallLine(width, height, "lines hidden"), getFooterSize(),
+                    textWidth);
+            float left = room - countLines(footerText) * footerLineHeight;
+            readoutLines = Math.max(0, Math.min(readoutLinesNeeded,
+                    (int) Math.floor(left / lineHeight)));
+            left -= readoutLines * lineHeight;
+            bodyLines = Math.max(0, Math.min(bodyLinesNeeded,
+                    (int) Math.floor(left / lineHeight)));
+        } else {
+            footerText = keys;
+            readoutLines = readoutLinesNeeded;
+            bodyLines = bodyLinesNeeded;
+        }
+        warningLines = 0;
+
+        title.set(margin, height - margin - titleHeight,
+                measure.width(titleText, getTitleSize()), titleHeight);
+        float bodyTop = title.getY() - PRESENT_BAND_SPACE * lineHeight;
+        body.set(margin, bodyTop - bodyLines * lineHeight, textWidth, bodyLines * lineHeight);
+        warning.set(margin, body.getY() - PRESENT_BAND_SPACE * lineHeight, textWidth, 0f);
+        float footerHeight = countLines(footerText) * footerLineHeight;
+        footer.set(margin, margin, measure.width(footerText, getFooterSize()), footerHeight);
+        float readoutHeight = readoutLines * lineHeight;
+        // The whole width: the readout's numbers change every frame, its strip does not.
+        readout.set(margin, readoutHeight > 0f ? footer.getTop() + gap : footer.getTop(),
+                readoutLines == 0 ? 0f : textWidth, readoutHeight);
+
+        sceneFloor = readout.getTop() + gap;
+        scene.set(0f, 0f, width, Math.min(height, Math.max(MIN_VIEW_PIXELS, warning.getTop())));
+        sidePanel.set(0f, 0f, 0f, 0f);
+        if (graphWidth > 0f && graphHeight > 0f) {
+            float graphW = Math.min(graphWidth * scale, MAX_GRAPH_SHARE * scene.getWidth());
+            float graphH = Math.min(graphHeight * scale, MAX_GRAPH_SHARE * scene.getHeight());
+            float graphTop = Math.min(scene.getTop(), warning.getY() - gap);
+            graphH = Math.max(0f, Math.min(graphH, graphTop - sceneFloor));
+            graph.set(scene.getRight() - margin - graphW, graphTop - graphH, graphW, graphH);
+        } else {
+            graph.set(0f, 0f, 0f, 0f);
+        }
+        layOutHelp(helpText);
+    }
+
+    /**
+     * Say which user's factor the next layouts serve, so that the footer of a window too
+     * small for the text names the factor asked for and the one the window allowed.
+     *
+     * @param factor the user's factor on the scale that suits the window (&gt;0)
+     */
+    public void setUserFactor(float factor) {
+        if (!(factor > 0f && factor < Float.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("user factor must be finite and > 0, but was "
+                    + factor);
+        }
+        userFactor = factor;
+    }
+
+    /**
      * Ask for a side panel, or none; it takes effect at the next {@link #layOut}.
      *
      * @param widthAtScaleOne the panel's width at HUD scale 1 (in pixels, &ge;0; 0: no panel);
@@ -281,6 +411,7 @@ public final class HudLayout {
      */
     public void forgetBodyLines() {
         bodyLinesNeeded = 1;
+        readoutLinesNeeded = 1;
     }
 
     /**
@@ -410,14 +541,37 @@ public final class HudLayout {
         return MARGIN * scale;
     }
 
-    /** @return the title's text size (in pixels) */
+    /** @return the title's text size (in pixels; the presentation size when presenting) */
     public float getTitleSize() {
-        return TITLE_SIZE * scale;
+        return (presenting ? PRESENT_SIZE : TITLE_SIZE) * scale;
     }
 
-    /** @return the body's text size (in pixels) */
+    /**
+     * @return the body's text size (in pixels; when presenting, the formula lines' and the
+     *     readout's, the presentation size)
+     */
     public float getBodySize() {
-        return BODY_SIZE * scale;
+        return (presenting ? PRESENT_SIZE : BODY_SIZE) * scale;
+    }
+
+    /** @return true if laid out for presentation mode ({@link #layOutPresentation}) */
+    public boolean isPresenting() {
+        return presenting;
+    }
+
+    /** @return presentation mode's readout (live, do not modify; empty if not presenting) */
+    public ScreenRect getReadout() {
+        return readout;
+    }
+
+    /** @return how many lines the readout shows (0 if hidden or not presenting) */
+    public int getReadoutLines() {
+        return presenting ? readoutLines : 0;
+    }
+
+    /** @return the most lines the readout has needed so far, wrapped */
+    public int getReadoutLinesNeeded() {
+        return readoutLinesNeeded;
     }
 
     /** @return the warning's text size (in pixels) */
@@ -713,8 +867,22 @@ public final class HudLayout {
         return false;
     }
 
-    private static String tooSmallLine(float width, float height) {
-        return "window too small (" + Math.round(width) + "x" + Math.round(height)
-                + "): HUD lines hidden";
+    /**
+     * The footer of a window too small for every line: the window's size, what was hidden,
+     * and, when the text is smaller than the user's factor asked (the scale was lowered to
+     * fit, or clamped), that factor and the one the window got, both relative to the scale
+     * that suits the window.
+     */
+    private String tooSmallLine(float width, float height, String hidden) {
+        String size = "window too small (" + Math.round(width) + "x" + Math.round(height) + ")";
+        float got = scale / scaleFor(width, height);
+        // One decimal, as printed: a reduction that rounds away is not named.
+        long asked10 = Math.round(10.0 * userFactor);
+        long got10 = Math.round(10.0 * got);
+        if (got10 >= asked10) {
+            return size + ": " + hidden;
+        }
+        return "text x" + asked10 / 10 + "." + asked10 % 10 + " reduced to x" + got10 / 10
+                + "." + got10 % 10 + ": " + size + ", " + hidden;
     }
 }

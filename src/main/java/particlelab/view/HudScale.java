@@ -31,7 +31,10 @@ public final class HudScale {
      * text (the projector's control works one way), and where the window cannot hold every
      * line at that size, the layout hides lines (see {@link HudLayout}). The body's band
      * keeps the most lines it has needed so far, except when asked afresh, while shrinking
-     * and at a factor other than 1: then it is sized for the text as it is.
+     * and at a factor other than 1: then it is sized for the text as it is. Where lines are
+     * hidden and the text is smaller than the factor asked, the footer says both factors
+     * ("text x2.0 reduced to x1.3: window too small ..."), relative to the scale that suits
+     * the window.
      *
      * @param hud the HUD (not null, modified)
      * @param width the window's width (in pixels, &gt;0)
@@ -44,6 +47,8 @@ public final class HudScale {
     public static float layOut(HudView hud, int width, int height, float factor,
             boolean afresh) {
         checkFactor(factor, "HUD scale factor");
+        // The footer of a window too small names the factor asked for and the one it got.
+        hud.getLayout().setUserFactor(factor);
         float suits = of(width, height, 1f);
         if (afresh || factor != 1f) {
             hud.layOutAfresh(width, height, suits);

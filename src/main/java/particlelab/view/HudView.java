@@ -45,6 +45,8 @@ public final class HudView {
     private final HudText body;
     private final HudText warning;
     private final HudText footer;
+    /** Presentation mode's readout (empty in the full HUD). */
+    private final HudText readout;
     private final Node helpPanel = new Node("help panel");
     private final List<HudText> helpColumns = new ArrayList<>();
     private final Geometry helpBackground;
@@ -58,6 +60,10 @@ public final class HudView {
     /** The body and the warning as given, unwrapped and whole (the bands may show less). */
     private final StringBuilder bodySource = new StringBuilder(2048);
     private final StringBuilder warningSource = new StringBuilder(256);
+    /** Presentation mode's readout as given. */
+    private final StringBuilder readoutSource = new StringBuilder(128);
+    /** True in presentation mode: the body holds the slide's formula lines. */
+    private boolean presenting;
     /** How many lines the last {@link #setWrapped} wrapped its text to, before any cut. */
     private int wrappedLines;
     private String titleSource = "";
@@ -84,7 +90,9 @@ public final class HudView {
         body = text(font, BODY_COLOR);
         footer = text(font, FOOTER_COLOR);
         warning = text(font, WARNING_COLOR);
+        readout = text(font, TITLE_COLOR);
         node.attachChild(title);
+        node.attachChild(readout);
         node.attachChild(body);
         node.attachChild(footer);
         node.attachChild(warning);
@@ -163,7 +171,8 @@ public final class HudView {
 
     /**
      * Copy the screen rectangle of every HUD text shown into a list, for tests of the layout:
-     * the title, body, warning and footer, or with the help shown, the title and the help's
+     * the title, body, warning and footer (and in presentation mode the readout), or with
+     * the help shown, the title and the help's
      * columns (the panel hides the rest).
      *
      * @param storeResult where to add them (not null, modified)
@@ -179,6 +188,9 @@ public final class HudView {
             storeResult.add(rectOf(body));
             storeResult.add(rectOf(warning));
             storeResult.add(rectOf(footer));
+            if (presenting) {
+                storeResult.add(rectOf(readout));
+            }
         }
         return storeResult;
     }
@@ -223,6 +235,62 @@ public final class HudView {
             layoutChanged = true;
         }
         return changed;
+    }
+
+    /**
+     * Switch between the full HUD and presentation mode: the title, the slide's formula lines
+     * (in the body's place) and its readout in large type, a one-line footer, no warning
+     * ({@link HudLayout#layOutPresentation}). The caller lays the HUD out again (the scale
+     * that suits the window differs) and sets the body, the footer and the readout for the
+     * mode.
+     *
+     * @param on true for presentation mode
+     */
+    public void setPresenting(boolean on) {
+        if (on == presenting) {
+            return;
+        }
+        presenting = on;
+        bodySource.setLength(0);
+        readoutSource.setLength(0);
+        relayOut();
+        layoutChanged = true;
+    }
+
+    /** @return true in presentation mode */
+    public boolean isPresenting() {
+        return presenting;
+    }
+
+    /**
+     * Show presentation mode's readout, if it differs from what is shown (one line, wrapped
+     * if wider than the window). Allocates nothing once the scratch builders are large enough.
+     *
+     * @param text the readout (not null, not modified)
+     * @return true if the text changed
+     */
+    public boolean setReadout(CharSequence text) {
+        if (TextFormat.sameText(text, readoutSource)) {
+            return false;
+        }
+        readoutSource.setLength(0);
+        readoutSource.append(text);
+        boolean changed = setWrapped(readout, readoutSource, layout.getBodySize(),
+                layout.getReadoutLines());
+        if (presenting && wrappedLines > layout.getReadoutLinesNeeded()) {
+            relayOut();
+            layoutChanged = true;
+        }
+        return changed;
+    }
+
+    /**
+     * Return the readout shown (presentation mode).
+     *
+     * @return the text, empty if none (not null)
+     */
+    public String getReadoutText() {
+        return readout.getText();
     }
 
     /**
@@ -351,8 +419,13 @@ public final class HudView {
     }
 
     private void relayOut() {
-        layout.layOut(screenWidth, screenHeight, scale, titleSource, bodySource,
-                footerSource, helpSource);
+        if (presenting) {
+            layout.layOutPresentation(screenWidth, screenHeight, scale, titleSource,
+                    bodySource, readoutSource, footerSource, helpSource);
+        } else {
+            layout.layOut(screenWidth, screenHeight, scale, titleSource, bodySource,
+                    footerSource, helpSource);
+        }
         place(title, layout.getTitle(), layout.getTitleSize(), 1f);
         set(title, layout.getTitleText());
         place(body, layout.getBody(), layout.getBodySize(), 1f);
@@ -362,6 +435,8 @@ public final class HudView {
         // Text set before this layout was wrapped for the old width: wrap it again.
         setWrapped(body, bodySource, layout.getBodySize(), layout.getBodyLines());
         setWrapped(warning, warningSource, layout.getWarningSize(), layout.getWarningLines());
+        place(readout, layout.getReadout(), layout.getBodySize(), 1f);
+        setWrapped(readout, readoutSource, layout.getBodySize(), layout.getReadoutLines());
 
         ScreenRect scene = layout.getScene();
         backdrop.setLocalScale(screenWidth, screenHeight - scene.getTop(), 1f);

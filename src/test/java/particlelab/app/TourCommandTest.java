@@ -134,7 +134,8 @@ class TourCommandTest {
         CommandRun run = CommandRun.of("tour", "--help");
         assertEquals(DemoCommand.OK, run.code, run.toString());
         for (String option : new String[] {"--list", "--stop", "--frames", "--fixed-tpf",
-            "--screenshot", "--window", "--ui-scale", "--force", "PageDown", "PageUp"}) {
+            "--screenshot", "--window", "--ui-scale", "--present", "--force", "PageDown",
+            "PageUp"}) {
             assertTrue(run.out.contains(option), option + " in " + run.out);
         }
     }

@@ -1,6 +1,7 @@
 package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.input.KeyInput;
@@ -14,7 +15,8 @@ import particlelab.view.HudLayout;
 /**
  * The window's controls in a real headless application: a reshape (the camera resized, as
  * jME does on every window resize) and a new HUD factor lay the shown demo out again on the
- * next frame; the keys are in every demo's help; fullscreen without a window says so.
+ * next frame; the keys are in every demo's help; fullscreen without a window says so; F8's
+ * presentation mode stays on across demos and tour stops.
  */
 class WindowControlsHeadlessTest {
 
@@ -107,7 +109,7 @@ class WindowControlsHeadlessTest {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
             String help = demo.getHelpText();
             for (String line : new String[] {"F11  -  fullscreen", "F10  -  larger HUD text",
-                "F9  -  smaller HUD text", "E  -  export"}) {
+                "F9  -  smaller HUD text", "F8  -  presentation mode", "E  -  export"}) {
                 assertTrue(help.contains(line), demo.getTitle() + " lacks " + line);
             }
         }
@@ -130,5 +132,73 @@ class WindowControlsHeadlessTest {
         harness.awaitFrames(2);
         assertEquals("fullscreen needs a window (this run has none)",
                 harness.call(() -> app.getSwitcher().getSelected().getNotice()));
+    }
+
+    @Test
+    void f8PresentsEveryDemoAndStaysOnAcrossDemosAndTourStops() throws Exception {
+        ParticleLabApp app = harness.app();
+        KeyBinding f8 = find(app, KeyInput.KEY_F8);
+        DemoSwitcher switcher = app.getSwitcher();
+        try {
+            harness.call(() -> {
+                f8.press(0);
+                return true;
+            });
+            harness.awaitFrames(2);
+            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getHud().getLayout()
+                    .isPresenting()));
+            // Tab, a digit (select) and a tour stop: each demo shown opens presenting.
+            for (int next : new int[] {1, 8}) {
+                harness.call(() -> {
+                    switcher.select(next);
+                    return true;
+                });
+                harness.awaitFrames(3);
+                assertEquals(next, (int) harness.call(() -> switcher.getDemos()
+                        .indexOf(switcher.getSelected())));
+                assertTrue(harness.call(() -> switcher.getSelected().isPresenting()),
+                        "demo " + (next + 1));
+            }
+            harness.call(() -> {
+                app.getTour().go(2);
+                return true;
+            });
+            harness.awaitFrames(3);
+            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getHud().getFooterText()
+                    .contains("PageDown  next stop")));
+            // F8 again: the full HUD, for the demo shown and the next one.
+            harness.call(() -> {
+                f8.press(0);
+                return true;
+            });
+            harness.awaitFrames(2);
+            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+            harness.call(() -> {
+                app.getTour().leave();
+                switcher.select(0);
+                return true;
+            });
+            harness.awaitFrames(3);
+            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+        } finally {
+            harness.call(() -> {
+                app.getTour().leave();
+                app.getWindowControls().setPresenting(false);
+                switcher.select(0);
+                return true;
+            });
+            harness.awaitFrames(3);
+        }
+    }
+
+    private static KeyBinding find(ParticleLabApp app, int keyCode) {
+        for (KeyBinding binding : app.getSwitcher().getBindings()) {
+            if (binding.getKeyCode(0) == keyCode) {
+                return binding;
+            }
+        }
+        throw new IllegalStateException("no application key " + keyCode);
     }
 }

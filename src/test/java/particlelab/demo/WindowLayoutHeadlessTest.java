@@ -1,6 +1,7 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -61,6 +62,29 @@ class WindowLayoutHeadlessTest {
         }
         assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
                 problems.size() + " problems");
+    }
+
+    @Test
+    void aSmallWindowAtFactorTwoNamesTheFactorItReducedAndTheOneItGot() throws Exception {
+        // Issue 19: at --ui-scale 2 in a small window the footer said "window too small"
+        // without saying that the text was smaller than asked, nor how much.
+        DemoState demo = harness.app().getSwitcher().getDemos().get(2);
+        String[] shown = harness.call(() -> {
+            try {
+                demo.layOut(640, 360, HudScale.MAX_FACTOR);
+                // The factor the window got: the scale laid out over the one that suits it.
+                float got = demo.getHud().getLayout().getScale() / HudLayout.scaleFor(640, 360);
+                long tenths = Math.round(10.0 * got);
+                return new String[] {demo.getHud().getFooterText().replace("\n    ", " "),
+                    tenths / 10 + "." + tenths % 10};
+            } finally {
+                demo.layOut(1280, 720);
+            }
+        });
+        String footer = shown[0];
+        assertTrue(Float.parseFloat(shown[1]) < HudScale.MAX_FACTOR, shown[1]);
+        assertEquals("text x2.0 reduced to x" + shown[1]
+                + ": window too small (640x360), HUD lines hidden", footer);
     }
 
     private static List<String> run(DemoState demo, int width, int height, float factor) {

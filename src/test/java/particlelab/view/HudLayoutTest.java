@@ -40,6 +40,12 @@ class HudLayoutTest {
             + "t = 1.62 s\nball:  P = (16.17, 3.23, 0.00) m   V = (10.00, -5.84, 0.00) m/s\n"
             + "Stepping: fixed h = 16.7 ms   time x1.00";
 
+    /** Presentation mode's slide: the drag demo's two formula lines and its readout. */
+    private static final String SLIDE = "linear:  a = g - (b/m)V,   b/m = 0.90 /s\n"
+            + "quadratic:  a = g - (c/m)|V|V,   c/m = 0.064 /m";
+    private static final String READOUT = "|V|:  gravity only 11.84,  linear 8.10,  quadratic"
+            + " 9.02 m/s";
+
     private static final String FOOTER =
             "H  help     Space  pause     N  step     R  reset     Tab / 1-9  next demo";
 
@@ -149,8 +155,10 @@ class HudLayoutTest {
         String body = lines(30);
         layout.layOut(width, height, HudScale.MIN_SCALE, "3.  Drag", body, FOOTER, help(40));
         assertTrue(layout.isTooSmall());
-        assertEquals("window too small (" + width + "x" + height + "): HUD lines hidden",
-                layout.getFooterText().replace("\n    ", " "));
+        // The text is smaller than the scale that suits the window, at the factor 1 asked.
+        assertEquals("text x1.0 reduced to x" + oneDecimal(HudScale.MIN_SCALE
+                / HudLayout.scaleFor(width, height)) + ": window too small (" + width + "x"
+                + height + "), HUD lines hidden", layout.getFooterText().replace("\n    ", " "));
         assertTrue(layout.getBodyLines() < layout.getBodyLinesNeeded(),
                 layout.getBodyLines() + " of " + layout.getBodyLinesNeeded());
         assertTrue(layout.getScene().getHeight() >= HudLayout.MIN_SCENE_SHARE * height,
@@ -245,6 +253,111 @@ class HudLayoutTest {
     }
 
     /** A body of numbered lines, each ending in a newline but the last. */
+    @Test
+    void aWindowTooSmallForTheFactorAskedNamesItAndTheOneItGot() {
+        // Issue 19: at --ui-scale 2 on 640x360 the footer said "window too small" and not
+        // which factor was reduced. HudScale shrinks the scale that suits the window (0.75
+        // there) to 0.5, then doubles it: x1.0 of the 0.75, shown as x1.3 of it.
+        HudLayout layout = new HudLayout(MONO);
+        layout.setUserFactor(2f);
+        layout.layOut(640, 360, 2f * HudScale.MIN_SCALE, "3.  Drag", lines(30), FOOTER,
+                help(40));
+        assertTrue(layout.isTooSmall());
+        assertEquals("text x2.0 reduced to x1.3: window too small (640x360), HUD lines hidden",
+                layout.getFooterText().replace("\n    ", " "));
+        // A factor the window gave in full is not called reduced.
+        layout.setUserFactor(1f);
+        layout.layOut(640, 360, HudLayout.scaleFor(640, 360), "3.  Drag", lines(30), FOOTER,
+                help(40));
+        assertEquals("window too small (640x360): HUD lines hidden",
+                layout.getFooterText().replace("\n    ", " "));
+    }
+
+    @ParameterizedTest
+    @CsvSource({"1280, 720", "1024, 768", "1920, 1080"})
+    void presentationGivesTheSceneThreeQuartersAndTextTwiceTheBodys(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        layout.setPanelWidth(320f);
+        float scale = HudLayout.scaleFor(width, height);
+        layout.layOutPresentation(width, height, scale, "3.  Drag", SLIDE, READOUT,
+                "F8  full HUD", help(40));
+        assertTrue(layout.isPresenting());
+        assertFalse(layout.isTooSmall());
+        ScreenRect scene = layout.getScene();
+        // Three quarters of the window's area, from the rectangle itself (MONO's lines are
+        // 1.2 of the size, a little higher than the real font's 56/48).
+        assertTrue(scene.getWidth() * scene.getHeight() >= 0.75f * width * height,
+                scene + " of " + width + "x" + height);
+        // No side panel while presenting: the scene has the window's whole width.
+        assertEquals(width, scene.getWidth(), 0f);
+        assertTrue(layout.getSidePanel().isEmpty());
+        // Twice the full HUD's body at the same scale, title, formulas and readout alike.
+        float body = HudLayout.BODY_SIZE * scale;
+        assertTrue(layout.getBodySize() >= 2f * body, layout.getBodySize() + " px");
+        assertTrue(layout.getTitleSize() >= 2f * body, layout.getTitleSize() + " px");
+        assertEquals(2, layout.getBodyLines());
+        assertEquals(1, layout.getReadoutLines());
+        assertEquals(layout.getBodyLines() * MONO.lineHeight(layout.getBodySize()),
+                layout.getBody().getHeight(), 1e-3f);
+        assertBlocksApartInside(layout);
+        // The readout and the footer are drawn on the scene's ground, below its floor.
+        assertTrue(layout.getReadout().getTop() <= layout.getSceneFloor());
+        assertTrue(layout.getFooter().getTop() <= layout.getReadout().getY());
+        assertFalse(scene.intersects(layout.getBody()), scene + " over the formulas");
+    }
+
+    @ParameterizedTest
+    @CsvSource({"200, 150", "320, 240", "640, 360", "3840, 2160"})
+    void presentationOnAnyWindowKeepsItsTextApartAndInside(int width, int height) {
+        HudLayout layout = new HudLayout(MONO);
+        layout.layOutPresentation(width, height, HudScale.MIN_SCALE, "3.  Drag", SLIDE,
+                READOUT, "F8  full HUD", help(40));
+        assertBlocksApartInside(layout);
+        assertTrue(layout.getScene().getHeight() >= HudLayout.MIN_SCENE_SHARE * height,
+                layout.getScene().toString());
+        if (layout.isTooSmall()) {
+            // The readout goes last of the slide's lines: the second formula line first.
+            assertTrue(layout.getBodyLines() < 2, layout.getBodyLines() + " formula lines");
+            assertTrue(layout.getFooterText().replace("\n    ", " ")
+                    .contains("window too small (" + width + "x" + height + ")"));
+        }
+    }
+
+    @Test
+    void theFullHudAfterPresentationHasNoReadoutAndItsOwnSizes() {
+        HudLayout layout = new HudLayout(MONO);
+        layout.layOutPresentation(1280, 720, 1f, "3.  Drag", SLIDE, READOUT, "F8  full HUD",
+                help(40));
+        layout.layOut(1280, 720, 1f, "3.  Drag", BODY, FOOTER, help(40));
+        assertFalse(layout.isPresenting());
+        assertTrue(layout.getReadout().isEmpty());
+        assertEquals(0, layout.getReadoutLines());
+        assertEquals(HudLayout.BODY_SIZE, layout.getBodySize(), 0f);
+        assertEquals(HudLayout.TITLE_SIZE, layout.getTitleSize(), 0f);
+    }
+
+    /** The title, formulas, readout and footer: none over another, each inside the window. */
+    private static void assertBlocksApartInside(HudLayout layout) {
+        List<ScreenRect> blocks = List.of(layout.getTitle(), layout.getBody(),
+                layout.getReadout(), layout.getFooter());
+        for (int i = 0; i < blocks.size(); ++i) {
+            if (blocks.get(i).isEmpty()) {
+                continue;
+            }
+            assertTrue(layout.getWindow().contains(blocks.get(i)), i + " " + blocks.get(i));
+            for (int j = 0; j < i; ++j) {
+                assertFalse(blocks.get(i).intersects(blocks.get(j)), i + " over " + j);
+            }
+        }
+        assertTrue(layout.getWindow().contains(layout.getScene()));
+    }
+
+    /** A factor as the footer prints it, with one decimal. */
+    private static String oneDecimal(float factor) {
+        long tenths = Math.round(10.0 * factor);
+        return tenths / 10 + "." + tenths % 10;
+    }
+
     private static String lines(int count) {
         StringBuilder text = new StringBuilder();
         for (int i = 1; i <= count; ++i) {
