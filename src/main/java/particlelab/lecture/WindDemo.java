@@ -5,6 +5,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
+import particlelab.demo.Draggable;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
@@ -136,6 +137,14 @@ public final class WindDemo extends DemoState {
                     windVelocity.x = value;
                     wind.setWindVelocity(windVelocity);
                 }));
+    }
+
+    @Override
+    protected void declareDraggables() {
+        // Step 4b: what the mouse may drag (paused): the launch of both balls, the help and
+        // the pages' mouse table are written from it.
+        declareDraggable(Draggable.launchPosition("a ball", getParticles()));
+        declareDraggable(Draggable.launchVelocity("a ball", getParticles()));
     }
 
     @Override
