@@ -1,7 +1,6 @@
 package particlelab.demo;
 
 import com.jme3.math.Vector3f;
-import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -93,14 +92,20 @@ public final class Draggable {
             throw new IllegalArgumentException("a draggable's grip, effect and mover must not"
                     + " be null (" + what + ")");
         }
-        if (particles == null || particles.isEmpty() || particles.contains(null)) {
+        if (particles == null || particles.isEmpty()) {
             throw new IllegalArgumentException("a draggable needs at least one particle ("
                     + what + ")");
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            if (particles.get(i) == null) {
+                throw new IllegalArgumentException("particle " + i + " of draggable " + what
+                        + " is null");
+            }
         }
         this.what = what;
         this.grip = grip;
         this.effect = effect;
-        this.particles = List.copyOf(new ArrayList<>(particles));
+        this.particles = List.copyOf(particles);
         this.description = description;
         this.whileRunning = whileRunning;
         this.mover = mover;

@@ -7,9 +7,10 @@ import com.jme3.renderer.Camera;
 /**
  * From a point on the screen to a point of a demo's plane of motion and back, through a
  * camera: the pure part of picking and dragging with the mouse. The pick ray runs from the
- * screen point on the near plane to the same point on the far plane
- * ({@link Camera#getWorldCoordinates}); where it crosses the plane {@code z = planeZ} is the
- * point the mouse is over, {@code P = N + t·(F − N)}, {@code t = (planeZ − N.z)/(F.z − N.z)}.
+ * eye E through the screen point's place N on the near plane
+ * ({@link Camera#getWorldCoordinates} at depth 0; for a parallel projection, from N along the
+ * view direction); where it crosses the plane {@code z = planeZ} is the point the mouse is
+ * over, {@code P = E + t·(N − E)}, {@code t = (planeZ − E.z)/(N.z − E.z)}.
  * That is exact for any camera, turned or not, so a drag moves a body in the plane of its
  * motion (most demos are 2-D, in the x-y plane at z = 0), never towards or away from the eye.
  *
@@ -25,9 +26,9 @@ public final class PlanePick {
 
     /** Scratch: the screen point (pixels). */
     private final Vector2f screen = new Vector2f();
-    /** Scratch: the pick ray's points on the near and the far plane (world units, m). */
-    private final Vector3f near = new Vector3f();
-    private final Vector3f far = new Vector3f();
+    /** Scratch: the pick ray's origin and direction (world units, m). */
+    private final Vector3f origin = new Vector3f();
+    private final Vector3f direction = new Vector3f();
     /** Scratch: a projected point (x, y in pixels, z the depth from 0 to 1). */
     private final Vector3f projected = new Vector3f();
 
@@ -45,18 +46,24 @@ public final class PlanePick {
     public boolean screenToPlane(Camera camera, float screenX, float screenY, float planeZ,
             Vector3f storeResult) {
         screen.set(screenX, screenY);
-        camera.getWorldCoordinates(screen, 0f, near);
-        camera.getWorldCoordinates(screen, 1f, far);
-        far.subtractLocal(near);
-        float length = far.length();
-        if (!(length > 0f) || Math.abs(far.z) < MIN_DIRECTION_Z * length) {
+        camera.getWorldCoordinates(screen, 0f, origin);
+        if (camera.isParallelProjection()) {
+            direction.set(camera.getDirection());
+        } else {
+            // From the eye through the near plane's point: the far plane's point would carry
+            // the projection's round-off at depth 1 (far/near times the near plane's).
+            direction.set(origin).subtractLocal(camera.getLocation());
+            origin.set(camera.getLocation());
+        }
+        float length = direction.length();
+        if (!(length > 0f) || Math.abs(direction.z) < MIN_DIRECTION_Z * length) {
             return false;
         }
-        float t = (planeZ - near.z) / far.z;
+        float t = (planeZ - origin.z) / direction.z;
         if (!(t >= 0f) || Float.isInfinite(t)) {
             return false;
         }
-        storeResult.set(near.x + t * far.x, near.y + t * far.y, planeZ);
+        storeResult.set(origin.x + t * direction.x, origin.y + t * direction.y, planeZ);
         return true;
     }
 
