@@ -171,7 +171,7 @@ public abstract class DemoState extends BaseAppState {
     private final LaunchReach reach = new LaunchReach();
     /** The mouse on the bodies: the declared drags and the picked body; its inspector. */
     private final DragControl drags = new DragControl(particles, clock, this::restart,
-            scene::areArrowsVisible);
+            this::frameLaunches, scene::areArrowsVisible);
     private final Inspector inspector = new Inspector();
 
     private boolean sceneCreated;
@@ -468,6 +468,15 @@ public abstract class DemoState extends BaseAppState {
         }
         ScreenRect panel = parameterControls.getPanel().copyRect(new ScreenRect());
         return !panel.isEmpty() && panel.contains(screenX, screenY);
+    }
+
+    /**
+     * Access the inspector's text rectangle, as last placed, for tests of this package.
+     *
+     * @return the live rectangle (empty while closed; do not modify)
+     */
+    ScreenRect getInspectorRect() {
+        return inspector.getRect();
     }
 
     /**
@@ -920,7 +929,10 @@ public abstract class DemoState extends BaseAppState {
         warnings.clear();
         contactPause.restart();
         onRestart();
-        frameLaunches();
+        if (!drags.isDragging()) {
+            // During a drag the camera holds still, so the grip stays under the mouse.
+            frameLaunches();
+        }
         hudDirty = true;
     }
 

@@ -34,13 +34,15 @@ public final class DragControl {
     /** The gesture that picks a body for the inspector, and what it does. */
     public static final String CLICK_GESTURE = "click a sphere";
     public static final String CLICK_DESCRIPTION = "inspect it: P, V, |V|, m and its forces"
-            + " (top left); a click on empty space closes it";
+            + " (top right); a click on empty space closes it";
 
     private final List<Draggable> draggables = new ArrayList<>();
     private final List<Draggable> draggablesView = Collections.unmodifiableList(draggables);
     private final List<DemoParticle> particles;
     private final SimulationClock clock;
     private final Runnable restart;
+    /** Frames what the launches reach, once a drag has ended (not during it). */
+    private final Runnable dragEnded;
     private final PlanePick pick = new PlanePick();
     /** Whether arrows are drawn (an arrow tip is a grip only then). */
     private final BooleanSupplier arrowsShown;
@@ -69,14 +71,17 @@ public final class DragControl {
      *
      * @param particles the demo's particles (not null, live)
      * @param clock the demo's clock, paused by a drag that needs it (not null)
-     * @param restart starts the scene again at t = 0 (the demo's reset, not null)
+     * @param restart starts the scene again at t = 0 (the demo's reset, not null); while
+     *     a drag is on it must not move the camera, so the grip stays under the mouse
+     * @param dragEnded run when a drag ends: the camera may frame the new launch (not null)
      * @param arrowsShown tells whether velocity arrows are drawn (not null)
      */
     DragControl(List<DemoParticle> particles, SimulationClock clock, Runnable restart,
-            BooleanSupplier arrowsShown) {
+            Runnable dragEnded, BooleanSupplier arrowsShown) {
         this.particles = particles;
         this.clock = clock;
         this.restart = restart;
+        this.dragEnded = dragEnded;
         this.arrowsShown = arrowsShown;
     }
 
@@ -233,7 +238,8 @@ public final class DragControl {
     }
 
     /**
-     * Release the button: the drag ends; the picked body stays picked.
+     * Release the button: the drag ends (the camera may now frame what the new launch
+     * reaches); the picked body stays picked.
      *
      * @return true if a drag ended
      */
@@ -241,7 +247,24 @@ public final class DragControl {
         boolean ended = held != null && dragging;
         held = null;
         dragging = false;
+        if (ended) {
+            dragEnded.run();
+        }
         return ended;
+    }
+
+    /**
+     * Pick a particle for the inspector, as a click on its sphere does.
+     *
+     * @param particle one of the demo's particles, or null to pick nothing
+     */
+    public void inspect(DemoParticle particle) {
+        if (particle != null && !particles.contains(particle)) {
+            throw new IllegalArgumentException("only the demo's particles can be inspected,"
+                    + " not \"" + particle.getLabel() + "\"");
+        }
+        release();
+        picked = particle;
     }
 
     /** Forget the picked body (the inspector closes), e.g. at a change of scene. */

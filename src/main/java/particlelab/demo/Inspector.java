@@ -26,8 +26,9 @@ import particlelab.view.TextFormat;
 import particlelab.view.TextMeasure;
 
 /**
- * The picked body's numbers in a small box in the scene's top left corner, below the warning
- * band (the live graph takes the top right one): its label, P, V, |V|, the mass and each
+ * The picked body's numbers in a small box in the scene's top right corner, below the warning
+ * band (and below the live graph, when it is up; the grid's height marks run down the left
+ * edge, and most launches fly from the left): its label, P, V, |V|, the mass and each
  * force of its integrator by name with its value now, {@code F = F_push + m·g_field} (in
  * newtons). The text is rebuilt every frame into a reused {@link StringBuilder} and shown in
  * a {@link HudText}, so an open inspector allocates nothing; the force names are looked up
@@ -171,11 +172,14 @@ final class Inspector {
         label.setSize(size);
         label.setText(format(text, shown));
         float margin = layout.getMargin();
-        float top = layout.getWarning().getY() - 0.5f * margin;
+        // Below the warning band, or below the live graph when it is up.
+        ScreenRect above = layout.getGraph().isEmpty() ? layout.getWarning() : layout.getGraph();
+        float top = above.getY() - 0.5f * margin;
         float width = measure.width(label.getChars(), size);
         float height = label.getLineCount() * label.getLineHeight();
         float pad = PADDING * size;
-        rect.set(layout.getScene().getX() + margin, top - height, width, height);
+        rect.set(layout.getScene().getRight() - margin - pad - width, top - height, width,
+                height);
         label.setLocalTranslation(rect.getX(), top, 1f);
         box.setLocalTranslation(rect.getX() - pad, rect.getY() - pad, 0.5f);
         box.setLocalScale(width + 2f * pad, height + 2f * pad, 1f);
