@@ -62,6 +62,9 @@ public final class Draggable {
         void moveTo(DemoParticle particle, Vector3f value);
     }
 
+    /** How the help says when a launch's drag works, and what it does to the scene. */
+    public static final String PAUSED_NOTE = " (paused: a drag pauses, starts again at t = 0)";
+
     private final String what;
     private final Grip grip;
     private final Effect effect;
@@ -126,8 +129,8 @@ public final class Draggable {
         Vector3f launchVelocity = new Vector3f();
         Vector3f offset = new Vector3f();
         return new Draggable(what, Grip.BODY, Effect.LAUNCH, group,
-                "launch position P0" + (group.size() > 1 ? " of all " + group.size()
-                        + " together" : "") + " (paused: a drag pauses, starts again at t = 0)",
+                "launch position P0" + ofAll(group.size()) + (group.size() > 1 ? " together"
+                        : "") + PAUSED_NOTE,
                 false, (particle, point) -> {
                     offset.set(point.x, Math.max(0f, point.y), 0f)
                             .subtractLocal(particle.copyLaunchPosition(launchPosition));
@@ -151,8 +154,7 @@ public final class Draggable {
         List<DemoParticle> group = List.copyOf(particles);
         Vector3f launchPosition = new Vector3f();
         return new Draggable(what, Grip.ARROW_TIP, Effect.LAUNCH, group,
-                "launch velocity V0" + (group.size() > 1 ? " of all " + group.size() : "")
-                        + " (paused: a drag pauses, starts again at t = 0)",
+                "launch velocity V0" + ofAll(group.size()) + PAUSED_NOTE,
                 false, (particle, velocity) -> {
                     for (int i = 0; i < group.size(); ++i) {
                         DemoParticle each = group.get(i);
@@ -209,6 +211,16 @@ public final class Draggable {
      */
     public void moveTo(DemoParticle particle, Vector3f value) {
         mover.moveTo(particle, value);
+    }
+
+    /**
+     * Name a group of particles launched together, for a description.
+     *
+     * @param count how many (&ge;1)
+     * @return "" for one, " of both" for two, " of all N" for more
+     */
+    public static String ofAll(int count) {
+        return count == 1 ? "" : count == 2 ? " of both" : " of all " + count;
     }
 
     @Override

@@ -199,9 +199,8 @@ public final class LaunchControl {
      */
     public Draggable dragVelocity(String what, DemoParameters parameters) {
         return new Draggable(what, Draggable.Grip.ARROW_TIP, Draggable.Effect.LAUNCH,
-                particles, "launch velocity V0" + (particles.size() > 1 ? " of all "
-                        + particles.size() : "") + ": the speed and angle parameters"
-                        + " (paused: a drag pauses, starts again at t = 0)", false,
+                particles, "launch velocity V0" + Draggable.ofAll(particles.size())
+                        + ": the speed and angle parameters" + Draggable.PAUSED_NOTE, false,
                 (particle, dragged) -> {
                     DemoParameter speedParameter = parameters.get(parameters.indexOf("speed"));
                     DemoParameter angleParameter = parameters.get(parameters.indexOf("angle"));
