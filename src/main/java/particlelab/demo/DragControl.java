@@ -33,8 +33,8 @@ public final class DragControl {
     public static final String CAMERA_GESTURE = "right drag";
     /** The gesture that picks a body for the inspector, and what it does. */
     public static final String CLICK_GESTURE = "click a sphere";
-    public static final String CLICK_DESCRIPTION = "inspect it: P, V, |V|, m and its forces"
-            + " (top right); a click on empty space closes it";
+    public static final String CLICK_DESCRIPTION = "inspect: P, V, m, forces (click"
+            + " elsewhere: close)";
 
     private final List<Draggable> draggables = new ArrayList<>();
     private final List<Draggable> draggablesView = Collections.unmodifiableList(draggables);
@@ -116,15 +116,31 @@ public final class DragControl {
 
     /**
      * Write the help's "Mouse" rows: each declaration's gesture and description, then the
-     * click that inspects (the camera's gesture is in jME's section).
+     * click that inspects (the camera's gesture is in jME's section). A sphere and its arrow
+     * tip declared one after the other, for the same particles with the same note, share one
+     * row ("drag a sphere / its arrow tip  -  launch P0 / launch V0 (note)"), so the help
+     * stays short enough to be set in legible columns.
      *
      * @param declared the declarations (not null)
      * @return new rows, each {gesture, description} (not null)
      */
     public static List<String[]> helpRows(List<Draggable> declared) {
         List<String[]> rows = new ArrayList<>();
-        for (Draggable draggable : declared) {
-            rows.add(new String[] {draggable.getGestureLabel(), draggable.getDescription()});
+        for (int i = 0; i < declared.size(); ++i) {
+            Draggable draggable = declared.get(i);
+            Draggable next = i + 1 < declared.size() ? declared.get(i + 1) : null;
+            if (next != null && draggable.getGrip() == Draggable.Grip.BODY
+                    && next.getGrip() == Draggable.Grip.ARROW_TIP
+                    && next.getWhat().equals(draggable.getWhat())
+                    && next.getNote().equals(draggable.getNote())
+                    && next.getParticles().equals(draggable.getParticles())) {
+                rows.add(new String[] {draggable.getGestureLabel() + " / its arrow tip",
+                    draggable.getSummary() + " / " + next.getSummary() + draggable.getNote()});
+                ++i;
+            } else {
+                rows.add(new String[] {draggable.getGestureLabel(),
+                    draggable.getDescription()});
+            }
         }
         rows.add(new String[] {CLICK_GESTURE, CLICK_DESCRIPTION});
         return rows;

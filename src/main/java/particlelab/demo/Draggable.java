@@ -63,13 +63,14 @@ public final class Draggable {
     }
 
     /** How the help says when a launch's drag works, and what it does to the scene. */
-    public static final String PAUSED_NOTE = " (paused: a drag pauses, starts again at t = 0)";
+    public static final String PAUSED_NOTE = " (pauses, back to t = 0)";
 
     private final String what;
     private final Grip grip;
     private final Effect effect;
     private final List<DemoParticle> particles;
-    private final String description;
+    private final String summary;
+    private final String note;
     private final boolean whileRunning;
     private final Mover mover;
 
@@ -87,9 +88,31 @@ public final class Draggable {
      */
     public Draggable(String what, Grip grip, Effect effect, List<DemoParticle> particles,
             String description, boolean whileRunning, Mover mover) {
-        if (what == null || what.isEmpty() || description == null || description.isEmpty()) {
+        this(what, grip, effect, particles, description, "", whileRunning, mover);
+    }
+
+    /**
+     * Declare a draggable thing whose description ends in a note on when it works, which
+     * the help writes once for a sphere and its arrow tip declared one after the other
+     * ({@link DragControl#helpRows}).
+     *
+     * @param what the particles as the help names them, e.g. "a sphere" (not null, not empty)
+     * @param grip what the mouse takes hold of (not null)
+     * @param effect what a drag changes (not null)
+     * @param particles the particles that offer the grip (not null, not empty; copied)
+     * @param summary what moving it changes, e.g. "launch P0" (not null, not empty)
+     * @param note when and how, e.g. {@link #PAUSED_NOTE}, appended to the summary (not
+     *     null; may be empty)
+     * @param whileRunning true if it may be dragged while the clock runs; false: a press on
+     *     it pauses the simulation first
+     * @param mover takes each new value (not null)
+     */
+    public Draggable(String what, Grip grip, Effect effect, List<DemoParticle> particles,
+            String summary, String note, boolean whileRunning, Mover mover) {
+        if (what == null || what.isEmpty() || summary == null || summary.isEmpty()
+                || note == null) {
             throw new IllegalArgumentException("a draggable needs a name and a description,"
-                    + " but had " + what + " and " + description);
+                    + " but had " + what + " and " + summary);
         }
         if (grip == null || effect == null || mover == null) {
             throw new IllegalArgumentException("a draggable's grip, effect and mover must not"
@@ -109,7 +132,8 @@ public final class Draggable {
         this.grip = grip;
         this.effect = effect;
         this.particles = List.copyOf(particles);
-        this.description = description;
+        this.summary = summary;
+        this.note = note;
         this.whileRunning = whileRunning;
         this.mover = mover;
     }
@@ -129,8 +153,7 @@ public final class Draggable {
         Vector3f launchVelocity = new Vector3f();
         Vector3f offset = new Vector3f();
         return new Draggable(what, Grip.BODY, Effect.LAUNCH, group,
-                "launch position P0" + ofAll(group.size()) + (group.size() > 1 ? " together"
-                        : "") + PAUSED_NOTE,
+                "launch P0" + ofAll(group.size()), PAUSED_NOTE,
                 false, (particle, point) -> {
                     offset.set(point.x, Math.max(0f, point.y), 0f)
                             .subtractLocal(particle.copyLaunchPosition(launchPosition));
@@ -154,7 +177,7 @@ public final class Draggable {
         List<DemoParticle> group = List.copyOf(particles);
         Vector3f launchPosition = new Vector3f();
         return new Draggable(what, Grip.ARROW_TIP, Effect.LAUNCH, group,
-                "launch velocity V0" + ofAll(group.size()) + PAUSED_NOTE,
+                "launch V0" + ofAll(group.size()), PAUSED_NOTE,
                 false, (particle, velocity) -> {
                     for (int i = 0; i < group.size(); ++i) {
                         DemoParticle each = group.get(i);
@@ -183,9 +206,19 @@ public final class Draggable {
         return particles;
     }
 
-    /** @return what moving it does, for the help (not null) */
+    /** @return what moving it does and when: the summary and the note (not null) */
     public String getDescription() {
-        return description;
+        return summary + note;
+    }
+
+    /** @return what moving it changes, without the note (not null) */
+    public String getSummary() {
+        return summary;
+    }
+
+    /** @return when and how it works, appended to the summary (not null, may be empty) */
+    public String getNote() {
+        return note;
     }
 
     /** @return true if it may be dragged while the clock runs */
@@ -225,6 +258,6 @@ public final class Draggable {
 
     @Override
     public String toString() {
-        return getGestureLabel() + ": " + description;
+        return getGestureLabel() + ": " + getDescription();
     }
 }

@@ -199,8 +199,8 @@ public final class LaunchControl {
      */
     public Draggable dragVelocity(String what, DemoParameters parameters) {
         return new Draggable(what, Draggable.Grip.ARROW_TIP, Draggable.Effect.LAUNCH,
-                particles, "launch velocity V0" + Draggable.ofAll(particles.size())
-                        + ": the speed and angle parameters" + Draggable.PAUSED_NOTE, false,
+                particles, "launch V0" + Draggable.ofAll(particles.size()) + " = speed, angle",
+                Draggable.PAUSED_NOTE, false,
                 (particle, dragged) -> {
                     DemoParameter speedParameter = parameters.get(parameters.indexOf("speed"));
                     DemoParameter angleParameter = parameters.get(parameters.indexOf("angle"));

@@ -287,9 +287,8 @@ public final class AnyHeightDemo extends DemoState {
         // The target, as the arrow keys move it but anywhere in their range, to the metre
         // the HUD prints; both solutions fire again at once, so also while running.
         declareDraggable(new Draggable("the target", Draggable.Grip.BODY,
-                Draggable.Effect.PLACE, List.of(target), "its distance and height, to the"
-                        + " metre, in the arrow keys' range; both solutions fire again (also"
-                        + " while running)", true, (particle, point) -> {
+                Draggable.Effect.PLACE, List.of(target), "x and y to the metre, fired at",
+                " (also running)", true, (particle, point) -> {
                     float distance = Math.max(MIN_DISTANCE, Math.min(MAX_DISTANCE,
                             Math.round(point.x)));
                     float height = Math.max(MIN_HEIGHT, Math.min(MAX_HEIGHT,

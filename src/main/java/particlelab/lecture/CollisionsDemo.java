@@ -257,14 +257,13 @@ public final class CollisionsDemo extends DemoState {
         // the mass keys arrange the preset again).
         List<DemoParticle> all = List.of(balls);
         declareDraggable(new Draggable("a ball", Draggable.Grip.BODY, Draggable.Effect.LAUNCH,
-                all, "its start, inside the box" + Draggable.PAUSED_NOTE, false,
+                all, "its start, in the box", Draggable.PAUSED_NOTE, false,
                 (ball, point) -> ball.setLaunch(dragged.set(
                         Math.max(X_MIN + RADIUS, Math.min(X_MAX - RADIUS, point.x)),
                         Math.max(RADIUS, Math.min(Y_MAX - RADIUS, point.y)), 0f),
                         ball.copyLaunchVelocity(draggedVelocity))));
         declareDraggable(new Draggable("a ball", Draggable.Grip.ARROW_TIP,
-                Draggable.Effect.LAUNCH, all, "its start velocity (a ball at rest shows no"
-                        + " arrow to take)" + Draggable.PAUSED_NOTE, false,
+                Draggable.Effect.LAUNCH, all, "start velocity", Draggable.PAUSED_NOTE, false,
                 (ball, velocity) -> ball.setLaunch(ball.copyLaunchPosition(dragged),
                         velocity)));
     }

@@ -127,10 +127,10 @@ class PickHeadlessTest {
     void theHelpAndTheFooterNameTheMouse() throws Exception {
         String[] texts = harness.call(() -> new String[] {drag.getHelpText(),
             drag.getHud().getLayout().getFooterText()});
-        assertTrue(texts[0].contains("Mouse\n   drag a sphere  -  launch position P0 of all 3"),
-                texts[0]);
-        assertTrue(texts[0].contains("drag a sphere's arrow tip  -  launch velocity V0"),
-                texts[0]);
+        // The sphere and its arrow tip share a row.
+        assertTrue(texts[0].contains("Mouse\n   drag a sphere / its arrow tip  -  launch P0 of"
+                + " all 3 / launch V0 of all 3 = speed, angle (pauses, back to t = 0)\n"
+                + "   click a sphere  -  inspect"), texts[0]);
         assertTrue(texts[0].contains("right drag / wheel  -  turn / zoom the camera"),
                 texts[0]);
         assertTrue(texts[1].contains("right drag  camera"), texts[1]);

@@ -180,8 +180,12 @@ class DragControlTest {
         assertFalse(declared.get(0).isDraggableWhileRunning());
         assertEquals(3, declared.get(0).getParticles().size());
         List<String[]> rows = DragControl.helpRows(declared);
-        assertEquals(3, rows.size());
-        assertEquals(DragControl.CLICK_GESTURE, rows.get(2)[0]);
+        // The sphere and its arrow tip share the help's first row; the click is the second.
+        assertEquals(2, rows.size());
+        assertEquals("drag a sphere / its arrow tip", rows.get(0)[0]);
+        assertEquals("launch P0 of all 3 / launch V0 of all 3 = speed, angle"
+                + Draggable.PAUSED_NOTE, rows.get(0)[1]);
+        assertEquals(DragControl.CLICK_GESTURE, rows.get(1)[0]);
     }
 
     @Test
