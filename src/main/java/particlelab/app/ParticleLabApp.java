@@ -47,6 +47,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private final WindowControls windowControls;
     private final TourGuide tour;
     private final ExportState export;
+    /** The left mouse button on the bodies; it moves the camera's turning to the right. */
+    private final PickInput pickInput;
     private final int frameLimit;
     private final ScreenshotCapture capture;
     private final CountDownLatch finished = new CountDownLatch(1);
@@ -99,6 +101,7 @@ public final class ParticleLabApp extends SimpleApplication {
         this.export = new ExportState(switcher, ExportState.BASE_FOLDER);
         List<KeyBinding> windowKeys = new ArrayList<>(windowControls.getBindings());
         windowKeys.add(export.getBinding());
+        this.pickInput = new PickInput(switcher);
         this.tour = new TourGuide(switcher);
         windowKeys.addAll(tour.getBindings());
         switcher.addBindings(windowKeys);
@@ -171,6 +174,15 @@ public final class ParticleLabApp extends SimpleApplication {
     }
 
     /**
+     * Access the mouse's picking and dragging of the bodies.
+     *
+     * @return the live input (not null)
+     */
+    PickInput getPickInput() {
+        return pickInput;
+    }
+
+    /**
      * Access the export (the E key's).
      *
      * @return the live export (not null)
@@ -224,6 +236,8 @@ public final class ParticleLabApp extends SimpleApplication {
         setPauseOnLostFocus(false);
         viewPort.setBackgroundColor(BACKGROUND);
         if (flyCam != null) {
+            // Turned by dragging, with the right button (PickInput moves it there): the left
+            // button picks and drags the bodies.
             flyCam.setDragToRotate(true);
             flyCam.setMoveSpeed(15f);
             flyCam.setZoomSpeed(5f);
@@ -236,6 +250,7 @@ public final class ParticleLabApp extends SimpleApplication {
         stateManager.attach(switcher);
         stateManager.attach(windowControls);
         stateManager.attach(export);
+        stateManager.attach(pickInput);
     }
 
     @Override

@@ -26,6 +26,8 @@ final class DemoKeys {
     private final List<KeyBinding> application = new ArrayList<>();
     /** The application's demos, in catalogue order: numbered from 1 in the help. */
     private final List<String> demoTitles = new ArrayList<>();
+    /** What the demo lets the mouse drag, for the help's "Mouse" section. */
+    private List<Draggable> draggables = new ArrayList<>();
 
     /**
      * Declare a key every demo has.
@@ -65,6 +67,15 @@ final class DemoKeys {
     }
 
     /**
+     * Name what the demo lets the mouse drag, for the help's "Mouse" section.
+     *
+     * @param declared the declarations (not null, live)
+     */
+    void setDraggables(List<Draggable> declared) {
+        draggables = declared;
+    }
+
+    /**
      * Replace the list of demos the help shows by number, the numbers a digit entry reaches.
      *
      * @param titles the demos' titles, in catalogue order (not null, copied)
@@ -96,6 +107,11 @@ final class DemoKeys {
         HelpText help = new HelpText();
         help.section(title + " - keys");
         addSection(help, own);
+        help.section("Mouse");
+        List<String[]> mouse = DragControl.helpRows(draggables);
+        for (int i = 0; i < mouse.size(); ++i) {
+            help.key(mouse.get(i)[0], mouse.get(i)[1]);
+        }
         help.section("Every demo");
         addSection(help, shared);
         if (!application.isEmpty()) {
@@ -122,6 +138,8 @@ final class DemoKeys {
         StringBuilder footer = new StringBuilder();
         appendFooter(footer, shared);
         appendFooter(footer, application);
+        footer.append(footer.length() == 0 ? "" : FOOTER_GAP).append(DragControl.CAMERA_GESTURE)
+                .append("  camera");
         return footer.toString();
     }
 

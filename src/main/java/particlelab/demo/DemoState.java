@@ -231,6 +231,10 @@ public abstract class DemoState extends BaseAppState {
     private float currentStepSeconds;
     /** What the launches reach, for the camera to frame. */
     private final LaunchReach reach = new LaunchReach();
+    /** The mouse on the bodies: the declared drags and the picked body; its inspector. */
+    private final DragControl drags = new DragControl(particles, clock, this::restart,
+            this::frameLaunches, scene::areArrowsVisible);
+    private final Inspector inspector = new Inspector();
 
     private boolean sceneCreated;
     /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
@@ -553,6 +557,79 @@ public abstract class DemoState extends BaseAppState {
      */
     protected float getDrawBlend() {
         return replay.getFrameBlend();
+    }
+
+    // ------------------------------------------------- the mouse: drags and inspector ----
+
+    /**
+     * Declare what the mouse may drag: call {@link #declareDraggable} for each (a launch's
+     * position and velocity, a ball, a target). The help's "Mouse" section and the pages'
+     * mouse table are written from them. Called once, after {@link #declareKeys()}. The
+     * default declares nothing: a click on a sphere still shows it in the inspector.
+     */
+    protected void declareDraggables() {
+    }
+
+    /**
+     * Declare a thing the mouse may drag. Call from {@link #declareDraggables()}.
+     *
+     * @param draggable the declaration, its particles the demo's (not null)
+     * @return draggable
+     */
+    protected Draggable declareDraggable(Draggable draggable) {
+        return drags.add(draggable);
+    }
+
+    /**
+     * Access the mouse's control of the bodies (pick, drag, release), for the application's
+     * mouse input and for tests.
+     *
+     * @return the live control (not null)
+     */
+    public DragControl getDragControl() {
+        ensureScene();
+        return drags;
+    }
+
+    /**
+     * Test whether the HUD takes the mouse at a screen point, so that a press there must not
+     * pick a body behind it: the help overlay (it covers the scene) or the parameter panel.
+     *
+     * @param screenX the point's x (in pixels from the window's left edge)
+     * @param screenY the point's y (in pixels from the window's bottom edge)
+     * @return true if the HUD is there
+     */
+    public boolean isHudAt(float screenX, float screenY) {
+        if (hud == null || hud.isHelpVisible()) {
+            return true;
+        }
+        ScreenRect panel = parameterControls.getPanel().copyRect(new ScreenRect());
+        return !panel.isEmpty() && panel.contains(screenX, screenY);
+    }
+
+    /**
+     * Access the inspector's text rectangle, as last placed, for tests of this package.
+     *
+     * @return the live rectangle (empty while closed; do not modify)
+     */
+    ScreenRect getInspectorRect() {
+        return inspector.getRect();
+    }
+
+    /**
+     * Write the inspector's text for the picked body, as its box shows it.
+     *
+     * @param storeResult where to write (not null, cleared and modified)
+     * @return storeResult, empty when nothing is picked
+     */
+    public StringBuilder formatInspector(StringBuilder storeResult) {
+        DemoParticle picked = drags.getPicked();
+        inspector.show(picked);
+        if (picked == null) {
+            storeResult.setLength(0);
+            return storeResult;
+        }
+        return inspector.format(storeResult, picked);
     }
 
     /**
@@ -927,6 +1004,9 @@ public abstract class DemoState extends BaseAppState {
         if (!hud.isHelpVisible()) {
             scene.copyTextRects(storeResult);
             ghosts.copyTextRects(storeResult);
+            if (!inspector.getRect().isEmpty()) {
+                storeResult.add(new ScreenRect().set(inspector.getRect()));
+            }
         }
         return storeResult;
     }
@@ -988,7 +1068,10 @@ public abstract class DemoState extends BaseAppState {
         warnings.clear();
         contactPause.restart();
         onRestart();
-        frameLaunches();
+        if (!drags.isDragging()) {
+            // During a drag the camera holds still, so the grip stays under the mouse.
+            frameLaunches();
+        }
         hudDirty = true;
     }
 
@@ -1298,6 +1381,9 @@ public abstract class DemoState extends BaseAppState {
         laidOutWidth = app.getCamera().getWidth();
         laidOutHeight = app.getCamera().getHeight();
         hud.setTitle(titleText);
+        inspector.build(assets, font);
+        hud.getNode().attachChild(inspector.getNode());
+        drags.setSphereRadius(scene.getSphereRadius());
         hud.setFooter(keys.buildFooter());
         refreshEquations();
         helpText = keys.buildHelp(title);
@@ -1375,6 +1461,8 @@ public abstract class DemoState extends BaseAppState {
             }
         }
         parameterControls.update(hud.getLayout());
+        inspector.show(drags.getPicked());
+        inspector.update(hud.getLayout(), hud.isHelpVisible());
     }
 
     // ---------------------------------------------------------------- private helpers ----
@@ -1717,6 +1805,8 @@ public abstract class DemoState extends BaseAppState {
         getParameters().start();
         declareSharedKeys();
         declareKeys();
+        declareDraggables();
+        keys.setDraggables(drags.getDraggables());
     }
 
     private void recoverFromBlowUp() {

@@ -175,6 +175,43 @@ public final class LaunchControl {
     }
 
     /**
+     * Declare the drag of the launch position: the sphere goes under the mouse and every
+     * particle of this launch moves with it (paused only, see
+     * {@link Draggable#launchPosition}).
+     *
+     * @param what the particles as the help names them, e.g. "a sphere" (not null)
+     * @return the declaration (not null)
+     */
+    public Draggable dragPosition(String what) {
+        return Draggable.launchPosition(what, particles);
+    }
+
+    /**
+     * Declare the drag of the launch velocity by an arrow's tip: the tip under the mouse
+     * gives {@code V0 = (tip − P0)/T}, written into the speed and angle parameters (so the
+     * panel, the equations and the kept shots' legend show it), each clamped to its range;
+     * it applies at once, the scene starting again at t = 0. Paused only. Declare the speed
+     * and angle parameters too.
+     *
+     * @param what the particles as the help names them (not null)
+     * @param parameters the demo's parameters, with "speed" and "angle" (not null)
+     * @return the declaration (not null)
+     */
+    public Draggable dragVelocity(String what, DemoParameters parameters) {
+        return new Draggable(what, Draggable.Grip.ARROW_TIP, Draggable.Effect.LAUNCH,
+                particles, "launch V0" + Draggable.ofAll(particles.size()) + " = speed, angle",
+                Draggable.PAUSED_NOTE, false,
+                (particle, dragged) -> {
+                    DemoParameter speedParameter = parameters.get(parameters.indexOf("speed"));
+                    DemoParameter angleParameter = parameters.get(parameters.indexOf("angle"));
+                    float newSpeed = (float) Math.hypot(dragged.x, dragged.y);
+                    float newAngle = (float) Math.toDegrees(Math.atan2(dragged.y, dragged.x));
+                    parameters.set("speed", clamp(newSpeed, speedParameter));
+                    parameters.set("angle", clamp(newAngle, angleParameter));
+                });
+    }
+
+    /**
      * Write the launch as the HUD's equations show it: "m = 1 kg,  V0 = (10, 10, 0) m/s",
      * and g when it is not the standard 9.8 m/s² (the line stays as short as the lecture's).
      * Uses the values in the scene.
@@ -195,6 +232,11 @@ public final class LaunchControl {
         text.append("V0 = (");
         DemoParameter.appendShort(text, velocity.x, 2).append(", ");
         return DemoParameter.appendShort(text, velocity.y, 2).append(", 0) m/s");
+    }
+
+    /** @return value clamped to the parameter's range */
+    private static float clamp(float value, DemoParameter parameter) {
+        return Math.max(parameter.getMin(), Math.min(parameter.getMax(), value));
     }
 
     /** Give every particle the launch velocity, from its own launch position. */

@@ -4,10 +4,12 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.aiming.LaunchAngles;
 import particlelab.collision.Plane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Draggable;
 import particlelab.demo.KeyBinding;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
@@ -279,6 +281,23 @@ public final class AnyHeightDemo extends DemoState {
         lowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "target " + up + " lower",
                 () -> moveTarget(0f, -HEIGHT_STEP));
         bindKey(KeyInput.KEY_F, "F", "fire both solutions again", this::fire);
+    }
+
+    @Override
+    protected void declareDraggables() {
+        // The target, as the arrow keys move it but anywhere in their range, to the metre
+        // the HUD prints; both solutions fire again at once, so also while running.
+        declareDraggable(new Draggable("the target", Draggable.Grip.BODY,
+                Draggable.Effect.PLACE, List.of(target), "x and y to the metre, fired at",
+                " (also running)", true, (particle, point) -> {
+                    float distance = Math.max(MIN_DISTANCE, Math.min(MAX_DISTANCE,
+                            Math.round(point.x)));
+                    float height = Math.max(MIN_HEIGHT, Math.min(MAX_HEIGHT,
+                            Math.round(point.y - GUN_HEIGHT)));
+                    if (distance != targetDistance || height != targetHeight) {
+                        setTarget(distance, height);
+                    }
+                }));
     }
 
     @Override

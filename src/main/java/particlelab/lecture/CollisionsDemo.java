@@ -4,10 +4,12 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
+import java.util.List;
 import particlelab.collision.Plane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Draggable;
 import particlelab.demo.Presentation;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -115,6 +117,9 @@ public final class CollisionsDemo extends DemoState {
     private final SphereRule sweptRule = new SphereRule(ballResponse, Detection.SWEPT);
     private final SphereRule overlapRule = new SphereRule(ballResponse, Detection.OVERLAP);
     private final DemoParticle[] balls = new DemoParticle[BALLS];
+    /** Scratch: a dragged ball's start and start velocity (m, m/s). */
+    private final Vector3f dragged = new Vector3f();
+    private final Vector3f draggedVelocity = new Vector3f();
     private final Vector3f position = new Vector3f();
     private final Vector3f velocity = new Vector3f();
     private final Vector3f momentum = new Vector3f();
@@ -248,6 +253,23 @@ public final class CollisionsDemo extends DemoState {
                 () -> setMasses((mass1 + 1) % MASSES.length, mass2));
         bindKey(KeyInput.KEY_RIGHT, "Right", "mass m2 of ball 2 (the others too): " + masses,
                 () -> setMasses(mass1, (mass2 + 1) % MASSES.length));
+    }
+
+    @Override
+    protected void declareDraggables() {
+        // A collision of one's own: a ball's start and its start velocity (P, Up, Down and
+        // the mass keys arrange the preset again).
+        List<DemoParticle> all = List.of(balls);
+        declareDraggable(new Draggable("a ball", Draggable.Grip.BODY, Draggable.Effect.LAUNCH,
+                all, "its start, in the box", Draggable.PAUSED_NOTE, false,
+                (ball, point) -> ball.setLaunch(dragged.set(
+                        Math.max(X_MIN + RADIUS, Math.min(X_MAX - RADIUS, point.x)),
+                        Math.max(RADIUS, Math.min(Y_MAX - RADIUS, point.y)), 0f),
+                        ball.copyLaunchVelocity(draggedVelocity))));
+        declareDraggable(new Draggable("a ball", Draggable.Grip.ARROW_TIP,
+                Draggable.Effect.LAUNCH, all, "start velocity", Draggable.PAUSED_NOTE, false,
+                (ball, velocity) -> ball.setLaunch(ball.copyLaunchPosition(dragged),
+                        velocity)));
     }
 
     @Override

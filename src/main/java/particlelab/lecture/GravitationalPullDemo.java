@@ -54,6 +54,13 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     @Override
+    protected void declareDraggables() {
+        // The mouse moves the launch (paused): the sphere P0, its arrow's tip V0.
+        declareDraggable(launch.dragPosition("the ball"));
+        declareDraggable(launch.dragVelocity("the ball", getParameters()));
+    }
+
+    @Override
     protected void describeEquations(StringBuilder text) {
         float g = getParameters().getValue("g");
         launch.copyVelocity(shownVelocity);

@@ -77,6 +77,13 @@ public final class ThrustDemo extends DemoState {
     }
 
     @Override
+    protected void declareDraggables() {
+        // The mouse moves the launch (paused): the sphere P0, its arrow's tip V0.
+        declareDraggable(launch.dragPosition("a sphere"));
+        declareDraggable(launch.dragVelocity("a sphere", getParameters()));
+    }
+
+    @Override
     protected void describeEquations(StringBuilder text) {
         launch.appendLaunch(text.append("a = g + F/m,  "), getParameters()).append('\n');
         text.append("drag F = -b V, b = ");

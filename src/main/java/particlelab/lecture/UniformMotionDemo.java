@@ -62,6 +62,13 @@ public final class UniformMotionDemo extends DemoState {
     }
 
     @Override
+    protected void declareDraggables() {
+        // The mouse moves the launch (paused): the sphere P0, its arrow's tip V0.
+        declareDraggable(launch.dragPosition("the sphere"));
+        declareDraggable(launch.dragVelocity("the sphere", getParameters()));
+    }
+
+    @Override
     protected void afterStep(float stepSeconds) {
         // Leaving the screen: start over so the demo loops in front of the class. Called
         // from a step, restart() waits until the frame's steps are over, so t starts again

@@ -7,6 +7,7 @@ import java.util.List;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.Draggable;
 import particlelab.demo.Presentation;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
@@ -139,6 +140,14 @@ public final class WindDemo extends DemoState {
                     windVelocity.x = value;
                     wind.setWindVelocity(windVelocity);
                 }));
+    }
+
+    @Override
+    protected void declareDraggables() {
+        // Step 4b: what the mouse may drag (paused): the launch of both balls, the help and
+        // the pages' mouse table are written from it.
+        declareDraggable(Draggable.launchPosition("a ball", getParticles()));
+        declareDraggable(Draggable.launchVelocity("a ball", getParticles()));
     }
 
     @Override

@@ -45,7 +45,7 @@ public final class HelpText {
         key("F5", "show / hide jME's frame statistics");
         key("C", "print the camera's position to the console");
         key("M", "print memory use to the console");
-        key("drag mouse / wheel", "turn / zoom the camera;  W A S D Q Z  fly;  R  reframes");
+        key("right drag / wheel", "turn / zoom the camera;  W A S D Q Z  fly;  R  reframes");
         return this;
     }
 

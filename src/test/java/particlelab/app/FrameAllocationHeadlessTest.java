@@ -12,6 +12,7 @@ import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.physics.SimulationClock;
 
@@ -22,7 +23,8 @@ import particlelab.physics.SimulationClock;
  * the demo's steps, views, HUD text and panel, the scene's logical and geometric state, and
  * the render manager's pass over the viewports; see {@link #frame}), measured with the
  * thread's allocation counter. Tested with the HUD refreshed every frame (the default: it
- * shows the frame it is drawn on) and at the slower 10 Hz a demo may choose.
+ * shows the frame it is drawn on) and at the slower 10 Hz a demo may choose, with the
+ * inspector open on the demo's first body.
  *
  * <p>The tests of {@code advance} and {@code formatHud} alone could not see the HUD text
  * handed to jME, which made about 12 KB per frame in the fountain.
@@ -183,12 +185,20 @@ class FrameAllocationHeadlessTest {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.getClock().setPaused(false);
         demo.setHudRefreshSeconds(hudRefreshSeconds);
+        // The inspector open on the first body shown: its numbers change every frame too.
+        for (DemoParticle particle : demo.getParticles()) {
+            if (!particle.isParked()) {
+                demo.getDragControl().inspect(particle);
+                break;
+            }
+        }
         restart(demo);
         return true;
     }
 
     /** Put the HUD's refresh rate, the window's size and the HUD factor back. */
     private static Boolean end(DemoState demo) {
+        demo.getDragControl().clearPick();
         demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
         resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
         harness.app().getWindowControls().setUiFactor(1f);

@@ -7,6 +7,8 @@ import java.util.List;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
+import particlelab.demo.DragControl;
+import particlelab.demo.Draggable;
 import particlelab.demo.KeyBinding;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
@@ -16,7 +18,8 @@ import particlelab.view.HelpText;
  * Writes the pages' key tables from the bindings themselves, the way the help overlay is
  * written: a demo's own keys ({@link DemoState#getBindings()} after the shared ones), the keys
  * every demo shares, the application's (choosing a demo, the window, export: read from the
- * {@link DemoSwitcher} of a {@link ParticleLabApp} built as the window builds it) and jME's.
+ * {@link DemoSwitcher} of a {@link ParticleLabApp} built as the window builds it), jME's,
+ * and the mouse's gestures (each demo's declared drags).
  * No jME application is started: a demo declares its keys without one.
  *
  * <p>A table is Markdown: one row per binding, its keys in code spans, its description as the
@@ -31,6 +34,8 @@ final class KeyTables {
     static final String APPLICATION = "application";
     /** The block name of jME's own keys. */
     static final String JME = "jme";
+    /** The block name of the mouse's gestures: every demo's, then each demo's drags. */
+    static final String MOUSE = "mouse";
     /** What comes before the range in {@link DemoParameter#appendRange}. */
     private static final String RANGE_FROM = " from ";
 
@@ -94,6 +99,42 @@ final class KeyTables {
     }
 
     /**
+     * Write the table of the mouse's gestures, as the help's "Mouse" section lists them: those
+     * of every demo (the click that inspects, the camera's), then each demo's declared drags
+     * ({@link DemoState#declareDraggables}), in catalogue order; a demo that declares none is
+     * named in the last row.
+     *
+     * @return the Markdown, ending in a newline (not null)
+     */
+    static String mouseTable() {
+        StringBuilder text = new StringBuilder("| demo | gesture | what it does |\n"
+                + "|---|---|---|\n");
+        List<String[]> every = DragControl.helpRows(List.of());
+        for (String[] row : every) {
+            mouseRow(text, "every demo", row);
+        }
+        mouseRow(text, "every demo", new String[] {DragControl.CAMERA_GESTURE + " / wheel",
+            "turn / zoom the camera"});
+        List<String> without = new ArrayList<>();
+        for (String name : DemoCatalog.names()) {
+            DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
+            List<Draggable> declared = demo.getDragControl().getDraggables();
+            if (declared.isEmpty()) {
+                without.add(name);
+            }
+            for (Draggable draggable : declared) {
+                mouseRow(text, name, new String[] {draggable.getGestureLabel(),
+                    draggable.getDescription()});
+            }
+        }
+        if (!without.isEmpty()) {
+            text.append("| ").append(String.join(", ", without))
+                    .append(" | | nothing to drag (a click still inspects) |\n");
+        }
+        return text.toString();
+    }
+
+    /**
      * Write the block a page marks with {@code <!-- keys:NAME -->}.
      *
      * @param block a demo's name, {@link #SHARED}, {@link #APPLICATION} or {@link #JME}
@@ -107,6 +148,8 @@ final class KeyTables {
                 return applicationTable();
             case JME:
                 return jmeKeys();
+            case MOUSE:
+                return mouseTable();
             default:
                 return demoTable(block);
         }
@@ -162,6 +205,7 @@ final class KeyTables {
         names.add(SHARED);
         names.add(APPLICATION);
         names.add(JME);
+        names.add(MOUSE);
         for (String name : names) {
             System.out.println("<!-- keys:" + name + " -->");
             System.out.print(block(name));
@@ -224,6 +268,12 @@ final class KeyTables {
                     .append(" |\n");
         }
         return text.toString();
+    }
+
+    /** Append one row of the mouse table: the demo, the gesture in a code span, what. */
+    private static void mouseRow(StringBuilder text, String demo, String[] row) {
+        text.append("| ").append(demo).append(" | `").append(row[0]).append("` | ")
+                .append(escape(row[1])).append(" |\n");
     }
 
     /**

@@ -40,7 +40,9 @@ class DemoKeysTest {
         keys.setApplication(List.of(new KeyBinding(KeyInput.KEY_TAB, "Tab", "next demo",
                 () -> { }).withSummary("next demo")));
 
-        assertEquals("H  help     P  pause     Tab  next demo", keys.buildFooter());
+        // The camera's gesture last: the right button turns it (the left one picks).
+        assertEquals("H  help     P  pause     Tab  next demo     right drag  camera",
+                keys.buildFooter());
     }
 
     @Test

@@ -1,0 +1,158 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.lecture.DragDemo;
+import particlelab.physics.SimulationClock;
+import particlelab.view.ScreenRect;
+
+/**
+ * The window's mouse on DragDemo in a real headless application, through the application's
+ * pick input and its framed camera: a press on a sphere, a move, a release move the launch to
+ * where the mouse is (the new launch is drawn under the mouse) and the scene waits at t = 0;
+ * a press on the parameter panel or with the help up picks nothing; the help and the footer
+ * name the mouse's gestures. The drag's physics (ghosts, kept shots, inspector) is
+ * {@code particlelab.demo.DragHeadlessTest}'s.
+ */
+class PickHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    /**
+     * Where the new launch is drawn against where the mouse was: two float projections
+     * through the camera, a thousandth of a pixel.
+     */
+    private static final float PIXEL_TOLERANCE = 0.01f;
+    private static DragDemo drag;
+    private static HeadlessHarness harness;
+
+    @BeforeAll
+    static void startApp() throws Exception {
+        drag = new DragDemo();
+        harness = HeadlessHarness.start(List.of(drag));
+    }
+
+    @AfterAll
+    static void stopApp() {
+        harness.close();
+    }
+
+    @Test
+    void aDragThroughTheWindowMovesTheLaunchUnderTheMouse()
+            throws Exception {
+        float[] result = harness.call(() -> {
+            fly(40);
+            Camera camera = harness.app().getCamera();
+            DemoParticle first = drag.getParticles().get(0);
+            Vector3f screen = camera.getScreenCoordinates(first.copyLaunchPosition(
+                    new Vector3f()));
+            // The sphere has flown off: its launch point is empty space, its sphere is
+            // where it is now.
+            Vector3f now = camera.getScreenCoordinates(first.getParticle().position);
+            PickInput input = harness.app().getPickInput();
+            boolean taken = input.press(now.x, now.y);
+            input.move(screen.x + 10f, screen.y + 10f);
+            input.move(screen.x + 90f, screen.y + 60f);
+            // Drawn where the mouse is while the button is down (the camera holds still).
+            drag.update(H);
+            Vector3f launch = first.copyLaunchPosition(new Vector3f());
+            Vector3f drawn = camera.getScreenCoordinates(launch);
+            input.release();
+            drag.update(H);
+            launch.subtractLocal(first.copyLaunchPosition(new Vector3f()));
+            return new float[] {taken ? 1f : 0f, drawn.x - screen.x, drawn.y - screen.y,
+                (float) drag.getClock().getSimulatedSeconds(),
+                drag.getClock().isPaused() ? 1f : 0f,
+                drag.getParticles().get(2).copyLaunchPosition(new Vector3f())
+                        .distance(first.copyLaunchPosition(new Vector3f())), launch.length()};
+        });
+        assertEquals(1f, result[0], "the press took hold of a sphere");
+        assertEquals(90f, result[1], PIXEL_TOLERANCE);
+        assertEquals(60f, result[2], PIXEL_TOLERANCE);
+        // The scene waits at t = 0, paused.
+        assertEquals(0f, result[3]);
+        assertEquals(1f, result[4]);
+        // The three spheres share the launch, which the release left where it was.
+        assertEquals(0f, result[5]);
+        assertEquals(0f, result[6]);
+    }
+
+    @Test
+    void aPressOnTheParameterPanelOrUnderTheHelpPicksNothing() throws Exception {
+        List<Object> result = harness.call(() -> {
+            drag.restart();
+            drag.getDragControl().clearPick();
+            KeyBinding panelKey = binding(drag, KeyInput.KEY_F2);
+            panelKey.press(0);
+            drag.update(H);
+            // The panel's slot down the right edge; its first rows are at the slot's top.
+            ScreenRect panel = new ScreenRect().set(drag.getHud().getLayout().getSidePanel());
+            boolean onPanel = harness.app().getPickInput().press(
+                    panel.getX() + panel.getWidth() / 2f, panel.getTop() - 20f);
+            harness.app().getPickInput().release();
+            panelKey.press(0);
+            drag.update(H);
+            drag.getHud().setHelpVisible(true);
+            Vector3f sphere = harness.app().getCamera().getScreenCoordinates(
+                    drag.getParticles().get(0).getParticle().position);
+            boolean underHelp = harness.app().getPickInput().press(sphere.x, sphere.y);
+            harness.app().getPickInput().release();
+            DemoParticle picked = drag.getDragControl().getPicked();
+            drag.getHud().setHelpVisible(false);
+            boolean visible = harness.app().getPickInput().press(sphere.x, sphere.y);
+            harness.app().getPickInput().release();
+            return java.util.Arrays.asList(panel.isEmpty(), onPanel, underHelp, picked,
+                    visible);
+        });
+        assertFalse((Boolean) result.get(0), "the panel was shown");
+        assertFalse((Boolean) result.get(1));
+        assertFalse((Boolean) result.get(2));
+        assertNull(result.get(3));
+        assertTrue((Boolean) result.get(4));
+    }
+
+    @Test
+    void theHelpAndTheFooterNameTheMouse() throws Exception {
+        String[] texts = harness.call(() -> new String[] {drag.getHelpText(),
+            drag.getHud().getLayout().getFooterText()});
+        // The sphere and its arrow tip share a row.
+        assertTrue(texts[0].contains("Mouse\n   drag a sphere / its arrow tip  -  launch P0 of"
+                + " all 3 / launch V0 of all 3 = speed, angle (pauses, back to t = 0)\n"
+                + "   click a sphere  -  inspect"), texts[0]);
+        assertTrue(texts[0].contains("right drag / wheel  -  turn / zoom the camera"),
+                texts[0]);
+        assertTrue(texts[1].contains("right drag  camera"), texts[1]);
+    }
+
+    /** Run frames at the fixed h, the clock running. */
+    private static void fly(int frames) {
+        drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        drag.getClock().setPaused(false);
+        for (int i = 0; i < frames; ++i) {
+            drag.update(H);
+        }
+    }
+
+    private static KeyBinding binding(DemoState demo, int keyCode) {
+        for (KeyBinding binding : demo.getBindings()) {
+            for (int k = 0; k < binding.countKeys(); ++k) {
+                if (binding.getKeyCode(k) == keyCode) {
+                    return binding;
+                }
+            }
+        }
+        throw new IllegalStateException("no binding for key " + keyCode);
+    }
+}
