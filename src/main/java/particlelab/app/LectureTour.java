@@ -213,12 +213,14 @@ public final class LectureTour {
 
     private static void watchSpring(DemoState demo, StringBuilder text) {
         SpringDemo spring = (SpringDemo) demo;
-        text.append(WATCH).append("one more force, the same step: h = ");
-        TextFormat.appendFixed(text, demo.getClock().getStepSeconds(), 3)
-                .append(" s against the limits 2/ω = ");
-        TextFormat.appendFixed(text, spring.stableStepLimit(0), 3).append(" s and, damped, ");
+        double t = demo.getClock().getSimulatedSeconds();
+        text.append(WATCH).append("one more force, the same step: blue at y = ");
+        TextFormat.appendFixed(text, demo.getParticles().get(0).getParticle().position.y, 2)
+                .append(" m, exact ");
+        TextFormat.appendFixed(text, spring.exactHeight(0, t), 2).append(" m; h < 2/ω = ");
+        TextFormat.appendFixed(text, spring.stableStepLimit(0), 3).append(" s (damped ");
         TextFormat.appendFixed(text, spring.stableStepLimit(1), 3)
-                .append(" s: push h past them on the panel (F2)\n");
+                .append(" s): push h past it on the panel (F2)\n");
     }
 
     private static void watchRotation(DemoState demo, StringBuilder text) {
