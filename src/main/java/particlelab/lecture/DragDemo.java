@@ -34,7 +34,7 @@ import particlelab.view.TextFormat;
  * at a raised time scale) to see a long step pass a limit and the warning name the sphere.
  *
  * <p>The HUD's terminal speeds, closed forms beside the spheres' stepped speeds: linear
- * {@code v_t = m·g/b}, physical quadratic {@code √(m·g/c)}, slide form {@code ∛(m·g/c)}
+ * {@code v_t = m·g/b}, physical quadratic {@code √(m·g/c)}, slide form {@code (m·g/c)^(1/3)}
  * (where {@code c·v³ = m·g}); and the step limits there, {@code 2/λ} with {@code λ = n·g/v_t}
  * for a drag {@code ∝ vⁿ}: {@code 2v_t/g = 2m/b}, {@code v_t/g} and {@code 2v_t/(3g)}. The
  * Euler step's fixed point is where {@code a = 0}, so the stepped speed tends to the same v_t.
@@ -79,7 +79,7 @@ public final class DragDemo extends DemoState {
 
     /**
      * Return the closed-form terminal speed of a sphere's drag under the scene's g and mass:
-     * {@code m·g/b} (linear), {@code √(m·g/c)} (physical quadratic) or {@code ∛(m·g/c)} (the
+     * {@code m·g/b} (linear), {@code √(m·g/c)} (physical quadratic) or {@code (m·g/c)^(1/3)} (the
      * slide's form, when chosen).
      *
      * @param index 1 for linear drag, 2 for the quadratic sphere (0 has no drag)
@@ -157,8 +157,8 @@ public final class DragDemo extends DemoState {
         launch.appendLaunch(text.append("a = g + F/m,  "), getParameters());
         text.append(";   linear: F = -b V, b = ");
         DemoParameter.appendShort(text, linearDrag.getCoefficient(), 2).append(law == 0
-                ? " N s/m;   quadratic: F = -c |V| V (|F| = c|V|², physical), c = "
-                : " N s/m;   slide form: F = -c |V|² V (|F| = c|V|³, not physical), c = ");
+                ? " N s/m;   quadratic (physical): F = -c |V| V, c = "
+                : " N s/m;   slide form (not physical): F = -c |V|² V, c = ");
         DemoParameter.appendShort(text, coefficientC, 3).append(law == 0 ? " kg/m\n"
                 : " kg s/m²\n");
     }
@@ -179,10 +179,10 @@ public final class DragDemo extends DemoState {
                 .append(" m/s\n");
         double physical = Math.sqrt(weight / coefficientC);
         double slide = SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
-        text.append("quadratic -c|V|V: v_t = √(m·g/c) = ");
+        text.append("quadratic: v_t = √(m·g/c) = ");
         TextFormat.appendFixed(text, physical, 2).append(" m/s, h < v_t/g = ");
-        TextFormat.appendFixed(text, physical / g, 3).append(" s;  slide -c|V|²V (not"
-                + " physical): v_t = ∛(m·g/c) = ");
+        TextFormat.appendFixed(text, physical / g, 3).append(" s;  slide form:"
+                + " v_t = (m·g/c)^(1/3) = ");
         TextFormat.appendFixed(text, slide, 2).append(" m/s, h < 2v_t/(3g) = ");
         TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s\n");
     }

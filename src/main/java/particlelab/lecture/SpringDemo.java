@@ -154,8 +154,8 @@ public final class SpringDemo extends DemoState {
         DemoParameter.appendShort(text, undampedSpring.getSpringConstant(), 1)
                 .append(" N/m,  m = 1 kg,  c = 0 (blue) and ");
         DemoParameter.appendShort(text, dampedSpring.getDamping(), 2).append(" N s/m (orange)\n");
-        text.append("Exact about y_eq = A_y - m·g/k, A = y0 - y_eq:  undamped A·cos ωt,  damped"
-                + " A·e^(-λt/2)·(cos ω_d t + λ/(2ω_d)·sin ω_d t),  ω_d = √(ω² - λ²/4)\n");
+        text.append("Exact y - y_eq (y_eq = A_y - m·g/k):  A·cos ωt;  damped"
+                + " A·e^(-λt/2)·(cos ω_d t + λ/(2ω_d)·sin ω_d t)\n");
     }
 
     @Override

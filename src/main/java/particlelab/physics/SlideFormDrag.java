@@ -9,7 +9,7 @@ import com.jme3.math.Vector3f;
  * form exists so the drag demo can show why, beside it.
  *
  * <p>Terminal speed: gravity balances it where {@code c·v_t³ = m·g}, so
- * {@code v_t = ∛(m·g/c)} ({@link #terminalSpeed}). Stability: a small change of speed changes
+ * {@code v_t = (m·g/c)^(1/3)} ({@link #terminalSpeed}). Stability: a small change of speed changes
  * the force by {@code d(c·v³)/dv = 3c·v²}, so it decays at {@code λ = 3c·|V|²/m}
  * ({@link #dampingRate}), and the Euler step settles only for {@code h < 2/λ}; at the terminal
  * speed {@code λ = 3g/v_t}, so {@code h < 2·v_t/(3g)}, against {@code v_t/g} for the physical
@@ -35,7 +35,7 @@ public final class SlideFormDrag implements Force {
     }
 
     /**
-     * Return the terminal speed under gravity: {@code v_t = ∛(m·g/c)}.
+     * Return the terminal speed under gravity: {@code v_t = (m·g/c)^(1/3)}.
      *
      * @param massKg m (in kilograms, &gt;0)
      * @param gravity g (in m/s², &ge;0)
