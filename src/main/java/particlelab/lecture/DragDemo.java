@@ -165,26 +165,20 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        // v_t from the closed forms, beside the stepped |V|; the limit 2/λ at v_t.
+        // v_t from the closed forms (the spheres' lines give the stepped |V|), and the step's
+        // limit 2/λ there.
         double g = getParameters().getValueInScene(getParameters().indexOf("g"));
         double weight = quadraticSphere.getParticle().getMass() * g;
         double linear = terminalSpeed(1);
-        text.append("Terminal speed v_t:  linear m·g/b = ");
-        TextFormat.appendFixed(text, linear, 2).append(" m/s (|V| now ");
-        TextFormat.appendFixed(text, getParticles().get(1).getParticle().velocity.length(), 2)
-                .append("), h < 2v_t/g = ");
-        TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s there;  ")
-                .append(LAWS[law]).append(" sphere |V| now ");
-        TextFormat.appendFixed(text, quadraticSphere.getParticle().velocity.length(), 2)
-                .append(" m/s\n");
         double physical = Math.sqrt(weight / coefficientC);
         double slide = SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
-        text.append("quadratic: v_t = √(m·g/c) = ");
-        TextFormat.appendFixed(text, physical, 2).append(" m/s, h < v_t/g = ");
-        TextFormat.appendFixed(text, physical / g, 3).append(" s;  slide form:"
-                + " v_t = (m·g/c)^(1/3) = ");
-        TextFormat.appendFixed(text, slide, 2).append(" m/s, h < 2v_t/(3g) = ");
-        TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s\n");
+        text.append("v_t (h limit there):  linear m·g/b = ");
+        TextFormat.appendFixed(text, linear, 2).append(" m/s (");
+        TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s),  quadratic √(m·g/c) = ");
+        TextFormat.appendFixed(text, physical, 2).append(" (");
+        TextFormat.appendFixed(text, physical / g, 3).append(" s),  slide (m·g/c)^(1/3) = ");
+        TextFormat.appendFixed(text, slide, 2).append(" (");
+        TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
     }
 
     /** Put c into the chosen law's force and 0 into the other. */
