@@ -16,6 +16,7 @@ import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.SpinThrowDemo;
+import particlelab.lecture.SpringDemo;
 import particlelab.lecture.TargetsDemo;
 import particlelab.lecture.TennisRacketDemo;
 import particlelab.lecture.ThrustDemo;
@@ -67,7 +68,8 @@ public final class DemoCatalog {
             new Entry("throw", SpinThrowDemo::new),
             new Entry("racket", TennisRacketDemo::new),
             new Entry("wind", WindDemo::new),
-            new Entry("fountain", FountainDemo::new)));
+            new Entry("fountain", FountainDemo::new),
+            new Entry("spring", SpringDemo::new)));
 
     private DemoCatalog() {
     }

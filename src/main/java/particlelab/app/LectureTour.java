@@ -11,6 +11,7 @@ import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
+import particlelab.lecture.SpringDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.view.TextFormat;
 
@@ -104,6 +105,8 @@ public final class LectureTour {
             new Stop("Example: gravitational pull", "pull", LectureTour::watchFall),
             new Stop("Example: pull + drag", "drag", LectureTour::watchDrag),
             new Stop("Example: pull + drag + thrust", "thrust", LectureTour::watchThrust),
+            new Stop("Simulation recipe: gravity, drag, thrust, spring pull", "spring",
+                    LectureTour::watchSpring),
             new Stop("Rotation", "rotation", LectureTour::watchRotation, "omega=6"),
             new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
                     "h=1/10"),
@@ -209,6 +212,18 @@ public final class LectureTour {
                 .append(" m/s, with thrust ");
         TextFormat.appendFixed(text, particles.get(1).getParticle().velocity.length(), 2)
                 .append(" m/s: a force is one more term in the sum\n");
+    }
+
+    private static void watchSpring(DemoState demo, StringBuilder text) {
+        SpringDemo spring = (SpringDemo) demo;
+        double t = demo.getClock().getSimulatedSeconds();
+        text.append(WATCH).append("one more force, the same step: blue at y = ");
+        TextFormat.appendFixed(text, demo.getParticles().get(0).getParticle().position.y, 2)
+                .append(" m, exact ");
+        TextFormat.appendFixed(text, spring.exactHeight(0, t), 2).append(" m; h < 2/ω = ");
+        TextFormat.appendFixed(text, spring.stableStepLimit(0), 3).append(" s (damped ");
+        TextFormat.appendFixed(text, spring.stableStepLimit(1), 3)
+                .append(" s): push h past it on the panel (F2)\n");
     }
 
     private static void watchRotation(DemoState demo, StringBuilder text) {

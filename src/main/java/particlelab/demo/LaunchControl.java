@@ -165,7 +165,22 @@ public final class LaunchControl {
      * @return the declaration (not null)
      */
     public DemoParameter gravityParameter() {
-        return new DemoParameter("g", "gravity", "m/s²", MIN_G, MAX_G, 0.1f,
+        return gravityParameter(MIN_G);
+    }
+
+    /**
+     * Declare g, pointing down, from a smallest value of the demo's choosing: 0 lets the
+     * pull demo switch gravity off (Newton's first law). Never below 0: g points down.
+     *
+     * @param minG the smallest g offered (in m/s², from 0 to {@link #MIN_G})
+     * @return the declaration (not null)
+     */
+    public DemoParameter gravityParameter(float minG) {
+        if (!(minG >= 0f && minG <= MIN_G)) {
+            throw new IllegalArgumentException("the smallest g (m/s²) must be from 0 to "
+                    + MIN_G + ", but was " + minG);
+        }
+        return new DemoParameter("g", "gravity", "m/s²", minG, MAX_G, 0.1f,
                 Gravity.STANDARD_G, 2, DemoParameter.Applies.LIVE, value -> {
                     acceleration.set(0f, -value, 0f);
                     for (int i = 0; i < gravities.size(); ++i) {

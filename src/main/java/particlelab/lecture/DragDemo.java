@@ -3,12 +3,15 @@ package particlelab.lecture;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
+import particlelab.physics.SlideFormDrag;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 3, drag: three spheres launched together with the same {@code V0 = (10, 10, 0)} m/s and
@@ -17,7 +20,9 @@ import particlelab.physics.QuadraticDrag;
  * <ol>
  * <li>gravity only (the parabola of demo 2);</li>
  * <li>gravity + linear drag {@code F = −b·V} with the lecture's {@code b = 0.9} N·s/m;</li>
- * <li>gravity + quadratic drag {@code F = −c·|V|·V}.</li>
+ * <li>gravity + quadratic drag {@code F = −c·|V|·V}, or, switched with {@code law}, the
+ * slide's {@code F = −c·|V|²·V} ({@link SlideFormDrag}: magnitude {@code c·|V|³}, not
+ * physical; shown so students see why it is not used).</li>
  * </ol>
  *
  * <p>What to watch for: with drag the path is no longer a parabola: it climbs less, bends down
@@ -27,6 +32,12 @@ import particlelab.physics.QuadraticDrag;
  * smallest at its current state ({@code 2m/b} for linear drag, {@code m/(c·|V|)} for quadratic
  * drag, which grows as the sphere slows); press T (raw tpf) and K (a long hitch, longer still
  * at a raised time scale) to see a long step pass a limit and the warning name the sphere.
+ *
+ * <p>The HUD's terminal speeds, closed forms beside the spheres' stepped speeds: linear
+ * {@code v_t = m·g/b}, physical quadratic {@code √(m·g/c)}, slide form {@code (m·g/c)^(1/3)}
+ * (where {@code c·v³ = m·g}); and the step limits there, {@code 2/λ} with {@code λ = n·g/v_t}
+ * for a drag {@code ∝ vⁿ}: {@code 2v_t/g = 2m/b}, {@code v_t/g} and {@code 2v_t/(3g)}. The
+ * Euler step's fixed point is where {@code a = 0}, so the stepped speed tends to the same v_t.
  */
 public final class DragDemo extends DemoState {
 
@@ -43,15 +54,57 @@ public final class DragDemo extends DemoState {
     /** The drag coefficients' largest values (N·s/m and kg/m). */
     private static final float MAX_B = 5f;
     private static final float MAX_C = 0.5f;
+    /** The third sphere's drag laws, as {@code --set law=...} names them. */
+    private static final String[] LAWS = {"physical", "slide"};
+    /** The third sphere's labels, by law. */
+    private static final String[] LAW_LABELS = {"quadratic drag  F = -c |V|V",
+        "slide form  F = -c |V|²V (not physical)"};
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
     private final LinearDrag linearDrag = new LinearDrag(LINEAR_B);
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
+    /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
+    private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
+    /** The law in the scene: 0 physical, 1 the slide's form. */
+    private int law;
+    /** c as the parameter has it, for whichever law (kg/m or kg·s/m²). */
+    private float coefficientC = QUADRATIC_C;
+    private DemoParticle quadraticSphere;
 
     /** Create the demo. */
     public DragDemo() {
         super("Drag");
+    }
+
+    /**
+     * Return the closed-form terminal speed of a sphere's drag under the scene's g and mass:
+     * {@code m·g/b} (linear), {@code √(m·g/c)} (physical quadratic) or {@code (m·g/c)^(1/3)} (the
+     * slide's form, when chosen).
+     *
+     * @param index 1 for linear drag, 2 for the quadratic sphere (0 has no drag)
+     * @return v_t (in m/s; infinite without drag)
+     */
+    public double terminalSpeed(int index) {
+        double weight = getParticles().get(index).getParticle().getMass()
+                * (double) getParameters().getValueInScene(getParameters().indexOf("g"));
+        if (index == 1) {
+            return weight / linearDrag.getCoefficient();
+        }
+        if (index != 2) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return law == 0 ? Math.sqrt(weight / coefficientC)
+                : SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
+    }
+
+    /**
+     * Tell whether the quadratic sphere runs the slide's form {@code −c·|V|²·V}.
+     *
+     * @return true for the slide's form, false for the physical {@code −c·|V|·V}
+     */
+    public boolean isSlideForm() {
+        return law == 1;
     }
 
     @Override
@@ -64,10 +117,12 @@ public final class DragDemo extends DemoState {
         launch.add(addParticle("linear drag  F = -b V", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity()), linearDrag))).stopAtGround();
-        launch.add(addParticle("quadratic drag  F = -c |V|V", new ColorRGBA(1f, 0.4f, 0.8f, 1f),
-                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag)))
-                .stopAtGround();
+        // Both quadratic laws act on the third sphere, one of them with c = 0: adding a zero
+        // force changes no bit of the physical law's step.
+        quadraticSphere = launch.add(addParticle(LAW_LABELS[law],
+                new ColorRGBA(1f, 0.4f, 0.8f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
+                new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag, slideDrag)));
+        quadraticSphere.stopAtGround();
         setView(-2f, 24f, 7f, 1f, 5, 0.3f);
         showExactGhosts();
     }
@@ -79,8 +134,22 @@ public final class DragDemo extends DemoState {
         declareParameter(new DemoParameter("b", "linear drag", "N s/m", 0f, MAX_B,
                 0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, linearDrag::setCoefficient));
         declareParameter(new DemoParameter("c", "quadratic drag", "kg/m", 0f,
-                MAX_C, 0.004f, QUADRATIC_C, 3, DemoParameter.Applies.LIVE,
-                quadraticDrag::setCoefficient));
+                MAX_C, 0.004f, QUADRATIC_C, 3, DemoParameter.Applies.LIVE, value -> {
+                    coefficientC = value;
+                    applyLaw();
+                }));
+        // The slide's −c|V|²V instead, from the next launch (with c in kg·s/m²).
+        declareParameter(DemoParameter.choice("law", "quadratic law", LAWS, 0,
+                DemoParameter.Applies.NEXT_LAUNCH, value -> {
+                    int wanted = Math.round(value);
+                    if (wanted != law) {
+                        law = wanted;
+                        applyLaw();
+                        if (quadraticSphere != null) {
+                            relabel(quadraticSphere, LAW_LABELS[law]);
+                        }
+                    }
+                }));
     }
 
     @Override
@@ -94,9 +163,35 @@ public final class DragDemo extends DemoState {
     protected void describeEquations(StringBuilder text) {
         launch.appendLaunch(text.append("a = g + F/m,  "), getParameters());
         text.append(";   linear: F = -b V, b = ");
-        DemoParameter.appendShort(text, linearDrag.getCoefficient(), 2)
-                .append(" N s/m;   quadratic: F = -c |V| V, c = ");
-        DemoParameter.appendShort(text, quadraticDrag.getCoefficient(), 3).append(" kg/m\n");
+        DemoParameter.appendShort(text, linearDrag.getCoefficient(), 2).append(law == 0
+                ? " N s/m;   quadratic (physical): F = -c |V| V, c = "
+                : " N s/m;   slide form (not physical): F = -c |V|² V, c = ");
+        DemoParameter.appendShort(text, coefficientC, 3).append(law == 0 ? " kg/m\n"
+                : " kg s/m²\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        // v_t from the closed forms (the spheres' lines give the stepped |V|), and the step's
+        // limit 2/λ there.
+        double g = getParameters().getValueInScene(getParameters().indexOf("g"));
+        double weight = quadraticSphere.getParticle().getMass() * g;
+        double linear = terminalSpeed(1);
+        double physical = Math.sqrt(weight / coefficientC);
+        double slide = SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
+        text.append("v_t (h limit there):  linear m·g/b = ");
+        TextFormat.appendFixed(text, linear, 2).append(" m/s (");
+        TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s),  quadratic √(m·g/c) = ");
+        TextFormat.appendFixed(text, physical, 2).append(" (");
+        TextFormat.appendFixed(text, physical / g, 3).append(" s),  slide (m·g/c)^(1/3) = ");
+        TextFormat.appendFixed(text, slide, 2).append(" (");
+        TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
+    }
+
+    /** Put c into the chosen law's force and 0 into the other. */
+    private void applyLaw() {
+        quadraticDrag.setCoefficient(law == 0 ? coefficientC : 0f);
+        slideDrag.setCoefficient(law == 1 ? coefficientC : 0f);
     }
 
     /** The slide: the two drag laws with b/m and c/m; the three speeds (or landings). */

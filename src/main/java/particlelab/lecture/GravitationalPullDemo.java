@@ -3,6 +3,7 @@ package particlelab.lecture;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.physics.Gravity;
@@ -19,6 +20,11 @@ import particlelab.view.TextFormat;
  * The stepped flight lands a little short of the continuous parabola (by {@code Vx·h}, about
  * 0.17 m at 60 steps per second): the samples lie on the parabola launched with
  * {@code Vy − g·h/2}. Press T and K to see what one long raw frame does to the path.
+ *
+ * <p>Newton's first law: g goes down to 0 ({@code --set g=0}), and then no force acts: V stays
+ * as launched and the path is the straight line {@code P = P0 + V0·t}, stepped exactly as
+ * uniform motion is. With nothing to bring it down the ball starts over when it leaves the
+ * view.
  */
 public final class GravitationalPullDemo extends DemoState {
 
@@ -28,11 +34,18 @@ public final class GravitationalPullDemo extends DemoState {
     private static final float MAX_SPEED = 30f;
     private static final float SPEED_STEP = 0.5f;
     private static final float MASS_KG = 1f;
+    /** The view's right edge and top (m): without gravity the ball starts over past them. */
+    private static final float RIGHT_EDGE = 24f;
+    private static final float TOP_EDGE = 7f;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
     /** Scratch: the launch velocity as printed (m/s). */
     private final Vector3f shownVelocity = new Vector3f();
+    /** Scratch: g as the force has it now (m/s²). */
+    private final Vector3f gravityNow = new Vector3f();
+    private final Gravity gravity = new Gravity();
+    private DemoParticle ball;
 
     /** Create the demo. */
     public GravitationalPullDemo() {
@@ -41,16 +54,30 @@ public final class GravitationalPullDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO, LAUNCH_VELOCITY,
-                MASS_KG, new ParticleIntegrator(launch.add(new Gravity())))).stopAtGround();
-        setView(-2f, 24f, 7f, 1f, 5, 0.35f);
+        ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
+                LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
+        ball.stopAtGround();
+        setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, 0.35f);
         showExactGhosts();
     }
 
     @Override
     protected void declareParameters() {
-        // Gravity alone: every mass falls alike (try it with the mass).
-        launch.projectileParameters(MAX_SPEED, SPEED_STEP, MASS_KG).forEach(this::declareParameter);
+        // Gravity alone: every mass falls alike (try it with the mass). g from 0: no force.
+        declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
+        declareParameter(launch.angleParameter());
+        declareParameter(launch.massParameter(MASS_KG));
+        declareParameter(launch.gravityParameter(0f));
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        // No gravity, no landing: start over past the view's edge, as uniform motion does.
+        Vector3f position = ball.getParticle().position;
+        if (gravity.copyAcceleration(gravityNow).y == 0f
+                && (position.x > RIGHT_EDGE || position.y > TOP_EDGE)) {
+            restart();
+        }
     }
 
     @Override
@@ -64,6 +91,14 @@ public final class GravitationalPullDemo extends DemoState {
     protected void describeEquations(StringBuilder text) {
         float g = getParameters().getValue("g");
         launch.copyVelocity(shownVelocity);
+        if (g == 0f) {
+            text.append("No force (g = 0):  a = 0,  V += h·0 stays,  P += h·V:  Newton's first"
+                    + " law\nLaunch V0 = (");
+            DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
+            DemoParameter.appendShort(text, shownVelocity.y, 2)
+                    .append(", 0) m/s:  the straight line P = P0 + V0·t, never a parabola\n");
+            return;
+        }
         text.append("Pull:  a = g = (0, -");
         DemoParameter.appendShort(text, g, 2).append(", 0) m/s²,   V += h·g,   P += h·V\n");
         text.append("Launch V0 = (");

@@ -28,8 +28,8 @@ public final class Spring implements Force {
 
     private final Vector3f anchor = new Vector3f();
     private final float restLength;
-    private final float springConstant;
-    private final float damping;
+    private float springConstant;
+    private float damping;
 
     /**
      * Create an undamped spring.
@@ -53,8 +53,8 @@ public final class Spring implements Force {
     public Spring(Vector3f anchor, float restLength, float springConstant, float damping) {
         setAnchor(anchor);
         this.restLength = Validate.nonNegative(restLength, "spring rest length L (m)");
-        this.springConstant = Validate.nonNegative(springConstant, "spring constant k (N/m)");
-        this.damping = Validate.nonNegative(damping, "spring damping c (N*s/m)");
+        setSpringConstant(springConstant);
+        setDamping(damping);
     }
 
     /**
@@ -92,6 +92,25 @@ public final class Spring implements Force {
      */
     public float getSpringConstant() {
         return springConstant;
+    }
+
+    /**
+     * Alter the spring constant: the next step pulls with it (a spring is asked through the
+     * {@link Force} interface every step, so there is nothing to refold).
+     *
+     * @param newSpringConstant k (in N/m, finite, &ge;0)
+     */
+    public void setSpringConstant(float newSpringConstant) {
+        springConstant = Validate.nonNegative(newSpringConstant, "spring constant k (N/m)");
+    }
+
+    /**
+     * Alter the damping along the spring, from the next step.
+     *
+     * @param newDamping c (in N·s/m = kg/s, finite, &ge;0)
+     */
+    public void setDamping(float newDamping) {
+        damping = Validate.nonNegative(newDamping, "spring damping c (N*s/m)");
     }
 
     /**

@@ -45,7 +45,8 @@ class TourCommandTest {
     void theLectureSlidesComeInTheLecturesOrder() {
         String[] slides = {"Collision Response", "Collision Resolution",
             "Kinematics vs dynamics", "Discrete particle motion", "Example: gravitational pull",
-            "Example: pull + drag", "Example: pull + drag + thrust", "Rotation",
+            "Example: pull + drag", "Example: pull + drag + thrust",
+            "Simulation recipe: gravity, drag, thrust, spring pull", "Rotation",
             "Accuracy of simulation", "Targeting problem", "HelloAiming",
             "Euler steps: advantages and disadvantages", "If accuracy matters: cheat",
             "Computer science approach: iterations"};

@@ -91,7 +91,7 @@ class ParameterPanelHeadlessTest {
     void firstDemosDeclareTheirLaunchMassGravityAndCoefficients() throws Exception {
         assertNames(UniformMotionDemo.class, "h", "speed", "angle");
         assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g");
-        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c");
+        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k");
         assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");

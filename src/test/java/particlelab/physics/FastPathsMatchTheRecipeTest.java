@@ -233,7 +233,7 @@ class FastPathsMatchTheRecipeTest {
     void noMutableStateIsSharedBetweenIntegrators() {
         Class<?>[] classes = {ParticleIntegrator.class, FoldedForces.class, PackedStep.class,
             StepLimits.class, FoldedForce.class, Gravity.class, LinearDrag.class,
-            QuadraticDrag.class, Thrust.class, Spring.class};
+            QuadraticDrag.class, Thrust.class, Spring.class, SlideFormDrag.class};
         for (Class<?> type : classes) {
             for (Field field : type.getDeclaredFields()) {
                 int modifiers = field.getModifiers();
