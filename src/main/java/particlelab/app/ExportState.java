@@ -52,9 +52,8 @@ public final class ExportState extends BaseAppState {
     public ExportState(DemoSwitcher switcher, Path baseFolder) {
         this.switcher = switcher;
         this.baseFolder = baseFolder;
-        this.binding = new KeyBinding(KeyInput.KEY_E, "E", "export: every particle's"
-                + " trajectory as CSV (t,x,y,z,vx,vy,vz) and a screenshot, into "
-                + baseFolder + "/<demo>-<date-time>/ (the HUD names it)",
+        this.binding = new KeyBinding(KeyInput.KEY_E, "E", "export: trajectories (CSV)"
+                + " and a screenshot into " + baseFolder + "/<demo>-<date-time>/",
                 () -> switcher.getSelected().requestExport());
     }
 

@@ -45,7 +45,7 @@ final class TourGuide {
         }
         int count = stops.size();
         bindings.add(new KeyBinding(KeyInput.KEY_PGDN, "PageDown",
-                "lecture tour: next stop (the next slide's demo and state)",
+                "lecture tour: next stop (slide)",
                 () -> go(stop < 0 ? 0 : Math.min(count - 1, stop + 1))));
         bindings.add(new KeyBinding(KeyInput.KEY_PGUP, "PageUp",
                 "lecture tour: previous stop", () -> go(stop < 0 ? 0 : Math.max(0, stop - 1))));

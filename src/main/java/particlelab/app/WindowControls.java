@@ -58,9 +58,8 @@ public final class WindowControls extends BaseAppState {
                         () -> changeFactor(1)),
                 new KeyBinding(KeyInput.KEY_F9, "F9", smaller.toString(),
                         () -> changeFactor(-1)),
-                new KeyBinding(KeyInput.KEY_F8, "F8", "presentation mode <-> full HUD: the"
-                        + " scene large, the title, the slide's formulas and readout in large"
-                        + " type (stays on across demos and tour stops)",
+                new KeyBinding(KeyInput.KEY_F8, "F8", "presentation mode (large slide) <->"
+                        + " full HUD",
                         () -> presenting = !switcher.getSelected().isPresenting()));
     }
 

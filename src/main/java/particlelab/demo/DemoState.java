@@ -1534,8 +1534,8 @@ public abstract class DemoState extends BaseAppState {
                 "reset: launch again, reframe the camera", this::restartAndReframe)
                 .withSummary("reset"));
         KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
-                "pause at the next contact, on the step that resolves it (the HUD names it);"
-                        + " there, on to the next one; while waiting, cancel",
+                "pause at the step that resolves the next contact (again: the one after;"
+                        + " while waiting: cancel)",
                 contactPause::press));
         contactPause.setKeys(atContact, pause);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
@@ -1560,7 +1560,7 @@ public abstract class DemoState extends BaseAppState {
         keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
                 scene::toggleArrows));
         keys.addShared(new KeyBinding(KeyInput.KEY_U, "U",
-                "show / hide the step dots (one per step: a longer h, sparser dots)",
+                "show / hide the step dots (one per step)",
                 scene::toggleDots));
         if (ghosts.isEnabled()) {
             keys.addShared(new KeyBinding(KeyInput.KEY_G, "G",
@@ -1580,13 +1580,13 @@ public abstract class DemoState extends BaseAppState {
      */
     private void declareReplayKeys() {
         keys.addShared(new KeyBinding(KeyInput.KEY_HOME, "Home",
-                "step back one recorded step (pauses first; Space or N then go on from there"
-                        + " and drop the later steps)", this::stepBack));
+                "step back one recorded step (pauses; Space goes on from there)",
+                this::stepBack));
         keys.addShared(new KeyBinding(KeyInput.KEY_END, "End",
-                "step forward one recorded step (at the live end: a new step, like N)",
+                "step forward one recorded step (at the end: like N)",
                 this::stepForward));
         keys.addShared(new KeyBinding(KeyInput.KEY_F6, "F6",
-                "drawing: interpolated between the last two steps <-> the raw steps",
+                "drawn: interpolated <-> raw steps",
                 () -> {
                     replay.toggleInterpolation();
                     hudDirty = true;

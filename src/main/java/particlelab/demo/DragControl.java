@@ -33,8 +33,8 @@ public final class DragControl {
     public static final String CAMERA_GESTURE = "right drag";
     /** The gesture that picks a body for the inspector, and what it does. */
     public static final String CLICK_GESTURE = "click a sphere";
-    public static final String CLICK_DESCRIPTION = "inspect: P, V, m, forces (click"
-            + " elsewhere: close)";
+    /** What a click does, for the help. */
+    public static final String CLICK_DESCRIPTION = "inspect P, V, m, forces";
 
     private final List<Draggable> draggables = new ArrayList<>();
     private final List<Draggable> draggablesView = Collections.unmodifiableList(draggables);

@@ -63,7 +63,7 @@ public final class Draggable {
     }
 
     /** How the help says when a launch's drag works, and what it does to the scene. */
-    public static final String PAUSED_NOTE = " (pauses, back to t = 0)";
+    public static final String PAUSED_NOTE = " (pauses, t = 0)";
 
     private final String what;
     private final Grip grip;

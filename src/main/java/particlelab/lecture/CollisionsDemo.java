@@ -238,20 +238,20 @@ public final class CollisionsDemo extends DemoState {
 
     @Override
     protected void declareKeys() {
-        bindKey(KeyInput.KEY_P, "P", "preset: head-on -> glancing -> Newton's cradle -> paddle",
+        bindKey(KeyInput.KEY_P, "P", "preset: head-on, glancing, cradle, paddle",
                 () -> choose(Preset.values()[(preset.ordinal() + 1) % Preset.values().length]));
-        bindKey(KeyInput.KEY_UP, "Up", "restitution e + 0.1 (up to 1), start again",
+        bindKey(KeyInput.KEY_UP, "Up", "e + 0.1 (up to 1), restart",
                 () -> setRestitutionTenths(eTenths + 1));
-        bindKey(KeyInput.KEY_DOWN, "Down", "restitution e - 0.1 (down to 0), start again",
+        bindKey(KeyInput.KEY_DOWN, "Down", "e - 0.1 (down to 0), restart",
                 () -> setRestitutionTenths(eTenths - 1));
         StringBuilder masses = new StringBuilder();
         for (int i = 0; i < MASSES.length; ++i) {
             TextFormat.appendFixed(masses, MASSES[i], 1).append(i + 1 < MASSES.length ? " -> "
                     : " kg");
         }
-        bindKey(KeyInput.KEY_LEFT, "Left", "mass m1 of ball 1: " + masses,
+        bindKey(KeyInput.KEY_LEFT, "Left", "m1 of ball 1: " + masses,
                 () -> setMasses((mass1 + 1) % MASSES.length, mass2));
-        bindKey(KeyInput.KEY_RIGHT, "Right", "mass m2 of ball 2 (the others too): " + masses,
+        bindKey(KeyInput.KEY_RIGHT, "Right", "m2 of ball 2 and on: " + masses,
                 () -> setMasses(mass1, (mass2 + 1) % MASSES.length));
     }
 
@@ -261,7 +261,7 @@ public final class CollisionsDemo extends DemoState {
         // the mass keys arrange the preset again).
         List<DemoParticle> all = List.of(balls);
         declareDraggable(new Draggable("a ball", Draggable.Grip.BODY, Draggable.Effect.LAUNCH,
-                all, "its start, in the box", Draggable.PAUSED_NOTE, false,
+                all, "its start", Draggable.PAUSED_NOTE, false,
                 (ball, point) -> ball.setLaunch(dragged.set(
                         Math.max(X_MIN + RADIUS, Math.min(X_MAX - RADIUS, point.x)),
                         Math.max(RADIUS, Math.min(Y_MAX - RADIUS, point.y)), 0f),

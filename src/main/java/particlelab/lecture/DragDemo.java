@@ -179,11 +179,11 @@ public final class DragDemo extends DemoState {
         double linear = terminalSpeed(1);
         double physical = Math.sqrt(weight / coefficientC);
         double slide = SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
-        text.append("v_t (h limit there):  linear m·g/b = ");
+        text.append("v_t (h < there): mg/b ");
         TextFormat.appendFixed(text, linear, 2).append(" m/s (");
-        TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s),  quadratic √(m·g/c) = ");
+        TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s), √(mg/c) ");
         TextFormat.appendFixed(text, physical, 2).append(" (");
-        TextFormat.appendFixed(text, physical / g, 3).append(" s),  slide (m·g/c)^(1/3) = ");
+        TextFormat.appendFixed(text, physical / g, 3).append(" s), slide (mg/c)^(1/3) ");
         TextFormat.appendFixed(text, slide, 2).append(" (");
         TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
     }
@@ -203,8 +203,9 @@ public final class DragDemo extends DemoState {
                 .append("linear:  a = g - (b/m)V,   b/m = "),
                 linearDrag.getCoefficient() / mass, 2).append(" /s");
         particlelab.view.TextFormat.appendFixed(slide.formula()
-                .append("quadratic:  a = g - (c/m)|V|V,   c/m = "),
-                quadraticDrag.getCoefficient() / mass, 3).append(" /m");
+                .append(law == 0 ? "quadratic:  a = g - (c/m)|V|V,   c/m = "
+                        : "slide form (not physical):  a = g - (c/m)|V|²V,   c/m = "),
+                coefficientC / mass, 3).append(" /m");
         StringBuilder readout = slide.readout().append("gravity only ");
         appendSpeedOrLanding(readout, balls.get(0)).append(",  linear ");
         appendSpeedOrLanding(readout, balls.get(1)).append(",  quadratic ");

@@ -222,4 +222,22 @@ public final class SpringDemo extends DemoState {
         }
         coils[index].setPoints(coilXs, coilYs, COIL_POINTS);
     }
+
+    /** The slide: the spring pull and its step limits; each mass's height against exact. */
+    @Override
+    protected void writePresentation(particlelab.demo.Presentation slide) {
+        StringBuilder formula = slide.formula().append("a = g + F/m,  F = -k(P - A) - cV,  k = ");
+        DemoParameter.appendShort(formula, undampedSpring.getSpringConstant(), 1)
+                .append(" N/m");
+        formula = slide.formula().append("stable while h < 2/ω = ");
+        TextFormat.appendFixed(formula, stableStepLimit(0), 3).append(" s (damped ");
+        TextFormat.appendFixed(formula, stableStepLimit(1), 3).append(" s),  h = ");
+        DemoParameter.appendStep(formula, getClock().getStepSeconds());
+        double t = getClock().getSimulatedSeconds();
+        StringBuilder readout = slide.readout().append("y Euler | exact:  ");
+        TextFormat.appendFixed(readout, masses[0].getParticle().position.y, 3).append(" | ");
+        TextFormat.appendFixed(readout, exactHeight(0, t), 3).append(" m,  damped ");
+        TextFormat.appendFixed(readout, masses[1].getParticle().position.y, 3).append(" | ");
+        TextFormat.appendFixed(readout, exactHeight(1, t), 3).append(" m");
+    }
 }

@@ -81,7 +81,7 @@ public final class HudLayout {
     private static final float BAND_SPACE = 0.2f;
     /** Presentation mode's space below the title and the formulas (in its line heights). */
     private static final float PRESENT_BAND_SPACE = 0.1f;
-    private static final float HELP_SHRINK = 0.96f;
+    private static final float HELP_SHRINK = 0.98f;
     /** The most columns the help is set in. */
     private static final int MAX_HELP_COLUMNS = 5;
     /** The largest share of the window's width the side panel takes. */

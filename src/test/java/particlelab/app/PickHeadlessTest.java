@@ -129,7 +129,7 @@ class PickHeadlessTest {
             drag.getHud().getLayout().getFooterText()});
         // The sphere and its arrow tip share a row.
         assertTrue(texts[0].contains("Mouse\n   drag a sphere / its arrow tip  -  launch P0 of"
-                + " all 3 / launch V0 of all 3 = speed, angle (pauses, back to t = 0)\n"
+                + " all 3 / launch V0 of all 3 = speed, angle (pauses, t = 0)\n"
                 + "   click a sphere  -  inspect"), texts[0]);
         assertTrue(texts[0].contains("right drag / wheel  -  turn / zoom the camera"),
                 texts[0]);
