@@ -226,13 +226,21 @@ final class Replay {
 
     /**
      * Append, to the HUD's stepping line, what is drawn (the HUD's numbers are always the
-     * last step's) and, while paused or behind the live end, the step shown and what the ring
-     * holds. Allocates nothing.
+     * last step's) or, while behind the live end, the step shown, or, while paused at the live
+     * end, the replay keys and what the ring holds: always on the same line, so pausing or
+     * stepping back never changes the HUD's height (nor the scene's rectangle, which would
+     * move the picture under the mouse). Allocates nothing.
      *
      * @param text where to append (not null, modified)
      */
     void appendHudText(StringBuilder text) {
-        if (!interpolating) {
+        if (shownIndex >= 0L) {
+            text.append("   replay: step ").append(shownIndex - ring.getFirstIndex())
+                    .append(" of ").append(ring.size() - 1)
+                    .append("; Space or N go on from here, the later steps are dropped");
+        } else if (clock.isPaused()) {
+            appendRing(text.append("   Home steps back, End forward; "));
+        } else if (!interpolating) {
             text.append("   drawn: raw steps (F6)");
         } else if (frameBlend < 1f) {
             text.append("   drawn: interpolated (α = ");
@@ -240,13 +248,6 @@ final class Replay {
                     .append("); numbers: the last step (F6)");
         } else {
             text.append("   drawn: interpolated, α = 1 (F6)");
-        }
-        if (shownIndex >= 0L) {
-            text.append("\n   replay: step ").append(shownIndex - ring.getFirstIndex())
-                    .append(" of ").append(ring.size() - 1)
-                    .append("; Space or N go on from here, the later steps are dropped");
-        } else if (clock.isPaused()) {
-            appendRing(text.append("\n   Home steps back, End forward; "));
         }
     }
 

@@ -49,6 +49,17 @@ public final class TrajectoryRecord {
     private long uniformSteps;
 
     /**
+     * Make room for the whole cap at once, {@value #MAX_ROWS} rows (1.8 MB): for a flight
+     * that never ends (a mass on a spring), whose record would otherwise double now and then
+     * for 18 minutes. Allocates once; the rows kept are kept.
+     */
+    public void reserveAll() {
+        if (rows.length < MAX_ROWS * ROW_VALUES) {
+            rows = Arrays.copyOf(rows, MAX_ROWS * ROW_VALUES);
+        }
+    }
+
+    /**
      * Forget every row: the particle is launched again. Allocates nothing.
      */
     public void clear() {
