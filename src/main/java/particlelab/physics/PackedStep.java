@@ -30,8 +30,6 @@ final class PackedStep {
     private static final int BATCH_BLOCK = 1024;
 
     private final FoldedForces folded;
-    /** The integrator's limits, which remember the numbers for h and m. */
-    private final StepLimits limits;
     /** The integrator whose careful step the one-by-one form takes. */
     private final ParticleIntegrator integrator;
     /** True if the step by axes runs on {@link VectorBatch}. */
@@ -47,12 +45,10 @@ final class PackedStep {
      * Create the batch form of an integrator.
      *
      * @param folded the integrator's folded forces (not null)
-     * @param limits the integrator's limits (not null)
      * @param integrator the integrator, for the one-by-one form (not null)
      */
-    PackedStep(FoldedForces folded, StepLimits limits, ParticleIntegrator integrator) {
+    PackedStep(FoldedForces folded, ParticleIntegrator integrator) {
         this.folded = folded;
-        this.limits = limits;
         this.integrator = integrator;
     }
 
@@ -72,25 +68,12 @@ final class PackedStep {
     }
 
     /**
-     * Check the arguments, then step the particles, the forces refolded if stale and the
-     * numbers for h and m remembered ({@link StepLimits#remember}). Both forms of
-     * {@link ParticleIntegrator#stepPacked} come straight here: one call less on the way to the
-     * Vector API's loop keeps it inlined where the JIT needs it (a call more measured 2.3 to
-     * 2.6 times slower there).
+     * Step the particles, the numbers for h and m remembered ({@link StepLimits#remember}).
      *
-     * @throws IllegalArgumentException as {@link ParticleIntegrator#stepPacked}
      * @throws NonFiniteStepException as {@link ParticleIntegrator#stepPacked}
      */
     void step(float[] positions, float[] velocities, int stride, int count, float massKg,
             float stepSeconds) {
-        checkArrays(positions, velocities, stride, count);
-        Particle.checkMass(massKg);
-        Validate.nonNegative(stepSeconds, "step h (s)");
-        if (stepSeconds == 0f || count == 0) {
-            return;
-        }
-        folded.refoldIfStale();
-        limits.remember(stepSeconds, massKg);
         float factor = Float.NaN;
         int bad;
         if (folded.hasOthers || !Float.isFinite(folded.stepFactor)) {
@@ -113,8 +96,7 @@ final class PackedStep {
      * Refuse a negative count, a stride below it, or arrays too short for three axes of
      * stride floats, by name.
      */
-    private static void checkArrays(float[] positions, float[] velocities, int stride,
-            int count) {
+    static void checkArrays(float[] positions, float[] velocities, int stride, int count) {
         if (count < 0) {
             throw new IllegalArgumentException("particle count must be >= 0, but was " + count);
         }
