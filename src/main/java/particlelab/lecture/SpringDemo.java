@@ -138,6 +138,9 @@ public final class SpringDemo extends DemoState {
         }
         setView(-2f, 12f, 2f * ANCHOR_Y - START_Y + 0.5f, 1f, 5, 0.3f);
         showExactGhosts();
+        // |V| reaches ω·A, about 24 m/s: its arrow would cross the scene and the text (V
+        // shows it).
+        hideArrowsAtStart();
     }
 
     @Override
