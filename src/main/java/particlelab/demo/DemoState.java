@@ -695,6 +695,15 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Say that this demo's own views draw the raw physics steps, not the interpolated picture
+     * of F6 (the fountain's points, the rotating boxes), so the HUD's stepping line says so.
+     * Call from the constructor or {@link #createScene()}.
+     */
+    protected void drawsRawSteps() {
+        replay.drawsRawSteps();
+    }
+
+    /**
      * Start with the velocity arrows hidden (for fast balls, whose arrows would leave the
      * scene); the V key still shows them. Call from {@link #createScene()}.
      */

@@ -38,6 +38,8 @@ final class Replay {
     /** The entry shown while behind the live end; -1 while live. */
     private long shownIndex = -1L;
     private boolean interpolating = true;
+    /** False in a demo whose views draw the raw steps whatever F6 says (see below). */
+    private boolean viewsBlend = true;
     /** The blend the views were drawn with this frame. */
     private float frameBlend = 1f;
     /** Bumped at every change the timeline shows (a step, a restore). */
@@ -59,6 +61,14 @@ final class Replay {
         this.clock = clock;
         this.world = world;
         this.particles = particles;
+    }
+
+    /**
+     * Say that the demo's own views (a point cloud, rotating boxes) draw the raw steps, so the
+     * HUD does not claim an interpolated picture it does not draw.
+     */
+    void drawsRawSteps() {
+        viewsBlend = false;
     }
 
     /** Before a step of the clock: leave the recorded past, and record the start if new. */
@@ -240,6 +250,8 @@ final class Replay {
                     .append("; Space or N go on from here, the later steps are dropped");
         } else if (clock.isPaused()) {
             appendRing(text.append("   Home steps back, End forward; "));
+        } else if (!viewsBlend) {
+            text.append("   drawn: raw steps (this demo's views)");
         } else if (!interpolating) {
             text.append("   drawn: raw steps (F6)");
         } else if (frameBlend < 1f) {

@@ -119,6 +119,7 @@ public final class FountainDemo extends DemoState {
 
     @Override
     protected void createScene() {
+        drawsRawSteps(); // its own views draw the physics steps, not the blend
         fountain = new Fountain(particleCount);
         // The packed particles are a simulation beside the world, stepped by the same clock.
         addSimulation(this::stepFountain);

@@ -224,6 +224,7 @@ public final class RotationDemo extends DemoState {
 
     @Override
     protected void createScene() {
+        drawsRawSteps(); // its own views draw the physics steps, not the blend
         // No particles: the boxes are bodies at rest with no force, so the world only turns
         // them (the translation step leaves them where they are). A post names each box.
         ParticleIntegrator noForce = new ParticleIntegrator();

@@ -200,6 +200,7 @@ public final class SpinThrowDemo extends DemoState {
 
     @Override
     protected void createScene() {
+        drawsRawSteps(); // its own views draw the physics steps, not the blend
         centre = addParticle("centre", new ColorRGBA(1f, 0.85f, 0.35f, 1f), LAUNCH_POSITION,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(new Gravity(), drag))
                 .stopAtGround();

@@ -214,6 +214,7 @@ public final class TennisRacketDemo extends DemoState {
 
     @Override
     protected void createScene() {
+        drawsRawSteps(); // its own views draw the physics steps, not the blend
         // One body per method, with no force and at rest: the world steps only its rotation
         // (the translation step leaves a body at rest where it is). A post names each.
         ParticleIntegrator noForce = new ParticleIntegrator();

@@ -56,6 +56,23 @@ class ReplayTest {
         assertEquals(1f, replay.updateFrameBlend(false), "raw tpf: each frame is one step");
     }
 
+    /**
+     * The fountain's points and the rotating boxes draw the physics steps whatever F6 says:
+     * the stepping line must not claim an interpolated picture there, and does elsewhere.
+     */
+    @Test
+    void aDemoWhoseViewsDrawRawStepsSaysSo() {
+        for (String name : List.of("fountain", "rotation", "throw", "racket", "drag")) {
+            DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
+            demo.advancePhysics(1.37f * H);
+            String hud = demo.formatHud(new StringBuilder()).toString();
+            boolean raw = !name.equals("drag");
+            assertEquals(raw, hud.contains("drawn: raw steps (this demo's views)"),
+                    name + ": " + hud);
+            assertEquals(!raw, hud.contains("drawn: interpolated"), name + ": " + hud);
+        }
+    }
+
     @Test
     void theRingKeepsToItsBudgetInTheFountain() {
         DemoState demo = new FountainDemo();
