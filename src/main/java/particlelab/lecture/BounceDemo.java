@@ -167,6 +167,9 @@ public final class BounceDemo extends DemoState {
             addStateRecord(recorders[lane]);
         }
         applyResponse();
+        // The balls hit the ground at 6 m/s and more: their arrows would cross the ground's
+        // labels and the footer (the HUD gives V; V shows the arrows).
+        hideArrowsAtStart();
         sounds = new CollisionSounds(getApplication() == null
                 ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
                 : SoundPlayer.forApplication(getApplication()));
