@@ -9,12 +9,14 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
+import particlelab.demo.FrameTimes;
 import particlelab.files.SafeFiles;
 import particlelab.lecture.FountainDemo;
 import particlelab.view.HudLayout;
@@ -60,6 +62,7 @@ public final class DemoCommand {
     static final String PRESENT = "--present";
     private static final String SET = "--set";
     private static final String PARTICLES = "--particles";
+    private static final double MILLIS_PER_SECOND = 1000.0;
     private static final String PROFILE = "--profile";
     private static final String FOUNTAIN = "fountain";
     /**
@@ -295,16 +298,39 @@ public final class DemoCommand {
 
     /**
      * Write the line {@code --profile} prints at exit, for the demo the window opened on:
-     * {@code physics_ms_mean=X physics_ms_max=Y particles=P frames=N}, the wall time of each
-     * frame's simulation steps (the clock's steps of the demo's world and every hook in them,
-     * the fountain's packed particles included) over the N frames the demo ran, and the
-     * particles each step moved.
+     * {@code physics_ms_mean=X physics_ms_max=Y particles=P frames=N frame_share_pct=S}, the
+     * wall time of each frame's simulation steps (the clock's steps of the demo's world and
+     * every hook in them, the fountain's packed particles included) over the N frames the demo
+     * ran, the particles each step moved, and the mean's share of a 16.7 ms frame (in
+     * percent); the fountain adds {@code mesh_ms_mean=M mesh_ms_max=K}, its copy of the pool
+     * into the points' mesh per frame.
      *
      * @param demo the demo (not null)
      * @return the line, without a line end (not null)
      */
     static String profileLine(DemoState demo) {
-        return demo.getPhysicsTimes().formatProfile(demo.countSimulatedParticles());
+        FrameTimes mesh = demo instanceof FountainDemo ? ((FountainDemo) demo).getMeshTimes()
+                : null;
+        return profileLine(demo.getPhysicsTimes(), mesh, demo.countSimulatedParticles());
+    }
+
+    /**
+     * {@link #profileLine(DemoState)} from the times themselves.
+     *
+     * @param physics the physics' times per frame (not null)
+     * @param mesh the mesh update's times per frame (null: a demo without one)
+     * @param particles the particles each step moved (&ge;0)
+     * @return the line, without a line end (not null)
+     */
+    static String profileLine(FrameTimes physics, FrameTimes mesh, int particles) {
+        double budgetMillis = FountainDemo.FRAME_BUDGET_SECONDS * MILLIS_PER_SECOND;
+        String line = physics.formatProfile(particles) + String.format(Locale.ROOT,
+                " frame_share_pct=%.1f", 100.0 * physics.meanMillis() / budgetMillis);
+        if (mesh == null) {
+            return line;
+        }
+        return line + String.format(Locale.ROOT, " mesh_ms_mean=%.3f mesh_ms_max=%.3f",
+                mesh.meanMillis(), mesh.maxMillis());
     }
 
     /**
@@ -418,8 +444,10 @@ public final class DemoCommand {
                         + " 1 to " + Fountain.MAX_PARTICLES + " (default "
                         + Fountain.DEFAULT_PARTICLES + ")")
                 .flag(PROFILE, "at exit, print one line: physics_ms_mean=X physics_ms_max=Y"
-                        + " particles=P frames=N, the wall time of each frame's simulation"
-                        + " steps of the demo the window opened on")
+                        + " particles=P frames=N frame_share_pct=S, the wall time of each"
+                        + " frame's simulation steps of the demo the window opened on and its"
+                        + " share of a 16.7 ms frame (the fountain adds mesh_ms_mean=M"
+                        + " mesh_ms_max=K)")
                 .note(describeChoices())
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");

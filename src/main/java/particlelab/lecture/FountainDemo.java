@@ -61,7 +61,11 @@ public final class FountainDemo extends DemoState {
     private float waterBrightness = WATER_BRIGHTNESS;
     private Fountain fountain;
     private PointCloudView points;
+    /** Writes the pool into the points' mesh each frame (null without an application). */
+    private FountainPoints meshUpdate;
     private final FrameTimes renderTimes = new FrameTimes();
+    /** The mesh update's wall time per frame ({@link FountainPoints#update}). */
+    private final FrameTimes meshTimes = new FrameTimes();
     private final FrameTimes frameTimes = new FrameTimes();
     private long renderStartNanos = -1L;
     private long lastUpdateNanos = -1L;
@@ -112,6 +116,42 @@ public final class FountainDemo extends DemoState {
         return renderTimes;
     }
 
+    /**
+     * Access the mesh update's times: per frame, the copy of the pool into the points' mesh
+     * ({@link FountainPoints#update}), wall time; none without an application.
+     *
+     * @return the live record (not null)
+     */
+    public FrameTimes getMeshTimes() {
+        return meshTimes;
+    }
+
+    /**
+     * Write the HUD's line of the frame's shares: the physics' mean milliseconds per frame
+     * and their share of a {@link #FRAME_BUDGET_SECONDS} frame, then the mesh update's and
+     * the render pass's milliseconds and the frame's, e.g. {@code physics 2.60 ms/frame = 16% of
+     * a 16.7 ms frame;  mesh 1.10 + render 0.40 ms;  frame 16.7 ms (60 fps)}.
+     *
+     * @param text where to append the line and its line end (not null, modified)
+     * @param physicsMillis the physics' mean per frame (in ms, &ge;0)
+     * @param meshMillis the mesh update's mean per frame (in ms, &ge;0)
+     * @param renderMillis the render pass's mean per frame (in ms, &ge;0)
+     * @param frameMillis the time between two frames (in ms, &ge;0; 0: not known yet)
+     */
+    public static void appendShareLine(StringBuilder text, double physicsMillis,
+            double meshMillis, double renderMillis, double frameMillis) {
+        double budget = FRAME_BUDGET_SECONDS * MILLIS_PER_SECOND;
+        text.append("physics ");
+        TextFormat.appendFixed(text, physicsMillis, 2).append(" ms/frame = ");
+        TextFormat.appendFixed(text, 100.0 * physicsMillis / budget, 0).append("% of a ");
+        TextFormat.appendFixed(text, budget, 1).append(" ms frame;  mesh ");
+        TextFormat.appendFixed(text, meshMillis, 2).append(" + render ");
+        TextFormat.appendFixed(text, renderMillis, 2).append(" ms;  frame ");
+        TextFormat.appendFixed(text, frameMillis, 1).append(" ms (");
+        TextFormat.appendFixed(text, frameMillis > 0.0 ? MILLIS_PER_SECOND / frameMillis : 0.0,
+                0).append(" fps)\n");
+    }
+
     @Override
     public int countSimulatedParticles() {
         return fountain == null ? particleCount : fountain.getCapacity();
@@ -131,6 +171,7 @@ public final class FountainDemo extends DemoState {
             points = new PointCloudView(getApplication().getAssetManager(), "fountain",
                     particleCount, POINT_SIZE_PIXELS, Fountain.REGION_TOP);
             getSceneNode().attachChild(points.getGeometry());
+            meshUpdate = new FountainPoints(points.getPoints(), waterBrightness);
         }
         setView(-Fountain.REGION_HALF_WIDTH + 2f, Fountain.REGION_HALF_WIDTH - 2f, 28f, 2f, 5,
                 0.3f);
@@ -183,19 +224,9 @@ public final class FountainDemo extends DemoState {
                 .append(" at rest, ").append(fountain.countRecycledLeaving())
                 .append(" left the region, ").append(fountain.countRecycledBurnt())
                 .append(" fireworks burnt out\n");
-        double physics = getPhysicsTimes().recentMeanMillis();
-        double render = renderTimes.recentMeanMillis();
-        double budget = FRAME_BUDGET_SECONDS * MILLIS_PER_SECOND;
-        text.append("physics ");
-        TextFormat.appendFixed(text, physics, 2).append(" + render ");
-        TextFormat.appendFixed(text, render, 2).append(" ms/frame = ");
-        TextFormat.appendFixed(text, 100.0 * (physics + render) / budget, 0)
-                .append("% of ");
-        TextFormat.appendFixed(text, budget, 1).append(" ms;  frame ");
-        double frame = frameTimes.recentMeanMillis();
-        TextFormat.appendFixed(text, frame, 1).append(" ms (");
-        TextFormat.appendFixed(text, frame > 0.0 ? MILLIS_PER_SECOND / frame : 0.0, 0)
-                .append(" fps)\n");
+        appendShareLine(text, getPhysicsTimes().recentMeanMillis(),
+                meshTimes.recentMeanMillis(), renderTimes.recentMeanMillis(),
+                frameTimes.recentMeanMillis());
     }
 
     /**
@@ -222,15 +253,12 @@ public final class FountainDemo extends DemoState {
 
     @Override
     protected void afterFrame() {
-        if (points == null) {
+        if (meshUpdate == null) {
             return;
         }
-        points.copyPlanarPositions(fountain.getPositions());
-        int count = fountain.getCapacity();
-        for (int i = 0; i < count; ++i) {
-            points.setColour(i, fountain.getColour(i), brightness(fountain.getKind(i), i));
-        }
-        points.markUpdated();
+        long start = System.nanoTime();
+        meshUpdate.update(fountain);
+        meshTimes.record(System.nanoTime() - start);
     }
 
     @Override
@@ -270,19 +298,6 @@ public final class FountainDemo extends DemoState {
         super.onDisable();
         lastUpdateNanos = -1L;
         renderStartNanos = -1L;
-    }
-
-    private float brightness(byte kind, int i) {
-        switch (kind) {
-            case Fountain.DORMANT:
-                return 0f;
-            case Fountain.WATER:
-                return waterBrightness;
-            case Fountain.SHELL:
-                return 1f;
-            default:
-                return fountain.fuseFraction(i);
-        }
     }
 
     private void changeRestitution(float sign) {

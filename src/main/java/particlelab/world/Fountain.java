@@ -107,6 +107,10 @@ public final class Fountain implements StateRecord {
     /** The random sequence's seed: a reset replays the same fountain. */
     private static final long SEED = 12;
     private static final float TWO_PI = (float) (2.0 * Math.PI);
+    /** cos of the nozzle's half angle, the least cos θ of a drop's direction. */
+    private static final float WATER_CONE_COS = (float) Math.cos(WATER_CONE_RADIANS);
+    /** cos of the shells' half angle. */
+    private static final float SHELL_CONE_COS = (float) Math.cos(SHELL_CONE_RADIANS);
     /** The burst queue's record: P, V, colour. */
     private static final int BURST_FLOATS = 6;
 
@@ -676,7 +680,7 @@ public final class Fountain implements StateRecord {
         }
         int i = take(SHELL);
         float x = (shellsLaunched % 2 == 0 ? -1f : 1f) * LAUNCHER_X;
-        launchInCone(i, x, between(SHELL_MIN_SPEED, SHELL_MAX_SPEED), SHELL_CONE_RADIANS);
+        launchInCone(i, x, between(SHELL_MIN_SPEED, SHELL_MAX_SPEED), SHELL_CONE_COS);
         Rule rule = RULES[SHELL];
         fuses[i] = between(rule.minFuse, rule.maxFuse);
         fusesLeft[i] = fuses[i];
@@ -691,17 +695,20 @@ public final class Fountain implements StateRecord {
         int count = Math.min(wanted, capacity - live - reserve);
         for (int n = 0; n < count; ++n) {
             int i = take(WATER);
-            launchInCone(i, 0f, between(WATER_MIN_SPEED, WATER_MAX_SPEED), WATER_CONE_RADIANS);
+            launchInCone(i, 0f, between(WATER_MIN_SPEED, WATER_MAX_SPEED), WATER_CONE_COS);
             fuses[i] = 0f;
             fusesLeft[i] = 0f;
             colours[i] = WATER_COLOUR;
         }
     }
 
-    /** From (x, r, 0), up at a speed within a cone about +y of a half angle. */
-    private void launchInCone(int i, float x, float speed, float coneRadians) {
+    /**
+     * From (x, r, 0), up at a speed within a cone about +y of a half angle α, given as cos α
+     * (computed once: it was a cosine per particle).
+     */
+    private void launchInCone(int i, float x, float speed, float coneCos) {
         // cos θ uniform in [cos α, 1]: directions uniform over the cone's cap
-        float cosTheta = between((float) Math.cos(coneRadians), 1f);
+        float cosTheta = between(coneCos, 1f);
         float sinTheta = (float) Math.sqrt(Math.max(0f, 1f - cosTheta * cosTheta));
         float phi = between(0f, TWO_PI);
         place(i, x, RADIUS_METRES, 0f, speed * sinTheta * (float) Math.cos(phi),

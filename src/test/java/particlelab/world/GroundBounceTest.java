@@ -169,6 +169,48 @@ class GroundBounceTest {
         assertEquals(0, touched[0]);
     }
 
+    /**
+     * The contact test by groups finds exactly the particles one test each finds, in
+     * increasing order: contacts at a group's first and last place, a lone one, a run of
+     * them, y exactly r, −0 and a count that ends inside a group, for every count from 0 to
+     * 40 and a stride wider than the count.
+     */
+    @Test
+    void theGroupedContactTestFindsWhatOneTestPerParticleFinds() {
+        float radius = 0.05f;
+        float[] ys = new float[40];
+        for (int i = 0; i < ys.length; ++i) {
+            ys[i] = 0.05f + 0.37f * (i % 5) + 0.001f; // in the air, just above r for some
+        }
+        for (int i : new int[] {0, 7, 8, 15, 19, 20, 21, 22, 39}) {
+            ys[i] = -0.02f * (i % 3); // 0, -0.02, -0.04: touching or below the ground
+        }
+        ys[30] = radius; // exactly r: d = 0, a contact
+        ys[31] = -0f;
+        ys[33] = Math.nextUp(radius); // a hair above r: none
+        GroundBounce ground = new GroundBounce(radius, 0.5f, 0f, true);
+        for (int count = 0; count <= ys.length; ++count) {
+            int stride = count + 3;
+            float[] positions = new float[3 * stride];
+            float[] velocities = new float[3 * stride];
+            System.arraycopy(ys, 0, positions, stride, count);
+            int[] expected = new int[count];
+            int expectedCount = 0;
+            for (int i = 0; i < count; ++i) {
+                if (ys[i] <= radius) {
+                    expected[expectedCount++] = i;
+                }
+            }
+            int[] contacts = new int[count];
+            int found = ground.resolve(positions, velocities, new float[count], stride, count,
+                    contacts);
+            assertEquals(expectedCount, found, "contacts among " + count);
+            for (int c = 0; c < found; ++c) {
+                assertEquals(expected[c], contacts[c], "contact " + c + " among " + count);
+            }
+        }
+    }
+
     @Test
     void resolvingAllocatesNothing() {
         int count = 10_000;
