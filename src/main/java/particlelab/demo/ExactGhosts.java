@@ -146,7 +146,7 @@ final class ExactGhosts {
         ColorRGBA[] colors = new ColorRGBA[count];
         for (int i = 0; i < count; ++i) {
             DemoParticle particle = particles.get(i);
-            paths[i] = new ExactPath(particle.getIntegrator());
+            paths[i] = new ExactPath(particle.getPathIntegrator());
             views[i] = new GhostView(assets, particle.getLabel(), particle.getColor(),
                     particle.view.getRadius(), particle.view.getTrail().getCapacity());
             sceneNode.attachChild(views[i].getNode());
