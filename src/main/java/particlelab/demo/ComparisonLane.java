@@ -526,7 +526,7 @@ public final class ComparisonLane {
     }
 
     private void appendSeenError(StringBuilder text) {
-        text.append("Error seen (visible from 1 px or 1 radius)");
+        text.append("Error as seen (visible from 1 px or 1 radius)");
         if (particle.hasLanded()) {
             text.append(" at landing");
         }
@@ -538,8 +538,11 @@ public final class ComparisonLane {
         } else {
             appendError(text.append("lane "), laneDx, laneDy).append(";  ");
         }
-        appendError(text.append("'").append(followed.getLabel()).append("' "), followedDx,
-                followedDy).append('\n');
+        // the followed sphere's name: its label up to the force law after two spaces
+        String label = followed.getLabel();
+        int end = label.indexOf("  ");
+        text.append(label, 0, end < 0 ? label.length() : end).append(' ');
+        appendError(text, followedDx, followedDy).append('\n');
     }
 
     private StringBuilder appendError(StringBuilder text, double dx, double dy) {
@@ -550,9 +553,9 @@ public final class ComparisonLane {
         PlaneView view = demo.getPlaneView();
         double pixels = ScreenError.pixels(view, dx, dy);
         double radii = ScreenError.radii(metres, radiusMetres);
-        TextFormat.appendFixed(text, metres, metres < 0.01 ? 6 : 3).append(" m = ");
-        TextFormat.appendFixed(text, pixels, 2).append(" px = ");
-        TextFormat.appendFixed(text, radii, 3).append(" radii, ");
+        TextFormat.appendFixed(text, metres, metres < 0.01 ? 6 : 3).append(" m, ");
+        TextFormat.appendFixed(text, pixels, 2).append(" px, ");
+        TextFormat.appendFixed(text, radii, 3).append(" radii: ");
         return text.append(ScreenError.isVisible(pixels, radii) ? "visible" : "invisible");
     }
 
