@@ -142,7 +142,7 @@ public final class ComparisonLane {
     private boolean blewUp;
     /** The followed sphere's forces are ones the report's steppers do not model. */
     private boolean unsupported;
-    /** The readouts, noted at the start of each step while the lane and the path fly. */
+    /** The readouts, noted after each step while the lane and the path fly. */
     private boolean hasErrors;
     private double laneDx;
     private double laneDy;
@@ -263,8 +263,8 @@ public final class ComparisonLane {
     }
 
     /**
-     * Return the lane's error {@code |P − P_exact|} noted last (at the start of the last
-     * step, or the last one before the lane landed).
+     * Return the lane's error {@code |P − P_exact|} noted last: after the last step, or the
+     * last one before the lane (or its exact path) reached the ground.
      *
      * @return the distance (in metres; NaN before the first step)
      */
@@ -296,7 +296,6 @@ public final class ComparisonLane {
             start();
         }
         refreshForces();
-        noteErrors();
         Particle body = particle.getParticle();
         double[] p = state.position;
         body.position.set((float) p[0], (float) p[1], (float) p[2]);
@@ -310,6 +309,18 @@ public final class ComparisonLane {
         body.velocity.set((float) ((p[0] - body.position.x) / stepSeconds),
                 (float) ((p[1] - body.position.y) / stepSeconds),
                 (float) ((p[2] - body.position.z) / stepSeconds));
+    }
+
+    /**
+     * Note the readouts once the world has stepped: the lane, its exact path and the followed
+     * sphere are then at the same time, the one the HUD's particle lines show. Call from the
+     * demo's {@code afterStep}. Reads only; allocates nothing.
+     */
+    public void afterStep() {
+        if (particle == null || particle.hasLanded() || blewUp || needsStart) {
+            return;
+        }
+        noteErrors();
     }
 
     /**
@@ -348,16 +359,17 @@ public final class ComparisonLane {
             return;
         }
         measureCostOnce();
-        Particle body = particle.getParticle();
-        text.append("Lane ").append(kind.label()).append(" (L):  P = ");
-        TextFormat.appendVector(text, body.position, 2).append(" m   |V| = ");
-        TextFormat.appendFixed(text, Math.sqrt(state.velocity[0] * state.velocity[0]
-                + state.velocity[1] * state.velocity[1]
-                + state.velocity[2] * state.velocity[2]), 2).append(" m/s");
+        text.append("Lane ").append(kind.label()).append(" (L):  ");
         if (particle.hasLanded()) {
-            TextFormat.appendFixed(text.append("   landed at x = "), particle.getLandingX(), 2)
+            TextFormat.appendFixed(text.append("landed at x = "), particle.getLandingX(), 2)
                     .append(" m after ");
             TextFormat.appendFixed(text, particle.getLandingSeconds(), 2).append(" s");
+        } else {
+            TextFormat.appendVector(text.append("P = "), particle.getParticle().position, 2)
+                    .append(" m   |V| = ");
+            TextFormat.appendFixed(text, Math.sqrt(state.velocity[0] * state.velocity[0]
+                    + state.velocity[1] * state.velocity[1]
+                    + state.velocity[2] * state.velocity[2]), 2).append(" m/s");
         }
         if (kind == Kind.SLIDE) {
             TextFormat.appendFixed(text.append("   |P - P_shared| = "), slideDifference, 6)
@@ -490,7 +502,7 @@ public final class ComparisonLane {
         stepperScheme = scheme;
     }
 
-    /** Note both errors at the start of a step, while the lane and the exact path fly. */
+    /** Note both errors after a step, while the lane and the exact path fly. */
     private void noteErrors() {
         if (exact.hasLanded()) {
             return;
@@ -501,7 +513,6 @@ public final class ComparisonLane {
         laneDy = state.position[1] - ey;
         Vector3f main = followed.getParticle().position;
         if (kind == Kind.SLIDE && !followed.hasLanded()) {
-            // both at the same time: the world has not stepped the followed sphere yet
             slideDifference = main.distance(slide.position);
         }
         if (!followed.hasLanded()) {
@@ -517,35 +528,33 @@ public final class ComparisonLane {
             text.append("   cost: measuring");
             return;
         }
-        TextFormat.appendFixed(text.append("   cost "), nanos, 0).append(" ns");
+        TextFormat.appendFixed(text.append("   "), nanos, 0).append(" ns");
         if (kind == Kind.SLIDE) {
-            TextFormat.appendFixed(text.append(" and "), costBytes[kind.ordinal()], 0)
-                    .append(" B allocated");
+            TextFormat.appendFixed(text.append(", "), costBytes[kind.ordinal()], 0)
+                    .append(" B");
         }
         text.append(" per step (measured on this machine)");
     }
 
     private void appendSeenError(StringBuilder text) {
-        text.append("Error as seen (visible from 1 px or 1 radius)");
+        text.append("Seen error");
         if (particle.hasLanded()) {
             text.append(" at landing");
         }
-        text.append(":  ");
+        text.append(" (visible: 1 px or 1 radius):  ");
         if (blewUp) {
             text.append("the lane's step blew up (h beyond its stability limit);  ");
         } else if (unsupported && kind != Kind.SLIDE) {
             text.append("these forces are not among the report's models;  ");
         } else {
-            appendError(text.append("lane "), laneDx, laneDy).append(";  ");
+            appendError(text.append("lane "), laneDx, laneDy, true).append(";  ");
         }
-        // the followed sphere's name: its label up to the force law after two spaces
-        String label = followed.getLabel();
-        int end = label.indexOf("  ");
-        text.append(label, 0, end < 0 ? label.length() : end).append(' ');
-        appendError(text, followedDx, followedDy).append('\n');
+        // the followed sphere, stepped by the shared integrator (its own line has the metres)
+        appendError(text.append("shared "), followedDx, followedDy, false).append('\n');
     }
 
-    private StringBuilder appendError(StringBuilder text, double dx, double dy) {
+    private StringBuilder appendError(StringBuilder text, double dx, double dy,
+            boolean withMetres) {
         if (!hasErrors) {
             return text.append("-");
         }
@@ -553,9 +562,11 @@ public final class ComparisonLane {
         PlaneView view = demo.getPlaneView();
         double pixels = ScreenError.pixels(view, dx, dy);
         double radii = ScreenError.radii(metres, radiusMetres);
-        TextFormat.appendFixed(text, metres, metres < 0.01 ? 6 : 3).append(" m, ");
+        if (withMetres) {
+            TextFormat.appendFixed(text, metres, 4).append(" m, ");
+        }
         TextFormat.appendFixed(text, pixels, 2).append(" px, ");
-        TextFormat.appendFixed(text, radii, 3).append(" radii: ");
+        TextFormat.appendFixed(text, radii, 2).append(" radii: ");
         return text.append(ScreenError.isVisible(pixels, radii) ? "visible" : "invisible");
     }
 

@@ -184,6 +184,11 @@ public final class DragDemo extends DemoState {
     }
 
     @Override
+    protected void afterStep(float stepSeconds) {
+        lane.afterStep();
+    }
+
+    @Override
     protected void onRestart() {
         lane.restart();
     }

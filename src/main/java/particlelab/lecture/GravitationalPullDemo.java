@@ -115,6 +115,7 @@ public final class GravitationalPullDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        lane.afterStep();
         // No gravity, no landing: start over past the view's edge, as uniform motion does.
         Vector3f position = ball.getParticle().position;
         if (gravity.copyAcceleration(gravityNow).y == 0f

@@ -113,6 +113,11 @@ public final class ThrustDemo extends DemoState {
     }
 
     @Override
+    protected void afterStep(float stepSeconds) {
+        lane.afterStep();
+    }
+
+    @Override
     protected void onRestart() {
         lane.restart();
     }

@@ -107,6 +107,7 @@ public final class UniformMotionDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        lane.afterStep();
         // Leaving the screen: start over so the demo loops in front of the class. Called
         // from a step, restart() waits until the frame's steps are over, so t starts again
         // from 0 together with P.

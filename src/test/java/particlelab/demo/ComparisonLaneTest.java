@@ -226,7 +226,7 @@ class ComparisonLaneTest {
         String hud = text.toString();
         assertTrue(hud.contains("Lane RK4 (L)"), hud);
         assertTrue(hud.contains("at landing"), hud);
-        assertTrue(hud.contains("lane 0.000000 m, 0.00 px, 0.000 radii: invisible;"), hud);
+        assertTrue(hud.contains("lane 0.0000 m, 0.00 px, 0.00 radii: invisible;"), hud);
     }
 
     @Test
