@@ -345,6 +345,9 @@ public final class ComparisonLane {
             view.getNode().setCullHint(kind == Kind.OFF ? Spatial.CullHint.Always
                     : Spatial.CullHint.Inherit);
         }
+        // off, its ghost would be drawn over the followed sphere's, doubling it
+        demo.getExactGhosts().setGhostShown(demo.getParticles().indexOf(particle),
+                kind != Kind.OFF);
     }
 
     /**
