@@ -36,6 +36,8 @@ public final class ExactPath {
 
     /** The longest RK4 substep (in seconds): its error, about h⁴, is then below 1e-12. */
     public static final double MAX_SUBSTEP_SECONDS = 1.0 / 960.0;
+    /** How many doubles {@link #writeState} writes: the path's whole state. */
+    public static final int STATE_DOUBLES = 25;
     /** Bisections for an event: 60 halve any step below 1e-18 of itself. */
     private static final int BISECTIONS = 60;
 
@@ -182,6 +184,55 @@ public final class ExactPath {
             landingSeconds = timeSeconds;
             landingX = position[0];
         }
+    }
+
+    /**
+     * Copy the path's whole state (where it is, when, what it was anchored at, its events)
+     * into an array, so {@link #readState} can put it back bit for bit (a replay). Allocates
+     * nothing.
+     *
+     * @param storeResult where to write (at least {@value #STATE_DOUBLES} long, modified)
+     */
+    public void writeState(double[] storeResult) {
+        System.arraycopy(position, 0, storeResult, 0, 3);
+        System.arraycopy(velocity, 0, storeResult, 3, 3);
+        System.arraycopy(anchorPosition, 0, storeResult, 6, 3);
+        System.arraycopy(anchorVelocity, 0, storeResult, 9, 3);
+        System.arraycopy(gravity, 0, storeResult, 12, 3);
+        storeResult[15] = timeSeconds;
+        storeResult[16] = anchorSeconds;
+        storeResult[17] = rate;
+        storeResult[18] = massKg;
+        storeResult[19] = stopsAtGround ? 1.0 : 0.0;
+        storeResult[20] = landed ? 1.0 : 0.0;
+        storeResult[21] = apexSeconds;
+        storeResult[22] = apexHeight;
+        storeResult[23] = landingSeconds;
+        storeResult[24] = landingX;
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote. Allocates nothing.
+     *
+     * @param state the state (at least {@value #STATE_DOUBLES} long, not modified)
+     */
+    public void readState(double[] state) {
+        System.arraycopy(state, 0, position, 0, 3);
+        System.arraycopy(state, 3, velocity, 0, 3);
+        System.arraycopy(state, 6, anchorPosition, 0, 3);
+        System.arraycopy(state, 9, anchorVelocity, 0, 3);
+        System.arraycopy(state, 12, gravity, 0, 3);
+        timeSeconds = state[15];
+        anchorSeconds = state[16];
+        rate = state[17];
+        massKg = state[18];
+        probe.setMass((float) massKg);
+        stopsAtGround = state[19] != 0.0;
+        landed = state[20] != 0.0;
+        apexSeconds = state[21];
+        apexHeight = state[22];
+        landingSeconds = state[23];
+        landingX = state[24];
     }
 
     /**

@@ -34,6 +34,8 @@ public final class DemoParticle {
     private final Body body;
     private final Particle particle;
     private final ParticleIntegrator integrator;
+    /** The forces its exact ghost follows: its own integrator's, unless a lane says. */
+    private ParticleIntegrator pathIntegrator;
     private final Vector3f launchPosition = new Vector3f();
     private final Vector3f launchVelocity = new Vector3f();
     /** Every state since the launch, for the export. */
@@ -60,6 +62,7 @@ public final class DemoParticle {
         this.body = body;
         this.particle = body.getParticle();
         this.integrator = body.getIntegrator();
+        this.pathIntegrator = integrator;
         launchPosition.set(particle.position);
         launchVelocity.set(particle.velocity);
     }
@@ -141,6 +144,30 @@ public final class DemoParticle {
      */
     public ParticleIntegrator getIntegrator() {
         return integrator;
+    }
+
+    /**
+     * Access the integrator whose forces the particle's exact ghost follows: its own, unless
+     * its motion is driven from outside (a comparison lane), which names the forces it
+     * models.
+     *
+     * @return the live integrator (not null)
+     */
+    public ParticleIntegrator getPathIntegrator() {
+        return pathIntegrator;
+    }
+
+    /**
+     * Let the exact ghost follow other forces than the particle's own integrator's. Call
+     * before the views are built.
+     *
+     * @param forces the integrator holding the forces the motion models (not null)
+     */
+    void setPathIntegrator(ParticleIntegrator forces) {
+        if (forces == null) {
+            throw new IllegalArgumentException("path integrator must not be null");
+        }
+        pathIntegrator = forces;
     }
 
     /**

@@ -153,7 +153,7 @@ public final class Draggable {
         Vector3f launchVelocity = new Vector3f();
         Vector3f offset = new Vector3f();
         return new Draggable(what, Grip.BODY, Effect.LAUNCH, group,
-                "launch P0" + ofAll(group.size()), PAUSED_NOTE,
+                "launch P0" + ofAll(countShown(group)), PAUSED_NOTE,
                 false, (particle, point) -> {
                     offset.set(point.x, Math.max(0f, point.y), 0f)
                             .subtractLocal(particle.copyLaunchPosition(launchPosition));
@@ -177,7 +177,7 @@ public final class Draggable {
         List<DemoParticle> group = List.copyOf(particles);
         Vector3f launchPosition = new Vector3f();
         return new Draggable(what, Grip.ARROW_TIP, Effect.LAUNCH, group,
-                "launch V0" + ofAll(group.size()), PAUSED_NOTE,
+                "launch V0" + ofAll(countShown(group)), PAUSED_NOTE,
                 false, (particle, velocity) -> {
                     for (int i = 0; i < group.size(); ++i) {
                         DemoParticle each = group.get(i);
@@ -254,6 +254,23 @@ public final class Draggable {
      */
     public static String ofAll(int count) {
         return count == 1 ? "" : count == 2 ? " of both" : " of all " + count;
+    }
+
+    /**
+     * Count the particles of a group that are shown, for a description: a parked one (a
+     * comparison lane's sphere, moved with the launch but off unless chosen) is left out.
+     *
+     * @param group the particles launched together (not null)
+     * @return how many are not parked (at least 1)
+     */
+    public static int countShown(List<DemoParticle> group) {
+        int shown = 0;
+        for (int i = 0; i < group.size(); ++i) {
+            if (!group.get(i).isParked()) {
+                ++shown;
+            }
+        }
+        return Math.max(1, shown);
     }
 
     @Override

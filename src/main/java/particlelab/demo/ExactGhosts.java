@@ -67,6 +67,8 @@ final class ExactGhosts {
     private boolean graphVisible;
     private ExactPath[] paths = new ExactPath[0];
     private GhostView[] views = new GhostView[0];
+    /** Per particle: whether its ghost may be shown (a hidden comparison lane's is not). */
+    private boolean[] ghostShown = new boolean[0];
     /** Per particle: the Euler particle's highest step point and when (NaN: none yet). */
     private float[] eulerApexHeight = new float[0];
     private double[] eulerApexSeconds = new double[0];
@@ -132,6 +134,8 @@ final class ExactGhosts {
         int count = particles.size();
         paths = new ExactPath[count];
         views = new GhostView[count];
+        ghostShown = new boolean[count];
+        java.util.Arrays.fill(ghostShown, true);
         eulerApexHeight = new float[count];
         eulerApexSeconds = new double[count];
         eulerPastApex = new boolean[count];
@@ -146,7 +150,7 @@ final class ExactGhosts {
         ColorRGBA[] colors = new ColorRGBA[count];
         for (int i = 0; i < count; ++i) {
             DemoParticle particle = particles.get(i);
-            paths[i] = new ExactPath(particle.getIntegrator());
+            paths[i] = new ExactPath(particle.getPathIntegrator());
             views[i] = new GhostView(assets, particle.getLabel(), particle.getColor(),
                     particle.view.getRadius(), particle.view.getTrail().getCapacity());
             sceneNode.attachChild(views[i].getNode());
@@ -276,8 +280,24 @@ final class ExactGhosts {
     void toggleGhosts() {
         ghostsVisible = !ghostsVisible;
         for (int i = 0; i < views.length; ++i) {
-            views[i].setVisible(ghostsVisible);
+            views[i].setVisible(ghostsVisible && ghostShown[i]);
         }
+    }
+
+    /**
+     * Let one particle's ghost be shown (with the others, as G has them) or keep it hidden,
+     * e.g. the ghost of a comparison lane while the lane is off. Does nothing before the
+     * ghosts are built. Allocates nothing.
+     *
+     * @param index the particle's index
+     * @param shown true to show it with the others
+     */
+    void setGhostShown(int index, boolean shown) {
+        if (index >= views.length || ghostShown[index] == shown) {
+            return;
+        }
+        ghostShown[index] = shown;
+        views[index].setVisible(ghostsVisible && shown);
     }
 
     /** @return true if the ghosts are shown */

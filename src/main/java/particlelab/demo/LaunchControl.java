@@ -214,7 +214,8 @@ public final class LaunchControl {
      */
     public Draggable dragVelocity(String what, DemoParameters parameters) {
         return new Draggable(what, Draggable.Grip.ARROW_TIP, Draggable.Effect.LAUNCH,
-                particles, "launch V0" + Draggable.ofAll(particles.size()) + " = speed, angle",
+                particles, "launch V0" + Draggable.ofAll(Draggable.countShown(particles))
+                        + " = speed, angle",
                 Draggable.PAUSED_NOTE, false,
                 (particle, dragged) -> {
                     DemoParameter speedParameter = parameters.get(parameters.indexOf("speed"));

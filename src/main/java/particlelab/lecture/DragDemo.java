@@ -2,6 +2,8 @@ package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.accuracy.SlideCode;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -54,6 +56,8 @@ public final class DragDemo extends DemoState {
     /** The drag coefficients' largest values (N·s/m and kg/m). */
     private static final float MAX_B = 5f;
     private static final float MAX_C = 0.5f;
+    /** The spheres' drawn radius (m). */
+    private static final float SPHERE_RADIUS = 0.3f;
     /** The third sphere's drag laws, as {@code --set law=...} names them. */
     private static final String[] LAWS = {"physical", "slide"};
     /** The third sphere's labels, by law. */
@@ -63,6 +67,11 @@ public final class DragDemo extends DemoState {
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
     private final LinearDrag linearDrag = new LinearDrag(LINEAR_B);
+    /** The linear-drag sphere's gravity, which the lane's slide code reads too. */
+    private final Gravity linearGravity = new Gravity();
+    /** The comparison lane beside the linear-drag sphere (the report's closed-form case). */
+    private final ComparisonLane lane = new ComparisonLane(
+            () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS);
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -75,6 +84,15 @@ public final class DragDemo extends DemoState {
     /** Create the demo. */
     public DragDemo() {
         super("Drag");
+    }
+
+    /**
+     * Access the comparison lane ({@code --set lane=...}, key L).
+     *
+     * @return the live lane (not null)
+     */
+    public ComparisonLane getLane() {
+        return lane;
     }
 
     /**
@@ -114,16 +132,18 @@ public final class DragDemo extends DemoState {
         launch.add(addParticle("gravity only", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity())))).stopAtGround();
-        launch.add(addParticle("linear drag  F = -b V", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
-                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(launch.add(new Gravity()), linearDrag))).stopAtGround();
+        DemoParticle linearSphere = launch.add(addParticle("linear drag  F = -b V",
+                new ColorRGBA(0.3f, 0.85f, 1f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
+                new ParticleIntegrator(launch.add(linearGravity), linearDrag)));
+        linearSphere.stopAtGround();
         // Both quadratic laws act on the third sphere, one of them with c = 0: adding a zero
         // force changes no bit of the physical law's step.
         quadraticSphere = launch.add(addParticle(LAW_LABELS[law],
                 new ColorRGBA(1f, 0.4f, 0.8f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag, slideDrag)));
         quadraticSphere.stopAtGround();
-        setView(-2f, 24f, 7f, 1f, 5, 0.3f);
+        lane.install(this, launch, linearSphere);
+        setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }
 
@@ -150,6 +170,32 @@ public final class DragDemo extends DemoState {
                         }
                     }
                 }));
+        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
+    }
+
+    @Override
+    protected void declareKeys() {
+        lane.bindKey();
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        lane.beforeStep(stepSeconds);
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        lane.afterStep();
+    }
+
+    @Override
+    protected void onRestart() {
+        lane.restart();
+    }
+
+    @Override
+    protected void afterFrame() {
+        lane.updateView();
     }
 
     @Override
@@ -186,6 +232,7 @@ public final class DragDemo extends DemoState {
         TextFormat.appendFixed(text, physical / g, 3).append(" s), slide (mg/c)^(1/3) ");
         TextFormat.appendFixed(text, slide, 2).append(" (");
         TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
+        lane.appendHudLines(text);
     }
 
     /** Put c into the chosen law's force and 0 into the other. */

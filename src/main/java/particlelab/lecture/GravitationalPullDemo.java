@@ -2,6 +2,8 @@ package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.accuracy.SlideCode;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -37,6 +39,8 @@ public final class GravitationalPullDemo extends DemoState {
     /** The view's right edge and top (m): without gravity the ball starts over past them. */
     private static final float RIGHT_EDGE = 24f;
     private static final float TOP_EDGE = 7f;
+    /** The spheres' drawn radius (m). */
+    private static final float SPHERE_RADIUS = 0.35f;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -45,6 +49,9 @@ public final class GravitationalPullDemo extends DemoState {
     /** Scratch: g as the force has it now (m/s²). */
     private final Vector3f gravityNow = new Vector3f();
     private final Gravity gravity = new Gravity();
+    /** The comparison lane beside the ball: off, the slide's code, a report stepper. */
+    private final ComparisonLane lane = new ComparisonLane(() -> SlideCode.pull(gravity),
+            SPHERE_RADIUS);
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -52,12 +59,22 @@ public final class GravitationalPullDemo extends DemoState {
         super("Gravitational pull");
     }
 
+    /**
+     * Access the comparison lane ({@code --set lane=...}, key L).
+     *
+     * @return the live lane (not null)
+     */
+    public ComparisonLane getLane() {
+        return lane;
+    }
+
     @Override
     protected void createScene() {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
-        setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, 0.35f);
+        lane.install(this, launch, ball);
+        setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }
 
@@ -68,10 +85,37 @@ public final class GravitationalPullDemo extends DemoState {
         declareParameter(launch.angleParameter());
         declareParameter(launch.massParameter(MASS_KG));
         declareParameter(launch.gravityParameter(0f));
+        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
+    }
+
+    @Override
+    protected void declareKeys() {
+        lane.bindKey();
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        lane.appendHudLines(text);
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        lane.beforeStep(stepSeconds);
+    }
+
+    @Override
+    protected void onRestart() {
+        lane.restart();
+    }
+
+    @Override
+    protected void afterFrame() {
+        lane.updateView();
     }
 
     @Override
     protected void afterStep(float stepSeconds) {
+        lane.afterStep();
         // No gravity, no landing: start over past the view's edge, as uniform motion does.
         Vector3f position = ball.getParticle().position;
         if (gravity.copyAcceleration(gravityNow).y == 0f

@@ -3,6 +3,8 @@ package particlelab.lecture;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.util.List;
+import particlelab.accuracy.SlideCode;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -39,6 +41,8 @@ public final class ThrustDemo extends DemoState {
     /** The largest drag coefficient (N·s/m) and thrust (N) offered. */
     private static final float MAX_B = 5f;
     private static final float MAX_K = 20f;
+    /** The spheres' drawn radius (m). */
+    private static final float SPHERE_RADIUS = 0.18f;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -46,10 +50,24 @@ public final class ThrustDemo extends DemoState {
     private final LinearDrag drag = new LinearDrag(LINEAR_B);
     private final LinearDrag thrusterDrag = new LinearDrag(LINEAR_B);
     private final Thrust thrust = new Thrust(THRUST_K);
+    /** The thruster's gravity, which the lane's slide code reads too. */
+    private final Gravity thrusterGravity = new Gravity();
+    /** The comparison lane beside the thruster. */
+    private final ComparisonLane lane = new ComparisonLane(
+            () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS);
 
     /** Create the demo. */
     public ThrustDemo() {
         super("Thrust");
+    }
+
+    /**
+     * Access the comparison lane ({@code --set lane=...}, key L).
+     *
+     * @return the live lane (not null)
+     */
+    public ComparisonLane getLane() {
+        return lane;
     }
 
     @Override
@@ -57,10 +75,12 @@ public final class ThrustDemo extends DemoState {
         launch.add(addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity()), drag))).stopAtGround();
-        launch.add(addParticle("pull + drag + thrust k", new ColorRGBA(1f, 0.75f, 0.2f, 1f),
-                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(
-                        launch.add(new Gravity()), thrusterDrag, thrust))).stopAtGround();
-        setView(-1f, 14f, 4.5f, 0.5f, 4, 0.18f);
+        DemoParticle thruster = launch.add(addParticle("pull + drag + thrust k",
+                new ColorRGBA(1f, 0.75f, 0.2f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
+                new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust)));
+        thruster.stopAtGround();
+        lane.install(this, launch, thruster);
+        setView(-1f, 14f, 4.5f, 0.5f, 4, SPHERE_RADIUS);
         showExactGhosts();
     }
 
@@ -74,6 +94,37 @@ public final class ThrustDemo extends DemoState {
                 }));
         declareParameter(new DemoParameter("k", "thrust", "N", 0f, MAX_K, 0.25f,
                 THRUST_K, 2, DemoParameter.Applies.LIVE, thrust::setMagnitude));
+        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
+    }
+
+    @Override
+    protected void declareKeys() {
+        lane.bindKey();
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        lane.appendHudLines(text);
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        lane.beforeStep(stepSeconds);
+    }
+
+    @Override
+    protected void afterStep(float stepSeconds) {
+        lane.afterStep();
+    }
+
+    @Override
+    protected void onRestart() {
+        lane.restart();
+    }
+
+    @Override
+    protected void afterFrame() {
+        lane.updateView();
     }
 
     @Override

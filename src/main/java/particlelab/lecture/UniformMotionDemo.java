@@ -2,6 +2,8 @@ package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.accuracy.SlideCode;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -32,11 +34,15 @@ public final class UniformMotionDemo extends DemoState {
     /** The launch speed's largest value and key step (m/s). */
     private static final float MAX_SPEED = 12f;
     private static final float SPEED_STEP = 0.25f;
+    /** The spheres' drawn radius (m). */
+    private static final float SPHERE_RADIUS = 0.4f;
 
     /** The launch speed and angle, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(VELOCITY);
     /** Scratch: the launch velocity as printed (m/s). */
     private final Vector3f shownVelocity = new Vector3f();
+    /** The comparison lane beside the sphere: off, the slide's code, a report stepper. */
+    private final ComparisonLane lane = new ComparisonLane(SlideCode::uniform, SPHERE_RADIUS);
     private DemoParticle sphere;
 
     /** Create the demo. */
@@ -44,13 +50,23 @@ public final class UniformMotionDemo extends DemoState {
         super("Uniform motion");
     }
 
+    /**
+     * Access the comparison lane ({@code --set lane=...}, key L).
+     *
+     * @return the live lane (not null)
+     */
+    public ComparisonLane getLane() {
+        return lane;
+    }
+
     @Override
     protected void createScene() {
         // An integrator with no forces: the lecture's "no force, straight line".
         sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
                 new ParticleIntegrator()));
+        lane.install(this, launch, sphere);
         // Tall enough for the default launch: y = 1 + 1.2·30/4 = 10 m at the right edge.
-        setView(-2f, 32f, 10.5f, 1f, 5, 0.4f);
+        setView(-2f, 32f, 10.5f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }
 
@@ -59,6 +75,27 @@ public final class UniformMotionDemo extends DemoState {
         // No force acts, so neither mass nor g changes anything: only the launch.
         declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
         declareParameter(launch.angleParameter());
+        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
+    }
+
+    @Override
+    protected void declareKeys() {
+        lane.bindKey();
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        lane.beforeStep(stepSeconds);
+    }
+
+    @Override
+    protected void onRestart() {
+        lane.restart();
+    }
+
+    @Override
+    protected void afterFrame() {
+        lane.updateView();
     }
 
     @Override
@@ -70,6 +107,7 @@ public final class UniformMotionDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        lane.afterStep();
         // Leaving the screen: start over so the demo loops in front of the class. Called
         // from a step, restart() waits until the frame's steps are over, so t starts again
         // from 0 together with P.
@@ -86,6 +124,11 @@ public final class UniformMotionDemo extends DemoState {
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
         DemoParameter.appendShort(text, shownVelocity.y, 2)
                 .append(", 0) m/s stays,  and P = P0 + V·t\n");
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        lane.appendHudLines(text);
     }
 
     /** The slide: no force, so V stays; where the sphere is now. */

@@ -100,9 +100,11 @@ class KeyTablesTest {
     /** The generator reads the real bindings: known keys of each kind appear in its tables. */
     @Test
     void theTablesNameTheKeysTheBindingsDeclare() {
-        // Drag adds none of its own; Bounce adds Up (restitution) among others; the shared
-        // table has pause on Space; the application's has Tab; jME's has Esc.
-        assertFalse(KeyTables.demoTable("drag").contains("| `"), "drag has no own keys");
+        // Spring adds none of its own; drag adds L (its comparison lane); Bounce adds Up
+        // (restitution) among others; the shared table has pause on Space; the
+        // application's has Tab; jME's has Esc.
+        assertFalse(KeyTables.demoTable("spring").contains("| `"), "spring has no own keys");
+        assertTrue(KeyTables.demoTable("drag").contains("| `L` | comparison lane"), "drag's L");
         assertTrue(KeyTables.demoTable("bounce").contains("| `Up`"), "bounce's Up");
         assertTrue(KeyTables.sharedTable().contains("| `Space` | pause"), "Space pauses");
         assertTrue(KeyTables.applicationTable().contains("| `Tab` | next demo"), "Tab");

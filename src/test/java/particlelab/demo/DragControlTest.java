@@ -178,7 +178,8 @@ class DragControlTest {
         assertEquals("drag a sphere's arrow tip", declared.get(1).getGestureLabel());
         assertEquals(Draggable.Effect.LAUNCH, declared.get(1).getEffect());
         assertFalse(declared.get(0).isDraggableWhileRunning());
-        assertEquals(3, declared.get(0).getParticles().size());
+        // The three spheres and the comparison lane's (parked: the help counts the shown).
+        assertEquals(4, declared.get(0).getParticles().size());
         List<String[]> rows = DragControl.helpRows(declared);
         // The sphere and its arrow tip share the help's first row; the click is the second.
         assertEquals(2, rows.size());

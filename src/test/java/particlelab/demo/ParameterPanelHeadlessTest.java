@@ -89,10 +89,12 @@ class ParameterPanelHeadlessTest {
 
     @Test
     void firstDemosDeclareTheirLaunchMassGravityAndCoefficients() throws Exception {
-        assertNames(UniformMotionDemo.class, "h", "speed", "angle");
-        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g");
-        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law");
-        assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k");
+        // The free-flight demos end with their comparison lane.
+        assertNames(UniformMotionDemo.class, "h", "speed", "angle", "lane");
+        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "lane");
+        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
+                "lane");
+        assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "lane");
         assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");
         assertNames(CollisionsDemo.class, "h", "e", "preset");

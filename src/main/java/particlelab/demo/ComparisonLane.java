@@ -1,0 +1,681 @@
+package particlelab.demo;
+
+import com.jme3.input.KeyInput;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
+import java.util.List;
+import java.util.function.Supplier;
+import particlelab.accuracy.CostMeter;
+import particlelab.accuracy.ExactPath;
+import particlelab.accuracy.ForceModel;
+import particlelab.accuracy.MotionState;
+import particlelab.accuracy.ReportConfig;
+import particlelab.accuracy.Scheme;
+import particlelab.accuracy.SlideCode;
+import particlelab.accuracy.Stepper;
+import particlelab.physics.Force;
+import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
+import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.QuadraticDrag;
+import particlelab.physics.Thrust;
+import particlelab.view.ParticleView;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenError;
+import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
+
+/**
+ * A free-flight demo's comparison lane ({@code --set lane=...}, key L): one more sphere
+ * launched with the same launch as one of the demo's spheres (the "followed" one), moved not
+ * by the shared integrator but by
+ * <ul>
+ * <li>{@code slide}: the slide's own listing ({@link SlideCode}: allocating jME calls, the
+ * step handed in as {@code tpf}), shown on the HUD line for line; or</li>
+ * <li>one of the speed report's steppers ({@link Scheme}): forward Euler, the lecture's
+ * semi-implicit Euler (the shared integrator itself), velocity Verlet, midpoint, RK4, in
+ * double precision, at the demo's h.</li>
+ * </ul>
+ * {@code off} (the default) hides the lane and leaves its HUD lines out: the picture and the
+ * HUD are the demo's own.
+ *
+ * <p>The lane's sphere is a demo particle in the world, so it is drawn, trailed, replayed and
+ * stopped at the ground like the others; its integrator has no forces, and before each world
+ * step the lane puts it at its own state with the velocity of the chord to its next one, so
+ * the world's step {@code P ← P + h·V} carries it there (to float round-off) and the ground's
+ * swept test sees the lane's own segment. Its exact ghost follows the followed sphere's
+ * forces. The lane's own state (double precision), the exact path it is measured against and
+ * its readouts go into the replay ring.
+ *
+ * <p>The HUD's two lines: the lane's state and its cost per step, measured once per method by
+ * the report's in-process meter ({@link CostMeter}, on a background thread, so no frame
+ * waits for it); and the error as the viewer sees it, for the lane and for the followed
+ * sphere, {@code |P − P_exact|} in metres, in pixels on the screen and in sphere radii,
+ * "visible" from {@value ScreenError#VISIBLE_PIXELS} px or {@value ScreenError#VISIBLE_RADII}
+ * radius ({@link ScreenError}); frozen at the last step before the lane lands. The slide lane
+ * adds its listing. Per step and per frame this allocates nothing, except the slide code
+ * itself, whose allocation is its point (the HUD gives its bytes per step, measured).
+ */
+public final class ComparisonLane {
+
+    /** What moves the lane. */
+    public enum Kind {
+        /** No lane: hidden, out of the HUD (it flies the shared step, unseen). */
+        OFF("off", "comparison lane off", Scheme.SEMI_IMPLICIT_EULER),
+        /** The slide's own listing. */
+        SLIDE("slide", "slide code", null),
+        /** Forward Euler (the report's). */
+        EULER("euler", "forward Euler", Scheme.FORWARD_EULER),
+        /** The lecture's semi-implicit Euler: the shared integrator, through the report. */
+        SEMI("semi", "semi-implicit Euler", Scheme.SEMI_IMPLICIT_EULER),
+        /** Velocity Verlet as games write it (the report's). */
+        VERLET("verlet", "velocity Verlet", Scheme.VELOCITY_VERLET),
+        /** The explicit midpoint method (the report's). */
+        MIDPOINT("midpoint", "midpoint (RK2)", Scheme.MIDPOINT),
+        /** Classic fourth-order Runge-Kutta (the report's). */
+        RK4("rk4", "RK4", Scheme.RUNGE_KUTTA_4);
+
+        private final String id;
+        private final String label;
+        private final Scheme scheme;
+
+        Kind(String id, String label, Scheme scheme) {
+            this.id = id;
+            this.label = label;
+            this.scheme = scheme;
+        }
+
+        /** @return the {@code --set lane=} name */
+        public String id() {
+            return id;
+        }
+
+        /** @return the sphere's label */
+        public String label() {
+            return label;
+        }
+
+        /** @return the report's scheme that moves the lane (null for the slide code) */
+        public Scheme scheme() {
+            return scheme;
+        }
+    }
+
+    /** The parameter's command-line name. */
+    public static final String PARAMETER = "lane";
+    /** The lane sphere's colour: a green none of the free-flight demos uses. */
+    private static final ColorRGBA COLOR = new ColorRGBA(0.45f, 1f, 0.35f, 1f);
+    /** Steps per call of the cost meter's workload: some microseconds. */
+    private static final int COST_STEPS = 64;
+    /** The record's size: flags, the state, the slide's, the path's time, the readouts. */
+    private static final int STATE_INTS = 2 + 12 + 6 + 2 * ExactPath.STATE_DOUBLES + 10 + 2;
+    private static final Kind[] KINDS = Kind.values();
+
+    private final Supplier<SlideCode> slideFactory;
+    private final SlideCode slide;
+    private final float radiusMetres;
+    private DemoState demo;
+    private DemoParticle followed;
+    private DemoParticle particle;
+    private ExactPath exact;
+    private Kind kind = Kind.OFF;
+    /** The lane's state (m, m/s), in double for the report's steppers. */
+    private final MotionState state = new MotionState();
+    /** The report's stepper for the forces now (null: to be built). */
+    private Stepper stepper;
+    private Scheme stepperScheme;
+    private ForceModel model;
+    /** The forces the model was built for: g, m, b, c, k. */
+    private final float[] modelCoefficients = new float[7];
+    private final float[] coefficients = new float[7];
+    private final Vector3f gravityNow = new Vector3f();
+    /** Scratch: the exact path's state, for the replay ring. */
+    private final double[] pathState = new double[ExactPath.STATE_DOUBLES];
+    private final Vector3f scratchPosition = new Vector3f();
+    private final Vector3f scratchVelocity = new Vector3f();
+    /** The next step starts the lane from its sphere's launch state. */
+    private boolean needsStart = true;
+    /** The lane's step went non-finite (beyond its stability limit): it stopped. */
+    private boolean blewUp;
+    /** The followed sphere's forces are ones the report's steppers do not model. */
+    private boolean unsupported;
+    /** The readouts, noted after each step while the lane and the path fly. */
+    private boolean hasErrors;
+    private double laneDx;
+    private double laneDy;
+    private double followedDx;
+    private double followedDy;
+    private double slideDifference;
+    /** Measured costs per kind (ns and bytes per step; NaN until measured). */
+    private final double[] costNanos = new double[KINDS.length];
+    private final double[] costBytes = new double[KINDS.length];
+    private final boolean[] costAsked = new boolean[KINDS.length];
+
+    /**
+     * Create a lane.
+     *
+     * @param slideFactory makes the demo's slide listing, reading the demo's live forces (not
+     *     null; called twice: once for the lane, once for the cost meter's thread)
+     * @param radiusMetres the spheres' drawn radius (in metres, &gt;0), for the error in radii
+     */
+    public ComparisonLane(Supplier<SlideCode> slideFactory, float radiusMetres) {
+        this.slideFactory = slideFactory;
+        this.slide = slideFactory.get();
+        this.radiusMetres = radiusMetres;
+        java.util.Arrays.fill(costNanos, Double.NaN);
+        java.util.Arrays.fill(costBytes, Double.NaN);
+    }
+
+    /**
+     * Add the lane's sphere to a demo, beside one of its spheres. Call from the demo's
+     * {@code createScene()}, after the followed sphere was added.
+     *
+     * @param owner the demo (not null)
+     * @param launch the demo's launch control, which then moves the lane's launch too (not
+     *     null)
+     * @param followedSphere the sphere whose launch and forces the lane shares (not null)
+     * @return the lane's sphere
+     */
+    public DemoParticle install(DemoState owner, LaunchControl launch,
+            DemoParticle followedSphere) {
+        demo = owner;
+        followed = followedSphere;
+        Particle source = followed.getParticle();
+        particle = launch.add(owner.addParticle(kind.label(), COLOR,
+                followed.copyLaunchPosition(scratchPosition),
+                followed.copyLaunchVelocity(scratchVelocity), source.getMass(),
+                new ParticleIntegrator()));
+        // Out of the HUD's particle lines (the lane writes its own) and of the framing.
+        particle.setParked(true);
+        particle.setPathIntegrator(followed.getIntegrator());
+        if (followed.stopsAtGround()) {
+            particle.stopAtGround();
+        }
+        exact = new ExactPath(followed.getIntegrator());
+        owner.addStateRecord(record());
+        return particle;
+    }
+
+    /**
+     * Declare the lane's parameter, {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4},
+     * applied at the next launch.
+     *
+     * @param defaultKind the lane at the start (not null)
+     * @return the declaration
+     */
+    public DemoParameter parameter(Kind defaultKind) {
+        String[] names = new String[KINDS.length];
+        for (int i = 0; i < KINDS.length; ++i) {
+            names[i] = KINDS[i].id();
+        }
+        return DemoParameter.choice(PARAMETER, "comparison lane", names, defaultKind.ordinal(),
+                DemoParameter.Applies.NEXT_LAUNCH, value -> select(KINDS[Math.round(value)]));
+    }
+
+    /**
+     * Bind L: the next lane, from a new launch. Call from the demo's {@code declareKeys()}.
+     *
+     * @return the binding
+     */
+    public KeyBinding bindKey() {
+        return demo.bindKey(KeyInput.KEY_L, "L",
+                "comparison lane: off, slide code, the report's steppers", this::cycle);
+    }
+
+    /**
+     * Return the lane now.
+     *
+     * @return the kind (not null)
+     */
+    public Kind getKind() {
+        return kind;
+    }
+
+    /**
+     * Access the lane's sphere.
+     *
+     * @return the demo particle (null before {@link #install})
+     */
+    public DemoParticle getParticle() {
+        return particle;
+    }
+
+    /**
+     * Access the lane's own state, in double precision: what the stepper or the slide code
+     * moved.
+     *
+     * @return the live state (do not modify)
+     */
+    public MotionState getState() {
+        return state;
+    }
+
+    /**
+     * Access the slide code's particle (moved only while the lane is {@code slide}).
+     *
+     * @return the live listing (do not modify)
+     */
+    public SlideCode getSlideCode() {
+        return slide;
+    }
+
+    /**
+     * Return the lane's error {@code |P − P_exact|} noted last: after the last step, or the
+     * last one before the lane (or its exact path) reached the ground.
+     *
+     * @return the distance (in metres; NaN before the first step)
+     */
+    public double getErrorMetres() {
+        return hasErrors ? Math.hypot(laneDx, laneDy) : Double.NaN;
+    }
+
+    /**
+     * Return the followed sphere's error {@code |P − P_exact|} at the same time.
+     *
+     * @return the distance (in metres; NaN before the first step)
+     */
+    public double getFollowedErrorMetres() {
+        return hasErrors ? Math.hypot(followedDx, followedDy) : Double.NaN;
+    }
+
+    /**
+     * Move the lane by one step of h. Call from the demo's {@code beforeStep}: it puts the
+     * lane's sphere at the lane's state with the chord's velocity, for the world's step to
+     * carry it to the next state. Allocates nothing (but the slide code's own).
+     *
+     * @param stepSeconds h (in seconds, &gt;0)
+     */
+    public void beforeStep(float stepSeconds) {
+        if (particle == null || particle.hasLanded() || blewUp) {
+            return;
+        }
+        if (needsStart) {
+            start();
+        }
+        refreshForces();
+        Particle body = particle.getParticle();
+        double[] p = state.position;
+        body.position.set((float) p[0], (float) p[1], (float) p[2]);
+        if (!advanceState(stepSeconds)) {
+            blewUp = true;
+            body.velocity.set(Vector3f.ZERO);
+            particle.setHeld(true);
+            return;
+        }
+        exact.advance(stepSeconds);
+        body.velocity.set((float) ((p[0] - body.position.x) / stepSeconds),
+                (float) ((p[1] - body.position.y) / stepSeconds),
+                (float) ((p[2] - body.position.z) / stepSeconds));
+    }
+
+    /**
+     * Note the readouts once the world has stepped: the lane, its exact path and the followed
+     * sphere are then at the same time, the one the HUD's particle lines show. Call from the
+     * demo's {@code afterStep}. Reads only; allocates nothing.
+     */
+    public void afterStep() {
+        if (particle == null || particle.hasLanded() || blewUp || needsStart) {
+            return;
+        }
+        noteErrors();
+    }
+
+    /**
+     * Start the lane again from its launch. Call from the demo's {@code onRestart()}.
+     */
+    public void restart() {
+        needsStart = true;
+        blewUp = false;
+        hasErrors = false;
+    }
+
+    /**
+     * Show the lane's sphere, or hide it while the lane is off. Call from the demo's
+     * {@code afterFrame()}. Allocates nothing.
+     */
+    public void updateView() {
+        if (particle == null) {
+            return;
+        }
+        ParticleView view = demo.getView(particle);
+        if (view != null) {
+            view.getNode().setCullHint(kind == Kind.OFF ? Spatial.CullHint.Always
+                    : Spatial.CullHint.Inherit);
+        }
+        // off, its ghost would be drawn over the followed sphere's, doubling it
+        demo.getExactGhosts().setGhostShown(demo.getParticles().indexOf(particle),
+                kind != Kind.OFF);
+    }
+
+    /**
+     * Append the lane's HUD lines (none while off): its state and measured cost, the error as
+     * seen for it and the followed sphere, and the slide's listing for the slide lane.
+     * Allocates nothing (the first call for a method starts its cost measurement).
+     *
+     * @param text where to append (not null, modified)
+     */
+    public void appendHudLines(StringBuilder text) {
+        if (particle == null || kind == Kind.OFF) {
+            return;
+        }
+        measureCostOnce();
+        text.append("Lane ").append(kind.label()).append(" (L):  ");
+        if (particle.hasLanded()) {
+            TextFormat.appendFixed(text.append("landed at x = "), particle.getLandingX(), 2)
+                    .append(" m after ");
+            TextFormat.appendFixed(text, particle.getLandingSeconds(), 2).append(" s");
+        } else {
+            TextFormat.appendVector(text.append("P = "), particle.getParticle().position, 2)
+                    .append(" m   |V| = ");
+            TextFormat.appendFixed(text, Math.sqrt(state.velocity[0] * state.velocity[0]
+                    + state.velocity[1] * state.velocity[1]
+                    + state.velocity[2] * state.velocity[2]), 2).append(" m/s");
+        }
+        if (kind == Kind.SLIDE) {
+            TextFormat.appendFixed(text.append("   |P - P_shared| = "), slideDifference, 6)
+                    .append(" m");
+        }
+        appendCost(text);
+        text.append('\n');
+        appendSeenError(text);
+        if (kind == Kind.SLIDE) {
+            List<String> lines = slide.listing();
+            for (int i = 0; i < lines.size(); ++i) {
+                text.append("   slide:  ").append(lines.get(i)).append('\n');
+            }
+        }
+    }
+
+    /** The next lane, from a new launch. */
+    private void cycle() {
+        DemoParameters parameters = demo.getParameters();
+        int index = parameters.indexOf(PARAMETER);
+        int next = (Math.round(parameters.getValue(index)) + 1) % KINDS.length;
+        parameters.set(index, next);
+        demo.restart();
+    }
+
+    /** Put a kind into the scene (at a launch). */
+    private void select(Kind newKind) {
+        kind = newKind;
+        if (particle != null) {
+            demo.relabel(particle, kind.label());
+        }
+        stepper = null;
+        needsStart = true;
+    }
+
+    /** Start the lane's state, the slide code's and the exact path from the sphere's launch. */
+    private void start() {
+        needsStart = false;
+        blewUp = false;
+        hasErrors = false;
+        Particle body = particle.getParticle();
+        particle.copyLaunchPosition(scratchPosition);
+        particle.copyLaunchVelocity(scratchVelocity);
+        double[] p = state.position;
+        double[] v = state.velocity;
+        p[0] = scratchPosition.x;
+        p[1] = scratchPosition.y;
+        p[2] = scratchPosition.z;
+        v[0] = scratchVelocity.x;
+        v[1] = scratchVelocity.y;
+        v[2] = scratchVelocity.z;
+        if (kind == Kind.SLIDE) {
+            slide.start(scratchPosition, scratchVelocity, body.getMass());
+        }
+        exact.start(scratchPosition, scratchVelocity, body.getMass(),
+                particle.stopsAtGround());
+    }
+
+    /** Advance the lane's state by h; false if it left the finite numbers. */
+    private boolean advanceState(float stepSeconds) {
+        if (kind == Kind.SLIDE) {
+            slide.update(stepSeconds);
+            copyToState(slide.position, slide.velocity);
+            return state.isFinite();
+        }
+        if (stepper == null) {
+            return false;
+        }
+        try {
+            stepper.step(state, stepSeconds);
+        } catch (IllegalStateException nonFinite) {
+            // the shared integrator refuses a non-finite step rather than spread NaN
+            return false;
+        }
+        return state.isFinite();
+    }
+
+    private void copyToState(Vector3f position, Vector3f velocity) {
+        double[] p = state.position;
+        double[] v = state.velocity;
+        p[0] = position.x;
+        p[1] = position.y;
+        p[2] = position.z;
+        v[0] = velocity.x;
+        v[1] = velocity.y;
+        v[2] = velocity.z;
+    }
+
+    /**
+     * Read the followed sphere's forces (g, m, b, c, k); build the report's model and stepper
+     * again only when they changed (a coefficient moved live, a new launch).
+     */
+    private void refreshForces() {
+        ParticleIntegrator integrator = followed.getIntegrator();
+        java.util.Arrays.fill(coefficients, 0f);
+        boolean known = true;
+        for (int i = 0; i < integrator.countForces(); ++i) {
+            Force force = integrator.getForce(i);
+            if (force instanceof Gravity) {
+                ((Gravity) force).copyAcceleration(gravityNow);
+                coefficients[0] += gravityNow.x;
+                coefficients[1] += gravityNow.y;
+                coefficients[2] += gravityNow.z;
+            } else if (force instanceof LinearDrag) {
+                coefficients[4] += ((LinearDrag) force).getCoefficient();
+            } else if (force instanceof QuadraticDrag) {
+                coefficients[5] += ((QuadraticDrag) force).getCoefficient();
+            } else if (force instanceof Thrust) {
+                coefficients[6] += ((Thrust) force).getMagnitude();
+            } else {
+                known = false;
+            }
+        }
+        coefficients[3] = particle.getParticle().getMass();
+        unsupported = !known;
+        Scheme scheme = kind.scheme();
+        if (scheme == null || !known) {
+            return;
+        }
+        if (stepper != null && scheme == stepperScheme
+                && java.util.Arrays.equals(coefficients, modelCoefficients)) {
+            return;
+        }
+        // a change of the forces: a user's event, not a step's, so it may allocate
+        System.arraycopy(coefficients, 0, modelCoefficients, 0, coefficients.length);
+        model = new ForceModel(new double[] {coefficients[0], coefficients[1],
+            coefficients[2]}, coefficients[3], coefficients[4], coefficients[5],
+                coefficients[6]);
+        stepper = scheme.create(model);
+        stepperScheme = scheme;
+    }
+
+    /** Note both errors after a step, while the lane and the exact path fly. */
+    private void noteErrors() {
+        if (exact.hasLanded()) {
+            return;
+        }
+        double ex = exact.getPosition(0);
+        double ey = exact.getPosition(1);
+        laneDx = state.position[0] - ex;
+        laneDy = state.position[1] - ey;
+        Vector3f main = followed.getParticle().position;
+        if (kind == Kind.SLIDE && !followed.hasLanded()) {
+            slideDifference = main.distance(slide.position);
+        }
+        if (!followed.hasLanded()) {
+            followedDx = main.x - ex;
+            followedDy = main.y - ey;
+        }
+        hasErrors = true;
+    }
+
+    private void appendCost(StringBuilder text) {
+        double nanos = costNanos[kind.ordinal()];
+        if (Double.isNaN(nanos)) {
+            text.append("   cost: measuring");
+            return;
+        }
+        TextFormat.appendFixed(text.append("   "), nanos, 0).append(" ns");
+        if (kind == Kind.SLIDE) {
+            TextFormat.appendFixed(text.append(", "), costBytes[kind.ordinal()], 0)
+                    .append(" B");
+        }
+        text.append(" per step (measured on this machine)");
+    }
+
+    private void appendSeenError(StringBuilder text) {
+        text.append("Seen error");
+        if (particle.hasLanded()) {
+            text.append(" at landing");
+        }
+        text.append(" (visible: 1 px or 1 radius):  ");
+        if (blewUp) {
+            text.append("the lane's step blew up (h beyond its stability limit);  ");
+        } else if (unsupported && kind != Kind.SLIDE) {
+            text.append("these forces are not among the report's models;  ");
+        } else {
+            appendError(text.append("lane "), laneDx, laneDy, true).append(";  ");
+        }
+        // the followed sphere, stepped by the shared integrator (its own line has the metres)
+        appendError(text.append("shared "), followedDx, followedDy, false).append('\n');
+    }
+
+    private StringBuilder appendError(StringBuilder text, double dx, double dy,
+            boolean withMetres) {
+        if (!hasErrors) {
+            return text.append("-");
+        }
+        double metres = Math.hypot(dx, dy);
+        PlaneView view = demo.getPlaneView();
+        double pixels = ScreenError.pixels(view, dx, dy);
+        double radii = ScreenError.radii(metres, radiusMetres);
+        if (withMetres) {
+            TextFormat.appendFixed(text, metres, 4).append(" m, ");
+        }
+        TextFormat.appendFixed(text, pixels, 2).append(" px, ");
+        TextFormat.appendFixed(text, radii, 2).append(" radii: ");
+        return text.append(ScreenError.isVisible(pixels, radii) ? "visible" : "invisible");
+    }
+
+    /** Start measuring the cost of the lane now, once per kind, on a background thread. */
+    private void measureCostOnce() {
+        int index = kind.ordinal();
+        if (costAsked[index] || (kind.scheme() != null && model == null)) {
+            return;
+        }
+        costAsked[index] = true;
+        Kind measured = kind;
+        ForceModel forces = model;
+        float mass = particle.getParticle().getMass();
+        particle.copyLaunchPosition(scratchPosition);
+        particle.copyLaunchVelocity(scratchVelocity);
+        Vector3f launchPosition = scratchPosition.clone();
+        Vector3f launchVelocity = scratchVelocity.clone();
+        float stepSeconds = demo.getClock().getStepSeconds();
+        Thread thread = new Thread(() -> measure(measured, forces, launchPosition,
+                launchVelocity, mass, stepSeconds), "lane cost " + measured.id());
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** The meter's run: the lane's method alone, from the launch, 64 steps a call. */
+    private void measure(Kind measured, ForceModel forces, Vector3f launchPosition,
+            Vector3f launchVelocity, float mass, float stepSeconds) {
+        CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.QUICK));
+        CostMeter.Measurement result;
+        if (measured == Kind.SLIDE) {
+            SlideCode code = slideFactory.get();
+            result = meter.measure(units -> {
+                code.start(launchPosition, launchVelocity, mass);
+                for (int n = 0; n < units; ++n) {
+                    code.update(stepSeconds);
+                }
+                return code.position;
+            }, COST_STEPS);
+        } else {
+            Stepper alone = measured.scheme().create(forces);
+            MotionState launchState = new MotionState(launchPosition.x, launchPosition.y,
+                    launchVelocity.x, launchVelocity.y);
+            MotionState work = new MotionState();
+            result = meter.measure(units -> {
+                work.set(launchState);
+                alone.advance(work, stepSeconds, units);
+                return work;
+            }, COST_STEPS);
+        }
+        costBytes[measured.ordinal()] = result.bytesPerUnit();
+        costNanos[measured.ordinal()] = result.nanosPerUnit();
+    }
+
+    /** The lane's state for the replay ring. */
+    private StateRecord record() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return STATE_INTS;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putBoolean(needsStart);
+                slab.putBoolean(blewUp);
+                for (int i = 0; i < 3; ++i) {
+                    slab.putDouble(state.position[i]);
+                    slab.putDouble(state.velocity[i]);
+                }
+                slab.putVector(slide.position);
+                slab.putVector(slide.velocity);
+                exact.writeState(pathState);
+                for (int i = 0; i < pathState.length; ++i) {
+                    slab.putDouble(pathState[i]);
+                }
+                slab.putDouble(laneDx);
+                slab.putDouble(laneDy);
+                slab.putDouble(followedDx);
+                slab.putDouble(followedDy);
+                slab.putDouble(slideDifference);
+                slab.putBoolean(hasErrors);
+                slab.putBoolean(unsupported);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                needsStart = slab.getBoolean();
+                blewUp = slab.getBoolean();
+                for (int i = 0; i < 3; ++i) {
+                    state.position[i] = slab.getDouble();
+                    state.velocity[i] = slab.getDouble();
+                }
+                slab.getVector(slide.position);
+                slab.getVector(slide.velocity);
+                for (int i = 0; i < pathState.length; ++i) {
+                    pathState[i] = slab.getDouble();
+                }
+                exact.readState(pathState);
+                laneDx = slab.getDouble();
+                laneDy = slab.getDouble();
+                followedDx = slab.getDouble();
+                followedDy = slab.getDouble();
+                slideDifference = slab.getDouble();
+                hasErrors = slab.getBoolean();
+                unsupported = slab.getBoolean();
+            }
+        };
+    }
+}

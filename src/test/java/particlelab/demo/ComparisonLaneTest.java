@@ -1,0 +1,254 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import particlelab.accuracy.ForceModel;
+import particlelab.accuracy.LectureStyleParticle;
+import particlelab.accuracy.MotionState;
+import particlelab.accuracy.Stepper;
+import particlelab.lecture.DragDemo;
+import particlelab.lecture.GravitationalPullDemo;
+import particlelab.lecture.ThrustDemo;
+import particlelab.lecture.UniformMotionDemo;
+import particlelab.physics.Particle;
+
+/**
+ * The comparison lane of the free-flight demos, in plain JUnit: the slide's listing against
+ * the shared integrator (bit for bit where it is the same arithmetic), each stepper lane
+ * against the report's stepper run alone on the same case (bit for bit), and the readouts.
+ */
+class ComparisonLaneTest {
+
+    private static final float H = 1f / 60f;
+    /** More steps than any of these flights takes to land at the default launch. */
+    private static final int MAX_STEPS = 600;
+
+    /** Choose a lane as {@code --set lane=...} does, then launch. */
+    private static void choose(DemoState demo, ComparisonLane.Kind kind) {
+        demo.getParameters().set(ComparisonLane.PARAMETER, kind.ordinal());
+        demo.restart();
+    }
+
+    private static void assertSameBits(Vector3f expected, Vector3f actual, String what) {
+        for (int i = 0; i < 3; ++i) {
+            assertEquals(Float.floatToIntBits(expected.get(i)), Float.floatToIntBits(actual.get(i)),
+                    what + ", component " + i + ": " + expected + " vs " + actual);
+        }
+    }
+
+    /**
+     * Step a demo with the slide lane and compare the slide code's P and V with the followed
+     * sphere's after every step, bit for bit, until the sphere lands.
+     */
+    private static int assertSlideMatchesShared(DemoState demo, ComparisonLane lane,
+            DemoParticle followed) {
+        choose(demo, ComparisonLane.Kind.SLIDE);
+        int steps = 0;
+        while (!followed.hasLanded() && steps < MAX_STEPS) {
+            demo.advancePhysics(H);
+            ++steps;
+            if (followed.hasLanded()) {
+                break;
+            }
+            Particle shared = followed.getParticle();
+            assertSameBits(shared.position, lane.getSlideCode().position, "P at step " + steps);
+            assertSameBits(shared.velocity, lane.getSlideCode().velocity, "V at step " + steps);
+        }
+        return steps;
+    }
+
+    @Test
+    void uniformSlideCodeIsTheSharedStepBitForBit() {
+        // P + h·V in both: the same float operations in the same order.
+        UniformMotionDemo demo = new UniformMotionDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.SLIDE);
+        DemoParticle sphere = demo.getParticles().get(0);
+        for (int n = 1; n <= 300; ++n) {
+            demo.advancePhysics(H);
+            if (demo.getClock().getSimulatedSeconds() < H / 2) {
+                // the sphere left the view and both started over
+                continue;
+            }
+            assertSameBits(sphere.getParticle().position, lane.getSlideCode().position,
+                    "P at step " + n);
+        }
+    }
+
+    @Test
+    void pullSlideCodeIsTheSharedStepBitForBit() {
+        // V + h·g, then P + h·V: the same float operations; a = g + 0/m is g exactly.
+        GravitationalPullDemo demo = new GravitationalPullDemo();
+        int steps = assertSlideMatchesShared(demo, demo.getLane(), demo.getParticles().get(0));
+        assertTrue(steps > 100, "flew " + steps + " steps");
+    }
+
+    @Test
+    void linearDragSlideCodeDiffersFromTheSharedStepOnlyByRoundOff() {
+        // Not bit for bit: the shared step folds the drag into V·(1 − h·b/m) + h·g
+        // (FoldedForces), the slide computes V + h·(g + (−b·V)/m): the same real number,
+        // rounded differently (one ulp at the first step already). Over a flight of under
+        // 200 steps, 1e-5 m is far above that round-off (~200 steps × 6e-8 of ~10 m) and
+        // far below any error of the method (~0.1 m).
+        DragDemo demo = new DragDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.SLIDE);
+        DemoParticle linear = demo.getParticles().get(1);
+        double largest = 0.0;
+        boolean anyDifference = false;
+        for (int n = 0; n < MAX_STEPS && !linear.hasLanded(); ++n) {
+            demo.advancePhysics(H);
+            if (!linear.hasLanded()) {
+                float distance = linear.getParticle().position
+                        .distance(lane.getSlideCode().position);
+                largest = Math.max(largest, distance);
+                anyDifference |= distance != 0f;
+            }
+        }
+        assertTrue(linear.hasLanded());
+        assertTrue(anyDifference, "the two roundings never differed");
+        assertTrue(largest < 1e-5, "slide vs shared: " + largest + " m");
+    }
+
+    @Test
+    void linearDragSlideCodeIsTheBenchmarksLectureStyle() {
+        DragDemo demo = new DragDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.SLIDE);
+        LectureStyleParticle style = new LectureStyleParticle(Vector3f.ZERO,
+                new Vector3f(10f, 10f, 0f), 1f);
+        Vector3f g = new Vector3f(0f, -9.8f, 0f);
+        for (int n = 1; n <= 90; ++n) {
+            demo.advancePhysics(H);
+            style.step(g, DragDemo.LINEAR_B, H);
+            assertSameBits(style.position, lane.getSlideCode().position, "P at step " + n);
+        }
+    }
+
+    @Test
+    void thrustSlideCodeDiffersFromTheSharedStepOnlyByRoundOff() {
+        // The slide's normalize() multiplies by 1/|V|, the shared thrust divides by |V| and
+        // sums the forces in another order: a few float ulps per step. Over a flight of
+        // under 200 steps, a relative 1e-6 of P's size (~10 m) is far above that round-off
+        // (~200 steps × 6e-8 relative) and far below any error of the method (~0.1 m).
+        ThrustDemo demo = new ThrustDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.SLIDE);
+        DemoParticle thruster = demo.getParticles().get(1);
+        double largest = 0.0;
+        for (int n = 0; n < MAX_STEPS && !thruster.hasLanded(); ++n) {
+            demo.advancePhysics(H);
+            if (!thruster.hasLanded()) {
+                largest = Math.max(largest, thruster.getParticle().position
+                        .distance(lane.getSlideCode().position));
+            }
+        }
+        assertTrue(thruster.hasLanded());
+        assertTrue(largest < 1e-5, "slide vs shared: " + largest + " m");
+    }
+
+    /** The drag demo's linear sphere as the report models it: g, m = 1 kg, b. */
+    private static ForceModel dragModel() {
+        return new ForceModel(new double[] {0.0, -9.8f, 0.0}, 1.0, DragDemo.LINEAR_B, 0.0,
+                0.0);
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = ComparisonLane.Kind.class, names = {"EULER", "SEMI", "VERLET",
+        "MIDPOINT", "RK4"})
+    void eachStepperLaneIsTheReportsStepperBitForBit(ComparisonLane.Kind kind) {
+        DragDemo demo = new DragDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, kind);
+        Stepper alone = kind.scheme().create(dragModel());
+        MotionState expected = new MotionState(0.0, 0.0, 10.0, 10.0);
+        int steps = 0;
+        while (!lane.getParticle().hasLanded() && steps < MAX_STEPS) {
+            demo.advancePhysics(H);
+            ++steps;
+            alone.step(expected, H);
+            for (int i = 0; i < 3; ++i) {
+                assertEquals(Double.doubleToLongBits(expected.position[i]),
+                        Double.doubleToLongBits(lane.getState().position[i]),
+                        kind + " P[" + i + "] at step " + steps);
+                assertEquals(Double.doubleToLongBits(expected.velocity[i]),
+                        Double.doubleToLongBits(lane.getState().velocity[i]),
+                        kind + " V[" + i + "] at step " + steps);
+            }
+        }
+        assertTrue(lane.getParticle().hasLanded(), kind + " landed after " + steps + " steps");
+    }
+
+    @Test
+    void semiLaneFliesWithTheFollowedSphereAndItsSphereFollowsTheLane() {
+        // The report's semi-implicit stepper is the shared integrator: the lane's state is
+        // the linear sphere's, bit for bit; the lane's drawn sphere is carried there by the
+        // world's drift step, to within float round-off of positions up to ~10 m (1e-5 m).
+        DragDemo demo = new DragDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.SEMI);
+        DemoParticle linear = demo.getParticles().get(1);
+        for (int n = 1; n <= 90; ++n) {
+            // the flight lands after 97 steps; the ground then moves the sphere, not a step
+            demo.advancePhysics(H);
+            Vector3f shared = linear.getParticle().position;
+            for (int i = 0; i < 3; ++i) {
+                assertEquals(shared.get(i), lane.getState().position[i], 0.0, "step " + n);
+            }
+            assertTrue(lane.getParticle().getParticle().position.distance(shared) < 1e-5f,
+                    "drawn lane at step " + n);
+        }
+    }
+
+    @Test
+    void rk4IsInvisibleWhereTheSharedStepIsNot() {
+        // At the last step before landing, RK4's global error ~ (k·h)⁴ of the flight's
+        // metres is below 1e-6 m; the shared Euler step's is ~ g·h·t/2 ≈ 0.1 m. At the
+        // headless 1 px per metre, 0.1 m is a tenth of a pixel, but a third of a radius.
+        DragDemo demo = new DragDemo();
+        ComparisonLane lane = demo.getLane();
+        choose(demo, ComparisonLane.Kind.RK4);
+        for (int n = 0; n < MAX_STEPS && !lane.getParticle().hasLanded(); ++n) {
+            demo.advancePhysics(H);
+        }
+        assertTrue(lane.getParticle().hasLanded());
+        assertTrue(lane.getErrorMetres() < 1e-6, "RK4 error " + lane.getErrorMetres());
+        assertTrue(lane.getFollowedErrorMetres() > 0.02,
+                "Euler error " + lane.getFollowedErrorMetres());
+        StringBuilder text = new StringBuilder();
+        ((DemoState) demo).writeHudLines(text);
+        String hud = text.toString();
+        assertTrue(hud.contains("Lane RK4 (L)"), hud);
+        assertTrue(hud.contains("at landing"), hud);
+        assertTrue(hud.contains("lane 0.0000 m, 0.00 px, 0.00 radii: invisible;"), hud);
+    }
+
+    @Test
+    void offLeavesTheHudAloneAndTheLaneKeyCyclesEveryLane() {
+        GravitationalPullDemo demo = new GravitationalPullDemo();
+        demo.advancePhysics(H);
+        assertEquals(ComparisonLane.Kind.OFF, demo.getLane().getKind());
+        StringBuilder text = new StringBuilder();
+        ((DemoState) demo).writeHudLines(text);
+        assertEquals("", text.toString());
+        assertFalse(demo.formatHud(new StringBuilder()).toString().contains("comparison"));
+        KeyBinding key = null;
+        for (KeyBinding binding : demo.getBindings()) {
+            if (binding.getKeyLabel().equals("L")) {
+                key = binding;
+            }
+        }
+        assertTrue(key != null, "L is bound");
+        for (ComparisonLane.Kind expected : ComparisonLane.Kind.values()) {
+            assertEquals(expected, demo.getLane().getKind());
+            key.press(0);
+        }
+        assertEquals(ComparisonLane.Kind.OFF, demo.getLane().getKind());
+    }
+}
