@@ -31,16 +31,6 @@ final class PackedStep {
      */
     private static final int BATCH_BLOCK = 1024;
     /**
-     * The system property that forces the scalar check's form, for tests and benchmarks:
-     * {@value #CHECK_TREE} or {@value #CHECK_FUSED}; unset, the JDK decides
-     * ({@link #chooseFusedCheck}).
-     */
-    static final String CHECK_PROPERTY = "particlelab.check";
-    /** {@link #CHECK_PROPERTY}'s value for the tree of sums. */
-    static final String CHECK_TREE = "tree";
-    /** {@link #CHECK_PROPERTY}'s value for the fused AND. */
-    static final String CHECK_FUSED = "fused";
-    /**
      * The first JDK feature release on which the fused check is the default, if any measured
      * win says so: {@code docs/speed.md} ("The finiteness check on JDK 17 and JDK 25") gives
      * the numbers. {@link Integer#MAX_VALUE} keeps the tree on every JDK.
@@ -48,10 +38,13 @@ final class PackedStep {
     static final int FUSED_CHECK_FROM_JDK = 25;
     /**
      * True if this JVM's scalar check is the fused AND, false for the tree of sums: chosen
-     * once, at class initialisation, from {@link #CHECK_PROPERTY} and the running JDK.
+     * once, at class initialisation, from the system property {@code particlelab.check}
+     * ({@code tree} or {@code fused}: tests and benchmarks force a form with it) and the
+     * running JDK ({@link #chooseFusedCheck}). (The property's name and values are literals:
+     * this class keeps no static field but primitive constants.)
      */
     static final boolean FUSED_CHECK = chooseFusedCheckOrWarn(
-            System.getProperty(CHECK_PROPERTY), Runtime.version().feature());
+            System.getProperty("particlelab.check"), Runtime.version().feature());
 
     private final FoldedForces folded;
     /** The integrator whose careful step the one-by-one form takes. */
@@ -110,24 +103,24 @@ final class PackedStep {
     /**
      * Choose the scalar check's form.
      *
-     * @param property the value of {@link #CHECK_PROPERTY} (null if unset)
+     * @param property the value of the property {@code particlelab.check} (null if unset)
      * @param jdkFeature the running JDK's feature release (17, 25, ...)
      * @return true for the fused AND, false for the tree of sums
-     * @throws IllegalArgumentException if the property is neither {@value #CHECK_TREE} nor
-     *     {@value #CHECK_FUSED}
+     * @throws IllegalArgumentException if the property is neither {@code tree} nor
+     *     {@code fused}
      */
     static boolean chooseFusedCheck(String property, int jdkFeature) {
         if (property == null || property.isEmpty()) {
             return jdkFeature >= FUSED_CHECK_FROM_JDK;
         }
-        if (property.equals(CHECK_TREE)) {
+        if (property.equals("tree")) {
             return false;
         }
-        if (property.equals(CHECK_FUSED)) {
+        if (property.equals("fused")) {
             return true;
         }
-        throw new IllegalArgumentException("-D" + CHECK_PROPERTY + " must be " + CHECK_TREE
-                + " or " + CHECK_FUSED + ", but was " + property);
+        throw new IllegalArgumentException("-Dparticlelab.check must be tree or fused, but was "
+                + property);
     }
 
     /**

@@ -130,9 +130,9 @@ class PackedCheckFormsTest {
                 PackedStep.chooseFusedCheck(null, 25));
         assertEquals(PackedStep.FUSED_CHECK_FROM_JDK <= 25,
                 PackedStep.chooseFusedCheck("", 25));
-        assertFalse(PackedStep.chooseFusedCheck(PackedStep.CHECK_TREE, 25));
-        assertTrue(PackedStep.chooseFusedCheck(PackedStep.CHECK_FUSED, 17));
-        assertEquals(PackedStep.chooseFusedCheck(System.getProperty(PackedStep.CHECK_PROPERTY),
+        assertFalse(PackedStep.chooseFusedCheck("tree", 25));
+        assertTrue(PackedStep.chooseFusedCheck("fused", 17));
+        assertEquals(PackedStep.chooseFusedCheck(System.getProperty("particlelab.check"),
                 Runtime.version().feature()), PackedStep.FUSED_CHECK);
     }
 
