@@ -178,8 +178,10 @@ public final class CostMeter {
 
     /** {@link #measureOnceCompiled}'s longest wait for an allocation-free call (ms). */
     static final long MAX_COMPILE_WAIT_MILLIS = 5_000L;
-    /** A round reads its clock after at least this many units (see {@link #timeRound}). */
+    /** A round reads its clock after at most this many units (see {@link #timeRound}). */
     static final int UNITS_PER_CLOCK_READ = 20_000;
+    /** A round reads its clock about this many times (see {@link #timeRound}). */
+    static final int READS_PER_ROUND = 32;
 
     private final long warmupNanos;
     private final long roundNanos;
@@ -326,24 +328,30 @@ public final class CostMeter {
     }
 
     /**
-     * One round: calls until the round's budget is spent, the clock read once per
-     * {@value #UNITS_PER_CLOCK_READ} units or more (reading the thread's CPU clock costs
-     * a fraction of a microsecond, as much as a call of a thousand particle-steps).
+     * One round: calls until the round's budget is spent. Reading the thread's CPU clock
+     * costs a fraction of a microsecond, as much as a call of a thousand particle-steps, so
+     * after the first call (timed alone) the clock is read once per batch of calls: as many
+     * as take about {@value #READS_PER_ROUND}th of the round by the first call's time, and at
+     * most {@value #UNITS_PER_CLOCK_READ} units. A round overruns its budget by at most one
+     * batch.
      *
      * @return the time per unit (ns); {@link #lastRoundUnits} says how many units ran
      */
     private double timeRound(Workload workload, int unitsPerCall) {
-        int callsPerRead = Math.max(1, UNITS_PER_CLOCK_READ / unitsPerCall);
-        long units = 0;
         long roundStart = clock.nanos();
-        long elapsed;
-        do {
+        sink += System.identityHashCode(workload.run(unitsPerCall));
+        long units = unitsPerCall;
+        long elapsed = clock.nanos() - roundStart;
+        int mostCalls = Math.max(1, UNITS_PER_CLOCK_READ / unitsPerCall);
+        int callsPerRead = elapsed <= 0 ? mostCalls
+                : (int) Math.max(1, Math.min(mostCalls, roundNanos / READS_PER_ROUND / elapsed));
+        while (elapsed < roundNanos) {
             for (int i = 0; i < callsPerRead; ++i) {
                 sink += System.identityHashCode(workload.run(unitsPerCall));
             }
             units += (long) callsPerRead * unitsPerCall;
             elapsed = clock.nanos() - roundStart;
-        } while (elapsed < roundNanos);
+        }
         lastRoundUnits = units;
         return (double) elapsed / units;
     }

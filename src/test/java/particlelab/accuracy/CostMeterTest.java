@@ -100,15 +100,24 @@ class CostMeterTest {
     }
 
     @Test
-    void shortCallsShareOneClockRead() {
+    void shortCallsShareOneClockReadAndLongOnesDoNot() {
         FakeClock clock = new FakeClock();
         List<String> log = new ArrayList<>();
-        // calls of 1000 units: twenty calls between two reads of the clock, so a round of
-        // calls of 1 ms each takes twenty of them (20 ms ≥ 2 ms)
-        new CostMeter(TINY, clock).measure(scripted(clock, "w", log, 1), 1000);
-        int perRead = CostMeter.UNITS_PER_CLOCK_READ / 1000;
-        // warm-up: 5 calls (5 ms), then 3 rounds of one read each
-        assertEquals(5 + 3 * perRead, log.size());
+        // calls of 1000 units taking 1 µs: the warm-up is 5000 calls (5 ms); each round times
+        // its first call alone, then batches of UNITS_PER_CLOCK_READ / 1000 = 20 calls (20 µs,
+        // less than a 32nd of the 2 ms round) until 2 ms: 1 + 100 · 20 calls
+        CostMeter.Workload short1 = units -> {
+            clock.now += 1000;
+            log.add("s");
+            return null;
+        };
+        new CostMeter(TINY, clock).measure(short1, 1000);
+        assertEquals(5000 + 3 * (1 + 100 * 20), log.size());
+        // calls of 1000 units taking 1 ms: the clock is read after every call, so a round of
+        // 2 ms is two calls, not twenty
+        log.clear();
+        new CostMeter(TINY, clock).measure(scripted(clock, "l", log, 1), 1000);
+        assertEquals(5 + 3 * 2, log.size());
     }
 
     @Test
