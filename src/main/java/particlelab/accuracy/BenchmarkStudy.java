@@ -171,6 +171,7 @@ final class BenchmarkStudy {
     }
 
     private static void add(BenchmarkTable table, String name, CostMeter.Measurement measured) {
-        table.add(new BenchmarkTable.Row(name, measured.nanosPerUnit(), measured.bytesPerUnit()));
+        table.add(new BenchmarkTable.Row(name, measured.nanosPerUnit(), measured.spread().min(),
+                measured.spread().max(), measured.bytesPerUnit()));
     }
 }

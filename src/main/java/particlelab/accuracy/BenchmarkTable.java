@@ -61,15 +61,34 @@ public final class BenchmarkTable {
         private final String name;
         private final double nanosPerParticleStep;
         private final double bytesPerStep;
+        /** The least and largest time per particle-step over the rounds (ns; NaN: unknown). */
+        private final double minNanos;
+        private final double maxNanos;
 
         /**
-         * Create a row.
+         * Create a row whose spread is unknown (read from a CSV: JMH's or an earlier run's).
          *
          * @param name the benchmark's name (not null, no comma)
          * @param nanosPerParticleStep the time per particle-step (in ns)
          * @param bytesPerStep the heap allocated per particle-step (in bytes; NaN if unknown)
          */
         public Row(String name, double nanosPerParticleStep, double bytesPerStep) {
+            this(name, nanosPerParticleStep, Double.NaN, Double.NaN, bytesPerStep);
+        }
+
+        /**
+         * Create a row with its spread over rounds.
+         *
+         * @param name the benchmark's name (not null, no comma)
+         * @param nanosPerParticleStep the median time per particle-step (in ns)
+         * @param minNanos the least round's time per particle-step (in ns; NaN if unknown)
+         * @param maxNanos the largest round's (in ns; NaN if unknown)
+         * @param bytesPerStep the heap allocated per particle-step (in bytes; NaN if unknown)
+         */
+        public Row(String name, double nanosPerParticleStep, double minNanos, double maxNanos,
+                double bytesPerStep) {
+            this.minNanos = minNanos;
+            this.maxNanos = maxNanos;
             if (name == null || name.indexOf(',') >= 0) {
                 throw new IllegalArgumentException(
                         "benchmark name must be text without commas, but was " + name);
@@ -104,6 +123,36 @@ public final class BenchmarkTable {
          */
         public double bytesPerStep() {
             return bytesPerStep;
+        }
+
+        /**
+         * Return the least round's time per particle-step.
+         *
+         * @return the time (in nanoseconds; NaN if the row has no spread)
+         */
+        public double minNanos() {
+            return minNanos;
+        }
+
+        /**
+         * Return the largest round's time per particle-step.
+         *
+         * @return the time (in nanoseconds; NaN if the row has no spread)
+         */
+        public double maxNanos() {
+            return maxNanos;
+        }
+
+        /**
+         * Tell whether the row's rounds spread too widely for a verdict ({@link
+         * CostMeter.Spread#exceeds}); a row without a spread (JMH's) is judged.
+         *
+         * @param bound the largest max ÷ min still judged
+         * @return true if max ÷ min exceeds the bound
+         */
+        public boolean isTooNoisy(double bound) {
+            return !Double.isNaN(minNanos) && new CostMeter.Spread(minNanos,
+                    nanosPerParticleStep, maxNanos).exceeds(bound);
         }
     }
 

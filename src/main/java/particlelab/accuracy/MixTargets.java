@@ -25,8 +25,18 @@ final class MixTargets {
     static final double PER_PARTICLE_VS_LECTURE = 5.0;
     /** Target: the batch form at most this × the primitive loop. */
     static final double BATCH_VS_PRIMITIVE = 1.5;
-    /** The particle counts at which the per-particle targets are set (1 and 1000 objects). */
+    /**
+     * The particle counts at which the lecture-style target is set (1 and 1000 objects: the
+     * lecture style against {@code step(Particle, h)} of the same N).
+     */
     static final List<Integer> PER_PARTICLE_COUNTS = List.of(1, 1000);
+    /**
+     * The one count at which "objects ≤ 2× primitive" is judged: one particle against the
+     * one-particle primitive loop, the same chain of dependent steps. Against the bulk loop
+     * (1000 particles overlapping, vectorised) a step through an object cannot get near, and
+     * against the one-particle loop 1000 objects would compare two different workloads.
+     */
+    static final int OBJECTS_VS_PRIMITIVE_COUNT = 1;
     /** Allocation below this (bytes per particle-step) counts as none: counter granularity. */
     static final double NO_BYTES = 0.5;
 
@@ -75,16 +85,25 @@ final class MixTargets {
                 + "hand-written primitive loop's for the same mix and N (1 = as fast; less "
                 + "than 1 = faster than the loop), \"lecture ÷ objects\" is how many times "
                 + "faster `step(Particle, h)` is than the lecture's allocating style. The "
-                + "targets: one particle through `step(Particle, h)` (N = ")
-                .append(countList()).append(") at most ").append(num(PER_PARTICLE_VS_PRIMITIVE))
-                .append("× the primitive loop and at least ").append(num(PER_PARTICLE_VS_LECTURE))
-                .append("× faster than the lecture style; the batch `stepPacked` at most ")
+                + "targets: one particle through `step(Particle, h)` at most ")
+                .append(num(PER_PARTICLE_VS_PRIMITIVE)).append("× the one-particle primitive "
+                + "loop (judged at N = ").append(OBJECTS_VS_PRIMITIVE_COUNT).append(" only: "
+                + "the same chain of dependent steps, written by hand; at N = 1000 the "
+                + "primitive loop overlaps the particles and vectorises, a different "
+                + "workload) and at least ").append(num(PER_PARTICLE_VS_LECTURE))
+                .append("× faster than the lecture style (N = ").append(countList())
+                .append("); the batch `stepPacked` at most ")
                 .append(num(BATCH_VS_PRIMITIVE)).append("× the primitive loop at every N; both "
                 + "0 bytes per step. \"Vector API batch\" is `stepPacked` in a JVM started "
                 + "with `--add-modules=jdk.incubator.vector` (gravity and linear drag only; "
                 + "the app leaves it off unless asked, see docs/speed.md); \"batch\" is the "
                 + "form the app runs by default. \"—\": the target is not set at that N or "
-                + "the row was not measured.\n\n");
+                + "the row was not measured. \"").append(SpeedSpreads.TOO_NOISY).append("\": "
+                + "a path the verdict needs spread by more than ")
+                .append(num(SpeedSpreads.SPREAD_BOUND)).append("× (max ÷ min) over its "
+                + "rounds. These ratios divide medians timed one after another; \"Side by "
+                + "side, with spreads\" below takes the same targets' ratios within rotating "
+                + "rounds.\n\n");
         md.append("| mix | N | primitive loop (ns) | lecture ÷ primitive | objects ÷ primitive "
                 + "| batch ÷ primitive | Vector API batch ÷ primitive | lecture ÷ objects "
                 + "| bytes/step objects, batch | objects ≤ ")
@@ -114,11 +133,16 @@ final class MixTargets {
                     continue;
                 }
                 String where = mix.id() + " N = " + count;
+                boolean noisy = noisy(prim) || noisy(obj);
+                boolean lectureNoisy = noisy || noisy(lec);
+                boolean batchNoisy = noisy(prim) || noisy(bat);
+                boolean vectorNoisy = noisy(prim) || noisy(vec);
                 double objects = ratio(obj, prim);
                 double overLecture = ratio(lec, obj);
                 double batched = ratio(bat, prim);
                 double vectorised = ratio(vec, prim);
                 boolean perParticleSet = PER_PARTICLE_COUNTS.contains(count);
+                boolean objectsSet = count == OBJECTS_VS_PRIMITIVE_COUNT;
                 md.append("| ").append(mix.id()).append(" | ").append(count).append(" | ")
                         .append(fix(prim.nanosPerParticleStep(), 3)).append(" | ")
                         .append(times(ratio(lec, prim))).append(" | ")
@@ -128,16 +152,18 @@ final class MixTargets {
                         .append(times(overLecture)).append(" | ")
                         .append(fix(obj.bytesPerStep(), 1)).append(", ")
                         .append(bat == null ? "—" : fix(bat.bytesPerStep(), 1)).append(" | ")
-                        .append(perParticleSet ? perParticle.judge(
-                                objects <= PER_PARTICLE_VS_PRIMITIVE, objects, where) : "—")
+                        .append(objectsSet ? perParticle.judge(
+                                objects <= PER_PARTICLE_VS_PRIMITIVE, objects, where, noisy)
+                                : "—")
                         .append(" | ")
                         .append(perParticleSet && lec != null ? lecture.judge(
-                                overLecture >= PER_PARTICLE_VS_LECTURE, overLecture, where)
-                                : "—").append(" | ")
+                                overLecture >= PER_PARTICLE_VS_LECTURE, overLecture, where,
+                                lectureNoisy) : "—").append(" | ")
                         .append(bat != null ? batch.judge(batched <= BATCH_VS_PRIMITIVE,
-                                batched, where) : "—").append(" | ")
+                                batched, where, batchNoisy) : "—").append(" | ")
                         .append(vec != null ? vectorBatch.judge(
-                                vectorised <= BATCH_VS_PRIMITIVE, vectorised, where) : "—")
+                                vectorised <= BATCH_VS_PRIMITIVE, vectorised, where,
+                                vectorNoisy) : "—")
                         .append(" | ");
                 boolean measured = !Double.isNaN(obj.bytesPerStep())
                         && (bat == null || !Double.isNaN(bat.bytesPerStep()));
@@ -145,7 +171,8 @@ final class MixTargets {
                         bat == null ? 0.0 : bat.bytesPerStep()),
                         vec == null || Double.isNaN(vec.bytesPerStep()) ? 0.0
                                 : vec.bytesPerStep());
-                md.append(measured ? bytes.judge(most < NO_BYTES, most, where) : "unknown")
+                md.append(measured ? bytes.judge(most < NO_BYTES, most, where, false)
+                        : "unknown")
                         .append(" |\n");
             }
         }
@@ -246,6 +273,11 @@ final class MixTargets {
         return a.nanosPerParticleStep() / b.nanosPerParticleStep();
     }
 
+    /** True if a row's rounds spread beyond the report's bound (a missing row is not). */
+    private static boolean noisy(BenchmarkTable.Row row) {
+        return row != null && row.isTooNoisy(SpeedSpreads.SPREAD_BOUND);
+    }
+
     private static String times(double ratio) {
         return Double.isNaN(ratio) ? "—" : fix(ratio, 2) + "×";
     }
@@ -271,15 +303,21 @@ final class MixTargets {
     private static final class Tally {
         private int met;
         private int judged;
+        /** Rows left unjudged: their rounds spread too widely. */
+        private int noisy;
         private double largest = Double.NEGATIVE_INFINITY;
         private String largestWhere;
         private double smallest = Double.POSITIVE_INFINITY;
         private String smallestWhere;
 
-        /** Record one verdict; returns the cell's text. */
-        String judge(boolean ok, double value, String where) {
+        /** Record one verdict (none for a noisy row); returns the cell's text. */
+        String judge(boolean ok, double value, String where, boolean tooNoisy) {
             if (Double.isNaN(value)) {
                 return "—";
+            }
+            if (tooNoisy) {
+                ++noisy;
+                return SpeedSpreads.TOO_NOISY;
             }
             ++judged;
             if (ok) {
@@ -298,13 +336,14 @@ final class MixTargets {
 
         /** "3 of 8 (worst 2.41× at linear N = 1)"; the worst is the largest or smallest. */
         String summary(boolean largerIsWorse, String unit) {
+            String unjudged = noisy == 0 ? "" : ", " + noisy + " too noisy to judge";
             if (judged == 0) {
-                return "(not measured)";
+                return noisy == 0 ? "(not measured)" : "(none judged" + unjudged + ")";
             }
             double value = largerIsWorse ? largest : smallest;
             String where = largerIsWorse ? largestWhere : smallestWhere;
             return met + " of " + judged + " (worst " + fix(value, 2) + unit + " at " + where
-                    + ")";
+                    + unjudged + ")";
         }
     }
 }

@@ -2,8 +2,8 @@ package particlelab.accuracy;
 
 /**
  * How large a report to make: which step sizes, how many drag rates, particle counts, and how
- * long each timing loop runs. Three sizes: full (a few minutes on 2 cores), quick (well under a
- * minute) and tiny (seconds, for tests and smoke checks).
+ * long each timing loop runs. Three sizes: full (a few minutes on 2 cores), quick (a minute or
+ * more) and tiny (seconds, for tests and smoke checks).
  */
 public final class ReportConfig {
 

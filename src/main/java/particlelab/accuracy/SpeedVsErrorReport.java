@@ -94,10 +94,14 @@ public final class SpeedVsErrorReport {
         CostMeter meter = new CostMeter(config);
         ProgressBar progress = new ProgressBar(progressOut, WorkPrecisionStudy.units()
                 + StabilityStudy.units(config)
-                + (jmh == null ? BenchmarkStudy.units(config) : 0) + 3, interactive);
+                + (jmh == null ? BenchmarkStudy.units(config) : 0) + 4, interactive);
         // Benchmarks first, while the JIT has seen only their scene (gravity + linear drag):
         // later sweeps through every force type make the integrator's force calls megamorphic.
         BenchmarkTable benchmarks = jmh != null ? jmh : BenchmarkStudy.run(config, meter, progress);
+        progress.phase("benchmarks: ratios side by side, jME's ParticleEmitter");
+        StringBuilder spreads = new StringBuilder();
+        SpeedSpreads.append(spreads, config, meter);
+        progress.advance();
         WorkPrecisionStudy precision = WorkPrecisionStudy.run(config, meter, progress);
         StabilityStudy stability = StabilityStudy.run(config, progress);
         progress.phase("aiming and frame hitches");
@@ -108,7 +112,7 @@ public final class SpeedVsErrorReport {
         progress.phase("writing files and plots");
         writeCsvFiles(precision, stability, benchmarks, aiming, hitches);
         writePlots(precision, stability, benchmarks, aiming);
-        writeIndex(precision, stability, benchmarks, aiming, hitches, jmh != null);
+        writeIndex(precision, stability, benchmarks, aiming, hitches, jmh != null, spreads);
         CollisionSection.write(config, meter, folder);
         RotationSection.write(config, meter, folder);
         progress.advance();
@@ -326,8 +330,8 @@ public final class SpeedVsErrorReport {
     // ---- index.md -----------------------------------------------------------------------------
 
     private void writeIndex(WorkPrecisionStudy precision, StabilityStudy stability,
-            BenchmarkTable benchmarks, AimingStudy aiming, HitchStudy hitches, boolean fromJmh)
-            throws IOException {
+            BenchmarkTable benchmarks, AimingStudy aiming, HitchStudy hitches, boolean fromJmh,
+            CharSequence spreads) throws IOException {
         StringBuilder md = new StringBuilder();
         md.append("# Speed against error\n\n");
         md.append("Particle Lab's shared Euler integrator beside reference steppers: how far "
@@ -352,11 +356,14 @@ public final class SpeedVsErrorReport {
                 + "Semi-implicit Euler is the shared `ParticleIntegrator` itself, run in float "
                 + "on jME vectors exactly as the demos run it; its line goes on to smaller h "
                 + "to show where float round-off stops the error from falling.\n");
-        md.append("- Costs are timed in this one JVM, one after another (side by side), each "
-                + "after a warm-up, as the median of ").append(config.rounds())
+        md.append("- Costs are timed in this one JVM by ").append(CostMeter.clockName())
+                .append(", each after a warm-up, over ").append(config.rounds())
                 .append(" rounds of at least ").append(config.roundNanos() / 1_000_000)
-                .append(" ms; read them as ratios to each other, not as absolute numbers. "
-                + "Cost per simulated second = cost per step / h.\n");
+                .append(" ms: the tables give the median and, where it says, min–max over "
+                + "the rounds; read them as ratios to each other, not as absolute numbers. "
+                + "The ratios the targets are judged by are taken within rotating rounds "
+                + "(\"Side by side, with spreads\"). Cost per simulated second = cost per "
+                + "step / h.\n");
         if (fromJmh) {
             md.append("- `benchmarks.csv` comes from JMH (`gradle jmh`: forked JVM, warm-up "
                     + "and measured iterations, gc profiler for bytes), read from `")
@@ -372,7 +379,7 @@ public final class SpeedVsErrorReport {
         appendWorkPrecision(md, precision);
         appendOrders(md, precision);
         appendStability(md, stability);
-        appendBenchmarks(md, benchmarks, fromJmh);
+        appendBenchmarks(md, benchmarks, fromJmh, spreads);
         appendAiming(md, aiming);
         appendHitches(md, hitches);
         appendRecommendations(md, precision, stability, benchmarks, aiming, hitches);
@@ -528,7 +535,7 @@ public final class SpeedVsErrorReport {
     }
 
     private void appendBenchmarks(StringBuilder md, BenchmarkTable benchmarks,
-            boolean fromJmh) {
+            boolean fromJmh, CharSequence spreads) {
         md.append("## Benchmarks\n\n");
         BenchmarkTable.Row lecture = benchmarks.find(BenchmarkTable.LECTURE_STYLE);
         BenchmarkTable.Row primitive = benchmarks.find(BenchmarkTable.PRIMITIVE_LOOP);
@@ -539,14 +546,16 @@ public final class SpeedVsErrorReport {
                 + "steps of one particle wait for each other, so this is the latency of a "
                 + "step. The reference steppers work in double precision on plain arrays; the "
                 + "lecture style and the primitive loop in float.\n\n");
-        md.append("| benchmark | ns per particle-step | bytes per step | against lecture style "
-                + "| against primitive loop |\n|---|---|---|---|---|\n");
+        md.append("| benchmark | ns per particle-step | min–max over rounds | bytes per step "
+                + "| against lecture style | against primitive loop |\n"
+                + "|---|---|---|---|---|---|\n");
         for (BenchmarkTable.Row row : benchmarks.rows()) {
             if (row.name().startsWith("bulk/")) {
                 continue;
             }
             md.append("| ").append(row.name()).append(" | ")
                     .append(fix(row.nanosPerParticleStep(), 2)).append(" | ")
+                    .append(range(row, 2)).append(" | ")
                     .append(fix(row.bytesPerStep(), 1)).append(" | ")
                     .append(ratio(row, lecture)).append(" | ").append(ratio(row, primitive))
                     .append(" |\n");
@@ -561,8 +570,9 @@ public final class SpeedVsErrorReport {
                 + "every N. Objects holding `Vector3f`s cannot get there, so "
                 + "the integrator has a batch form over packed float arrays, "
                 + "`ParticleIntegrator.stepPacked`.\n\n");
-        md.append("| N | lecture style | Particle objects | packed batch | primitive loop "
-                + "| batch bytes/step | batch vs lecture | batch vs primitive | targets |\n"
+        md.append("| N | lecture style | Particle objects | packed batch (min–max) "
+                + "| primitive loop (min–max) | batch bytes/step | batch vs lecture "
+                + "| batch vs primitive | targets |\n"
                 + "|---|---|---|---|---|---|---|---|---|\n");
         for (int count : bulkCounts(benchmarks)) {
             BenchmarkTable.Row lec = benchmarks.find(BenchmarkTable.bulkName(
@@ -580,25 +590,34 @@ public final class SpeedVsErrorReport {
             double slower = batch.nanosPerParticleStep() / prim.nanosPerParticleStep();
             boolean met = faster >= TARGET_VS_LECTURE && slower <= TARGET_VS_PRIMITIVE
                     && batch.bytesPerStep() < 0.5;
+            boolean noisy = lec.isTooNoisy(SpeedSpreads.SPREAD_BOUND)
+                    || batch.isTooNoisy(SpeedSpreads.SPREAD_BOUND)
+                    || prim.isTooNoisy(SpeedSpreads.SPREAD_BOUND);
             md.append("| ").append(count).append(" | ")
                     .append(fix(lec.nanosPerParticleStep(), 2)).append(" | ")
                     .append(fix(obj.nanosPerParticleStep(), 2)).append(" | ")
-                    .append(fix(batch.nanosPerParticleStep(), 3)).append(" | ")
-                    .append(fix(prim.nanosPerParticleStep(), 3)).append(" | ")
+                    .append(fix(batch.nanosPerParticleStep(), 3)).append(" (")
+                    .append(range(batch, 3)).append(") | ")
+                    .append(fix(prim.nanosPerParticleStep(), 3)).append(" (")
+                    .append(range(prim, 3)).append(") | ")
                     .append(fix(batch.bytesPerStep(), 2)).append(" | ")
                     .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
                             lec.nanosPerParticleStep())).append(" | ")
                     .append(SpeedRatio.describe(batch.nanosPerParticleStep(),
                             prim.nanosPerParticleStep())).append(" | ")
-                    .append(met ? "met" : "**missed**").append(" |\n");
+                    .append(noisy ? SpeedSpreads.TOO_NOISY : met ? "met" : "**missed**")
+                    .append(" |\n");
         }
         md.append("\nAll times in ns per particle-step. \"bytes/step\" is heap allocated per "
                 + "particle-step (0 = nothing; the JVM's counters round to a few bytes per "
                 + "measured round). The lecture style's time depends on the garbage "
                 + "collector's state (new vectors stored into long-lived particles), so it "
                 + "moves by several times from run to run; the allocation-free forms are "
-                + "steady.\n\n");
+                + "steady. \"targets\" says \"").append(SpeedSpreads.TOO_NOISY).append("\" "
+                + "where a row's rounds spread by more than ")
+                .append(num(SpeedSpreads.SPREAD_BOUND)).append("× (max ÷ min).\n\n");
         MixTargets.appendTable(md, benchmarks, fromJmh);
+        md.append(spreads);
         appendSubnormalLesson(md);
     }
 
@@ -1076,6 +1095,14 @@ public final class SpeedVsErrorReport {
             result[i] = counts.get(i);
         }
         return result;
+    }
+
+    /** "min–max" of a row's rounds, or "—" for a row without a spread (JMH's). */
+    static String range(BenchmarkTable.Row row, int decimals) {
+        if (Double.isNaN(row.minNanos())) {
+            return "—";
+        }
+        return fix(row.minNanos(), decimals) + "–" + fix(row.maxNanos(), decimals);
     }
 
     private static String ratio(BenchmarkTable.Row row, BenchmarkTable.Row reference) {

@@ -62,12 +62,16 @@ public final class ReportCommand {
                 .flag(SafeFiles.FORCE, "replace the report's files already in DIR: they are"
                         + " removed when the command line is accepted, before the work starts;"
                         + " links are never written through, not even with it.")
-                .flag(QUICK, "a smaller sweep, in about half a minute.")
+                .flag(QUICK, "a smaller sweep: 171 s measured on 2 cores busy with other"
+                        + " work (load average 16), less on idle ones.")
                 .flag(TINY, "the smallest sweep (a few seconds): every file, rough numbers.")
                 .value(JMH, "FILE", "take the benchmark rows from this benchmarks.csv, written"
                         + " by gradle jmh, instead of timing in-process.")
-                .note("Without " + QUICK + " or " + TINY + " the full report takes about three"
-                        + " minutes on 2 cores.")
+                .note("Without " + QUICK + " or " + TINY + " the full sweep runs: 946 s"
+                        + " measured on 2 cores busy with other work (load average 17), a few"
+                        + " minutes on idle ones;"
+                        + " it times jME's ParticleEmitter up to 10^6 particles and starts one"
+                        + " child JVM (-XX:+UseParallelGC) for the lecture style's row.")
                 .note("Exit status: 0 when written; 2 on a bad command line or a folder that"
                         + " cannot be written (checked before the work starts), with one line"
                         + " on stderr; 1 if the demos cannot run headless.");

@@ -13,7 +13,9 @@ import com.jme3.math.Vector3f;
  * <li>one by one (other forces, or h·b/m beyond the float range): each particle through the
  * integrator's careful step ({@link ParticleIntegrator#computeStep}).</li>
  * </ul>
- * Each checks that every particle is finite after the step and throws otherwise.
+ * Each checks that every particle is finite after the step and throws otherwise. The scalar
+ * check of the step by axes has two forms, chosen once per JVM ({@link #FUSED_CHECK}): the
+ * tree of sums ({@link #isSumFinite}) and the fused AND ({@link #isFusedFinite}).
  */
 final class PackedStep {
 
@@ -28,12 +30,29 @@ final class PackedStep {
      * in a core's first-level cache until their check has read them.
      */
     private static final int BATCH_BLOCK = 1024;
+    /**
+     * The first JDK feature release on which the fused check is the default, if any measured
+     * win says so: {@code docs/speed.md} ("The finiteness check on JDK 17 and JDK 25") gives
+     * the numbers. {@link Integer#MAX_VALUE} keeps the tree on every JDK.
+     */
+    static final int FUSED_CHECK_FROM_JDK = 25;
+    /**
+     * True if this JVM's scalar check is the fused AND, false for the tree of sums: chosen
+     * once, at class initialisation, from the system property {@code particlelab.check}
+     * ({@code tree} or {@code fused}: tests and benchmarks force a form with it) and the
+     * running JDK ({@link #chooseFusedCheck}). (The property's name and values are literals:
+     * this class keeps no static field but primitive constants.)
+     */
+    static final boolean FUSED_CHECK = chooseFusedCheckOrWarn(
+            System.getProperty("particlelab.check"), Runtime.version().feature());
 
     private final FoldedForces folded;
     /** The integrator whose careful step the one-by-one form takes. */
     private final ParticleIntegrator integrator;
     /** True if the step by axes runs on {@link VectorBatch}. */
     private boolean vectorBatch = VECTOR_API;
+    /** True if the scalar check is the fused AND ({@link #FUSED_CHECK} unless a test says). */
+    private boolean fusedCheck = FUSED_CHECK;
     /** Scratch for the one-by-one form: the particle being stepped ... */
     private final Particle particle = new Particle();
     /** ... its new velocity (m/s) ... */
@@ -65,6 +84,43 @@ final class PackedStep {
                     + " not");
         }
         vectorBatch = use;
+    }
+
+    /** True if the scalar check is the fused AND, false for the tree of sums. */
+    boolean isFusedCheck() {
+        return fusedCheck;
+    }
+
+    /**
+     * Choose the scalar check's form for this batch (tests: both forms on every JDK).
+     *
+     * @param fused true for the fused AND, false for the tree of sums
+     */
+    void setFusedCheck(boolean fused) {
+        fusedCheck = fused;
+    }
+
+    /**
+     * Choose the scalar check's form.
+     *
+     * @param property the value of the property {@code particlelab.check} (null if unset)
+     * @param jdkFeature the running JDK's feature release (17, 25, ...)
+     * @return true for the fused AND, false for the tree of sums
+     * @throws IllegalArgumentException if the property is neither {@code tree} nor
+     *     {@code fused}
+     */
+    static boolean chooseFusedCheck(String property, int jdkFeature) {
+        if (property == null || property.isEmpty()) {
+            return jdkFeature >= FUSED_CHECK_FROM_JDK;
+        }
+        if (property.equals("tree")) {
+            return false;
+        }
+        if (property.equals("fused")) {
+            return true;
+        }
+        throw new IllegalArgumentException("-Dparticlelab.check must be tree or fused, but was "
+                + property);
     }
 
     /**
@@ -157,8 +213,11 @@ final class PackedStep {
                 stepAxis(positions, velocities, start, n, factor, gx, stepSeconds);
                 stepAxis(positions, velocities, y, n, factor, gy, stepSeconds);
                 stepAxis(positions, velocities, z, n, factor, gz, stepSeconds);
-                finite &= isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
-                        & isSumFinite(positions, z, n);
+                finite &= fusedCheck
+                        ? isFusedFinite(positions, start, n) & isFusedFinite(positions, y, n)
+                                & isFusedFinite(positions, z, n)
+                        : isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
+                                & isSumFinite(positions, z, n);
             }
         }
         return finite ? -1 : searchNonFinite(positions, stride, count);
@@ -249,7 +308,7 @@ final class PackedStep {
      * @return true if every value of values[start .. start + length) is finite; false if one
      *     is not, or perhaps if their sum overflows
      */
-    private static boolean isSumFinite(float[] values, int start, int length) {
+    static boolean isSumFinite(float[] values, int start, int length) {
         float sum0 = 0f;
         float sum1 = 0f;
         float sum2 = 0f;
@@ -266,6 +325,39 @@ final class PackedStep {
             sum0 += values[i];
         }
         return Float.isFinite((sum0 + sum1) + (sum2 + sum3));
+    }
+
+    /**
+     * Tell whether values are all finite, exactly: {@code acc &= (int) ((p − p) + 1f)} over
+     * them, one pass with no dependence between the values but the AND, which the JIT of
+     * JDK 25 vectorises (JDK 17's does not). {@code p − p} is 0 for a finite p and NaN for
+     * ±∞ or NaN, and {@code (int) NaN} is 0, so acc stays 1 only if every value is finite.
+     * No false alarms: a large finite value gives 0 + 1 like any other.
+     *
+     * @return true if every value of values[start .. start + length) is finite
+     */
+    static boolean isFusedFinite(float[] values, int start, int length) {
+        int acc = 1;
+        int end = start + length;
+        for (int i = start; i < end; ++i) {
+            float p = values[i];
+            acc &= (int) ((p - p) + 1f);
+        }
+        return acc == 1;
+    }
+
+    /**
+     * {@link #chooseFusedCheck}, but a bad property only warns (one line on stderr naming it
+     * and what is allowed) and the JDK decides: a class initialiser must not throw.
+     */
+    private static boolean chooseFusedCheckOrWarn(String property, int jdkFeature) {
+        try {
+            return chooseFusedCheck(property, jdkFeature);
+        } catch (IllegalArgumentException bad) {
+            System.err.println("particle-lab: " + bad.getMessage() + "; using the JDK's"
+                    + " default form");
+            return chooseFusedCheck(null, jdkFeature);
+        }
     }
 
     /** The particle of the first non-finite value, axis by axis (x, then y, z), or -1. */

@@ -117,6 +117,30 @@ class SpeedVsErrorReportTest {
     }
 
     @Test
+    void speedSectionShowsTheRatiosWithSpreadsAndTheEmitterPeer() throws IOException {
+        String index = read("index.md");
+        int start = index.indexOf("### Side by side, with spreads");
+        assertTrue(start >= 0, "index.md has no side-by-side section");
+        String section = index.substring(start, index.indexOf("\n### Why", start + 1));
+        for (String comparison : SpeedSpreads.comparisons(ReportConfig.of(
+                ReportConfig.Size.TINY))) {
+            assertTrue(section.contains("\n| " + comparison + " | "), "no row " + comparison
+                    + " in " + section);
+        }
+        // both collectors named, the tiny sweep saying why it has no child JVM
+        assertTrue(section.contains("(child JVM, `-XX:+UseParallelGC`)"), section);
+        assertTrue(section.contains("not measured: the tiny sweep starts no child JVM"),
+                section);
+        assertTrue(section.contains("exceeds 1.5 says \"too noisy: no verdict\""), section);
+        assertTrue(section.contains("### jME's ParticleEmitter beside the fountain and "
+                + "`stepPacked`"), section);
+        Matcher peer = Pattern.compile("\n\\| 10000 \\| [0-9.]+ / \\*\\*[0-9.]+\\*\\* / "
+                + "[0-9.]+ \\|").matcher(section);
+        assertTrue(peer.find(), "no peer row at N = 10000 in " + section);
+        assertTrue(section.contains("What the batch form gains a jME user"), section);
+    }
+
+    @Test
     void jmhResultsReplaceTheInProcessBenchmarks(@TempDir Path temp) throws IOException {
         Path jmh = temp.resolve("jmh.csv");
         Files.write(jmh, ("benchmark,ns_per_particle_step,bytes_per_step\n"

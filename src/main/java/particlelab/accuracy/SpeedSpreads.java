@@ -1,0 +1,480 @@
+package particlelab.accuracy;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.lang.management.GarbageCollectorMXBean;
+import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The report's ratios side by side, with their spreads: every ratio a speed target is judged
+ * by, each taken within a round of {@link CostMeter#measureSideBySide} (rotating rounds, one
+ * JVM, thread CPU time) and given as min / median / max over the rounds. A row whose max ÷ min
+ * exceeds {@link #SPREAD_BOUND} says "too noisy: no verdict" instead of met or missed. The
+ * lecture style's row is measured twice: in this JVM, under its collector, and in a child JVM
+ * started with {@value #PARALLEL_GC} (same class path, same code, same heap flags), because
+ * that figure measures the collector as much as the integrator. Then jME's ParticleEmitter
+ * beside the fountain's whole step and {@code stepPacked} ({@link PeerScenes}).
+ */
+final class SpeedSpreads {
+
+    /** A ratio row whose rounds' max ÷ min exceeds this gets no verdict. */
+    static final double SPREAD_BOUND = 1.5;
+    /** The child JVM's collector flag. */
+    static final String PARALLEL_GC = "-XX:+UseParallelGC";
+    /** The line the child JVM prints its ratio on, then min, median, max and collector. */
+    static final String PROBE_PREFIX = "lecture-over-objects";
+    /** Verdict of a row too noisy to judge. */
+    static final String TOO_NOISY = "too noisy: no verdict";
+    /** The peer rows' particle counts (the quick sweep leaves out the last). */
+    static final int[] PEER_COUNTS = {10_000, 100_000, 1_000_000};
+    /** Row: one particle through the integrator against the one-particle loop, linear drag. */
+    static final String OBJECTS_LINEAR =
+            "`step(Particle, h)` ÷ one-particle primitive loop, linear drag";
+    /** Row: the same under gravity alone. */
+    static final String OBJECTS_GRAVITY =
+            "`step(Particle, h)` ÷ one-particle primitive loop, gravity";
+    /** Row: the lecture style against the integrator, one particle (two collectors). */
+    static final String LECTURE =
+            "lecture style ÷ `step(Particle, h)`, one particle, linear drag";
+    /** Row prefix: the batch against the primitive loop at N. */
+    static final String BATCH = "`stepPacked` ÷ primitive loop, linear drag, N = ";
+    /** The child JVM's longest run (s). */
+    private static final long CHILD_TIMEOUT_SECONDS = 300;
+
+    /** One judged ratio: what over what, under which collector, its spread and its target. */
+    static final class Line {
+        private final String comparison;
+        private final String collector;
+        private final CostMeter.Spread ratio;
+        /** The target: at most this (atMost) or at least this. NaN: no target. */
+        private final double target;
+        private final boolean atMost;
+        private final String failure;
+
+        Line(String comparison, String collector, CostMeter.Spread ratio, double target,
+                boolean atMost) {
+            this(comparison, collector, ratio, target, atMost, null);
+        }
+
+        Line(String comparison, String collector, CostMeter.Spread ratio, double target,
+                boolean atMost, String failure) {
+            this.comparison = comparison;
+            this.collector = collector;
+            this.ratio = ratio;
+            this.target = target;
+            this.atMost = atMost;
+            this.failure = failure;
+        }
+
+        /** @return the row's first cell */
+        String comparison() {
+            return comparison;
+        }
+
+        /** @return the verdict cell: met, missed, too noisy, or why it was not measured */
+        String verdict() {
+            if (failure != null) {
+                return "not measured: " + failure;
+            }
+            if (ratio.exceeds(SPREAD_BOUND)) {
+                return TOO_NOISY;
+            }
+            if (Double.isNaN(target)) {
+                return "—";
+            }
+            boolean met = atMost ? ratio.median() <= target : ratio.median() >= target;
+            return met ? "met" : "**missed**";
+        }
+
+        /** @return the table row */
+        String row() {
+            return "| " + comparison + " | " + collector + " | "
+                    + (failure != null ? "—" : spread(ratio, 2) + "×") + " | "
+                    + (Double.isNaN(target) ? "—" : (atMost ? "≤ " : "≥ ") + num(target) + "×")
+                    + " | " + verdict() + " |";
+        }
+    }
+
+    /** One N of the peer table. */
+    static final class PeerRow {
+        private final int count;
+        private final CostMeter.Spread emitter;
+        private final CostMeter.Spread fountain;
+        private final CostMeter.Spread packed;
+        private final CostMeter.Spread emitterOverPacked;
+        private final CostMeter.Spread emitterOverFountain;
+        private final double emitterHeap;
+        private final double emitterDirect;
+        private final double fountainHeap;
+
+        PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
+                CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
+                CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
+                double fountainHeap) {
+            this.count = count;
+            this.emitter = emitter;
+            this.fountain = fountain;
+            this.packed = packed;
+            this.emitterOverPacked = emitterOverPacked;
+            this.emitterOverFountain = emitterOverFountain;
+            this.emitterHeap = emitterHeap;
+            this.emitterDirect = emitterDirect;
+            this.fountainHeap = fountainHeap;
+        }
+
+        /** @return the table row */
+        String row() {
+            boolean noisy = emitterOverPacked.exceeds(SPREAD_BOUND)
+                    || emitterOverFountain.exceeds(SPREAD_BOUND);
+            return "| " + count + " | " + spread(emitter, 2) + " | " + spread(fountain, 2)
+                    + " | " + spread(packed, 2) + " | " + spread(emitterOverPacked, 1) + "× | "
+                    + spread(emitterOverFountain, 1) + "× | " + fix(emitterHeap, 0) + " + "
+                    + fix(emitterDirect, 0) + " | " + fix(fountainHeap, 0) + " | "
+                    + fix(PeerScenes.packedBytes(), 0) + " | "
+                    + (noisy ? TOO_NOISY : "judged") + " |";
+        }
+    }
+
+    private SpeedSpreads() {
+    }
+
+    /**
+     * Measure every line and write the section.
+     *
+     * @param md the report's text (modified)
+     * @param config the report's size (not null)
+     * @param meter the meter (not null)
+     */
+    static void append(StringBuilder md, ReportConfig config, CostMeter meter) {
+        List<Line> lines = new ArrayList<>();
+        String here = collectorLabel(thisCollector(), heapFlags());
+        CostMeter.SideBySide linear = oneParticle(ForceMix.LINEAR, meter, true);
+        CostMeter.SideBySide gravity = oneParticle(ForceMix.GRAVITY, meter, false);
+        lines.add(new Line(OBJECTS_LINEAR, here, linear.ratio(1, 0),
+                MixTargets.PER_PARTICLE_VS_PRIMITIVE, true));
+        lines.add(new Line(OBJECTS_GRAVITY, here, gravity.ratio(1, 0),
+                MixTargets.PER_PARTICLE_VS_PRIMITIVE, true));
+        lines.add(new Line(LECTURE, here, linear.ratio(2, 1),
+                MixTargets.PER_PARTICLE_VS_LECTURE, false));
+        lines.add(childLine(config));
+        for (int count : config.particleCounts()) {
+            BulkScene scene = new BulkScene(ForceMix.LINEAR, count);
+            CostMeter.SideBySide bulk = meter.measureSideBySide(new CostMeter.Workload[] {
+                units -> scene.stepPrimitiveLoop(), units -> scene.stepSharedBatch()},
+                new int[] {count, count});
+            lines.add(new Line(BATCH + count, here, bulk.ratio(1, 0),
+                    MixTargets.BATCH_VS_PRIMITIVE, true));
+        }
+        List<PeerRow> peers = new ArrayList<>();
+        for (int count : peerCounts(config)) {
+            System.gc();
+            peers.add(peer(new PeerScenes(count), meter));
+        }
+        appendTables(md, lines, peers, meter.rounds(), config);
+    }
+
+    /**
+     * List the comparisons {@link #append} measures for a size, in order.
+     *
+     * @param config the report's size (not null)
+     * @return a new list of the rows' first cells
+     */
+    static List<String> comparisons(ReportConfig config) {
+        List<String> names = new ArrayList<>(List.of(OBJECTS_LINEAR, OBJECTS_GRAVITY, LECTURE,
+                LECTURE));
+        for (int count : config.particleCounts()) {
+            names.add(BATCH + count);
+        }
+        return names;
+    }
+
+    /**
+     * List the peer table's N for a size.
+     *
+     * @param config the report's size (not null)
+     * @return a new array
+     */
+    static int[] peerCounts(ReportConfig config) {
+        switch (config.size()) {
+            case FULL:
+                return PEER_COUNTS.clone();
+            case QUICK:
+                return new int[] {PEER_COUNTS[0], PEER_COUNTS[1]};
+            default:
+                return new int[] {PEER_COUNTS[0]};
+        }
+    }
+
+    /**
+     * Write the section's text and tables from measured lines (split from {@link #append}
+     * so a test can check the tables of fixed numbers).
+     *
+     * @param md the report's text (modified)
+     * @param lines the ratio rows (not null)
+     * @param peers the peer rows (not null)
+     * @param rounds how many rounds each spread is over
+     * @param config the report's size (not null)
+     */
+    static void appendTables(StringBuilder md, List<Line> lines, List<PeerRow> peers,
+            int rounds, ReportConfig config) {
+        md.append("### Side by side, with spreads\n\n");
+        md.append("The ratios the targets are judged by, each taken within one round: the "
+                + "paths of a row run in rotating rounds in one JVM (every round times each "
+                + "path once, for at least ").append(config.roundNanos() / 1_000_000)
+                .append(" ms, the order shifting by one from round to round), timed by ")
+                .append(CostMeter.clockName()).append(", so slices the machine gives to "
+                + "other jobs do not count. Each cell is min / **median** / max over ")
+                .append(rounds).append(" rounds. A row whose max ÷ min exceeds ")
+                .append(num(SPREAD_BOUND)).append(" says \"").append(TOO_NOISY)
+                .append("\" instead of met or missed. \"Objects ≤ ")
+                .append(num(MixTargets.PER_PARTICLE_VS_PRIMITIVE)).append("× primitive\" is "
+                + "judged against the one-particle primitive loop, the same chain of dependent "
+                + "steps written by hand: the fair loop for one particle (the bulk loop "
+                + "overlaps thousands of particles and vectorises, which one particle cannot). "
+                + "The lecture style's ratio measures the garbage collector as much as the "
+                + "integrator (it stores two new `Vector3f` into a long-lived particle every "
+                + "step), so it is measured under this JVM's collector and again in a child "
+                + "JVM started with `").append(PARALLEL_GC).append("` (same class path, same "
+                + "heap flags).\n\n");
+        md.append("| comparison | collector, heap | min / **median** / max | target "
+                + "| verdict |\n|---|---|---|---|---|\n");
+        for (Line line : lines) {
+            md.append(line.row()).append('\n');
+        }
+        md.append("\n### jME's ParticleEmitter beside the fountain and `stepPacked`\n\n");
+        md.append("The same N in each, one frame of h = 1/60 s per call, in rotating rounds "
+                + "as above: jME's `ParticleEmitter` (`Point` mesh, gravity, a life longer "
+                + "than the run so all N stay alive, none spawned; a frame is "
+                + "`updateLogicalState` + `updateGeometricState`, the emitter's control: "
+                + "life, gravity, position, colour, size, angle, bounds), the fountain's "
+                + "whole `Fountain.step` after ").append(PeerScenes.FLOW_STEPS)
+                .append(" steps of flow (Euler step, ground bounce, lifecycle, fireworks), and "
+                + "the bare `stepPacked` of all N (gravity + the fountain's drag, the scalar "
+                + "form). ns per particle, min / **median** / max. Bytes per particle: the "
+                + "emitter's heap as the thread allocation counter saw it while the emitter "
+                + "was built and filled, plus its mesh buffers' capacities (direct memory); "
+                + "the fountain's heap likewise (its point mesh belongs to the view and is "
+                + "not counted); the packed state is its two arrays, 6 floats.");
+        if (config.size() != ReportConfig.Size.FULL) {
+            md.append(" This sweep leaves out the larger N (the full report has ")
+                    .append(PEER_COUNTS[PEER_COUNTS.length - 1]).append(").");
+        }
+        md.append("\n\n| N | emitter (ns) | `Fountain.step` (ns) | `stepPacked` (ns) "
+                + "| emitter ÷ `stepPacked` | emitter ÷ `Fountain.step` "
+                + "| emitter B/particle (heap + direct) | fountain B/particle | packed "
+                + "B/particle | spread |\n|---|---|---|---|---|---|---|---|---|---|\n");
+        for (PeerRow peer : peers) {
+            md.append(peer.row()).append('\n');
+        }
+        md.append("\nWhat the batch form gains a jME user: the emitter keeps a "
+                + "`Particle` object per particle (two `Vector3f` and a `ColorRGBA` each) and "
+                + "updates them one by one, so every frame chases objects through the heap; "
+                + "particles kept as planar float arrays and moved by `stepPacked` take 24 "
+                + "bytes each and one pass the JIT vectorises, with drag and a check that no "
+                + "particle became NaN or infinite, and the row above says how many times "
+                + "less a frame costs at each N. The emitter does more per particle (colour, "
+                + "size, angle, bounds), so the fountain's whole step, with its bounce and "
+                + "lifecycle, is the fairer peer for a game's effect.\n\n");
+    }
+
+    /**
+     * The child JVM's command line: this JVM's {@code java}, its heap flags, the Parallel
+     * collector, this class path, the probe and the report's size.
+     *
+     * @param config the report's size (not null)
+     * @return a new list
+     */
+    static List<String> childCommand(ReportConfig config) {
+        List<String> command = new ArrayList<>();
+        command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(heapFlags());
+        command.add(PARALLEL_GC);
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add(LectureCollectorProbe.class.getName());
+        command.add(config.size().name());
+        return command;
+    }
+
+    /**
+     * Name a collector with its heap flags for a row's label.
+     *
+     * @param collector e.g. "G1"
+     * @param heapFlags the JVM's heap flags (not null)
+     * @return e.g. "G1, default heap" or "Parallel, `-Xmx2g`"
+     */
+    static String collectorLabel(String collector, List<String> heapFlags) {
+        if (heapFlags.isEmpty()) {
+            return collector + ", default heap";
+        }
+        return collector + ", `" + String.join(" ", heapFlags) + "`";
+    }
+
+    /**
+     * Name this JVM's collector from its beans ("G1 Young Generation" → G1, "PS Scavenge" →
+     * Parallel, "Copy" → Serial, ...).
+     *
+     * @return a short name (not null)
+     */
+    static String thisCollector() {
+        List<String> names = new ArrayList<>();
+        for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
+            names.add(bean.getName());
+        }
+        return collectorName(names);
+    }
+
+    /**
+     * Name a collector from its beans' names.
+     *
+     * @param beanNames the names (not null)
+     * @return a short name
+     */
+    static String collectorName(List<String> beanNames) {
+        String all = String.join(", ", beanNames);
+        if (all.contains("G1")) {
+            return "G1";
+        }
+        if (all.contains("PS Scavenge") || all.contains("PS MarkSweep")) {
+            return "Parallel";
+        }
+        if (all.contains("Copy") || all.contains("MarkSweepCompact")) {
+            return "Serial";
+        }
+        if (all.contains("ZGC")) {
+            return "ZGC";
+        }
+        if (all.contains("Shenandoah")) {
+            return "Shenandoah";
+        }
+        return all.isEmpty() ? "unknown collector" : all;
+    }
+
+    /**
+     * The heap flags this JVM was started with (-Xms, -Xmx, -Xmn and -XX:…Heap…/RAM…).
+     *
+     * @return a new list, empty for the defaults
+     */
+    static List<String> heapFlags() {
+        List<String> flags = new ArrayList<>();
+        for (String arg : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            if (arg.startsWith("-Xms") || arg.startsWith("-Xmx") || arg.startsWith("-Xmn")
+                    || arg.startsWith("-XX:") && (arg.contains("Heap") || arg.contains("RAM")
+                    || arg.contains("NewSize"))) {
+                flags.add(arg);
+            }
+        }
+        return flags;
+    }
+
+    /**
+     * Parse the probe's line.
+     *
+     * @param line {@value #PROBE_PREFIX} min median max collector
+     * @return the spread, or null if the line is not the probe's
+     */
+    static CostMeter.Spread parseProbe(String line) {
+        String[] cells = line.trim().split(" ");
+        if (cells.length < 4 || !cells[0].equals(PROBE_PREFIX)) {
+            return null;
+        }
+        try {
+            return new CostMeter.Spread(Double.parseDouble(cells[1]),
+                    Double.parseDouble(cells[2]), Double.parseDouble(cells[3]));
+        } catch (NumberFormatException notNumbers) {
+            return null;
+        }
+    }
+
+    /**
+     * One particle of a mix side by side: workloads primitive loop (0), {@code step(Particle,
+     * h)} (1) and, if asked, the lecture style (2).
+     */
+    static CostMeter.SideBySide oneParticle(ForceMix mix, CostMeter meter, boolean lecture) {
+        OneParticleMixScene scene = new OneParticleMixScene(mix);
+        int steps = OneParticleMixScene.STEPS_PER_LAUNCH;
+        CostMeter.Workload primitive = units -> scene.flyPrimitiveLoop();
+        CostMeter.Workload objects = units -> scene.flySharedObjects();
+        CostMeter.Workload[] workloads = lecture
+                ? new CostMeter.Workload[] {primitive, objects, units -> scene.flyLectureStyle()}
+                : new CostMeter.Workload[] {primitive, objects};
+        int[] units = new int[workloads.length];
+        java.util.Arrays.fill(units, steps);
+        return meter.measureSideBySide(workloads, units);
+    }
+
+    private static PeerRow peer(PeerScenes scenes, CostMeter meter) {
+        int n = scenes.count();
+        CostMeter.SideBySide timed = meter.measureSideBySide(new CostMeter.Workload[] {
+            units -> scenes.emitterFrame(), units -> scenes.fountainStep(),
+            units -> scenes.packedStep()}, new int[] {n, n, n});
+        return new PeerRow(n, timed.nanosPerUnit(0), timed.nanosPerUnit(1),
+                timed.nanosPerUnit(2), timed.ratio(0, 2), timed.ratio(0, 1),
+                scenes.emitterHeapBytes(), scenes.emitterDirectBytes(),
+                scenes.fountainHeapBytes());
+    }
+
+    /** The lecture row under the Parallel collector, from the child JVM. */
+    private static Line childLine(ReportConfig config) {
+        String label = collectorLabel("Parallel", heapFlags()) + " (child JVM, `"
+                + PARALLEL_GC + "`)";
+        String comparison = LECTURE;
+        if (config.size() == ReportConfig.Size.TINY) {
+            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+                    "the tiny sweep starts no child JVM");
+        }
+        try {
+            Process child = new ProcessBuilder(childCommand(config))
+                    .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+            CostMeter.Spread found = null;
+            try (BufferedReader out = new BufferedReader(new InputStreamReader(
+                    child.getInputStream(), StandardCharsets.UTF_8))) {
+                for (String line = out.readLine(); line != null; line = out.readLine()) {
+                    CostMeter.Spread parsed = parseProbe(line);
+                    found = parsed != null ? parsed : found;
+                }
+            }
+            if (!child.waitFor(CHILD_TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
+                child.destroy();
+                return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE,
+                        false, "the child JVM took longer than " + CHILD_TIMEOUT_SECONDS + " s");
+            }
+            if (found == null || child.exitValue() != 0) {
+                return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE,
+                        false, "the child JVM exited with " + child.exitValue()
+                        + " and no ratio");
+            }
+            return new Line(comparison, label, found, MixTargets.PER_PARTICLE_VS_LECTURE, false);
+        } catch (IOException e) {
+            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+                    "the child JVM did not start (" + e.getMessage() + ")");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+                    "interrupted");
+        }
+    }
+
+    /** "min / **median** / max" to a number of decimals. */
+    static String spread(CostMeter.Spread spread, int decimals) {
+        return fix(spread.min(), decimals) + " / **" + fix(spread.median(), decimals) + "** / "
+                + fix(spread.max(), decimals);
+    }
+
+    private static String num(double value) {
+        return value == Math.rint(value) ? Long.toString((long) value)
+                : String.format(Locale.ROOT, "%s", value);
+    }
+
+    private static String fix(double value, int decimals) {
+        return Double.isNaN(value) ? "—"
+                : String.format(Locale.ROOT, "%." + decimals + "f", value);
+    }
+}

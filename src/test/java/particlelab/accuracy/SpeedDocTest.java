@@ -1,0 +1,130 @@
+package particlelab.accuracy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@code docs/speed.md} shows the report's side-by-side section as a full report wrote it:
+ * the block between its two markers is read back into rows (the measured figures), and the
+ * report's own table builder must write exactly that block from them, labels, targets,
+ * verdicts, spread flags and text included. So the page can hold only figures a report
+ * printed in that form, and it must be pasted anew when the section's form changes.
+ */
+class SpeedDocTest {
+
+    static final String BEGIN = "<!-- pasted from a full report's index.md: begin -->";
+    static final String END = "<!-- pasted from a full report's index.md: end -->";
+    private static final ReportConfig FULL = ReportConfig.of(ReportConfig.Size.FULL);
+    private static final Pattern SPREAD = Pattern.compile(
+            "([0-9.]+) / \\*\\*([0-9.]+)\\*\\* / ([0-9.]+)×?");
+    private static final Pattern ROUNDS = Pattern.compile("over (\\d+) rounds");
+
+    @Test
+    void speedPageShowsTheReportsSideBySideSectionAsTheReportWritesIt() throws IOException {
+        String page = new String(Files.readAllBytes(Paths.get("docs", "speed.md")),
+                StandardCharsets.UTF_8);
+        int begin = page.indexOf(BEGIN);
+        int end = page.indexOf(END);
+        assertTrue(begin >= 0 && end > begin, "docs/speed.md has no pasted report section");
+        String block = page.substring(begin + BEGIN.length(), end).trim() + "\n";
+        List<SpeedSpreads.Line> lines = new ArrayList<>();
+        List<SpeedSpreads.PeerRow> peers = new ArrayList<>();
+        List<String> comparisons = new ArrayList<>();
+        List<Integer> counts = new ArrayList<>();
+        for (String row : block.split("\n")) {
+            if (!row.startsWith("| ") || row.startsWith("| comparison ")
+                    || row.startsWith("| N ")) {
+                continue;
+            }
+            String[] cells = row.substring(2, row.length() - 2).split(" \\| ");
+            if (cells.length == 5) {
+                comparisons.add(cells[0]);
+                lines.add(line(cells));
+            } else {
+                assertEquals(10, cells.length, row);
+                counts.add(Integer.parseInt(cells[0]));
+                peers.add(peer(cells));
+            }
+        }
+        assertEquals(SpeedSpreads.comparisons(FULL), comparisons, "the full report's rows");
+        List<Integer> expectedCounts = new ArrayList<>();
+        for (int count : SpeedSpreads.peerCounts(FULL)) {
+            expectedCounts.add(count);
+        }
+        assertEquals(expectedCounts, counts, "the full report's peer sizes");
+        Matcher rounds = ROUNDS.matcher(block);
+        assertTrue(rounds.find(), "no round count in the pasted section");
+        StringBuilder rebuilt = new StringBuilder();
+        SpeedSpreads.appendTables(rebuilt, lines, peers, Integer.parseInt(rounds.group(1)),
+                FULL);
+        String[] expected = (rebuilt.toString().trim() + "\n").split("\n", -1);
+        String[] pasted = block.split("\n", -1);
+        assertEquals(expected.length, pasted.length, "lines in the pasted block");
+        for (int i = 0; i < pasted.length; ++i) {
+            if (!expected[i].equals(pasted[i])) {
+                assertOnlyTheVerdictDiffersAtTheBound(expected[i], pasted[i]);
+            }
+        }
+    }
+
+    /**
+     * The figures are pasted rounded (ratios of the peer table to 0.1), so a row whose
+     * max ÷ min lies at the spread bound may be judged from the unrounded figures one way and
+     * from the rounded ones the other: then only the last cell may differ, and the bound
+     * must lie within the rounding of max ÷ min.
+     */
+    private static void assertOnlyTheVerdictDiffersAtTheBound(String expected, String pasted) {
+        int cut = expected.lastIndexOf(" | ", expected.length() - 3);
+        assertEquals(expected.substring(0, cut), pasted.substring(0, Math.min(cut,
+                pasted.length())), "a pasted row differs from the report's form");
+        boolean atBound = false;
+        Matcher m = Pattern.compile("([0-9.]+) / \\*\\*[0-9.]+\\*\\* / ([0-9.]+)×?")
+                .matcher(pasted);
+        while (m.find()) {
+            String low = m.group(1);
+            String high = m.group(2);
+            int decimals = low.length() - low.indexOf('.') - 1;
+            double half = 0.5 * Math.pow(10, -decimals);
+            double lo = Double.parseDouble(low);
+            double hi = Double.parseDouble(high);
+            atBound |= (hi - half) / (lo + half) <= SpeedSpreads.SPREAD_BOUND
+                    && (hi + half) / (lo - half) > SpeedSpreads.SPREAD_BOUND;
+        }
+        assertTrue(atBound, "the verdict of this row disagrees with its figures: " + pasted);
+    }
+
+    private static SpeedSpreads.Line line(String[] cells) {
+        boolean atMost = cells[3].startsWith("≤");
+        double target = Double.parseDouble(cells[3].substring(2, cells[3].length() - 1));
+        if (cells[2].equals("—")) {
+            String failure = cells[4].substring("not measured: ".length());
+            return new SpeedSpreads.Line(cells[0], cells[1], null, target, atMost, failure);
+        }
+        return new SpeedSpreads.Line(cells[0], cells[1], spread(cells[2]), target, atMost);
+    }
+
+    private static SpeedSpreads.PeerRow peer(String[] cells) {
+        String[] emitterBytes = cells[6].split(" \\+ ");
+        return new SpeedSpreads.PeerRow(Integer.parseInt(cells[0]), spread(cells[1]),
+                spread(cells[2]), spread(cells[3]), spread(cells[4]), spread(cells[5]),
+                Double.parseDouble(emitterBytes[0]), Double.parseDouble(emitterBytes[1]),
+                Double.parseDouble(cells[7]));
+    }
+
+    private static CostMeter.Spread spread(String cell) {
+        Matcher m = SPREAD.matcher(cell);
+        assertTrue(m.matches(), "not a spread: " + cell);
+        return new CostMeter.Spread(Double.parseDouble(m.group(1)),
+                Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3)));
+    }
+}
