@@ -6,6 +6,7 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.world.StateSlab;
 
 /**
  * The continuous path of one particle under the forces of its own integrator, in double
@@ -36,6 +37,11 @@ public final class ExactPath {
 
     /** The longest RK4 substep (in seconds): its error, about h⁴, is then below 1e-12. */
     public static final double MAX_SUBSTEP_SECONDS = 1.0 / 960.0;
+    /**
+     * The ints {@link #writeState} writes: 23 doubles (the state, the closed form's anchor
+     * and forces, the mass, the apex and landing) and 2 booleans.
+     */
+    public static final int STATE_INTS = 2 * 23 + 2;
     /** Bisections for an event: 60 halve any step below 1e-18 of itself. */
     private static final int BISECTIONS = 60;
 
@@ -275,6 +281,55 @@ public final class ExactPath {
     }
 
     /**
+     * Write the path's state (where it is, since when, the closed form's anchor, the apex and
+     * landing found), so a step back of the demo puts the ghost back where it was: the next
+     * {@link #advance} from the state read back gives the same bits. Allocates nothing.
+     *
+     * @param slab where to write ({@link #STATE_INTS} ints, not null, modified)
+     */
+    public void writeState(StateSlab slab) {
+        putAll(slab, position);
+        putAll(slab, velocity);
+        slab.putDouble(timeSeconds);
+        putAll(slab, anchorPosition);
+        putAll(slab, anchorVelocity);
+        slab.putDouble(anchorSeconds);
+        putAll(slab, gravity);
+        slab.putDouble(rate);
+        slab.putDouble(massKg);
+        slab.putDouble(apexSeconds);
+        slab.putDouble(apexHeight);
+        slab.putDouble(landingSeconds);
+        slab.putDouble(landingX);
+        slab.putBoolean(stopsAtGround);
+        slab.putBoolean(landed);
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote, in the same order. Allocates nothing.
+     *
+     * @param slab where to read ({@link #STATE_INTS} ints, not null, modified)
+     */
+    public void readState(StateSlab slab) {
+        getAll(slab, position);
+        getAll(slab, velocity);
+        timeSeconds = slab.getDouble();
+        getAll(slab, anchorPosition);
+        getAll(slab, anchorVelocity);
+        anchorSeconds = slab.getDouble();
+        getAll(slab, gravity);
+        rate = slab.getDouble();
+        massKg = slab.getDouble();
+        probe.setMass((float) massKg);
+        apexSeconds = slab.getDouble();
+        apexHeight = slab.getDouble();
+        landingSeconds = slab.getDouble();
+        landingX = slab.getDouble();
+        stopsAtGround = slab.getBoolean();
+        landed = slab.getBoolean();
+    }
+
+    /**
      * Read the summed field acceleration and linear drag rate of the forces.
      *
      * @return true if they differ from those the closed form was anchored with
@@ -404,5 +459,17 @@ public final class ExactPath {
         stageAcceleration[0] = probeAcceleration.x;
         stageAcceleration[1] = probeAcceleration.y;
         stageAcceleration[2] = probeAcceleration.z;
+    }
+
+    private static void putAll(StateSlab slab, double[] values) {
+        for (int i = 0; i < values.length; ++i) {
+            slab.putDouble(values[i]);
+        }
+    }
+
+    private static void getAll(StateSlab slab, double[] storeResult) {
+        for (int i = 0; i < storeResult.length; ++i) {
+            storeResult[i] = slab.getDouble();
+        }
     }
 }
