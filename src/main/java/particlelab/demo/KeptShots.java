@@ -148,6 +148,25 @@ final class KeptShots {
     }
 
     /**
+     * Count the kept paths drawn: holding points and not hidden.
+     *
+     * @return the count (&ge;0)
+     */
+    int countDrawnPaths() {
+        int drawn = 0;
+        for (int shot = 0; shot < paths.length; ++shot) {
+            for (int p = 0; p < paths[shot].length; ++p) {
+                ShotTrail path = paths[shot][p];
+                if (path.size() > 0
+                        && path.getGeometry().getCullHint() != Spatial.CullHint.Always) {
+                    ++drawn;
+                }
+            }
+        }
+        return drawn;
+    }
+
+    /**
      * Access one kept path.
      *
      * @param age 0 for the newest shot (&lt;{@link #size()})
