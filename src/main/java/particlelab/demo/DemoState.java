@@ -1163,6 +1163,8 @@ public abstract class DemoState extends BaseAppState {
      */
     public void advance(float tpf) {
         advancePhysics(tpf);
+        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
+        replay.updateFrameBlend(isSceneOver());
         afterFrame();
         world.getImpacts().clear();
         scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
