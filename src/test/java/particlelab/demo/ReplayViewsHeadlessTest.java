@@ -164,12 +164,16 @@ class ReplayViewsHeadlessTest {
         return kept.toString();
     }
 
-    /** The graph's last sample: its time and every value, as bits. */
+    /** The ghosts' graph's last sample: its time and every value, as bits. */
     private static String graphEnd(DemoState demo) {
-        LiveGraph graph = demo.getExactGhosts().getGraph();
+        return graphEnd(demo.getExactGhosts().getGraph(), demo.getParticles().size());
+    }
+
+    /** A graph's last sample: its time and every value, as bits. */
+    private static String graphEnd(LiveGraph graph, int series) {
         StringBuilder text = new StringBuilder().append(Float.floatToIntBits(
                 graph.getEndTime()));
-        for (int p = 0; p < demo.getParticles().size(); ++p) {
+        for (int p = 0; p < series; ++p) {
             for (int v = 0; v < 4; ++v) {
                 text.append(' ').append(Float.floatToIntBits(graph.getEndValue(p, v >= 2,
                         (v & 1) == 1)));

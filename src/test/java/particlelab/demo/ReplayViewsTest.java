@@ -10,13 +10,18 @@ import particlelab.app.DemoCatalog;
 import particlelab.world.StateRing;
 
 /**
- * Probe.
+ * After a step back (Home's code path) every catalogued demo's HUD describes the step shown,
+ * in plain JUnit (no jME): the demo runs, the HUD text of every step is kept; then Home step
+ * by step, and at each step shown the HUD's lines (each particle's, the demo's own: scores,
+ * shot results, readouts) are those the run had at that step, character for character. The
+ * time line, the stepping line and the time-scale keys line are left out: they say paused
+ * and replaying. The views that exist only with a window (ghosts, graph, kept shots) are in
+ * {@code ReplayViewsHeadlessTest}.
  */
 class ReplayViewsTest {
 
     private static final float H = 1f / 60f;
     private static final int STEPS = 360;
-    private static final int[] BACK = {1, 60, 300};
 
     static Stream<String> demoNames() {
         return DemoCatalog.names().stream();
@@ -42,6 +47,7 @@ class ReplayViewsTest {
         }
     }
 
+    /** The HUD's text without the lines that say paused or replaying. */
     static String hud(DemoState demo) {
         StringBuilder text = new StringBuilder();
         demo.formatHud(text);
