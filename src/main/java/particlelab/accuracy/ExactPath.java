@@ -6,6 +6,7 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.world.StateSlab;
 
 /**
  * The continuous path of one particle under the forces of its own integrator, in double
@@ -36,8 +37,11 @@ public final class ExactPath {
 
     /** The longest RK4 substep (in seconds): its error, about h⁴, is then below 1e-12. */
     public static final double MAX_SUBSTEP_SECONDS = 1.0 / 960.0;
-    /** How many doubles {@link #writeState} writes: the path's whole state. */
-    public static final int STATE_DOUBLES = 25;
+    /**
+     * The ints {@link #writeState} writes: 23 doubles (the state, the closed form's anchor
+     * and forces, the mass, the apex and landing) and 2 booleans.
+     */
+    public static final int STATE_INTS = 2 * 23 + 2;
     /** Bisections for an event: 60 halve any step below 1e-18 of itself. */
     private static final int BISECTIONS = 60;
 
@@ -187,55 +191,6 @@ public final class ExactPath {
     }
 
     /**
-     * Copy the path's whole state (where it is, when, what it was anchored at, its events)
-     * into an array, so {@link #readState} can put it back bit for bit (a replay). Allocates
-     * nothing.
-     *
-     * @param storeResult where to write (at least {@value #STATE_DOUBLES} long, modified)
-     */
-    public void writeState(double[] storeResult) {
-        System.arraycopy(position, 0, storeResult, 0, 3);
-        System.arraycopy(velocity, 0, storeResult, 3, 3);
-        System.arraycopy(anchorPosition, 0, storeResult, 6, 3);
-        System.arraycopy(anchorVelocity, 0, storeResult, 9, 3);
-        System.arraycopy(gravity, 0, storeResult, 12, 3);
-        storeResult[15] = timeSeconds;
-        storeResult[16] = anchorSeconds;
-        storeResult[17] = rate;
-        storeResult[18] = massKg;
-        storeResult[19] = stopsAtGround ? 1.0 : 0.0;
-        storeResult[20] = landed ? 1.0 : 0.0;
-        storeResult[21] = apexSeconds;
-        storeResult[22] = apexHeight;
-        storeResult[23] = landingSeconds;
-        storeResult[24] = landingX;
-    }
-
-    /**
-     * Put back a state {@link #writeState} wrote. Allocates nothing.
-     *
-     * @param state the state (at least {@value #STATE_DOUBLES} long, not modified)
-     */
-    public void readState(double[] state) {
-        System.arraycopy(state, 0, position, 0, 3);
-        System.arraycopy(state, 3, velocity, 0, 3);
-        System.arraycopy(state, 6, anchorPosition, 0, 3);
-        System.arraycopy(state, 9, anchorVelocity, 0, 3);
-        System.arraycopy(state, 12, gravity, 0, 3);
-        timeSeconds = state[15];
-        anchorSeconds = state[16];
-        rate = state[17];
-        massKg = state[18];
-        probe.setMass((float) massKg);
-        stopsAtGround = state[19] != 0.0;
-        landed = state[20] != 0.0;
-        apexSeconds = state[21];
-        apexHeight = state[22];
-        landingSeconds = state[23];
-        landingX = state[24];
-    }
-
-    /**
      * Test whether the path uses the closed form (gravity and linear drag only), rather than
      * RK4.
      *
@@ -323,6 +278,55 @@ public final class ExactPath {
     /** @return where the path came down through y = 0 (x in metres; NaN before) */
     public double getLandingX() {
         return landingX;
+    }
+
+    /**
+     * Write the path's state (where it is, since when, the closed form's anchor, the apex and
+     * landing found), so a step back of the demo puts the ghost back where it was: the next
+     * {@link #advance} from the state read back gives the same bits. Allocates nothing.
+     *
+     * @param slab where to write ({@link #STATE_INTS} ints, not null, modified)
+     */
+    public void writeState(StateSlab slab) {
+        putAll(slab, position);
+        putAll(slab, velocity);
+        slab.putDouble(timeSeconds);
+        putAll(slab, anchorPosition);
+        putAll(slab, anchorVelocity);
+        slab.putDouble(anchorSeconds);
+        putAll(slab, gravity);
+        slab.putDouble(rate);
+        slab.putDouble(massKg);
+        slab.putDouble(apexSeconds);
+        slab.putDouble(apexHeight);
+        slab.putDouble(landingSeconds);
+        slab.putDouble(landingX);
+        slab.putBoolean(stopsAtGround);
+        slab.putBoolean(landed);
+    }
+
+    /**
+     * Put back a state {@link #writeState} wrote, in the same order. Allocates nothing.
+     *
+     * @param slab where to read ({@link #STATE_INTS} ints, not null, modified)
+     */
+    public void readState(StateSlab slab) {
+        getAll(slab, position);
+        getAll(slab, velocity);
+        timeSeconds = slab.getDouble();
+        getAll(slab, anchorPosition);
+        getAll(slab, anchorVelocity);
+        anchorSeconds = slab.getDouble();
+        getAll(slab, gravity);
+        rate = slab.getDouble();
+        massKg = slab.getDouble();
+        probe.setMass((float) massKg);
+        apexSeconds = slab.getDouble();
+        apexHeight = slab.getDouble();
+        landingSeconds = slab.getDouble();
+        landingX = slab.getDouble();
+        stopsAtGround = slab.getBoolean();
+        landed = slab.getBoolean();
     }
 
     /**
@@ -455,5 +459,17 @@ public final class ExactPath {
         stageAcceleration[0] = probeAcceleration.x;
         stageAcceleration[1] = probeAcceleration.y;
         stageAcceleration[2] = probeAcceleration.z;
+    }
+
+    private static void putAll(StateSlab slab, double[] values) {
+        for (int i = 0; i < values.length; ++i) {
+            slab.putDouble(values[i]);
+        }
+    }
+
+    private static void getAll(StateSlab slab, double[] storeResult) {
+        for (int i = 0; i < storeResult.length; ++i) {
+            storeResult[i] = slab.getDouble();
+        }
     }
 }

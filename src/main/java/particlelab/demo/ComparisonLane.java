@@ -111,7 +111,7 @@ public final class ComparisonLane {
     /** Steps per call of the cost meter's workload: some microseconds. */
     private static final int COST_STEPS = 64;
     /** The record's size: flags, the state, the slide's, the path's time, the readouts. */
-    private static final int STATE_INTS = 2 + 12 + 6 + 2 * ExactPath.STATE_DOUBLES + 10 + 2;
+    private static final int STATE_INTS = 2 + 12 + 6 + ExactPath.STATE_INTS + 10 + 2;
     private static final Kind[] KINDS = Kind.values();
 
     private final Supplier<SlideCode> slideFactory;
@@ -132,8 +132,6 @@ public final class ComparisonLane {
     private final float[] modelCoefficients = new float[7];
     private final float[] coefficients = new float[7];
     private final Vector3f gravityNow = new Vector3f();
-    /** Scratch: the exact path's state, for the replay ring. */
-    private final double[] pathState = new double[ExactPath.STATE_DOUBLES];
     private final Vector3f scratchPosition = new Vector3f();
     private final Vector3f scratchVelocity = new Vector3f();
     /** The next step starts the lane from its sphere's launch state. */
@@ -641,10 +639,7 @@ public final class ComparisonLane {
                 }
                 slab.putVector(slide.position);
                 slab.putVector(slide.velocity);
-                exact.writeState(pathState);
-                for (int i = 0; i < pathState.length; ++i) {
-                    slab.putDouble(pathState[i]);
-                }
+                exact.writeState(slab);
                 slab.putDouble(laneDx);
                 slab.putDouble(laneDy);
                 slab.putDouble(followedDx);
@@ -664,10 +659,7 @@ public final class ComparisonLane {
                 }
                 slab.getVector(slide.position);
                 slab.getVector(slide.velocity);
-                for (int i = 0; i < pathState.length; ++i) {
-                    pathState[i] = slab.getDouble();
-                }
-                exact.readState(pathState);
+                exact.readState(slab);
                 laneDx = slab.getDouble();
                 laneDy = slab.getDouble();
                 followedDx = slab.getDouble();

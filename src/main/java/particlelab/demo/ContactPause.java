@@ -39,6 +39,8 @@ final class ContactPause implements ContactListener {
     private int moreContacts;
     /** The world's step count during the step that paused. */
     private long pausedStep;
+    /** The world that resolved the contact (null before the first). */
+    private World pausedWorld;
     private KeyBinding key;
     private KeyBinding pauseKey;
 
@@ -88,12 +90,14 @@ final class ContactPause implements ContactListener {
     }
 
     /**
-     * Test whether the clock stands at the step of the contact that paused it.
+     * Test whether the clock stands at the step of the contact that paused it: not after a
+     * step back (Home, the timeline) to another recorded step, whose HUD must not describe
+     * it.
      *
-     * @return true if paused at a contact
+     * @return true if paused at a contact, that step shown
      */
     boolean isAtContact() {
-        return atContact && clock.isPaused();
+        return atContact && clock.isPaused() && pausedWorld.getStepCount() == pausedStep + 1L;
     }
 
     /** A step begins: the clock has left the contact's step (resumed or single-stepped). */
@@ -140,6 +144,7 @@ final class ContactPause implements ContactListener {
             atContact = true;
             moreContacts = 0;
             pausedStep = world.getStepCount();
+            pausedWorld = world;
             describe(contact);
             clock.setPaused(true);
         } else if (atContact && world.getStepCount() == pausedStep) {

@@ -128,8 +128,10 @@ public abstract class DemoState extends BaseAppState {
     private final List<StateRecord> stateRecords = new ArrayList<>();
     /**
      * The demo's whole state, one ring entry: t and each particle's P and V first (what the
-     * export of the recorded span reads), then the world, each particle's own counters, and
-     * the declared records in the order declared.
+     * export of the recorded span reads), then the world, each particle's own counters, the
+     * declared records in the order declared, and what the views show of the state: the
+     * exact ghosts (their paths, readouts and the graph's last sample) and how many shots
+     * were kept, so a step back shows them as they were at that step.
      */
     private final StateRecord wholeState = new StateRecord() {
         @Override
@@ -139,7 +141,7 @@ public abstract class DemoState extends BaseAppState {
             for (int i = 0; i < stateRecords.size(); ++i) {
                 ints += stateRecords.get(i).countStateInts();
             }
-            return ints;
+            return ints + ghosts.countStateInts() + 1;
         }
 
         @Override
@@ -156,6 +158,8 @@ public abstract class DemoState extends BaseAppState {
             for (int i = 0; i < stateRecords.size(); ++i) {
                 stateRecords.get(i).writeState(slab);
             }
+            ghosts.writeState(slab);
+            slab.putInt(parameterControls.countKeptShots());
         }
 
         @Override
@@ -171,6 +175,8 @@ public abstract class DemoState extends BaseAppState {
             for (int i = 0; i < stateRecords.size(); ++i) {
                 stateRecords.get(i).readState(slab);
             }
+            ghosts.readState(slab);
+            parameterControls.showKeptShotsUpTo(slab.getInt());
         }
     };
     private final Replay replay = new Replay(new StateRing(), wholeState, clock, world,
@@ -1157,6 +1163,8 @@ public abstract class DemoState extends BaseAppState {
      */
     public void advance(float tpf) {
         advancePhysics(tpf);
+        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
+        replay.updateFrameBlend(isSceneOver());
         afterFrame();
         world.getImpacts().clear();
         scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));

@@ -13,9 +13,12 @@ import particlelab.view.HudLayout;
 import particlelab.view.LiveGraph;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.view.Trail;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.World;
 
 /**
@@ -49,9 +52,24 @@ import particlelab.world.World;
  * hit), and the particle's line then gives the distance at that moment and says the ghost
  * stopped there; after a bounce there is no single exact path to compare with.
  *
+ * <p>A step back (Home, End, the timeline) shows the ghosts as they were at the step shown:
+ * their paths, the Euler apexes, the contact stops and the graph's last sample are part of
+ * the demo's recorded state ({@link StateRecord}), so the HUD's readouts and the graph's end
+ * are those of that step; the ghosts' trails lose the points of the steps undone (a step
+ * redone adds the ghost's position), and the graph draws only its samples before the step
+ * shown ({@link LiveGraph#showEnd}).
+ *
  * <p>Per step and per frame this allocates nothing.
  */
-final class ExactGhosts {
+final class ExactGhosts implements StateRecord {
+
+    /**
+     * The ints of one particle's ghost in the recorded state: its path, the Euler apex
+     * (float, double, boolean), the launch x, the contact flags and distance, the graph's
+     * four values, and the trail's count of points and of restarts.
+     */
+    private static final int GHOST_STATE_INTS = ExactPath.STATE_INTS + 1 + 2 + 1 + 1 + 1 + 1 + 2
+            + 4 + 2 + 1;
 
     /** The ghost's trail gets a point at least this often (in seconds of its flight). */
     static final double GHOST_POINT_SECONDS = 1.0 / 60.0;
@@ -88,6 +106,11 @@ final class ExactGhosts {
     private LiveGraph graph;
     private final Node graphNode = new Node("live graph holder");
     private float graphSeconds;
+    /** The graph's flight ({@link LiveGraph#getFlight()}) the state shown belongs to. */
+    private int graphFlight;
+    /** Per ghost: the points its trail was given, and its restarts, ever (for a step back). */
+    private long[] trailPoints = new long[0];
+    private int[] trailRestarts = new int[0];
     private float[] eulerHeights = new float[0];
     private float[] eulerSpeeds = new float[0];
     private float[] exactHeights = new float[0];
@@ -147,6 +170,8 @@ final class ExactGhosts {
         eulerSpeeds = new float[count];
         exactHeights = new float[count];
         exactSpeeds = new float[count];
+        trailPoints = new long[count];
+        trailRestarts = new int[count];
         ColorRGBA[] colors = new ColorRGBA[count];
         for (int i = 0; i < count; ++i) {
             DemoParticle particle = particles.get(i);
@@ -188,6 +213,8 @@ final class ExactGhosts {
         paths[index].start(particle.position, particle.velocity, particle.getMass(),
                 demoParticle.stopsAtGround());
         views[index].restart(particle.position);
+        trailPoints[index] = 0L;
+        ++trailRestarts[index];
         eulerApexHeight[index] = particle.position.y;
         eulerApexSeconds[index] = 0.0;
         eulerPastApex[index] = !(particle.velocity.y > 0f);
@@ -196,7 +223,14 @@ final class ExactGhosts {
         stoppedAtContact[index] = false;
         contactError[index] = Double.NaN;
         graph.clear();
+        graphFlight = graph.getFlight();
         graphSeconds = 0f;
+        for (int i = 0; i < paths.length; ++i) {
+            eulerHeights[i] = Float.NaN;
+            eulerSpeeds[i] = Float.NaN;
+            exactHeights[i] = Float.NaN;
+            exactSpeeds[i] = Float.NaN;
+        }
     }
 
     /**
@@ -217,6 +251,12 @@ final class ExactGhosts {
     void afterStep(float stepSeconds) {
         if (!enabled || paths.length == 0) {
             return;
+        }
+        if (graphFlight != graph.getFlight()) {
+            // A step from a state shown before the last launch: its flight's samples are
+            // gone, so the graph starts again here.
+            graph.clear();
+            graphFlight = graph.getFlight();
         }
         graphSeconds += stepSeconds;
         for (int i = 0; i < paths.length; ++i) {
@@ -272,6 +312,92 @@ final class ExactGhosts {
             graph.layOut(slot, layout.getSceneLabelSize());
         }
         graph.refresh();
+    }
+
+    /**
+     * Count the ints {@link #writeState} writes: a count and the graph's time until the
+     * ghosts are built.
+     *
+     * @return the count (&ge;2)
+     */
+    @Override
+    public int countStateInts() {
+        return paths.length == 0 ? 2 : 3 + paths.length * GHOST_STATE_INTS;
+    }
+
+    /**
+     * Write the ghosts' state: each path, the Euler apex, the contact stop, the graph's last
+     * sample and the trail's counts. Allocates nothing.
+     *
+     * @param slab where to write (not null, modified)
+     */
+    @Override
+    public void writeState(StateSlab slab) {
+        slab.putInt(paths.length);
+        slab.putFloat(graphSeconds);
+        if (paths.length == 0) {
+            return;
+        }
+        slab.putInt(graphFlight);
+        for (int i = 0; i < paths.length; ++i) {
+            paths[i].writeState(slab);
+            slab.putFloat(eulerApexHeight[i]);
+            slab.putDouble(eulerApexSeconds[i]);
+            slab.putBoolean(eulerPastApex[i]);
+            slab.putFloat(launchX[i]);
+            slab.putBoolean(contactThisStep[i]);
+            slab.putBoolean(stoppedAtContact[i]);
+            slab.putDouble(contactError[i]);
+            slab.putFloat(eulerHeights[i]);
+            slab.putFloat(eulerSpeeds[i]);
+            slab.putFloat(exactHeights[i]);
+            slab.putFloat(exactSpeeds[i]);
+            slab.putLong(trailPoints[i]);
+            slab.putInt(trailRestarts[i]);
+        }
+    }
+
+    /**
+     * Put the ghosts' state back: the paths and readouts as they were, the trails walked to
+     * the step shown, the graph ending at its sample. A state written before the ghosts were
+     * built is skipped. Allocates nothing.
+     *
+     * @param slab where to read (not null, modified)
+     */
+    @Override
+    public void readState(StateSlab slab) {
+        int recorded = slab.getInt();
+        float recordedSeconds = slab.getFloat();
+        if (recorded != paths.length) {
+            for (int i = 0; i < (recorded == 0 ? 0 : 1 + recorded * GHOST_STATE_INTS); ++i) {
+                slab.getInt();
+            }
+            return;
+        }
+        graphSeconds = recordedSeconds;
+        if (paths.length == 0) {
+            return;
+        }
+        graphFlight = slab.getInt();
+        for (int i = 0; i < paths.length; ++i) {
+            paths[i].readState(slab);
+            eulerApexHeight[i] = slab.getFloat();
+            eulerApexSeconds[i] = slab.getDouble();
+            eulerPastApex[i] = slab.getBoolean();
+            launchX[i] = slab.getFloat();
+            contactThisStep[i] = slab.getBoolean();
+            stoppedAtContact[i] = slab.getBoolean();
+            contactError[i] = slab.getDouble();
+            eulerHeights[i] = slab.getFloat();
+            eulerSpeeds[i] = slab.getFloat();
+            exactHeights[i] = slab.getFloat();
+            exactSpeeds[i] = slab.getFloat();
+            long points = slab.getLong();
+            int restarts = slab.getInt();
+            walkTrail(i, points, restarts);
+        }
+        graph.showEnd(graphFlight, graphSeconds, eulerHeights, eulerSpeeds, exactHeights,
+                exactSpeeds);
     }
 
     /**
@@ -469,8 +595,35 @@ final class ExactGhosts {
         double piece = stepSeconds / pieces;
         for (int n = 0; n < pieces && !path.hasLanded(); ++n) {
             path.advance(piece);
-            views[index].getTrail().add(path.copyPosition(point));
+            addTrailPoint(index);
         }
+    }
+
+    /** Give a ghost's trail its path's position now, and count it. */
+    private void addTrailPoint(int index) {
+        views[index].getTrail().add(paths[index].copyPosition(point));
+        ++trailPoints[index];
+    }
+
+    /**
+     * Walk a ghost's trail to a recorded state's count of points: a step undone takes the
+     * points it added off; a step redone adds the ghost's position there (one point, where
+     * the step had added one per piece); a state of another launch starts the trail again at
+     * the ghost.
+     */
+    private void walkTrail(int index, long points, int restarts) {
+        Trail trail = views[index].getTrail();
+        if (restarts != trailRestarts[index]) {
+            views[index].restart(paths[index].copyPosition(point));
+        } else if (points < trailPoints[index]) {
+            for (long n = points; n < trailPoints[index] && trail.size() > 1; ++n) {
+                trail.removeNewest();
+            }
+        } else if (points > trailPoints[index]) {
+            trail.add(paths[index].copyPosition(point));
+        }
+        trailPoints[index] = points;
+        trailRestarts[index] = restarts;
     }
 
     /** Fly a ghost on to its own landing after its particle landed. */
@@ -479,7 +632,7 @@ final class ExactGhosts {
         double limit = path.getTimeSeconds() + MAX_FINISH_SECONDS;
         while (!path.hasLanded() && path.getTimeSeconds() < limit) {
             path.advance(GHOST_POINT_SECONDS);
-            views[index].getTrail().add(path.copyPosition(point));
+            addTrailPoint(index);
         }
     }
 

@@ -2,6 +2,7 @@ package particlelab.demo;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.material.Material;
+import com.jme3.scene.Spatial;
 import com.jme3.scene.Node;
 import java.util.List;
 import particlelab.view.ShotTrail;
@@ -12,6 +13,10 @@ import particlelab.view.Trail;
  * particle's trail is copied into a faint path and the parameter values it flew with are
  * remembered. Older shots fade; each is described by what differed from the launch now, e.g.
  * "h = 1/10 s vs 1/60 s". A key clears them. Keeping a shot allocates nothing.
+ *
+ * <p>How many shots were kept is part of the demo's recorded state: after a step back to
+ * before a launch ({@link #showUpTo}), the shots kept since are neither drawn nor listed; a
+ * step forward shows them again, and a launch from there replaces them (that future is gone).
  */
 final class KeptShots {
 
@@ -34,6 +39,8 @@ final class KeptShots {
     private int newest = -1;
     private int count;
     private int kept;
+    /** How many shots the state shown had kept: the later ones are hidden. */
+    private int shown;
 
     /**
      * Create the store.
@@ -93,6 +100,7 @@ final class KeptShots {
         if (particles == null || paths[0].length == 0 || !anyMoved()) {
             return;
         }
+        dropHidden();
         newest = (newest + 1) % SHOTS;
         for (int p = 0; p < paths[newest].length; ++p) {
             paths[newest][p].copyFrom(particles.get(p).view.getTrail());
@@ -100,6 +108,7 @@ final class KeptShots {
         System.arraycopy(launched, 0, values[newest], 0, launched.length);
         count = Math.min(count + 1, SHOTS);
         ++kept;
+        shown = kept;
         fade();
     }
 
@@ -114,14 +123,47 @@ final class KeptShots {
         newest = -1;
     }
 
+    /**
+     * Show the shots as a recorded state had them: those kept after it are hidden (a step
+     * back to before their launch), or shown again (a step forward). Allocates nothing.
+     *
+     * @param keptThen {@link #countKept()} in that state (&ge;0)
+     */
+    void showUpTo(int keptThen) {
+        int newShown = Math.max(0, Math.min(kept, keptThen));
+        if (newShown != shown) {
+            shown = newShown;
+            fade();
+        }
+    }
+
     /** @return how many shots are on screen (from 0 to {@link #SHOTS}) */
     int size() {
-        return count;
+        return Math.max(0, count - hiddenCount());
     }
 
     /** @return how many shots were kept since the demo started, cleared or not */
     int countKept() {
         return kept;
+    }
+
+    /**
+     * Count the kept paths drawn: holding points and not hidden.
+     *
+     * @return the count (&ge;0)
+     */
+    int countDrawnPaths() {
+        int drawn = 0;
+        for (int shot = 0; shot < paths.length; ++shot) {
+            for (int p = 0; p < paths[shot].length; ++p) {
+                ShotTrail path = paths[shot][p];
+                if (path.size() > 0
+                        && path.getGeometry().getCullHint() != Spatial.CullHint.Always) {
+                    ++drawn;
+                }
+            }
+        }
+        return drawn;
     }
 
     /**
@@ -132,7 +174,7 @@ final class KeptShots {
      * @return the live path (not null)
      */
     ShotTrail getPath(int age, int particle) {
-        return paths[ringIndex(age)][particle];
+        return paths[ringIndex(age + hiddenCount())][particle];
     }
 
     /**
@@ -144,14 +186,16 @@ final class KeptShots {
      * @return text
      */
     StringBuilder formatLegend(StringBuilder text, DemoParameters parameters) {
-        if (count == 0) {
+        int visible = size();
+        if (visible == 0) {
             return text;
         }
         parameters.copyValuesInScene(now);
         text.append("Kept shots (faint, newest brightest):");
-        for (int age = 0; age < count; ++age) {
+        for (int age = 0; age < visible; ++age) {
             text.append('\n').append(age + 1).append(".  ");
-            if (parameters.appendDifferences(text, values[ringIndex(age)], now) == 0) {
+            int slot = ringIndex(age + hiddenCount());
+            if (parameters.appendDifferences(text, values[slot], now) == 0) {
                 text.append("same values as now");
             }
         }
@@ -167,11 +211,41 @@ final class KeptShots {
         return false;
     }
 
+    /** The shots kept after the state shown: the newest ones, hidden. */
+    private int hiddenCount() {
+        return Math.min(count, kept - shown);
+    }
+
+    /** Forget the hidden shots: a launch from the state shown replaces them. */
+    private void dropHidden() {
+        int hidden = hiddenCount();
+        for (int age = 0; age < hidden; ++age) {
+            ShotTrail[] shot = paths[ringIndex(age)];
+            for (int p = 0; p < shot.length; ++p) {
+                shot[p].clear();
+                shot[p].getGeometry().setCullHint(Spatial.CullHint.Inherit);
+            }
+        }
+        newest = (newest - hidden + SHOTS) % SHOTS;
+        count -= hidden;
+        kept = shown;
+        if (count == 0) {
+            newest = -1;
+        }
+    }
+
+    /** Fade the shown shots by age, and hide those kept after the state shown. */
     private void fade() {
+        int hidden = hiddenCount();
         for (int age = 0; age < count; ++age) {
             ShotTrail[] shot = paths[ringIndex(age)];
             for (int p = 0; p < shot.length; ++p) {
-                shot[p].setOpacity(particles.get(p).getColor(), OPACITY[age]);
+                if (age < hidden) {
+                    shot[p].getGeometry().setCullHint(Spatial.CullHint.Always);
+                } else {
+                    shot[p].getGeometry().setCullHint(Spatial.CullHint.Inherit);
+                    shot[p].setOpacity(particles.get(p).getColor(), OPACITY[age - hidden]);
+                }
             }
         }
     }

@@ -164,6 +164,29 @@ final class ParameterControls {
     }
 
     /**
+     * Count the shots kept since the demo started, for the recorded state.
+     *
+     * @return the count (&ge;0; 0 before {@link #build})
+     */
+    int countKeptShots() {
+        return keptShots == null ? 0 : keptShots.countKept();
+    }
+
+    /**
+     * Show the kept shots as a recorded state had them (a step back or forward), the legend
+     * too. Allocates nothing.
+     *
+     * @param keptThen {@link #countKeptShots()} in that state (&ge;0)
+     */
+    void showKeptShotsUpTo(int keptThen) {
+        if (keptShots != null) {
+            int before = keptShots.size();
+            keptShots.showUpTo(keptThen);
+            legendDirty |= before != keptShots.size();
+        }
+    }
+
+    /**
      * Before a launch or a reset puts the particles at their launch states: keep the shot
      * that ends, then apply the values that waited for the launch. Allocates nothing.
      */

@@ -21,6 +21,8 @@ import particlelab.world.Contact;
 import particlelab.world.ContactListener;
 import particlelab.world.Detection;
 import particlelab.world.ScriptedResponse;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
 import particlelab.world.World;
@@ -262,6 +264,7 @@ public final class AnyHeightDemo extends DemoState {
         setView(-3f, MAX_DISTANCE + 3f, Math.max(top, GUN_HEIGHT + MAX_HEIGHT) + 2f, 2f, 5,
                 TARGET_RADIUS);
         hideArrowsAtStart();
+        addStateRecord(shotState());
         placeTarget();
         fire();
     }
@@ -477,6 +480,49 @@ public final class AnyHeightDemo extends DemoState {
         // The particle's flight time is counted after the step: here it is the step's start.
         shot.arrivalSeconds = shot.particle.getFlightSeconds()
                 + contact.getFraction() * (double) worldStep;
+    }
+
+    /**
+     * The shots' results and the refire timer, for the ring: after a step back the HUD says
+     * where each shot was at that step (in flight, arrived, came down), not where it is live.
+     */
+    private StateRecord shotState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 2 * (1 + 1 + 1 + 2) + 1 + 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                writeShot(slab, low);
+                writeShot(slab, high);
+                slab.putFloat(stoppedSeconds);
+                slab.putBoolean(refireDue);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                readShot(slab, low);
+                readShot(slab, high);
+                stoppedSeconds = slab.getFloat();
+                refireDue = slab.getBoolean();
+            }
+        };
+    }
+
+    private static void writeShot(StateSlab slab, Shot shot) {
+        slab.putBoolean(shot.fired);
+        slab.putBoolean(shot.arrived);
+        slab.putFloat(shot.arrivalHeight);
+        slab.putDouble(shot.arrivalSeconds);
+    }
+
+    private static void readShot(StateSlab slab, Shot shot) {
+        shot.fired = slab.getBoolean();
+        shot.arrived = slab.getBoolean();
+        shot.arrivalHeight = slab.getFloat();
+        shot.arrivalSeconds = slab.getDouble();
     }
 
     /** The continuous parabola at an angle, from the muzzle to the target's distance. */

@@ -20,6 +20,8 @@ import particlelab.world.Body;
 import particlelab.world.Detection;
 import particlelab.world.HopCycle;
 import particlelab.world.ImpulseResponse;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 import particlelab.world.SurfaceRule;
 
 /**
@@ -166,6 +168,7 @@ public final class BounceDemo extends DemoState {
             getWorld().addStepListener(recorders[lane]);
             addStateRecord(recorders[lane]);
         }
+        addStateRecord(graphState());
         applyResponse();
         // The balls hit the ground at 6 m/s and more: their arrows would cross the ground's
         // labels and the footer (the HUD gives V; V shows the arrows).
@@ -247,15 +250,7 @@ public final class BounceDemo extends DemoState {
         if (graph == null) {
             return;
         }
-        for (int lane = 0; lane < balls.length; ++lane) {
-            graphHeights[lane] = balls[lane].getPosition().y;
-            graphSpeeds[lane] = balls[lane].getVelocity().length();
-            // The ideal ball is drawn once, dashed, as the swept lane's exact curve.
-            idealHeights[lane] = Float.NaN;
-            idealSpeeds[lane] = Float.NaN;
-        }
-        idealHeights[SWEPT_LANE] = RADIUS + (float) ideal.height(graphSeconds);
-        idealSpeeds[SWEPT_LANE] = (float) ideal.speed(graphSeconds);
+        sampleGraph();
         graph.record(graphSeconds, graphHeights, graphSpeeds, idealHeights, idealSpeeds);
     }
 
@@ -615,5 +610,46 @@ public final class BounceDemo extends DemoState {
         TextFormat.appendFixed(readout, recorder.getApex(count - 1) / before, 3)
                 .append("   (e² = ");
         TextFormat.appendFixed(readout, e * e, 3).append(')');
+    }
+
+    /** The graph's sample of the state now: each ball's height and speed, the ideal ball's. */
+    private void sampleGraph() {
+        for (int lane = 0; lane < balls.length; ++lane) {
+            graphHeights[lane] = balls[lane].getPosition().y;
+            graphSpeeds[lane] = balls[lane].getVelocity().length();
+            // The ideal ball is drawn once, dashed, as the swept lane's exact curve.
+            idealHeights[lane] = Float.NaN;
+            idealSpeeds[lane] = Float.NaN;
+        }
+        idealHeights[SWEPT_LANE] = RADIUS + (float) ideal.height(graphSeconds);
+        idealSpeeds[SWEPT_LANE] = (float) ideal.speed(graphSeconds);
+    }
+
+    /**
+     * The graph's clock, for the ring: after a step back the graph ends at the step shown
+     * (its later samples are not drawn), and a step from there goes on at that time.
+     */
+    private StateRecord graphState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putFloat(graphSeconds);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                graphSeconds = slab.getFloat();
+                if (graph != null) {
+                    sampleGraph();
+                    graph.showEnd(graph.getFlight(), graphSeconds, graphHeights, graphSpeeds,
+                            idealHeights, idealSpeeds);
+                }
+            }
+        };
     }
 }

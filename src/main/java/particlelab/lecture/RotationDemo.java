@@ -112,6 +112,8 @@ public final class RotationDemo extends DemoState {
     private final Matrix3f[] orientations = new Matrix3f[METHODS.length];
     private final RotationIntegrator[] integrators = new RotationIntegrator[METHODS.length];
     private final BoxView[] views = new BoxView[METHODS.length];
+    /** Each box's R before the last step, for the views to draw between steps. */
+    private final Matrix3f[] previousOrientations = new Matrix3f[METHODS.length];
     private final Vector3f[] centres = new Vector3f[METHODS.length];
     /** Per box: the time since it started from the identity (s), for its exact rotation. */
     private final double[] elapsedSeconds = new double[METHODS.length];
@@ -224,7 +226,6 @@ public final class RotationDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        drawsRawSteps(); // its own views draw the physics steps, not the blend
         // No particles: the boxes are bodies at rest with no force, so the world only turns
         // them (the translation step leaves them where they are). A post names each box.
         ParticleIntegrator noForce = new ParticleIntegrator();
@@ -233,6 +234,7 @@ public final class RotationDemo extends DemoState {
             boxes[i] = new RigidBody(body.getParticle(), BOX_INERTIA);
             body.setRotation(boxes[i], integrators[i]);
             orientations[i] = boxes[i].orientation;
+            previousOrientations[i] = new Matrix3f(orientations[i]);
             boxes[i].angularVelocity.set(omega);
             spinAngles[i].start(orientations[i], omega);
             addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
@@ -318,6 +320,8 @@ public final class RotationDemo extends DemoState {
             ++plainRestarts;
             plainRestartSeconds = runSeconds;
         }
+        // What the views blend from: the boxes as this step starts.
+        keepPreviousOrientations();
     }
 
     @Override
@@ -360,6 +364,7 @@ public final class RotationDemo extends DemoState {
             elapsedSeconds[i] = 0.0;
             spinAngles[i].start(orientations[i], omega);
         }
+        keepPreviousOrientations();
         runSeconds = 0.0;
         plainRestartSeconds = Double.NaN;
         plainRestarts = 0;
@@ -395,11 +400,24 @@ public final class RotationDemo extends DemoState {
                 .put(RAD_TO_DEG * check.angleError(r, exact));
     }
 
+    /**
+     * Draw each box between its last two states, at this frame's blend (F6; 1 when paused,
+     * replaying or drawing raw steps).
+     */
     private void updateBoxes() {
+        float alpha = getDrawBlend();
         for (int i = 0; i < METHODS.length; ++i) {
             if (views[i] != null) {
-                views[i].update(orientations[i], centres[i]);
+                views[i].update(previousOrientations[i], centres[i], orientations[i],
+                        centres[i], alpha);
             }
+        }
+    }
+
+    /** Copy each box's R as the state the views blend from. Allocates nothing. */
+    private void keepPreviousOrientations() {
+        for (int i = 0; i < METHODS.length; ++i) {
+            previousOrientations[i].set(orientations[i]);
         }
     }
 
@@ -470,6 +488,8 @@ public final class RotationDemo extends DemoState {
                     spinAngles[i].setState(angles, 0);
                     tables[i].readState(slab);
                 }
+                // A step back: the views blend from the state put back, not a later one.
+                keepPreviousOrientations();
             }
         };
     }

@@ -4,6 +4,7 @@ import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
+import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Spatial;
 import particlelab.demo.DemoParticle;
@@ -77,6 +78,12 @@ public final class SpinThrowDemo extends DemoState {
     private final Vector3f corner = new Vector3f();
     private final Vector3f formulaCorner = new Vector3f();
     private final Vector3f formulaCentre = new Vector3f();
+    /** The box's R as the last step started, for the view to draw between steps. */
+    private final Matrix3f previousOrientation = new Matrix3f();
+    /** Scratch: the centre as the last step started (m). */
+    private final Vector3f previousCentre = new Vector3f();
+    /** The points each trail was given since the last restart (one per step moved). */
+    private long trailPoints;
     private DemoParticle centre;
     private RigidBody body;
     private BoxView box;
@@ -88,6 +95,7 @@ public final class SpinThrowDemo extends DemoState {
                 centreTrail.add(body.getParticle().position);
                 cornerTrail.add(body.bodyToWorld(CORNER, corner));
                 formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
+                ++trailPoints;
             }
         }
     };
@@ -114,6 +122,15 @@ public final class SpinThrowDemo extends DemoState {
      */
     public RigidBody getBody() {
         return body;
+    }
+
+    /**
+     * Access the box's view.
+     *
+     * @return the live view (null before the window)
+     */
+    public BoxView getBoxView() {
+        return box;
     }
 
     /**
@@ -200,7 +217,6 @@ public final class SpinThrowDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        drawsRawSteps(); // its own views draw the physics steps, not the blend
         centre = addParticle("centre", new ColorRGBA(1f, 0.85f, 0.35f, 1f), LAUNCH_POSITION,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(new Gravity(), drag))
                 .stopAtGround();
@@ -255,6 +271,12 @@ public final class SpinThrowDemo extends DemoState {
     }
 
     @Override
+    protected void beforeStep(float stepSeconds) {
+        // What the view blends from: the box as this step starts.
+        previousOrientation.set(body.orientation);
+    }
+
+    @Override
     protected void afterStep(float stepSeconds) {
         if (!centre.wasSteppedThisStep()) {
             return;
@@ -283,6 +305,7 @@ public final class SpinThrowDemo extends DemoState {
             cornerTrail.add(body.bodyToWorld(CORNER, corner));
             formulaTrail.add(formulaCorner(0.0, formulaCorner));
         }
+        trailPoints = 0L;
         updateViews();
     }
 
@@ -340,6 +363,7 @@ public final class SpinThrowDemo extends DemoState {
 
     private void resetRotation() {
         body.orientation.loadIdentity();
+        previousOrientation.loadIdentity();
         body.angularVelocity.set(0f, 0f, SPIN);
         body.torque.set(0f, 0f, TORQUES[torqueChoice]);
         measuredAngle = 0.0;
@@ -347,21 +371,51 @@ public final class SpinThrowDemo extends DemoState {
         spinSeconds = 0.0;
     }
 
+    /**
+     * Draw the box between its last two states, at this frame's blend (F6; 1 when paused,
+     * replaying or drawing raw steps), and the trails.
+     */
     private void updateViews() {
         if (box != null) {
-            box.update(body.orientation, body.getParticle().position);
+            box.update(previousOrientation, centre.getBody().copyPreviousPosition(
+                    previousCentre), body.orientation, body.getParticle().position,
+                    getDrawBlend());
             centreTrail.refresh();
             cornerTrail.refresh();
             formulaTrail.refresh();
         }
     }
 
-    /** The demo's own state, for the ring: the angle measured so far and for how long. */
+    /**
+     * Walk the trails to a recorded state's count of points: a step undone takes its point
+     * off each, a step redone adds the points of the state put back (the same ones the step
+     * had added).
+     */
+    private void walkTrails(long points) {
+        if (cornerTrail != null) {
+            for (long n = points; n < trailPoints && centreTrail.size() > 1; ++n) {
+                centreTrail.removeNewest();
+                cornerTrail.removeNewest();
+                formulaTrail.removeNewest();
+            }
+            for (long n = trailPoints; n < points; ++n) {
+                centreTrail.add(body.getParticle().position);
+                cornerTrail.add(body.bodyToWorld(CORNER, corner));
+                formulaTrail.add(formulaCorner(spinSeconds, formulaCorner));
+            }
+        }
+        trailPoints = points;
+    }
+
+    /**
+     * The demo's own state, for the ring: the angle measured so far and for how long, and the
+     * trails' count of points (so a step back takes the later points off).
+     */
     private StateRecord spinState() {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return 3 * 2;
+                return 4 * 2;
             }
 
             @Override
@@ -369,6 +423,7 @@ public final class SpinThrowDemo extends DemoState {
                 slab.putDouble(measuredAngle);
                 slab.putDouble(lastAtan);
                 slab.putDouble(spinSeconds);
+                slab.putLong(trailPoints);
             }
 
             @Override
@@ -376,6 +431,8 @@ public final class SpinThrowDemo extends DemoState {
                 measuredAngle = slab.getDouble();
                 lastAtan = slab.getDouble();
                 spinSeconds = slab.getDouble();
+                walkTrails(slab.getLong());
+                previousOrientation.set(body.orientation);
             }
         };
     }

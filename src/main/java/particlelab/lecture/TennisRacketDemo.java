@@ -101,6 +101,8 @@ public final class TennisRacketDemo extends DemoState {
     private int shown = BOTH;
     private double elapsedSeconds;
     private final BoxView[] views = new BoxView[METHODS.length];
+    /** Each racket's R as the last step started, for the views to draw between steps. */
+    private final Matrix3f[] previousOrientations = new Matrix3f[METHODS.length];
     private KeyBinding methodKey;
     private KeyBinding gyroscopicKey;
 
@@ -114,6 +116,16 @@ public final class TennisRacketDemo extends DemoState {
                     RotationIntegrator.Orientation.EXACT, METHODS[i], false);
         }
         tilt.fromAngleNormalAxis(TILT, Vector3f.UNIT_X);
+    }
+
+    /**
+     * Access the view of the racket stepped by one method.
+     *
+     * @param method 0 for explicit Euler, 1 for implicit midpoint
+     * @return the live view (null before the window)
+     */
+    public BoxView getView(int method) {
+        return views[method];
     }
 
     /**
@@ -214,7 +226,6 @@ public final class TennisRacketDemo extends DemoState {
 
     @Override
     protected void createScene() {
-        drawsRawSteps(); // its own views draw the physics steps, not the blend
         // One body per method, with no force and at rest: the world steps only its rotation
         // (the translation step leaves a body at rest where it is). A post names each.
         ParticleIntegrator noForce = new ParticleIntegrator();
@@ -222,6 +233,7 @@ public final class TennisRacketDemo extends DemoState {
             worldBodies[i] = getWorld().addBody(noForce, centres[i], Vector3f.ZERO, 1f, 0f);
             bodies[i] = new RigidBody(worldBodies[i].getParticle(), INERTIA);
             worldBodies[i].setRotation(bodies[i], rotationStep(i));
+            previousOrientations[i] = new Matrix3f();
             addMarker(NAMES[i], centres[i].x, POST_HEIGHT, COLORS[i]);
         }
         resetBodies();
@@ -304,6 +316,12 @@ public final class TennisRacketDemo extends DemoState {
     }
 
     @Override
+    protected void beforeStep(float stepSeconds) {
+        // What the views blend from: the plates as this step starts.
+        keepPreviousOrientations();
+    }
+
+    @Override
     protected void afterStep(float stepSeconds) {
         // The world turned both plates; this only watches body-frame ωy change sign.
         elapsedSeconds += stepSeconds;
@@ -353,6 +371,14 @@ public final class TennisRacketDemo extends DemoState {
             flips[i] = 0;
             positiveWy[i] = BODY_SPIN.y > 0f;
         }
+        keepPreviousOrientations();
+    }
+
+    /** Copy each racket's R as the state the views blend from. Allocates nothing. */
+    private void keepPreviousOrientations() {
+        for (int i = 0; i < METHODS.length; ++i) {
+            previousOrientations[i].set(bodies[i].orientation);
+        }
     }
 
     private RotationIntegrator rotationStep(int method) {
@@ -376,10 +402,16 @@ public final class TennisRacketDemo extends DemoState {
         updateView();
     }
 
+    /**
+     * Draw each racket between its last two states, at this frame's blend (F6; 1 when
+     * paused, replaying or drawing raw steps).
+     */
     private void updateView() {
+        float alpha = getDrawBlend();
         for (int i = 0; i < METHODS.length; ++i) {
             if (views[i] != null) {
-                views[i].update(bodies[i].orientation, centres[i]);
+                views[i].update(previousOrientations[i], centres[i], bodies[i].orientation,
+                        centres[i], alpha);
             }
         }
     }
@@ -414,6 +446,8 @@ public final class TennisRacketDemo extends DemoState {
                         flipTimes[i][k] = slab.getDouble();
                     }
                 }
+                // A step back: the views blend from the state put back, not a later one.
+                keepPreviousOrientations();
             }
         };
     }

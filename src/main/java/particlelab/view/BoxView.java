@@ -20,6 +20,10 @@ import java.nio.ShortBuffer;
  * step; this view shows R as it is, so a matrix that has grown or sheared draws a box that has
  * grown or sheared.
  *
+ * <p>Between two physics steps it may draw the blend of the two states
+ * ({@link #update(Matrix3f, Vector3f, Matrix3f, Vector3f, float)}): the centre by
+ * {@code P_prev + α·(P − P_prev)}, R by an {@link OrientationBlend}, so slow motion is smooth.
+ *
  * <p>The mesh's buffers are allocated once; {@link #update} writes them in place and
  * allocates nothing. The front face (body +z) and the back face (body −z) have colours of
  * their own, so a box that turns over shows it.
@@ -44,6 +48,10 @@ public final class BoxView {
     private final VertexBuffer positionBuffer;
     private final VertexBuffer normalBuffer;
     private final Geometry geometry;
+    /** Scratch: the blended orientation and centre between two steps. */
+    private final OrientationBlend orientationBlend = new OrientationBlend();
+    private final Matrix3f drawnOrientation = new Matrix3f();
+    private final Vector3f drawnCentre = new Vector3f();
 
     /**
      * Create a box view, at the origin with the identity orientation.
@@ -160,6 +168,29 @@ public final class BoxView {
         normals.rewind();
         positionBuffer.updateData(positions);
         normalBuffer.updateData(normals);
+    }
+
+    /**
+     * Draw the box between two physics states, at {@code α = leftover / h}: the centre at
+     * {@code P_prev + α·(P − P_prev)}, the orientation by {@link OrientationBlend} (α = 1:
+     * the state after the step, exactly as {@link #update(Matrix3f, Vector3f)}). Allocates
+     * nothing.
+     *
+     * @param previousR R before the last step (not null, not modified)
+     * @param previousCentre P before the last step (in metres, not null, not modified)
+     * @param r R after it (not null, not modified)
+     * @param centre P after it (in metres, not null, not modified)
+     * @param alpha the blend (0 to 1; clamped)
+     */
+    public void update(Matrix3f previousR, Vector3f previousCentre, Matrix3f r,
+            Vector3f centre, float alpha) {
+        if (alpha >= 1f) {
+            update(r, centre);
+            return;
+        }
+        float a = Math.max(0f, alpha);
+        drawnCentre.set(previousCentre).interpolateLocal(centre, a);
+        update(orientationBlend.blend(previousR, r, a, drawnOrientation), drawnCentre);
     }
 
     /**

@@ -26,6 +26,12 @@ import java.util.List;
  * dropped and only every second step is recorded, and so on (the time axis keeps starting at
  * 0). The axes run from 0 (or the lowest height) to a round number above the largest value
  * (1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten), and only grow until the next clear.
+ *
+ * <p>The curves end at the graph's end sample: the newest offered ({@link #record}), kept or
+ * skipped by the thinning, or the one of a recorded step shown after a step back
+ * ({@link #showEnd}): then only the samples before its time are drawn, so the curves end at
+ * the step shown; the later samples stay in the buffer for a step forward, and the next
+ * {@link #record} drops those at or after its time (that future is gone).
  * {@link #refresh} writes the curves into preallocated line meshes; only a change of an axis's
  * range sets the labels' text ({@link HudText}s, rewritten in place).
  */
@@ -74,6 +80,14 @@ public final class LiveGraph {
     private final float[] times = new float[CAPACITY];
     private final float[] values;
     private int count;
+    /** The end sample: its time (s) and values (as one sample of {@link #values}). */
+    private float endTime;
+    private final float[] endValues;
+    private boolean hasEnd;
+    /** Which flight the buffer holds: counted up by every {@link #clear}. */
+    private int flight;
+    /** The end shown is of another flight than the buffer's: no buffered sample is drawn. */
+    private boolean endOfOtherFlight;
     /** Record every stride-th sample offered; the rest are skipped. */
     private int stride = 1;
     private int skipped;
@@ -111,6 +125,7 @@ public final class LiveGraph {
         series = colors.length;
         measure = TextMeasure.of(font);
         values = new float[CAPACITY * series * VALUES];
+        endValues = new float[series * VALUES];
         Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
 
         Material shade = unshaded.clone();
@@ -143,7 +158,7 @@ public final class LiveGraph {
                 for (int kind = 0; kind < KINDS; ++kind) {
                     ColorRGBA c = colors[particle];
                     float lift = kind == 0 ? 0f : EXACT_LIGHTEN;
-                    for (int v = 0; v < (CAPACITY - 1) * 2; ++v) {
+                    for (int v = 0; v < CAPACITY * 2; ++v) {
                         curveColors.put(c.r + lift * (1f - c.r)).put(c.g + lift * (1f - c.g))
                                 .put(c.b + lift * (1f - c.b)).put(1f);
                     }
@@ -207,6 +222,9 @@ public final class LiveGraph {
      */
     public void clear() {
         count = 0;
+        ++flight;
+        hasEnd = false;
+        endOfOtherFlight = false;
         stride = 1;
         skipped = 0;
         maxTime = 0f;
@@ -226,10 +244,11 @@ public final class LiveGraph {
     }
 
     /**
-     * Offer one sample of every particle; it is kept or skipped as the buffer's thinning
-     * says. Allocates nothing.
+     * Offer one sample of every particle: the curves end at it; it is kept in the buffer or
+     * skipped as the buffer's thinning says. Buffered samples at or after its time are
+     * dropped first (a step back, and a new step from there). Allocates nothing.
      *
-     * @param seconds the time since the flight started (in seconds, &ge; the last sample's)
+     * @param seconds the time since the flight started (in seconds)
      * @param eulerHeights each particle's y (in metres, not null, one per particle)
      * @param eulerSpeeds each particle's |V| (in m/s, not null, one per particle)
      * @param exactHeights each exact ghost's y (in metres, not null, one per particle; NaN:
@@ -239,6 +258,13 @@ public final class LiveGraph {
      */
     public void record(float seconds, float[] eulerHeights, float[] eulerSpeeds,
             float[] exactHeights, float[] exactSpeeds) {
+        while (count > 0 && times[count - 1] >= seconds) {
+            // Samples of a future dropped by a step back and a new step from there.
+            --count;
+        }
+        setEnd(seconds, eulerHeights, eulerSpeeds, exactHeights, exactSpeeds);
+        endOfOtherFlight = false;
+        changed = true;
         if (count > 0 && skipped < stride - 1) {
             ++skipped;
             return;
@@ -255,13 +281,74 @@ public final class LiveGraph {
             values[at + 1] = eulerSpeeds[i];
             values[at + 2] = exactHeights[i];
             values[at + 3] = exactSpeeds[i];
-            minHeight = extent(minHeight, eulerHeights[i], exactHeights[i], false);
-            maxHeight = extent(maxHeight, eulerHeights[i], exactHeights[i], true);
-            maxSpeed = extent(maxSpeed, eulerSpeeds[i], exactSpeeds[i], true);
         }
         maxTime = Math.max(maxTime, seconds);
         ++count;
         changed = true;
+    }
+
+    /**
+     * End the curves at a recorded step's sample, shown after a step back or forward: only
+     * the buffered samples before its time are drawn (none if they are of another flight),
+     * then this one. Keeps the buffer. Allocates nothing.
+     *
+     * @param flightNumber the {@link #getFlight()} the sample was taken in
+     * @param seconds the sample's time since its flight started (in seconds)
+     * @param eulerHeights each particle's y (in metres, not null, one per particle)
+     * @param eulerSpeeds each particle's |V| (in m/s, not null, one per particle)
+     * @param exactHeights each exact ghost's y (in metres, not null, one per particle; NaN:
+     *     not drawn)
+     * @param exactSpeeds each exact ghost's |V| (in m/s, not null, one per particle; NaN: not
+     *     drawn)
+     */
+    public void showEnd(int flightNumber, float seconds, float[] eulerHeights,
+            float[] eulerSpeeds, float[] exactHeights, float[] exactSpeeds) {
+        setEnd(seconds, eulerHeights, eulerSpeeds, exactHeights, exactSpeeds);
+        endOfOtherFlight = flightNumber != flight;
+        changed = true;
+    }
+
+    /**
+     * Return which flight the buffer holds: a number counted up by every {@link #clear}.
+     *
+     * @return the number
+     */
+    public int getFlight() {
+        return flight;
+    }
+
+    /**
+     * Count the samples the curves are drawn through: the buffered ones before the end
+     * sample's time, and the end sample.
+     *
+     * @return the count (0 before the first sample, else from 1 to {@link #CAPACITY} + 1)
+     */
+    public int countDrawn() {
+        return hasEnd ? countBeforeEnd() + 1 : 0;
+    }
+
+    /**
+     * Return the time of the sample the curves end at.
+     *
+     * @return the time (in seconds; NaN before the first sample)
+     */
+    public float getEndTime() {
+        return hasEnd ? endTime : Float.NaN;
+    }
+
+    /**
+     * Return one value of the sample the curves end at.
+     *
+     * @param particle the particle (from 0)
+     * @param exact true for the exact ghost, false for the Euler particle
+     * @param speed true for |V| (m/s), false for y (m)
+     * @return the value (NaN before the first sample)
+     */
+    public float getEndValue(int particle, boolean exact, boolean speed) {
+        if (!hasEnd) {
+            return Float.NaN;
+        }
+        return endValues[particle * VALUES + (exact ? 2 : 0) + (speed ? 1 : 0)];
     }
 
     /**
@@ -376,6 +463,8 @@ public final class LiveGraph {
         }
         changed = false;
         updateAxes();
+        int buffered = countBeforeEnd();
+        int points = countDrawn();
         int segment = 0;
         for (int panel = 0; panel < PANELS; ++panel) {
             boolean speed = panel == 1;
@@ -385,15 +474,17 @@ public final class LiveGraph {
                 for (int kind = 0; kind < KINDS; ++kind) {
                     boolean exact = kind == 1;
                     float dash = 0f;
-                    for (int s = 0; s < CAPACITY - 1; ++s, ++segment) {
-                        if (s + 1 >= count) {
+                    for (int s = 0; s < CAPACITY; ++s, ++segment) {
+                        if (s + 1 >= points) {
                             writeSegment(segment, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
                             continue;
                         }
-                        float x0 = screenX(panel, times[s]);
-                        float x1 = screenX(panel, times[s + 1]);
-                        float y0 = screenY(getValue(s, particle, exact, speed), low, high);
-                        float y1 = screenY(getValue(s + 1, particle, exact, speed), low, high);
+                        float x0 = screenX(panel, drawnTime(s, buffered));
+                        float x1 = screenX(panel, drawnTime(s + 1, buffered));
+                        float y0 = screenY(drawnValue(s, buffered, particle, exact, speed),
+                                low, high);
+                        float y1 = screenY(drawnValue(s + 1, buffered, particle, exact, speed),
+                                low, high);
                         boolean drawn = (!exact || ((int) (dash / dashPixels) & 1) == 0)
                                 && !Float.isNaN(y0) && !Float.isNaN(y1);
                         if (exact) {
@@ -410,6 +501,50 @@ public final class LiveGraph {
         }
         curvePositions.rewind();
         curveBuffer.updateData(curvePositions);
+    }
+
+    /** Make a sample the end, and widen the extent to it. */
+    private void setEnd(float seconds, float[] eulerHeights, float[] eulerSpeeds,
+            float[] exactHeights, float[] exactSpeeds) {
+        endTime = seconds;
+        hasEnd = true;
+        for (int i = 0; i < series; ++i) {
+            int at = i * VALUES;
+            endValues[at] = eulerHeights[i];
+            endValues[at + 1] = eulerSpeeds[i];
+            endValues[at + 2] = exactHeights[i];
+            endValues[at + 3] = exactSpeeds[i];
+            minHeight = extent(minHeight, eulerHeights[i], exactHeights[i], false);
+            maxHeight = extent(maxHeight, eulerHeights[i], exactHeights[i], true);
+            maxSpeed = extent(maxSpeed, eulerSpeeds[i], exactSpeeds[i], true);
+        }
+        maxTime = Math.max(maxTime, seconds);
+    }
+
+    /** Count the buffered samples drawn: those before the end's time, of the end's flight. */
+    private int countBeforeEnd() {
+        if (endOfOtherFlight) {
+            return 0;
+        }
+        int n = count;
+        while (n > 0 && times[n - 1] >= endTime) {
+            --n;
+        }
+        return n;
+    }
+
+    /** The time of the i-th point drawn: a buffered sample's, or the end's. */
+    private float drawnTime(int point, int buffered) {
+        return point < buffered ? times[point] : endTime;
+    }
+
+    /** A value of the i-th point drawn: a buffered sample's, or the end's. */
+    private float drawnValue(int point, int buffered, int particle, boolean exact,
+            boolean speed) {
+        if (point < buffered) {
+            return getValue(point, particle, exact, speed);
+        }
+        return getEndValue(particle, exact, speed);
     }
 
     /** Widen an extent to two values, leaving out NaN (a value the graph does not draw). */
@@ -529,6 +664,6 @@ public final class LiveGraph {
     }
 
     private int segmentCount() {
-        return PANELS * series * KINDS * (CAPACITY - 1);
+        return PANELS * series * KINDS * CAPACITY;
     }
 }

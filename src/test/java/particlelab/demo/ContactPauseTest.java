@@ -71,6 +71,23 @@ class ContactPauseTest {
         assertEquals(rebound, bounce.getParticles().get(0).getParticle().velocity.y, 0f);
     }
 
+    /**
+     * After Home the HUD shows another step: it must not still describe the contact; End
+     * back to the contact's step shows it again.
+     */
+    @Test
+    void theContactLineIsShownOnlyAtTheContactsStep() {
+        BounceDemo bounce = new BounceDemo();
+        press(bounce, "Enter");
+        runUntilPaused(bounce, H);
+        assertTrue(hud(bounce).contains("PAUSED at contact: "), hud(bounce));
+        assertTrue(bounce.stepBack());
+        assertFalse(hud(bounce).contains("at contact"), hud(bounce));
+        bounce.stepForward();
+        assertFalse(bounce.isReplaying());
+        assertTrue(hud(bounce).contains("PAUSED at contact: "), hud(bounce));
+    }
+
     @Test
     void theHudNamesTheBodiesTheTimeAndTheApproachSpeed() {
         BounceDemo bounce = new BounceDemo();
