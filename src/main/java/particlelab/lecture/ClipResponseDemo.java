@@ -372,7 +372,7 @@ public final class ClipResponseDemo extends DemoState {
                 () -> aim(0f, ANGLE_STEP));
         bindKey(KeyInput.KEY_LEFT, "Left", "climb angle - 10 deg (down to 0), fire",
                 () -> aim(0f, -ANGLE_STEP));
-        bindKey(KeyInput.KEY_C, "C", "next clip for the clip lane (topple -> rebound), fire",
+        bindKey(KeyInput.KEY_P, "P", "next clip for the clip lane (topple -> rebound), fire",
                 this::nextClip);
         KeyBinding fire = bindKey(KeyInput.KEY_F, "F", "fire the same shot again in both lanes",
                 this::restart);
@@ -458,7 +458,7 @@ public final class ClipResponseDemo extends DemoState {
             TextFormat.appendFixed(text, momentumError(), DIGITS).append(" kg m/s, KE ");
             float energy = energyError();
             text.append(energy >= 0f ? "created +" : "lost ");
-            TextFormat.appendFixed(text, energy, DIGITS).append(" J\n");
+            TextFormat.appendFixed(text, Math.abs(energy), DIGITS).append(" J\n");
         }
         text.append("shots (latest last): v m/s, angle | |p| before | physics |p|, KE |"
                 + " clip |p|, KE\n");
