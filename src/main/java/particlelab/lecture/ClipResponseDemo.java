@@ -91,12 +91,14 @@ public final class ClipResponseDemo extends DemoState {
     static final int SHOT_ROWS = 4;
     /** Per shot: speed, angle, |p| before, physics |p|, clip |p|, physics KE, clip KE. */
     private static final int SHOT_FIELDS = 7;
-    /** The lanes' indexes in the body arrays. */
-    static final int PHYSICS_LANE = 0;
-    static final int CLIP_LANE = 1;
-    /** The bodies' indexes in a lane. */
-    static final int ROCKET = 0;
-    static final int TARGET = 1;
+    /** The physics lane's index in the body arrays and the lane arguments. */
+    public static final int PHYSICS_LANE = 0;
+    /** The clip lane's index. */
+    public static final int CLIP_LANE = 1;
+    /** The rocket's index in a lane. */
+    public static final int ROCKET = 0;
+    /** The target's index in a lane. */
+    public static final int TARGET = 1;
     private static final ColorRGBA ROCKET_COLOR = new ColorRGBA(1f, 0.55f, 0.15f, 1f);
     private static final ColorRGBA TARGET_COLOR = new ColorRGBA(0.3f, 0.75f, 1f, 1f);
     private static final Vector3f NO_GRAVITY = new Vector3f();
@@ -190,7 +192,7 @@ public final class ClipResponseDemo extends DemoState {
      * @param lane the lane
      * @return true once its rocket hit its target
      */
-    boolean hasHit(int lane) {
+    public boolean hasHit(int lane) {
         return lane == PHYSICS_LANE ? physicsHit : clipHit;
     }
 
@@ -251,7 +253,7 @@ public final class ClipResponseDemo extends DemoState {
      * @param lane the lane
      * @return {@code ½·m_r·v_r² + ½·m_t·v_t²} (in J)
      */
-    float energyAfter(int lane) {
+    public float energyAfter(int lane) {
         float rocket = copyVelocityAfter(lane, ROCKET, scratchVelocity).lengthSquared();
         float target = copyVelocityAfter(lane, TARGET, scratchVelocity).lengthSquared();
         return 0.5f * rocketKg * rocket + 0.5f * targetKg * target;
@@ -327,8 +329,8 @@ public final class ClipResponseDemo extends DemoState {
                 .limitTo(body(PHYSICS_LANE, TARGET)));
         getWorld().addContactListener(new Epilogue());
         addStateRecord(new Record());
-        addMarker("ledge: physics lane", PHYSICS_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
-        addMarker("ledge: clip lane", CLIP_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
+        addMarker("ledge", PHYSICS_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
+        addMarker("ledge", CLIP_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
         hideArrowsAtStart();
         setView(-9f, 9f, LEDGE_HEIGHT + 2.5f, 1f, 2, RADIUS);
     }
@@ -372,7 +374,7 @@ public final class ClipResponseDemo extends DemoState {
                 () -> aim(0f, ANGLE_STEP));
         bindKey(KeyInput.KEY_LEFT, "Left", "climb angle - 10 deg (down to 0), fire",
                 () -> aim(0f, -ANGLE_STEP));
-        bindKey(KeyInput.KEY_P, "P", "next clip for the clip lane (topple -> rebound), fire",
+        bindKey(KeyInput.KEY_P, "P", "the other clip in the clip lane (topple <-> rebound), fire",
                 this::nextClip);
         KeyBinding fire = bindKey(KeyInput.KEY_F, "F", "fire the same shot again in both lanes",
                 this::restart);
@@ -381,11 +383,10 @@ public final class ClipResponseDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("physics lane: j = (1+e) v_n / (1/m_r + 1/m_t), V_r -= (j/m_r) n,"
-                + " V_t += (j/m_t) n, then a = g;   e = ");
-        TextFormat.appendFixed(text, impulse.getRestitution(), 1).append('\n');
-        text.append("clip lane: kinematic, P = P_contact + key(t - t_contact), linear between"
-                + " keys (").append(clips[clipIndex].getName()).append(")\n");
+        text.append("physics: j = (1+e) v_n / (1/m_r + 1/m_t), then a = g, e = ");
+        TextFormat.appendFixed(text, impulse.getRestitution(), 1)
+                .append(";   clip: kinematic, P = P_contact + key(t - t_contact) (")
+                .append(clips[clipIndex].getName()).append(")\n");
     }
 
     @Override
