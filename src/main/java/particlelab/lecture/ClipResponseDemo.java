@@ -73,20 +73,28 @@ public final class ClipResponseDemo extends DemoState {
     static final float START_SPEED = 12f;
     /** The speed keys' change (in m/s). */
     static final float SPEED_STEP = 4f;
+    /** The slowest shot (in m/s). */
     static final float MIN_SPEED = 4f;
+    /** The fastest shot (in m/s). */
     static final float MAX_SPEED = 40f;
     /** The angle keys' change (in degrees). */
     static final float ANGLE_STEP = 10f;
+    /** The steepest climb (in degrees); 0 is level. */
     static final float MAX_ANGLE = 30f;
     /** Restitution e of the rocket-target impulse at the start. */
     static final float START_E = 0.5f;
+    /** The rocket's mass at the start (in kg). */
     static final float START_ROCKET_KG = 1f;
+    /** The target's mass at the start (in kg). */
     static final float START_TARGET_KG = 2f;
     /** The physics lane's ground: e = 0.3 with the resting fix, so the bodies come to rest. */
     private static final float GROUND_E = 0.3f;
     /** The lanes' collision groups: a lane's bodies touch each other, never the other's. */
     private static final int PHYSICS_GROUP = 2;
+    /** The clip lane's collision group (a bit). */
     private static final int CLIP_GROUP = 4;
+    /** The clips' track names, in body order ({@link #ROCKET}, {@link #TARGET}). */
+    private static final String[] TRACKS = {"rocket", "target"};
     /** The rows of the shots table. */
     static final int SHOT_ROWS = 4;
     /** Per shot: speed, angle, |p| before, physics |p|, clip |p|, physics KE, clip KE. */
@@ -99,30 +107,46 @@ public final class ClipResponseDemo extends DemoState {
     public static final int ROCKET = 0;
     /** The target's index in a lane. */
     public static final int TARGET = 1;
+    /** The rockets' colour, both lanes. */
     private static final ColorRGBA ROCKET_COLOR = new ColorRGBA(1f, 0.55f, 0.15f, 1f);
+    /** The targets' colour, both lanes. */
     private static final ColorRGBA TARGET_COLOR = new ColorRGBA(0.3f, 0.75f, 1f, 1f);
+    /** g while a motor or a ledge holds a body (m/s², never modified). */
     private static final Vector3f NO_GRAVITY = new Vector3f();
+    /** g once a physics body is free (m/s², never modified). */
     private static final Vector3f DOWN_G = new Vector3f(0f, -Gravity.STANDARD_G, 0f);
     /** The HUD's digits for velocities, momenta and energies. */
     private static final int DIGITS = 2;
 
+    /** The clips, in the order of {@link #CLIP_NAMES}. */
     private final Clip[] clips = new Clip[CLIP_NAMES.length];
+    /** [clip][body]: the body's track in the clip. */
+    private final int[][] tracks = new int[CLIP_NAMES.length][TRACKS.length];
     /** [lane][body]. */
     private final DemoParticle[][] spheres = new DemoParticle[2][2];
     /** [lane][body]: each body's own g, 0 until it is free (hit), g after in physics. */
     private final Gravity[][] gravities = new Gravity[2][2];
     /** The physics lane's rocket-target impulse. */
     private final ImpulseResponse impulse = new ImpulseResponse(START_E, 0f, false);
+    /** The clip lane's contact: both bodies stopped and handed to the clip. */
     private final ContactResponse clipStart = ScriptedResponse.clip();
+    /** The rocket-target rule of both lanes. */
     private SphereRule pairRule;
+    /** The shot's speed (in m/s). */
     private float speed = START_SPEED;
+    /** The shot's climb angle (in degrees). */
     private float angleDegrees;
+    /** The clip the clip lane plays (index into {@link #clips}). */
     private int clipIndex;
+    /** The rockets' mass (in kg). */
     private float rocketKg = START_ROCKET_KG;
+    /** The targets' mass (in kg). */
     private float targetKg = START_TARGET_KG;
-    // ---- the state a step changes (the StateRecord) ----
+    /** The physics lane's rocket has hit (state a step changes, as those below). */
     private boolean physicsHit;
+    /** The clip lane's rocket has hit: its clip plays. */
     private boolean clipHit;
+    /** This shot's row is in the shots table. */
     private boolean shotRecorded;
     /** The clip lane's contact time (in seconds of the world). */
     private double clipStartSeconds;
@@ -132,11 +156,15 @@ public final class ClipResponseDemo extends DemoState {
     private final Vector3f[] physicsAfter = {new Vector3f(), new Vector3f()};
     /** The shots table, a ring of {@link #SHOT_ROWS} rows. */
     private final float[] shots = new float[SHOT_ROWS * SHOT_FIELDS];
+    /** The shots recorded since the demo was created. */
     private int shotCount;
-    // ---- scratch ----
+    /** Scratch: a position (m). */
     private final Vector3f scratchPosition = new Vector3f();
+    /** Scratch: a velocity (m/s). */
     private final Vector3f scratchVelocity = new Vector3f();
+    /** Scratch: a momentum (kg·m/s). */
     private final Vector3f scratchMomentum = new Vector3f();
+    /** Scratch: the other side of a difference (m/s or kg·m/s). */
     private final Vector3f scratchOther = new Vector3f();
 
     /** Create the demo; read its clips (a bad clip file is refused, naming line and value). */
@@ -144,10 +172,11 @@ public final class ClipResponseDemo extends DemoState {
         super("Clip vs physics");
         for (int i = 0; i < CLIP_NAMES.length; ++i) {
             clips[i] = ClipReader.readResource("clips/" + CLIP_NAMES[i] + ".clip");
-            for (String track : new String[] {"rocket", "target"}) {
-                if (clips[i].indexOf(track) < 0) {
+            for (int b = 0; b < TRACKS.length; ++b) {
+                tracks[i][b] = clips[i].indexOf(TRACKS[b]);
+                if (tracks[i][b] < 0) {
                     throw new IllegalArgumentException("clip " + clips[i].getName()
-                            + " has no track '" + track + "' (it needs rocket and target)");
+                            + " has no track '" + TRACKS[b] + "' (it needs rocket and target)");
                 }
             }
         }
@@ -209,9 +238,7 @@ public final class ClipResponseDemo extends DemoState {
         if (lane == PHYSICS_LANE) {
             return storeResult.set(physicsAfter[which]);
         }
-        Clip clip = clips[clipIndex];
-        return clip.copyStartVelocity(clip.indexOf(which == ROCKET ? "rocket" : "target"),
-                storeResult);
+        return clips[clipIndex].copyStartVelocity(tracks[clipIndex][which], storeResult);
     }
 
     /**
@@ -399,8 +426,8 @@ public final class ClipResponseDemo extends DemoState {
         double clipSeconds = getWorld().getTimeSeconds() + stepSeconds - clipStartSeconds;
         for (int b = 0; b < 2; ++b) {
             Body body = body(CLIP_LANE, b);
-            clip.copyOffset(b == ROCKET ? clip.indexOf("rocket") : clip.indexOf("target"),
-                    clipSeconds, scratchPosition).addLocal(clipOrigins[b]);
+            clip.copyOffset(tracks[clipIndex][b], clipSeconds, scratchPosition)
+                    .addLocal(clipOrigins[b]);
             body.getVelocity().set(scratchPosition).subtractLocal(body.getPosition())
                     .divideLocal(stepSeconds);
         }

@@ -64,7 +64,8 @@ class ClipReaderTest {
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
-        "0 rocket 0 0 0\\n0.5 rocket one 0 0 | line 2: x 'one' must be a number from -1000 to 1000 m",
+        "0 rocket 0 0 0\\n0.5 rocket one 0 0"
+                + " | line 2: x 'one' must be a number from -1000 to 1000 m",
         "0 rocket 0 0 0\\n0.5 rocket 1 0 | line 2: expected 5 fields (t track x y z), but found 4",
         "0 rocket 0 0 0\\n0.5 rocket 1 0 0\\n0.5 rocket 2 0 0"
                 + " | line 3: time t = 0.5 s of track rocket must be later than its previous key",
