@@ -95,10 +95,10 @@ public final class ClipResponseDemo extends DemoState {
     private static final int CLIP_GROUP = 4;
     /** The clips' track names, in body order ({@link #ROCKET}, {@link #TARGET}). */
     private static final String[] TRACKS = {"rocket", "target"};
-    /** The rows of the shots table. */
-    static final int SHOT_ROWS = 4;
-    /** Per shot: speed, angle, |p| before, physics |p|, clip |p|, physics KE, clip KE. */
-    private static final int SHOT_FIELDS = 7;
+    /** The shots the HUD's shots line keeps. */
+    static final int SHOT_ROWS = 3;
+    /** Per shot: speed (m/s), angle (deg), physics KE and clip KE after the impact (J). */
+    private static final int SHOT_FIELDS = 4;
     /** The physics lane's index in the body arrays and the lane arguments. */
     public static final int PHYSICS_LANE = 0;
     /** The clip lane's index. */
@@ -410,10 +410,16 @@ public final class ClipResponseDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("physics: j = (1+e) v_n / (1/m_r + 1/m_t), then a = g, e = ");
+        // The shot is the same until the next launch: its line is written once, here.
+        text.append("shot: v = ");
+        TextFormat.appendFixed(text, speed, 1).append(" m/s at ");
+        TextFormat.appendFixed(text, angleDegrees, 0).append(" deg, m_r = ");
+        TextFormat.appendFixed(text, rocketKg, 1).append(" kg, m_t = ");
+        TextFormat.appendFixed(text, targetKg, 1).append(" kg, e = ");
         TextFormat.appendFixed(text, impulse.getRestitution(), 1)
-                .append(";   clip: kinematic, P = P_contact + key(t - t_contact) (")
-                .append(clips[clipIndex].getName()).append(")\n");
+                .append(";   before the impact: p = ");
+        appendXy(text, momentumBefore(new Vector3f())).append(" kg m/s, KE = ");
+        TextFormat.appendFixed(text, 0.5f * rocketKg * speed * speed, DIGITS).append(" J\n");
     }
 
     @Override
@@ -440,11 +446,8 @@ public final class ClipResponseDemo extends DemoState {
             int at = (shotCount % SHOT_ROWS) * SHOT_FIELDS;
             shots[at] = speed;
             shots[at + 1] = angleDegrees;
-            shots[at + 2] = rocketKg * speed;
-            shots[at + 3] = momentumAfter(PHYSICS_LANE, scratchMomentum).length();
-            shots[at + 4] = momentumAfter(CLIP_LANE, scratchMomentum).length();
-            shots[at + 5] = energyAfter(PHYSICS_LANE);
-            shots[at + 6] = energyAfter(CLIP_LANE);
+            shots[at + 2] = energyAfter(PHYSICS_LANE);
+            shots[at + 3] = energyAfter(CLIP_LANE);
             ++shotCount;
         }
     }
@@ -466,16 +469,9 @@ public final class ClipResponseDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        text.append("shot: v = ");
-        TextFormat.appendFixed(text, speed, 1).append(" m/s at ");
-        TextFormat.appendFixed(text, angleDegrees, 0).append(" deg, m_r = ");
-        TextFormat.appendFixed(text, rocketKg, 1).append(" kg, m_t = ");
-        TextFormat.appendFixed(text, targetKg, 1).append(" kg;   before the impact: p = ");
-        appendXy(text, momentumBefore(scratchMomentum)).append(" kg m/s, KE = ");
-        TextFormat.appendFixed(text, 0.5f * rocketKg * speed * speed, DIGITS).append(" J\n");
-        appendLane(text, PHYSICS_LANE, "physics lane (impulse, e = ");
-        appendLane(text, CLIP_LANE, "clip lane (");
-        text.append("clip error (against the physics lane): ");
+        appendLane(text, PHYSICS_LANE);
+        appendLane(text, CLIP_LANE);
+        text.append("clip error: ");
         if (!physicsHit || !clipHit) {
             text.append("- (no impact yet)\n");
         } else {
@@ -488,23 +484,20 @@ public final class ClipResponseDemo extends DemoState {
             text.append(energy >= 0f ? "created +" : "lost ");
             TextFormat.appendFixed(text, Math.abs(energy), DIGITS).append(" J\n");
         }
-        text.append("shots (latest last): v m/s, angle | |p| before | physics |p|, KE |"
-                + " clip |p|, KE\n");
-        int first = Math.max(0, shotCount - SHOT_ROWS);
+        // The latest shots on one line, the oldest first.
+        text.append("shots, KE after (physics | clip):");
         if (shotCount == 0) {
-            text.append("  none yet (Up/Down: another speed, Left/Right: another angle)\n");
+            text.append(" none yet (Up/Down: another speed, Left/Right: another angle)");
         }
-        for (int i = first; i < shotCount; ++i) {
+        for (int i = Math.max(0, shotCount - SHOT_ROWS); i < shotCount; ++i) {
             int at = (i % SHOT_ROWS) * SHOT_FIELDS;
-            text.append("  ").append(i + 1).append(": ");
-            TextFormat.appendFixed(text, shots[at], 1).append(", ");
-            TextFormat.appendFixed(text, shots[at + 1], 0).append(" deg | ");
+            text.append(i == Math.max(0, shotCount - SHOT_ROWS) ? "  " : ";  ");
+            TextFormat.appendFixed(text, shots[at], 0).append(" m/s ");
+            TextFormat.appendFixed(text, shots[at + 1], 0).append(" deg: ");
             TextFormat.appendFixed(text, shots[at + 2], DIGITS).append(" | ");
-            TextFormat.appendFixed(text, shots[at + 3], DIGITS).append(", ");
-            TextFormat.appendFixed(text, shots[at + 5], DIGITS).append(" J | ");
-            TextFormat.appendFixed(text, shots[at + 4], DIGITS).append(", ");
-            TextFormat.appendFixed(text, shots[at + 6], DIGITS).append(" J\n");
+            TextFormat.appendFixed(text, shots[at + 3], DIGITS).append(" J");
         }
+        text.append('\n');
     }
 
     /** The slide: the impulse law against the clip; the energy each lane leaves. */
@@ -525,14 +518,13 @@ public final class ClipResponseDemo extends DemoState {
     }
 
     /** One lane's line: each body's velocity after the impact, the momentum, the energy. */
-    private void appendLane(StringBuilder text, int lane, String head) {
-        text.append(head);
+    private void appendLane(StringBuilder text, int lane) {
         if (lane == PHYSICS_LANE) {
-            TextFormat.appendFixed(text, impulse.getRestitution(), 1);
+            text.append("physics lane, impulse j = (1+e) v_n / (1/m_r + 1/m_t): ");
         } else {
-            text.append(clips[clipIndex].getName());
+            text.append("clip lane, the keys of ").append(clips[clipIndex].getName())
+                    .append(" from the contact: ");
         }
-        text.append("): ");
         if (!hasHit(lane)) {
             text.append("- (no impact yet)\n");
             return;

@@ -150,14 +150,16 @@ class ClipResponseDemoTest {
         StringBuilder hud = new StringBuilder();
         demo.writeHudLines(hud);
         String[] lines = hud.toString().split("\n");
-        double[] physics = numbers(lines[1]);
-        double[] clip = numbers(lines[2]);
-        double[] error = numbers(lines[3]);
-        // A lane's line: e or nothing, v_rocket (x, y), v_target (x, y), p (x, y), KE.
-        int physicsAt = physics.length - 7;
-        int clipAt = clip.length - 7;
+        double[] physics = numbers(lines[0]);
+        double[] clip = numbers(lines[1]);
+        double[] error = numbers(lines[2]);
+        // A lane's line: v_rocket (x, y), v_target (x, y), p (x, y), KE.
+        assertEquals(7, physics.length, lines[0]);
+        assertEquals(7, clip.length, lines[1]);
+        int physicsAt = 0;
+        int clipAt = 0;
         double energy = clip[clipAt + 6] - physics[physicsAt + 6];
-        double sign = lines[3].contains("lost") ? -1.0 : 1.0;
+        double sign = lines[2].contains("lost") ? -1.0 : 1.0;
         assertEquals(energy, sign * error[3], 0.01, hud.toString());
         double dpx = clip[clipAt + 4] - physics[physicsAt + 4];
         double dpy = clip[clipAt + 5] - physics[physicsAt + 5];
@@ -172,11 +174,11 @@ class ClipResponseDemoTest {
     }
 
     /**
-     * The shots table keeps each shot: at two speeds its clip columns read the same and its
-     * physics columns differ.
+     * The shots line keeps each shot: at two speeds its clip column reads the same and its
+     * physics column differs.
      */
     @Test
-    void theShotsTableShowsTheClipUnchangedAndThePhysicsChanged() {
+    void theShotsLineShowsTheClipUnchangedAndThePhysicsChanged() {
         ClipResponseDemo demo = new ClipResponseDemo();
         demo.fire(8f, 0f);
         step(demo, STEPS_TO_IMPACT);
@@ -185,15 +187,16 @@ class ClipResponseDemoTest {
         assertEquals(2, demo.countShots());
         StringBuilder hud = new StringBuilder();
         demo.writeHudLines(hud);
-        String text = hud.toString();
-        String first = text.substring(text.indexOf("  1: "), text.indexOf('\n',
-                text.indexOf("  1: ")));
-        String second = text.substring(text.indexOf("  2: "), text.indexOf('\n',
-                text.indexOf("  2: ")));
-        String[] a = first.split("\\|");
-        String[] b = second.split("\\|");
-        assertEquals(a[3], b[3], "clip |p|, KE: " + text);
-        assertNotEquals(a[2], b[2], "physics |p|, KE: " + text);
+        String line = hud.toString().split("\n")[3];
+        String[] shots = line.substring(line.indexOf("):") + 2).split(";");
+        assertEquals(2, shots.length, line);
+        String[] first = shots[0].split("\\|");
+        String[] second = shots[1].split("\\|");
+        assertTrue(first[0].trim().startsWith("8 m/s 0 deg:"), line);
+        assertTrue(second[0].trim().startsWith("24 m/s 0 deg:"), line);
+        assertEquals(first[1], second[1], "clip KE: " + line);
+        assertNotEquals(first[0].substring(first[0].indexOf(':')),
+                second[0].substring(second[0].indexOf(':')), "physics KE: " + line);
     }
 
     private static ClipResponseDemo flown(float speed, float angle) {
