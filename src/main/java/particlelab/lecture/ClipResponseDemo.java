@@ -417,7 +417,7 @@ public final class ClipResponseDemo extends DemoState {
         TextFormat.appendFixed(text, rocketKg, 1).append(" kg, m_t = ");
         TextFormat.appendFixed(text, targetKg, 1).append(" kg, e = ");
         TextFormat.appendFixed(text, impulse.getRestitution(), 1)
-                .append(";   before the impact: p = ");
+                .append(";   before: p = ");
         appendXy(text, momentumBefore(new Vector3f())).append(" kg m/s, KE = ");
         TextFormat.appendFixed(text, 0.5f * rocketKg * speed * speed, DIGITS).append(" J\n");
     }
@@ -475,9 +475,9 @@ public final class ClipResponseDemo extends DemoState {
         if (!physicsHit || !clipHit) {
             text.append("- (no impact yet)\n");
         } else {
-            text.append("|dv_rocket| = ");
+            text.append("|dv_r| = ");
             TextFormat.appendFixed(text, velocityError(ROCKET), DIGITS)
-                    .append(" m/s, |dv_target| = ");
+                    .append(" m/s, |dv_t| = ");
             TextFormat.appendFixed(text, velocityError(TARGET), DIGITS).append(" m/s, |dp| = ");
             TextFormat.appendFixed(text, momentumError(), DIGITS).append(" kg m/s, KE ");
             float energy = energyError();
@@ -485,7 +485,7 @@ public final class ClipResponseDemo extends DemoState {
             TextFormat.appendFixed(text, Math.abs(energy), DIGITS).append(" J\n");
         }
         // The latest shots on one line, the oldest first.
-        text.append("shots, KE after (physics | clip):");
+        text.append("shots, KE after (J, physics | clip):");
         if (shotCount == 0) {
             text.append(" none yet (Up/Down: another speed, Left/Right: another angle)");
         }
@@ -494,8 +494,8 @@ public final class ClipResponseDemo extends DemoState {
             text.append(i == Math.max(0, shotCount - SHOT_ROWS) ? "  " : ";  ");
             TextFormat.appendFixed(text, shots[at], 0).append(" m/s ");
             TextFormat.appendFixed(text, shots[at + 1], 0).append(" deg: ");
-            TextFormat.appendFixed(text, shots[at + 2], DIGITS).append(" | ");
-            TextFormat.appendFixed(text, shots[at + 3], DIGITS).append(" J");
+            TextFormat.appendFixed(text, shots[at + 2], 1).append(" | ");
+            TextFormat.appendFixed(text, shots[at + 3], 1);
         }
         text.append('\n');
     }
@@ -520,17 +520,16 @@ public final class ClipResponseDemo extends DemoState {
     /** One lane's line: each body's velocity after the impact, the momentum, the energy. */
     private void appendLane(StringBuilder text, int lane) {
         if (lane == PHYSICS_LANE) {
-            text.append("physics lane, impulse j = (1+e) v_n / (1/m_r + 1/m_t): ");
+            text.append("physics lane (j = (1+e) v_n/(1/m_r+1/m_t)): ");
         } else {
-            text.append("clip lane, the keys of ").append(clips[clipIndex].getName())
-                    .append(" from the contact: ");
+            text.append("clip lane (").append(clips[clipIndex].getName()).append("): ");
         }
         if (!hasHit(lane)) {
             text.append("- (no impact yet)\n");
             return;
         }
-        text.append("v_rocket ");
-        appendXy(text, copyVelocityAfter(lane, ROCKET, scratchVelocity)).append(", v_target ");
+        text.append("v_r ");
+        appendXy(text, copyVelocityAfter(lane, ROCKET, scratchVelocity)).append(", v_t ");
         appendXy(text, copyVelocityAfter(lane, TARGET, scratchVelocity)).append(" m/s;  p = ");
         appendXy(text, momentumAfter(lane, scratchMomentum)).append(" kg m/s, KE = ");
         TextFormat.appendFixed(text, energyAfter(lane), DIGITS).append(" J\n");
