@@ -471,19 +471,17 @@ public final class ClipResponseDemo extends DemoState {
     protected void writeHudLines(StringBuilder text) {
         appendLane(text, PHYSICS_LANE);
         appendLane(text, CLIP_LANE);
-        text.append("clip error: ");
-        if (!physicsHit || !clipHit) {
-            text.append("- (no impact yet)\n");
-        } else {
-            text.append("|dv_r| = ");
-            TextFormat.appendFixed(text, velocityError(ROCKET), DIGITS)
-                    .append(" m/s, |dv_t| = ");
-            TextFormat.appendFixed(text, velocityError(TARGET), DIGITS).append(" m/s, |dp| = ");
-            TextFormat.appendFixed(text, momentumError(), DIGITS).append(" kg m/s, KE ");
+        if (physicsHit && clipHit) {
+            // The clip's error against what the impact implies, on the clip lane's line.
+            text.append(";  error |dv_r| ");
+            TextFormat.appendFixed(text, velocityError(ROCKET), DIGITS).append(", |dv_t| ");
+            TextFormat.appendFixed(text, velocityError(TARGET), DIGITS).append(", |dp| ");
+            TextFormat.appendFixed(text, momentumError(), DIGITS).append(", KE ");
             float energy = energyError();
             text.append(energy >= 0f ? "created +" : "lost ");
-            TextFormat.appendFixed(text, Math.abs(energy), DIGITS).append(" J\n");
+            TextFormat.appendFixed(text, Math.abs(energy), DIGITS);
         }
+        text.append('\n');
         // The latest shots on one line, the oldest first.
         text.append("shots, KE after (J, physics | clip):");
         if (shotCount == 0) {
@@ -517,22 +515,28 @@ public final class ClipResponseDemo extends DemoState {
         TextFormat.appendFixed(readout, energyAfter(CLIP_LANE), DIGITS).append(" J");
     }
 
-    /** One lane's line: each body's velocity after the impact, the momentum, the energy. */
+    /**
+     * One lane's line, without its newline: each body's velocity after the impact (m/s), the
+     * momentum (kg·m/s), the energy (J).
+     */
     private void appendLane(StringBuilder text, int lane) {
         if (lane == PHYSICS_LANE) {
-            text.append("physics lane (j = (1+e) v_n/(1/m_r+1/m_t)): ");
+            text.append("physics (j = (1+e) v_n/(1/m_r+1/m_t)): ");
         } else {
-            text.append("clip lane (").append(clips[clipIndex].getName()).append("): ");
+            text.append("clip (").append(clips[clipIndex].getName()).append("): ");
         }
         if (!hasHit(lane)) {
-            text.append("- (no impact yet)\n");
-            return;
+            text.append("- (no impact yet)");
+        } else {
+            text.append("v_r ");
+            appendXy(text, copyVelocityAfter(lane, ROCKET, scratchVelocity)).append(", v_t ");
+            appendXy(text, copyVelocityAfter(lane, TARGET, scratchVelocity)).append(", p ");
+            appendXy(text, momentumAfter(lane, scratchMomentum)).append(", KE ");
+            TextFormat.appendFixed(text, energyAfter(lane), DIGITS);
         }
-        text.append("v_r ");
-        appendXy(text, copyVelocityAfter(lane, ROCKET, scratchVelocity)).append(", v_t ");
-        appendXy(text, copyVelocityAfter(lane, TARGET, scratchVelocity)).append(" m/s;  p = ");
-        appendXy(text, momentumAfter(lane, scratchMomentum)).append(" kg m/s, KE = ");
-        TextFormat.appendFixed(text, energyAfter(lane), DIGITS).append(" J\n");
+        if (lane == PHYSICS_LANE) {
+            text.append("   (after the impact; m/s, kg m/s, J)\n");
+        }
     }
 
     private static StringBuilder appendXy(StringBuilder text, Vector3f v) {

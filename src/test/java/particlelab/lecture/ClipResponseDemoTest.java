@@ -152,14 +152,15 @@ class ClipResponseDemoTest {
         String[] lines = hud.toString().split("\n");
         double[] physics = numbers(lines[0]);
         double[] clip = numbers(lines[1]);
-        double[] error = numbers(lines[2]);
-        // A lane's line: v_rocket (x, y), v_target (x, y), p (x, y), KE.
+        // A lane: v_r (x, y), v_t (x, y), p (x, y), KE; the clip's line then its error:
+        // |dv_r|, |dv_t|, |dp|, KE created or lost.
         assertEquals(7, physics.length, lines[0]);
-        assertEquals(7, clip.length, lines[1]);
+        assertEquals(11, clip.length, lines[1]);
         int physicsAt = 0;
         int clipAt = 0;
+        double[] error = java.util.Arrays.copyOfRange(clip, 7, 11);
         double energy = clip[clipAt + 6] - physics[physicsAt + 6];
-        double sign = lines[2].contains("lost") ? -1.0 : 1.0;
+        double sign = lines[1].contains("lost") ? -1.0 : 1.0;
         assertEquals(energy, sign * error[3], 0.01, hud.toString());
         double dpx = clip[clipAt + 4] - physics[physicsAt + 4];
         double dpy = clip[clipAt + 5] - physics[physicsAt + 5];
@@ -187,7 +188,7 @@ class ClipResponseDemoTest {
         assertEquals(2, demo.countShots());
         StringBuilder hud = new StringBuilder();
         demo.writeHudLines(hud);
-        String line = hud.toString().split("\n")[3];
+        String line = hud.toString().split("\n")[2];
         String[] shots = line.substring(line.indexOf("):") + 2).split(";");
         assertEquals(2, shots.length, line);
         String[] first = shots[0].split("\\|");
