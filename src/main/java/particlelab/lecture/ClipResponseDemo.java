@@ -535,7 +535,7 @@ public final class ClipResponseDemo extends DemoState {
             TextFormat.appendFixed(text, energyAfter(lane), DIGITS);
         }
         if (lane == PHYSICS_LANE) {
-            text.append("   (after the impact; m/s, kg m/s, J)\n");
+            text.append("   (after; m/s, kg m/s, J)\n");
         }
     }
 
