@@ -7,6 +7,7 @@ import java.util.function.Supplier;
 import particlelab.demo.DemoState;
 import particlelab.lecture.AnyHeightDemo;
 import particlelab.lecture.BounceDemo;
+import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
@@ -69,7 +70,8 @@ public final class DemoCatalog {
             new Entry("racket", TennisRacketDemo::new),
             new Entry("wind", WindDemo::new),
             new Entry("fountain", FountainDemo::new),
-            new Entry("spring", SpringDemo::new)));
+            new Entry("spring", SpringDemo::new),
+            new Entry("clip", ClipResponseDemo::new)));
 
     private DemoCatalog() {
     }

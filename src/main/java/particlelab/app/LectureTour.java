@@ -6,6 +6,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.HudNote;
 import particlelab.lecture.AnyHeightDemo;
+import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.HelloAimingDemo;
@@ -99,6 +100,8 @@ public final class LectureTour {
                     "preset=head-on", "e=0.8"),
             new Stop("Collision Resolution", "collisions", LectureTour::watchCradle,
                     "preset=cradle", "e=1"),
+            new Stop("Collision Resolution: animation based vs physics based", "clip",
+                    LectureTour::watchClip),
             new Stop("Kinematics vs dynamics", "collisions", LectureTour::watchPaddle,
                     "preset=paddle"),
             new Stop("Discrete particle motion", "uniform", LectureTour::watchUniform),
@@ -167,6 +170,21 @@ public final class LectureTour {
                         + " energy now ");
         TextFormat.appendFixed(text, collisions.kineticEnergy(), 3)
                 .append(" J (e = 1: it should stay)\n");
+    }
+
+    private static void watchClip(DemoState demo, StringBuilder text) {
+        ClipResponseDemo clip = (ClipResponseDemo) demo;
+        text.append(WATCH);
+        if (!clip.hasHit(ClipResponseDemo.PHYSICS_LANE)
+                || !clip.hasHit(ClipResponseDemo.CLIP_LANE)) {
+            text.append("the rocket flies at both targets; Up/Down fire faster or slower\n");
+            return;
+        }
+        text.append("KE after the impact: clip ");
+        TextFormat.appendFixed(text, clip.energyAfter(ClipResponseDemo.CLIP_LANE), 2)
+                .append(" J whatever the shot, physics ");
+        TextFormat.appendFixed(text, clip.energyAfter(ClipResponseDemo.PHYSICS_LANE), 2)
+                .append(" J (Up/Down: fire again faster or slower)\n");
     }
 
     private static void watchPaddle(DemoState demo, StringBuilder text) {

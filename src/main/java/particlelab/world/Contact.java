@@ -44,8 +44,8 @@ public final class Contact {
         SEPARATING,
         /** Animation: the body stuck where it hit (held; a view plays its squash or fade). */
         STUCK,
-        /** Animation: the body left along the normal at an authored speed. */
-        AUTHORED_BOUNCE,
+        /** Animation: both bodies stopped at the touch, kinematic, and handed to a clip. */
+        CLIP,
         /** Both sides have infinite mass (static or kinematic): nothing can move. */
         IMMOVABLE
     }

@@ -1,29 +1,28 @@
 package particlelab.world;
 
 import com.jme3.math.Vector3f;
-import particlelab.physics.Validate;
 
 /**
- * Animation-based resolution: a scripted reaction instead of the physics. Body A (the body
- * that hit) does what the script says and B is left alone, so neither momentum nor the
- * physics energy loss {@code ½·μ·(1−e²)·v_n²} holds; that is the point of showing it.
+ * Animation-based resolution: a scripted reaction instead of the physics. The bodies do what
+ * the script says, so neither momentum nor the physics energy loss
+ * {@code ½·μ·(1−e²)·v_n²} holds; that is the point of showing it.
  *
  * <ul>
- * <li>{@link #stick()}: A stops dead at the contact and is held; its
- * {@link Body#getScriptedSinceSeconds()} starts a canned squash or fade in the view. With a
- * point body on the ground this is the lecture's "stop at the ground".</li>
- * <li>{@link #authoredBounce(float)}: A leaves along the normal at an authored speed, whatever
- * it arrived with (a game's "always bounce this high").</li>
+ * <li>{@link #stick()}: A (the body that hit) stops dead at the contact and is held, B is left
+ * alone; A's {@link Body#getScriptedSinceSeconds()} starts a canned squash or fade in the
+ * view. With a point body on the ground this is the lecture's "stop at the ground".</li>
+ * <li>{@link #clip()}: both bodies stop where they touch and become kinematic, their
+ * {@link Body#getScriptedSinceSeconds()} the contact's time: from then on an authored
+ * {@link Clip} moves them (its keyframes, the same whatever the impact), through the
+ * velocities a demo sets from it before each step.</li>
  * </ul>
  */
 public final class ScriptedResponse implements ContactResponse {
 
     private final boolean stick;
-    private final float reboundSpeed;
 
-    private ScriptedResponse(boolean stick, float reboundSpeed) {
+    private ScriptedResponse(boolean stick) {
         this.stick = stick;
-        this.reboundSpeed = reboundSpeed;
     }
 
     /**
@@ -32,23 +31,22 @@ public final class ScriptedResponse implements ContactResponse {
      * @return a new response (not null)
      */
     public static ScriptedResponse stick() {
-        return new ScriptedResponse(true, 0f);
+        return new ScriptedResponse(true);
     }
 
     /**
-     * Create the "authored bounce" response.
+     * Create the "hand both bodies to a clip" response.
      *
-     * @param reboundSpeed the speed A leaves with along the normal (in m/s, finite, &ge;0)
      * @return a new response (not null)
      */
-    public static ScriptedResponse authoredBounce(float reboundSpeed) {
-        return new ScriptedResponse(false,
-                Validate.nonNegative(reboundSpeed, "authored rebound speed (m/s)"));
+    public static ScriptedResponse clip() {
+        return new ScriptedResponse(false);
     }
 
     @Override
     public void resolve(Contact contact, float stepSeconds) {
         Body a = contact.bodyA;
+        Body b = contact.bodyB;
         Vector3f n = contact.normal;
         float depth = contact.penetrationNow;
         if (depth > 0f) {
@@ -56,17 +54,20 @@ public final class ScriptedResponse implements ContactResponse {
             contact.penetrationNow = 0f;
         }
         Vector3f v = a.particle.velocity;
-        float normalSpeed = v.dot(n);
+        // What A's momentum along n loses: the "impulse" a script takes away.
+        contact.impulse = -v.dot(n) * a.getMass();
+        v.zero();
         if (stick) {
-            contact.impulse = -normalSpeed * a.getMass();
-            v.zero();
             a.setHeld(true);
             contact.resolution = Contact.Resolution.STUCK;
         } else {
-            float change = reboundSpeed - normalSpeed;
-            contact.impulse = change * a.getMass();
-            ImpulseResponse.addAlong(v, n, change);
-            contact.resolution = Contact.Resolution.AUTHORED_BOUNCE;
+            a.setKinematic(true);
+            if (b != null) {
+                b.particle.velocity.zero();
+                b.setKinematic(true);
+                b.startScript(contact.timeSeconds);
+            }
+            contact.resolution = Contact.Resolution.CLIP;
         }
         a.startScript(contact.timeSeconds);
         contact.closingNow = 0f;
@@ -74,6 +75,6 @@ public final class ScriptedResponse implements ContactResponse {
 
     @Override
     public String describe() {
-        return stick ? "scripted: stick" : "scripted: bounce at " + reboundSpeed + " m/s";
+        return stick ? "scripted: stick" : "scripted: clip (keyframes from the contact)";
     }
 }

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 
 /**
- * Choosing demos with real key events, in a headless application on the catalogue's 18
+ * Choosing demos with real key events, in a headless application on the catalogue's 19
  * demos: each press and release goes through jME's input manager (its queue, the key
  * triggers, the switcher's mappings and its Shift tracking), as the keyboard's would. The
  * harness's frame time is 0, so a lone 1's wait is passed by hand; the two-digit numbers
@@ -50,12 +50,12 @@ class DemoSwitcherHeadlessTest {
         assertEquals(11, selectedNumber(), "Tab after Shift was released");
 
         tap(KeyInput.KEY_1);
-        tap(KeyInput.KEY_8);
-        assertEquals(18, selectedNumber(), "1 then 8");
+        tap(KeyInput.KEY_9);
+        assertEquals(19, selectedNumber(), "1 then 9");
         tap(KeyInput.KEY_TAB);
         assertEquals(1, selectedNumber(), "Tab wraps from the last demo to the first");
         shiftTab(KeyInput.KEY_LSHIFT);
-        assertEquals(18, selectedNumber(), "Shift+Tab wraps back");
+        assertEquals(19, selectedNumber(), "Shift+Tab wraps back");
 
         tap(KeyInput.KEY_4);
         assertEquals(4, selectedNumber(), "4 chooses at once");
@@ -73,7 +73,7 @@ class DemoSwitcherHeadlessTest {
                     String title = harness.call(() -> harness.app().getSwitcher().getSelected()
                             .getHud().getTitleText());
                     assertEquals("4.  " + demos.get(3).getTitle()
-                            + "      typed 1_  (a second digit for 10-18)", title);
+                            + "      typed 1_  (a second digit for 10-19)", title);
                     harness.call(() -> {
                         harness.app().getSwitcher().update(DemoSwitcher.ENTRY_SECONDS);
                         return true;
@@ -89,15 +89,15 @@ class DemoSwitcherHeadlessTest {
         DemoState demo = harness.call(() -> harness.app().getSwitcher().getSelected());
         String help = demo.getHelpText();
 
-        assertTrue(help.contains("\nChoosing a demo\n   0-9  -  type a demo's number (1-18):"),
+        assertTrue(help.contains("\nChoosing a demo\n   0-9  -  type a demo's number (1-19):"),
                 help);
         assertTrue(help.contains("\n   Tab / Shift+Tab  -  next demo; with Shift, the previous"
                 + " one"), help);
         assertTrue(help.contains("\nThe demos, by number\n   1  -  " + demos.get(0).getTitle()
                 + "\n"), help);
-        assertTrue(help.contains("\n   18  -  " + demos.get(17).getTitle() + "\n"), help);
+        assertTrue(help.contains("\n   19  -  " + demos.get(18).getTitle() + "\n"), help);
         String footer = harness.call(() -> demo.getHud().getFooterText());
-        assertTrue(footer.contains("Tab / Shift+Tab  demos (or 1-18)"), footer);
+        assertTrue(footer.contains("Tab / Shift+Tab  demos (or 1-19)"), footer);
     }
 
     /** Press and release a key, and let two frames handle it and switch. */

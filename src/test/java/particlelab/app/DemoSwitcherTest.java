@@ -25,8 +25,8 @@ class DemoSwitcherTest {
     private static final float FRAME = 1f / 60f;
 
     /**
-     * Key sequences on the catalogue's 18 demos and the demo each ends on: digits 2-9 choose
-     * at once, 1 waits for a second digit (1 then 0-8: demos 10-18), or, alone, is demo 1
+     * Key sequences on the catalogue's 19 demos and the demo each ends on: digits 2-9 choose
+     * at once, 1 waits for a second digit (1 then 0-9: demos 10-19), or, alone, is demo 1
      * once {@link DemoSwitcher#ENTRY_SECONDS} have passed.
      */
     @ParameterizedTest(name = "{0} -> demo {1}")
@@ -35,6 +35,7 @@ class DemoSwitcherTest {
         "'1 0', 10",
         "'1 7', 17",
         "'1 8', 18",
+        "'1 9', 19",
         "'2', 2",
         "'9', 9",
         "'1 wait', 1",
@@ -65,7 +66,7 @@ class DemoSwitcherTest {
         }
         assertTrue(switcher.isEntryPending());
         assertEquals(4, demos.indexOf(switcher.getSelected()));
-        assertEquals("typed 1_  (a second digit for 10-18)", demos.get(4).getTitleNote());
+        assertEquals("typed 1_  (a second digit for 10-19)", demos.get(4).getTitleNote());
 
         for (int i = 0; i < 4; ++i) {
             switcher.update(FRAME);
@@ -78,8 +79,7 @@ class DemoSwitcherTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource({
-        "'1 9', no demo 19: there are 18; Tab cycles",
-        "'0', no demo 0: there are 18; Tab cycles",
+        "'0', no demo 0: there are 19; Tab cycles",
     })
     void aNumberWithNoDemoSaysSoAndKeepsTheDemo(String keys, String notice) {
         List<DemoState> demos = DemoCatalog.createAll();
@@ -141,8 +141,8 @@ class DemoSwitcherTest {
         }
 
         assertEquals(List.of("1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "Tab"), keys);
-        assertEquals(List.of("Tab / Shift+Tab  demos (or 1-18)"), footer);
-        assertEquals(List.of("0-9: type a demo's number (1-18): 2-9 choose at once; 1 waits"
+        assertEquals(List.of("Tab / Shift+Tab  demos (or 1-19)"), footer);
+        assertEquals(List.of("0-9: type a demo's number (1-19): 2-9 choose at once; 1 waits"
                 + " 1 s for a second digit (1 then 2: demo 12), else it is demo 1",
                 "Tab / Shift+Tab: next demo; with Shift, the previous one (both wrap around)"),
                 help);

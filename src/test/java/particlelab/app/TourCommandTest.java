@@ -44,8 +44,9 @@ class TourCommandTest {
     @Test
     void theLectureSlidesComeInTheLecturesOrder() {
         String[] slides = {"Collision Response", "Collision Resolution",
-            "Kinematics vs dynamics", "Discrete particle motion", "Example: gravitational pull",
-            "Example: pull + drag", "Example: pull + drag + thrust",
+            "Collision Resolution: animation based vs physics based", "Kinematics vs dynamics",
+            "Discrete particle motion", "Example: gravitational pull", "Example: pull + drag",
+            "Example: pull + drag + thrust",
             "Simulation recipe: gravity, drag, thrust, spring pull", "Rotation",
             "Accuracy of simulation", "Targeting problem", "HelloAiming",
             "Euler steps: advantages and disadvantages", "If accuracy matters: cheat",

@@ -359,17 +359,28 @@ class WorldTest {
     }
 
     @Test
-    void authoredBounceLeavesAtItsSpeedWhateverTheImpact() {
+    void clipResponseStopsBothBodiesAndHandsThemToTheScriptWhateverTheImpact() {
         World world = new World();
         ParticleIntegrator none = new ParticleIntegrator();
-        Body slow = world.addBody(none, new Vector3f(0f, 0.02f, 0f), new Vector3f(0f, -2f, 0f),
-                1f, 0f);
-        Body fast = world.addBody(none, new Vector3f(1f, 0.1f, 0f), new Vector3f(0f, -9f, 0f), 1f,
-                0f);
-        world.addRule(SurfaceRule.ground(ScriptedResponse.authoredBounce(3f), Detection.SWEPT));
+        // Two pairs far apart, closing at 2 and at 9 m/s: the clip's start knows neither.
+        Body slow = world.addBody(none, new Vector3f(0f, 0f, 0f), new Vector3f(2f, 0f, 0f), 1f,
+                0.5f);
+        Body slowTarget = world.addBody(none, new Vector3f(1.02f, 0f, 0f), Vector3f.ZERO, 2f,
+                0.5f);
+        Body fast = world.addBody(none, new Vector3f(0f, 10f, 0f), new Vector3f(9f, 0f, 0f), 1f,
+                0.5f);
+        Body fastTarget = world.addBody(none, new Vector3f(1.1f, 10f, 0f), Vector3f.ZERO, 2f,
+                0.5f);
+        world.addRule(new SphereRule(ScriptedResponse.clip(), Detection.SWEPT));
         world.step(H);
-        assertEquals(3f, slow.getVelocity().y, 0f);
-        assertEquals(3f, fast.getVelocity().y, 0f);
+        Body[] all = {slow, slowTarget, fast, fastTarget};
+        for (Body body : all) {
+            assertEquals(0f, body.getVelocity().length(), 0f, body + " stopped at the touch");
+            assertTrue(body.isKinematic(), body + " is the script's now");
+            assertTrue(body.getScriptedSinceSeconds() > 0.0
+                    && body.getScriptedSinceSeconds() < H, "its clip starts at the contact");
+        }
+        assertEquals(Contact.Resolution.CLIP, world.getLog().latest().getResolution());
     }
 
     @Test
