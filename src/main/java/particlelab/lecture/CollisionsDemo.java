@@ -102,21 +102,24 @@ public final class CollisionsDemo extends DemoState {
     public static final float Y_MAX = 6f;
     /**
      * An impulse arrow's length per N·s (in m/(N·s)): the paddle's 6 N·s at e = 1 on 1 kg
-     * is drawn 0.9 m long.
+     * is drawn 1.2 m long,
+     * past the ball (its diameter 0.6 m from the contact).
      */
-    public static final float METRES_PER_NEWTON_SECOND = 0.15f;
+    public static final float METRES_PER_NEWTON_SECOND = 0.2f;
     private static final float PADDLE_START_Y = 2f;
     private static final int BALLS = 5;
     private static final float LANE_Y = 3f;
     /** The rack for the bodies a preset leaves out: on the ground right of the box (m). */
     private static final float RACK_X = X_MAX + 0.8f;
     /** The distance between two bodies on the rack, wide enough for their labels (m). */
-    private static final float RACK_SPACING = 1.2f;
+    private static final float RACK_SPACING = 1.5f;
     /** The region framed: the box, the rack right of it, and room above the top wall (m). */
     private static final float VIEW_X_MAX = RACK_X + 3f * RACK_SPACING + 2f * RADIUS;
     private static final float VIEW_Y_MAX = Y_MAX + 0.6f;
+    /** How far in front of the plane the arrows are drawn (in ball radii). */
+    private static final float ARROW_LIFT = 1.2f;
     /** The impulse labels' text size, as a share of the scene labels' (the balls' names). */
-    private static final float IMPULSE_LABEL_SHARE = 0.85f;
+    private static final float IMPULSE_LABEL_SHARE = 1f;
 
     private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
     /**
@@ -378,7 +381,8 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(text, impactEnergyAfter, 3).append(" J:  lost ");
             TextFormat.appendFixed(text, impactEnergyBefore - impactEnergyAfter, 3);
             if (preset == Preset.PADDLE) {
-                text.append(" J (negative: the paddle's script added energy)\n");
+                text.append(" J (negative: the paddle's script added energy), now ");
+                TextFormat.appendFixed(text, totals(momentum), 3).append(" J\n");
             } else {
                 text.append(" J;  ½·μ·(1 − e²)·v_n² = ");
                 TextFormat.appendFixed(text, impactPredictedLoss, 3).append(" J  (v_n = ");
@@ -391,10 +395,6 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(text, exitAngleDegrees(), 1)
                     .append(" deg (90 for equal masses and e = 1)\n");
         }
-        if (preset == Preset.PADDLE) {
-            text.append("the balls' kinetic energy now ");
-            TextFormat.appendFixed(text, totals(momentum), 3).append(" J (0 at the start)\n");
-        }
     }
 
     /**
@@ -402,19 +402,20 @@ public final class CollisionsDemo extends DemoState {
      * and the momentum the paddle gave and did not receive.
      */
     private void writePaddleLines(StringBuilder text) {
-        text.append("paddle script: P += speed·h·U(t),  U = (cos θ, sin θ, 0) = (");
+        text.append("kinematic paddle: moved by script, infinite mass, no force moves it:"
+                + "  P += speed·h·U(t)\n  U(t) = (cos θ, sin θ, 0) = (");
         TextFormat.appendFixed(text, paddleStopped ? 0f : FastMath.cos(paddleAngle), 3)
                 .append(", ");
         TextFormat.appendFixed(text, paddleStopped ? 0f : FastMath.sin(paddleAngle), 3)
-                .append(", 0),  θ = ");
+                .append(", 0),  θ(t) = ");
+        TextFormat.appendFixed(text, PADDLE_SWING, 1).append(" sin(");
+        TextFormat.appendFixed(text, PADDLE_RATE, 1).append(" t) = ");
         TextFormat.appendFixed(text, paddleAngle, 3).append(" rad")
-                .append(paddleStopped ? "  (stopped: end of run)\n" : "\n");
-        text.append("kinematic: the paddle, moved by script, infinite mass, no force moves it;"
-                + "  dynamic: the balls, moved by impulses J\n");
-        text.append("balls' momentum change: ΣJ from the paddle ");
-        TextFormat.appendVector(text, paddleImpulse, 3).append(", last contact ");
+                .append(paddleStopped ? " (run over)\n" : "\n");
+        text.append("dynamic balls: moved by impulses J;  ΣJ from the paddle ");
+        TextFormat.appendVector(text, paddleImpulse, 3).append(", at its last contact ");
         TextFormat.appendVector(text, lastPaddleImpulse, 3).append(" kg m/s\n");
-        text.append("the paddle gave it and got -J back, not applied (kinematic): not"
+        text.append("the paddle's -J is not applied (infinite mass): the balls' momentum is not"
                 + " conserved;  walls gave ");
         TextFormat.appendVector(text, wallImpulse, 3).append('\n');
     }
@@ -711,16 +712,22 @@ public final class CollisionsDemo extends DemoState {
                 arrows.hide(2 * i + 1);
                 continue;
             }
-            impulses.copyPoint(i, arrowStart);
+            // In front of the spheres (their radius towards the camera), so none hides them.
+            impulses.copyPoint(i, arrowStart).z += ARROW_LIFT * RADIUS;
             for (int side = 0; side < 2; ++side) {
                 boolean onA = side == 0;
                 boolean applied = impulses.isApplied(i, onA);
                 impulses.copyImpulse(i, onA, arrowImpulse);
+                // The magnitude once per contact, on the side that took it (A, unless A is
+                // the kinematic paddle); the other side's arrow is its -J, or the paddle's J.
+                boolean magnitude = applied && (onA || !impulses.isApplied(i, true));
                 arrowLabel.setLength(0);
-                arrowLabel.append(onA ? "J = " : "-J = ");
-                TextFormat.appendFixed(arrowLabel, impulses.getMagnitude(i), 2).append(" N s");
+                arrowLabel.append(onA ? "J" : "-J");
                 if (!applied) {
-                    arrowLabel.append(": not applied (kinematic)");
+                    arrowLabel.append(" not applied (kinematic)");
+                } else if (magnitude) {
+                    TextFormat.appendFixed(arrowLabel.append(" = "), impulses.getMagnitude(i), 2)
+                            .append(" N s");
                 }
                 arrows.show(2 * i + side, arrowStart, arrowImpulse, applied, arrowLabel, size);
             }

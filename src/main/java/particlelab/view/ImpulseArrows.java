@@ -21,7 +21,7 @@ public final class ImpulseArrows {
     /** The arrows' colour when the impulse was applied. */
     public static final ColorRGBA APPLIED_COLOR = new ColorRGBA(1f, 0.85f, 0.2f, 1f);
     /** The arrows' colour when it was not (a kinematic body). */
-    public static final ColorRGBA NOT_APPLIED_COLOR = new ColorRGBA(0.55f, 0.55f, 0.6f, 1f);
+    public static final ColorRGBA NOT_APPLIED_COLOR = new ColorRGBA(0.7f, 0.7f, 0.75f, 1f);
     /** The gap between an arrow's tip and its label (as a fraction of the label size). */
     private static final float LABEL_GAP = 0.3f;
 
