@@ -558,6 +558,11 @@ public final class CollisionsDemo extends DemoState {
         return storeResult.set(paddleImpulse);
     }
 
+    /** @return the length of the impulse the paddle gave the balls, |ΣJ| (in N·s) */
+    public float paddleImpulseLength() {
+        return paddleImpulse.length();
+    }
+
     /**
      * Copy the impulse the paddle gave a ball at its latest contact.
      *

@@ -165,14 +165,23 @@ class CollisionsDemoTest {
         PlaneView plane = collisions.getPlaneView();
         float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
         List<ScreenRect> texts = collisions.copyTextRects(new ArrayList<>());
+        List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
         for (DemoParticle particle : collisions.getParticles()) {
             Vector3f p = particle.getParticle().position;
             float x = plane.screenX(p.x);
             float y = plane.screenY(p.y);
-            // The whole sphere on screen, to half a pixel.
-            if (!scene.contains(new ScreenRect(x - radius + 0.5f, y - radius + 0.5f,
-                    2f * radius - 1f, 2f * radius - 1f))) {
+            // The whole sphere on screen, to half a pixel, and under no HUD text (the bands
+            // are drawn over the scene's sky).
+            ScreenRect sphere = new ScreenRect(x - radius + 0.5f, y - radius + 0.5f,
+                    2f * radius - 1f, 2f * radius - 1f);
+            if (!scene.contains(sphere)) {
                 found.add(where + ": " + particle.getLabel() + " at " + p + " outside " + scene);
+            }
+            for (ScreenRect text : hud) {
+                if (!text.isEmpty() && text.intersects(sphere)) {
+                    found.add(where + ": " + particle.getLabel() + " at " + p + " under "
+                            + text);
+                }
             }
             ScreenRect label = collisions.getView(particle).getLabelRect();
             if (!labels || label.isEmpty()) {
