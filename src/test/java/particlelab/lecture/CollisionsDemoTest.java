@@ -9,6 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
 import particlelab.demo.DemoParticle;
 import particlelab.view.PlaneView;
@@ -133,6 +134,31 @@ class CollisionsDemoTest {
         problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 1280, 720, true));
         assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
                 problems.size() + " problems");
+    }
+
+    @Test
+    void aPaddleFrameWithImpulseArrowsAllocatesNothing() throws Exception {
+        boolean shown = harness.call(() -> {
+            collisions.setMasses(0, 0);
+            collisions.setRestitutionTenths(10);
+            collisions.choose(CollisionsDemo.Preset.PADDLE);
+            // 1.4 s: the paddle met ball 1 at about 1.25 s, its arrows are held 0.5 s.
+            for (int frame = 0; frame < 84; ++frame) {
+                collisions.update(H);
+            }
+            // Paused, each frame draws the same arrows and HUD: a repeatable frame.
+            collisions.getClock().setPaused(true);
+            boolean drawn = collisions.getImpulses().size() > 0 && collisions.getImpulses()
+                    .isShown(0, collisions.getWorld().getTimeSeconds());
+            try {
+                Allocations.assertAllocatesNothing("a paddle frame with arrows",
+                        () -> collisions.update(H));
+            } finally {
+                collisions.getClock().setPaused(false);
+            }
+            return drawn;
+        });
+        assertTrue(shown, "no arrow was drawn");
     }
 
     /** Run a preset for 10 s in a window: balls outside the scene, labels over texts. */
