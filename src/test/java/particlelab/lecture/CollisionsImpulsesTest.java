@@ -11,6 +11,7 @@ import particlelab.VectorAssert;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.Presentation;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRing;
 
 /**
  * The collisions demo's impulses as the arrows draw them, its paddle's kinematics and the
@@ -128,6 +129,47 @@ class CollisionsImpulsesTest {
         Vector3f external = total.add(demo.copyWallImpulse(new Vector3f()));
         VectorAssert.assertVectorEquals(external, now, 1e-4f);
         assertTrue(total.length() > 1f, "the paddle changed the momentum: " + total);
+    }
+
+    @Test
+    void theArrowsAndThePaddlesReadoutsReplayWithTheirStep() {
+        // Home 40 steps from 2.5 s (the paddle's contacts since 1.25 s), then Space: the
+        // arrows' contacts and the ΣJ lines belong to the state the ring records.
+        CollisionsDemo demo = demo(CollisionsDemo.Preset.PADDLE, 10, 0, 0);
+        StateRing ring = demo.getStateRing();
+        String[] lines = new String[400];
+        for (int frame = 0; frame < 150; ++frame) {
+            demo.advancePhysics(H);
+            lines[(int) ring.getLastIndex()] = ownLines(demo);
+        }
+        for (int i = 0; i < 40; ++i) {
+            assertTrue(demo.stepBack());
+        }
+        long shown = demo.getShownStep();
+        assertEquals(lines[(int) shown], ownLines(demo), "read back at step " + shown);
+        demo.getClock().setPaused(false);
+        for (int i = 0; i < 40; ++i) {
+            demo.advancePhysics(H);
+            long index = ring.getLastIndex();
+            assertEquals(lines[(int) index], ownLines(demo), "re-simulated step " + index);
+        }
+    }
+
+    /** The demo's own HUD lines and its arrows' contacts, as text. */
+    private static String ownLines(CollisionsDemo demo) {
+        StringBuilder text = new StringBuilder();
+        demo.writeHudLines(text);
+        ContactImpulses impulses = demo.getImpulses();
+        double now = demo.getWorld().getTimeSeconds();
+        Vector3f scratch = new Vector3f();
+        for (int i = 0; i < impulses.size(); ++i) {
+            text.append(impulses.isShown(i, now)).append(' ')
+                    .append(impulses.copyPoint(i, scratch)).append(' ')
+                    .append(impulses.copyImpulse(i, true, scratch)).append(' ')
+                    .append(impulses.isApplied(i, true)).append(impulses.isApplied(i, false))
+                    .append('\n');
+        }
+        return text.toString();
     }
 
     @Test
