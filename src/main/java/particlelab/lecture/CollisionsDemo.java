@@ -922,8 +922,12 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(slide.formula()
                     .append("dynamic balls: v' = (1+e) u - e v along n,  e = "),
                     getRestitution(), 1);
-            StringBuilder readout = slide.readout().append("ΣJ from the paddle ");
-            TextFormat.appendVector(readout, paddleImpulse, 3)
+            StringBuilder readout = slide.readout();
+            if (paddleContacts == 0) {
+                readout.append("the paddle has not hit a ball yet");
+                return;
+            }
+            TextFormat.appendVector(readout.append("ΣJ from the paddle "), paddleImpulse, 3)
                     .append(" kg m/s, -J not applied");
             return;
         }
