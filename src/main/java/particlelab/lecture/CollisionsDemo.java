@@ -53,6 +53,9 @@ import particlelab.world.World;
  * at right angles. The cradle passes the momentum down the row. The paddle (infinite mass)
  * sends a ball off at {@code (1+e)·u − e·v} along the normal, u its own speed: the balls'
  * energy grows, since the script does work no force accounts for (kinematics, not dynamics).
+ * At every contact between two bodies the arrows show the impulses the world applied, J on
+ * one and −J on the other (Newton's third law), held half a second; the paddle's −J is grey,
+ * not applied (infinite mass), so the balls' momentum changes by the ΣJ the HUD shows.
  */
 public final class CollisionsDemo extends DemoState {
 
