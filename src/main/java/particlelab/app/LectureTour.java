@@ -189,7 +189,10 @@ public final class LectureTour {
 
     private static void watchPaddle(DemoState demo, StringBuilder text) {
         CollisionsDemo collisions = (CollisionsDemo) demo;
-        text.append(WATCH).append("the balls' kinetic energy is ");
+        text.append(WATCH).append("the grey arrow is the paddle's -J, not applied (infinite"
+                + " mass): the balls got |ΣJ| = ");
+        TextFormat.appendFixed(text, collisions.paddleImpulseLength(), 2)
+                .append(" kg m/s\n  and kinetic energy ");
         TextFormat.appendFixed(text, collisions.kineticEnergy(), 3)
                 .append(" J, from 0: the scripted paddle (kinematics) does work no force"
                         + " accounts for\n");

@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
@@ -12,6 +13,9 @@ import particlelab.demo.DemoState;
 import particlelab.demo.Draggable;
 import particlelab.demo.Presentation;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.view.HudFont;
+import particlelab.view.ImpulseArrows;
+import particlelab.view.PlaneView;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;
 import particlelab.world.StateRecord;
@@ -49,6 +53,9 @@ import particlelab.world.World;
  * at right angles. The cradle passes the momentum down the row. The paddle (infinite mass)
  * sends a ball off at {@code (1+e)·u − e·v} along the normal, u its own speed: the balls'
  * energy grows, since the script does work no force accounts for (kinematics, not dynamics).
+ * At every contact between two bodies the arrows show the impulses the world applied, J on
+ * one and −J on the other (Newton's third law), held half a second; the paddle's −J is grey,
+ * not applied (infinite mass), so the balls' momentum changes by the ΣJ the HUD shows.
  */
 public final class CollisionsDemo extends DemoState {
 
@@ -90,12 +97,32 @@ public final class CollisionsDemo extends DemoState {
     public static final float PADDLE_RATE = 1.5f;
     /** Where the paddle's run ends (in metres): the script stops it there. */
     public static final float PADDLE_END_X = 10.5f;
+    /** The left wall's plane (in metres): the box's inside starts there. */
+    public static final float X_MIN = -1f;
+    /** The right wall's plane (in metres). */
+    public static final float X_MAX = 13f;
+    /** The top wall's plane (in metres); the ground is y = 0. */
+    public static final float Y_MAX = 6f;
+    /**
+     * An impulse arrow's length per N·s (in m/(N·s)): the paddle's 6 N·s at e = 1 on 1 kg
+     * is drawn 1.2 m long,
+     * past the ball (its diameter 0.6 m from the contact).
+     */
+    public static final float METRES_PER_NEWTON_SECOND = 0.2f;
     private static final float PADDLE_START_Y = 2f;
     private static final int BALLS = 5;
     private static final float LANE_Y = 3f;
-    private static final float X_MIN = -1f;
-    private static final float X_MAX = 13f;
-    private static final float Y_MAX = 6f;
+    /** The rack for the bodies a preset leaves out: on the ground right of the box (m). */
+    private static final float RACK_X = X_MAX + 0.8f;
+    /** The distance between two bodies on the rack, wide enough for their labels (m). */
+    private static final float RACK_SPACING = 1.5f;
+    /** The region framed: the box, the rack right of it, and room above the top wall (m). */
+    private static final float VIEW_X_MAX = RACK_X + 3f * RACK_SPACING + 2f * RADIUS;
+    private static final float VIEW_Y_MAX = Y_MAX + 0.6f;
+    /** How far in front of the plane the arrows are drawn (in ball radii). */
+    private static final float ARROW_LIFT = 1.2f;
+    /** The impulse labels' text size, as a share of the scene labels' (the balls' names). */
+    private static final float IMPULSE_LABEL_SHARE = 1f;
 
     private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
     /**
@@ -131,6 +158,27 @@ public final class CollisionsDemo extends DemoState {
     /** Ball 2's velocity just after that impact (m/s). */
     private final Vector3f exitVelocity2 = new Vector3f();
     private boolean exitRecorded;
+    /** The latest contacts between two bodies, for the impulse arrows (in the state). */
+    private final ContactImpulses impulses = new ContactImpulses();
+    /** The impulse the paddle gave the balls since the start, ΣJ (in N·s = kg·m/s). */
+    private final Vector3f paddleImpulse = new Vector3f();
+    /** The impulse the paddle gave a ball at its latest contact (in N·s). */
+    private final Vector3f lastPaddleImpulse = new Vector3f();
+    /** The impulse the walls gave the balls since the start (in N·s). */
+    private final Vector3f wallImpulse = new Vector3f();
+    /** Scratch for the arrows: a contact's point (m) and one side's impulse (N·s). */
+    private final Vector3f arrowStart = new Vector3f();
+    private final Vector3f arrowImpulse = new Vector3f();
+    /** Scratch: an arrow's label. */
+    private final StringBuilder arrowLabel = new StringBuilder(48);
+    /** Two arrows per kept contact, built with the window (null without one). */
+    private ImpulseArrows arrows;
+    /** The paddle's contacts since the start. */
+    private int paddleContacts;
+    /** The script's angle θ(t) of U(t) at the latest step (in radians). */
+    private float paddleAngle;
+    /** True once the script stopped the paddle at the end of its run. */
+    private boolean paddleStopped;
     private DemoParticle paddle;
     private Preset preset = Preset.HEAD_ON;
     private int eTenths = 10;
@@ -212,9 +260,12 @@ public final class CollisionsDemo extends DemoState {
             getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
                     "top", X_MIN - t, Y_MAX, X_MAX + t, Y_MAX + t, grey));
         }
-        setView(X_MIN, X_MAX, Y_MAX, 1f, 2, RADIUS);
+        // The box, the rack right of it, and room above the top wall for the balls' labels.
+        setView(X_MIN, VIEW_X_MAX, VIEW_Y_MAX, 1f, 2, RADIUS);
         arrange();
         addStateRecord(impactState());
+        addStateRecord(impulses);
+        addStateRecord(paddleState());
     }
 
     @Override
@@ -274,8 +325,14 @@ public final class CollisionsDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("j = -(1+e) v_rel.n / (1/m1 + 1/m2):  V1 += j n/m1,  V2 -= j n/m2;"
-                + "  free flight P += h V, r = ");
+        if (preset == Preset.PADDLE) {
+            // The paddle has 1/m = 0: the ball-ball impulse reduces to the paddle-ball rule.
+            text.append("paddle-ball (1/m_paddle = 0):  v' = (1+e) u - e v along n,"
+                    + "  J = m (v' - v);  balls P += h V, r = ");
+        } else {
+            text.append("j = -(1+e) v_rel.n / (1/m1 + 1/m2):  V1 += j n/m1,  V2 -= j n/m2;"
+                    + "  free flight P += h V, r = ");
+        }
         TextFormat.appendFixed(text, RADIUS, 1).append(" m\n");
     }
 
@@ -284,6 +341,13 @@ public final class CollisionsDemo extends DemoState {
         impactSteps = 0;
         impactContacts = 0;
         exitRecorded = false;
+        impulses.clear();
+        paddleImpulse.zero();
+        lastPaddleImpulse.zero();
+        wallImpulse.zero();
+        paddleContacts = 0;
+        paddleStopped = false;
+        paddleAngle = 0f;
         for (int i = 0; i < BALLS; ++i) {
             if (balls[i].isParked()) {
                 balls[i].setHeld(true);
@@ -302,20 +366,26 @@ public final class CollisionsDemo extends DemoState {
         TextFormat.appendFixed(text, MASSES[mass2], 1).append(" kg   ")
                 .append(preset == Preset.CRADLE ? "overlap test, worst first"
                         : "swept test").append('\n');
+        if (preset == Preset.PADDLE) {
+            writePaddleLines(text);
+        }
         if (impactSteps == 0) {
             text.append("no impact yet\n");
-        } else {
+        } else if (preset != Preset.PADDLE) {
             text.append("latest impact step (").append(impactContacts)
                     .append(impactContacts == 1 ? " contact" : " contacts resolved worst first")
                     .append("):  momentum before ");
             TextFormat.appendVector(text, impactMomentumBefore, 3).append(" after ");
             TextFormat.appendVector(text, impactMomentumAfter, 3).append(" kg m/s\n");
+        }
+        if (impactSteps > 0) {
             text.append("kinetic energy before ");
             TextFormat.appendFixed(text, impactEnergyBefore, 3).append(" J, after ");
             TextFormat.appendFixed(text, impactEnergyAfter, 3).append(" J:  lost ");
             TextFormat.appendFixed(text, impactEnergyBefore - impactEnergyAfter, 3);
             if (preset == Preset.PADDLE) {
-                text.append(" J (negative: the paddle's script added energy)\n");
+                text.append(" J (negative: the paddle's script added energy), now ");
+                TextFormat.appendFixed(text, totals(momentum), 3).append(" J\n");
             } else {
                 text.append(" J;  ½·μ·(1 − e²)·v_n² = ");
                 TextFormat.appendFixed(text, impactPredictedLoss, 3).append(" J  (v_n = ");
@@ -328,11 +398,29 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(text, exitAngleDegrees(), 1)
                     .append(" deg (90 for equal masses and e = 1)\n");
         }
-        if (preset == Preset.PADDLE) {
-            text.append("the balls' kinetic energy now ");
-            TextFormat.appendFixed(text, totals(momentum), 3).append(" J (0 at the start):"
-                    + " each leaves at (1+e) u - e v along n, u = the paddle's speed\n");
-        }
+    }
+
+    /**
+     * The paddle preset's lines: the script with its live U(t), kinematics against dynamics,
+     * and the momentum the paddle gave and did not receive.
+     */
+    private void writePaddleLines(StringBuilder text) {
+        text.append("kinematic paddle: moved by script, infinite mass, no force moves it:"
+                + "  P += speed·h·U(t)\n  U(t) = (cos θ, sin θ, 0) = (");
+        TextFormat.appendFixed(text, paddleStopped ? 0f : FastMath.cos(paddleAngle), 3)
+                .append(", ");
+        TextFormat.appendFixed(text, paddleStopped ? 0f : FastMath.sin(paddleAngle), 3)
+                .append(", 0),  θ(t) = ");
+        TextFormat.appendFixed(text, PADDLE_SWING, 1).append(" sin(");
+        TextFormat.appendFixed(text, PADDLE_RATE, 1).append(" t) = ");
+        TextFormat.appendFixed(text, paddleAngle, 3).append(" rad")
+                .append(paddleStopped ? " (run over)\n" : "\n");
+        text.append("dynamic balls: moved by impulses J;  ΣJ from the paddle ");
+        TextFormat.appendVector(text, paddleImpulse, 3).append(", at its last contact ");
+        TextFormat.appendVector(text, lastPaddleImpulse, 3).append(" kg m/s\n");
+        text.append("the paddle's -J is not applied (infinite mass): the balls' momentum is not"
+                + " conserved;  walls gave ");
+        TextFormat.appendVector(text, wallImpulse, 3).append('\n');
     }
 
     /**
@@ -349,6 +437,8 @@ public final class CollisionsDemo extends DemoState {
         getParameters().set("preset", preset.ordinal());
         arrange();
         restart();
+        // The formula line is the preset's own.
+        refreshEquations();
     }
 
     /**
@@ -441,6 +531,86 @@ public final class CollisionsDemo extends DemoState {
         return FastMath.RAD_TO_DEG * (float) Math.acos(cosine);
     }
 
+    /**
+     * Return the script's angle at a time: {@code θ(t) = swing·sin(rate·t)}.
+     *
+     * @param timeSeconds the simulated time (in seconds)
+     * @return θ (in radians, within ±{@link #PADDLE_SWING})
+     */
+    public static float scriptAngle(double timeSeconds) {
+        return PADDLE_SWING * (float) Math.sin(PADDLE_RATE * timeSeconds);
+    }
+
+    /**
+     * Access the latest contacts between two bodies, as the arrows draw them.
+     *
+     * @return the live record (not null, do not modify)
+     */
+    public ContactImpulses getImpulses() {
+        return impulses;
+    }
+
+    /**
+     * Copy the impulse the paddle gave the balls since the start, ΣJ: the change of their
+     * momentum it caused (the paddle, kinematic, took none of the −J back).
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult (in N·s = kg·m/s)
+     */
+    public Vector3f copyPaddleImpulse(Vector3f storeResult) {
+        return storeResult.set(paddleImpulse);
+    }
+
+    /** @return the length of the impulse the paddle gave the balls, |ΣJ| (in N·s) */
+    public float paddleImpulseLength() {
+        return paddleImpulse.length();
+    }
+
+    /**
+     * Copy the impulse the paddle gave a ball at its latest contact.
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult (in N·s, zero before the first)
+     */
+    public Vector3f copyLastPaddleImpulse(Vector3f storeResult) {
+        return storeResult.set(lastPaddleImpulse);
+    }
+
+    /**
+     * Copy the impulse the static walls gave the balls since the start.
+     *
+     * @param storeResult storage for the result (not null, modified)
+     * @return storeResult (in N·s)
+     */
+    public Vector3f copyWallImpulse(Vector3f storeResult) {
+        return storeResult.set(wallImpulse);
+    }
+
+    /** @return how many contacts the paddle had since the start (&ge;0) */
+    public int countPaddleContacts() {
+        return paddleContacts;
+    }
+
+    /** @return the demo's paddle (the kinematic body of the paddle preset; not null) */
+    public DemoParticle getPaddle() {
+        getWorld();
+        return paddle;
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        arrows = new ImpulseArrows(app.getAssetManager(), HudFont.load(app.getAssetManager()),
+                2 * ContactImpulses.CAPACITY, METRES_PER_NEWTON_SECOND, 0.25f * RADIUS);
+        getSceneNode().attachChild(arrows.getNode());
+        showImpulses();
+    }
+
+    @Override
+    protected void afterFrame() {
+        showImpulses();
+    }
+
     /** Just after a ball contact's resolution: balls 1 and 2's exit velocities, once. */
     private void recordExit(Contact contact) {
         Body a = contact.getBodyA();
@@ -458,14 +628,32 @@ public final class CollisionsDemo extends DemoState {
         exitRecorded = true;
     }
 
-    /** Epilogue: the predicted loss of one contact between two dynamic balls. */
+    /**
+     * Epilogue: the contact's impulse kept for the arrows and summed by who gave it (the
+     * paddle, a wall); the predicted loss of a contact between two dynamic balls.
+     */
     private void recordContact(Contact contact) {
+        Body a = contact.getBodyA();
         Body b = contact.getBodyB();
+        Body paddleBody = paddle.getBody();
+        float j = contact.getImpulse();
         if (b == null) {
-            return; // a wall: not a collision between the demo's bodies
+            // A wall: not a collision between the demo's bodies; its impulse j·n went to A.
+            if (a != paddleBody) {
+                addAlong(wallImpulse, contact.getNormal(), j);
+            }
+            return;
         }
         ++stepContacts;
-        if (b.getInverseMass() == 0f || contact.getBodyA().getInverseMass() == 0f) {
+        impulses.record(contact);
+        if (a == paddleBody || b == paddleBody) {
+            // The ball got j·n if it is A, −j·n if it is B; the paddle the opposite, unused.
+            lastPaddleImpulse.zero();
+            addAlong(lastPaddleImpulse, contact.getNormal(), b == paddleBody ? j : -j);
+            paddleImpulse.addLocal(lastPaddleImpulse);
+            ++paddleContacts;
+        }
+        if (b.getInverseMass() == 0f || a.getInverseMass() == 0f) {
             return;
         }
         float mu = 1f / (contact.getBodyA().getInverseMass() + b.getInverseMass());
@@ -495,27 +683,85 @@ public final class CollisionsDemo extends DemoState {
         return energy;
     }
 
-    /** The script: the paddle's velocity {@code speed·U(t)}, set before each step. */
+    /**
+     * The script: the paddle's velocity {@code speed·U(t)}, {@code U(t) = (cos θ, sin θ, 0)},
+     * {@code θ(t) = swing·sin(rate·t)}, set before each step (so {@code P += speed·h·U(t)}).
+     */
     private void steerPaddle(double timeSeconds) {
         if (preset != Preset.PADDLE) {
             return;
         }
         if (paddle.getParticle().position.x >= PADDLE_END_X) {
             paddle.getParticle().velocity.zero();
+            paddleStopped = true;
             return;
         }
-        float angle = PADDLE_SWING * (float) Math.sin(PADDLE_RATE * timeSeconds);
-        paddle.getParticle().velocity.set(PADDLE_SPEED * FastMath.cos(angle),
-                PADDLE_SPEED * FastMath.sin(angle), 0f);
+        paddleAngle = scriptAngle(timeSeconds);
+        paddle.getParticle().velocity.set(PADDLE_SPEED * FastMath.cos(paddleAngle),
+                PADDLE_SPEED * FastMath.sin(paddleAngle), 0f);
+    }
+
+    /**
+     * Draw each recent contact's impulses, held {@link ContactImpulses#HOLD_SECONDS}: from
+     * the contact point, {@code j·n} on A and {@code −j·n} on B (Newton's third law), with
+     * the magnitude; a kinematic side's arrow grey and marked not applied. Allocates nothing.
+     */
+    private void showImpulses() {
+        if (arrows == null) {
+            return;
+        }
+        double now = getWorld().getTimeSeconds();
+        PlaneView plane = getPlaneView();
+        float size = IMPULSE_LABEL_SHARE * getHud().getLayout().getSceneLabelSize()
+                / Math.max(PlaneView.MIN_PIXELS, plane.getPixelsPerMetre());
+        for (int i = 0; i < ContactImpulses.CAPACITY; ++i) {
+            if (i >= impulses.size() || !impulses.isShown(i, now)) {
+                arrows.hide(2 * i);
+                arrows.hide(2 * i + 1);
+                continue;
+            }
+            // In front of the spheres (their radius towards the camera), so none hides them.
+            impulses.copyPoint(i, arrowStart).z += ARROW_LIFT * RADIUS;
+            for (int side = 0; side < 2; ++side) {
+                boolean onA = side == 0;
+                boolean applied = impulses.isApplied(i, onA);
+                impulses.copyImpulse(i, onA, arrowImpulse);
+                // The magnitude once per contact, on the side that took it (A, unless A is
+                // the kinematic paddle); the other side's arrow is its -J, or the paddle's J.
+                boolean magnitude = applied && (onA || !impulses.isApplied(i, true));
+                arrowLabel.setLength(0);
+                arrowLabel.append(onA ? "J" : "-J");
+                if (!applied) {
+                    arrowLabel.append(" not applied (kinematic)");
+                } else if (magnitude) {
+                    TextFormat.appendFixed(arrowLabel.append(" = "), impulses.getMagnitude(i), 2)
+                            .append(" N s");
+                }
+                arrows.show(2 * i + side, arrowStart, arrowImpulse, applied, arrowLabel, size);
+            }
+        }
+    }
+
+    /** Add {@code scale·n} to a vector in place. */
+    private static void addAlong(Vector3f vector, Vector3f n, float scale) {
+        vector.x += scale * n.x;
+        vector.y += scale * n.y;
+        vector.z += scale * n.z;
     }
 
     /** Put the preset's bodies at their launch states and park the rest on a rack. */
     private void arrange() {
+        int rackSlot = 0;
+        int used = usedBalls();
         for (int i = 0; i < BALLS; ++i) {
-            park(balls[i], i);
+            if (i >= used) {
+                park(balls[i], rackSlot++);
+            }
             balls[i].getParticle().setMass(i == 0 ? MASSES[mass1] : MASSES[mass2]);
         }
-        park(paddle, BALLS);
+        if (preset != Preset.PADDLE) {
+            park(paddle, rackSlot);
+        }
         paddle.getBody().setKinematic(preset == Preset.PADDLE);
         switch (preset) {
             case HEAD_ON:
@@ -553,9 +799,25 @@ public final class CollisionsDemo extends DemoState {
         }
     }
 
-    /** A body not in the preset: held on the rack at the bottom right, out of the HUD. */
+    /** @return how many balls the preset uses, from ball 1 on */
+    private int usedBalls() {
+        switch (preset) {
+            case HEAD_ON:
+            case GLANCING:
+                return 2;
+            case CRADLE:
+                return BALLS;
+            default:
+                return 3;
+        }
+    }
+
+    /**
+     * A body not in the preset: held on the rack, on the ground right of the box (where no
+     * ball goes), spaced so that the labels above them never meet; out of the HUD.
+     */
     private void park(DemoParticle body, int slot) {
-        position.set(X_MAX - RADIUS - 2.5f * RADIUS * slot, RADIUS, 0f);
+        position.set(RACK_X + RACK_SPACING * slot, RADIUS, 0f);
         body.setLaunch(position, Vector3f.ZERO);
         body.setParked(true);
         body.setHeld(true);
@@ -567,6 +829,36 @@ public final class CollisionsDemo extends DemoState {
         body.setLaunch(position, velocity);
         body.setParked(false);
         body.setHeld(false);
+    }
+
+    /** The paddle's readouts, for the ring: its angle and the impulses it and the walls gave. */
+    private StateRecord paddleState() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 3 * 3 + 1 + 1 + 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putVector(paddleImpulse);
+                slab.putVector(lastPaddleImpulse);
+                slab.putVector(wallImpulse);
+                slab.putInt(paddleContacts);
+                slab.putFloat(paddleAngle);
+                slab.putBoolean(paddleStopped);
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                slab.getVector(paddleImpulse);
+                slab.getVector(lastPaddleImpulse);
+                slab.getVector(wallImpulse);
+                paddleContacts = slab.getInt();
+                paddleAngle = slab.getFloat();
+                paddleStopped = slab.getBoolean();
+            }
+        };
     }
 
     /**
@@ -620,9 +912,28 @@ public final class CollisionsDemo extends DemoState {
         };
     }
 
-    /** The slide: the impulse with e and the masses; the latest impact's j. */
+    /**
+     * The slide: the impulse with e and the masses; the latest impact's j. For the paddle:
+     * its script and rule, and the momentum it gave the balls.
+     */
     @Override
     protected void writePresentation(Presentation slide) {
+        if (preset == Preset.PADDLE) {
+            StringBuilder script = slide.formula()
+                    .append("kinematic paddle: P += speed·h·U(t),  θ = ");
+            TextFormat.appendFixed(script, paddleAngle, 3).append(" rad");
+            TextFormat.appendFixed(slide.formula()
+                    .append("dynamic balls: v' = (1+e) u - e v along n,  e = "),
+                    getRestitution(), 1);
+            StringBuilder readout = slide.readout();
+            if (paddleContacts == 0) {
+                readout.append("the paddle has not hit a ball yet");
+                return;
+            }
+            TextFormat.appendVector(readout.append("ΣJ from the paddle "), paddleImpulse, 3)
+                    .append(" kg m/s, -J not applied");
+            return;
+        }
         TextFormat.appendFixed(slide.formula()
                 .append("j = -(1+e) v_rel·n / (1/m1 + 1/m2),   e = "), getRestitution(), 1);
         StringBuilder formula = slide.formula().append("V1 += j n/m1,  V2 -= j n/m2,   m1 = ");

@@ -4,11 +4,16 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
+import particlelab.demo.DemoParticle;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
 
 /** The Collisions demo attached to a headless app: momentum, energy and the paddle. */
 class CollisionsDemoTest {
@@ -114,6 +119,113 @@ class CollisionsDemoTest {
         String hud = (String) r[10];
         assertTrue(hud.contains("angle between the exit velocities just after the impact:"
                 + " 90.0 deg"), hud);
+    }
+
+    @Test
+    void everyBallStaysInTheFramedViewAndNoLabelCoversAnotherText() throws Exception {
+        // The paddle at 1280x720, 640x360 and presenting (F8); every other preset at
+        // 1280x720. Issue 20: a ball left the view, the rack's labels met the marks.
+        List<String> problems = new ArrayList<>();
+        CollisionsDemo.Preset[] presets = CollisionsDemo.Preset.values();
+        for (CollisionsDemo.Preset preset : presets) {
+            problems.addAll(framed(preset, 1280, 720, false));
+        }
+        problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 640, 360, false));
+        problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 1280, 720, true));
+        assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
+                problems.size() + " problems");
+    }
+
+    @Test
+    void aPaddleFrameWithImpulseArrowsAllocatesNothing() throws Exception {
+        boolean shown = harness.call(() -> {
+            collisions.setMasses(0, 0);
+            collisions.setRestitutionTenths(10);
+            collisions.choose(CollisionsDemo.Preset.PADDLE);
+            // 1.4 s: the paddle met ball 1 at about 1.25 s, its arrows are held 0.5 s.
+            for (int frame = 0; frame < 84; ++frame) {
+                collisions.update(H);
+            }
+            // Paused, each frame draws the same arrows and HUD: a repeatable frame.
+            collisions.getClock().setPaused(true);
+            boolean drawn = collisions.getImpulses().size() > 0 && collisions.getImpulses()
+                    .isShown(0, collisions.getWorld().getTimeSeconds());
+            try {
+                Allocations.assertAllocatesNothing("a paddle frame with arrows",
+                        () -> collisions.update(H));
+            } finally {
+                collisions.getClock().setPaused(false);
+            }
+            return drawn;
+        });
+        assertTrue(shown, "no arrow was drawn");
+    }
+
+    /** Run a preset for 10 s in a window: balls outside the scene, labels over texts. */
+    private static List<String> framed(CollisionsDemo.Preset preset, int width, int height,
+            boolean presenting) throws Exception {
+        return harness.call(() -> {
+            List<String> found = new ArrayList<>();
+            String where = preset + " " + width + "x" + height + (presenting ? " F8" : "")
+                    + " frame ";
+            try {
+                collisions.setPresenting(presenting);
+                collisions.layOut(width, height);
+                collisions.setMasses(0, 0);
+                collisions.setRestitutionTenths(10);
+                collisions.choose(preset);
+                for (int frame = 0; frame < 600; ++frame) {
+                    collisions.update(H);
+                    check(found, where + frame, frame % 10 == 0);
+                }
+            } finally {
+                collisions.setPresenting(false);
+                collisions.layOut(1280, 720);
+            }
+            return found;
+        });
+    }
+
+    private static void check(List<String> found, String where, boolean labels) {
+        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        PlaneView plane = collisions.getPlaneView();
+        float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
+        List<ScreenRect> texts = collisions.copyTextRects(new ArrayList<>());
+        List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
+        for (DemoParticle particle : collisions.getParticles()) {
+            Vector3f p = particle.getParticle().position;
+            float x = plane.screenX(p.x);
+            float y = plane.screenY(p.y);
+            // The whole sphere on screen, to half a pixel, and under no HUD text (the bands
+            // are drawn over the scene's sky).
+            ScreenRect sphere = new ScreenRect(x - radius + 0.5f, y - radius + 0.5f,
+                    2f * radius - 1f, 2f * radius - 1f);
+            if (!scene.contains(sphere)) {
+                found.add(where + ": " + particle.getLabel() + " at " + p + " outside " + scene);
+            }
+            for (ScreenRect text : hud) {
+                if (!text.isEmpty() && text.intersects(sphere)) {
+                    found.add(where + ": " + particle.getLabel() + " at " + p + " under "
+                            + text);
+                }
+            }
+            ScreenRect label = collisions.getView(particle).getLabelRect();
+            if (!labels || label.isEmpty()) {
+                continue;
+            }
+            boolean self = false;
+            for (ScreenRect text : texts) {
+                boolean same = text.getX() == label.getX() && text.getY() == label.getY()
+                        && text.getWidth() == label.getWidth()
+                        && text.getHeight() == label.getHeight();
+                if (same && !self) {
+                    self = true;
+                } else if (!text.isEmpty() && text.intersects(label)) {
+                    found.add(where + ": " + particle.getLabel() + "'s label " + label
+                            + " covers " + text);
+                }
+            }
+        }
     }
 
     private static Vector3f collisionsVelocity(int ball) throws Exception {
