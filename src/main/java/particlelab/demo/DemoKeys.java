@@ -120,8 +120,14 @@ final class DemoKeys {
         }
         if (!demoTitles.isEmpty()) {
             help.section("The demos, by number");
-            for (int i = 0; i < demoTitles.size(); ++i) {
-                help.key(Integer.toString(i + 1), demoTitles.get(i));
+            // Two a line: with 19 demos a line each pushed the help below legible size.
+            for (int i = 0; i < demoTitles.size(); i += 2) {
+                if (i + 1 < demoTitles.size()) {
+                    help.keys(Integer.toString(i + 1), demoTitles.get(i),
+                            Integer.toString(i + 2), demoTitles.get(i + 1));
+                } else {
+                    help.key(Integer.toString(i + 1), demoTitles.get(i));
+                }
             }
         }
         help.jmeKeys();

@@ -35,6 +35,23 @@ public final class HelpText {
     }
 
     /**
+     * Add one line holding two keys' entries, for a list too long to give a line each (the
+     * demos by number): "key  -  description;   key  -  description".
+     *
+     * @param keyLabel the first key (not null)
+     * @param description what it does (not null)
+     * @param secondKeyLabel the second key (not null)
+     * @param secondDescription what that one does (not null)
+     * @return this
+     */
+    public HelpText keys(String keyLabel, String description, String secondKeyLabel,
+            String secondDescription) {
+        text.append("   ").append(keyLabel).append("  -  ").append(description).append(";   ")
+                .append(secondKeyLabel).append("  -  ").append(secondDescription).append('\n');
+        return this;
+    }
+
+    /**
      * Add the section of jME's own keys and the camera's, which every window has.
      *
      * @return this

@@ -94,7 +94,7 @@ class DemoSwitcherHeadlessTest {
         assertTrue(help.contains("\n   Tab / Shift+Tab  -  next demo; with Shift, the previous"
                 + " one"), help);
         assertTrue(help.contains("\nThe demos, by number\n   1  -  " + demos.get(0).getTitle()
-                + "\n"), help);
+                + ";   2  -  " + demos.get(1).getTitle() + "\n"), help);
         assertTrue(help.contains("\n   19  -  " + demos.get(18).getTitle() + "\n"), help);
         String footer = harness.call(() -> demo.getHud().getFooterText());
         assertTrue(footer.contains("Tab / Shift+Tab  demos (or 1-19)"), footer);
