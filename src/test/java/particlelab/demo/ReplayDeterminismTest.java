@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import particlelab.app.DemoCatalog;
+import particlelab.lecture.HelloAimingDemo;
 import particlelab.world.StateRing;
 
 /**
@@ -34,7 +36,22 @@ class ReplayDeterminismTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("demoNames")
     void stepBackThenReplayGivesTheSameBits(String name) {
-        DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
+        checkReplay(name, DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create());
+    }
+
+    /**
+     * The lanes off by default, on here: HelloAiming's slide-code bullet beside the recipe's
+     * (its own vectors and step count in the demo's record).
+     */
+    @Test
+    void stepBackThenReplayGivesTheSameBitsWithTheSlideCodeLaneOn() {
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        aiming.setCode(HelloAimingDemo.BOTH_CODES);
+        checkReplay("aiming code=both", aiming);
+    }
+
+    /** Step back and replay a demo, then End; compare every step's bits (class Javadoc). */
+    private static void checkReplay(String name, DemoState demo) {
         StateRing ring = demo.getStateRing();
         String[] ownLines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
