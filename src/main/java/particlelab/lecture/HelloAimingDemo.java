@@ -112,8 +112,8 @@ public final class HelloAimingDemo extends DemoState {
     public static final int BOTH_CODES = 2;
     /** The slide bullet's colour. */
     private static final ColorRGBA SLIDE_COLOR = new ColorRGBA(1f, 0.35f, 0.95f, 1f);
-    /** The slide bullet's square's side when no recipe bullet's view gives one (m). */
-    private static final float SLIDE_MARK_SIZE = 0.8f;
+    /** The slide bullet's square's side (m): larger than the spheres, so it shows around them. */
+    private static final float SLIDE_MARK_SIZE = 1.6f;
 
     private final Gravity gravity = new Gravity();
     private final ParticleIntegrator integrator = new ParticleIntegrator(gravity);
@@ -445,7 +445,7 @@ public final class HelloAimingDemo extends DemoState {
         declareParameter(DemoParameter.choice("aim", "aims fired (next shot)", FIRING_NAMES,
                 firing, DemoParameter.Applies.LIVE, value -> firing = Math.round(value)));
         declareParameter(DemoParameter.choice("code", "bullets' code (next shot)", CODE_NAMES,
-                code, DemoParameter.Applies.LIVE, value -> code = Math.round(value)));
+                code, DemoParameter.Applies.LIVE, this::applyCode));
     }
 
     @Override
@@ -621,6 +621,18 @@ public final class HelloAimingDemo extends DemoState {
     private void applyVx(float newVx) {
         vx = newVx;
         frameArcs();
+    }
+
+    /**
+     * The code parameter's setter: from the next shot on, and for the shot in the air too if
+     * it has not flown yet (a {@code --set} before the first frame).
+     */
+    private void applyCode(float value) {
+        code = Math.round(value);
+        if (bullets[0] != null && bullets[0].getFlightSeconds() == 0.0) {
+            launchSlide();
+            showFiredBullets();
+        }
     }
 
     private void changeVx(float delta) {
