@@ -167,6 +167,8 @@ public final class FastBulletsDemo extends DemoState {
      * Fire the projectile from the muzzle, level, at the target's centre.
      */
     public void fire() {
+        // The bullet exists once the scene does (a caller may fire before any frame).
+        getWorld();
         refireDue = false;
         launchVelocity.set(getSpeed(), 0f, 0f);
         bullet.setLaunch(muzzle, launchVelocity);

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import particlelab.app.DemoCatalog;
+import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.world.StateRing;
 
@@ -40,7 +41,7 @@ class ReplayDeterminismTest {
     }
 
     /**
-     * The lanes off by default, on here: HelloAiming's slide-code bullet beside the recipe's
+     * A lane off by default, on here: HelloAiming's slide-code bullet beside the recipe's
      * (its own vectors and step count in the demo's record).
      */
     @Test
@@ -48,6 +49,14 @@ class ReplayDeterminismTest {
         HelloAimingDemo aiming = new HelloAimingDemo();
         aiming.setCode(HelloAimingDemo.BOTH_CODES);
         checkReplay("aiming code=both", aiming);
+    }
+
+    /** The cheat's frontier with the drop-corrected way alone (its square's shot time). */
+    @Test
+    void stepBackThenReplayGivesTheSameBitsWithTheCheatFrontierOn() {
+        FastBulletsDemo cheat = new FastBulletsDemo();
+        cheat.getParameters().set("shot", 3);
+        checkReplay("cheat shot=corrected", cheat);
     }
 
     /** Step back and replay a demo, then End; compare every step's bits (class Javadoc). */
