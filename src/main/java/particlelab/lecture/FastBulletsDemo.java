@@ -81,8 +81,7 @@ public final class FastBulletsDemo extends DemoState {
     private static final ColorRGBA IMPACT_COLOR = new ColorRGBA(1f, 1f, 0.3f, 1f);
     private static final ColorRGBA STRAIGHT_COLOR = new ColorRGBA(0.3f, 0.85f, 1f, 1f);
     private static final ColorRGBA CORRECTED_COLOR = new ColorRGBA(0.4f, 1f, 0.45f, 1f);
-    /** The {@code shot} parameter's names: all four ways, or one by {@link CheatFrontier.Way}
-     * ordinal + 1. */
+    /** The {@code shot} parameter's names: all four ways, or one by its way's ordinal + 1. */
     private static final String[] SHOT_NAMES = {"all", "ray", "straight", "corrected",
         "stepped"};
     /** Each way's HUD name, by ordinal. */

@@ -93,7 +93,7 @@ class ParameterPanelHeadlessTest {
         assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g");
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k");
-        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim");
+        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");
         assertNames(CollisionsDemo.class, "h", "e", "preset");
         assertNames(WindDemo.class, "h", "w");
