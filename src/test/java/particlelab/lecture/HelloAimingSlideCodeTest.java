@@ -9,6 +9,7 @@ import org.junit.jupiter.api.Test;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.SlideCodeBullet;
 import particlelab.demo.DemoParticle;
+import particlelab.view.TextFormat;
 
 /**
  * HelloAiming's slide-code lane, in plain JUnit: the slide's bullet beside the recipe's, the
@@ -67,7 +68,7 @@ class HelloAimingSlideCodeTest {
         }
         assertTrue(hud.contains(" m past the recipe's interpolated crossing"), hud);
         StringBuilder below = new StringBuilder("stopped ");
-        particlelab.view.TextFormat.appendFixed(below, -slide.position.y, 3);
+        TextFormat.appendFixed(below, -slide.position.y, 3);
         assertTrue(hud.contains(below), below + " in\n" + hud);
     }
 
