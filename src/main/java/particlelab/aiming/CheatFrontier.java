@@ -138,7 +138,7 @@ public final class CheatFrontier {
      *     there)
      */
     public double getMiss(Way way) {
-        return miss[way.ordinal()];
+        return miss[Validate.notNull(way, "way").ordinal()];
     }
 
     /**
@@ -148,7 +148,7 @@ public final class CheatFrontier {
      * @return the time after the shot (in seconds; 0 for the ray)
      */
     public double getHitSeconds(Way way) {
-        return hitSeconds[way.ordinal()];
+        return hitSeconds[Validate.notNull(way, "way").ordinal()];
     }
 
     /**
@@ -158,7 +158,7 @@ public final class CheatFrontier {
      * @return the steps (0 for the ray)
      */
     public int getSteps(Way way) {
-        return steps[way.ordinal()];
+        return steps[Validate.notNull(way, "way").ordinal()];
     }
 
     /**
@@ -168,7 +168,7 @@ public final class CheatFrontier {
      * @return true on a hit
      */
     public boolean hits(Way way) {
-        return Math.abs(miss[way.ordinal()]) <= radiusMetres;
+        return Math.abs(miss[Validate.notNull(way, "way").ordinal()]) <= radiusMetres;
     }
 
     /**
@@ -180,7 +180,7 @@ public final class CheatFrontier {
      *     the centre at 0; NaN if it never gets there)
      */
     public double shoot(Way way) {
-        switch (way) {
+        switch (Validate.notNull(way, "way")) {
             case RAY:
                 return shootRay();
             case STRAIGHT:

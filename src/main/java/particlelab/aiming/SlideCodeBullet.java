@@ -1,6 +1,7 @@
 package particlelab.aiming;
 
 import com.jme3.math.Vector3f;
+import particlelab.physics.Validate;
 
 /**
  * HelloAiming's bullet as the lecture slide's update writes it, transcribed literally: every
@@ -55,8 +56,8 @@ public final class SlideCodeBullet {
      * @param launchVelocity V (in m/s, not null, copied)
      */
     public void launch(Vector3f launchPosition, Vector3f launchVelocity) {
-        position.set(launchPosition);
-        velocity.set(launchVelocity);
+        position.set(Validate.notNull(launchPosition, "launchPosition"));
+        velocity.set(Validate.notNull(launchVelocity, "launchVelocity"));
         steps = 0;
     }
 
@@ -68,6 +69,7 @@ public final class SlideCodeBullet {
      * @return true if the bullet moved
      */
     public boolean update(Vector3f gravity, float tpf) {
+        Validate.notNull(gravity, "gravity");
         if (position.y >= 0) {
             velocity = velocity.add(gravity.mult(tpf));
             position = position.add(velocity.mult(tpf));

@@ -123,5 +123,9 @@ class CheatFrontierTest {
                 () -> new CheatFrontier(G, D, R, Float.NaN, H));
         assertTrue(e.getMessage().contains("speed v"), e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> new CheatFrontier(G, D, R, 35f, 0f));
+        CheatFrontier frontier = new CheatFrontier(G, D, R, 35f, H);
+        e = assertThrows(IllegalArgumentException.class, () -> frontier.shoot(null));
+        assertTrue(e.getMessage().contains("way"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> frontier.getMiss(null));
     }
 }

@@ -3,6 +3,7 @@ package particlelab.aiming;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
@@ -104,6 +105,19 @@ class SlideCodeBulletTest {
         assertTrue(slide.update(new Vector3f(0f, -G, 0f), H));
         assertNotSame(position, slide.position);
         assertNotSame(velocity, slide.velocity);
+    }
+
+    /** Null is refused naming the parameter, as everywhere in the aiming package. */
+    @Test
+    void nullIsRefusedNamingTheParameter() {
+        SlideCodeBullet slide = new SlideCodeBullet();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> slide.update(null, H));
+        assertTrue(e.getMessage().contains("gravity"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> slide.launch(Vector3f.ZERO, null));
+        assertTrue(e.getMessage().contains("launchVelocity"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> slide.setSteps(-1));
+        assertTrue(e.getMessage().contains("-1"), e.getMessage());
     }
 
     private static void assertBits(Vector3f expected, Vector3f actual, float vx, float h,
