@@ -106,9 +106,11 @@ public final class HelloAimingDemo extends DemoState {
     private static final Aim[] AIMS = Aim.values();
     /** The {@code code} parameter's names: the shared recipe alone, the slide's alone, both. */
     private static final String[] CODE_NAMES = {"recipe", "slide", "both"};
-    /** The values of {@link #getCode()}. */
+    /** {@link #getCode()}: the shared recipe's bullets alone (the default). */
     public static final int RECIPE_CODE = 0;
+    /** {@link #getCode()}: the slide's bullet drawn alone (the recipe's fly hidden). */
     public static final int SLIDE_CODE = 1;
+    /** {@link #getCode()}: the slide's bullet beside the recipe's. */
     public static final int BOTH_CODES = 2;
     /** The slide bullet's colour. */
     private static final ColorRGBA SLIDE_COLOR = new ColorRGBA(1f, 0.35f, 0.95f, 1f);
