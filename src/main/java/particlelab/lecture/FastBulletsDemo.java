@@ -82,7 +82,7 @@ public final class FastBulletsDemo extends DemoState {
     private static final ColorRGBA STRAIGHT_COLOR = new ColorRGBA(0.3f, 0.85f, 1f, 1f);
     private static final ColorRGBA CORRECTED_COLOR = new ColorRGBA(0.4f, 1f, 0.45f, 1f);
     /** The {@code shot} parameter's names: all four ways, or one by its way's ordinal + 1. */
-    private static final String[] SHOT_NAMES = {"all", "ray", "straight", "corrected",
+    private static final String[] SHOT_NAMES = {"all", "ray", "line", "raised",
         "stepped"};
     /** Each way's HUD name, by ordinal. */
     private static final String[] WAY_NAMES = {"ray", "straight line", "drop-corrected",
@@ -364,7 +364,7 @@ public final class FastBulletsDemo extends DemoState {
                         setSpeedIndex(Math.round(value));
                     }
                 }));
-        declareParameter(DemoParameter.choice("shot", "ways to shoot shown", SHOT_NAMES, shown,
+        declareParameter(DemoParameter.choice("shot", "ways shown", SHOT_NAMES, shown,
                 DemoParameter.Applies.LIVE, value -> {
                     shown = Math.round(value);
                     showWays();
@@ -455,9 +455,13 @@ public final class FastBulletsDemo extends DemoState {
         TextFormat.appendFixed(text, DISC_THICKNESS, 1).append(" m thick\n");
         double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
         text.append("Drop the straight line ignores: ½·g·(d/v)² = ");
-        TextFormat.appendFixed(text, drop, 3).append(" m   against the radius r = ");
-        TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\n");
-        text.append("Straight line (ray): HIT at the centre, always.   Projectile: ");
+        TextFormat.appendFixed(text, drop, 3).append(" m against r = ");
+        TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\nSo the cheat ")
+                .append(drop <= TARGET_RADIUS ? "is" : "is NOT")
+                .append(" good enough here: it is for d < v·√(2r/g) = ");
+        TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
+                .append(" m\n");
+        text.append("Projectile: ");
         if (!reached) {
             text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
         } else {
@@ -467,43 +471,33 @@ public final class FastBulletsDemo extends DemoState {
             TextFormat.appendFixed(text, Hitscan.steppedDrop(GRAVITY, DISTANCE, v, h), 3)
                     .append(" m)");
         }
-        text.append('\n');
-        text.append("So the cheat ").append(drop <= TARGET_RADIUS ? "is" : "is NOT")
-                .append(" good enough here: it is for d < v·√(2r/g) = ");
-        TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
-                .append(" m\n");
         writeFrontier(text);
     }
 
     // ---------------------------------------------------------------- private helpers ----
 
     /**
-     * The frontier's three lines: what the miss means, then two ways a line, each with its
-     * miss, hit time and cost per shot; the ways shown in brackets.
+     * The frontier, after the projectile's line: the key, then one line of the four ways,
+     * each with its miss, hit time and cost per shot; the way shown alone in brackets.
      */
     private void writeFrontier(StringBuilder text) {
-        text.append("Four ways (").append(shotKey.getKeyLabel()).append(": ")
-                .append(SHOT_NAMES[shown]).append("): miss = where a real bullet aimed so"
-                        + " crosses x = d; cost per shot timed once on this machine\n");
+        text.append(".   Ways (").append(shotKey.getKeyLabel()).append(": ")
+                .append(SHOT_NAMES[shown]).append("): miss, time, cost per shot\n");
         for (int w = 0; w < WAYS.length; ++w) {
             CheatFrontier.Way way = WAYS[w];
             boolean marked = shown == w + 1;
-            text.append(marked ? "[" : "").append(WAY_NAMES[w]).append(marked ? "]" : "")
-                    .append(" miss ");
-            TextFormat.appendFixed(text, frontier.getMiss(way), 3).append(" m at t = ");
-            TextFormat.appendFixed(text, frontier.getHitSeconds(way), 3).append(" s, ");
+            text.append(marked ? "[" : "").append(SHOT_NAMES[w + 1]).append(marked ? "] " : " ");
+            TextFormat.appendFixed(text, frontier.getMiss(way), 3).append(" m ");
+            TextFormat.appendFixed(text, frontier.getHitSeconds(way), 2).append(" s ");
             double nanos = getCostNanos(way);
             if (Double.isNaN(nanos)) {
-                text.append("cost not timed");
-            } else if (nanos < 1e4) {
+                text.append("not timed");
+            } else if (nanos < 1e3) {
                 TextFormat.appendFixed(text, nanos, 0).append(" ns");
             } else {
                 TextFormat.appendFixed(text, nanos / 1e3, 1).append(" µs");
             }
-            if (way != CheatFrontier.Way.RAY) {
-                text.append(" (").append(frontier.getSteps(way)).append(" steps)");
-            }
-            text.append(w % 2 == 0 ? ";   " : "\n");
+            text.append(w % 2 == 1 ? "\n" : ";  ");
         }
     }
 

@@ -56,7 +56,7 @@ class ReplayDeterminismTest {
     void stepBackThenReplayGivesTheSameBitsWithTheCheatFrontierOn() {
         FastBulletsDemo cheat = new FastBulletsDemo();
         cheat.getParameters().set("shot", 3);
-        checkReplay("cheat shot=corrected", cheat);
+        checkReplay("cheat shot=raised", cheat);
     }
 
     /** Step back and replay a demo, then End; compare every step's bits (class Javadoc). */

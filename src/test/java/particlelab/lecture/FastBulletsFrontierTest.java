@@ -60,20 +60,19 @@ class FastBulletsFrontierTest {
         FastBulletsDemo demo = new FastBulletsDemo();
         demo.advancePhysics(H);
         String hud = demo.formatHud(new StringBuilder()).toString();
-        String[] names = {"ray miss ", "straight line miss ", "drop-corrected miss ",
-            "stepped miss "};
+        String[] names = {"ray ", "line ", "raised ", "stepped "};
         CheatFrontier.Way[] ways = CheatFrontier.Way.values();
         for (int w = 0; w < ways.length; ++w) {
             StringBuilder expected = new StringBuilder(names[w]);
             TextFormat.appendFixed(expected, demo.getFrontier().getMiss(ways[w]), 3);
             assertTrue(hud.contains(expected), expected + " in\n" + hud);
         }
-        assertTrue(hud.contains("Four ways (L: all)"), hud);
-        assertTrue(hud.contains("cost not timed"), hud);
+        assertTrue(hud.contains("Ways (L: all)"), hud);
+        assertTrue(hud.contains("not timed"), hud);
         demo.getParameters().set("shot", 3);
         assertEquals(3, demo.getShown());
         hud = demo.formatHud(new StringBuilder()).toString();
-        assertTrue(hud.contains("[drop-corrected] miss "), hud);
-        assertTrue(hud.contains("Four ways (L: corrected)"), hud);
+        assertTrue(hud.contains("[raised] "), hud);
+        assertTrue(hud.contains("Ways (L: raised)"), hud);
     }
 }
