@@ -455,7 +455,7 @@ public final class FastBulletsDemo extends DemoState {
         TextFormat.appendFixed(text, DISC_THICKNESS, 1).append(" m thick\n");
         double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
         text.append("Drop the straight line ignores: ½·g·(d/v)² = ");
-        TextFormat.appendFixed(text, drop, 3).append(" m against r = ");
+        TextFormat.appendFixed(text, drop, 3).append(" m   against the radius r = ");
         TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\nSo the cheat ")
                 .append(drop <= TARGET_RADIUS ? "is" : "is NOT")
                 .append(" good enough here: it is for d < v·√(2r/g) = ");
