@@ -114,7 +114,7 @@ public final class LectureTour {
             new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
                     "h=1/10"),
             new Stop("Targeting problem", "height", LectureTour::watchHeights),
-            new Stop("HelloAiming", "aiming", LectureTour::watchAiming),
+            new Stop("HelloAiming", "aiming", LectureTour::watchAiming, "code=both"),
             new Stop("Euler steps: advantages and disadvantages", "tunnelling",
                     LectureTour::watchTunnelling),
             new Stop("If accuracy matters: cheat", "cheat", LectureTour::watchCheat,

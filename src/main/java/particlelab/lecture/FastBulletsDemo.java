@@ -1,10 +1,14 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
+import particlelab.accuracy.CostMeter;
+import particlelab.accuracy.ReportConfig;
+import particlelab.aiming.CheatFrontier;
 import particlelab.aiming.Hitscan;
 import particlelab.collision.Plane;
 import particlelab.demo.DemoParameter;
@@ -44,6 +48,15 @@ import particlelab.world.World;
  * the disc, or never on it): the world sweeps each step's straight segment against the disc's
  * plane and puts the bullet at the first point where it crosses, the impact drawn there. The
  * prologue accepts the contact only within r of the centre; a miss flies on to the ground.
+ *
+ * <p>The frontier (L, {@code --set shot=...}): four ways to shoot at the same disc
+ * ({@link CheatFrontier}): the instant ray, a straight-line bullet with travel time (a cyan
+ * square along the ray), the drop-corrected straight line (a green square along the aim raised
+ * by {@code ½·g·(d/v)²}) and the stepped projectile. The HUD gives each one's miss (where a
+ * real bullet aimed as that way says crosses {@code x = d}: the exact parabola for the three
+ * straight-line ways, the stepped bullet itself for the fourth), its hit time and its cost
+ * per shot, timed in process once when the demo starts (on this machine, rough: a short
+ * timing). L shows all four or one alone.
  */
 public final class FastBulletsDemo extends DemoState {
 
@@ -66,6 +79,18 @@ public final class FastBulletsDemo extends DemoState {
     private static final ColorRGBA TARGET_COLOR = new ColorRGBA(1f, 0.3f, 0.25f, 1f);
     private static final ColorRGBA RAY_COLOR = new ColorRGBA(0.4f, 0.9f, 1f, 0.7f);
     private static final ColorRGBA IMPACT_COLOR = new ColorRGBA(1f, 1f, 0.3f, 1f);
+    private static final ColorRGBA STRAIGHT_COLOR = new ColorRGBA(0.3f, 0.85f, 1f, 1f);
+    private static final ColorRGBA CORRECTED_COLOR = new ColorRGBA(0.4f, 1f, 0.45f, 1f);
+    /** The {@code shot} parameter's names: all four ways, or one by its way's ordinal + 1. */
+    private static final String[] SHOT_NAMES = {"all", "ray", "line", "raised",
+        "stepped"};
+    /** Each way's HUD name, by ordinal. */
+    private static final String[] WAY_NAMES = {"ray", "straight line", "drop-corrected",
+        "stepped"};
+    /** Shots per timed call: enough for microseconds, so the clock's grain does not show. */
+    private static final int SHOTS_PER_CALL = 32;
+    /** The ways in ordinal order, without the copy {@code values()} makes. */
+    private static final CheatFrontier.Way[] WAYS = CheatFrontier.Way.values();
 
     private final ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
     /** The disc's plane x = d, its front facing the gun. */
@@ -91,6 +116,19 @@ public final class FastBulletsDemo extends DemoState {
     private boolean refireDue;
     private KeyBinding fasterKey;
     private KeyBinding slowerKey;
+    private KeyBinding shotKey;
+    /** Which ways are shown: 0 for all, else a way's ordinal + 1 (the {@code shot} value). */
+    private int shown;
+    /** The four ways for the shot's speed and step, made again only when they change. */
+    private CheatFrontier frontier;
+    private float frontierSpeed = Float.NaN;
+    private float frontierStep = Float.NaN;
+    /** Each way's measured time per step, or per shot for the ray (ns; NaN: not measured). */
+    private final double[] nanosPerStep = {Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+    /** The time since this shot was fired (in seconds of simulated time). */
+    private float shotSeconds;
+    /** The straight-line bullets' squares (null without a window), by way ordinal. */
+    private final Geometry[] lineMarks = new Geometry[WAYS.length];
 
     /** Create the demo. */
     public FastBulletsDemo() {
@@ -128,6 +166,8 @@ public final class FastBulletsDemo extends DemoState {
      * Fire the projectile from the muzzle, level, at the target's centre.
      */
     public void fire() {
+        // The bullet exists once the scene does (a caller may fire before any frame).
+        getWorld();
         refireDue = false;
         launchVelocity.set(getSpeed(), 0f, 0f);
         bullet.setLaunch(muzzle, launchVelocity);
@@ -137,6 +177,12 @@ public final class FastBulletsDemo extends DemoState {
         arrivalSeconds = Double.NaN;
         stoppedSeconds = -1f;
         shotStep = getClock().getCurrentStepSeconds();
+        shotSeconds = 0f;
+        if (frontier == null || frontierSpeed != getSpeed() || frontierStep != shotStep) {
+            frontier = new CheatFrontier(GRAVITY, DISTANCE, TARGET_RADIUS, getSpeed(), shotStep);
+            frontierSpeed = getSpeed();
+            frontierStep = shotStep;
+        }
         if (impactMark != null) {
             impactMark.setCullHint(Spatial.CullHint.Always);
         }
@@ -198,6 +244,59 @@ public final class FastBulletsDemo extends DemoState {
         return bullet;
     }
 
+    /**
+     * Access the four ways for the shot in the air (its speed and step).
+     *
+     * @return the frontier (not null once the demo has started)
+     */
+    public CheatFrontier getFrontier() {
+        return frontier;
+    }
+
+    /**
+     * Return which ways are shown.
+     *
+     * @return 0 for all four, else a way's ordinal + 1
+     */
+    public int getShown() {
+        return shown;
+    }
+
+    /**
+     * Time each way's shot once, in process, with the report's timing loop (its shortest
+     * budget: a rough figure for this machine), at the shot's speed and step; kept as time
+     * per step (per shot for the ray), so the HUD's cost per shot follows the speed and h.
+     * Allocates; called once when the demo starts in an application.
+     */
+    public void measureCosts() {
+        CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.TINY));
+        for (int w = 0; w < WAYS.length; ++w) {
+            CheatFrontier.Way way = WAYS[w];
+            CheatFrontier timed = frontier;
+            CostMeter.Workload shots = units -> {
+                double sum = 0.0;
+                for (int i = 0; i < units; ++i) {
+                    sum += timed.shoot(way);
+                }
+                return sum;
+            };
+            // Twice, the first as a longer warm-up for the JIT; the second is kept.
+            meter.measure(shots, SHOTS_PER_CALL);
+            double nanosPerShot = meter.measure(shots, SHOTS_PER_CALL).nanosPerUnit();
+            nanosPerStep[w] = nanosPerShot / Math.max(1, timed.getSteps(way));
+        }
+    }
+
+    /**
+     * Return one way's cost per shot at the shot's speed and step, from {@link #measureCosts}.
+     *
+     * @param way the way (not null)
+     * @return the time (in nanoseconds; NaN until measured)
+     */
+    public double getCostNanos(CheatFrontier.Way way) {
+        return nanosPerStep[way.ordinal()] * Math.max(1, frontier.getSteps(way));
+    }
+
     // ------------------------------------------------------------- framework overrides ----
 
     @Override
@@ -235,6 +334,15 @@ public final class FastBulletsDemo extends DemoState {
                     IMPACT_COLOR);
             impactMark.setCullHint(Spatial.CullHint.Always);
             getSceneNode().attachChild(impactMark);
+            ColorRGBA[] colors = {null, STRAIGHT_COLOR, CORRECTED_COLOR, null};
+            for (int w = 0; w < WAYS.length; ++w) {
+                if (colors[w] != null) {
+                    lineMarks[w] = WallView.create(getApplication().getAssetManager(),
+                            WAY_NAMES[w], -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f,
+                            MARK_SIZE / 2f, colors[w]);
+                    getSceneNode().attachChild(lineMarks[w]);
+                }
+            }
         }
         impact.set(Float.NaN, Float.NaN, 0f);
         addStateRecord(shotState());
@@ -256,6 +364,11 @@ public final class FastBulletsDemo extends DemoState {
                         setSpeedIndex(Math.round(value));
                     }
                 }));
+        declareParameter(DemoParameter.choice("shot", "ways shown", SHOT_NAMES, shown,
+                DemoParameter.Applies.LIVE, value -> {
+                    shown = Math.round(value);
+                    showWays();
+                }));
     }
 
     @Override
@@ -269,6 +382,32 @@ public final class FastBulletsDemo extends DemoState {
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", down.toString(),
                 () -> setSpeedIndex(Math.max(0, speedIndex - 1)));
         bindKey(KeyInput.KEY_F, "F", "fire again", this::fire);
+        shotKey = bindKey(KeyInput.KEY_L, "L",
+                "ways shown: all four -> ray -> straight line -> drop-corrected -> stepped",
+                () -> getParameters().set("shot", (shown + 1) % SHOT_NAMES.length));
+    }
+
+    @Override
+    protected void initialize(Application app) {
+        super.initialize(app);
+        measureCosts();
+        showWays();
+    }
+
+    @Override
+    protected void afterFrame() {
+        // The straight-line bullets at the shot's time, each along its line, stopped at x = d.
+        for (int w = 0; w < WAYS.length; ++w) {
+            Geometry mark = lineMarks[w];
+            if (mark == null) {
+                continue;
+            }
+            double slope = WAYS[w] == CheatFrontier.Way.CORRECTED
+                    ? frontier.getDrop() / DISTANCE : 0.0;
+            double along = getSpeed() * (double) shotSeconds / Math.sqrt(1.0 + slope * slope);
+            float x = (float) Math.min(DISTANCE, along);
+            mark.setLocalTranslation(x, GUN_HEIGHT + (float) (x * slope), 0.02f);
+        }
     }
 
     @Override
@@ -279,6 +418,7 @@ public final class FastBulletsDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        shotSeconds += stepSeconds;
         if (bullet.isHeld()) {
             if (stoppedSeconds < 0f) {
                 stoppedSeconds = 0f;
@@ -316,8 +456,12 @@ public final class FastBulletsDemo extends DemoState {
         double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
         text.append("Drop the straight line ignores: ½·g·(d/v)² = ");
         TextFormat.appendFixed(text, drop, 3).append(" m   against the radius r = ");
-        TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\n");
-        text.append("Straight line (ray): HIT at the centre, always.   Projectile: ");
+        TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\nSo the cheat ")
+                .append(drop <= TARGET_RADIUS ? "is" : "is NOT")
+                .append(" good enough here: it is for d < v·√(2r/g) = ");
+        TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
+                .append(" m\n");
+        text.append("Projectile: ");
         if (!reached) {
             text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
         } else {
@@ -327,14 +471,51 @@ public final class FastBulletsDemo extends DemoState {
             TextFormat.appendFixed(text, Hitscan.steppedDrop(GRAVITY, DISTANCE, v, h), 3)
                     .append(" m)");
         }
-        text.append('\n');
-        text.append("So the cheat ").append(drop <= TARGET_RADIUS ? "is" : "is NOT")
-                .append(" good enough here: it is for d < v·√(2r/g) = ");
-        TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
-                .append(" m\n");
+        writeFrontier(text);
     }
 
     // ---------------------------------------------------------------- private helpers ----
+
+    /**
+     * The frontier, after the projectile's line: the key, then one line of the four ways,
+     * each with its miss, hit time and cost per shot; the way shown alone in brackets.
+     */
+    private void writeFrontier(StringBuilder text) {
+        text.append(".   Ways (").append(shotKey.getKeyLabel()).append(": ")
+                .append(SHOT_NAMES[shown]).append("): miss, time, cost per shot\n");
+        for (int w = 0; w < WAYS.length; ++w) {
+            CheatFrontier.Way way = WAYS[w];
+            boolean marked = shown == w + 1;
+            text.append(marked ? "[" : "").append(SHOT_NAMES[w + 1]).append(marked ? "] " : " ");
+            TextFormat.appendFixed(text, frontier.getMiss(way), 3).append(" m ");
+            TextFormat.appendFixed(text, frontier.getHitSeconds(way), 2).append(" s ");
+            double nanos = getCostNanos(way);
+            if (Double.isNaN(nanos)) {
+                text.append("not timed");
+            } else if (nanos < 1e3) {
+                TextFormat.appendFixed(text, nanos, 0).append(" ns");
+            } else {
+                TextFormat.appendFixed(text, nanos / 1e3, 1).append(" µs");
+            }
+            text.append(w % 2 == 1 ? "\n" : ";  ");
+        }
+    }
+
+    /** Show the ways chosen: the straight-line squares and the stepped projectile. */
+    private void showWays() {
+        for (int w = 0; w < WAYS.length; ++w) {
+            boolean visible = shown == 0 || shown == w + 1;
+            if (lineMarks[w] != null) {
+                lineMarks[w].setCullHint(visible ? Spatial.CullHint.Inherit
+                        : Spatial.CullHint.Always);
+            }
+            if (WAYS[w] == CheatFrontier.Way.STEPPED && bullet != null
+                    && getView(bullet) != null) {
+                getView(bullet).getNode().setCullHint(visible ? Spatial.CullHint.Inherit
+                        : Spatial.CullHint.Always);
+            }
+        }
+    }
 
     /**
      * The prologue: the disc's plane is crossed at the contact point, the first point of the
@@ -377,7 +558,7 @@ public final class FastBulletsDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return 3 + 2 + 2 + 1 + 1 + 1 + 1;
+                return 3 + 2 + 2 + 1 + 1 + 1 + 1 + 1;
             }
 
             @Override
@@ -390,6 +571,7 @@ public final class FastBulletsDemo extends DemoState {
                 slab.putFloat(worldStep);
                 slab.putFloat(stoppedSeconds);
                 slab.putBoolean(refireDue);
+                slab.putFloat(shotSeconds);
             }
 
             @Override
@@ -402,6 +584,7 @@ public final class FastBulletsDemo extends DemoState {
                 worldStep = slab.getFloat();
                 stoppedSeconds = slab.getFloat();
                 refireDue = slab.getBoolean();
+                shotSeconds = slab.getFloat();
                 if (impactMark != null) {
                     impactMark.setCullHint(reached && hit ? Spatial.CullHint.Inherit
                             : Spatial.CullHint.Always);

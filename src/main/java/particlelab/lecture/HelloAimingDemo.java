@@ -4,20 +4,24 @@ import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
+import particlelab.aiming.SlideCodeBullet;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.demo.LaunchControl;
 import particlelab.physics.Gravity;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.ParticleView;
 import particlelab.view.TextFormat;
+import particlelab.view.WallView;
 import particlelab.world.StateRecord;
 import particlelab.world.StateSlab;
 
@@ -44,6 +48,17 @@ import particlelab.world.StateSlab;
  * flight time of the shots in the air: firing starts it again from 0, and it stops when they
  * land. The shot lines name the shot they describe: while shot N flies, they show shot N in
  * the air and where shot N−1 landed.
+ *
+ * <p>The slide's own code (J, {@code --set code=both}): a third bullet, a magenta square,
+ * moved by the HelloAiming slide's update transcribed literally ({@link SlideCodeBullet}:
+ * allocating {@code Vector3f} calls, the step's {@code tpf}, the {@code if (y >= 0)} test),
+ * from the same launch as the first recipe bullet. The HUD lists the slide's lines with live
+ * comments: in flight its floats are the recipe's, bit for bit; at the end its test lets it
+ * step once below the ground, and the HUD gives how far below and how far past the recipe's
+ * interpolated crossing it stopped. {@code code=slide} hides the recipe's bullets (they still
+ * fly, for the comparison). The lane allocates {@value SlideCodeBullet#VECTORS_PER_STEP}
+ * vectors a step by design, so it is off by default (the rest of the frame allocates
+ * nothing).
  */
 public final class HelloAimingDemo extends DemoState {
 
@@ -89,6 +104,18 @@ public final class HelloAimingDemo extends DemoState {
 
     /** The aims in ordinal order, without the copy {@code values()} makes. */
     private static final Aim[] AIMS = Aim.values();
+    /** The {@code code} parameter's names: the shared recipe alone, the slide's alone, both. */
+    private static final String[] CODE_NAMES = {"recipe", "slide", "both"};
+    /** {@link #getCode()}: the shared recipe's bullets alone (the default). */
+    public static final int RECIPE_CODE = 0;
+    /** {@link #getCode()}: the slide's bullet drawn alone (the recipe's fly hidden). */
+    public static final int SLIDE_CODE = 1;
+    /** {@link #getCode()}: the slide's bullet beside the recipe's. */
+    public static final int BOTH_CODES = 2;
+    /** The slide bullet's colour. */
+    private static final ColorRGBA SLIDE_COLOR = new ColorRGBA(1f, 0.35f, 0.95f, 1f);
+    /** The slide bullet's square's side (m): larger than the spheres, so it shows around them. */
+    private static final float SLIDE_MARK_SIZE = 1.6f;
 
     private final Gravity gravity = new Gravity();
     private final ParticleIntegrator integrator = new ParticleIntegrator(gravity);
@@ -130,6 +157,17 @@ public final class HelloAimingDemo extends DemoState {
     private KeyBinding fasterKey;
     private KeyBinding slowerKey;
     private KeyBinding aimKey;
+    /** Which code moves the next shot's bullets: {@link #RECIPE_CODE}, ... */
+    private int code = RECIPE_CODE;
+    /** ... and the shot in the air's. */
+    private int shotCode = RECIPE_CODE;
+    /** The slide's bullet, flying the first recipe bullet's launch when the shot has it. */
+    private final SlideCodeBullet slideBullet = new SlideCodeBullet();
+    /** The slide's {@code gravity} vector (m/s²), as its listing holds it. */
+    private final Vector3f slideGravity = new Vector3f(0f, -GRAVITY, 0f);
+    /** The slide bullet's square in the scene (null without a window). */
+    private Geometry slideMark;
+    private KeyBinding codeKey;
     /** The target's distance as printed, e.g. "S = 100 m". */
     private final String distanceText = "S = " + Math.round(TARGET_DISTANCE) + " m";
 
@@ -271,6 +309,60 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
+     * Return which code moves the next shot's bullets.
+     *
+     * @return {@link #RECIPE_CODE}, {@link #SLIDE_CODE} or {@link #BOTH_CODES}
+     */
+    public int getCode() {
+        return code;
+    }
+
+    /**
+     * Choose which code moves the bullets from the next shot on (the panel's and J's
+     * {@code code}).
+     *
+     * @param newCode {@link #RECIPE_CODE}, {@link #SLIDE_CODE} or {@link #BOTH_CODES}
+     */
+    public void setCode(int newCode) {
+        if (newCode < RECIPE_CODE || newCode > BOTH_CODES) {
+            throw new IllegalArgumentException("code must be 0 (recipe), 1 (slide) or 2 (both),"
+                    + " but was " + newCode);
+        }
+        getParameters().set("code", newCode);
+    }
+
+    /**
+     * Test whether the shot in the air has the slide's bullet.
+     *
+     * @return true if the slide's code moves a bullet in this shot
+     */
+    public boolean isSlideInShot() {
+        return shotCode != RECIPE_CODE;
+    }
+
+    /**
+     * Access the slide's bullet (it flies only in shots with {@link #isSlideInShot()}).
+     *
+     * @return the live bullet (not null)
+     */
+    public SlideCodeBullet getSlideBullet() {
+        return slideBullet;
+    }
+
+    /**
+     * Return how far past the recipe bullet's interpolated ground crossing the slide's bullet
+     * stopped, along x: the slide's last step below the ground.
+     *
+     * @return the distance (in metres; NaN unless both have landed in this shot)
+     */
+    public float getSlideOvershootX() {
+        if (!isSlideInShot() || !slideBullet.isStopped() || !bullets[0].hasLanded()) {
+            return Float.NaN;
+        }
+        return slideBullet.position.x - bullets[0].getLandingX();
+    }
+
+    /**
      * Fire a shot from the gun with the current vx, and start {@code t} again: the HUD's time
      * is this shot's flight time. Both bullets always fly, from the same gun with the same vx
      * and step: each with its own formula when both are fired; when one aim is fired alone,
@@ -292,6 +384,7 @@ public final class HelloAimingDemo extends DemoState {
             shotVy = Math.max(shotVy, vy);
         }
         shotFiring = firing;
+        launchSlide();
         showFiredBullets();
         getClock().reset();
         shotVx = vx;
@@ -316,6 +409,16 @@ public final class HelloAimingDemo extends DemoState {
         }
         shots = 1;
         shotVx = vx;
+        launchSlide();
+        // The slide's code runs in the world's steps, after the world has moved the recipe's
+        // bullets: both see the same h (the raw tpf in raw mode).
+        addSimulation(this::stepSlide);
+        if (getApplication() != null) {
+            slideMark = WallView.create(getApplication().getAssetManager(), "slide code",
+                    -SLIDE_MARK_SIZE / 2f, -SLIDE_MARK_SIZE / 2f, SLIDE_MARK_SIZE / 2f,
+                    SLIDE_MARK_SIZE / 2f, SLIDE_COLOR);
+            getSceneNode().attachChild(slideMark);
+        }
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
         // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
@@ -343,6 +446,8 @@ public final class HelloAimingDemo extends DemoState {
                 DemoParameter.Applies.LIVE, this::setGravity));
         declareParameter(DemoParameter.choice("aim", "aims fired (next shot)", FIRING_NAMES,
                 firing, DemoParameter.Applies.LIVE, value -> firing = Math.round(value)));
+        declareParameter(DemoParameter.choice("code", "bullets' code (next shot)", CODE_NAMES,
+                code, DemoParameter.Applies.LIVE, this::applyCode));
     }
 
     @Override
@@ -356,6 +461,9 @@ public final class HelloAimingDemo extends DemoState {
         aimKey = bindKey(KeyInput.KEY_L, "L",
                 "next shot fires: both aims -> lecture formula -> discrete correction",
                 () -> getParameters().set("aim", (firing + 1) % FIRING_NAMES.length));
+        codeKey = bindKey(KeyInput.KEY_J, "J",
+                "next shot's code: shared recipe -> slide's listing -> both",
+                () -> getParameters().set("code", (code + 1) % CODE_NAMES.length));
     }
 
     @Override
@@ -387,6 +495,13 @@ public final class HelloAimingDemo extends DemoState {
     protected void initialize(Application app) {
         super.initialize(app);
         showFiredBullets();
+    }
+
+    @Override
+    protected void afterFrame() {
+        if (slideMark != null) {
+            slideMark.setLocalTranslation(slideBullet.position.x, slideBullet.position.y, 0.02f);
+        }
     }
 
     @Override
@@ -422,6 +537,9 @@ public final class HelloAimingDemo extends DemoState {
                 text.append("never lands\n");
             }
         }
+        if (code != RECIPE_CODE || isSlideInShot()) {
+            writeSlideLines(text, step);
+        }
         if (getLandedShotNumber() != shots) {
             text.append("Shot ").append(shots).append(": in the air for ");
             DemoParticle flying = bullets[shotFiring == BOTH ? 0 : shotFiring];
@@ -450,6 +568,44 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
+     * The slide's listing, one HUD line per code line, with live comments: the step, whether
+     * its floats are the recipe's, and where its test let it stop. At most three lines.
+     */
+    private void writeSlideLines(StringBuilder text, float step) {
+        String[] listing = SlideCodeBullet.LISTING;
+        text.append("Slide code (").append(codeKey.getKeyLabel()).append(": next ")
+                .append(CODE_NAMES[code]).append("), magenta:  ").append(listing[0]);
+        if (!isSlideInShot()) {
+            text.append("   // not in this shot: fires with the next\n");
+            return;
+        }
+        text.append("   // tpf = ");
+        TextFormat.appendFixed(text, step * 1000f, 1).append(" ms a step, ")
+                .append(SlideCodeBullet.VECTORS_PER_STEP).append(" new Vector3f each\n");
+        text.append(listing[1]).append("   // step ").append(slideBullet.getSteps());
+        DemoParticle recipe = bullets[0];
+        if (!slideBullet.isStopped()) {
+            text.append(", y = ");
+            TextFormat.appendFixed(text, slideBullet.position.y, 3).append(" m: ")
+                    .append(recipe.hasLanded() ? "the recipe has stopped at the ground"
+                            : sameBits(slideBullet.position, recipe.getParticle().position)
+                            ? "the recipe's floats, bit for bit" : "NOT the recipe's floats");
+        } else {
+            text.append(": stopped ");
+            TextFormat.appendFixed(text, -slideBullet.position.y, 3)
+                    .append(" m below the ground at x = ");
+            TextFormat.appendFixed(text, slideBullet.position.x, 3).append(" m");
+            float past = getSlideOvershootX();
+            if (!Float.isNaN(past)) {
+                text.append(", ");
+                TextFormat.appendFixed(text, past, 3)
+                        .append(" m past the recipe's interpolated crossing");
+            }
+        }
+        text.append('\n').append(listing[2]).append('\n');
+    }
+
+    /**
      * Choose the horizontal speed of the next shot; the camera frames its arc.
      *
      * @param newVx the speed (in m/s, from {@link #MIN_VX} to {@link #MAX_VX})
@@ -469,6 +625,18 @@ public final class HelloAimingDemo extends DemoState {
         frameArcs();
     }
 
+    /**
+     * The code parameter's setter: from the next shot on, and for the shot in the air too if
+     * it has not flown yet (a {@code --set} before the first frame).
+     */
+    private void applyCode(float value) {
+        code = Math.round(value);
+        if (bullets[0] != null && bullets[0].getFlightSeconds() == 0.0) {
+            launchSlide();
+            showFiredBullets();
+        }
+    }
+
     private void changeVx(float delta) {
         // Through the parameter, so the panel shows what the keys did.
         setHorizontalSpeed(Math.max(MIN_VX, Math.min(MAX_VX, vx + delta)));
@@ -482,6 +650,7 @@ public final class HelloAimingDemo extends DemoState {
     private void setGravity(float newG) {
         g = newG;
         gravity.setAcceleration(gravityVector.set(0f, -newG, 0f));
+        slideGravity.set(0f, -newG, 0f);
         frameArcs();
     }
 
@@ -525,6 +694,35 @@ public final class HelloAimingDemo extends DemoState {
     }
 
     /**
+     * Launch the slide's bullet with the first recipe bullet's launch, if the shot has it
+     * (the {@code code} chosen for it).
+     */
+    private void launchSlide() {
+        shotCode = code;
+        Particle recipe = bullets[0].getParticle();
+        slideBullet.launch(recipe.position, recipe.velocity);
+    }
+
+    /**
+     * The slide's update, one step: the clock's h, the raw tpf in raw mode. Only in a shot
+     * that has it: it allocates.
+     *
+     * @param stepSeconds the step (in seconds, &gt;0)
+     */
+    private void stepSlide(float stepSeconds) {
+        if (isSlideInShot()) {
+            slideBullet.update(slideGravity, stepSeconds);
+        }
+    }
+
+    /** Whether two vectors hold the same floats, bit for bit. */
+    private static boolean sameBits(Vector3f a, Vector3f b) {
+        return Float.floatToIntBits(a.x) == Float.floatToIntBits(b.x)
+                && Float.floatToIntBits(a.y) == Float.floatToIntBits(b.y)
+                && Float.floatToIntBits(a.z) == Float.floatToIntBits(b.z);
+    }
+
+    /**
      * Hide the bullet of an aim the shot in the air did not fire (it flies the fired one's
      * shot, so its sphere, trail and label would only cover the other's; its exact ghost is
      * the fired one's path, drawn twice); show the others. Views exist only in a window.
@@ -533,9 +731,13 @@ public final class HelloAimingDemo extends DemoState {
         for (int a = 0; a < AIMS.length; ++a) {
             ParticleView view = getView(bullets[a]);
             if (view != null) {
-                view.getNode().setCullHint(inShot[a] ? Spatial.CullHint.Inherit
-                        : Spatial.CullHint.Always);
+                view.getNode().setCullHint(inShot[a] && shotCode != SLIDE_CODE
+                        ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
             }
+        }
+        if (slideMark != null) {
+            slideMark.setCullHint(isSlideInShot() ? Spatial.CullHint.Inherit
+                    : Spatial.CullHint.Always);
         }
     }
 
@@ -544,7 +746,8 @@ public final class HelloAimingDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1;
+                return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1
+                        + 1 + 3 + 3 + 1;
             }
 
             @Override
@@ -561,6 +764,10 @@ public final class HelloAimingDemo extends DemoState {
                 slab.putFloat(lastShotVx);
                 slab.putFloat(shotVx);
                 slab.putFloat(shotVy);
+                slab.putInt(shotCode);
+                slab.putVector(slideBullet.position);
+                slab.putVector(slideBullet.velocity);
+                slab.putInt(slideBullet.getSteps());
             }
 
             @Override
@@ -577,6 +784,10 @@ public final class HelloAimingDemo extends DemoState {
                 lastShotVx = slab.getFloat();
                 shotVx = slab.getFloat();
                 shotVy = slab.getFloat();
+                shotCode = slab.getInt();
+                slab.getVector(slideBullet.position);
+                slab.getVector(slideBullet.velocity);
+                slideBullet.setSteps(slab.getInt());
                 showFiredBullets();
             }
         };

@@ -95,7 +95,7 @@ class ParameterPanelHeadlessTest {
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
                 "lane");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "lane");
-        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim");
+        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");
         assertNames(CollisionsDemo.class, "h", "e", "preset");
         assertNames(WindDemo.class, "h", "w");

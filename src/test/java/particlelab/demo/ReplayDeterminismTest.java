@@ -6,10 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
+import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.HelloAimingDemo;
 import particlelab.world.StateRing;
 
 /**
@@ -51,6 +54,26 @@ class ReplayDeterminismTest {
         assertReplaysTheSameBits(demo, "drag, lane=" + lane);
     }
 
+    /**
+     * A lane off by default, on here: HelloAiming's slide-code bullet beside the recipe's
+     * (its own vectors and step count in the demo's record).
+     */
+    @Test
+    void stepBackThenReplayGivesTheSameBitsWithTheSlideCodeLaneOn() {
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        aiming.setCode(HelloAimingDemo.BOTH_CODES);
+        assertReplaysTheSameBits(aiming, "aiming code=both");
+    }
+
+    /** The cheat's frontier with the drop-corrected way alone (its square's shot time). */
+    @Test
+    void stepBackThenReplayGivesTheSameBitsWithTheCheatFrontierOn() {
+        FastBulletsDemo cheat = new FastBulletsDemo();
+        cheat.getParameters().set("shot", 3);
+        assertReplaysTheSameBits(cheat, "cheat shot=raised");
+    }
+
+    /** Step back and replay a demo, then End; compare every step's bits (class Javadoc). */
     private static void assertReplaysTheSameBits(DemoState demo, String name) {
         StateRing ring = demo.getStateRing();
         String[] ownLines = new String[STEPS + 2];
