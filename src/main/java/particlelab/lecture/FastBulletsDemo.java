@@ -412,8 +412,9 @@ public final class FastBulletsDemo extends DemoState {
 
     @Override
     protected void describeEquations(StringBuilder text) {
-        text.append("ray: straight line, no time, no drop;  projectile: V += h·g,  P += h·V,"
-                + "  each step's segment swept against the disc's plane x = d\n");
+        text.append("ray: no time, no drop;  projectile: V += h·g,  P += h·V, swept against"
+                + " x = d = ");
+        TextFormat.appendFixed(text, DISTANCE, 0).append(" m\n");
     }
 
     @Override
@@ -444,45 +445,33 @@ public final class FastBulletsDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
+        // Five lines of its own, the most the HUD holds at 1280x720 with the panel open and
+        // the panel's text still legible (ProjectorTextHeadlessTest).
         float v = getSpeed();
-        float h = Float.isNaN(shotStep) ? getClock().getCurrentStepSeconds() : shotStep;
+        double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
         text.append("v = ");
         TextFormat.appendFixed(text, v, 0).append(" m/s (").append(fasterKey.getKeyLabel())
-                .append('/').append(slowerKey.getKeyLabel()).append("),  d = ");
-        TextFormat.appendFixed(text, DISTANCE, 0).append(" m:  flight d/v = ");
-        TextFormat.appendFixed(text, DISTANCE / v, 3).append(" s,  one step v·h = ");
-        TextFormat.appendFixed(text, v * h, 2).append(" m,  disc ");
-        TextFormat.appendFixed(text, DISC_THICKNESS, 1).append(" m thick\n");
-        double drop = Hitscan.formulaDrop(GRAVITY, DISTANCE, v);
-        text.append("Drop the straight line ignores: ½·g·(d/v)² = ");
+                .append('/').append(slowerKey.getKeyLabel()).append("):  ½·g·(d/v)² = ");
         TextFormat.appendFixed(text, drop, 3).append(" m   against the radius r = ");
         TextFormat.appendFixed(text, TARGET_RADIUS, 2).append(" m\nSo the cheat ")
                 .append(drop <= TARGET_RADIUS ? "is" : "is NOT")
                 .append(" good enough here: it is for d < v·√(2r/g) = ");
         TextFormat.appendFixed(text, Hitscan.cheatDistance(v, TARGET_RADIUS, GRAVITY), 1)
                 .append(" m\n");
-        text.append("Projectile: ");
-        if (!reached) {
-            text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
-        } else {
-            text.append(hit ? "HIT" : "MISS").append(", at x = d ");
-            TextFormat.appendFixed(text, getSteppedDrop(), 3).append(" m low after ");
-            TextFormat.appendFixed(text, arrivalSeconds, 3).append(" s (Euler: ");
-            TextFormat.appendFixed(text, Hitscan.steppedDrop(GRAVITY, DISTANCE, v, h), 3)
-                    .append(" m)");
-        }
         writeFrontier(text);
     }
 
     // ---------------------------------------------------------------- private helpers ----
 
     /**
-     * The frontier, after the projectile's line: the key, then one line of the four ways,
-     * each with its miss, hit time and cost per shot; the way shown alone in brackets.
+     * The frontier: the key and the four ways in two lines, each with its miss, hit time and
+     * cost per shot (the way shown alone in brackets); the stepped way, the projectile
+     * itself, ends with its verdict and the Euler step's closed-form drop.
      */
     private void writeFrontier(StringBuilder text) {
-        text.append(".   Ways (").append(shotKey.getKeyLabel()).append(": ")
-                .append(SHOT_NAMES[shown]).append("): miss, time, cost per shot\n");
+        float h = Float.isNaN(shotStep) ? getClock().getCurrentStepSeconds() : shotStep;
+        text.append("Ways (").append(shotKey.getKeyLabel()).append(": ")
+                .append(SHOT_NAMES[shown]).append("):  ");
         for (int w = 0; w < WAYS.length; ++w) {
             CheatFrontier.Way way = WAYS[w];
             boolean marked = shown == w + 1;
@@ -497,7 +486,15 @@ public final class FastBulletsDemo extends DemoState {
             } else {
                 TextFormat.appendFixed(text, nanos / 1e3, 1).append(" µs");
             }
-            text.append(w % 2 == 1 ? "\n" : ";  ");
+            text.append(w == 1 ? "\n" : w == WAYS.length - 1 ? "" : ";  ");
+        }
+        text.append(":  projectile ");
+        if (!reached) {
+            text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
+        } else {
+            text.append(hit ? "HIT" : "MISS").append(" (Euler: ");
+            TextFormat.appendFixed(text, -Hitscan.steppedDrop(GRAVITY, DISTANCE, getSpeed(), h),
+                    3).append(" m)");
         }
     }
 
