@@ -112,7 +112,7 @@ public final class LectureTour {
                     LectureTour::watchSpring),
             new Stop("Rotation", "rotation", LectureTour::watchRotation, "omega=6"),
             new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
-                    "h=1/10"),
+                    "h=1/10", "lane=rk4"),
             new Stop("Targeting problem", "height", LectureTour::watchHeights),
             new Stop("HelloAiming", "aiming", LectureTour::watchAiming, "code=both"),
             new Stop("Euler steps: advantages and disadvantages", "tunnelling",
