@@ -466,10 +466,9 @@ public final class FastBulletsDemo extends DemoState {
     /**
      * The frontier: the key and the four ways in two lines, each with its miss, hit time and
      * cost per shot (the way shown alone in brackets); the stepped way, the projectile
-     * itself, ends with its verdict and the Euler step's closed-form drop.
+     * itself, ends with its verdict and how far below the centre it crossed x = d.
      */
     private void writeFrontier(StringBuilder text) {
-        float h = Float.isNaN(shotStep) ? getClock().getCurrentStepSeconds() : shotStep;
         text.append("Ways (").append(shotKey.getKeyLabel()).append(": ")
                 .append(SHOT_NAMES[shown]).append("):  ");
         for (int w = 0; w < WAYS.length; ++w) {
@@ -492,9 +491,8 @@ public final class FastBulletsDemo extends DemoState {
         if (!reached) {
             text.append(bullet.isHeld() ? "came down before the disc" : "in flight");
         } else {
-            text.append(hit ? "HIT" : "MISS").append(" (Euler: ");
-            TextFormat.appendFixed(text, -Hitscan.steppedDrop(GRAVITY, DISTANCE, getSpeed(), h),
-                    3).append(" m)");
+            text.append(hit ? "HIT" : "MISS").append(", ");
+            TextFormat.appendFixed(text, getSteppedDrop(), 3).append(" m low");
         }
     }
 
