@@ -1,6 +1,7 @@
 package particlelab.physics;
 
 import com.jme3.math.Vector3f;
+import java.util.Arrays;
 
 /**
  * The batch form of {@link ParticleIntegrator}'s step ({@link ParticleIntegrator#stepPacked}):
@@ -59,6 +60,18 @@ final class PackedStep {
     private final Vector3f nextVelocity = new Vector3f();
     /** ... and its new position (m). */
     private final Vector3f nextPosition = new Vector3f();
+    /** Scratch of the step that finds a floor: vy of one block before its step (m/s) ... */
+    private final float[] blockVelocityY = new float[BATCH_BLOCK];
+    /** ... y of the block after it (m) ... */
+    private final float[] blockHeights = new float[BATCH_BLOCK];
+    /** ... and each one's mark: +0 if above the floor and finite, else not ... */
+    private final float[] blockMarks = new float[BATCH_BLOCK];
+    /** ... which {@link Arrays#mismatch} compares with these zeros. */
+    private final float[] zeros = new float[BATCH_BLOCK];
+    /** What the last step that finds a floor found: how many it stored. */
+    private int foundCount;
+    /** Whether the last block {@link #findInBlock} looked at was finite. */
+    private boolean blockFinite;
 
     /**
      * Create the batch form of an integrator.
@@ -140,12 +153,48 @@ final class PackedStep {
         } else {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
             factor = folded.stepFactor;
-            bad = stepByAxes(positions, velocities, stride, count, stepSeconds);
+            bad = stepByAxes(positions, velocities, stride, count, stepSeconds, 0f, null,
+                    null);
         }
         if (bad >= 0) {
             throw failure(positions, velocities, stride, count, bad, stepSeconds,
                     factor < -1f ? factor : Float.NaN);
         }
+    }
+
+    /**
+     * {@link #step}, and find the particles whose y ends at or below a floor
+     * ({@link HeightScan}), each with its vy before the step. The step by axes tests each
+     * block right after stepping it, while it is in the cache, and keeps only that block's
+     * vy before (a scratch of {@value #BATCH_BLOCK}); the other forms copy every vy into
+     * storeVelocityYBefore first, step, test, and keep the found ones' in place.
+     *
+     * @return how many were found: their indices, increasing, are at the start of
+     *     storeBelow, their vy before the step at the start of storeVelocityYBefore
+     * @throws NonFiniteStepException as {@link #step}; then what is stored means nothing
+     */
+    int stepFindingFloor(float[] positions, float[] velocities, int stride, int count,
+            float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
+            float[] storeVelocityYBefore) {
+        if (folded.hasOthers || !Float.isFinite(folded.stepFactor) || folded.speedDependent) {
+            System.arraycopy(velocities, stride, storeVelocityYBefore, 0, count);
+            step(positions, velocities, stride, count, massKg, stepSeconds);
+            int found = HeightScan.findAtOrBelow(positions, stride, count, floorMetres, 0,
+                    storeBelow, 0);
+            // the c-th index found is at least c: keeping them in place reads ahead only
+            for (int c = 0; c < found; ++c) {
+                storeVelocityYBefore[c] = storeVelocityYBefore[storeBelow[c]];
+            }
+            return found;
+        }
+        float factor = folded.stepFactor;
+        int bad = stepByAxes(positions, velocities, stride, count, stepSeconds, floorMetres,
+                storeBelow, storeVelocityYBefore);
+        if (bad >= 0) {
+            throw failure(positions, velocities, stride, count, bad, stepSeconds,
+                    factor < -1f ? factor : Float.NaN);
+        }
+        return foundCount;
     }
 
     /**
@@ -187,19 +236,29 @@ final class PackedStep {
      * and blocks of 1024 allocate nothing.</li>
      * </ul>
      *
+     * <p>With storeBelow (not null), each block's y is then tested against the floor
+     * ({@link #findInBlock}, which checks y's finiteness on the way), and the vy the block
+     * had before its step, copied into a scratch of one block just before, is kept for each
+     * one found; {@link #foundCount} says how many.
+     *
      * @return the index of the first non-finite value, or -1
      */
     private int stepByAxes(float[] positions, float[] velocities, int stride, int count,
-            float stepSeconds) {
+            float stepSeconds, float floorMetres, int[] storeBelow,
+            float[] storeVelocityYBefore) {
         float factor = folded.stepFactor;
         float gx = folded.stepGravityX;
         float gy = folded.stepGravityY;
         float gz = folded.stepGravityZ;
         boolean finite = true;
+        int found = 0;
         for (int start = 0; start < count; start += BATCH_BLOCK) {
             int n = Math.min(BATCH_BLOCK, count - start);
             int y = stride + start;
             int z = 2 * stride + start;
+            if (storeBelow != null) {
+                System.arraycopy(velocities, y, blockVelocityY, 0, n);
+            }
             // & rather than &&: every block is stepped and checked whatever the one before
             // found, with no branch per axis
             if (vectorBatch) {
@@ -213,13 +272,20 @@ final class PackedStep {
                 stepAxis(positions, velocities, start, n, factor, gx, stepSeconds);
                 stepAxis(positions, velocities, y, n, factor, gy, stepSeconds);
                 stepAxis(positions, velocities, z, n, factor, gz, stepSeconds);
+                // y is checked here, or by the floor's marks, which see a non-finite y too
                 finite &= fusedCheck
-                        ? isFusedFinite(positions, start, n) & isFusedFinite(positions, y, n)
-                                & isFusedFinite(positions, z, n)
-                        : isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
-                                & isSumFinite(positions, z, n);
+                        ? isFusedFinite(positions, start, n) & isFusedFinite(positions, z, n)
+                                & (storeBelow != null || isFusedFinite(positions, y, n))
+                        : isSumFinite(positions, start, n) & isSumFinite(positions, z, n)
+                                & (storeBelow != null || isSumFinite(positions, y, n));
+            }
+            if (storeBelow != null) {
+                found = findInBlock(positions, y, n, start, floorMetres, storeBelow,
+                        storeVelocityYBefore, found);
+                finite &= blockFinite;
             }
         }
+        foundCount = found;
         return finite ? -1 : searchNonFinite(positions, stride, count);
     }
 
@@ -232,6 +298,54 @@ final class PackedStep {
             velocities[i] = v;
             positions[i] += stepSeconds * v;
         }
+    }
+
+    /**
+     * The floor's test of one block just stepped, in passes the JIT vectorises: y copied into
+     * a scratch (so that the next loop reads and writes at the same index, which C2's
+     * superword needs), then each one's mark {@code |e| + e} with
+     * {@code e = nextUp(floor) − y}, then {@link Arrays#mismatch} from one nonzero
+     * mark to the next. For a finite y, e &gt; 0 exactly when y &le; floor (a rounded
+     * difference keeps its sign, is 0 only for equal floats, and no float lies between the
+     * floor and the next one up), so the mark is 2e &gt; 0 (or +∞) there and +0 (bits 0)
+     * above it; y = NaN gives NaN, y = +∞ gives ∞ − ∞ = NaN, y = −∞ gives +∞. A nonzero
+     * mark is thus a particle at or below the floor or a non-finite y, and is looked at:
+     * the same particles as
+     * {@link HeightScan#findAtOrBelow}, in the same order, and a finiteness check of y that
+     * sets {@link #blockFinite}.
+     *
+     * @return how many are stored now: found plus this block's
+     */
+    private int findInBlock(float[] positions, int y, int n, int start, float floorMetres,
+            int[] storeBelow, float[] storeVelocityYBefore, int found) {
+        float[] heights = blockHeights;
+        float[] marks = blockMarks;
+        System.arraycopy(positions, y, heights, 0, n);
+        float above = Math.nextUp(floorMetres);
+        for (int k = 0; k < n; ++k) {
+            float e = above - heights[k];
+            marks[k] = Math.abs(e) + e;
+        }
+        boolean finite = true;
+        int stored = found;
+        int k = 0;
+        while (k < n) {
+            int next = Arrays.mismatch(marks, k, n, zeros, k, n);
+            if (next < 0) {
+                break;
+            }
+            k += next;
+            float h = heights[k];
+            if (h <= floorMetres) {
+                storeBelow[stored] = start + k;
+                storeVelocityYBefore[stored] = blockVelocityY[k];
+                ++stored;
+            }
+            finite &= Float.isFinite(h);
+            ++k;
+        }
+        blockFinite = finite;
+        return stored;
     }
 
     /**

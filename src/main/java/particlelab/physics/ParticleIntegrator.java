@@ -200,6 +200,66 @@ public final class ParticleIntegrator {
     }
 
     /**
+     * {@link #stepPacked(float[], float[], int, int, float, float)}, and find the particles
+     * whose y ends the step at or below a floor, each with the vy it had before the step: a
+     * ground's contact test and what Cyclone's resting fix needs
+     * ({@code particlelab.world.GroundBounce#resolveFound}), done on each block of particles
+     * while the step has it in the cache, instead of a copy of every vy before the step and
+     * a pass over every y after it. The same floats as stepPacked, the same particles found
+     * as {@link HeightScan#findAtOrBelow} over the stepped y (a test checks both, for every
+     * form of the batch). (Its body repeats stepPacked's checks, for the reason given there.)
+     *
+     * @param positions as stepPacked with a stride (modified)
+     * @param velocities as stepPacked with a stride (modified)
+     * @param stride as stepPacked with a stride
+     * @param count as stepPacked with a stride
+     * @param massKg as stepPacked
+     * @param stepSeconds as stepPacked
+     * @param floorMetres the floor: a particle is found if its y after the step is at or
+     *     below it (in metres, finite)
+     * @param storeBelow where to write the found particles' indices, increasing (length
+     *     &ge; count, modified from index 0 on)
+     * @param storeVelocityYBefore where to write their vy before the step, in the same order
+     *     (in m/s, length &ge; count, modified from index 0 on: up to count floats as
+     *     scratch)
+     * @return how many particles were found (with h = 0, those at or below it already)
+     * @throws NonFiniteStepException as stepPacked; the stores then mean nothing
+     */
+    public int stepPackedFindingFloor(float[] positions, float[] velocities, int stride,
+            int count, float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
+            float[] storeVelocityYBefore) {
+        PackedStep.checkArrays(positions, velocities, stride, count);
+        Particle.checkMass(massKg);
+        Validate.nonNegative(stepSeconds, "step h (s)");
+        Validate.finite(floorMetres, "floor (m)");
+        if (storeBelow == null || storeBelow.length < count || storeVelocityYBefore == null
+                || storeVelocityYBefore.length < count) {
+            throw new IllegalArgumentException("the stores of the particles found and of"
+                    + " their vy before the step must each hold count = " + count
+                    + " values, but held " + (storeBelow == null ? "null"
+                    : String.valueOf(storeBelow.length)) + " and "
+                    + (storeVelocityYBefore == null ? "null"
+                    : String.valueOf(storeVelocityYBefore.length)));
+        }
+        if (stepSeconds == 0f) {
+            // nothing moves: those at or below the floor already, with the vy they keep
+            int found = HeightScan.findAtOrBelow(positions, stride, count, floorMetres, 0,
+                    storeBelow, 0);
+            for (int c = 0; c < found; ++c) {
+                storeVelocityYBefore[c] = velocities[stride + storeBelow[c]];
+            }
+            return found;
+        }
+        if (count == 0) {
+            return 0;
+        }
+        folded.refoldIfStale();
+        limits.remember(stepSeconds, massKg);
+        return packed.stepFindingFloor(positions, velocities, stride, count, massKg,
+                stepSeconds, floorMetres, storeBelow, storeVelocityYBefore);
+    }
+
+    /**
      * Tell whether this JVM can run the batch step on the Vector API: it was started with
      * {@code --add-modules jdk.incubator.vector} (README, "The Vector API, opt-in").
      *

@@ -138,7 +138,10 @@ public final class Fountain implements StateRecord {
     /** P and V of every slot, planar: all x, then all y, then all z. */
     private final float[] positions;
     private final float[] velocities;
-    /** vy of every slot before the step, for the resting fix (m/s). */
+    /**
+     * vy before the step of each slot in contact after it, in the order of
+     * {@link #contacts}, for the resting fix (m/s); the step's scratch too.
+     */
     private final float[] velocityYBefore;
     private final byte[] kinds;
     /**
@@ -340,10 +343,11 @@ public final class Fountain implements StateRecord {
      *     non-finite; {@link #reset} before stepping again
      */
     public void step(float stepSeconds) {
-        System.arraycopy(velocities, capacity, velocityYBefore, 0, live);
-        integrator.stepPacked(positions, velocities, capacity, live, MASS_KG, stepSeconds);
-        int touching = ground.resolve(positions, velocities, velocityYBefore, capacity, live,
-                contacts);
+        // the step finds the ground's contacts (y <= r) block by block as it goes
+        int touching = integrator.stepPackedFindingFloor(positions, velocities, capacity, live,
+                MASS_KG, stepSeconds, ground.getRadius(), contacts, velocityYBefore);
+        ground.resolveFound(positions, velocities, capacity, contacts, velocityYBefore,
+                touching);
         timeSeconds += stepSeconds;
         int leaving = settleWater(touching);
         leaving = burnFuses(stepSeconds, leaving);

@@ -1,5 +1,6 @@
 package particlelab.world;
 
+import particlelab.physics.HeightScan;
 import particlelab.physics.Validate;
 
 /**
@@ -29,9 +30,6 @@ import particlelab.physics.Validate;
  * <p>An instance holds e, the threshold and the fix; {@link #resolve} allocates nothing.
  */
 public final class GroundBounce {
-
-    /** The particles {@link #findContacts} tests together before it looks at each. */
-    private static final int GROUP = 8;
 
     private final float radiusMetres;
     private float restitution;
@@ -138,50 +136,48 @@ public final class GroundBounce {
         }
         // two passes: the contact test over every particle, then the rule on the few in
         // contact
-        int contacts = findContacts(positions, stride, count, storeContacts);
+        int contacts = HeightScan.findAtOrBelow(positions, stride, count, radiusMetres, 0,
+                storeContacts, 0);
         for (int c = 0; c < contacts; ++c) {
-            resolveContact(positions, velocities, velocitiesYBefore, stride, storeContacts[c]);
+            int i = storeContacts[c];
+            resolveContact(positions, velocities, stride, i, velocitiesYBefore[i]);
         }
         return contacts;
     }
 
     /**
-     * The overlap test of every particle: y &le; r, which is {@code d = r − y ≥ 0} in double
-     * too (floats convert exactly). Contacts are rare (about one particle in seventy in the
-     * fountain), so the test runs over groups of {@value #GROUP} particles without a branch
-     * (an or of the comparisons, which the compiler can do several at a time) and only a
-     * group holding a contact is looked at one by one: the indices come out in increasing
-     * order, as from one test per particle, and the pass reads one axis alone.
+     * Resolve the contacts a step found itself: {@link
+     * particlelab.physics.ParticleIntegrator#stepPackedFindingFloor} with the floor at r
+     * finds the same particles as the contact test of {@link #resolve} (y &le; r) and gives
+     * each one's vy before the step, so this applies the same rule to the same numbers as
+     * resolve would, without a pass over every particle.
+     *
+     * @param positions P, planar with the stride (in metres, modified: y of those in contact)
+     * @param velocities V after the step, likewise (in m/s, modified: vy of those in contact)
+     * @param stride the particles the layout has room for
+     * @param contacts the indices of the particles in contact (not modified)
+     * @param velocitiesYBefore vy before the step of each, in the same order (in m/s, not
+     *     modified)
+     * @param count how many contacts (&ge;0, at most both arrays' lengths)
      */
-    private int findContacts(float[] positions, int stride, int count, int[] storeContacts) {
-        float radius = radiusMetres;
-        int contacts = 0;
-        int i = 0;
-        for (; i + GROUP <= count; i += GROUP) {
-            int y = stride + i;
-            int any = 0;
-            for (int k = 0; k < GROUP; ++k) {
-                any |= positions[y + k] <= radius ? 1 : 0;
-            }
-            if (any != 0) {
-                for (int k = 0; k < GROUP; ++k) {
-                    if (positions[y + k] <= radius) {
-                        storeContacts[contacts++] = i + k;
-                    }
-                }
-            }
+    public void resolveFound(float[] positions, float[] velocities, int stride, int[] contacts,
+            float[] velocitiesYBefore, int count) {
+        if (count < 0 || count > contacts.length || count > velocitiesYBefore.length) {
+            throw new IllegalArgumentException("the contacts to resolve must be from 0 to "
+                    + Math.min(contacts.length, velocitiesYBefore.length) + ", but were "
+                    + count);
         }
-        for (; i < count; ++i) {
-            if (positions[stride + i] <= radius) {
-                storeContacts[contacts++] = i;
-            }
+        for (int c = 0; c < count; ++c) {
+            resolveContact(positions, velocities, stride, contacts[c], velocitiesYBefore[c]);
         }
-        return contacts;
     }
 
-    /** The rule of the class comment for particle i, which is in contact. */
-    private void resolveContact(float[] positions, float[] velocities,
-            float[] velocitiesYBefore, int stride, int i) {
+    /**
+     * The rule of the class comment for particle i, which is in contact (y &le; r), its vy
+     * before the step given.
+     */
+    private void resolveContact(float[] positions, float[] velocities, int stride, int i,
+            float velocityYBefore) {
         int y = stride + i;
         float py = positions[y];
         float depth = (float) ((double) radiusMetres - py);
@@ -194,7 +190,7 @@ public final class GroundBounce {
             float bounce = closing > thresholdSpeed ? restitution : 0f;
             float wanted = -bounce * separating;
             if (restingFix) {
-                float gained = separating - velocitiesYBefore[i];
+                float gained = separating - velocityYBefore;
                 if (gained < 0f) {
                     wanted = Math.max(0f, wanted + bounce * gained);
                 }

@@ -64,6 +64,8 @@ class PhysicsAllocationTest {
             }
             float[] positions = new float[3 * count];
             float[] velocities = new float[3 * count];
+            int[] below = new int[count];
+            float[] velocityYBefore = new float[count];
             String mix = integrator.describe();
             Allocations.assertAllocatesNothing(STEPS + " steps and regimes, " + mix, () -> {
                 particle.setState(START_POSITION, START_VELOCITY);
@@ -84,6 +86,8 @@ class PhysicsAllocationTest {
                 for (int i = 0; i < STEPS / count; ++i) {
                     integrator.step(particles, H);
                     integrator.stepPacked(positions, velocities, count, 2f, H);
+                    integrator.stepPackedFindingFloor(positions, velocities, count, count, 2f,
+                            H, 0.5f, below, velocityYBefore);
                 }
             });
             assertTrue(particle.isFinite() && particles[0].isFinite(), mix);
