@@ -16,6 +16,10 @@ import particlelab.Allocations;
  */
 class FountainTest {
 
+    /** {@link #particleDigestOfARun} of 5000 and 20000 particles under 86d81bd. */
+    private static final long PARTICLES_5000 = -5260714098729664306L;
+    private static final long PARTICLES_20000 = 4176117114969777009L;
+
     private static final float H = 1f / 60f;
     private static final int POOL = 10_000;
 
@@ -126,6 +130,19 @@ class FountainTest {
         assertEquals(7466563103882115940L, digestOfARun(20_000));
     }
 
+    /**
+     * The particles in flight, as a set (each one's P, V, kind, colour and fuse, whichever
+     * slot holds it), and the counts, every second of 30 s, digest to what the code before
+     * the fireworks were kept first in the pool gave (86d81bd, its list of firework slots):
+     * the new layout moves particles between slots, not one bit of any particle, and the
+     * bursts draw their random numbers in the same order.
+     */
+    @Test
+    void theStepGivesTheSameParticlesAsBeforeInWhicheverSlots() {
+        assertEquals(PARTICLES_5000, particleDigestOfARun(5_000));
+        assertEquals(PARTICLES_20000, particleDigestOfARun(20_000));
+    }
+
     @Test
     void aCountOutsideOneToAMillionIsRefused() {
         for (int bad : new int[] {0, -5, Fountain.MAX_PARTICLES + 1}) {
@@ -134,6 +151,59 @@ class FountainTest {
             assertTrue(e.getMessage().contains("must be from 1 to 1000000, but was " + bad),
                     e.getMessage());
         }
+    }
+
+    private static long particleDigestOfARun(int pool) {
+        Fountain fountain = new Fountain(pool);
+        long hash = 1125899906842597L;
+        for (int step = 0; step < 1800; ++step) {
+            fountain.step(H);
+            if (step % 60 == 0) {
+                hash = 31 * hash + particleDigest(fountain);
+            }
+        }
+        return 31 * hash + particleDigest(fountain);
+    }
+
+    /** A digest of the particles in flight that does not depend on their order. */
+    private static long particleDigest(Fountain fountain) {
+        int n = fountain.getCapacity();
+        float[] positions = fountain.getPositions();
+        float[] velocities = fountain.getVelocities();
+        long sum = 0L;
+        long xor = 0L;
+        for (int i = 0; i < n; ++i) {
+            if (fountain.getKind(i) == Fountain.DORMANT) {
+                continue;
+            }
+            long one = fountain.getKind(i);
+            one = 31 * one + fountain.getColour(i);
+            one = 31 * one + Float.floatToRawIntBits(fountain.fuseFraction(i));
+            for (int axis = 0; axis < 3; ++axis) {
+                one = 31 * one + Float.floatToRawIntBits(positions[axis * n + i]);
+                one = 31 * one + Float.floatToRawIntBits(velocities[axis * n + i]);
+            }
+            long mixed = mix(one);
+            sum += mixed;
+            xor ^= mix(mixed);
+        }
+        long hash = 31 * sum + xor;
+        hash = 31 * hash + fountain.countLive();
+        for (byte kind = Fountain.WATER; kind <= Fountain.SPARK; ++kind) {
+            hash = 31 * hash + fountain.countLive(kind);
+        }
+        hash = 31 * hash + fountain.countRecycledResting();
+        hash = 31 * hash + fountain.countRecycledLeaving();
+        hash = 31 * hash + fountain.countRecycledBurnt();
+        return 31 * hash + fountain.countBursts();
+    }
+
+    /** SplitMix64's finaliser: every bit of the input moves every bit of the output. */
+    private static long mix(long value) {
+        long z = value + 0x9e3779b97f4a7c15L;
+        z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9L;
+        z = (z ^ (z >>> 27)) * 0x94d049bb133111ebL;
+        return z ^ (z >>> 31);
     }
 
     private static long digestOfARun(int pool) {
