@@ -12,16 +12,18 @@ import particlelab.physics.ParticleIntegrator;
  *
  * <p>Every step, in order:
  * <ol>
- * <li>the Euler step of every slot of the pool, gravity and linear drag
- * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V});</li>
- * <li>the ground: restitution e with Cyclone's resting fix ({@link GroundBounce}: one
- * pass that finds the particles in contact, then the rule on those alone);</li>
+ * <li>the Euler step of every particle in flight, gravity and linear drag
+ * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V}), which finds the particles in
+ * contact with the ground on the way ({@link ParticleIntegrator#stepPackedFindingFloor}:
+ * each block of particles while it is in the cache);</li>
+ * <li>the ground: restitution e with Cyclone's resting fix ({@link GroundBounce}), on those
+ * in contact alone;</li>
  * <li>the lifecycle, on the particles it concerns and no others: water in contact whose
  * rebound is slower than {@link #REST_SPEED} (it no longer bounces: it joins the puddle), or
  * that has left the region or outlived {@link #MAX_AGE_SECONDS}, goes back to the pool, found
  * among the contacts (water always comes down: gravity brings every drop to the ground within
- * seconds, so the ground is where its region and age are checked); the fireworks, a short list
- * of their own, burn their fuses and are checked against the region and the age: a shell
+ * seconds, so the ground is where its region and age are checked); the fireworks, in the
+ * first slots, burn their fuses and are checked against the region and the age: a shell
  * bursts at its apex or when its fuse has burnt, a star when its fuse has burnt, a spark goes
  * out;</li>
  * <li>the bursts' payloads, then a new shell when the launch timer says so, then new water
@@ -38,8 +40,15 @@ import particlelab.physics.ParticleIntegrator;
  * {@link #countLive()} − 1 are in flight, the rest dormant (at the nozzle, {@code P = (0, r,
  * 0)}, {@code V = 0}, invisible), so every pass touches only the particles in flight (the
  * Euler step too: {@link ParticleIntegrator#stepPacked(float[], float[], int, int, float,
- * float)} with the pool as the stride). A particle going back to the pool takes the last one
- * in flight into its slot; a new one takes the first dormant slot. A twentieth of the pool is
+ * float)} with the pool as the stride), and the fireworks first of them (slots 0 to
+ * {@link #countFireworks()} − 1), so their pass reads a few hundred slots side by side
+ * rather than scattered over the pool. A water particle going back to the pool takes the
+ * last one in flight into its slot; a firework takes the last firework into its slot, and
+ * the slot that leaves, the last water. New water takes the first dormant slot; a new
+ * firework the first slot after the fireworks, whose water moves to the first dormant slot.
+ * The fireworks stay in the order they were launched in but for those removals (the last
+ * into the gap), so they burst, and draw their random numbers, in a fixed order. A
+ * twentieth of the pool is
  * kept for the fireworks: water takes a slot only while more are free. Nothing decays for
  * ever (every particle in flight is recycled within {@link #MAX_AGE_SECONDS}), so no velocity
  * becomes a subnormal float (see {@code docs/numerics.md}). A step allocates nothing.
@@ -151,11 +160,8 @@ public final class Fountain implements StateRecord {
     private final int[] contacts;
     /** When each particle was launched (s; +∞ for a dormant slot). */
     private final float[] births;
-    /** The slots holding a firework (shell, star, spark), in no order. */
-    private final int[] fireworkSlots;
+    /** How many fireworks (shell, star, spark) are in flight: slots 0 to fireworkCount − 1. */
     private int fireworkCount;
-    /** Where each firework's slot is in {@link #fireworkSlots} (−1 for water, dormant). */
-    private final int[] fireworkEntries;
     /** A firework's fuse at launch, and what is left of it (s). */
     private final float[] fuses;
     private final float[] fusesLeft;
@@ -199,8 +205,6 @@ public final class Fountain implements StateRecord {
         kinds = new byte[particles];
         contacts = new int[particles];
         births = new float[particles];
-        fireworkSlots = new int[particles];
-        fireworkEntries = new int[particles];
         fuses = new float[particles];
         fusesLeft = new float[particles];
         colours = new int[particles];
@@ -232,13 +236,14 @@ public final class Fountain implements StateRecord {
 
     /**
      * Count the ints of the fountain's state: every slot's P, V, kind, birth, fuses and
-     * colour, how many are in flight, the fireworks' list, the bursts waiting, the counters.
+     * colour, how many are in flight and how many of them fireworks, the bursts waiting, the
+     * counters.
      *
      * @return the count (&gt;0, fixed by the pool size)
      */
     @Override
     public int countStateInts() {
-        return 3 * capacity + 3 * capacity + 5 * capacity + 1 + 1 + capacity
+        return 3 * capacity + 3 * capacity + 5 * capacity + 1 + 1
                 + liveByKind.length + 1 + burstKinds.length + burstStates.length
                 + burstColours.length + 2 + 1 + 1 + 1 + 1 + 2 + 2 + 4 * 2 + 2;
     }
@@ -263,7 +268,6 @@ public final class Fountain implements StateRecord {
         slab.putInts(colours, 0, capacity);
         slab.putInt(live);
         slab.putInt(fireworkCount);
-        slab.putInts(fireworkSlots, 0, fireworkCount);
         for (int i = 0; i < liveByKind.length; ++i) {
             slab.putInt(liveByKind[i]);
         }
@@ -306,11 +310,6 @@ public final class Fountain implements StateRecord {
         slab.getInts(colours, 0, capacity);
         live = slab.getInt();
         fireworkCount = slab.getInt();
-        slab.getInts(fireworkSlots, 0, fireworkCount);
-        Arrays.fill(fireworkEntries, -1);
-        for (int k = 0; k < fireworkCount; ++k) {
-            fireworkEntries[fireworkSlots[k]] = k;
-        }
         for (int i = 0; i < liveByKind.length; ++i) {
             liveByKind[i] = slab.getInt();
         }
@@ -459,6 +458,16 @@ public final class Fountain implements StateRecord {
     }
 
     /**
+     * Count the fireworks in flight (shells, stars and sparks): they hold slots 0 to this
+     * count − 1, the water the slots after them up to {@link #countLive()} − 1.
+     *
+     * @return the count (from 0 to {@link #countLive()})
+     */
+    public int countFireworks() {
+        return fireworkCount;
+    }
+
+    /**
      * Return a slot's kind.
      *
      * @param index the slot (from 0 to the pool size − 1)
@@ -573,22 +582,23 @@ public final class Fountain implements StateRecord {
      * The fireworks' fuses burn: a shell bursts at its apex or when its fuse has burnt, a
      * star when its fuse has burnt (queued, spawned after this pass), a spark just goes out;
      * a firework out of the region or older than {@link #MAX_AGE_SECONDS} goes back to the
-     * pool unburst.
+     * pool unburst. One pass over slots 0 to {@link #countFireworks()} − 1: a firework that
+     * goes takes the last one into its slot (looked at next), and the slot freed at the end
+     * of the fireworks is a hole for {@link #compact}.
      *
      * @param leaving how many slots at the start of contacts go back already
-     * @return how many go back now (those this pass retires appended)
+     * @return how many go back now (the holes this pass leaves appended)
      */
     private int burnFuses(float stepSeconds, int leaving) {
         burstCount = 0;
         float oldestBirth = oldestBirth();
-        int k = 0;
-        while (k < fireworkCount) {
-            int i = fireworkSlots[k];
+        int i = 0;
+        while (i < fireworkCount) {
             byte kind = kinds[i];
             boolean gone = false;
             if (isLeaving(i, oldestBirth)) {
                 ++recycledLeaving;
-                contacts[leaving++] = retire(i);
+                retire(i);
                 gone = true;
             } else {
                 float left = fusesLeft[i] - stepSeconds;
@@ -604,17 +614,20 @@ public final class Fountain implements StateRecord {
                     // else the queue is full: burst next step
                     if (gone) {
                         ++recycledBurnt;
-                        contacts[leaving++] = retire(i);
+                        retire(i);
                     }
                 }
             }
             if (gone) {
-                int last = fireworkSlots[--fireworkCount];
-                fireworkSlots[k] = last;
-                fireworkEntries[last] = k;
-                fireworkEntries[i] = -1;
+                // the last firework takes the slot, whose new one is looked at next; the
+                // slot it leaves is the water's now, a hole for compact to fill
+                int last = --fireworkCount;
+                if (last != i) {
+                    move(last, i);
+                }
+                contacts[leaving++] = last;
             } else {
-                ++k;
+                ++i;
             }
         }
         return leaving;
@@ -622,9 +635,11 @@ public final class Fountain implements StateRecord {
 
     /**
      * Give the retired slots back to the pool and keep the ones in flight first: each retired
-     * slot below the live end takes the last particle in flight. Retired slots are dormant
-     * already ({@link #retire}), so the last slot moved is always one in flight and no retired
-     * index ever points at a moved particle: any order works.
+     * slot below the live end takes the last particle in flight. The holes are all at or
+     * after the fireworks ({@link #burnFuses} closes its own), so what moves into one is
+     * water. Retired slots are dormant already ({@link #retire}), so the last slot moved is
+     * always one in flight and no retired index ever points at a moved particle: any order
+     * works.
      */
     private void compact(int leaving) {
         for (int k = 0; k < leaving; ++k) {
@@ -719,16 +734,24 @@ public final class Fountain implements StateRecord {
                 speed * cosTheta, speed * sinTheta * (float) Math.sin(phi));
     }
 
-    /** The first dormant slot, for a new particle of a kind. */
+    /**
+     * A slot for a new particle of a kind: water takes the first dormant slot; a firework the
+     * first slot after the fireworks, whose water (if any) moves to the first dormant slot.
+     */
     private int take(byte kind) {
-        int i = live++;
+        int i;
+        if (kind == WATER) {
+            i = live;
+        } else {
+            i = fireworkCount++;
+            if (i < live) {
+                move(i, live);
+            }
+        }
+        ++live;
         kinds[i] = kind;
         births[i] = (float) timeSeconds;
         ++liveByKind[kind];
-        if (kind != WATER) {
-            fireworkEntries[i] = fireworkCount;
-            fireworkSlots[fireworkCount++] = i;
-        }
         return i;
     }
 
@@ -753,18 +776,12 @@ public final class Fountain implements StateRecord {
         fuses[to] = fuses[from];
         fusesLeft[to] = fusesLeft[from];
         colours[to] = colours[from];
-        int entry = fireworkEntries[from];
-        fireworkEntries[to] = entry;
-        if (entry >= 0) {
-            fireworkSlots[entry] = to;
-        }
         park(from);
     }
 
     /** Dormant: at rest on the ground at the nozzle. */
     private void park(int i) {
         kinds[i] = DORMANT;
-        fireworkEntries[i] = -1;
         place(i, 0f, RADIUS_METRES, 0f, 0f, 0f, 0f);
         births[i] = Float.POSITIVE_INFINITY;
         fuses[i] = 0f;
