@@ -154,7 +154,7 @@ final class PackedStep {
             // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
             factor = folded.stepFactor;
             bad = stepByAxes(positions, velocities, stride, count, stepSeconds, 0f, null,
-                    null);
+                    null, null);
         }
         if (bad >= 0) {
             throw failure(positions, velocities, stride, count, bad, stepSeconds,
@@ -167,7 +167,8 @@ final class PackedStep {
      * ({@link HeightScan}), each with its vy before the step. The step by axes tests each
      * block right after stepping it, while it is in the cache, and keeps only that block's
      * vy before (a scratch of {@value #BATCH_BLOCK}); the other forms copy every vy into
-     * storeVelocityYBefore first, step, test, and keep the found ones' in place.
+     * storeVelocityYBefore first, step, test, and keep the found ones' in place; eachBlock
+     * (if not null) then takes them all as one block.
      *
      * @return how many were found: their indices, increasing, are at the start of
      *     storeBelow, their vy before the step at the start of storeVelocityYBefore
@@ -175,7 +176,7 @@ final class PackedStep {
      */
     int stepFindingFloor(float[] positions, float[] velocities, int stride, int count,
             float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
-            float[] storeVelocityYBefore) {
+            float[] storeVelocityYBefore, FloorContacts eachBlock) {
         if (folded.hasOthers || !Float.isFinite(folded.stepFactor) || folded.speedDependent) {
             System.arraycopy(velocities, stride, storeVelocityYBefore, 0, count);
             step(positions, velocities, stride, count, massKg, stepSeconds);
@@ -185,11 +186,14 @@ final class PackedStep {
             for (int c = 0; c < found; ++c) {
                 storeVelocityYBefore[c] = storeVelocityYBefore[storeBelow[c]];
             }
+            if (eachBlock != null && found > 0) {
+                eachBlock.take(storeBelow, storeVelocityYBefore, 0, found);
+            }
             return found;
         }
         float factor = folded.stepFactor;
         int bad = stepByAxes(positions, velocities, stride, count, stepSeconds, floorMetres,
-                storeBelow, storeVelocityYBefore);
+                storeBelow, storeVelocityYBefore, eachBlock);
         if (bad >= 0) {
             throw failure(positions, velocities, stride, count, bad, stepSeconds,
                     factor < -1f ? factor : Float.NaN);
@@ -239,13 +243,14 @@ final class PackedStep {
      * <p>With storeBelow (not null), each block's y is then tested against the floor
      * ({@link #findInBlock}, which checks y's finiteness on the way), and the vy the block
      * had before its step, copied into a scratch of one block just before, is kept for each
-     * one found; {@link #foundCount} says how many.
+     * one found; {@link #foundCount} says how many. Each block's found ones go to eachBlock
+     * (if not null) right after its test, while the block is in the cache.
      *
      * @return the index of the first non-finite value, or -1
      */
     private int stepByAxes(float[] positions, float[] velocities, int stride, int count,
             float stepSeconds, float floorMetres, int[] storeBelow,
-            float[] storeVelocityYBefore) {
+            float[] storeVelocityYBefore, FloorContacts eachBlock) {
         float factor = folded.stepFactor;
         float gx = folded.stepGravityX;
         float gy = folded.stepGravityY;
@@ -280,9 +285,13 @@ final class PackedStep {
                                 & (storeBelow != null || isSumFinite(positions, y, n));
             }
             if (storeBelow != null) {
+                int was = found;
                 found = findInBlock(positions, y, n, start, floorMetres, storeBelow,
                         storeVelocityYBefore, found);
                 finite &= blockFinite;
+                if (eachBlock != null && found > was) {
+                    eachBlock.take(storeBelow, storeVelocityYBefore, was, found);
+                }
             }
         }
         foundCount = found;

@@ -228,6 +228,34 @@ public final class ParticleIntegrator {
     public int stepPackedFindingFloor(float[] positions, float[] velocities, int stride,
             int count, float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
             float[] storeVelocityYBefore) {
+        return stepPackedFindingFloor(positions, velocities, stride, count, massKg,
+                stepSeconds, floorMetres, storeBelow, storeVelocityYBefore, null);
+    }
+
+    /**
+     * {@link #stepPackedFindingFloor(float[], float[], int, int, float, float, float, int[],
+     * float[])}, handing each block's particles found to eachBlock right after that block's
+     * step, while its arrays are in the cache (with h = 0, or in the batch's forms that do
+     * not work in blocks, all of them as one block at the end): a ground's rule applied
+     * there reads nothing from memory again. The stores hold what the form without it
+     * gives, unless eachBlock writes over the entries it was handed (it may).
+     *
+     * @param positions as above
+     * @param velocities as above
+     * @param stride as above
+     * @param count as above
+     * @param massKg as above
+     * @param stepSeconds as above
+     * @param floorMetres as above
+     * @param storeBelow as above
+     * @param storeVelocityYBefore as above
+     * @param eachBlock what takes each block's particles found (null: nothing)
+     * @return how many particles were found
+     * @throws NonFiniteStepException as stepPacked; eachBlock may have taken blocks before
+     */
+    public int stepPackedFindingFloor(float[] positions, float[] velocities, int stride,
+            int count, float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
+            float[] storeVelocityYBefore, FloorContacts eachBlock) {
         PackedStep.checkArrays(positions, velocities, stride, count);
         Particle.checkMass(massKg);
         Validate.nonNegative(stepSeconds, "step h (s)");
@@ -248,6 +276,9 @@ public final class ParticleIntegrator {
             for (int c = 0; c < found; ++c) {
                 storeVelocityYBefore[c] = velocities[stride + storeBelow[c]];
             }
+            if (eachBlock != null && found > 0) {
+                eachBlock.take(storeBelow, storeVelocityYBefore, 0, found);
+            }
             return found;
         }
         if (count == 0) {
@@ -256,7 +287,7 @@ public final class ParticleIntegrator {
         folded.refoldIfStale();
         limits.remember(stepSeconds, massKg);
         return packed.stepFindingFloor(positions, velocities, stride, count, massKg,
-                stepSeconds, floorMetres, storeBelow, storeVelocityYBefore);
+                stepSeconds, floorMetres, storeBelow, storeVelocityYBefore, eachBlock);
     }
 
     /**

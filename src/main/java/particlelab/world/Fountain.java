@@ -1,6 +1,7 @@
 package particlelab.world;
 
 import java.util.Arrays;
+import particlelab.physics.FloorContacts;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -167,6 +168,12 @@ public final class Fountain implements StateRecord {
     private final float[] fusesLeft;
     /** The colour each particle was given (0xRRGGBB). */
     private final int[] colours;
+    /** What takes each block's contacts from the step: {@link #touchGround}. */
+    private final FloorContacts onGround = this::touchGround;
+    /** During a step: the least birth that is not too old, for {@link #touchGround} ... */
+    private float blockOldestBirth;
+    /** ... and how many slots it has sent back to the pool so far. */
+    private int blockLeaving;
     /** How many slots are in flight: slots 0 to live − 1. */
     private int live;
     private final int[] liveByKind = new int[RULES.length];
@@ -342,14 +349,14 @@ public final class Fountain implements StateRecord {
      *     non-finite; {@link #reset} before stepping again
      */
     public void step(float stepSeconds) {
-        // the step finds the ground's contacts (y <= r) block by block as it goes
-        int touching = integrator.stepPackedFindingFloor(positions, velocities, capacity, live,
-                MASS_KG, stepSeconds, ground.getRadius(), contacts, velocityYBefore);
-        ground.resolveFound(positions, velocities, capacity, contacts, velocityYBefore,
-                touching);
         timeSeconds += stepSeconds;
-        int leaving = settleWater(touching);
-        leaving = burnFuses(stepSeconds, leaving);
+        blockOldestBirth = oldestBirth();
+        blockLeaving = 0;
+        // the step finds the ground's contacts (y <= r) and hands each block's on to
+        // touchGround while the block is in the cache
+        integrator.stepPackedFindingFloor(positions, velocities, capacity, live, MASS_KG,
+                stepSeconds, ground.getRadius(), contacts, velocityYBefore, onGround);
+        int leaving = burnFuses(stepSeconds, blockLeaving);
         compact(leaving);
         for (int b = 0; b < burstCount; ++b) {
             spawnPayload(b);
@@ -539,31 +546,32 @@ public final class Fountain implements StateRecord {
     // ---------------------------------------------------------------- private helpers ----
 
     /**
-     * Water in contact with the ground goes back to the pool if its rebound is slower than
-     * {@link #REST_SPEED} (at rest), or if it is out of the region or older than
-     * {@link #MAX_AGE_SECONDS} (leaving). Only the contacts are looked at: a firework in
-     * contact is left to the ground and to {@link #burnFuses}.
-     *
-     * @return how many slots go back: their indices are now at the start of contacts
+     * One block's contacts with the ground, as the step hands them on: the ground's rule
+     * ({@link GroundBounce#resolveFound}), then water in contact goes back to the pool if its
+     * rebound is slower than {@link #REST_SPEED} (at rest), or if it is out of the region or
+     * older than {@link #MAX_AGE_SECONDS} (leaving). A firework in contact is left to the
+     * ground and to {@link #burnFuses}. The slots going back are written at the start of
+     * contacts, over entries already handed on ({@link #blockLeaving} of them so far).
      */
-    private int settleWater(int touching) {
+    private void touchGround(int[] found, float[] velocityYBefore, int from, int to) {
+        ground.resolveFound(positions, velocities, capacity, found, velocityYBefore, from, to);
         int y = capacity;
-        float oldestBirth = oldestBirth();
-        int leaving = 0;
-        for (int c = 0; c < touching; ++c) {
-            int i = contacts[c];
+        float oldest = blockOldestBirth;
+        int leaving = blockLeaving;
+        for (int c = from; c < to; ++c) {
+            int i = found[c];
             if (kinds[i] != WATER) {
                 continue;
             }
             if (velocities[y + i] < REST_SPEED) {
                 ++recycledResting;
                 contacts[leaving++] = retire(i);
-            } else if (isLeaving(i, oldestBirth)) {
+            } else if (isLeaving(i, oldest)) {
                 ++recycledLeaving;
                 contacts[leaving++] = retire(i);
             }
         }
-        return leaving;
+        blockLeaving = leaving;
     }
 
     /** The least birth time that is not too old: now − {@link #MAX_AGE_SECONDS} (s). */

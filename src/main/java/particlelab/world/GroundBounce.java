@@ -150,24 +150,26 @@ public final class GroundBounce {
      * particlelab.physics.ParticleIntegrator#stepPackedFindingFloor} with the floor at r
      * finds the same particles as the contact test of {@link #resolve} (y &le; r) and gives
      * each one's vy before the step, so this applies the same rule to the same numbers as
-     * resolve would, without a pass over every particle.
+     * resolve would, without a pass over every particle (and, given each block as the step
+     * hands it on, while the block is in the cache).
      *
      * @param positions P, planar with the stride (in metres, modified: y of those in contact)
      * @param velocities V after the step, likewise (in m/s, modified: vy of those in contact)
      * @param stride the particles the layout has room for
      * @param contacts the indices of the particles in contact (not modified)
-     * @param velocitiesYBefore vy before the step of each, in the same order (in m/s, not
+     * @param velocitiesYBefore vy before the step of each, at the same places (in m/s, not
      *     modified)
-     * @param count how many contacts (&ge;0, at most both arrays' lengths)
+     * @param from the first contact to resolve (&ge;0)
+     * @param to one past the last (from &le; to &le; both arrays' lengths)
      */
     public void resolveFound(float[] positions, float[] velocities, int stride, int[] contacts,
-            float[] velocitiesYBefore, int count) {
-        if (count < 0 || count > contacts.length || count > velocitiesYBefore.length) {
-            throw new IllegalArgumentException("the contacts to resolve must be from 0 to "
+            float[] velocitiesYBefore, int from, int to) {
+        if (from < 0 || to < from || to > contacts.length || to > velocitiesYBefore.length) {
+            throw new IllegalArgumentException("the contacts to resolve must lie within 0 to "
                     + Math.min(contacts.length, velocitiesYBefore.length) + ", but were "
-                    + count);
+                    + from + " to " + to);
         }
-        for (int c = 0; c < count; ++c) {
+        for (int c = from; c < to; ++c) {
             resolveContact(positions, velocities, stride, contacts[c], velocitiesYBefore[c]);
         }
     }
