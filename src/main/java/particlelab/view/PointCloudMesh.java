@@ -43,7 +43,9 @@ public final class PointCloudMesh {
     private final ByteBuffer colours;
     /** The colour bytes as little-endian ints: one int a point. */
     private final IntBuffer colourInts;
+    /** The vertex buffers of {@link #positions}, to mark them updated. */
     private final VertexBuffer[] positionBuffers = new VertexBuffer[AXES.length];
+    /** The vertex buffer of {@link #colours}, to mark it updated. */
     private final VertexBuffer colourBuffer;
 
     /**
