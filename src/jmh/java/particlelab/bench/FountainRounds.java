@@ -30,8 +30,9 @@ import particlelab.world.Fountain;
  * <li>{@code mesh-update/N}: {@link FountainPoints#update} of a fountain in full flow into a
  * {@link PointCloudMesh} built without a window;</li>
  * <li>{@code plain-copy/N}: the same bytes copied from arrays into direct buffers of the same
- * layout (one {@code FloatBuffer.put} of the positions, one {@code IntBuffer.put} of the
- * colours), as many points as the update writes;</li>
+ * layout (the mesh's planar layout: three {@code FloatBuffer.put} of the positions, one an
+ * axis, and one {@code IntBuffer.put} of the colours), as many points as the update
+ * writes;</li>
  * <li>{@code mesh-per-point/N}: the update as it was before issue 23 (every slot, one absolute
  * put per float and per colour byte, the colour scaled per point), for the record.</li>
  * </ul>
@@ -150,17 +151,22 @@ public final class FountainRounds {
 
         int points = update.countLastWritten();
         float[] sourcePositions = new float[3 * n];
-        mesh.getPositionData().get(0, sourcePositions, 0, 3 * n);
+        FloatBuffer[] copyPositions = new FloatBuffer[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            mesh.getPositionData(axis).get(0, sourcePositions, axis * n, n);
+            copyPositions[axis] = ByteBuffer.allocateDirect(4 * n)
+                    .order(ByteOrder.nativeOrder()).asFloatBuffer();
+        }
         int[] sourceColours = new int[n];
         mesh.getColourData().duplicate().order(ByteOrder.LITTLE_ENDIAN).asIntBuffer()
                 .get(0, sourceColours, 0, n);
-        FloatBuffer copyPositions = ByteBuffer.allocateDirect(12 * n)
-                .order(ByteOrder.nativeOrder()).asFloatBuffer();
         IntBuffer copyColours = ByteBuffer.allocateDirect(4 * n)
                 .order(ByteOrder.LITTLE_ENDIAN).asIntBuffer();
         names.add("plain-copy/" + n);
         rows.add(() -> {
-            copyPositions.put(0, sourcePositions, 0, 3 * points);
+            copyPositions[0].put(0, sourcePositions, 0, points);
+            copyPositions[1].put(0, sourcePositions, n, points);
+            copyPositions[2].put(0, sourcePositions, 2 * n, points);
             copyColours.put(0, sourceColours, 0, points);
             sink = copyColours;
         });

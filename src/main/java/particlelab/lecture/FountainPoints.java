@@ -6,19 +6,23 @@ import particlelab.world.Fountain;
 
 /**
  * The fountain's pool written into a mesh of points once a frame, touching only what it must:
- * the positions of the particles in flight, interleaved a chunk at a time and copied in bulk
- * ({@link PointCloudMesh#writePositions}), and the colours that changed. Slots that went back
- * to the pool since the last frame are written too, black (additive blending: invisible) at
- * the nozzle; the slots beyond are dormant in the mesh already, as in the pool, so they are
- * not written again. The buffers then hold what a copy of every slot would give, byte for
- * byte (a test compares the two).
+ * the positions of the particles in flight, three bulk copies of the fountain's planar array
+ * into the mesh's planar buffers ({@link PointCloudMesh#writePositions}), and the colours that
+ * changed. Slots that went back to the pool since the last frame are written too, black
+ * (additive blending: invisible) at the nozzle; the slots beyond are dormant in the mesh
+ * already, as in the pool, so they are not written again. The buffers then hold what a copy
+ * of every slot would give, byte for byte (a test compares the two).
  *
  * <p>Colours: water at a fixed brightness (one packed colour for all of it: the fountain
  * gives all water {@link Fountain#WATER_COLOUR}), a shell at full brightness, a star or a
- * spark fading with what is left of its fuse, a dormant slot black. A point's colour is
- * written again only if it is a firework (it fades every frame) or its slot's kind is not the
- * one its colour was last written for: a water particle that moves into a slot that held
- * water keeps the colour there. Allocates nothing.
+ * spark fading with what is left of its fuse, a dormant slot black. Water's and a dormant
+ * slot's colour depend on the kind alone, so such a point's colour is written again only if
+ * its slot's kind is not the one its colour was last written for: the kinds are compared in
+ * bulk with {@link Arrays#mismatch(byte[], int, int, byte[], int, int)} (vectorised by the
+ * JDK), which jumps from one changed slot to the next. The fireworks fade every frame: their
+ * colours are written from the fountain's list of firework slots
+ * ({@link Fountain#getFireworkSlot}), a few thousand at most, without looking at the water.
+ * Allocates nothing.
  */
 public final class FountainPoints {
 
@@ -30,9 +34,10 @@ public final class FountainPoints {
     private final PointCloudMesh mesh;
     /** The water's colour, packed once. */
     private final int waterPacked;
-    /** The positions of one chunk of points, x, y, z per point (m). */
-    private final float[] xyz;
-    /** The kind each point's colour was last written for ({@link #UNWRITTEN}: none yet). */
+    /**
+     * The kind each point's colour was last written for ({@link #UNWRITTEN}: none yet); for a
+     * firework, its kind (its colour is written every update).
+     */
     private final byte[] drawnKinds;
     /** How many points the last update wrote: beyond, the mesh holds dormant slots. */
     private int written;
@@ -52,7 +57,6 @@ public final class FountainPoints {
         }
         this.mesh = mesh;
         waterPacked = PointCloudMesh.pack(Fountain.WATER_COLOUR, waterBrightness);
-        xyz = new float[3 * Math.min(mesh.getCount(), PointCloudMesh.CHUNK_POINTS)];
         drawnKinds = new byte[mesh.getCount()];
         Arrays.fill(drawnKinds, UNWRITTEN);
         written = mesh.getCount(); // the first update writes every point
@@ -70,23 +74,11 @@ public final class FountainPoints {
                     + " does not match the mesh's " + mesh.getCount() + " points");
         }
         int live = fountain.countLive();
+        // slots live to written − 1 went back to the pool since the last update: dormant now
         int points = Math.max(live, written);
-        writePositions(fountain.getPositions(), capacity, points);
-        byte[] drawn = drawnKinds;
-        for (int i = 0; i < live; ++i) {
-            byte kind = fountain.getKind(i);
-            // nearly every point is water whose slot held water: nothing to write
-            if (kind != Fountain.WATER || drawn[i] != Fountain.WATER) {
-                mesh.writeColour(i, colour(fountain, i, kind));
-                drawn[i] = kind;
-            }
-        }
-        for (int i = live; i < points; ++i) {
-            if (drawn[i] != Fountain.DORMANT) {
-                mesh.writeColour(i, DORMANT_COLOUR);
-                drawn[i] = Fountain.DORMANT;
-            }
-        }
+        mesh.writePositions(0, fountain.getPositions(), capacity, points);
+        writeChangedKinds(fountain.getKinds(), points);
+        writeFireworks(fountain);
         mesh.markUpdated();
         written = live;
         lastWritten = points;
@@ -101,32 +93,38 @@ public final class FountainPoints {
         return lastWritten;
     }
 
-    /** Points 0 to points − 1, a chunk at a time, interleaved in a scratch array. */
-    private void writePositions(float[] planar, int capacity, int points) {
-        float[] out = xyz;
-        for (int start = 0; start < points; start += PointCloudMesh.CHUNK_POINTS) {
-            int length = Math.min(PointCloudMesh.CHUNK_POINTS, points - start);
-            int y = capacity + start;
-            int z = 2 * capacity + start;
-            for (int k = 0, at = 0; k < length; ++k, at += 3) {
-                out[at] = planar[start + k];
-                out[at + 1] = planar[y + k];
-                out[at + 2] = planar[z + k];
+    /**
+     * Slots 0 to points − 1 whose kind is not the one their colour was written for: water
+     * and dormant slots get their colour, fireworks only their new kind here.
+     */
+    private void writeChangedKinds(byte[] kinds, int points) {
+        byte[] drawn = drawnKinds;
+        int i = 0;
+        while (i < points) {
+            int offset = Arrays.mismatch(kinds, i, points, drawn, i, points);
+            if (offset < 0) {
+                return; // the rest is as it was drawn
             }
-            mesh.writePositions(start, out, length);
+            i += offset;
+            byte kind = kinds[i];
+            if (kind == Fountain.WATER) {
+                mesh.writeColour(i, waterPacked);
+            } else if (kind == Fountain.DORMANT) {
+                mesh.writeColour(i, DORMANT_COLOUR);
+            }
+            drawn[i] = kind;
+            ++i;
         }
     }
 
-    private int colour(Fountain fountain, int i, byte kind) {
-        switch (kind) {
-            case Fountain.WATER:
-                return waterPacked;
-            case Fountain.SHELL:
-                return PointCloudMesh.pack(fountain.getColour(i), 1f);
-            case Fountain.DORMANT:
-                return DORMANT_COLOUR;
-            default:
-                return PointCloudMesh.pack(fountain.getColour(i), fountain.fuseFraction(i));
+    /** Every firework in flight: a shell at full brightness, the others fading. */
+    private void writeFireworks(Fountain fountain) {
+        int fireworks = fountain.countFireworks();
+        for (int k = 0; k < fireworks; ++k) {
+            int i = fountain.getFireworkSlot(k);
+            float brightness = fountain.getKind(i) == Fountain.SHELL ? 1f
+                    : fountain.fuseFraction(i);
+            mesh.writeColour(i, PointCloudMesh.pack(fountain.getColour(i), brightness));
         }
     }
 }

@@ -11,32 +11,41 @@ import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 
 /**
- * The mesh of a {@link PointCloudView} without its material: the position buffer (three
- * floats a point) and the colour buffer (four bytes a point, R, G, B, A), made once and
- * rewritten in place, so it can be filled and timed without a window or an asset manager.
+ * The mesh of a {@link PointCloudView} without its material: the positions planar, in three
+ * vertex buffers of one float a point (x in {@link VertexBuffer.Type#Position}, y in
+ * {@link VertexBuffer.Type#TexCoord}, z in {@link VertexBuffer.Type#TexCoord2}, which the
+ * material {@value PointCloudView#MATERIAL} puts together as {@code vec4(x, y, z, 1)}), and
+ * the colour buffer (four bytes a point, R, G, B, A), made once and rewritten in place, so it
+ * can be filled and timed without a window or an asset manager.
  *
- * <p>Positions are written as a bulk copy of a range of points from a small array the caller
- * fills a chunk at a time (the mesh wants x, y, z per point, the particles are planar);
- * colours one point at a time, only where they change, as packed ints through a
- * little-endian int view of the byte buffer, so the int {@code R | G<<8 | B<<16 | A<<24}
- * lands as the bytes R, G, B, A whatever the machine's order. Nothing is allocated
- * after the constructor.
+ * <p>Positions are written as three bulk copies of a range of points straight from the
+ * caller's planar array (all x, then all y, then all z, as the particles are packed): no
+ * interleaving, no scratch. Colours one point at a time, only where they change, as packed
+ * ints through a little-endian int view of the byte buffer, so the int
+ * {@code R | G<<8 | B<<16 | A<<24} lands as the bytes R, G, B, A whatever the machine's
+ * order. The bound is set once, explicitly: jME must never compute it from the one-float
+ * position buffer (it would read x, y, z of three different points as one). Nothing is
+ * allocated after the constructor.
  */
 public final class PointCloudMesh {
 
     /** A packed colour's alpha byte, opaque. */
     private static final int OPAQUE = 0xff << 24;
     private static final int CHANNEL = 0xff;
-    /** The most points a caller should fill and write at a time (its scratch's size). */
-    public static final int CHUNK_POINTS = 1024;
+    /** The vertex buffers holding x, y and z, one float a point each. */
+    private static final VertexBuffer.Type[] AXES = {VertexBuffer.Type.Position,
+        VertexBuffer.Type.TexCoord, VertexBuffer.Type.TexCoord2};
 
     private final int count;
     private final Mesh mesh = new Mesh();
-    private final FloatBuffer positions;
+    /** x, y and z of every point, one buffer an axis (m). */
+    private final FloatBuffer[] positions = new FloatBuffer[AXES.length];
     private final ByteBuffer colours;
     /** The colour bytes as little-endian ints: one int a point. */
     private final IntBuffer colourInts;
-    private final VertexBuffer positionBuffer;
+    /** The vertex buffers of {@link #positions}, to mark them updated. */
+    private final VertexBuffer[] positionBuffers = new VertexBuffer[AXES.length];
+    /** The vertex buffer of {@link #colours}, to mark it updated. */
     private final VertexBuffer colourBuffer;
 
     /**
@@ -52,19 +61,22 @@ public final class PointCloudMesh {
                     + " bounds > 0, but got " + count + ", " + boundsHalfExtent + " m");
         }
         this.count = count;
-        positions = BufferUtils.createFloatBuffer(3 * count);
         colours = BufferUtils.createByteBuffer(4 * count);
         colourInts = colours.duplicate().order(ByteOrder.LITTLE_ENDIAN).asIntBuffer();
         mesh.setMode(Mesh.Mode.Points);
-        mesh.setBuffer(VertexBuffer.Type.Position, 3, positions);
+        for (int axis = 0; axis < AXES.length; ++axis) {
+            positions[axis] = BufferUtils.createFloatBuffer(count);
+            mesh.setBuffer(AXES[axis], 1, positions[axis]);
+            positionBuffers[axis] = mesh.getBuffer(AXES[axis]);
+            positionBuffers[axis].setUsage(VertexBuffer.Usage.Stream);
+        }
         mesh.setBuffer(VertexBuffer.Type.Color, 4, VertexBuffer.Format.UnsignedByte, colours);
-        positionBuffer = mesh.getBuffer(VertexBuffer.Type.Position);
         colourBuffer = mesh.getBuffer(VertexBuffer.Type.Color);
         colourBuffer.setNormalized(true);
-        positionBuffer.setUsage(VertexBuffer.Usage.Stream);
         colourBuffer.setUsage(VertexBuffer.Usage.Stream);
         mesh.setBound(new BoundingBox(Vector3f.ZERO, boundsHalfExtent, boundsHalfExtent,
                 boundsHalfExtent));
+        // the vertex count from the Position buffer: one float a point, so count points
         mesh.updateCounts();
     }
 
@@ -100,12 +112,14 @@ public final class PointCloudMesh {
     }
 
     /**
-     * Access the position buffer (x, y, z per point), e.g. to compare its contents.
+     * Access the buffer of one axis of the positions (one float a point), e.g. to compare its
+     * contents.
      *
+     * @param axis 0 for x, 1 for y, 2 for z
      * @return the live buffer (in metres, do not modify)
      */
-    public FloatBuffer getPositionData() {
-        return positions;
+    public FloatBuffer getPositionData(int axis) {
+        return positions[axis];
     }
 
     /**
@@ -118,23 +132,24 @@ public final class PointCloudMesh {
     }
 
     /**
-     * Copy the positions of points first to first + points − 1 into the mesh, in place, one
-     * bulk copy; the other points keep theirs. The caller interleaves a chunk at a time (at
-     * most {@value #CHUNK_POINTS} points, 12 KiB, which stays in the processor's nearest
-     * cache), so the memory a frame touches is its own arrays and the buffer, as for a plain
-     * copy.
+     * Copy the positions of points first to first + points − 1 into the mesh, in place: one
+     * bulk copy an axis from the caller's planar array; the other points keep theirs.
      *
      * @param first the first point to write (&ge;0)
-     * @param xyz x, y, z per point, from index 0 (in metres, length &ge; 3·points, not
-     *     modified)
+     * @param planar all x, then all y, then all z, point first's x at index first (in metres,
+     *     length &ge; 3·stride, not modified)
+     * @param stride how far y is from x and z from y in planar (&ge; first + points)
      * @param points how many to copy (&ge;0, first + points at most {@link #getCount()})
      */
-    public void writePositions(int first, float[] xyz, int points) {
-        if (first < 0 || points < 0 || points > count - first) {
+    public void writePositions(int first, float[] planar, int stride, int points) {
+        if (first < 0 || points < 0 || points > count - first || stride < first + points) {
             throw new IllegalArgumentException("points to write must lie within 0 to "
-                    + count + ", but were " + points + " from " + first);
+                    + count + " and the stride of " + stride + ", but were " + points
+                    + " from " + first);
         }
-        positions.put(3 * first, xyz, 0, 3 * points);
+        positions[0].put(first, planar, first, points);
+        positions[1].put(first, planar, stride + first, points);
+        positions[2].put(first, planar, 2 * stride + first, points);
     }
 
     /**
@@ -151,7 +166,9 @@ public final class PointCloudMesh {
      * Tell jME that the buffers changed, so they are uploaded before the next draw.
      */
     public void markUpdated() {
-        positionBuffer.setUpdateNeeded();
+        for (VertexBuffer buffer : positionBuffers) {
+            buffer.setUpdateNeeded();
+        }
         colourBuffer.setUpdateNeeded();
     }
 

@@ -9,12 +9,18 @@ import com.jme3.scene.Spatial;
 
 /**
  * Many particles drawn as one mesh of points: one draw call, whatever the count. The mesh
- * ({@link PointCloudMesh}: a position buffer of three floats a point and a colour buffer of
- * four bytes a point) is made once and rewritten in place, then marked updated, so jME uploads
- * it again without a new buffer: nothing is allocated per frame. Colours add up (additive
- * blending), so a black point is invisible and a dense spray glows.
+ * ({@link PointCloudMesh}: the positions planar, three buffers of one float a point, and a
+ * colour buffer of four bytes a point) is made once and rewritten in place, then marked
+ * updated, so jME uploads it again without a new buffer: nothing is allocated per frame. The
+ * material ({@value #MATERIAL}, a small shader of this project's) puts x, y and z together and
+ * draws each point unlit in its vertex colour at a fixed size in pixels, as Unshaded.j3md with
+ * VertexColor and PointSize does. Colours add up (additive blending), so a black point is
+ * invisible and a dense spray glows.
  */
 public final class PointCloudView {
+
+    /** The material definition: planar positions, vertex colour, point size. */
+    public static final String MATERIAL = "MatDefs/PlanarPoints.j3md";
 
     private final PointCloudMesh points;
     private final Geometry geometry;
@@ -37,8 +43,7 @@ public final class PointCloudView {
                     + boundsHalfExtent + " m");
         }
         points = new PointCloudMesh(count, boundsHalfExtent);
-        Material material = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
-        material.setBoolean("VertexColor", true);
+        Material material = new Material(assetManager, MATERIAL);
         material.setFloat("PointSize", pointSizePixels);
         RenderState state = material.getAdditionalRenderState();
         state.setBlendMode(RenderState.BlendMode.Additive);

@@ -486,6 +486,35 @@ public final class Fountain implements StateRecord {
     }
 
     /**
+     * Access every slot's kind, e.g. to compare them in bulk.
+     *
+     * @return the live array of {@link #getCapacity()} kinds as {@link #getKind} gives them
+     *     (do not modify)
+     */
+    public byte[] getKinds() {
+        return kinds;
+    }
+
+    /**
+     * Count the fireworks in flight (shells, stars and sparks).
+     *
+     * @return the count (from 0 to the pool size)
+     */
+    public int countFireworks() {
+        return fireworkCount;
+    }
+
+    /**
+     * Return the slot of a firework in flight.
+     *
+     * @param k which firework (from 0 to {@link #countFireworks()} − 1; they are in no order)
+     * @return its slot (from 0 to {@link #countLive()} − 1)
+     */
+    public int getFireworkSlot(int k) {
+        return fireworkSlots[k];
+    }
+
+    /**
      * Return a particle's colour.
      *
      * @param index the slot (from 0 to the pool size − 1)

@@ -16,26 +16,33 @@ import particlelab.world.StateSlab;
  * The fountain's mesh update ({@link FountainPoints}: the positions of the particles in
  * flight in bulk, the colours that changed) leaves the mesh's buffers byte for byte as the
  * update before issue 23 did (every slot, one put per float and per colour byte, written
- * below as the reference), through a seeded run with frames of zero, one and several steps,
- * a reset and a state read back. No window: the mesh is built without a material.
+ * below as the reference), the positions in the planar layout (one buffer an axis), through a
+ * seeded run with frames of zero, one and several steps, a reset and a state read back. No
+ * window: the mesh is built without a material.
  */
 class FountainPointsTest {
 
     private static final float H = 1f / 60f;
     private static final int POOL = 3000;
     private static final float WATER_BRIGHTNESS = 0.15f;
+    /** x, y, z: one position buffer each. */
+    private static final int AXES = 3;
 
     @Test
     void theBuffersHoldWhatACopyOfEverySlotGives() {
         Fountain fountain = new Fountain(POOL);
         PointCloudMesh mesh = new PointCloudMesh(POOL, Fountain.REGION_TOP);
         FountainPoints points = new FountainPoints(mesh, WATER_BRIGHTNESS);
-        FloatBuffer expectedPositions = ByteBuffer.allocateDirect(12 * POOL)
-                .order(ByteOrder.nativeOrder()).asFloatBuffer();
+        FloatBuffer[] expectedPositions = new FloatBuffer[AXES];
+        for (int axis = 0; axis < AXES; ++axis) {
+            expectedPositions[axis] = ByteBuffer.allocateDirect(4 * POOL)
+                    .order(ByteOrder.nativeOrder()).asFloatBuffer();
+        }
         ByteBuffer expectedColours = ByteBuffer.allocateDirect(4 * POOL);
         int[] saved = new int[fountain.countStateInts()];
         StateSlab slab = new StateSlab();
         int fireworksSeen = 0;
+        int sparksSeen = 0;
         for (int frame = 0; frame < 900; ++frame) {
             // frames of 0, 1, 2 and 3 steps, as the clock gives at a time scale
             for (int s = 0; s < frame % 4; ++s) {
@@ -56,9 +63,11 @@ class FountainPointsTest {
             everySlot(fountain, expectedPositions, expectedColours);
             assertSameBuffers(expectedPositions, expectedColours, mesh, frame);
             fireworksSeen = Math.max(fireworksSeen, fountain.countLive(Fountain.STAR));
+            sparksSeen = Math.max(sparksSeen, fountain.countLive(Fountain.SPARK));
         }
-        // the run had stars fading and a pool in full flow
+        // the run had stars and sparks fading and a pool in full flow
         assertTrue(fireworksSeen > 0, "no stars");
+        assertTrue(sparksSeen > 0, "no sparks");
     }
 
     @Test
@@ -78,15 +87,18 @@ class FountainPointsTest {
         assertEquals(0L, bytes, "30 steps and mesh updates allocated");
     }
 
-    /** The update before issue 23, into the expected buffers: every slot, one put each. */
-    private static void everySlot(Fountain fountain, FloatBuffer positions,
+    /**
+     * The update before issue 23, into the expected buffers: every slot, one put each, the
+     * positions in the planar layout.
+     */
+    private static void everySlot(Fountain fountain, FloatBuffer[] positions,
             ByteBuffer colours) {
         float[] planar = fountain.getPositions();
         int n = fountain.getCapacity();
-        for (int i = 0, at = 0; i < n; ++i, at += 3) {
-            positions.put(at, planar[i]);
-            positions.put(at + 1, planar[n + i]);
-            positions.put(at + 2, planar[2 * n + i]);
+        for (int i = 0; i < n; ++i) {
+            positions[0].put(i, planar[i]);
+            positions[1].put(i, planar[n + i]);
+            positions[2].put(i, planar[2 * n + i]);
         }
         for (int i = 0; i < n; ++i) {
             byte kind = fountain.getKind(i);
@@ -101,16 +113,19 @@ class FountainPointsTest {
         }
     }
 
-    private static void assertSameBuffers(FloatBuffer positions, ByteBuffer colours,
+    private static void assertSameBuffers(FloatBuffer[] positions, ByteBuffer colours,
             PointCloudMesh mesh, int frame) {
-        FloatBuffer actualPositions = mesh.getPositionData();
-        for (int k = 0; k < 3 * POOL; ++k) {
-            // bits, not values: the same floats copied, no arithmetic
-            if (Float.floatToRawIntBits(positions.get(k))
-                    != Float.floatToRawIntBits(actualPositions.get(k))) {
-                throw new AssertionError("frame " + frame + ": position float " + k + " is "
-                        + actualPositions.get(k) + ", the copy of every slot gives "
-                        + positions.get(k));
+        for (int axis = 0; axis < AXES; ++axis) {
+            FloatBuffer actual = mesh.getPositionData(axis);
+            assertEquals(POOL, actual.limit(), "one float a point on axis " + axis);
+            for (int k = 0; k < POOL; ++k) {
+                // bits, not values: the same floats copied, no arithmetic
+                if (Float.floatToRawIntBits(positions[axis].get(k))
+                        != Float.floatToRawIntBits(actual.get(k))) {
+                    throw new AssertionError("frame " + frame + ": point " + k + "'s "
+                            + "xyz".charAt(axis) + " is " + actual.get(k) + ", the copy of"
+                            + " every slot gives " + positions[axis].get(k));
+                }
             }
         }
         ByteBuffer actualColours = mesh.getColourData();
