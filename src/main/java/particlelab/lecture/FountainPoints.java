@@ -20,8 +20,8 @@ import particlelab.world.Fountain;
  * its slot's kind is not the one its colour was last written for: the kinds are compared in
  * bulk with {@link Arrays#mismatch(byte[], int, int, byte[], int, int)} (vectorised by the
  * JDK), which jumps from one changed slot to the next. The fireworks fade every frame: their
- * colours are written from the fountain's list of firework slots
- * ({@link Fountain#getFireworkSlot}), a few thousand at most, without looking at the water.
+ * colours are written for the fountain's first slots, which hold them
+ * ({@link Fountain#countFireworks}), a few thousand at most, without looking at the water.
  * Allocates nothing.
  */
 public final class FountainPoints {
@@ -120,8 +120,7 @@ public final class FountainPoints {
     /** Every firework in flight: a shell at full brightness, the others fading. */
     private void writeFireworks(Fountain fountain) {
         int fireworks = fountain.countFireworks();
-        for (int k = 0; k < fireworks; ++k) {
-            int i = fountain.getFireworkSlot(k);
+        for (int i = 0; i < fireworks; ++i) {
             float brightness = fountain.getKind(i) == Fountain.SHELL ? 1f
                     : fountain.fuseFraction(i);
             mesh.writeColour(i, PointCloudMesh.pack(fountain.getColour(i), brightness));

@@ -496,25 +496,6 @@ public final class Fountain implements StateRecord {
     }
 
     /**
-     * Count the fireworks in flight (shells, stars and sparks).
-     *
-     * @return the count (from 0 to the pool size)
-     */
-    public int countFireworks() {
-        return fireworkCount;
-    }
-
-    /**
-     * Return the slot of a firework in flight.
-     *
-     * @param k which firework (from 0 to {@link #countFireworks()} − 1; they are in no order)
-     * @return its slot (from 0 to {@link #countLive()} − 1)
-     */
-    public int getFireworkSlot(int k) {
-        return fireworkSlots[k];
-    }
-
-    /**
      * Return a particle's colour.
      *
      * @param index the slot (from 0 to the pool size − 1)
