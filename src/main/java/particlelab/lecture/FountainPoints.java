@@ -26,6 +26,8 @@ import particlelab.world.Fountain;
  */
 public final class FountainPoints {
 
+    /** The fireworks packed at a time before a bulk copy. */
+    private static final int FIREWORK_CHUNK = 1024;
     /** A dormant slot's colour: black, opaque. */
     private static final int DORMANT_COLOUR = PointCloudMesh.pack(0, 0f);
     /** No kind: the colour of a point not written yet. */
@@ -39,6 +41,8 @@ public final class FountainPoints {
      * firework, its kind (its colour is written every update).
      */
     private final byte[] drawnKinds;
+    /** Scratch: one chunk of the fireworks' packed colours. */
+    private final int[] fireworkColours;
     /** How many points the last update wrote: beyond, the mesh holds dormant slots. */
     private int written;
     /** How many points the last update wrote, for a benchmark's plain copy. */
@@ -59,6 +63,7 @@ public final class FountainPoints {
         waterPacked = PointCloudMesh.pack(Fountain.WATER_COLOUR, waterBrightness);
         drawnKinds = new byte[mesh.getCount()];
         Arrays.fill(drawnKinds, UNWRITTEN);
+        fireworkColours = new int[Math.min(mesh.getCount(), FIREWORK_CHUNK)];
         written = mesh.getCount(); // the first update writes every point
     }
 
@@ -117,13 +122,23 @@ public final class FountainPoints {
         }
     }
 
-    /** Every firework in flight: a shell at full brightness, the others fading. */
+    /**
+     * Every firework in flight: a shell at full brightness, the others fading; packed a
+     * chunk at a time into a scratch and copied in bulk (the fireworks hold the first
+     * slots).
+     */
     private void writeFireworks(Fountain fountain) {
         int fireworks = fountain.countFireworks();
-        for (int i = 0; i < fireworks; ++i) {
-            float brightness = fountain.getKind(i) == Fountain.SHELL ? 1f
-                    : fountain.fuseFraction(i);
-            mesh.writeColour(i, PointCloudMesh.pack(fountain.getColour(i), brightness));
+        int[] packed = fireworkColours;
+        for (int start = 0; start < fireworks; start += packed.length) {
+            int length = Math.min(packed.length, fireworks - start);
+            for (int k = 0; k < length; ++k) {
+                int i = start + k;
+                float brightness = fountain.getKind(i) == Fountain.SHELL ? 1f
+                        : fountain.fuseFraction(i);
+                packed[k] = PointCloudMesh.pack(fountain.getColour(i), brightness);
+            }
+            mesh.writeColours(start, packed, length);
         }
     }
 }

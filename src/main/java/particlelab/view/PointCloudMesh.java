@@ -36,6 +36,9 @@ public final class PointCloudMesh {
     private static final VertexBuffer.Type[] AXES = {VertexBuffer.Type.Position,
         VertexBuffer.Type.TexCoord, VertexBuffer.Type.TexCoord2};
 
+    /** The largest float below 0.5, for {@link #roundLevel}. */
+    private static final float JUST_BELOW_HALF = Math.nextDown(0.5f);
+
     private final int count;
     private final Mesh mesh = new Mesh();
     /** x, y and z of every point, one buffer an axis (m). */
@@ -153,6 +156,23 @@ public final class PointCloudMesh {
     }
 
     /**
+     * Set the colours of points first to first + points − 1, in place, one bulk copy (a put
+     * per point into a direct buffer costs several times more).
+     *
+     * @param first the first point (&ge;0)
+     * @param packed the colours as {@link #pack} makes them, from index 0 (length &ge;
+     *     points, not modified)
+     * @param points how many (&ge;0, first + points at most {@link #getCount()})
+     */
+    public void writeColours(int first, int[] packed, int points) {
+        if (first < 0 || points < 0 || points > count - first) {
+            throw new IllegalArgumentException("colours to write must lie within 0 to "
+                    + count + ", but were " + points + " from " + first);
+        }
+        colourInts.put(first, packed, 0, points);
+    }
+
+    /**
      * Set one point's colour, in place.
      *
      * @param index the point (from 0 to {@link #getCount()} − 1)
@@ -173,6 +193,20 @@ public final class PointCloudMesh {
     }
 
     private static int scale(int channel, float brightness) {
-        return Math.round(channel * brightness) & CHANNEL;
+        return roundLevel(channel * brightness) & CHANNEL;
+    }
+
+    /**
+     * {@link Math#round(float)} of a colour level from 0 to 255, in two instructions: the
+     * largest float below one half added, then truncated. (Plus 0.5f would round
+     * 0.49999997f up, the sum rounding to 1; a test compares this with Math.round at every
+     * float from 0 to 255.) Math.round's own care for every float was 44 % of the fireworks'
+     * colour pass.
+     *
+     * @param level the level (0 to 255)
+     * @return the nearest integer, halves up
+     */
+    static int roundLevel(float level) {
+        return (int) (level + JUST_BELOW_HALF);
     }
 }
