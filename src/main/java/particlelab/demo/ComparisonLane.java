@@ -293,9 +293,9 @@ public final class ComparisonLane implements DemoPart {
     }
 
     /**
-     * Move the lane by one step of h, before the world's step: put the lane's
-     * sphere at the lane's state with the chord's velocity, for the world's step to carry it to
-     * the next state. Allocates nothing (but the slide code's own).
+     * Move the lane by one step of h, before the world's step: put the lane's sphere at the
+     * lane's state with the chord's velocity, for the world's step to carry it to the next
+     * state. Allocates nothing (but the slide code's own).
      *
      * @param stepSeconds h (in seconds, &gt;0)
      */

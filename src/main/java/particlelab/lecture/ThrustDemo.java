@@ -14,7 +14,6 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Thrust;
-import particlelab.view.TextFormat;
 
 /**
  * Demo 4, thrust: two spheres launched together with {@code V0 = (10, 10, 0)} m/s: pull + drag
