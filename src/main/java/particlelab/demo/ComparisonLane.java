@@ -59,7 +59,7 @@ import particlelab.world.StateSlab;
  * adds its listing. Per step and per frame this allocates nothing, except the slide code
  * itself, whose allocation is its point (the HUD gives its bytes per step, measured).
  */
-public final class ComparisonLane {
+public final class ComparisonLane implements DemoPart {
 
     /** What moves the lane. */
     public enum Kind {
@@ -113,6 +113,8 @@ public final class ComparisonLane {
     /** The record's size: flags, the state, the slide's, the path's time, the readouts. */
     private static final int STATE_INTS = 2 + 12 + 6 + ExactPath.STATE_INTS + 10 + 2;
     private static final Kind[] KINDS = Kind.values();
+    /** The lane at the start: off, so the picture and the HUD are the demo's own. */
+    private static final Kind DEFAULT_KIND = Kind.OFF;
 
     private final Supplier<SlideCode> slideFactory;
     private final SlideCode slide;
@@ -168,21 +170,23 @@ public final class ComparisonLane {
     }
 
     /**
-     * Add the lane's sphere to a demo, beside one of its spheres. Call from the demo's
-     * {@code createScene()}, after the followed sphere was added.
+     * Add the lane's sphere to the demo, beside one of its spheres. Call from the demo's
+     * {@code createScene()}, after the followed sphere was added, the lane having been added
+     * to the demo with {@link DemoState#addPart}.
      *
-     * @param owner the demo (not null)
      * @param launch the demo's launch control, which then moves the lane's launch too (not
      *     null)
      * @param followedSphere the sphere whose launch and forces the lane shares (not null)
      * @return the lane's sphere
      */
-    public DemoParticle install(DemoState owner, LaunchControl launch,
-            DemoParticle followedSphere) {
-        demo = owner;
+    public DemoParticle follow(LaunchControl launch, DemoParticle followedSphere) {
+        if (demo == null) {
+            throw new IllegalStateException("add the comparison lane to its demo with addPart"
+                    + " before it follows a sphere");
+        }
         followed = followedSphere;
         Particle source = followed.getParticle();
-        particle = launch.add(owner.addParticle(kind.label(), COLOR,
+        particle = launch.add(demo.addParticle(kind.label(), COLOR,
                 followed.copyLaunchPosition(scratchPosition),
                 followed.copyLaunchVelocity(scratchVelocity), source.getMass(),
                 new ParticleIntegrator()));
@@ -193,34 +197,8 @@ public final class ComparisonLane {
             particle.stopAtGround();
         }
         exact = new ExactPath(followed.getIntegrator());
-        owner.addStateRecord(record());
+        demo.addStateRecord(record());
         return particle;
-    }
-
-    /**
-     * Declare the lane's parameter, {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4},
-     * applied at the next launch.
-     *
-     * @param defaultKind the lane at the start (not null)
-     * @return the declaration
-     */
-    public DemoParameter parameter(Kind defaultKind) {
-        String[] names = new String[KINDS.length];
-        for (int i = 0; i < KINDS.length; ++i) {
-            names[i] = KINDS[i].id();
-        }
-        return DemoParameter.choice(PARAMETER, "comparison lane", names, defaultKind.ordinal(),
-                DemoParameter.Applies.NEXT_LAUNCH, value -> select(KINDS[Math.round(value)]));
-    }
-
-    /**
-     * Bind L: the next lane, from a new launch. Call from the demo's {@code declareKeys()}.
-     *
-     * @return the binding
-     */
-    public KeyBinding bindKey() {
-        return demo.bindKey(KeyInput.KEY_L, "L",
-                "comparison lane: off, slide code, the report's steppers", this::cycle);
     }
 
     /**
@@ -235,7 +213,7 @@ public final class ComparisonLane {
     /**
      * Access the lane's sphere.
      *
-     * @return the demo particle (null before {@link #install})
+     * @return the demo particle (null before {@link #follow})
      */
     public DemoParticle getParticle() {
         return particle;
@@ -280,12 +258,48 @@ public final class ComparisonLane {
     }
 
     /**
-     * Move the lane by one step of h. Call from the demo's {@code beforeStep}: it puts the
-     * lane's sphere at the lane's state with the chord's velocity, for the world's step to
-     * carry it to the next state. Allocates nothing (but the slide code's own).
+     * Keep the demo the lane was added to ({@link DemoState#addPart}).
+     *
+     * @param owner the demo (not null)
+     */
+    @Override
+    public void attach(DemoState owner) {
+        demo = owner;
+    }
+
+    /**
+     * Declare the lane's parameter,
+     * {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4}, applied at the next launch,
+     * off at the start.
+     *
+     * @param parameters the demo's parameters (not null, modified)
+     */
+    @Override
+    public void declareParameters(DemoParameters parameters) {
+        String[] names = new String[KINDS.length];
+        for (int i = 0; i < KINDS.length; ++i) {
+            names[i] = KINDS[i].id();
+        }
+        parameters.add(DemoParameter.choice(PARAMETER, "comparison lane", names,
+                DEFAULT_KIND.ordinal(), DemoParameter.Applies.NEXT_LAUNCH,
+                value -> select(KINDS[Math.round(value)])));
+    }
+
+    /** Bind L: the next lane, from a new launch. */
+    @Override
+    public void declareKeys() {
+        demo.bindKey(KeyInput.KEY_L, "L",
+                "comparison lane: off, slide code, the report's steppers", this::cycle);
+    }
+
+    /**
+     * Move the lane by one step of h, before the world's step: put the lane's sphere at the
+     * lane's state with the chord's velocity, for the world's step to carry it to the next
+     * state. Allocates nothing (but the slide code's own).
      *
      * @param stepSeconds h (in seconds, &gt;0)
      */
+    @Override
     public void beforeStep(float stepSeconds) {
         if (particle == null || particle.hasLanded() || blewUp) {
             return;
@@ -311,30 +325,33 @@ public final class ComparisonLane {
 
     /**
      * Note the readouts once the world has stepped: the lane, its exact path and the followed
-     * sphere are then at the same time, the one the HUD's particle lines show. Call from the
-     * demo's {@code afterStep}. Reads only; allocates nothing.
+     * sphere are then at the same time, the one the HUD's particle lines show. Reads only;
+     * allocates nothing.
+     *
+     * @param stepSeconds h of the step just taken (in seconds, &gt;0)
      */
-    public void afterStep() {
+    @Override
+    public void afterStep(float stepSeconds) {
         if (particle == null || particle.hasLanded() || blewUp || needsStart) {
             return;
         }
         noteErrors();
     }
 
-    /**
-     * Start the lane again from its launch. Call from the demo's {@code onRestart()}.
-     */
-    public void restart() {
+    /** Start the lane again from its launch, at the demo's reset. */
+    @Override
+    public void onRestart() {
         needsStart = true;
         blewUp = false;
         hasErrors = false;
     }
 
     /**
-     * Show the lane's sphere, or hide it while the lane is off. Call from the demo's
-     * {@code afterFrame()}. Allocates nothing.
+     * Show the lane's sphere, or hide it while the lane is off, once a frame. Allocates
+     * nothing.
      */
-    public void updateView() {
+    @Override
+    public void afterFrame() {
         if (particle == null) {
             return;
         }
@@ -355,7 +372,8 @@ public final class ComparisonLane {
      *
      * @param text where to append (not null, modified)
      */
-    public void appendHudLines(StringBuilder text) {
+    @Override
+    public void writeHudLines(StringBuilder text) {
         if (particle == null || kind == Kind.OFF) {
             return;
         }

@@ -57,6 +57,9 @@ import particlelab.lecture.DragDemo;
  * the slide is about, from the demo's own numbers.</li>
  * <li>{@link #afterStep(float)} and {@link #onRestart()}: react to each step, and to a
  * reset.</li>
+ * <li>{@link #addPart(DemoPart)} (in the constructor): a piece with hooks of its own, such as
+ * a {@link ComparisonLane}; the demo calls the part's hooks after its own, so it forwards
+ * none of them.</li>
  * <li>Collisions: add a rule to {@link #getWorld()} ({@link World#addRule}, e.g. a
  * {@code SurfaceRule} for the ground with an {@code ImpulseResponse}) and a
  * {@code ContactListener} for the prologue and epilogue.</li>
@@ -121,6 +124,8 @@ public abstract class DemoState extends BaseAppState {
     private final SimulationClock.Stepper stepper = this::stepWorld;
     /** Simulations beside the world (a second world, a packed batch), stepped after it. */
     private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
+    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
+    private final List<DemoPart> parts = new ArrayList<>();
     /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
     private final FrameTimes physicsTimes = new FrameTimes();
     // ------------------------------------ the state ring: step back, replay, interpolation --
@@ -186,6 +191,9 @@ public abstract class DemoState extends BaseAppState {
         public void beforeStep(World stepping, float stepSeconds) {
             contactPause.beforeStep();
             DemoState.this.beforeStep(stepSeconds);
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).beforeStep(stepSeconds);
+            }
             observeParticles(stepSeconds);
         }
 
@@ -554,6 +562,32 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Add a part with hooks of its own ({@link DemoPart}, e.g. a {@link ComparisonLane}):
+     * from now on the demo calls each of the part's hooks right after its own hook of the
+     * same name, so the demo forwards none of them. Call from the demo's constructor or a
+     * field initialiser, before the parameters are declared.
+     *
+     * @param <P> the part's type
+     * @param part the part, not added yet (not null; its {@link DemoPart#attach} is called)
+     * @return part
+     */
+    protected <P extends DemoPart> P addPart(P part) {
+        if (part == null) {
+            throw new IllegalArgumentException("demo part must not be null");
+        }
+        if (parametersDeclared || sceneCreated || creatingScene) {
+            throw new IllegalStateException("add parts in the demo's constructor, before its"
+                    + " parameters and scene are declared");
+        }
+        if (parts.contains(part)) {
+            throw new IllegalArgumentException("demo part " + part + " was added already");
+        }
+        parts.add(part);
+        part.attach(this);
+        return part;
+    }
+
+    /**
      * Return the blend the views draw with this frame: {@code α = leftover / h} between the
      * last two physics states, or 1 (the physics state) with interpolation off, in raw tpf,
      * paused or while replaying. For a demo that draws bodies of its own
@@ -817,6 +851,9 @@ public abstract class DemoState extends BaseAppState {
             parametersDeclared = true;
             parameterControls.declareShared(clock);
             declareParameters();
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).declareParameters(parameterControls.getParameters());
+            }
         }
         return parameterControls.getParameters();
     }
@@ -1083,6 +1120,9 @@ public abstract class DemoState extends BaseAppState {
         warnings.clear();
         contactPause.restart();
         onRestart();
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).onRestart();
+        }
         if (!drags.isDragging()) {
             // During a drag the camera holds still, so the grip stays under the mouse.
             frameLaunches();
@@ -1166,6 +1206,9 @@ public abstract class DemoState extends BaseAppState {
         // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
         replay.updateFrameBlend(isSceneOver());
         afterFrame();
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).afterFrame();
+        }
         world.getImpacts().clear();
         scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
         scene.updateViews();
@@ -1223,7 +1266,7 @@ public abstract class DemoState extends BaseAppState {
     public StringBuilder formatHud(StringBuilder storeResult) {
         ensureScene();
         hudWriter.write(storeResult, isSceneOver());
-        writeHudLines(storeResult);
+        writeOwnHudLines(storeResult);
         if (note != null) {
             note.append(this, storeResult);
         }
@@ -1379,6 +1422,19 @@ public abstract class DemoState extends BaseAppState {
     /** @return the demo's replay: the ring, the step shown, the blend (for this package) */
     Replay getReplay() {
         return replay;
+    }
+
+    /**
+     * Append the lines the demo writes itself, below the lines every demo shows: its own
+     * ({@link #writeHudLines}), then its parts', in the order added.
+     *
+     * @param text where to append (not null, modified)
+     */
+    void writeOwnHudLines(StringBuilder text) {
+        writeHudLines(text);
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).writeHudLines(text);
+        }
     }
 
     // ------------------------------------------------------------- framework overrides ----
@@ -1775,6 +1831,9 @@ public abstract class DemoState extends BaseAppState {
         }
         ghosts.afterStep(stepSeconds);
         afterStep(stepSeconds);
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).afterStep(stepSeconds);
+        }
         warnings.endStep();
     }
 
@@ -1822,6 +1881,9 @@ public abstract class DemoState extends BaseAppState {
         getParameters().start();
         declareSharedKeys();
         declareKeys();
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).declareKeys();
+        }
         declareDraggables();
         keys.setDraggables(drags.getDraggables());
     }

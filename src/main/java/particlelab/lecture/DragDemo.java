@@ -70,8 +70,8 @@ public final class DragDemo extends DemoState {
     /** The linear-drag sphere's gravity, which the lane's slide code reads too. */
     private final Gravity linearGravity = new Gravity();
     /** The comparison lane beside the linear-drag sphere (the report's closed-form case). */
-    private final ComparisonLane lane = new ComparisonLane(
-            () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS);
+    private final ComparisonLane lane = addPart(new ComparisonLane(
+            () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS));
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -142,7 +142,7 @@ public final class DragDemo extends DemoState {
                 new ColorRGBA(1f, 0.4f, 0.8f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag, slideDrag)));
         quadraticSphere.stopAtGround();
-        lane.install(this, launch, linearSphere);
+        lane.follow(launch, linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }
@@ -170,32 +170,6 @@ public final class DragDemo extends DemoState {
                         }
                     }
                 }));
-        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
-    }
-
-    @Override
-    protected void declareKeys() {
-        lane.bindKey();
-    }
-
-    @Override
-    protected void beforeStep(float stepSeconds) {
-        lane.beforeStep(stepSeconds);
-    }
-
-    @Override
-    protected void afterStep(float stepSeconds) {
-        lane.afterStep();
-    }
-
-    @Override
-    protected void onRestart() {
-        lane.restart();
-    }
-
-    @Override
-    protected void afterFrame() {
-        lane.updateView();
     }
 
     @Override
@@ -232,7 +206,6 @@ public final class DragDemo extends DemoState {
         TextFormat.appendFixed(text, physical / g, 3).append(" s), slide (mg/c)^(1/3) ");
         TextFormat.appendFixed(text, slide, 2).append(" (");
         TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
-        lane.appendHudLines(text);
     }
 
     /** Put c into the chosen law's force and 0 into the other. */

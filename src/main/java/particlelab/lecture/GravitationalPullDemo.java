@@ -50,8 +50,8 @@ public final class GravitationalPullDemo extends DemoState {
     private final Vector3f gravityNow = new Vector3f();
     private final Gravity gravity = new Gravity();
     /** The comparison lane beside the ball: off, the slide's code, a report stepper. */
-    private final ComparisonLane lane = new ComparisonLane(() -> SlideCode.pull(gravity),
-            SPHERE_RADIUS);
+    private final ComparisonLane lane = addPart(new ComparisonLane(
+            () -> SlideCode.pull(gravity), SPHERE_RADIUS));
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -73,7 +73,7 @@ public final class GravitationalPullDemo extends DemoState {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
-        lane.install(this, launch, ball);
+        lane.follow(launch, ball);
         setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }
@@ -85,37 +85,10 @@ public final class GravitationalPullDemo extends DemoState {
         declareParameter(launch.angleParameter());
         declareParameter(launch.massParameter(MASS_KG));
         declareParameter(launch.gravityParameter(0f));
-        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
-    }
-
-    @Override
-    protected void declareKeys() {
-        lane.bindKey();
-    }
-
-    @Override
-    protected void writeHudLines(StringBuilder text) {
-        lane.appendHudLines(text);
-    }
-
-    @Override
-    protected void beforeStep(float stepSeconds) {
-        lane.beforeStep(stepSeconds);
-    }
-
-    @Override
-    protected void onRestart() {
-        lane.restart();
-    }
-
-    @Override
-    protected void afterFrame() {
-        lane.updateView();
     }
 
     @Override
     protected void afterStep(float stepSeconds) {
-        lane.afterStep();
         // No gravity, no landing: start over past the view's edge, as uniform motion does.
         Vector3f position = ball.getParticle().position;
         if (gravity.copyAcceleration(gravityNow).y == 0f

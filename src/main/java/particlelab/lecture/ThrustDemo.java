@@ -14,7 +14,6 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Thrust;
-import particlelab.view.TextFormat;
 
 /**
  * Demo 4, thrust: two spheres launched together with {@code V0 = (10, 10, 0)} m/s: pull + drag
@@ -53,8 +52,8 @@ public final class ThrustDemo extends DemoState {
     /** The thruster's gravity, which the lane's slide code reads too. */
     private final Gravity thrusterGravity = new Gravity();
     /** The comparison lane beside the thruster. */
-    private final ComparisonLane lane = new ComparisonLane(
-            () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS);
+    private final ComparisonLane lane = addPart(new ComparisonLane(
+            () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS));
 
     /** Create the demo. */
     public ThrustDemo() {
@@ -79,7 +78,7 @@ public final class ThrustDemo extends DemoState {
                 new ColorRGBA(1f, 0.75f, 0.2f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust)));
         thruster.stopAtGround();
-        lane.install(this, launch, thruster);
+        lane.follow(launch, thruster);
         setView(-1f, 14f, 4.5f, 0.5f, 4, SPHERE_RADIUS);
         showExactGhosts();
     }
@@ -94,37 +93,6 @@ public final class ThrustDemo extends DemoState {
                 }));
         declareParameter(new DemoParameter("k", "thrust", "N", 0f, MAX_K, 0.25f,
                 THRUST_K, 2, DemoParameter.Applies.LIVE, thrust::setMagnitude));
-        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
-    }
-
-    @Override
-    protected void declareKeys() {
-        lane.bindKey();
-    }
-
-    @Override
-    protected void writeHudLines(StringBuilder text) {
-        lane.appendHudLines(text);
-    }
-
-    @Override
-    protected void beforeStep(float stepSeconds) {
-        lane.beforeStep(stepSeconds);
-    }
-
-    @Override
-    protected void afterStep(float stepSeconds) {
-        lane.afterStep();
-    }
-
-    @Override
-    protected void onRestart() {
-        lane.restart();
-    }
-
-    @Override
-    protected void afterFrame() {
-        lane.updateView();
     }
 
     @Override

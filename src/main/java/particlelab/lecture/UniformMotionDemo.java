@@ -42,7 +42,8 @@ public final class UniformMotionDemo extends DemoState {
     /** Scratch: the launch velocity as printed (m/s). */
     private final Vector3f shownVelocity = new Vector3f();
     /** The comparison lane beside the sphere: off, the slide's code, a report stepper. */
-    private final ComparisonLane lane = new ComparisonLane(SlideCode::uniform, SPHERE_RADIUS);
+    private final ComparisonLane lane = addPart(new ComparisonLane(SlideCode::uniform,
+            SPHERE_RADIUS));
     private DemoParticle sphere;
 
     /** Create the demo. */
@@ -64,7 +65,7 @@ public final class UniformMotionDemo extends DemoState {
         // An integrator with no forces: the lecture's "no force, straight line".
         sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
                 new ParticleIntegrator()));
-        lane.install(this, launch, sphere);
+        lane.follow(launch, sphere);
         // Tall enough for the default launch: y = 1 + 1.2·30/4 = 10 m at the right edge.
         setView(-2f, 32f, 10.5f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
@@ -75,27 +76,6 @@ public final class UniformMotionDemo extends DemoState {
         // No force acts, so neither mass nor g changes anything: only the launch.
         declareParameter(launch.speedParameter(MAX_SPEED, SPEED_STEP));
         declareParameter(launch.angleParameter());
-        declareParameter(lane.parameter(ComparisonLane.Kind.OFF));
-    }
-
-    @Override
-    protected void declareKeys() {
-        lane.bindKey();
-    }
-
-    @Override
-    protected void beforeStep(float stepSeconds) {
-        lane.beforeStep(stepSeconds);
-    }
-
-    @Override
-    protected void onRestart() {
-        lane.restart();
-    }
-
-    @Override
-    protected void afterFrame() {
-        lane.updateView();
     }
 
     @Override
@@ -107,7 +87,6 @@ public final class UniformMotionDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
-        lane.afterStep();
         // Leaving the screen: start over so the demo loops in front of the class. Called
         // from a step, restart() waits until the frame's steps are over, so t starts again
         // from 0 together with P.
@@ -124,11 +103,6 @@ public final class UniformMotionDemo extends DemoState {
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
         DemoParameter.appendShort(text, shownVelocity.y, 2)
                 .append(", 0) m/s stays,  and P = P0 + V·t\n");
-    }
-
-    @Override
-    protected void writeHudLines(StringBuilder text) {
-        lane.appendHudLines(text);
     }
 
     /** The slide: no force, so V stays; where the sphere is now. */

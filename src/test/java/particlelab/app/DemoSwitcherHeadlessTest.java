@@ -8,9 +8,8 @@ import com.jme3.input.KeyInput;
 import com.jme3.input.event.KeyInputEvent;
 import java.lang.reflect.Field;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoState;
 
 /**
@@ -22,19 +21,9 @@ import particlelab.demo.DemoState;
  */
 class DemoSwitcherHeadlessTest {
 
-    private static HeadlessHarness harness;
-    private static List<DemoState> demos;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        demos = DemoCatalog.createAll();
-        harness = HeadlessHarness.start(demos);
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final List<DemoState> demos = DemoCatalog.createAll();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> demos);
 
     @Test
     void digitsTabAndShiftTabReachEveryDemoInLectureOrder() throws Exception {

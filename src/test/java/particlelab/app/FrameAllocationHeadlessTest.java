@@ -9,9 +9,9 @@ import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.physics.SimulationClock;
@@ -63,15 +63,14 @@ class FrameAllocationHeadlessTest {
 
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-    private static List<DemoState> demos;
-    private static HeadlessHarness harness;
+    private static final List<DemoState> demos = DemoCatalog.createAll();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> demos);
     /** True while the demos are measured in presentation mode (F8, --present). */
     private static boolean presenting;
 
     @BeforeAll
     static void startApp() throws Exception {
-        demos = DemoCatalog.createAll();
-        harness = HeadlessHarness.start(demos);
         // Every demo runs once before any is measured: the code they share (the world, views,
         // HUD, jME's scene graph) is compiled by then, so the first demo measured does not
         // catch the JIT recompiling it for the next demo's paths.
@@ -84,11 +83,6 @@ class FrameAllocationHeadlessTest {
             }
             harness.call(() -> end(demos.get(index)));
         }
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
     }
 
     @Test

@@ -9,14 +9,12 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.Camera;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.lecture.DragDemo;
-import particlelab.physics.SimulationClock;
 import particlelab.view.ScreenRect;
 
 /**
@@ -35,25 +33,15 @@ class PickHeadlessTest {
      * through the camera, a thousandth of a pixel.
      */
     private static final float PIXEL_TOLERANCE = 0.01f;
-    private static DragDemo drag;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        drag = new DragDemo();
-        harness = HeadlessHarness.start(List.of(drag));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final DragDemo drag = new DragDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(drag));
 
     @Test
     void aDragThroughTheWindowMovesTheLaunchUnderTheMouse()
             throws Exception {
         float[] result = harness.call(() -> {
-            fly(40);
+            HeadlessHarness.fly(drag, 40, H);
             Camera camera = harness.app().getCamera();
             DemoParticle first = drag.getParticles().get(0);
             Vector3f screen = camera.getScreenCoordinates(first.copyLaunchPosition(
@@ -134,15 +122,6 @@ class PickHeadlessTest {
         assertTrue(texts[0].contains("right drag / wheel  -  turn / zoom the camera"),
                 texts[0]);
         assertTrue(texts[1].contains("right drag  camera"), texts[1]);
-    }
-
-    /** Run frames at the fixed h, the clock running. */
-    private static void fly(int frames) {
-        drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-        drag.getClock().setPaused(false);
-        for (int i = 0; i < frames; ++i) {
-            drag.update(H);
-        }
     }
 
     private static KeyBinding binding(DemoState demo, int keyCode) {

@@ -10,9 +10,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.lecture.WindDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
@@ -38,17 +37,8 @@ import particlelab.world.World;
 class SoundHeadlessTest {
 
     private static final float H = 1f / 60f;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(List.of(new WindDemo()));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(new WindDemo()));
 
     @Test
     void noAudioRendererMeansTheSilentPlayerAndNothingFails() throws Exception {

@@ -5,9 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.input.KeyInput;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.view.HudLayout;
@@ -20,17 +19,8 @@ import particlelab.view.HudLayout;
  */
 class WindowControlsHeadlessTest {
 
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void aReshapeAndANewHudFactorLayTheShownDemoOutOnTheNextFrame() throws Exception {
@@ -81,7 +71,7 @@ class WindowControlsHeadlessTest {
             // at the factor in use, not at 1 until the window controls notice a frame later.
             for (int press = 0; press < 2; ++press) {
                 assertTrue(harness.call(() -> {
-                    pressF2(demo);
+                    HeadlessHarness.press(demo, "F2");
                     return demo.isLaidOutFor(width, height, 1.5f);
                 }), "press " + press);
             }
@@ -92,16 +82,6 @@ class WindowControlsHeadlessTest {
             });
             harness.awaitFrames(2);
         }
-    }
-
-    private static void pressF2(DemoState demo) {
-        for (KeyBinding binding : demo.getBindings()) {
-            if ("F2".equals(binding.getKeyLabel())) {
-                binding.press(0);
-                return;
-            }
-        }
-        throw new IllegalStateException(demo.getTitle() + " has no F2");
     }
 
     @Test

@@ -5,9 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoState;
 import particlelab.view.HudLayout;
 import particlelab.view.PlaneView;
@@ -26,17 +25,8 @@ class WindowResizeHeadlessTest {
     private static final int[][] SEQUENCE = {{640, 360}, {400, 300},
         {HudLayout.MIN_WIDTH, HudLayout.MIN_HEIGHT}, {1280, 720}};
     private static final int FRAMES_BETWEEN = 3;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void everyDemoSurvivesAResizeDownToTheSmallestWindowAndComesBackAsFresh()

@@ -7,9 +7,8 @@ import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.SpinThrowDemo;
@@ -38,17 +37,9 @@ class BoxInterpolationHeadlessTest {
     private static final RotationDemo ROTATION = new RotationDemo();
     private static final SpinThrowDemo THROW = new SpinThrowDemo();
     private static final TennisRacketDemo RACKET = new TennisRacketDemo();
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(List.of(ROTATION, THROW, RACKET));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(
+            () -> List.of(ROTATION, THROW, RACKET));
 
     @Test
     void rotationBoxesAreDrawnBetweenTheirLastTwoStates() throws Exception {

@@ -222,7 +222,7 @@ class ComparisonLaneTest {
         assertTrue(lane.getFollowedErrorMetres() > 0.02,
                 "Euler error " + lane.getFollowedErrorMetres());
         StringBuilder text = new StringBuilder();
-        ((DemoState) demo).writeHudLines(text);
+        ((DemoState) demo).writeOwnHudLines(text);
         String hud = text.toString();
         assertTrue(hud.contains("Lane RK4 (L)"), hud);
         assertTrue(hud.contains("at landing"), hud);
@@ -235,7 +235,7 @@ class ComparisonLaneTest {
         demo.advancePhysics(H);
         assertEquals(ComparisonLane.Kind.OFF, demo.getLane().getKind());
         StringBuilder text = new StringBuilder();
-        ((DemoState) demo).writeHudLines(text);
+        ((DemoState) demo).writeOwnHudLines(text);
         assertEquals("", text.toString());
         assertFalse(demo.formatHud(new StringBuilder()).toString().contains("comparison"));
         KeyBinding key = null;

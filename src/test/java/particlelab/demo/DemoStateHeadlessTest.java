@@ -12,9 +12,8 @@ import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
@@ -32,19 +31,13 @@ import particlelab.view.TextFormat;
 class DemoStateHeadlessTest {
 
     private static final float H = 1f / 60f;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
+    /** The catalogue and a demo too stiff for its step. */
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
         List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
         demos.add(new StiffDemo());
-        harness = HeadlessHarness.start(demos);
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+        return demos;
+    });
 
     @Test
     void pauseFreezesTheSimulationAndSingleStepTakesOneStep() throws Exception {

@@ -7,14 +7,12 @@ import com.jme3.math.Vector3f;
 import com.jme3.renderer.Camera;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.accuracy.ExactPath;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.physics.Gravity;
-import particlelab.physics.SimulationClock;
 import particlelab.view.ScreenRect;
 
 /**
@@ -26,25 +24,15 @@ import particlelab.view.ScreenRect;
 class DragHeadlessTest {
 
     private static final float H = 1f / 60f;
-    private static DragDemo drag;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        drag = new DragDemo();
-        harness = HeadlessHarness.start(List.of(drag));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final DragDemo drag = new DragDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(drag));
 
     @Test
     void theGhostsAndKeptShotsFollowTheDraggedLaunch() throws Exception {
         double[] result = harness.call(() -> {
             drag.restart();
-            fly(40);
+            HeadlessHarness.fly(drag, 40, H);
             int kept = ((DemoState) drag).getParameterControls().getKeptShots().countKept();
             Camera camera = harness.app().getCamera();
             DemoParticle first = drag.getParticles().get(0);
@@ -65,7 +53,7 @@ class DragHeadlessTest {
             drags.release();
             Vector3f v0 = first.copyLaunchVelocity(new Vector3f());
             Vector3f p0 = first.copyLaunchPosition(new Vector3f());
-            fly(30);
+            HeadlessHarness.fly(drag, 30, H);
             ExactPath ghost = ((DemoState) drag).getExactGhosts().getPath(0);
             ExactPath quadraticGhost = ((DemoState) drag).getExactGhosts().getPath(2);
             return new double[] {kept, keptAfterDrag, v0.x, v0.y, p0.x, p0.y,
@@ -95,7 +83,7 @@ class DragHeadlessTest {
     void aClickOpensTheInspectorWhichCoversNoOtherText() throws Exception {
         List<String> problems = harness.call(() -> {
             drag.restart();
-            fly(20);
+            HeadlessHarness.fly(drag, 20, H);
             drag.getClock().setPaused(true);
             Camera camera = harness.app().getCamera();
             DemoParticle quadratic = drag.getParticles().get(2);
@@ -136,14 +124,5 @@ class DragHeadlessTest {
             return found;
         });
         assertEquals(List.of(), problems);
-    }
-
-    /** Run frames at the fixed h, the clock running. */
-    private static void fly(int frames) {
-        drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-        drag.getClock().setPaused(false);
-        for (int i = 0; i < frames; ++i) {
-            drag.update(H);
-        }
     }
 }

@@ -10,9 +10,8 @@ import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.accuracy.ClosedForms;
 import particlelab.accuracy.ExactPath;
 import particlelab.accuracy.ForceModel;
@@ -44,23 +43,12 @@ class ExactGhostsHeadlessTest {
     private static final double G = Gravity.STANDARD_G;
     /** Float round-off: 2^-23. */
     private static final double EPS = 0x1p-23;
-    private static GravitationalPullDemo pull;
-    private static DragDemo drag;
-    private static BouncingGhostDemo bounce;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        pull = new GravitationalPullDemo();
-        drag = new DragDemo();
-        bounce = new BouncingGhostDemo();
-        harness = HeadlessHarness.start(List.of(pull, drag, bounce));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final GravitationalPullDemo pull = new GravitationalPullDemo();
+    private static final DragDemo drag = new DragDemo();
+    private static final BouncingGhostDemo bounce = new BouncingGhostDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(
+            () -> List.of(pull, drag, bounce));
 
     @Test
     void liveErrorEqualsTheClosedFormDifference() throws Exception {

@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.GravitationalPullDemo;
@@ -24,17 +23,9 @@ class LaunchFramingHeadlessTest {
 
     private static final float H = 1f / 60f;
     private static final Vector3f LECTURE_V0 = new Vector3f(10f, 10f, 0f);
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(List.of(new GravitationalPullDemo(), new DragDemo()));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(
+            () -> List.of(new GravitationalPullDemo(), new DragDemo()));
 
     @Test
     void aHigherLaunchZoomsOutAndItsWholeFlightStaysInTheScene() throws Exception {

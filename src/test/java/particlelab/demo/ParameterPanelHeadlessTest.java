@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.Allocations;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
@@ -32,17 +31,8 @@ import particlelab.view.ParameterPanel;
 class ParameterPanelHeadlessTest {
 
     private static final float H = 1f / 60f;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     private static List<DemoState> demos() {
         return harness.app().getSwitcher().getDemos();
@@ -193,16 +183,6 @@ class ParameterPanelHeadlessTest {
         assertEquals(20f, (float) seen[3], 1e-5f);
     }
 
-    private static void pressF2(DemoState demo) {
-        for (KeyBinding binding : demo.getBindings()) {
-            if ("F2".equals(binding.getKeyLabel())) {
-                binding.press(0);
-                return;
-            }
-        }
-        throw new IllegalStateException(demo.getTitle() + " has no F2");
-    }
-
     @Test
     void nextDemoButtonChoosesTheNextDemo() throws Exception {
         DemoState first = harness.call(() -> harness.app().getSwitcher().getSelected());
@@ -272,7 +252,7 @@ class ParameterPanelHeadlessTest {
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.getClock().setPaused(false);
             ParameterControls controls = ((DemoState) drag).getParameterControls();
-            pressF2(drag);
+            HeadlessHarness.press(drag, "F2");
             boolean shown = controls.isPanelVisible()
                     && !drag.getHud().getLayout().getSidePanel().isEmpty();
             drag.restart();
@@ -292,7 +272,7 @@ class ParameterPanelHeadlessTest {
             });
             controls.getKeptShots().clear();
             drag.restart();
-            pressF2(drag);
+            HeadlessHarness.press(drag, "F2");
             return new long[] {frames, keep, shown ? 1L : 0L};
         });
         assertEquals(1L, bytes[2], "F2 shows the panel in the side slot");

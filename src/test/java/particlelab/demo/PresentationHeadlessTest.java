@@ -9,9 +9,8 @@ import java.util.List;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
@@ -46,17 +45,8 @@ class PresentationHeadlessTest {
      * eye in the screenshots (docs/lecturing.md).
      */
     private static final Set<String> DERIVED_READOUTS = Set.of("Bounce", "Collisions");
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void theSceneGetsThreeQuartersAndTheTextTwiceTheHudsBodyAtProjectorSizes()
@@ -232,24 +222,7 @@ class PresentationHeadlessTest {
 
     /** No two texts overlap, and all are inside the window. */
     private static List<String> check(DemoState demo, int width, int height, String when) {
-        List<String> problems = new ArrayList<>();
-        List<ScreenRect> rects = demo.copyTextRects(new ArrayList<>());
-        ScreenRect window = new ScreenRect(0f, 0f, width, height);
-        String where = demo.getTitle() + " " + width + "x" + height + " " + when + ": ";
-        for (int i = 0; i < rects.size(); ++i) {
-            if (rects.get(i).isEmpty()) {
-                continue;
-            }
-            if (!window.contains(rects.get(i))) {
-                problems.add(where + "text " + i + " " + rects.get(i) + " leaves the window");
-            }
-            for (int j = 0; j < i; ++j) {
-                if (rects.get(i).intersects(rects.get(j))) {
-                    problems.add(where + "text " + i + " " + rects.get(i) + " covers text " + j
-                            + " " + rects.get(j));
-                }
-            }
-        }
-        return problems;
+        return ScreenChecks.textsApartInside(demo.copyTextRects(new ArrayList<>()), width,
+                height, demo.getTitle() + " " + width + "x" + height + " " + when);
     }
 }

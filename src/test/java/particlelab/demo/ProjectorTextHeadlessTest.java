@@ -4,9 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.view.HudLayout;
@@ -28,17 +27,8 @@ class ProjectorTextHeadlessTest {
     private static final float MIN_HELP_PIXELS = 16f;
     /** The least parameter panel text height at 1280x720 (in pixels). */
     private static final float MIN_PANEL_PIXELS = 14f;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void aLargerHudFactorGivesLargerBodyTextInEveryDemo() throws Exception {
@@ -102,27 +92,17 @@ class ProjectorTextHeadlessTest {
             problems.addAll(harness.call(() -> {
                 List<String> found = new ArrayList<>();
                 demo.layOut(1280, 720);
-                pressF2(demo);
+                HeadlessHarness.press(demo, "F2");
                 demo.update(1f / 60f);
                 ParameterPanel panel = demo.getParameterControls().getPanel();
                 if (!(panel.getTextSize() >= MIN_PANEL_PIXELS)) {
                     found.add(demo.getTitle() + ": panel text " + panel.getTextSize() + " px");
                 }
-                pressF2(demo);
+                HeadlessHarness.press(demo, "F2");
                 demo.update(1f / 60f);
                 return found;
             }));
         }
         assertEquals(List.of(), problems);
-    }
-
-    private static void pressF2(DemoState demo) {
-        for (KeyBinding binding : demo.getBindings()) {
-            if ("F2".equals(binding.getKeyLabel())) {
-                binding.press(0);
-                return;
-            }
-        }
-        throw new IllegalStateException(demo.getTitle() + " has no F2");
     }
 }

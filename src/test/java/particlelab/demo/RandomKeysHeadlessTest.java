@@ -5,9 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 
@@ -29,20 +29,15 @@ class RandomKeysHeadlessTest {
     private static final long SEED = 17L;
     private static final int WIDTH = 800;
     private static final int HEIGHT = 450;
-    private static HeadlessHarness harness;
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @BeforeAll
     static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
         harness.call(() -> {
             harness.app().getCamera().resize(WIDTH, HEIGHT, true);
             return true;
         });
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
     }
 
     @Test

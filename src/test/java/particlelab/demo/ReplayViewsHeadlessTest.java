@@ -5,9 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.GravitationalPullDemo;
@@ -36,17 +35,8 @@ class ReplayViewsHeadlessTest {
     private static final List<DemoState> GHOST_DEMOS = List.of(new UniformMotionDemo(),
             new GravitationalPullDemo(), new DragDemo(), new ThrustDemo(), new WindDemo(),
             new HelloAimingDemo());
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(GHOST_DEMOS);
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> GHOST_DEMOS);
 
     @Test
     void ghostLinesAndTheGraphEndAreThoseOfTheStepShown() throws Exception {

@@ -4,9 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
@@ -28,17 +27,8 @@ class SceneShareHeadlessTest {
     private static final int SAMPLE_EVERY = 20;
     /** A pixel's rounding between the HUD's band and the scene's edge. */
     private static final float PIXEL = 1f;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void theSceneFillsMostOfTheWindowInEveryDemoAtProjectorSizes() throws Exception {

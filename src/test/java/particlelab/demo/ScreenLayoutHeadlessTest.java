@@ -10,9 +10,8 @@ import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.HelloAimingDemo;
@@ -37,17 +36,8 @@ class ScreenLayoutHeadlessTest {
     /** The demos run this long, sampled every few frames: launch, flight and landing. */
     private static final int FRAMES = 480;
     private static final int SAMPLE_EVERY = 6;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void noTextCoversAnotherOrLeavesTheWindowAtAnySize() throws Exception {
@@ -183,25 +173,8 @@ class ScreenLayoutHeadlessTest {
 
     /** No two texts overlap, and all are inside the window. */
     private static List<String> check(DemoState demo, int width, int height, String when) {
-        List<String> problems = new ArrayList<>();
-        List<ScreenRect> rects = demo.copyTextRects(new ArrayList<>());
-        ScreenRect window = new ScreenRect(0f, 0f, width, height);
-        String where = demo.getTitle() + " " + width + "x" + height + " " + when + ": ";
-        for (int i = 0; i < rects.size(); ++i) {
-            if (rects.get(i).isEmpty()) {
-                continue;
-            }
-            if (!window.contains(rects.get(i))) {
-                problems.add(where + "text " + i + " " + rects.get(i) + " leaves the window");
-            }
-            for (int j = 0; j < i; ++j) {
-                if (rects.get(i).intersects(rects.get(j))) {
-                    problems.add(where + "text " + i + " " + rects.get(i) + " covers text " + j
-                            + " " + rects.get(j));
-                }
-            }
-        }
-        return problems;
+        return ScreenChecks.textsApartInside(demo.copyTextRects(new ArrayList<>()), width,
+                height, demo.getTitle() + " " + width + "x" + height + " " + when);
     }
 
     /** A particle's label covers no other sphere, no point of any trail and no post. */

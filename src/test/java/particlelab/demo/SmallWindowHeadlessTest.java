@@ -4,9 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
@@ -42,17 +41,8 @@ class SmallWindowHeadlessTest {
     /** A launch and its flight, sampled every few frames. */
     private static final int FRAMES = 120;
     private static final int SAMPLE_EVERY = 20;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        harness = HeadlessHarness.start(DemoCatalog.createAll());
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
     @Test
     void everyDemoKeepsItsViewsInsideTheWindowAtEverySizeFromTheSmallestUp() throws Exception {
@@ -115,21 +105,7 @@ class SmallWindowHeadlessTest {
             rects.add(demo.getHud().getLayout().getSidePanel());
             rects.add(demo.getHud().getLayout().getGraph());
         }
-        ScreenRect window = new ScreenRect(0f, 0f, width, height);
-        for (int i = 0; i < rects.size(); ++i) {
-            if (rects.get(i).isEmpty()) {
-                continue;
-            }
-            if (!window.contains(rects.get(i))) {
-                problems.add(where + ": text " + i + " " + rects.get(i) + " leaves the window");
-            }
-            for (int j = 0; j < i; ++j) {
-                if (rects.get(i).intersects(rects.get(j))) {
-                    problems.add(where + ": text " + i + " " + rects.get(i) + " covers text "
-                            + j + " " + rects.get(j));
-                }
-            }
-        }
+        problems.addAll(ScreenChecks.textsApartInside(rects, width, height, where));
         return problems;
     }
 

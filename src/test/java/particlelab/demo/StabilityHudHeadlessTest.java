@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.physics.Gravity;
@@ -27,21 +26,10 @@ class StabilityHudHeadlessTest {
     /** The sprung ball: k = 16 N/m on 1 kg, so omega = 4 /s and the limit 2/omega = 0.5 s. */
     private static final float SPRING_K = 16f;
 
-    private static HeadlessHarness harness;
-    private static DragDemo drag;
-    private static SprungDemo sprung;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        drag = new DragDemo();
-        sprung = new SprungDemo();
-        harness = HeadlessHarness.start(List.of(drag, sprung));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final DragDemo drag = new DragDemo();
+    private static final SprungDemo sprung = new SprungDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(drag, sprung));
 
     @Test
     void dragDemoLineNamesTheSphereWithTheSmallestLimit() throws Exception {

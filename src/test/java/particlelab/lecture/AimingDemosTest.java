@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.Allocations;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.AimStrategy;
@@ -33,23 +32,12 @@ class AimingDemosTest {
     private static final float G = Gravity.STANDARD_G;
     /** Longer than any round of visible shots (40 shots of at most 6 s each). */
     private static final int MAX_FRAMES = 40 * 6 * 60;
-    private static IterativeAimingDemo iterate;
-    private static FastBulletsDemo cheat;
-    private static AnyHeightDemo height;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        iterate = new IterativeAimingDemo();
-        cheat = new FastBulletsDemo();
-        height = new AnyHeightDemo();
-        harness = HeadlessHarness.start(List.of(iterate, cheat, height));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final IterativeAimingDemo iterate = new IterativeAimingDemo();
+    private static final FastBulletsDemo cheat = new FastBulletsDemo();
+    private static final AnyHeightDemo height = new AnyHeightDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(
+            () -> List.of(iterate, cheat, height));
 
     // ----------------------------------------------------------------- iterative aiming ----
 

@@ -5,9 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.Gravity;
 import particlelab.view.LiveGraph;
@@ -21,19 +20,9 @@ class BounceDemoTest {
 
     private static final float H = 1f / 60f;
     private static final double G = Gravity.STANDARD_G;
-    private static BounceDemo bounce;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        bounce = new BounceDemo();
-        harness = HeadlessHarness.start(List.of(bounce));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final BounceDemo bounce = new BounceDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(bounce));
 
     @Test
     void apexesFollowEToThe2nTimesH0WithinTheStepBound() throws Exception {

@@ -4,9 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
 import particlelab.view.LiveGraph;
@@ -23,19 +22,9 @@ class BounceReplayHeadlessTest {
     /** Two seconds: the drop and the first bounces. */
     private static final int STEPS = 120;
     private static final int BACK = 90;
-    private static BounceDemo bounce;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        bounce = new BounceDemo();
-        harness = HeadlessHarness.start(List.of(bounce));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final BounceDemo bounce = new BounceDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(bounce));
 
     @Test
     void theGraphEndsAtTheStepShown() throws Exception {

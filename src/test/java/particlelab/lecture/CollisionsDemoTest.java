@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
 import particlelab.demo.DemoParticle;
@@ -19,19 +18,9 @@ import particlelab.view.ScreenRect;
 class CollisionsDemoTest {
 
     private static final float H = 1f / 60f;
-    private static CollisionsDemo collisions;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        collisions = new CollisionsDemo();
-        harness = HeadlessHarness.start(List.of(collisions));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final CollisionsDemo collisions = new CollisionsDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(collisions));
 
     private static Object[] run(CollisionsDemo.Preset preset, int eTenths, int m1, int m2,
             int frames) throws Exception {

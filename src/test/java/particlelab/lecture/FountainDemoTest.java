@@ -5,9 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
@@ -26,20 +25,12 @@ class FountainDemoTest {
     private static final Pattern SHARE_LINE = Pattern.compile("physics \\d+\\.\\d\\d ms/frame"
             + " = \\d+% of a 16\\.7 ms frame;  mesh \\d+\\.\\d\\d \\+ render \\d+\\.\\d\\d ms;"
             + "  frame \\d+\\.\\d ms \\(\\d+ fps\\)\n");
-    private static FountainDemo demo;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        demo = new FountainDemo();
+    private static final FountainDemo demo = new FountainDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
         demo.setParticleCount(PARTICLES);
-        harness = HeadlessHarness.start(List.of(demo));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+        return List.of(demo);
+    });
 
     @Test
     void theClockDrivesTheFountainsSteps() throws Exception {

@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.scene.Spatial;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.demo.DemoParticle;
 
@@ -16,19 +15,9 @@ import particlelab.demo.DemoParticle;
 class HelloAimingDemoTest {
 
     private static final float H = 1f / 60f;
-    private static HelloAimingDemo aiming;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        aiming = new HelloAimingDemo();
-        harness = HeadlessHarness.start(List.of(aiming));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final HelloAimingDemo aiming = new HelloAimingDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(aiming));
 
     @Test
     void bothAimsLandAndTheHiddenBulletOfAnAimFiredAloneIsNotDrawn() throws Exception {

@@ -6,9 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.Allocations;
 import particlelab.app.HeadlessHarness;
 import particlelab.demo.DemoState;
@@ -29,23 +28,12 @@ import particlelab.view.BoxView;
 class RigidDemosTest {
 
     private static final float H = 1f / 60f;
-    private static RotationDemo rotation;
-    private static SpinThrowDemo spinThrow;
-    private static TennisRacketDemo racket;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        rotation = new RotationDemo();
-        spinThrow = new SpinThrowDemo();
-        racket = new TennisRacketDemo();
-        harness = HeadlessHarness.start(List.of(rotation, spinThrow, racket));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final RotationDemo rotation = new RotationDemo();
+    private static final SpinThrowDemo spinThrow = new SpinThrowDemo();
+    private static final TennisRacketDemo racket = new TennisRacketDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(
+            () -> List.of(rotation, spinThrow, racket));
 
     @Test
     void plainBoxInflatesByOnePlusOmegaHSquaredPerStepAndTheCuresLagAsPredicted()

@@ -4,9 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 import particlelab.world.World;
 
@@ -14,19 +13,9 @@ import particlelab.world.World;
 class TargetsDemoTest {
 
     private static final float H = 1f / 60f;
-    private static TargetsDemo targets;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        targets = new TargetsDemo();
-        harness = HeadlessHarness.start(List.of(targets));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final TargetsDemo targets = new TargetsDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(targets));
 
     @Test
     void destroyAndSpawnCyclesLeaveNoBodyViewOrListenerBehind() throws Exception {

@@ -4,28 +4,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.HeadlessHarness;
 
 /** The Tunnelling demo attached to a headless app: its counts against the miss formula. */
 class TunnellingDemoTest {
 
     private static final float H = 1f / 60f;
-    private static TunnellingDemo tunnelling;
-    private static HeadlessHarness harness;
-
-    @BeforeAll
-    static void startApp() throws Exception {
-        tunnelling = new TunnellingDemo();
-        harness = HeadlessHarness.start(List.of(tunnelling));
-    }
-
-    @AfterAll
-    static void stopApp() {
-        harness.close();
-    }
+    private static final TunnellingDemo tunnelling = new TunnellingDemo();
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(tunnelling));
 
     @Test
     void theSweptTestNeverMissesAndTheOverlapTestMissesAtThePredictedRate() throws Exception {

@@ -1,0 +1,82 @@
+package particlelab.demo;
+
+/**
+ * A piece of a demo with hooks of its own, such as the free-flight demos'
+ * {@link ComparisonLane}: added once with {@link DemoState#addPart}, it is then called by the
+ * demo at the same moments as the demo's own hooks of the same names, so the demo does not
+ * forward them by hand. {@link DemoState} calls each hook right after the demo's own hook,
+ * the parts in the order they were added: a part's parameters come after the demo's in the
+ * panel and {@code --set}, its keys after the demo's keys, its HUD lines after the demo's
+ * lines. Every hook does nothing by default; a part overrides those it needs.
+ *
+ * <p>The step hooks, {@link #afterFrame()} and {@link #writeHudLines} run every step or
+ * frame: like the demo's, they must allocate nothing.
+ */
+public interface DemoPart {
+
+    /**
+     * Meet the demo the part was added to. Called once, by {@link DemoState#addPart}, before
+     * any other hook. The default does nothing.
+     *
+     * @param demo the demo (not null; still being constructed: keep it, call nothing on it)
+     */
+    default void attach(DemoState demo) {
+    }
+
+    /**
+     * Declare the part's parameters, after the demo's own
+     * ({@link DemoState#declareParameters()}). The default declares none.
+     *
+     * @param parameters where to declare them (not null, modified)
+     */
+    default void declareParameters(DemoParameters parameters) {
+    }
+
+    /**
+     * Declare the part's keys, after the demo's own ({@link DemoState#declareKeys()}), with
+     * the demo's {@code bindKey}. The default declares none.
+     */
+    default void declareKeys() {
+    }
+
+    /**
+     * Act at the start of a step, after the demo's {@link DemoState#beforeStep}, before
+     * anything moves. The default does nothing.
+     *
+     * @param stepSeconds h of the step about to be taken (in seconds, &gt;0)
+     */
+    default void beforeStep(float stepSeconds) {
+    }
+
+    /**
+     * Observe a step once every particle moved, after the demo's
+     * {@link DemoState#afterStep}; move nothing. The default does nothing.
+     *
+     * @param stepSeconds h of the step just taken (in seconds, &gt;0)
+     */
+    default void afterStep(float stepSeconds) {
+    }
+
+    /**
+     * React to a reset, after the demo's {@link DemoState#onRestart()}. The default does
+     * nothing.
+     */
+    default void onRestart() {
+    }
+
+    /**
+     * React to one frame once the clock's steps are over, after the demo's
+     * {@link DemoState#afterFrame()} and before the views move. The default does nothing.
+     */
+    default void afterFrame() {
+    }
+
+    /**
+     * Append the part's HUD lines, each ending in a newline, after the demo's own
+     * ({@link DemoState#writeHudLines}). The default appends none.
+     *
+     * @param text where to append (not null, modified)
+     */
+    default void writeHudLines(StringBuilder text) {
+    }
+}
