@@ -20,8 +20,9 @@ import java.nio.IntBuffer;
  *
  * <p>Positions are written as three bulk copies of a range of points straight from the
  * caller's planar array (all x, then all y, then all z, as the particles are packed): no
- * interleaving, no scratch. Colours one point at a time, only where they change, as packed
- * ints through a little-endian int view of the byte buffer, so the int
+ * interleaving, no scratch. Colours one point at a time or a run of points in bulk, only
+ * where they change, as packed ints through a little-endian int view of the byte buffer, so
+ * the int
  * {@code R | G<<8 | B<<16 | A<<24} lands as the bytes R, G, B, A whatever the machine's
  * order. The bound is set once, explicitly: jME must never compute it from the one-float
  * position buffer (it would read x, y, z of three different points as one). Nothing is
