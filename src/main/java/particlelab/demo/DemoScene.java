@@ -257,11 +257,25 @@ final class DemoScene {
      * @param color its colour (not null, not modified)
      */
     void addMarker(String label, float x, float heightMetres, ColorRGBA color) {
+        addMarker(label, x, heightMetres, color, false);
+    }
+
+    /**
+     * Add a labelled post standing on the ground, its name on its top or beside its foot.
+     *
+     * @param label the post's name (not null)
+     * @param x where it stands (in metres)
+     * @param heightMetres how tall it is (in metres, finite, &gt;0)
+     * @param color its colour (not null, not modified)
+     * @param nameAtFoot true for the name right of the post's foot, false for above its top
+     */
+    void addMarker(String label, float x, float heightMetres, ColorRGBA color,
+            boolean nameAtFoot) {
         if (!(heightMetres > 0f) || Float.isInfinite(heightMetres)) {
             throw new IllegalArgumentException(
                     "marker height (m) must be finite and > 0, but was " + heightMetres);
         }
-        markers.add(new Marker(label, x, heightMetres, color.clone()));
+        markers.add(new Marker(label, x, heightMetres, color.clone(), nameAtFoot));
     }
 
     /**
@@ -279,10 +293,16 @@ final class DemoScene {
         this.sceneNode = sceneNode;
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
+            // The post is a bar this wide, centred on its x: a name at its foot starts at its
+            // right side, a gap beyond it.
+            float postWidth = POST_RADIUS_FRACTION * sphereRadius;
             sceneNode.attachChild(ParticleView.createPost(assets, marker.label, marker.x,
-                    marker.height, POST_RADIUS_FRACTION * sphereRadius, marker.color));
-            SceneLabel name = new SceneLabel(font, marker.label, marker.color, marker.x,
-                    marker.height, SceneLabel.Anchor.ABOVE);
+                    marker.height, postWidth, marker.color));
+            SceneLabel name = marker.nameAtFoot
+                    ? new SceneLabel(font, marker.label, marker.color,
+                            marker.x + postWidth / 2f, 0f, SceneLabel.Anchor.FOOT_RIGHT)
+                    : new SceneLabel(font, marker.label, marker.color, marker.x,
+                            marker.height, SceneLabel.Anchor.ABOVE);
             fixedLabels.add(name);
             sceneNode.attachChild(name.getText());
         }
@@ -472,6 +492,20 @@ final class DemoScene {
             float ground = plane.screenY(0f);
             storeResult.add(new ScreenRect(plane.screenX(marker.x) - halfWidth, ground,
                     2f * halfWidth, plane.screenY(marker.height) - ground));
+        }
+        return storeResult;
+    }
+
+    /**
+     * Copy the screen rectangle of every post's name ({@link #addMarker}), shown or not, into
+     * a list, for tests of the layout.
+     *
+     * @param storeResult where to add them, in the posts' order (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostLabelRects(List<ScreenRect> storeResult) {
+        for (int i = 0; i < markerLabels; ++i) {
+            storeResult.add(new ScreenRect().set(fixedLabels.get(i).getRect()));
         }
         return storeResult;
     }
@@ -783,12 +817,15 @@ final class DemoScene {
         final float x;
         final float height;
         final ColorRGBA color;
+        /** True for the name right of the post's foot, false for above its top. */
+        final boolean nameAtFoot;
 
-        Marker(String label, float x, float height, ColorRGBA color) {
+        Marker(String label, float x, float height, ColorRGBA color, boolean nameAtFoot) {
             this.label = label;
             this.x = x;
             this.height = height;
             this.color = color;
+            this.nameAtFoot = nameAtFoot;
         }
     }
 }
