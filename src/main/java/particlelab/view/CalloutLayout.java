@@ -23,9 +23,13 @@ public final class CalloutLayout {
     /** At each place: beyond it, and beside the arrow's line on either side. */
     private static final int SIDES = 3;
 
+    /** The pool: what labels must not cover this frame, the first {@link #obstacleCount}. */
     private final ScreenRect[] obstacles;
+    /** How many of the pool hold an obstacle. */
     private int obstacleCount;
+    /** Where labels may go (in pixels). */
     private final ScreenRect bounds = new ScreenRect();
+    /** Scratch: the place being tried (in pixels). */
     private final ScreenRect trial = new ScreenRect();
 
     /**

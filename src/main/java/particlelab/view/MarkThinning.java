@@ -14,6 +14,7 @@ public final class MarkThinning {
     /** The largest stride returned: beyond it a window has room for at most one mark. */
     private static final int MAX_STRIDE = 1_000_000;
 
+    /** Not made: the rule is static. */
     private MarkThinning() {
     }
 
