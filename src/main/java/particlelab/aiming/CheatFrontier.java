@@ -57,10 +57,13 @@ public final class CheatFrontier {
     /** A shot that has not reached the plane after this many steps gives up. */
     private static final int MAX_STEPS = 100_000;
 
+    /** g, d and r (in m/s², metres, metres), fixed for the frontier's life. */
+    private final float gravity;
     private final float distance;
     private final float radiusMetres;
-    private final float speed;
-    private final float stepSeconds;
+    /** v and h (in m/s, seconds), changed by {@link #reset}. */
+    private float speed;
+    private float stepSeconds;
     private final Hitscan stepped;
     private final TargetImpact impact = new TargetImpact();
     /** The disc's plane {@code x = d}, its front facing the gun. */
@@ -77,8 +80,8 @@ public final class CheatFrontier {
     private final double[] hitSeconds = new double[WAYS.length];
     private final int[] steps = new int[WAYS.length];
     /** The closed-form drop D and the corrected aim's slope tan θ. */
-    private final double drop;
-    private final double raisedSlope;
+    private double drop;
+    private double raisedSlope;
 
     /**
      * Work out the four ways for one shot.
@@ -91,15 +94,31 @@ public final class CheatFrontier {
      */
     public CheatFrontier(float gravity, float distance, float radiusMetres, float speed,
             float stepSeconds) {
-        Validate.positive(gravity, "gravity g (m/s^2)");
+        this.gravity = Validate.positive(gravity, "gravity g (m/s^2)");
         this.distance = Validate.positive(distance, "distance d (m)");
         this.radiusMetres = Validate.positive(radiusMetres, "target radius r (m)");
-        this.speed = Validate.positive(speed, "speed v (m/s)");
-        this.stepSeconds = Validate.positive(stepSeconds, "step h (s)");
         Gravity field = new Gravity();
         field.setAcceleration(new Vector3f(0f, -gravity, 0f));
         stepped = new Hitscan(new ParticleIntegrator(field), stepSeconds, MAX_STEPS);
         face = new Plane(new Vector3f(-1f, 0f, 0f), -distance);
+        reset(speed, stepSeconds);
+    }
+
+    /**
+     * Work out the four ways again, in place, for another muzzle speed or step (the same
+     * gravity, distance and disc): a demo that refires at a changing h reuses one frontier.
+     * Allocation-free.
+     *
+     * @param newSpeed v, the muzzle speed (in m/s, finite, &gt;0)
+     * @param newStepSeconds h, the step of the stepped ways (in seconds, finite, &gt;0)
+     */
+    public void reset(float newSpeed, float newStepSeconds) {
+        // Both checked before either is kept, so a bad value leaves the frontier as it was.
+        Validate.positive(newSpeed, "speed v (m/s)");
+        Validate.positive(newStepSeconds, "step h (s)");
+        speed = newSpeed;
+        stepSeconds = newStepSeconds;
+        stepped.setStepSeconds(newStepSeconds);
         drop = Hitscan.formulaDrop(gravity, distance, speed);
         raisedSlope = drop / distance;
         double levelTime = distance / (double) speed;
@@ -118,6 +137,24 @@ public final class CheatFrontier {
                 - 0.5 * gravity * raisedTime * raisedTime;
         // The stepped projectile is the bullet: its own crossing.
         shoot(Way.STEPPED);
+    }
+
+    /**
+     * Return the muzzle speed the ways were worked out for.
+     *
+     * @return v (in m/s)
+     */
+    public float getSpeed() {
+        return speed;
+    }
+
+    /**
+     * Return the step the stepped ways were worked out for.
+     *
+     * @return h (in seconds)
+     */
+    public float getStepSeconds() {
+        return stepSeconds;
     }
 
     /**

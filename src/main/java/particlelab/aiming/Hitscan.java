@@ -31,7 +31,7 @@ public final class Hitscan {
 
     private final ParticleIntegrator integrator;
     private final Particle projectile = new Particle();
-    private final float stepSeconds;
+    private float stepSeconds;
     private final int maxSteps;
     private final Vector3f previous = new Vector3f();
     private final Vector3f centre = new Vector3f();
@@ -55,6 +55,15 @@ public final class Hitscan {
             throw new IllegalArgumentException("max steps must be >= 1, but was " + maxSteps);
         }
         this.maxSteps = maxSteps;
+    }
+
+    /**
+     * Change the step the projectile flies with, in place (a range reused for another h).
+     *
+     * @param newStepSeconds h (in seconds, finite, &gt;0)
+     */
+    public void setStepSeconds(float newStepSeconds) {
+        stepSeconds = Validate.positive(newStepSeconds, "step h (s)");
     }
 
     /**

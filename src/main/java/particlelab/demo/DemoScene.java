@@ -14,6 +14,7 @@ import particlelab.view.CameraFraming;
 import particlelab.view.DistanceGrid;
 import particlelab.view.HudLayout;
 import particlelab.view.LabelSlots;
+import particlelab.view.MarkThinning;
 import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.SceneLabel;
@@ -54,6 +55,8 @@ final class DemoScene {
     private static final float GROUND_LABEL_ROOM = 1.8f;
     /** Points sampled along each velocity arrow, which a label avoids like a trail. */
     private static final int ARROW_SAMPLES = 16;
+    /** The least room between two distance marks shown (as a fraction of the text size). */
+    private static final float MARK_GAP_FRACTION = 1f;
     /** A trail point counts as covered this close to a label (in pixels at HUD scale 1). */
     private static final float TRAIL_CLEARANCE = 3f;
 
@@ -101,6 +104,8 @@ final class DemoScene {
     private final ScreenRect fixedArea = new ScreenRect();
     private final ScreenRect candidate = new ScreenRect();
     private final ScreenRect chosen = new ScreenRect();
+    /** Scratch: a neighbouring ground mark's preferred place (in pixels). */
+    private final ScreenRect neighbourMark = new ScreenRect();
     private final ScreenRect reach = new ScreenRect();
     private final Vector3f trailPoint = new Vector3f();
     /** The HUD's side panel and graph slots (live, empty when not asked for). */
@@ -257,11 +262,25 @@ final class DemoScene {
      * @param color its colour (not null, not modified)
      */
     void addMarker(String label, float x, float heightMetres, ColorRGBA color) {
+        addMarker(label, x, heightMetres, color, false);
+    }
+
+    /**
+     * Add a labelled post standing on the ground, its name on its top or beside its foot.
+     *
+     * @param label the post's name (not null)
+     * @param x where it stands (in metres)
+     * @param heightMetres how tall it is (in metres, finite, &gt;0)
+     * @param color its colour (not null, not modified)
+     * @param nameAtFoot true for the name right of the post's foot, false for above its top
+     */
+    void addMarker(String label, float x, float heightMetres, ColorRGBA color,
+            boolean nameAtFoot) {
         if (!(heightMetres > 0f) || Float.isInfinite(heightMetres)) {
             throw new IllegalArgumentException(
                     "marker height (m) must be finite and > 0, but was " + heightMetres);
         }
-        markers.add(new Marker(label, x, heightMetres, color.clone()));
+        markers.add(new Marker(label, x, heightMetres, color.clone(), nameAtFoot));
     }
 
     /**
@@ -279,10 +298,16 @@ final class DemoScene {
         this.sceneNode = sceneNode;
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
+            // The post is a bar this wide, centred on its x: a name at its foot starts at its
+            // right side, a gap beyond it.
+            float postWidth = POST_RADIUS_FRACTION * sphereRadius;
             sceneNode.attachChild(ParticleView.createPost(assets, marker.label, marker.x,
-                    marker.height, POST_RADIUS_FRACTION * sphereRadius, marker.color));
-            SceneLabel name = new SceneLabel(font, marker.label, marker.color, marker.x,
-                    marker.height, SceneLabel.Anchor.ABOVE);
+                    marker.height, postWidth, marker.color));
+            SceneLabel name = marker.nameAtFoot
+                    ? new SceneLabel(font, marker.label, marker.color,
+                            marker.x + postWidth / 2f, 0f, SceneLabel.Anchor.FOOT_RIGHT)
+                    : new SceneLabel(font, marker.label, marker.color, marker.x,
+                            marker.height, SceneLabel.Anchor.ABOVE);
             fixedLabels.add(name);
             sceneNode.attachChild(name.getText());
         }
@@ -379,14 +404,34 @@ final class DemoScene {
         hudRects.add(hud.getGraph());
         panelSlot = hud.getSidePanel();
         graphSlot = hud.getGraph();
+        // The ground's marks thinned to a stride that keeps two shown from touching.
+        float widestMark = 0f;
+        int marks = grid.countGroundMarks();
+        for (int m = 0; m < marks; ++m) {
+            widestMark = Math.max(widestMark,
+                    measure.width(fixedLabels.get(markerLabels + m).getText().getText(),
+                            labelSize));
+        }
+        int markStride = MarkThinning.stride(grid.getMarkSpacing() * plane.getPixelsPerMetre(),
+                widestMark, MARK_GAP_FRACTION * labelSize);
         for (int i = 0; i < fixedLabels.size(); ++i) {
             SceneLabel label = fixedLabels.get(i);
             label.preferredRect(plane, measure, labelSize, candidate);
             // Shift a mark that would stick out of the window ("14 m" at the right edge).
+            float preferredX = candidate.getX();
             float x = Math.max(fixedArea.getX(),
-                    Math.min(candidate.getX(), fixedArea.getRight() - candidate.getWidth()));
+                    Math.min(preferredX, fixedArea.getRight() - candidate.getWidth()));
             candidate.set(x, candidate.getY(), candidate.getWidth(), candidate.getHeight());
-            boolean free = fixedArea.contains(candidate) && !coversHud(candidate);
+            int mark = i - markerLabels;
+            boolean groundMark = mark >= 0 && mark < marks;
+            boolean free = fixedArea.contains(candidate) && !coversHud(candidate)
+                    && (!groundMark
+                            || MarkThinning.isShown(grid.getGroundMarkIndex(mark), markStride));
+            if (free && groundMark && x != preferredX) {
+                // Shifted towards its neighbour, the edge's mark goes if it comes within the
+                // gap of one shown, rather than the neighbour at its true place.
+                free = !nearShownMark(mark, marks, markStride, MARK_GAP_FRACTION * labelSize);
+            }
             for (int j = 0; j < i && free; ++j) {
                 SceneLabel other = fixedLabels.get(j);
                 free = !(other.isVisible() && other.getRect().intersects(candidate));
@@ -398,6 +443,30 @@ final class DemoScene {
         }
         laidOut = true;
         placeParticleLabels(true);
+    }
+
+    /**
+     * Test whether the candidate rectangle comes within a gap of another ground mark shown at
+     * its preferred place.
+     *
+     * @param self the mark placed (index among the ground marks)
+     * @param marks how many ground marks there are
+     * @param stride the marks' stride ({@link MarkThinning})
+     * @param gap the least room between two marks (in pixels)
+     */
+    private boolean nearShownMark(int self, int marks, int stride, float gap) {
+        for (int m = 0; m < marks; ++m) {
+            if (m == self || !MarkThinning.isShown(grid.getGroundMarkIndex(m), stride)) {
+                continue;
+            }
+            fixedLabels.get(markerLabels + m).preferredRect(plane, measure, labelSize,
+                    neighbourMark);
+            if (neighbourMark.getX() - gap < candidate.getRight()
+                    && neighbourMark.getRight() + gap > candidate.getX()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -472,6 +541,20 @@ final class DemoScene {
             float ground = plane.screenY(0f);
             storeResult.add(new ScreenRect(plane.screenX(marker.x) - halfWidth, ground,
                     2f * halfWidth, plane.screenY(marker.height) - ground));
+        }
+        return storeResult;
+    }
+
+    /**
+     * Copy the screen rectangle of every post's name ({@link #addMarker}), shown or not, into
+     * a list, for tests of the layout.
+     *
+     * @param storeResult where to add them, in the posts' order (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostLabelRects(List<ScreenRect> storeResult) {
+        for (int i = 0; i < markerLabels; ++i) {
+            storeResult.add(new ScreenRect().set(fixedLabels.get(i).getRect()));
         }
         return storeResult;
     }
@@ -783,12 +866,15 @@ final class DemoScene {
         final float x;
         final float height;
         final ColorRGBA color;
+        /** True for the name right of the post's foot, false for above its top. */
+        final boolean nameAtFoot;
 
-        Marker(String label, float x, float height, ColorRGBA color) {
+        Marker(String label, float x, float height, ColorRGBA color, boolean nameAtFoot) {
             this.label = label;
             this.x = x;
             this.height = height;
             this.color = color;
+            this.nameAtFoot = nameAtFoot;
         }
     }
 }

@@ -502,6 +502,21 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Add a labelled post standing on the ground, its name right of its foot: for a post a
+     * body rests on (a ledge), whose top the body and its trail cover. Call from
+     * {@link #createScene()}.
+     *
+     * @param label the text beside the post's foot (not null)
+     * @param x where it stands (in metres)
+     * @param heightMetres how tall it is (in metres, &gt;0)
+     * @param color its colour (not null, not modified)
+     */
+    protected void addMarkerNamedAtFoot(String label, float x, float heightMetres,
+            ColorRGBA color) {
+        scene.addMarker(label, x, heightMetres, color, true);
+    }
+
+    /**
      * Declare a key. Call from {@link #declareKeys()}.
      *
      * @param keyCode the key, a {@link KeyInput} code, not used by jME, the app or the shared
@@ -1031,6 +1046,16 @@ public abstract class DemoState extends BaseAppState {
      */
     List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
         return scene.copyPostRects(storeResult);
+    }
+
+    /**
+     * Copy the screen rectangle of every post's name, for tests of the layout.
+     *
+     * @param storeResult where to add them, in the posts' order (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostLabelRects(List<ScreenRect> storeResult) {
+        return scene.copyPostLabelRects(storeResult);
     }
 
     /**

@@ -356,8 +356,10 @@ public final class ClipResponseDemo extends DemoState {
                 .limitTo(body(PHYSICS_LANE, TARGET)));
         getWorld().addContactListener(new Epilogue());
         addStateRecord(new Record());
-        addMarker("ledge", PHYSICS_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
-        addMarker("ledge", CLIP_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
+        // Each ledge's name beside its foot, on the far side from the rocket: its top is
+        // where the target rests and its trail starts; the bodies land away from the post.
+        addMarkerNamedAtFoot("ledge", PHYSICS_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
+        addMarkerNamedAtFoot("ledge", CLIP_TARGET_X, LEDGE_HEIGHT, ColorRGBA.Gray);
         hideArrowsAtStart();
         setView(-9f, 9f, LEDGE_HEIGHT + 2.5f, 1f, 2, RADIUS);
     }

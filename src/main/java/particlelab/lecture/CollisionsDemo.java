@@ -1,6 +1,7 @@
 package particlelab.lecture;
 
 import com.jme3.app.Application;
+import com.jme3.font.BitmapFont;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
@@ -13,10 +14,14 @@ import particlelab.demo.DemoState;
 import particlelab.demo.Draggable;
 import particlelab.demo.Presentation;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.view.CalloutLayout;
 import particlelab.view.HudFont;
+import particlelab.view.HudLayout;
 import particlelab.view.ImpulseArrows;
 import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.view.TextMeasure;
 import particlelab.view.WallView;
 import particlelab.world.StateRecord;
 import particlelab.world.StateSlab;
@@ -123,6 +128,15 @@ public final class CollisionsDemo extends DemoState {
     private static final float ARROW_LIFT = 1.2f;
     /** The impulse labels' text size, as a share of the scene labels' (the balls' names). */
     private static final float IMPULSE_LABEL_SHARE = 1f;
+    /** The lowest an impulse arrow's tip goes (in metres): its shaft's width above ground. */
+    private static final float ARROW_FLOOR = 0.25f * RADIUS;
+    /** The room between an arrow's tip and its label (as a fraction of the text size). */
+    private static final float CALLOUT_GAP = 0.3f;
+    /**
+     * The most obstacles a frame's callouts meet: the HUD's seven texts, each body's sphere
+     * and name (five balls and the paddle), and every arrow's label.
+     */
+    private static final int CALLOUT_OBSTACLES = 7 + 2 * 6 + 2 * ContactImpulses.CAPACITY;
 
     private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
     /**
@@ -171,6 +185,16 @@ public final class CollisionsDemo extends DemoState {
     private final Vector3f arrowImpulse = new Vector3f();
     /** Scratch: an arrow's label. */
     private final StringBuilder arrowLabel = new StringBuilder(48);
+    /** Where the impulse labels go, clear of each other, the spheres and the texts. */
+    private final CalloutLayout callouts = new CalloutLayout(CALLOUT_OBSTACLES);
+    /** Scratch: the scene above the ground band (in pixels). */
+    private final ScreenRect calloutArea = new ScreenRect();
+    /** Where each arrow's label was put this frame (in pixels; empty: hidden). */
+    private final ScreenRect[] impulseLabelRects = new ScreenRect[2 * ContactImpulses.CAPACITY];
+    /** The lowest tip of the arrows drawn this frame (in metres; +∞: none drawn). */
+    private float lowestArrowTip = Float.POSITIVE_INFINITY;
+    /** Measures the labels in pixels (null without a window). */
+    private TextMeasure labelMeasure;
     /** Two arrows per kept contact, built with the window (null without one). */
     private ImpulseArrows arrows;
     /** The paddle's contacts since the start. */
@@ -199,6 +223,9 @@ public final class CollisionsDemo extends DemoState {
     /** Create the demo. */
     public CollisionsDemo() {
         super("Collisions");
+        for (int i = 0; i < impulseLabelRects.length; ++i) {
+            impulseLabelRects[i] = new ScreenRect();
+        }
     }
 
     @Override
@@ -551,6 +578,31 @@ public final class CollisionsDemo extends DemoState {
     }
 
     /**
+     * Copy where each impulse arrow's label was put at the last frame, for tests of the
+     * layout: those shown, in pixels.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    public List<ScreenRect> copyImpulseLabelRects(List<ScreenRect> storeResult) {
+        for (int i = 0; i < impulseLabelRects.length; ++i) {
+            if (!impulseLabelRects[i].isEmpty()) {
+                storeResult.add(new ScreenRect().set(impulseLabelRects[i]));
+            }
+        }
+        return storeResult;
+    }
+
+    /**
+     * Return the lowest tip of the impulse arrows drawn at the last frame.
+     *
+     * @return its height (in metres; +∞ when none was drawn)
+     */
+    public float getLowestArrowTip() {
+        return lowestArrowTip;
+    }
+
+    /**
      * Copy the impulse the paddle gave the balls since the start, ΣJ: the change of their
      * momentum it caused (the paddle, kinematic, took none of the −J back).
      *
@@ -600,16 +652,27 @@ public final class CollisionsDemo extends DemoState {
     @Override
     protected void initialize(Application app) {
         super.initialize(app);
-        arrows = new ImpulseArrows(app.getAssetManager(), HudFont.load(app.getAssetManager()),
-                2 * ContactImpulses.CAPACITY, METRES_PER_NEWTON_SECOND, 0.25f * RADIUS);
+        BitmapFont font = HudFont.load(app.getAssetManager());
+        labelMeasure = TextMeasure.of(font);
+        arrows = new ImpulseArrows(app.getAssetManager(), font, 2 * ContactImpulses.CAPACITY,
+                METRES_PER_NEWTON_SECOND, 0.25f * RADIUS);
         getSceneNode().attachChild(arrows.getNode());
         showImpulses();
     }
 
+    /**
+     * Run a frame as every demo does, then draw the impulse arrows: after the views and any
+     * new layout the HUD asked for, so their labels keep clear of the balls' names where
+     * this frame put them.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
     @Override
-    protected void afterFrame() {
+    public void update(float tpf) {
+        super.update(tpf);
         showImpulses();
     }
+
 
     /** Just after a ball contact's resolution: balls 1 and 2's exit velocities, once. */
     private void recordExit(Contact contact) {
@@ -703,8 +766,12 @@ public final class CollisionsDemo extends DemoState {
 
     /**
      * Draw each recent contact's impulses, held {@link ContactImpulses#HOLD_SECONDS}: from
-     * the contact point, {@code j·n} on A and {@code −j·n} on B (Newton's third law), with
-     * the magnitude; a kinematic side's arrow grey and marked not applied. Allocates nothing.
+     * the contact point, {@code j·n} on A and {@code −j·n} on B (Newton's third law), each
+     * shortened only to keep its tip above the ground band; with the magnitude, or a
+     * kinematic side's arrow grey and marked not applied. The labels, newest contact first,
+     * go where they cover no other label, sphere, ball's name or HUD text
+     * ({@link CalloutLayout}), without their unit or note when the full text has no room, or
+     * not at all. Allocates nothing.
      */
     private void showImpulses() {
         if (arrows == null) {
@@ -712,9 +779,16 @@ public final class CollisionsDemo extends DemoState {
         }
         double now = getWorld().getTimeSeconds();
         PlaneView plane = getPlaneView();
-        float size = IMPULSE_LABEL_SHARE * getHud().getLayout().getSceneLabelSize()
-                / Math.max(PlaneView.MIN_PIXELS, plane.getPixelsPerMetre());
+        float pixelsPerMetre = Math.max(PlaneView.MIN_PIXELS, plane.getPixelsPerMetre());
+        float sizePixels = IMPULSE_LABEL_SHARE * getHud().getLayout().getSceneLabelSize();
+        float size = sizePixels / pixelsPerMetre;
+        float height = labelMeasure.lineHeight(sizePixels);
+        beginCallouts(plane);
+        lowestArrowTip = Float.POSITIVE_INFINITY;
         for (int i = 0; i < ContactImpulses.CAPACITY; ++i) {
+            for (int side = 0; side < 2; ++side) {
+                impulseLabelRects[2 * i + side].set(0f, 0f, 0f, 0f);
+            }
             if (i >= impulses.size() || !impulses.isShown(i, now)) {
                 arrows.hide(2 * i);
                 arrows.hide(2 * i + 1);
@@ -726,20 +800,80 @@ public final class CollisionsDemo extends DemoState {
                 boolean onA = side == 0;
                 boolean applied = impulses.isApplied(i, onA);
                 impulses.copyImpulse(i, onA, arrowImpulse);
-                // The magnitude once per contact, on the side that took it (A, unless A is
-                // the kinematic paddle); the other side's arrow is its -J, or the paddle's J.
-                boolean magnitude = applied && (onA || !impulses.isApplied(i, true));
-                arrowLabel.setLength(0);
-                arrowLabel.append(onA ? "J" : "-J");
-                if (!applied) {
-                    arrowLabel.append(" not applied (kinematic)");
-                } else if (magnitude) {
-                    TextFormat.appendFixed(arrowLabel.append(" = "), impulses.getMagnitude(i), 2)
-                            .append(" N s");
+                // The tip kept above the ground band: the arrow drawn shorter, never longer.
+                arrowImpulse.multLocal(ImpulseArrows.lengthScale(arrowStart.y, arrowImpulse.y,
+                        METRES_PER_NEWTON_SECOND, ARROW_FLOOR));
+                int shortLength = writeArrowLabel(i, onA, applied);
+                float fullWidth = labelMeasure.width(arrowLabel, sizePixels);
+                arrowLabel.setLength(shortLength);
+                float shortWidth = labelMeasure.width(arrowLabel, sizePixels);
+                writeArrowLabel(i, onA, applied);
+                float tipX = arrowStart.x + METRES_PER_NEWTON_SECOND * arrowImpulse.x;
+                float tipY = arrowStart.y + METRES_PER_NEWTON_SECOND * arrowImpulse.y;
+                lowestArrowTip = Math.min(lowestArrowTip, tipY);
+                ScreenRect place = impulseLabelRects[2 * i + side];
+                int form = callouts.place(plane.screenX(tipX), plane.screenY(tipY),
+                        arrowImpulse.x, arrowImpulse.y, fullWidth, shortWidth, height,
+                        CALLOUT_GAP * sizePixels, place);
+                if (form == CalloutLayout.SHORT) {
+                    arrowLabel.setLength(shortLength);
+                } else if (form == CalloutLayout.HIDDEN) {
+                    arrowLabel.setLength(0);
                 }
-                arrows.show(2 * i + side, arrowStart, arrowImpulse, applied, arrowLabel, size);
+                arrows.show(2 * i + side, arrowStart, arrowImpulse, applied, arrowLabel, size,
+                        plane.planeX(place.getX()), plane.planeY(place.getTop()));
             }
         }
+    }
+
+    /**
+     * Start the frame's callouts: inside the scene above the ground band, clear of the
+     * spheres, the balls' names and the HUD's texts.
+     */
+    private void beginCallouts(PlaneView plane) {
+        copySceneRect(calloutArea);
+        float ground = plane.screenY(0f);
+        calloutArea.set(calloutArea.getX(), Math.max(calloutArea.getY(), ground),
+                calloutArea.getWidth(), Math.max(0f, calloutArea.getTop() - ground));
+        callouts.begin(calloutArea);
+        HudLayout layout = getHud().getLayout();
+        callouts.addObstacle(layout.getTitle());
+        callouts.addObstacle(layout.getBody());
+        callouts.addObstacle(layout.getWarning());
+        callouts.addObstacle(layout.getFooter());
+        callouts.addObstacle(layout.getReadout());
+        callouts.addObstacle(layout.getSidePanel());
+        callouts.addObstacle(layout.getGraph());
+        List<DemoParticle> shown = getParticles();
+        float radius = RADIUS * plane.getPixelsPerMetre();
+        for (int p = 0; p < shown.size(); ++p) {
+            Vector3f position = shown.get(p).getParticle().position;
+            callouts.addObstacle(plane.screenX(position.x) - radius,
+                    plane.screenY(position.y) - radius, 2f * radius, 2f * radius);
+            callouts.addObstacle(getView(shown.get(p)).getLabelRect());
+        }
+    }
+
+    /**
+     * Write one side's arrow label into {@link #arrowLabel}: "J = 5.85 N s" once per contact
+     * on the side that took it (A, unless A is the kinematic paddle), "-J" on the other, and
+     * "-J not applied (kinematic)" on a kinematic side.
+     *
+     * @return the length of its short form: without the unit or the note
+     */
+    private int writeArrowLabel(int contact, boolean onA, boolean applied) {
+        boolean magnitude = applied && (onA || !impulses.isApplied(contact, true));
+        arrowLabel.setLength(0);
+        arrowLabel.append(onA ? "J" : "-J");
+        int shortLength = arrowLabel.length();
+        if (!applied) {
+            arrowLabel.append(" not applied (kinematic)");
+        } else if (magnitude) {
+            TextFormat.appendFixed(arrowLabel.append(" = "), impulses.getMagnitude(contact), 2);
+            shortLength = arrowLabel.length();
+            arrowLabel.append(" N s");
+        }
+        return shortLength;
     }
 
     /** Add {@code scale·n} to a vector in place. */

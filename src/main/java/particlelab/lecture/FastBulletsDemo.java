@@ -121,8 +121,6 @@ public final class FastBulletsDemo extends DemoState {
     private int shown;
     /** The four ways for the shot's speed and step, made again only when they change. */
     private CheatFrontier frontier;
-    private float frontierSpeed = Float.NaN;
-    private float frontierStep = Float.NaN;
     /** Each way's measured time per step, or per shot for the ray (ns; NaN: not measured). */
     private final double[] nanosPerStep = {Double.NaN, Double.NaN, Double.NaN, Double.NaN};
     /** The time since this shot was fired (in seconds of simulated time). */
@@ -178,10 +176,12 @@ public final class FastBulletsDemo extends DemoState {
         stoppedSeconds = -1f;
         shotStep = getClock().getCurrentStepSeconds();
         shotSeconds = 0f;
-        if (frontier == null || frontierSpeed != getSpeed() || frontierStep != shotStep) {
+        if (frontier == null) {
             frontier = new CheatFrontier(GRAVITY, DISTANCE, TARGET_RADIUS, getSpeed(), shotStep);
-            frontierSpeed = getSpeed();
-            frontierStep = shotStep;
+        } else if (frontier.getSpeed() != getSpeed() || frontier.getStepSeconds() != shotStep) {
+            // At the raw tpf h changes from frame to frame: worked out again in place, so a
+            // refire allocates nothing.
+            frontier.reset(getSpeed(), shotStep);
         }
         if (impactMark != null) {
             impactMark.setCullHint(Spatial.CullHint.Always);

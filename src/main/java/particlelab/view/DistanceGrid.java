@@ -34,6 +34,10 @@ public final class DistanceGrid {
     private final List<SceneLabel> labels = new ArrayList<>();
     private final Geometry ground;
     private final float left;
+    /** Each ground mark's value in mark spacings (0 for 0 m), in {@link #getLabels} order. */
+    private final int[] groundMarkIndices;
+    /** The distance between two neighbouring ground marks (in metres). */
+    private final float markSpacing;
 
     /**
      * Build a grid.
@@ -82,8 +86,17 @@ public final class DistanceGrid {
         edge.setLocalTranslation(xMin, -edgeHeight / 2f, BACK_Z / 2f);
         node.attachChild(edge);
 
+        int marks = 0;
         for (int column = firstColumn; column <= lastColumn; ++column) {
             if (column % labelEvery == 0) {
+                ++marks;
+            }
+        }
+        groundMarkIndices = new int[marks];
+        markSpacing = spacing * labelEvery;
+        for (int column = firstColumn; column <= lastColumn; ++column) {
+            if (column % labelEvery == 0) {
+                groundMarkIndices[labels.size()] = column / labelEvery;
                 addLabel(font, column * spacing, 0f, SceneLabel.Anchor.BELOW);
             }
         }
@@ -110,6 +123,26 @@ public final class DistanceGrid {
      */
     public List<SceneLabel> getLabels() {
         return labels;
+    }
+
+    /** @return how many of {@link #getLabels} are marks along the ground (they come first) */
+    public int countGroundMarks() {
+        return groundMarkIndices.length;
+    }
+
+    /**
+     * Return a ground mark's value in mark spacings, for {@link MarkThinning#isShown}.
+     *
+     * @param mark 0 to {@link #countGroundMarks()} - 1, in {@link #getLabels} order
+     * @return the value divided by {@link #getMarkSpacing()} (0 for 0 m)
+     */
+    public int getGroundMarkIndex(int mark) {
+        return groundMarkIndices[mark];
+    }
+
+    /** @return the distance between two neighbouring ground marks (in metres, &gt;0) */
+    public float getMarkSpacing() {
+        return markSpacing;
     }
 
     /**

@@ -11,8 +11,10 @@ import com.jme3.scene.Spatial;
 
 /**
  * Impulse arrows at contacts, each with its label: an arrow as long as the impulse times a
- * fixed scale (metres per N·s), in one colour when the impulse was applied to its body and
- * in grey when it was not (a kinematic body's: infinite mass, nothing changes). A fixed pool
+ * fixed scale (metres per N·s), shortened only to keep its tip above the ground band
+ * ({@link #lengthScale}), in one colour when the impulse was applied to its body and in grey
+ * when it was not (a kinematic body's: infinite mass, nothing changes); its label where the
+ * caller's layout put it ({@link CalloutLayout}). A fixed pool
  * of arrows and labels made at construction; {@link #show} and {@link #hide} rewrite them in
  * place and allocate nothing.
  */
@@ -22,17 +24,11 @@ public final class ImpulseArrows {
     public static final ColorRGBA APPLIED_COLOR = new ColorRGBA(1f, 0.85f, 0.2f, 1f);
     /** The arrows' colour when it was not (a kinematic body). */
     public static final ColorRGBA NOT_APPLIED_COLOR = new ColorRGBA(0.7f, 0.7f, 0.75f, 1f);
-    /** The gap between an arrow's tip and its label (as a fraction of the label size). */
-    private static final float LABEL_GAP = 0.3f;
-
     private final Node node = new Node("impulse arrows");
     private final VelocityArrow[] applied;
     private final VelocityArrow[] notApplied;
     private final HudText[] labels;
-    private final BitmapFont font;
     private final float metresPerNewtonSecond;
-    /** Scratch: an arrow's tip (m). */
-    private final Vector3f tip = new Vector3f();
 
     /**
      * Create a pool of arrows, all hidden.
@@ -50,7 +46,6 @@ public final class ImpulseArrows {
                     + " width > 0, but were " + count + ", " + metresPerNewtonSecond + ", "
                     + shaftWidthMetres);
         }
-        this.font = font;
         this.metresPerNewtonSecond = metresPerNewtonSecond;
         Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
         applied = new VelocityArrow[count];
@@ -92,36 +87,58 @@ public final class ImpulseArrows {
     }
 
     /**
-     * Show one arrow: from a point along an impulse, with its label beyond the tip.
+     * Return how much of its full length an arrow may draw so that its tip stays above a
+     * floor (the ground band's top): 1 when the tip is above it anyway, else the share that
+     * ends the arrow on the floor, {@code s = (y0 − floor)/(−J_y·k)} with k the metres per
+     * N·s. The label still gives the whole impulse.
+     *
+     * @param startY where the arrow starts (in metres, &ge; floorY)
+     * @param impulseY the impulse's y (in N·s)
+     * @param metresPerNewtonSecond the arrows' scale k (in m/(N·s), &gt;0)
+     * @param floorY the lowest the tip may go (in metres)
+     * @return s (from 0 to 1)
+     */
+    public static float lengthScale(float startY, float impulseY, float metresPerNewtonSecond,
+            float floorY) {
+        float drop = -impulseY * metresPerNewtonSecond;
+        float room = startY - floorY;
+        if (!(drop > room)) {
+            return 1f;
+        }
+        return Math.max(0f, room / drop);
+    }
+
+    /**
+     * Show one arrow from a point along an impulse (drawn at the pool's scale), and its label
+     * at a place given, or no label.
      *
      * @param index which arrow (0 to {@link #size()} - 1)
      * @param start where it starts, the contact point (in metres, not null, not modified)
-     * @param impulse the impulse (in N·s, not null, not modified)
+     * @param impulse the impulse as drawn (in N·s, not null, not modified; shortened by the
+     *     caller where {@link #lengthScale} says)
      * @param wasApplied true if the impulse changed its body's velocity (finite mass)
-     * @param label the label, one line (not null, not modified)
+     * @param label the label, one line (not null, not modified; empty: no label)
      * @param labelSizeMetres the label's text size (in metres, &gt;0)
+     * @param labelLeft the label's left edge (in metres)
+     * @param labelTop the label's top (in metres)
      */
     public void show(int index, Vector3f start, Vector3f impulse, boolean wasApplied,
-            CharSequence label, float labelSizeMetres) {
+            CharSequence label, float labelSizeMetres, float labelLeft, float labelTop) {
         VelocityArrow shown = wasApplied ? applied[index] : notApplied[index];
         VelocityArrow other = wasApplied ? notApplied[index] : applied[index];
         other.getGeometry().setCullHint(Spatial.CullHint.Always);
         shown.update(start, impulse);
         HudText text = labels[index];
+        if (label.length() == 0) {
+            text.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
         text.setText(label);
         if (text.getSize() != labelSizeMetres) {
             text.setSize(labelSizeMetres);
         }
         text.setColor(wasApplied ? APPLIED_COLOR : NOT_APPLIED_COLOR);
-        tip.set(impulse).multLocal(metresPerNewtonSecond).addLocal(start);
-        float gap = LABEL_GAP * labelSizeMetres;
-        float width = font.getLineWidth(label) * labelSizeMetres
-                / font.getCharSet().getRenderedSize();
-        // Beyond the tip: to its right for an arrow pointing right, else to its left; the
-        // text's top half a line above the tip, so the tip points at its middle.
-        float x = impulse.x >= 0f ? tip.x + gap : tip.x - gap - width;
-        float y = tip.y + 0.5f * text.getLineHeight();
-        text.setLocalTranslation(x, y, start.z + 0.02f);
+        text.setLocalTranslation(labelLeft, labelTop, start.z + 0.02f);
         text.setCullHint(Spatial.CullHint.Inherit);
     }
 

@@ -21,11 +21,18 @@ public final class SceneLabel {
         /** Right of and above the point (the marks up the left edge). */
         ABOVE_RIGHT,
         /** Centred above the point (a post's name). */
-        ABOVE
+        ABOVE,
+        /**
+         * Right of and just above the point, close to it: the name of a post at its foot,
+         * kept near the post, clear of what lands beyond it.
+         */
+        FOOT_RIGHT
     }
 
     /** The gap between the point and the text (as a fraction of the text size). */
     private static final float GAP_FRACTION = 0.4f;
+    /** The gap between a post and its name at its foot (as a fraction of the text size). */
+    private static final float FOOT_GAP_FRACTION = 0.15f;
 
     private final BitmapText text;
     private final float pointX;
@@ -85,6 +92,9 @@ public final class SceneLabel {
                 return storeResult.set(x - width / 2f, y - gap - height, width, height);
             case ABOVE_RIGHT:
                 return storeResult.set(x + gap, y + gap, width, height);
+            case FOOT_RIGHT:
+                float footGap = FOOT_GAP_FRACTION * size;
+                return storeResult.set(x + footGap, y + footGap, width, height);
             default:
                 return storeResult.set(x - width / 2f, y + gap, width, height);
         }

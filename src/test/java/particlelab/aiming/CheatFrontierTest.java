@@ -117,6 +117,46 @@ class CheatFrontierTest {
         }
     }
 
+    /**
+     * A frontier reset in place for another speed and step gives, way by way, what a new one
+     * for that speed and step gives: the same operations on the same inputs, so equal
+     * exactly (no tolerance).
+     */
+    @Test
+    void aFrontierResetInPlaceEqualsANewOne() {
+        CheatFrontier reused = new CheatFrontier(G, D, R, SPEEDS[0], H);
+        float[] steps = {H, 1.1f * H, 0.9f * H, 0.25f};
+        for (float v : SPEEDS) {
+            for (float h : steps) {
+                reused.reset(v, h);
+                CheatFrontier fresh = new CheatFrontier(G, D, R, v, h);
+                assertEquals(v, reused.getSpeed());
+                assertEquals(h, reused.getStepSeconds());
+                assertEquals(fresh.getDrop(), reused.getDrop());
+                for (CheatFrontier.Way way : CheatFrontier.Way.values()) {
+                    assertEquals(fresh.getMiss(way), reused.getMiss(way), way + " miss");
+                    assertEquals(fresh.getHitSeconds(way), reused.getHitSeconds(way),
+                            way + " hit time");
+                    assertEquals(fresh.getSteps(way), reused.getSteps(way), way + " steps");
+                    assertEquals(fresh.hits(way), reused.hits(way), way + " hit");
+                }
+            }
+        }
+    }
+
+    /** A bad reset is refused naming the value, and leaves the frontier as it was. */
+    @Test
+    void aBadResetIsRefusedAndChangesNothing() {
+        CheatFrontier frontier = new CheatFrontier(G, D, R, 50f, H);
+        double miss = frontier.getMiss(CheatFrontier.Way.STEPPED);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> frontier.reset(100f, Float.NaN));
+        assertTrue(e.getMessage().contains("step h"), e.getMessage());
+        assertEquals(50f, frontier.getSpeed());
+        assertEquals(H, frontier.getStepSeconds());
+        assertEquals(miss, frontier.getMiss(CheatFrontier.Way.STEPPED));
+    }
+
     @Test
     void badInputIsRefusedNamingTheValue() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.lecture.FastBulletsDemo;
 import particlelab.physics.SimulationClock;
 
 /**
@@ -60,6 +61,16 @@ class FrameAllocationHeadlessTest {
     private static final int WARM_UP_WINDOWS = 10;
     /** Frames run unmeasured after a restart (its panel and legend update allocate once). */
     private static final int FRAMES_AFTER_RESTART = 3;
+    /**
+     * Frame times (in seconds) a window at the raw tpf cycles through: a real window's frames
+     * are never all the same length, so h differs from one refire to the next.
+     */
+    private static final float[] WOBBLING_TPF = {H, 1.1f * H, 0.9f * H, 1.05f * H};
+    /**
+     * Windows of the cheat measured at the raw tpf: 12 s, several refires (each shot flies
+     * under a second, then rests {@link FastBulletsDemo#REFIRE_SECONDS}).
+     */
+    private static final int CHEAT_WINDOWS = 120;
 
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
@@ -123,6 +134,69 @@ class FrameAllocationHeadlessTest {
             assertEquals(List.of(), measureAll(0f, 0, 0, new int[1]));
         } finally {
             presenting = false;
+        }
+    }
+
+    /**
+     * The cheat at the raw tpf (the lecture's loop: h is the frame's time), its frame time
+     * wobbling as a real window's does: each refire works the four ways out for the new h,
+     * in place. It made a new {@code CheatFrontier} per refire, which the fixed-step tests
+     * above never saw (h never changed there).
+     */
+    @Test
+    void cheatRefiringAtTheRawTpfAllocatesNothing() throws Exception {
+        int index = -1;
+        for (int i = 0; i < demos.size(); ++i) {
+            if (demos.get(i) instanceof FastBulletsDemo) {
+                index = i;
+            }
+        }
+        assertTrue(index >= 0, "the cheat is catalogued");
+        FastBulletsDemo cheat = (FastBulletsDemo) demos.get(index);
+        int cheatIndex = index;
+        harness.call(() -> begin(cheatIndex, 0f, 0, 0));
+        try {
+            harness.call(() -> {
+                cheat.getClock().setMode(SimulationClock.Mode.RAW_TPF);
+                return true;
+            });
+            int[] frameCount = new int[1];
+            // Warm-up with refires in it: the JIT compiles the refire's path too.
+            for (int frames = 0; frames < MIN_WARM_UP_FRAMES;
+                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW) {
+                harness.call(() -> {
+                    for (int w = 0; w < WARM_UP_WINDOWS; ++w) {
+                        wobblingWindow(frameCount);
+                    }
+                    return true;
+                });
+            }
+            long[] bytes = new long[CHEAT_WINDOWS];
+            int refires = 0;
+            int allocating = 0;
+            boolean reached = cheat.isReached();
+            for (int w = 0; w < CHEAT_WINDOWS; ++w) {
+                bytes[w] = harness.call(() -> wobblingWindow(frameCount));
+                if (bytes[w] != 0L) {
+                    ++allocating;
+                }
+                // A refire: the shot that had reached the disc's plane is fired again.
+                if (reached && !cheat.isReached()) {
+                    ++refires;
+                }
+                reached = cheat.isReached();
+            }
+            // The test means something only if the demo refired while measured (each at the
+            // h of its frame, which the wobble changes).
+            assertTrue(refires >= 3, refires + " refires");
+            // At most one window may allocate, a one-off of the JVM's (see measure).
+            assertTrue(allocating <= 1, allocating + " of " + CHEAT_WINDOWS + " windows with "
+                    + refires + " refires allocated " + Arrays.toString(bytes) + " bytes");
+        } finally {
+            harness.call(() -> {
+                cheat.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+                return end(cheat);
+            });
         }
     }
 
@@ -304,19 +378,45 @@ class FrameAllocationHeadlessTest {
      * @return the bytes allocated (&ge;0)
      */
     private static long frame() {
+        return frame(H);
+    }
+
+    /**
+     * Run one window of whole frames at the wobbling tpf, the frames counted on from where
+     * the last window stopped.
+     *
+     * @param frameCount the frames run so far, which picks each frame's tpf (modified)
+     * @return the bytes allocated (&ge;0)
+     */
+    private static long wobblingWindow(int[] frameCount) {
+        long bytes = 0L;
+        for (int frame = 0; frame < FRAMES_PER_WINDOW; ++frame) {
+            bytes += frame(WOBBLING_TPF[frameCount[0] % WOBBLING_TPF.length]);
+            ++frameCount[0];
+        }
+        return bytes;
+    }
+
+    /**
+     * Run one frame as {@link #frame()} does, at a given tpf.
+     *
+     * @param tpf the frame's time (in seconds, &gt;0)
+     * @return the bytes allocated (&ge;0)
+     */
+    private static long frame(float tpf) {
         ParticleLabApp app = harness.app();
-        app.getInputManager().update(H);
+        app.getInputManager().update(tpf);
         long start = THREADS.getCurrentThreadAllocatedBytes();
         AppStateManager states = app.getStateManager();
         RenderManager render = app.getRenderManager();
-        states.update(H);
-        app.simpleUpdate(H);
-        app.getRootNode().updateLogicalState(H);
-        app.getGuiNode().updateLogicalState(H);
+        states.update(tpf);
+        app.simpleUpdate(tpf);
+        app.getRootNode().updateLogicalState(tpf);
+        app.getGuiNode().updateLogicalState(tpf);
         app.getRootNode().updateGeometricState();
         app.getGuiNode().updateGeometricState();
         states.render(render);
-        render.render(H, app.getContext().isRenderable());
+        render.render(tpf, app.getContext().isRenderable());
         app.simpleRender(render);
         states.postRender();
         return THREADS.getCurrentThreadAllocatedBytes() - start;

@@ -112,15 +112,19 @@ class CollisionsDemoTest {
 
     @Test
     void everyBallStaysInTheFramedViewAndNoLabelCoversAnotherText() throws Exception {
-        // The paddle at 1280x720, 640x360 and presenting (F8); every other preset at
-        // 1280x720. Issue 20: a ball left the view, the rack's labels met the marks.
+        // The paddle at 1280x720, 640x360, 3840x2160 and presenting (F8); every other preset
+        // at 1280x720. Issue 20: a ball left the view, the rack's labels met the marks;
+        // session 12: the impulse labels crowded each other and the balls, an arrow reached
+        // into the ground band.
         List<String> problems = new ArrayList<>();
         CollisionsDemo.Preset[] presets = CollisionsDemo.Preset.values();
         for (CollisionsDemo.Preset preset : presets) {
             problems.addAll(framed(preset, 1280, 720, false));
         }
         problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 640, 360, false));
+        problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 3840, 2160, false));
         problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 1280, 720, true));
+        problems.addAll(framed(CollisionsDemo.Preset.PADDLE, 640, 360, true));
         assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
                 problems.size() + " problems");
     }
@@ -181,6 +185,7 @@ class CollisionsDemoTest {
         float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
         List<ScreenRect> texts = collisions.copyTextRects(new ArrayList<>());
         List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
+        checkImpulses(found, where, plane, radius, hud);
         for (DemoParticle particle : collisions.getParticles()) {
             Vector3f p = particle.getParticle().position;
             float x = plane.screenX(p.x);
@@ -212,6 +217,46 @@ class CollisionsDemoTest {
                 } else if (!text.isEmpty() && text.intersects(label)) {
                     found.add(where + ": " + particle.getLabel() + "'s label " + label
                             + " covers " + text);
+                }
+            }
+        }
+    }
+
+    /**
+     * The impulse arrows' labels cover no other such label, no sphere, no ball's name and no
+     * HUD text, and no arrow's tip goes below the ground.
+     */
+    private static void checkImpulses(List<String> found, String where, PlaneView plane,
+            float radius, List<ScreenRect> hud) {
+        if (!(collisions.getLowestArrowTip() >= 0f)) {
+            found.add(where + ": an impulse arrow's tip at y = "
+                    + collisions.getLowestArrowTip() + " m, in the ground band");
+        }
+        List<ScreenRect> callouts = collisions.copyImpulseLabelRects(new ArrayList<>());
+        for (int i = 0; i < callouts.size(); ++i) {
+            ScreenRect callout = callouts.get(i);
+            for (int j = 0; j < i; ++j) {
+                if (callout.intersects(callouts.get(j))) {
+                    found.add(where + ": impulse label " + callout + " covers impulse label "
+                            + callouts.get(j));
+                }
+            }
+            for (ScreenRect text : hud) {
+                if (callout.intersects(text)) {
+                    found.add(where + ": impulse label " + callout + " covers HUD " + text);
+                }
+            }
+            for (DemoParticle particle : collisions.getParticles()) {
+                Vector3f p = particle.getParticle().position;
+                ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
+                        plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
+                if (callout.intersects(sphere)) {
+                    found.add(where + ": impulse label " + callout + " covers "
+                            + particle.getLabel());
+                }
+                if (callout.intersects(collisions.getView(particle).getLabelRect())) {
+                    found.add(where + ": impulse label " + callout + " covers the name of "
+                            + particle.getLabel());
                 }
             }
         }
