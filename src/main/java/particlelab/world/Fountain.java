@@ -117,6 +117,8 @@ public final class Fountain implements StateRecord {
     /** The random sequence's seed: a reset replays the same fountain. */
     private static final long SEED = 12;
     private static final float TWO_PI = (float) (2.0 * Math.PI);
+    /** The fireworks' pass works on this many slots at a time ({@link #markFireworks}). */
+    private static final int FIREWORK_CHUNK = 1024;
     /** cos of the nozzle's half angle, the least cos θ of a drop's direction. */
     private static final float WATER_CONE_COS = (float) Math.cos(WATER_CONE_RADIANS);
     /** cos of the shells' half angle. */
@@ -150,9 +152,18 @@ public final class Fountain implements StateRecord {
     private final float[] velocities;
     /**
      * vy before the step of each slot in contact after it, in the order of
-     * {@link #contacts}, for the resting fix (m/s); the step's scratch too.
+     * {@link #contacts}, for the resting fix (m/s), and the step's scratch; after the step,
+     * the fireworks' marks ({@link #markFireworks}).
      */
     private final float[] velocityYBefore;
+    /** The fireworks' pass's scratch, a chunk of one array's values ... */
+    private final float[] chunkValues = new float[FIREWORK_CHUNK];
+    /** ... the chunk's marks ... */
+    private final float[] chunkMarks = new float[FIREWORK_CHUNK];
+    /** ... 1 for a shell, 0 for the others ... */
+    private final float[] chunkShells = new float[FIREWORK_CHUNK];
+    /** ... and zeros, which the marks are compared with ({@link #nextMarked}). */
+    private final float[] zeros = new float[FIREWORK_CHUNK];
     private final byte[] kinds;
     /**
      * The slots in contact with the ground after the step ({@link GroundBounce}'s output),
@@ -569,9 +580,12 @@ public final class Fountain implements StateRecord {
         int y = capacity;
         float oldest = blockOldestBirth;
         int leaving = blockLeaving;
+        int fireworksEnd = fireworkCount;
         for (int c = from; c < to; ++c) {
             int i = found[c];
-            if (kinds[i] != WATER) {
+            // the fireworks hold the first slots: the rest in flight are water, known
+            // without reading the slot's kind (a cache miss per contact at 10^6)
+            if (i < fireworksEnd) {
                 continue;
             }
             if (velocities[y + i] < REST_SPEED) {
@@ -611,8 +625,10 @@ public final class Fountain implements StateRecord {
     private int burnFuses(float stepSeconds, int leaving) {
         burstCount = 0;
         float oldestBirth = oldestBirth();
+        float[] marks = velocityYBefore;
+        markFireworks(stepSeconds, oldestBirth, marks);
         int i = 0;
-        while (i < fireworkCount) {
+        while ((i = nextMarked(marks, i)) < fireworkCount) {
             byte kind = kinds[i];
             boolean gone = false;
             if (isLeaving(i, oldestBirth)) {
@@ -620,8 +636,7 @@ public final class Fountain implements StateRecord {
                 retire(i);
                 gone = true;
             } else {
-                float left = fusesLeft[i] - stepSeconds;
-                fusesLeft[i] = left;
+                float left = fusesLeft[i];
                 boolean apex = kind == SHELL && velocities[capacity + i] <= 0f;
                 if (left <= 0f || apex) {
                     if (RULES[kind].payloadCount == 0) {
@@ -643,6 +658,7 @@ public final class Fountain implements StateRecord {
                 int last = --fireworkCount;
                 if (last != i) {
                     move(last, i);
+                    marks[i] = marks[last];
                 }
                 contacts[leaving++] = last;
             } else {
@@ -650,6 +666,86 @@ public final class Fountain implements StateRecord {
             }
         }
         return leaving;
+    }
+
+    /**
+     * Burn every firework's fuse by h, and mark each that {@link #burnFuses} must look at:
+     * a mark is +0 for a firework inside the region, young enough, its fuse not burnt and
+     * not a shell at its apex, and positive (or NaN) otherwise, so that pass jumps from one
+     * marked firework to the next. Each condition c is a difference e that is positive just
+     * where c holds, and adds {@code |e| + e} (2e there, +0 elsewhere); a sum of such terms
+     * is 0 only if each is. The fuse and the apex test {@code < MIN_NORMAL} rather than
+     * {@code <= 0} (a normal bound: no subnormal arithmetic), which marks a few more than
+     * need it; the pass decides each exactly, as before, so a mark too many changes nothing.
+     * The loops read and write at one index (one axis or array copied into a scratch of a
+     * chunk first), which C2's superword needs to vectorise them.
+     */
+    private void markFireworks(float stepSeconds, float oldestBirth, float[] marks) {
+        int n = capacity;
+        float[] values = chunkValues;
+        float[] chunk = chunkMarks;
+        float[] shells = chunkShells;
+        for (int start = 0; start < fireworkCount; start += FIREWORK_CHUNK) {
+            int length = Math.min(FIREWORK_CHUNK, fireworkCount - start);
+            int end = start + length;
+            for (int i = start; i < end; ++i) {
+                fusesLeft[i] = fusesLeft[i] - stepSeconds;
+            }
+            System.arraycopy(positions, start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = Math.abs(values[k]) - REGION_HALF_WIDTH;
+                chunk[k] = Math.abs(e) + e;
+            }
+            System.arraycopy(positions, n + start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = values[k] - REGION_TOP;
+                chunk[k] += Math.abs(e) + e;
+            }
+            System.arraycopy(positions, 2 * n + start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = Math.abs(values[k]) - REGION_HALF_DEPTH;
+                chunk[k] += Math.abs(e) + e;
+            }
+            System.arraycopy(births, start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = oldestBirth - values[k];
+                chunk[k] += Math.abs(e) + e;
+            }
+            System.arraycopy(fusesLeft, start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = Float.MIN_NORMAL - values[k];
+                chunk[k] += Math.abs(e) + e;
+            }
+            for (int k = 0; k < length; ++k) {
+                shells[k] = kinds[start + k] == SHELL ? 1f : 0f;
+            }
+            System.arraycopy(velocities, n + start, values, 0, length);
+            for (int k = 0; k < length; ++k) {
+                float e = Float.MIN_NORMAL - values[k];
+                chunk[k] += shells[k] * (Math.abs(e) + e);
+            }
+            System.arraycopy(chunk, 0, marks, start, length);
+        }
+    }
+
+    /**
+     * The first firework from slot from on whose mark is not +0, by
+     * {@link Arrays#mismatch(float[], int, int, float[], int, int)} against zeros, a chunk at
+     * a time.
+     *
+     * @return its slot, or {@link #fireworkCount} if none
+     */
+    private int nextMarked(float[] marks, int from) {
+        int i = from;
+        while (i < fireworkCount) {
+            int length = Math.min(FIREWORK_CHUNK, fireworkCount - i);
+            int offset = Arrays.mismatch(marks, i, i + length, zeros, 0, length);
+            if (offset >= 0) {
+                return i + offset;
+            }
+            i += length;
+        }
+        return fireworkCount;
     }
 
     /**

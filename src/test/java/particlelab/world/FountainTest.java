@@ -133,6 +133,44 @@ class FountainTest {
         assertEquals(PARTICLES_20000, particleDigestOfARun(20_000));
     }
 
+    /**
+     * The fireworks' pass finds, among the fireworks, one too old, one beyond the region's
+     * width, one beyond its depth and one above its top (put into a state read back), and
+     * sends exactly those four back unburst: four more leaving than the same step of the
+     * untouched state. (In a plain run fireworks burn out long before they could age or
+     * leave, so the run's digest does not cover these.)
+     */
+    @Test
+    void fireworksTooOldOrOutOfTheRegionGoBackUnburst() {
+        Fountain fountain = new Fountain(5_000);
+        for (int step = 0; fountain.countFireworks() < 8; ++step) {
+            assertTrue(step < 3_000, "no fireworks in flight");
+            fountain.step(H);
+        }
+        int n = fountain.getCapacity();
+        int[] state = new int[fountain.countStateInts()];
+        StateSlab slab = new StateSlab();
+        slab.point(state, 0, state.length);
+        fountain.writeState(slab);
+        int[] moved = state.clone();
+        // the layout of writeState: P (3n floats, x then y then z), V (3n), kinds (n), births
+        moved[7 * n] = Float.floatToRawIntBits(-1_000f);
+        moved[1] = Float.floatToRawIntBits(Fountain.REGION_HALF_WIDTH + 50f);
+        moved[2 * n + 2] = Float.floatToRawIntBits(-Fountain.REGION_HALF_DEPTH - 50f);
+        moved[n + 3] = Float.floatToRawIntBits(Fountain.REGION_TOP + 500f);
+
+        slab.point(state, 0, state.length);
+        fountain.readState(slab);
+        fountain.step(H);
+        long leaving = fountain.countRecycledLeaving();
+        long bursts = fountain.countBursts();
+        slab.point(moved, 0, moved.length);
+        fountain.readState(slab);
+        fountain.step(H);
+        assertEquals(leaving + 4, fountain.countRecycledLeaving());
+        assertTrue(fountain.countBursts() <= bursts, "the four went back unburst");
+    }
+
     @Test
     void aCountOutsideOneToAMillionIsRefused() {
         for (int bad : new int[] {0, -5, Fountain.MAX_PARTICLES + 1}) {
