@@ -64,6 +64,8 @@ final class PackedStep {
     private final float[] blockVelocityY = new float[BATCH_BLOCK];
     /** ... y of the block after it (m) ... */
     private final float[] blockHeights = new float[BATCH_BLOCK];
+    /** ... x or z of the block after it (m) ... */
+    private final float[] blockOthers = new float[BATCH_BLOCK];
     /** ... and each one's mark: +0 if above the floor and finite, else not ... */
     private final float[] blockMarks = new float[BATCH_BLOCK];
     /** ... which {@link Arrays#mismatch} compares with these zeros. */
@@ -241,9 +243,9 @@ final class PackedStep {
      * </ul>
      *
      * <p>With storeBelow (not null), each block's y is then tested against the floor
-     * ({@link #findInBlock}, which checks y's finiteness on the way), and the vy the block
-     * had before its step, copied into a scratch of one block just before, is kept for each
-     * one found; {@link #foundCount} says how many. Each block's found ones go to eachBlock
+     * ({@link #findInBlock}, which checks the block's finiteness on the way), and the vy the
+     * block had before its step, copied into a scratch of one block just before, is kept for
+     * each one found; {@link #foundCount} says how many. Each block's found ones go to eachBlock
      * (if not null) right after its test, while the block is in the cache.
      *
      * @return the index of the first non-finite value, or -1
@@ -277,16 +279,18 @@ final class PackedStep {
                 stepAxis(positions, velocities, start, n, factor, gx, stepSeconds);
                 stepAxis(positions, velocities, y, n, factor, gy, stepSeconds);
                 stepAxis(positions, velocities, z, n, factor, gz, stepSeconds);
-                // y is checked here, or by the floor's marks, which see a non-finite y too
-                finite &= fusedCheck
-                        ? isFusedFinite(positions, start, n) & isFusedFinite(positions, z, n)
-                                & (storeBelow != null || isFusedFinite(positions, y, n))
-                        : isSumFinite(positions, start, n) & isSumFinite(positions, z, n)
-                                & (storeBelow != null || isSumFinite(positions, y, n));
+                // checked here, or by the floor's marks, which see a non-finite P too
+                if (storeBelow == null) {
+                    finite &= fusedCheck
+                            ? isFusedFinite(positions, start, n) & isFusedFinite(positions, y, n)
+                                    & isFusedFinite(positions, z, n)
+                            : isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
+                                    & isSumFinite(positions, z, n);
+                }
             }
             if (storeBelow != null) {
                 int was = found;
-                found = findInBlock(positions, y, n, start, floorMetres, storeBelow,
+                found = findInBlock(positions, stride, n, start, floorMetres, storeBelow,
                         storeVelocityYBefore, found);
                 finite &= blockFinite;
                 if (eachBlock != null && found > was) {
@@ -317,23 +321,36 @@ final class PackedStep {
      * mark to the next. For a finite y, e &gt; 0 exactly when y &le; floor (a rounded
      * difference keeps its sign, is 0 only for equal floats, and no float lies between the
      * floor and the next one up), so the mark is 2e &gt; 0 (or +∞) there and +0 (bits 0)
-     * above it; y = NaN gives NaN, y = +∞ gives ∞ − ∞ = NaN, y = −∞ gives +∞. A nonzero
-     * mark is thus a particle at or below the floor or a non-finite y, and is looked at:
-     * the same particles as
-     * {@link HeightScan#findAtOrBelow}, in the same order, and a finiteness check of y that
-     * sets {@link #blockFinite}.
+     * above it; y = NaN gives NaN, y = +∞ gives ∞ − ∞ = NaN, y = −∞ gives +∞. Then x and
+     * z (copied likewise) add {@code p − p}: +0 for a finite p, NaN otherwise. A nonzero
+     * mark is thus a particle at or below the floor or with a non-finite P, and is looked
+     * at: the same particles as {@link HeightScan#findAtOrBelow}, in the same order, and the
+     * block's finiteness check (in place of the tree of sums), which sets
+     * {@link #blockFinite}.
      *
      * @return how many are stored now: found plus this block's
      */
-    private int findInBlock(float[] positions, int y, int n, int start, float floorMetres,
-            int[] storeBelow, float[] storeVelocityYBefore, int found) {
+    private int findInBlock(float[] positions, int stride, int n, int start,
+            float floorMetres, int[] storeBelow, float[] storeVelocityYBefore, int found) {
         float[] heights = blockHeights;
         float[] marks = blockMarks;
-        System.arraycopy(positions, y, heights, 0, n);
+        float[] others = blockOthers;
+        System.arraycopy(positions, stride + start, heights, 0, n);
         float above = Math.nextUp(floorMetres);
         for (int k = 0; k < n; ++k) {
             float e = above - heights[k];
             marks[k] = Math.abs(e) + e;
+        }
+        // x and z: p − p is +0 for a finite p and NaN otherwise, so the marks check them too
+        System.arraycopy(positions, start, others, 0, n);
+        for (int k = 0; k < n; ++k) {
+            float p = others[k];
+            marks[k] += p - p;
+        }
+        System.arraycopy(positions, 2 * stride + start, others, 0, n);
+        for (int k = 0; k < n; ++k) {
+            float p = others[k];
+            marks[k] += p - p;
         }
         boolean finite = true;
         int stored = found;
@@ -350,7 +367,8 @@ final class PackedStep {
                 storeVelocityYBefore[stored] = blockVelocityY[k];
                 ++stored;
             }
-            finite &= Float.isFinite(h);
+            finite &= Float.isFinite(h) & Float.isFinite(positions[start + k])
+                    & Float.isFinite(positions[2 * stride + start + k]);
             ++k;
         }
         blockFinite = finite;

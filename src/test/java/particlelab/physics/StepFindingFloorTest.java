@@ -49,35 +49,16 @@ class StepFindingFloorTest {
     }
 
     @Test
-    void aNonFiniteHeightIsRefusedAsStepPackedRefusesIt() throws Exception {
-        int count = 2500;
+    void aNonFinitePositionIsRefusedAsStepPackedRefusesIt() throws Exception {
         for (String form : new String[] {"tree", "fused"}) {
-            for (float bad : new float[] {Float.NaN, Float.POSITIVE_INFINITY,
-                Float.NEGATIVE_INFINITY}) {
-                String[] messages = new String[2];
-                for (int side = 0; side < 2; ++side) {
-                    ParticleIntegrator integrator = integrator(form, true);
-                    float[] positions = new float[3 * count];
-                    float[] velocities = new float[3 * count];
-                    Arrays.fill(positions, count, 2 * count, 2f);
-                    // only y is bad: the floor's marks must catch it, y has no other check
-                    positions[count + 2048] = bad;
-                    boolean floorForm = side == 1;
-                    NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
-                            () -> {
-                                if (floorForm) {
-                                    integrator.stepPackedFindingFloor(positions, velocities,
-                                            count, count, MASS, STEP, FLOOR, new int[count],
-                                            new float[count]);
-                                } else {
-                                    integrator.stepPacked(positions, velocities, count,
-                                            count, MASS, STEP);
-                                }
-                            }, form + ", y = " + bad);
-                    messages[side] = thrown.getMessage();
+            for (int axis = 0; axis < 3; ++axis) {
+                for (float bad : new float[] {Float.NaN, Float.POSITIVE_INFINITY,
+                    Float.NEGATIVE_INFINITY}) {
+                    String where = form + ", axis " + axis + " = " + bad;
+                    String plain = refusal(form, axis, bad, false, where);
+                    assertTrue(plain.contains("packed particle 2048 of 2500"), plain);
+                    assertEquals(plain, refusal(form, axis, bad, true, where), where);
                 }
-                assertTrue(messages[0].contains("packed particle 2048 of 2500"), messages[0]);
-                assertEquals(messages[0], messages[1], form + ", y = " + bad);
             }
         }
     }
@@ -113,6 +94,30 @@ class StepFindingFloorTest {
                 () -> integrator.stepPackedFindingFloor(positions, velocities, 10, 10, MASS,
                         STEP, Float.NaN, new int[10], new float[10]));
         assertTrue(nan.getMessage().contains("floor (m)"), nan.getMessage());
+    }
+
+    /**
+     * The message of the refusal of 2500 particles, one with a bad position on one axis
+     * (only P is bad: in the floor form the floor's marks are the batch's only check of P),
+     * by stepPacked or by the floor form.
+     */
+    private static String refusal(String form, int axis, float bad, boolean floorForm,
+            String where) throws Exception {
+        int count = 2500;
+        ParticleIntegrator integrator = integrator(form, true);
+        float[] positions = new float[3 * count];
+        float[] velocities = new float[3 * count];
+        Arrays.fill(positions, count, 2 * count, 2f);
+        positions[axis * count + 2048] = bad;
+        NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class, () -> {
+            if (floorForm) {
+                integrator.stepPackedFindingFloor(positions, velocities, count, count, MASS,
+                        STEP, FLOOR, new int[count], new float[count]);
+            } else {
+                integrator.stepPacked(positions, velocities, count, count, MASS, STEP);
+            }
+        }, where);
+        return thrown.getMessage();
     }
 
     /**
