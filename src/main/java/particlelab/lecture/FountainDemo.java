@@ -41,8 +41,10 @@ public final class FountainDemo extends DemoState {
     public static final float FRAME_BUDGET_SECONDS = 1f / 60f;
     /** What Up/Down add to or take from e. */
     public static final float RESTITUTION_STEP = 0.1f;
-    /** How large a point is drawn (in pixels). */
+    /** How large a point is drawn in a window up to 720 pixels high (in pixels). */
     public static final float POINT_SIZE_PIXELS = 2f;
+    /** The window height up to which points are {@link #POINT_SIZE_PIXELS} (in pixels). */
+    private static final float POINT_SIZE_HEIGHT = 720f;
     /**
      * How bright water is drawn with the default pool (0 to 1): the colours of overlapping
      * points add up. A pool k times larger is drawn 1/√k as bright, so the spray neither
@@ -61,6 +63,8 @@ public final class FountainDemo extends DemoState {
     private float waterBrightness = WATER_BRIGHTNESS;
     private Fountain fountain;
     private PointCloudView points;
+    /** The window height the points' size was set for (pixels; 0: none yet). */
+    private int pointSizeHeight;
     /** Writes the pool into the points' mesh each frame (null without an application). */
     private FountainPoints meshUpdate;
     private final FrameTimes renderTimes = new FrameTimes();
@@ -251,10 +255,33 @@ public final class FountainDemo extends DemoState {
                 .put(fountain.countRecycledBurnt());
     }
 
+    /**
+     * How large the points are drawn in a window of a height: {@link #POINT_SIZE_PIXELS} up
+     * to 720 pixels, growing with the height beyond, so that on a lecture hall's 4K
+     * projector a point covers as much of the picture as at 720p.
+     *
+     * @param heightPixels the window's height (in pixels)
+     * @return the point size (in pixels, &ge;{@link #POINT_SIZE_PIXELS})
+     */
+    public static float pointSizeFor(int heightPixels) {
+        return POINT_SIZE_PIXELS * Math.max(1f, heightPixels / POINT_SIZE_HEIGHT);
+    }
+
+    /** The points' size on the screen now (pixels; 0 without a window), for tests. */
+    float drawnPointSize() {
+        return points == null ? 0f : points.getPointSize();
+    }
+
     @Override
     protected void afterFrame() {
         if (meshUpdate == null) {
             return;
+        }
+        int height = getApplication().getCamera().getHeight();
+        if (height != pointSizeHeight) {
+            // points as large in a 4K window as at 720p: one change a resize, not a frame
+            points.setPointSize(pointSizeFor(height));
+            pointSizeHeight = height;
         }
         long start = System.nanoTime();
         meshUpdate.update(fountain);

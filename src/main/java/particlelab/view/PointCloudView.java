@@ -56,6 +56,28 @@ public final class PointCloudView {
     }
 
     /**
+     * Alter the points' size on the screen (e.g. for a larger window).
+     *
+     * @param pointSizePixels the size (in pixels, finite, &gt;0)
+     */
+    public void setPointSize(float pointSizePixels) {
+        if (!(pointSizePixels > 0f) || pointSizePixels == Float.POSITIVE_INFINITY) {
+            throw new IllegalArgumentException("point size must be finite and > 0, but was "
+                    + pointSizePixels + " px");
+        }
+        geometry.getMaterial().setFloat("PointSize", pointSizePixels);
+    }
+
+    /**
+     * Return the points' size on the screen.
+     *
+     * @return the size (in pixels, &gt;0)
+     */
+    public float getPointSize() {
+        return (Float) geometry.getMaterial().getParam("PointSize").getValue();
+    }
+
+    /**
      * Access the geometry, to attach it to the scene.
      *
      * @return the live geometry (not null)

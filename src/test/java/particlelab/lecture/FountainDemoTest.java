@@ -3,6 +3,7 @@ package particlelab.lecture;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.renderer.Camera;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -54,6 +55,28 @@ class FountainDemoTest {
         assertEquals(90 * H, times[0], 1e-4);
         assertEquals(times[0], times[1], 0.0);
         assertEquals(times[2], times[1], 1e-6);
+    }
+
+    /** Points keep their share of the picture in a larger window: 2 px up to 720p, 6 at 4K. */
+    @Test
+    void pointsGrowWithTheWindowBeyond720p() throws Exception {
+        assertEquals(FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(360), 0f);
+        assertEquals(FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(720), 0f);
+        assertEquals(3f * FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(2160), 0f);
+        float[] drawn = harness.call(() -> {
+            Camera camera = demo.getApplication().getCamera();
+            int width = camera.getWidth();
+            int height = camera.getHeight();
+            camera.resize(3840, 2160, true);
+            demo.advance(H);
+            float large = demo.drawnPointSize();
+            camera.resize(width, height, true);
+            demo.advance(H);
+            return new float[] {large, demo.drawnPointSize(), height};
+        });
+        assertEquals(FountainDemo.pointSizeFor(2160), drawn[0], 0f, "at 3840x2160");
+        assertEquals(FountainDemo.pointSizeFor((int) drawn[2]), drawn[1], 0f,
+                "back at " + drawn[2] + " px high");
     }
 
     /**
