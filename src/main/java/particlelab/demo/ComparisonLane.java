@@ -432,14 +432,7 @@ public final class ComparisonLane implements DemoPart {
         Particle body = particle.getParticle();
         particle.copyLaunchPosition(scratchPosition);
         particle.copyLaunchVelocity(scratchVelocity);
-        double[] p = state.position;
-        double[] v = state.velocity;
-        p[0] = scratchPosition.x;
-        p[1] = scratchPosition.y;
-        p[2] = scratchPosition.z;
-        v[0] = scratchVelocity.x;
-        v[1] = scratchVelocity.y;
-        v[2] = scratchVelocity.z;
+        copyToState(scratchPosition, scratchVelocity);
         if (kind == Kind.SLIDE) {
             slide.start(scratchPosition, scratchVelocity, body.getMass());
         }

@@ -182,16 +182,8 @@ final class PackedStep {
         if (folded.hasOthers || !Float.isFinite(folded.stepFactor) || folded.speedDependent) {
             System.arraycopy(velocities, stride, storeVelocityYBefore, 0, count);
             step(positions, velocities, stride, count, massKg, stepSeconds);
-            int found = HeightScan.findAtOrBelow(positions, stride, count, floorMetres, 0,
-                    storeBelow, 0);
-            // the c-th index found is at least c: keeping them in place reads ahead only
-            for (int c = 0; c < found; ++c) {
-                storeVelocityYBefore[c] = storeVelocityYBefore[storeBelow[c]];
-            }
-            if (eachBlock != null && found > 0) {
-                eachBlock.take(storeBelow, storeVelocityYBefore, 0, found);
-            }
-            return found;
+            return findAll(positions, stride, count, floorMetres, storeBelow,
+                    storeVelocityYBefore, 0, storeVelocityYBefore, eachBlock);
         }
         float factor = folded.stepFactor;
         int bad = stepByAxes(positions, velocities, stride, count, stepSeconds, floorMetres,
@@ -227,6 +219,30 @@ final class PackedStep {
                     + " floats, but " + (velocities == null ? "was null"
                     : "held " + velocities.length));
         }
+    }
+
+    /**
+     * Find, in one pass over them all ({@link HeightScan#findAtOrBelow}), the particles whose
+     * y is at or below the floor, keep each one's vy from velocityY, and hand them all on as
+     * one block.
+     *
+     * @param velocityY where particle i's vy is, at velocityYOffset + i (it may be
+     *     storeVelocityYBefore itself, offset 0: the c-th index found is at least c, so
+     *     keeping them in place reads ahead only)
+     * @return how many were found
+     */
+    static int findAll(float[] positions, int stride, int count, float floorMetres,
+            int[] storeBelow, float[] velocityY, int velocityYOffset,
+            float[] storeVelocityYBefore, FloorContacts eachBlock) {
+        int found = HeightScan.findAtOrBelow(positions, stride, count, floorMetres, 0,
+                storeBelow, 0);
+        for (int c = 0; c < found; ++c) {
+            storeVelocityYBefore[c] = velocityY[velocityYOffset + storeBelow[c]];
+        }
+        if (eachBlock != null && found > 0) {
+            eachBlock.take(storeBelow, storeVelocityYBefore, 0, found);
+        }
+        return found;
     }
 
     /**

@@ -271,15 +271,8 @@ public final class ParticleIntegrator {
         }
         if (stepSeconds == 0f) {
             // nothing moves: those at or below the floor already, with the vy they keep
-            int found = HeightScan.findAtOrBelow(positions, stride, count, floorMetres, 0,
-                    storeBelow, 0);
-            for (int c = 0; c < found; ++c) {
-                storeVelocityYBefore[c] = velocities[stride + storeBelow[c]];
-            }
-            if (eachBlock != null && found > 0) {
-                eachBlock.take(storeBelow, storeVelocityYBefore, 0, found);
-            }
-            return found;
+            return PackedStep.findAll(positions, stride, count, floorMetres, storeBelow,
+                    velocities, stride, storeVelocityYBefore, eachBlock);
         }
         if (count == 0) {
             return 0;

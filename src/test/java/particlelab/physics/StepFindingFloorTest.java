@@ -163,6 +163,30 @@ class StepFindingFloorTest {
         for (int c = 0; c < found; ++c) {
             assertEquals(velocityY[below[c]], velocityYBefore[c], where + ", found " + c);
         }
+        // handed on block by block (or all at once), the same particles in the same order
+        float[] again = new float[3 * stride];
+        float[] againVelocities = new float[3 * stride];
+        fill(again, againVelocities, stride, count, floor, new Random(count * 31L + stride));
+        int[] handedIndices = new int[count];
+        float[] handedVelocities = new float[count];
+        int[] handed = {0};
+        int[] ends = {0};
+        int foundAgain = integrator(form, gravity).stepPackedFindingFloor(again,
+                againVelocities, stride, count, MASS, STEP, floor, new int[count],
+                new float[count], (indices, before, from, to) -> {
+                    assertEquals(ends[0], from, "blocks follow on");
+                    ends[0] = to;
+                    for (int c = from; c < to; ++c) {
+                        handedIndices[handed[0]] = indices[c];
+                        handedVelocities[handed[0]++] = before[c];
+                    }
+                });
+        assertEquals(found, foundAgain, where);
+        assertEquals(found, handed[0], where + ": every one found is handed on once");
+        assertArrayEquals(Arrays.copyOf(below, found), Arrays.copyOf(handedIndices, found),
+                where);
+        assertArrayEquals(Arrays.copyOf(velocityYBefore, found),
+                Arrays.copyOf(handedVelocities, found), where);
         if (count > 100) {
             assertTrue(found > count / 20, where + ": the case must have contacts, " + found);
         }
