@@ -1,0 +1,2 @@
+/** The exercises a student writes (docs/exercises.md); `gradle grade` grades them. */
+package particlelab.exercises;
