@@ -4,8 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
@@ -96,6 +99,40 @@ class GradingTest {
         for (Grader.Result result : results) {
             assertEquals("threw IllegalStateException: forgot the mass", result.mistake());
         }
+    }
+
+    @Test
+    void aThrowNamesTheLineOfTheStudentsFile() {
+        // Graded as if this test's package were the student's: the line found is this file's.
+        Submission submission = new Submission("particlelab.grading").replace(
+                RecipeExercise.class, () -> (p, v, m, g, b, t, h) -> {
+                    throw new ArithmeticException("/ by zero");
+                });
+        String mistake = Grader.grade(submission, 1).get(0).mistake();
+        assertTrue(mistake.matches("threw ArithmeticException: / by zero"
+                + " \\(GradingTest\\.java:\\d+\\)"), mistake);
+    }
+
+    @Test
+    void thePagesGradeTranscriptsAreWhatTheGraderPrints() throws IOException {
+        // docs/exercises.md shows `$ gradle -q grade ...` and its output in fenced blocks.
+        String page = Files.readString(Paths.get("docs", "exercises.md"));
+        String[] blocks = page.split("```\n");
+        int compared = 0;
+        for (String block : blocks) {
+            if (!block.startsWith("$ gradle -q grade")) {
+                continue;
+            }
+            String command = block.substring(0, block.indexOf('\n'));
+            String shown = block.substring(command.length() + 1);
+            boolean solutions = command.contains("-Psolutions");
+            int only = command.contains("-Pexercise=")
+                    ? Integer.parseInt(command.replaceAll(".*-Pexercise=(\\d+).*", "$1")) : 0;
+            Submission submission = new Submission(solutions ? SOLUTIONS : STUBS);
+            assertEquals(table(Grader.grade(submission, only)), shown, command);
+            ++compared;
+        }
+        assertEquals(3, compared, "the page's three grade transcripts");
     }
 
     @Test
