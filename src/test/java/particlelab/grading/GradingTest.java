@@ -150,6 +150,35 @@ class GradingTest {
     }
 
     @Test
+    void studentCodeThatNeverReturnsFailsItsCheckAndTheOtherCheckIsGraded() {
+        // A loop that sleeps rather than spins, so the thread left behind costs no CPU.
+        Submission submission = new Submission(SOLUTIONS).replace(AimingExercise.class,
+                () -> new AimingExercise() {
+                    @Override
+                    public float continuousVy(float vx, float rangeM, float gravity) {
+                        return gravity * rangeM / (2f * vx);
+                    }
+
+                    @Override
+                    public float discreteVy(float vx, float range, float gravity, float h) {
+                        while (true) {
+                            try {
+                                Thread.sleep(60_000L);
+                            } catch (InterruptedException e) {
+                                Thread.currentThread().interrupt();
+                            }
+                        }
+                    }
+                });
+        // Exercise 3 alone: loading the demo framework for exercise 8 may take longer than
+        // this test's short limit on a busy machine (the real limit is 10 s).
+        List<Grader.Result> results = Grader.grade(submission, 3, 200L);
+        assertEquals(List.of("Aiming/discrete"), failures(results));
+        assertTrue(results.stream().anyMatch(r -> "did not return within 0.2 s: an endless loop?"
+                .equals(r.mistake())));
+    }
+
+    @Test
     void oneExerciseCanBeGradedAlone() {
         List<Grader.Result> results = Grader.grade(new Submission(SOLUTIONS), 3);
         assertEquals(2, results.size());
