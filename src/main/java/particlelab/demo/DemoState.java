@@ -1645,6 +1645,9 @@ public abstract class DemoState extends BaseAppState {
             appendApplicationKey(footer, KeyInput.KEY_PGDN, "next stop");
             appendApplicationKey(footer, KeyInput.KEY_PGUP, "previous stop");
         }
+        if (parameterControls.isPanelVisible()) {
+            footer.append("     F2  panel open: it shows in the full HUD (F8)");
+        }
         return footer.toString();
     }
 
@@ -1770,6 +1773,10 @@ public abstract class DemoState extends BaseAppState {
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
     private void relayOutPanel() {
+        if (presenting) {
+            // The slide has no panel: the footer says where F2's panel is.
+            hud.setFooter(buildPresentationFooter());
+        }
         parameterControls.requestSlot(hud.getLayout());
         layOutAgain();
     }

@@ -50,6 +50,7 @@ class TourHeadlessTest {
         assertEquals(TourGuide.NOT_TOURING, (int) harness.call(() -> app.getTour().getStop()));
         for (DemoState demo : app.getSwitcher().getDemos()) {
             assertNull(demo.getNote(), demo.getTitle() + " kept a tour note");
+            assertNull(demo.getTitleNote(), demo.getTitle() + " kept the stop in its title");
         }
     }
 
@@ -118,6 +119,43 @@ class TourHeadlessTest {
         assertEquals(List.of(), problems);
     }
 
+    /**
+     * Issue 29: presentation mode named only the demo, and F2 there did nothing one could
+     * see. Now the title names the stop, and F2's footer says where its panel is.
+     */
+    @Test
+    void presentationModeNamesTheStopAndSaysWhatF2Does() throws Exception {
+        ParticleLabApp app = harness.app();
+        harness.call(() -> {
+            app.getTour().go(0);
+            return true;
+        });
+        press("F8");
+        harness.awaitFrames(3);
+        DemoState demo = harness.call(() -> app.getSwitcher().getSelected());
+        String title = harness.call(() -> demo.getHud().getTitleText());
+        assertTrue(harness.call(() -> demo.getHud().isPresenting()), title);
+        assertTrue(title.contains("1/" + LectureTour.stops().size() + " Collision Response"),
+                title);
+        harness.call(() -> {
+            HeadlessHarness.press(demo, "F2");
+            return true;
+        });
+        harness.awaitFrames(2);
+        String footer = harness.call(() -> demo.getHud().getFooterText());
+        harness.call(() -> {
+            HeadlessHarness.press(demo, "F2");
+            return true;
+        });
+        press("F8");
+        harness.call(() -> {
+            app.getTour().leave();
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertTrue(footer.contains("F2") && footer.contains("full HUD"), footer);
+    }
+
     @Test
     void everyDemosHelpListsTheTourKeys() throws Exception {
         ParticleLabApp app = harness.app();
@@ -166,6 +204,10 @@ class TourHeadlessTest {
         String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": "
                 + stop.getSlide();
         assertTrue(hud.contains(heading) && hud.contains(LectureTour.WATCH), hud);
+        // The title names the stop too, for presentation mode, which shows no heading.
+        String title = harness.call(() -> expected.getHud().getTitleText());
+        assertTrue(title.endsWith((index + 1) + "/" + LectureTour.stops().size() + " "
+                + stop.getSlide()), title);
         // The state: each setting's value is the one the demo holds now.
         DemoState reference = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
         DemoCommand.applySettings(reference, stop.getSettings());
