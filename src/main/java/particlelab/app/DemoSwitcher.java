@@ -62,6 +62,8 @@ public final class DemoSwitcher extends BaseAppState {
     private float pendingSeconds;
     /** The demo whose title shows the pending digit, or null. */
     private DemoState showingEntry;
+    /** The note the entry's demo had before (a tour stop's), put back when the entry ends. */
+    private String noteBeforeEntry;
 
     /**
      * Create a switcher.
@@ -233,6 +235,7 @@ public final class DemoSwitcher extends BaseAppState {
             int first = 10 * digit;
             int last = Math.min(demos.size(), first + 9);
             showingEntry = getSelected();
+            noteBeforeEntry = showingEntry.getTitleNote();
             showingEntry.setTitleNote("typed " + digit + "_  (a second digit for " + first
                     + "-" + last + ")");
         } else {
@@ -259,8 +262,9 @@ public final class DemoSwitcher extends BaseAppState {
         int digit = pendingDigit;
         pendingDigit = -1;
         if (showingEntry != null) {
-            showingEntry.setTitleNote(null);
+            showingEntry.setTitleNote(noteBeforeEntry);
             showingEntry = null;
+            noteBeforeEntry = null;
         }
         return digit;
     }

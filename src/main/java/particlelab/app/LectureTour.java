@@ -6,15 +6,21 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.HudNote;
 import particlelab.lecture.AnyHeightDemo;
+import particlelab.lecture.BounceDemo;
 import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.FountainDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
+import particlelab.lecture.SpinThrowDemo;
 import particlelab.lecture.SpringDemo;
+import particlelab.lecture.TargetsDemo;
+import particlelab.lecture.TennisRacketDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.view.TextFormat;
+import particlelab.world.Fountain;
 
 /**
  * Lecture 15 in slide order: one explicit list, like {@link DemoCatalog}. Each stop names its
@@ -70,7 +76,7 @@ public final class LectureTour {
         }
 
         /**
-         * Write the stop as {@code tour --list} prints it, e.g. "3   Kinematics vs dynamics:
+         * Write the stop as {@code tour --list} prints it, e.g. "6   Kinematics vs dynamics:
          * collisions --set preset=paddle": what follows the colon, after {@code particle-lab
          * demo}, opens the same state.
          *
@@ -96,8 +102,10 @@ public final class LectureTour {
 
     /** The stops, in slide order. */
     private static final List<Stop> STOPS = List.of(
+            new Stop("Collision Response", "targets", LectureTour::watchPhases),
             new Stop("Collision Response", "collisions", LectureTour::watchImpulse,
                     "preset=head-on", "e=0.8"),
+            new Stop("Collision Resolution", "bounce", LectureTour::watchBounce),
             new Stop("Collision Resolution", "collisions", LectureTour::watchCradle,
                     "preset=cradle", "e=1"),
             new Stop("Collision Resolution: animation based vs physics based", "clip",
@@ -107,20 +115,28 @@ public final class LectureTour {
             new Stop("Discrete particle motion", "uniform", LectureTour::watchUniform),
             new Stop("Example: gravitational pull", "pull", LectureTour::watchFall),
             new Stop("Example: pull + drag", "drag", LectureTour::watchDrag),
+            new Stop("Example: pull + drag", "wind", LectureTour::watchWind),
             new Stop("Example: pull + drag + thrust", "thrust", LectureTour::watchThrust),
             new Stop("Simulation recipe: gravity, drag, thrust, spring pull", "spring",
                     LectureTour::watchSpring),
             new Stop("Rotation", "rotation", LectureTour::watchRotation, "omega=6"),
+            new Stop("Rotation", "throw", LectureTour::watchThrow),
+            new Stop("Rotation", "racket", LectureTour::watchRacket),
             new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
                     "h=1/10", "lane=rk4"),
             new Stop("Targeting problem", "height", LectureTour::watchHeights),
             new Stop("HelloAiming", "aiming", LectureTour::watchAiming, "code=both"),
+            new Stop("Euler steps: advantages and disadvantages", "fountain",
+                    LectureTour::watchFountain),
             new Stop("Euler steps: advantages and disadvantages", "tunnelling",
                     LectureTour::watchTunnelling),
             new Stop("If accuracy matters: cheat", "cheat", LectureTour::watchCheat,
                     "speed=900"),
             new Stop("Computer science approach: iterations", "iterate",
                     LectureTour::watchIterations, "strategy=bisection", "drag=quadratic"));
+
+    /** The first stop on the pull demo (from 0): its fall at h = 1/60 s. */
+    private static final int FALL_STOP = firstStopOf("pull");
 
     private LectureTour() {
     }
@@ -135,7 +151,7 @@ public final class LectureTour {
     }
 
     /**
-     * Write a stop's HUD heading: "Tour 3/14: Kinematics vs dynamics (PageDown: next)".
+     * Write a stop's HUD heading: "Tour 6/22: Kinematics vs dynamics (PageDown next, ...)".
      *
      * @param text where to append (not null, modified)
      * @param index the stop (from 0)
@@ -147,7 +163,50 @@ public final class LectureTour {
                 .append("   (PageDown next, PageUp back)\n");
     }
 
+    /**
+     * Write a stop's note after the demo's title: "1/22 Collision Response".
+     *
+     * @param index the stop (from 0)
+     * @return the note (not null, one line)
+     */
+    static String titleNote(int index) {
+        return (index + 1) + "/" + STOPS.size() + " " + STOPS.get(index).getSlide();
+    }
+
+    /** @return the index of the first stop on a demo (from 0) */
+    private static int firstStopOf(String demo) {
+        for (int i = 0; i < STOPS.size(); ++i) {
+            if (STOPS.get(i).getDemo().equals(demo)) {
+                return i;
+            }
+        }
+        throw new IllegalStateException("no tour stop on " + demo);
+    }
+
     // ------------------------------------------------ what to watch for, per stop ----
+
+    private static void watchPhases(DemoState demo, StringBuilder text) {
+        TargetsDemo targets = (TargetsDemo) demo;
+        text.append(WATCH).append("prologue ignores the gun's platform and the ghost pane,"
+                + " collision bounces the shot (e = ");
+        TextFormat.appendFixed(text, TargetsDemo.RESTITUTION, 1)
+                .append("), epilogue: targets destroyed ").append(targets.countDestroyed())
+                .append(", fragments spawned ").append(targets.countSpawned())
+                .append(" by t = ");
+        TextFormat.appendFixed(text, demo.getClock().getSimulatedSeconds(), 2)
+                .append(" s (F fires)\n");
+    }
+
+    private static void watchBounce(DemoState demo, StringBuilder text) {
+        BounceDemo bounce = (BounceDemo) demo;
+        float e = bounce.getRestitution();
+        text.append(WATCH).append("the ground's response v' = −e·v, e = ");
+        TextFormat.appendFixed(text, e, 2).append(": each apex e² = ");
+        TextFormat.appendFixed(text, e * e, 2).append(" times the one before; the left ball"
+                + " is at y = ");
+        TextFormat.appendFixed(text, demo.getParticles().get(0).getParticle().position.y, 2)
+                .append(" m\n");
+    }
 
     private static void watchImpulse(DemoState demo, StringBuilder text) {
         CollisionsDemo collisions = (CollisionsDemo) demo;
@@ -208,8 +267,19 @@ public final class LectureTour {
     }
 
     private static void watchFall(DemoState demo, StringBuilder text) {
-        Vector3f velocity = demo.getParticles().get(0).getParticle().velocity;
-        text.append(WATCH).append("V += h·g, then P += h·V: vy is ");
+        DemoParticle ball = demo.getParticles().get(0);
+        text.append(WATCH).append("V += h·g, then P += h·V: ");
+        if (ball.hasLanded()) {
+            // The flight is over: its numbers, not the resting ball's zero velocity.
+            text.append("landed at x = ");
+            TextFormat.appendFixed(text, ball.getLandingX(), 2).append(" m after ");
+            TextFormat.appendFixed(text, ball.getLandingSeconds(), 2)
+                    .append(" s; in flight vy fell by g·h each step and vx stayed as"
+                            + " launched\n");
+            return;
+        }
+        Vector3f velocity = ball.getParticle().velocity;
+        text.append("vy is ");
         TextFormat.appendFixed(text, velocity.y, 2)
                 .append(" m/s now, falling by g·h each step; vx stays ");
         TextFormat.appendFixed(text, velocity.x, 2).append(" m/s\n");
@@ -217,22 +287,48 @@ public final class LectureTour {
 
     private static void watchDrag(DemoState demo, StringBuilder text) {
         List<DemoParticle> particles = demo.getParticles();
-        text.append(WATCH).append("|V| without drag ");
-        TextFormat.appendFixed(text, particles.get(0).getParticle().velocity.length(), 2)
-                .append(" m/s, linear ");
-        TextFormat.appendFixed(text, particles.get(1).getParticle().velocity.length(), 2)
-                .append(" m/s, quadratic ");
-        TextFormat.appendFixed(text, particles.get(2).getParticle().velocity.length(), 2)
-                .append(" m/s: drag caps the speed\n");
+        text.append(WATCH).append("without drag ");
+        appendFlight(text, particles.get(0)).append(", linear ");
+        appendFlight(text, particles.get(1)).append(", quadratic ");
+        appendFlight(text, particles.get(2)).append(landedAll(particles, 3)
+                ? ": drag shortens the flight\n" : ": drag caps the speed\n");
+    }
+
+    private static void watchWind(DemoState demo, StringBuilder text) {
+        List<DemoParticle> particles = demo.getParticles();
+        text.append(WATCH).append("drag against moving air, F = b·(W − V), one more force:"
+                + " still air ");
+        appendFlight(text, particles.get(0)).append(", in the wind ");
+        appendFlight(text, particles.get(1)).append('\n');
     }
 
     private static void watchThrust(DemoState demo, StringBuilder text) {
         List<DemoParticle> particles = demo.getParticles();
-        text.append(WATCH).append("|V| pull + drag ");
-        TextFormat.appendFixed(text, particles.get(0).getParticle().velocity.length(), 2)
-                .append(" m/s, with thrust ");
-        TextFormat.appendFixed(text, particles.get(1).getParticle().velocity.length(), 2)
-                .append(" m/s: a force is one more term in the sum\n");
+        text.append(WATCH).append("pull + drag ");
+        appendFlight(text, particles.get(0)).append(", with thrust ");
+        appendFlight(text, particles.get(1))
+                .append(": a force is one more term in the sum\n");
+    }
+
+    /** A ball's |V| while it flies, where it landed once it has: "|V| 3.20 m/s", "x = ...". */
+    private static StringBuilder appendFlight(StringBuilder text, DemoParticle particle) {
+        if (particle.hasLanded()) {
+            text.append("landed at x = ");
+            return TextFormat.appendFixed(text, particle.getLandingX(), 2).append(" m");
+        }
+        text.append("|V| ");
+        return TextFormat.appendFixed(text, particle.getParticle().velocity.length(), 2)
+                .append(" m/s");
+    }
+
+    /** @return true if the first count particles have all landed */
+    private static boolean landedAll(List<DemoParticle> particles, int count) {
+        for (int i = 0; i < count; ++i) {
+            if (!particles.get(i).hasLanded()) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static void watchSpring(DemoState demo, StringBuilder text) {
@@ -255,6 +351,23 @@ public final class LectureTour {
         TextFormat.appendFixed(text, rotation.getLagRadians(2), 4).append(" rad\n");
     }
 
+    private static void watchThrow(DemoState demo, StringBuilder text) {
+        SpinThrowDemo spin = (SpinThrowDemo) demo;
+        text.append(WATCH).append("translation and rotation stepped apart: the centre's"
+                + " parabola, the box turned ");
+        TextFormat.appendFixed(text, spin.getMeasuredAngle(), 2).append(" rad, the formula ");
+        TextFormat.appendFixed(text, spin.formulaAngle(spin.getSpinSeconds()), 2)
+                .append(" rad\n");
+    }
+
+    private static void watchRacket(DemoState demo, StringBuilder text) {
+        TennisRacketDemo racket = (TennisRacketDemo) demo;
+        text.append(WATCH).append("spin about the middle axis flips: explicit Euler ")
+                .append(racket.countFlips(0)).append(" flips, implicit midpoint ")
+                .append(racket.countFlips(1)).append("; the plates are ");
+        TextFormat.appendFixed(text, racket.angleBetweenRadians(), 2).append(" rad apart\n");
+    }
+
     private static void watchCoarseFall(DemoState demo, StringBuilder text) {
         DemoParticle ball = demo.getParticles().get(0);
         text.append(WATCH).append("h = ");
@@ -262,7 +375,8 @@ public final class LectureTour {
         if (ball.hasLanded()) {
             text.append("landed at x = ");
             TextFormat.appendFixed(text, ball.getLandingX(), 2)
-                    .append(" m; compare with h = 1/60 (one stop back)\n");
+                    .append(" m; compare with h = 1/60 s (stop ").append(FALL_STOP + 1)
+                    .append(")\n");
         } else {
             text.append("the dots are the steps; the path between them is a guess\n");
         }
@@ -270,7 +384,8 @@ public final class LectureTour {
 
     private static void watchHeights(DemoState demo, StringBuilder text) {
         AnyHeightDemo height = (AnyHeightDemo) demo;
-        text.append(WATCH).append("two launch angles reach the target: arrival height direct ");
+        text.append(WATCH).append("the targeting problem at a fixed speed: two launch angles"
+                + " reach the target, arriving direct ");
         appendArrival(text, height, false).append(", lob ");
         appendArrival(text, height, true).append('\n');
     }
@@ -311,9 +426,17 @@ public final class LectureTour {
         text.append('\n');
     }
 
+    private static void watchFountain(DemoState demo, StringBuilder text) {
+        Fountain fountain = ((FountainDemo) demo).getFountain();
+        text.append(WATCH).append("an advantage: one cheap Euler step moves every particle, ")
+                .append(fountain.countLive()).append(" in flight now, ")
+                .append(fountain.countRecycledResting()).append(" come to rest and reused\n");
+    }
+
     private static void watchTunnelling(DemoState demo, StringBuilder text) {
         TunnellingDemo tunnelling = (TunnellingDemo) demo;
-        text.append(WATCH).append("overlap test hit ").append(tunnelling.countHits(false))
+        text.append(WATCH).append("a disadvantage: a step sees only where it ends; overlap"
+                + " test hit ").append(tunnelling.countHits(false))
                 .append(" of ").append(tunnelling.countShots(false)).append(", swept test ")
                 .append(tunnelling.countHits(true)).append(" of ")
                 .append(tunnelling.countShots(true)).append("; predicted miss chance ");

@@ -12,9 +12,10 @@ import particlelab.demo.KeyBinding;
 /**
  * Walks the {@link LectureTour} in the window: a stop selects its demo, puts every parameter
  * of it back to its default, applies the stop's settings (as {@code --set} does) and shows
- * the stop's heading and "what to watch for" under the demo's HUD. PageDown and PageUp go
- * forward and back; F7 starts the tour at its first stop, or leaves it. The keys are the
- * application's, listed in every demo's help.
+ * the stop's heading and "what to watch for" under the demo's HUD, and its number and slide
+ * after the demo's title ("1/22 Collision Response", in presentation mode too). PageDown and
+ * PageUp go forward and back; F7 starts the tour at its first stop, or leaves it. The keys are
+ * the application's, listed in every demo's help.
  */
 final class TourGuide {
 
@@ -106,6 +107,8 @@ final class TourGuide {
             demo.restart();
         }
         demo.setNote(notes.get(index));
+        // The title names the stop in both modes: presentation mode shows no heading line.
+        demo.setTitleNote(LectureTour.titleNote(index));
         switcher.select(demoIndex);
         stop = index;
     }
@@ -115,6 +118,7 @@ final class TourGuide {
         if (stop >= 0) {
             int demoIndex = DemoCatalog.indexOf(LectureTour.stops().get(stop).getDemo());
             switcher.getDemos().get(demoIndex).setNote(null);
+            switcher.getDemos().get(demoIndex).setTitleNote(null);
         }
         stop = NOT_TOURING;
     }

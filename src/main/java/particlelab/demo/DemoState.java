@@ -100,6 +100,13 @@ public abstract class DemoState extends BaseAppState {
      * so the HUD's numbers are those of the picture they are drawn on.
      */
     public static final float HUD_REFRESH_SECONDS = 0f;
+    /**
+     * How long the body's band is kept for more lines than the body needs now (in seconds of
+     * frame time): long enough that numbers changing width from one refresh to the next do
+     * not move the scene, short enough that one crowded stretch (a slow frame's warning, a
+     * tour stop's long lines) does not shrink or cut the HUD for good.
+     */
+    public static final float HUD_BAND_KEEP_SECONDS = 2f;
     /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
     /** What the time scale keys multiply or divide by. */
@@ -261,6 +268,10 @@ public abstract class DemoState extends BaseAppState {
     /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
     private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
     private boolean hudDirty = true;
+    /** Lay the HUD out afresh at the next refresh: its note (a tour stop's lines) changed. */
+    private boolean hudAfresh;
+    /** How long the body has needed fewer lines than its band keeps (seconds of frame time). */
+    private float hudSlackSeconds;
     /** Lines after the demo's own on the HUD (a tour stop's), or null. */
     private HudNote note;
     private float pendingHitchSeconds;
@@ -1293,6 +1304,11 @@ public abstract class DemoState extends BaseAppState {
         hudWriter.write(storeResult, isSceneOver());
         writeOwnHudLines(storeResult);
         if (note != null) {
+            int length = storeResult.length();
+            if (length > 0 && storeResult.charAt(length - 1) != '\n') {
+                // A demo's last line without its newline: the note starts a line of its own.
+                storeResult.append('\n');
+            }
             note.append(this, storeResult);
         }
         return storeResult;
@@ -1343,6 +1359,8 @@ public abstract class DemoState extends BaseAppState {
     public void setNote(HudNote newNote) {
         note = newNote;
         hudDirty = true;
+        // Another stop's lines: the band is sized for them, not for the lines before.
+        hudAfresh = true;
         if (hud != null && presenting) {
             // On a tour stop the footer names the tour's keys too.
             hud.setFooter(buildPresentationFooter());
@@ -1542,6 +1560,7 @@ public abstract class DemoState extends BaseAppState {
         }
         hudAgeSeconds += tpf;
         if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
+            float sinceRefresh = hudAgeSeconds;
             hudAgeSeconds = 0f;
             hudDirty = false;
             if (presenting) {
@@ -1552,11 +1571,7 @@ public abstract class DemoState extends BaseAppState {
                 hud.setBody(formatHud(hudText));
             }
             hud.setWarning(warnings.format(warningText));
-            if (hud.takeLayoutChange()) {
-                // The body needed a line more: the scene's area shrank.
-                scene.layOut(hud.getLayout());
-                frameCamera();
-            }
+            fitHudBand(sinceRefresh);
         }
         parameterControls.update(hud.getLayout());
         inspector.show(drags.getPicked());
@@ -1564,6 +1579,36 @@ public abstract class DemoState extends BaseAppState {
     }
 
     // ---------------------------------------------------------------- private helpers ----
+
+    /**
+     * Keep the HUD's body band fitted to the body after a refresh. A body grown past its band
+     * is laid out again at the scale that suits the window, shrunk while the window cannot
+     * hold every line ({@link HudScale#layOut}), so lines are hidden only when even the
+     * smallest text does not fit. A new note, or a body needing fewer lines than the band for
+     * {@link #HUD_BAND_KEEP_SECONDS}, lays it out afresh: the band and the text size follow
+     * the body as it is now, not the most it ever needed. Allocates only when it lays out.
+     *
+     * @param sinceRefresh the frame time since the last refresh (in seconds, &ge;0)
+     */
+    private void fitHudBand(float sinceRefresh) {
+        boolean grew = hud.takeLayoutChange();
+        if (hud.getBodyLinesWrapped() < hud.getLayout().getBodyLinesNeeded()) {
+            hudSlackSeconds += sinceRefresh;
+        } else {
+            hudSlackSeconds = 0f;
+        }
+        boolean afresh = hudAfresh || hudSlackSeconds >= HUD_BAND_KEEP_SECONDS;
+        if (!grew && !afresh) {
+            return;
+        }
+        hudAfresh = false;
+        hudSlackSeconds = 0f;
+        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, afresh);
+        hud.takeLayoutChange();
+        // The band grew or shrank: the scene's area follows it.
+        scene.layOut(hud.getLayout());
+        frameCamera();
+    }
 
     /**
      * Lay the HUD out for the mode now chosen: presentation's slide or the full HUD, its
@@ -1599,6 +1644,9 @@ public abstract class DemoState extends BaseAppState {
         if (note != null) {
             appendApplicationKey(footer, KeyInput.KEY_PGDN, "next stop");
             appendApplicationKey(footer, KeyInput.KEY_PGUP, "previous stop");
+        }
+        if (parameterControls.isPanelVisible()) {
+            footer.append("     F2  panel open: it shows in the full HUD (F8)");
         }
         return footer.toString();
     }
@@ -1725,6 +1773,10 @@ public abstract class DemoState extends BaseAppState {
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
     private void relayOutPanel() {
+        if (presenting) {
+            // The slide has no panel: the footer says where F2's panel is.
+            hud.setFooter(buildPresentationFooter());
+        }
         parameterControls.requestSlot(hud.getLayout());
         layOutAgain();
     }

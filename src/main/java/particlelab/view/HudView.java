@@ -66,6 +66,8 @@ public final class HudView {
     private boolean presenting;
     /** How many lines the last {@link #setWrapped} wrapped its text to, before any cut. */
     private int wrappedLines;
+    /** How many lines the body's text wrapped to when last set, before any cut. */
+    private int bodyWrappedLines;
     private String titleSource = "";
     private String footerSource = "";
     private String helpSource = "";
@@ -146,6 +148,17 @@ public final class HudView {
         relayOut();
         layout.forgetBodyLines();
         relayOut();
+    }
+
+    /**
+     * Return how many lines the body's text needs now, wrapped to the band's width: fewer
+     * than {@link HudLayout#getBodyLinesNeeded()} when the band is kept for lines the body
+     * needed before.
+     *
+     * @return the count (&ge;0)
+     */
+    public int getBodyLinesWrapped() {
+        return bodyWrappedLines;
     }
 
     /**
@@ -230,6 +243,7 @@ public final class HudView {
         bodySource.append(text);
         boolean changed = setWrapped(body, bodySource, layout.getBodySize(),
                 layout.getBodyLines());
+        bodyWrappedLines = wrappedLines;
         if (wrappedLines > layout.getBodyLinesNeeded()) {
             relayOut();
             layoutChanged = true;

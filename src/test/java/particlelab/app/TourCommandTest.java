@@ -1,13 +1,16 @@
 package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.lang.management.ManagementFactory;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.view.TextFormat;
 
 /**
  * Issue 19, part 3: {@code particle-lab tour}. The stops are one list ({@link LectureTour});
@@ -43,14 +46,18 @@ class TourCommandTest {
 
     @Test
     void theLectureSlidesComeInTheLecturesOrder() {
-        String[] slides = {"Collision Response", "Collision Resolution",
-            "Collision Resolution: animation based vs physics based", "Kinematics vs dynamics",
-            "Discrete particle motion", "Example: gravitational pull", "Example: pull + drag",
-            "Example: pull + drag + thrust",
-            "Simulation recipe: gravity, drag, thrust, spring pull", "Rotation",
-            "Accuracy of simulation", "Targeting problem", "HelloAiming",
+        String[] slides = {"Collision Response", "Collision Response", "Collision Resolution",
+            "Collision Resolution", "Collision Resolution: animation based vs physics based",
+            "Kinematics vs dynamics", "Discrete particle motion", "Example: gravitational pull",
+            "Example: pull + drag", "Example: pull + drag", "Example: pull + drag + thrust",
+            "Simulation recipe: gravity, drag, thrust, spring pull", "Rotation", "Rotation",
+            "Rotation", "Accuracy of simulation", "Targeting problem", "HelloAiming",
+            "Euler steps: advantages and disadvantages",
             "Euler steps: advantages and disadvantages", "If accuracy matters: cheat",
             "Computer science approach: iterations"};
+        // The three-phase slide opens on the demo of its three phases (issue 29).
+        assertEquals("targets", LectureTour.stops().get(0).getDemo());
+        assertEquals(slides.length, LectureTour.stops().size());
         List<LectureTour.Stop> stops = LectureTour.stops();
         for (int i = 0; i < slides.length; ++i) {
             assertEquals(slides[i], stops.get(i).getSlide(), "stop " + (i + 1));
@@ -86,6 +93,36 @@ class TourCommandTest {
                     + later);
             // The same text after 4 s would be a typed figure, not the demo's own.
             assertNotEquals(early, later, stop.getSlide() + ": the watch line did not move");
+        }
+    }
+
+    /**
+     * Issue 29: after the landing, stops 6, 7 and 8 said "vy is 0.00 m/s now, falling by g·h
+     * each step; vx stays 0.00 m/s" of the ball at rest. Once every ball of a falling stop
+     * has landed, its watch line gives each landing x, as the demo computed it.
+     */
+    @Test
+    void watchLinesSayWhereTheFlightEndedOnceItIsOver() {
+        for (LectureTour.Stop stop : LectureTour.stops()) {
+            if (!List.of("pull", "drag", "thrust").contains(stop.getDemo())) {
+                continue;
+            }
+            DemoState demo = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
+            DemoCommand.applySettings(demo, stop.getSettings());
+            for (int frame = 0; frame < FRAMES; ++frame) {
+                demo.advancePhysics(TPF);
+            }
+            String line = watch(stop, demo);
+            // The balls the watch line is about: pull's one, drag's three, thrust's two.
+            int balls = stop.getDemo().equals("pull") ? 1 : stop.getDemo().equals("drag") ? 3 : 2;
+            for (int i = 0; i < balls; ++i) {
+                DemoParticle ball = demo.getParticles().get(i);
+                assertTrue(ball.hasLanded(), stop.getSlide() + ": ball " + i + " not landed");
+                String x = TextFormat.appendFixed(new StringBuilder("landed at x = "),
+                        ball.getLandingX(), 2).toString();
+                assertTrue(line.contains(x), stop.getSlide() + ": no " + x + " in " + line);
+            }
+            assertFalse(line.contains("m/s now"), line);
         }
     }
 

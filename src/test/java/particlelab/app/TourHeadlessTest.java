@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -49,7 +50,110 @@ class TourHeadlessTest {
         assertEquals(TourGuide.NOT_TOURING, (int) harness.call(() -> app.getTour().getStop()));
         for (DemoState demo : app.getSwitcher().getDemos()) {
             assertNull(demo.getNote(), demo.getTitle() + " kept a tour note");
+            assertNull(demo.getTitleNote(), demo.getTitle() + " kept the stop in its title");
         }
+    }
+
+    /**
+     * Issue 29: PageDown from stop 3 hid stop 4's heading and watch lines at 1280x720
+     * ("window too small"), because the band kept the lines the demo needed before the stop's
+     * were added and grew at the same text size. Here every stop, opened directly, by
+     * PageDown from the stop before and by PageUp from the stop after, shows its heading and
+     * watch lines whole at 1280x720 and up.
+     */
+    @Test
+    void everyStopShowsItsTourLinesAt1280x720AndUp() throws Exception {
+        ParticleLabApp app = harness.app();
+        int count = LectureTour.stops().size();
+        List<String> problems = new ArrayList<>();
+        for (int[] window : new int[][] {{1280, 720}, {1920, 1080}, {3840, 2160}}) {
+            harness.call(() -> {
+                app.getTour().leave();
+                return true;
+            });
+            for (DemoState demo : app.getSwitcher().getDemos()) {
+                harness.call(() -> {
+                    demo.layOut(window[0], window[1]);
+                    return true;
+                });
+            }
+            String size = window[0] + "x" + window[1];
+            // PageDown from stop 3 to stop 4 first: the walk the lecturer found it in.
+            for (int i = 2; i < count; ++i) {
+                int index = i;
+                harness.call(() -> {
+                    app.getTour().go(index);
+                    return true;
+                });
+                harness.awaitFrames(3);
+                press("PageDown");
+                harness.awaitFrames(3);
+                checkTourLines(app, index + 1 < count ? index + 1 : index,
+                        size + " PageDown from " + (index + 1), problems);
+            }
+            for (int i = count - 1; i > 0; --i) {
+                int index = i;
+                harness.call(() -> {
+                    app.getTour().go(index);
+                    return true;
+                });
+                harness.awaitFrames(3);
+                press("PageUp");
+                harness.awaitFrames(3);
+                checkTourLines(app, index - 1, size + " PageUp from " + (index + 1), problems);
+            }
+            for (int i = 0; i < count; ++i) {
+                int index = i;
+                harness.call(() -> {
+                    app.getTour().go(index);
+                    return true;
+                });
+                harness.awaitFrames(3);
+                checkTourLines(app, index, size + " directly", problems);
+            }
+        }
+        harness.call(() -> {
+            app.getTour().leave();
+            return true;
+        });
+        assertEquals(List.of(), problems);
+    }
+
+    /**
+     * Issue 29: presentation mode named only the demo, and F2 there did nothing one could
+     * see. Now the title names the stop, and F2's footer says where its panel is.
+     */
+    @Test
+    void presentationModeNamesTheStopAndSaysWhatF2Does() throws Exception {
+        ParticleLabApp app = harness.app();
+        harness.call(() -> {
+            app.getTour().go(0);
+            return true;
+        });
+        press("F8");
+        harness.awaitFrames(3);
+        DemoState demo = harness.call(() -> app.getSwitcher().getSelected());
+        String title = harness.call(() -> demo.getHud().getTitleText());
+        assertTrue(harness.call(() -> demo.getHud().isPresenting()), title);
+        assertTrue(title.contains("1/" + LectureTour.stops().size() + " Collision Response"),
+                title);
+        harness.call(() -> {
+            HeadlessHarness.press(demo, "F2");
+            return true;
+        });
+        harness.awaitFrames(2);
+        String footer = harness.call(() -> demo.getHud().getFooterText());
+        harness.call(() -> {
+            HeadlessHarness.press(demo, "F2");
+            return true;
+        });
+        press("F8");
+        harness.call(() -> {
+            app.getTour().leave();
+            return true;
+        });
+        harness.awaitFrames(2);
+        assertTrue(footer.contains("F2") && footer.contains("full HUD"), footer);
     }
 
     @Test
@@ -61,6 +165,30 @@ class TourHeadlessTest {
                 assertTrue(help.contains(key + " "), demo.getTitle() + ": " + key + " in\n"
                         + help);
             }
+        }
+    }
+
+    /**
+     * Check that a stop is shown with its heading and watch lines on the HUD's body as drawn,
+     * and no "window too small" in the footer.
+     */
+    private static void checkTourLines(ParticleLabApp app, int index, String where,
+            List<String> problems) throws Exception {
+        DemoState demo = app.getSwitcher().getDemos()
+                .get(DemoCatalog.indexOf(LectureTour.stops().get(index).getDemo()));
+        String shown = harness.call(() -> demo.getHud().getBodyText());
+        String footer = harness.call(() -> demo.getHud().getFooterText());
+        int stop = harness.call(() -> app.getTour().getStop());
+        String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": ";
+        // Lines are hidden from the body's end, the watch lines first, and only with the
+        // footer saying "window too small".
+        // The heading starts a line of its own (stop 15's was glued to the demo's last line).
+        if (stop != index || !shown.contains("\n" + heading)
+                || !shown.contains(LectureTour.WATCH)
+                || footer.contains("too small")) {
+            problems.add(where + ": stop " + (stop + 1) + ", footer \"" + footer
+                    + "\", body ends \""
+                    + shown.substring(Math.max(0, shown.length() - 120)) + "\"");
         }
     }
 
@@ -76,6 +204,10 @@ class TourHeadlessTest {
         String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": "
                 + stop.getSlide();
         assertTrue(hud.contains(heading) && hud.contains(LectureTour.WATCH), hud);
+        // The title names the stop too, for presentation mode, which shows no heading.
+        String title = harness.call(() -> expected.getHud().getTitleText());
+        assertTrue(title.endsWith((index + 1) + "/" + LectureTour.stops().size() + " "
+                + stop.getSlide()), title);
         // The state: each setting's value is the one the demo holds now.
         DemoState reference = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
         DemoCommand.applySettings(reference, stop.getSettings());
