@@ -22,6 +22,7 @@ import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
+import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
@@ -558,6 +559,18 @@ public final class IterativeAimingDemo extends DemoState {
     @Override
     protected void onRestart() {
         startRound();
+    }
+
+    /**
+     * A new h: the round in the air was planned (and its shots aimed) for the old one, so a
+     * new round is planned and fired for the new h, as F does. At the scene's start this is
+     * the h {@code --set} chose.
+     */
+    @Override
+    protected void onStepChanged(float stepSeconds) {
+        if (getClock().getMode() == SimulationClock.Mode.FIXED_STEP && stepSeconds != flyStep) {
+            restart();
+        }
     }
 
     @Override
