@@ -115,6 +115,12 @@ public final class HelloAimingDemo extends DemoState {
     public static final int BOTH_CODES = 2;
     /** The slide bullet's colour. */
     private static final ColorRGBA SLIDE_COLOR = new ColorRGBA(1f, 0.35f, 0.95f, 1f);
+    /**
+     * How close {@code S/(vx·h)} must be to a whole number to count as whole: the float h =
+     * 1/60 s gives 299.99998 at 20 m/s; a thousandth of a step puts the sample within
+     * {@code 0.001·h·|vy|} (under half a millimetre here) of the ground.
+     */
+    private static final double WHOLE_TOLERANCE = 1e-3;
     /** The slide bullet's square's side (m): larger than the spheres, so it shows around them. */
     private static final float SLIDE_MARK_SIZE = 1.6f;
 
@@ -626,7 +632,29 @@ public final class HelloAimingDemo extends DemoState {
                         .append(" m past the recipe's interpolated crossing");
             }
         }
-        text.append('\n').append(listing[2]).append('\n');
+        text.append('\n').append(listing[2]);
+        if (slideBullet.isStopped()) {
+            appendSampleNote(text);
+        }
+        text.append('\n');
+    }
+
+    /**
+     * Say why the slide's bullet stopped as far below as it did. A level shot's samples lie
+     * on a parabola that meets the ground at step {@code S/(vx·h) − 1} (the lecture's aim)
+     * or {@code S/(vx·h)} (the discrete one): when {@code S/(vx·h)} is whole a sample lies
+     * on {@code y = 0}, and float rounding decides whether {@code y >= 0} stops there (0 m
+     * below) or takes one more step; otherwise the first sample below is up to a step past.
+     */
+    private void appendSampleNote(StringBuilder text) {
+        double stepsToTarget = TARGET_DISTANCE / ((double) shotVx * shotStep);
+        double whole = Math.rint(stepsToTarget);
+        text.append("   // S/(vx·h) = ");
+        if (Math.abs(stepsToTarget - whole) < WHOLE_TOLERANCE) {
+            text.append((long) whole).append(" is whole: a sample on y = 0, rounding decides");
+        } else {
+            TextFormat.appendFixed(text, stepsToTarget, 3).append(": no sample on y = 0");
+        }
     }
 
     /**
