@@ -254,6 +254,18 @@ public final class DemoCommand {
     }
 
     /**
+     * Write the line that confirms a screenshot: its whole path (the file the user asked
+     * for, to be found again; control characters made visible), then what it holds.
+     *
+     * @param path the screenshot's path as given (not null)
+     * @param statistics its size and colours (not null)
+     * @return the line (not null)
+     */
+    static String writtenLine(String path, String statistics) {
+        return "screenshot " + Options.showWhole(path) + ": " + statistics;
+    }
+
+    /**
      * Set a demo's parameters from {@code --set NAME=VALUE} values, before its scene starts.
      * A value is a number or a fraction such as {@code 1/60}, or for a named state (a
      * {@link particlelab.demo.DemoParameter#choice choice}) one of its names.
@@ -572,13 +584,12 @@ public final class DemoCommand {
         if (capture != null) {
             if (!capture.isWritten()) {
                 err.println("particle-lab: the screenshot "
-                        + Options.show(screenshot.toString()) + " was not written"
+                        + Options.showWhole(screenshot.toString()) + " was not written"
                         + (capture.getFailure() == null ? ""
                                 : ": " + UsageException.reason(capture.getFailure())));
                 return FAILED;
             }
-            out.println("screenshot " + Options.show(screenshot.toString()) + ": "
-                    + capture.getStatistics());
+            out.println(writtenLine(screenshot.toString(), capture.getStatistics()));
         }
         if (exportFolder != null) {
             return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace, out,

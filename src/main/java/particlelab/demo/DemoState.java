@@ -414,6 +414,18 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * React to a new fixed step h (the {@code h} parameter: {@code --set}, the panel, a
+     * preset), once the clock steps with it: recompute whatever was derived from h (an aim,
+     * a planned round). Called once as the scene starts, with the h {@code --set} chose
+     * (the scene was built before the parameters applied), and at every later change. The
+     * default does nothing.
+     *
+     * @param stepSeconds the new h (in seconds, &gt;0)
+     */
+    protected void onStepChanged(float stepSeconds) {
+    }
+
+    /**
      * React to a reset, after the particles went back to their launch states and the clock
      * to zero. The default does nothing.
      */
@@ -875,7 +887,7 @@ public abstract class DemoState extends BaseAppState {
     public DemoParameters getParameters() {
         if (!parametersDeclared) {
             parametersDeclared = true;
-            parameterControls.declareShared(clock);
+            parameterControls.declareShared(this::applyFixedStep);
             declareParameters();
             for (int i = 0; i < parts.size(); ++i) {
                 parts.get(i).declareParameters(parameterControls.getParameters());
@@ -1963,6 +1975,14 @@ public abstract class DemoState extends BaseAppState {
         }
         declareDraggables();
         keys.setDraggables(drags.getDraggables());
+    }
+
+    /** The h parameter's setter: the clock's step, then the demo's own values from h. */
+    private void applyFixedStep(float stepSeconds) {
+        clock.setStepSeconds(stepSeconds);
+        if (sceneCreated) {
+            onStepChanged(stepSeconds);
+        }
     }
 
     private void recoverFromBlowUp() {

@@ -218,9 +218,12 @@ final class HudWriter {
         return TextFormat.appendFixed(text, scale, 3);
     }
 
-    /** A measured rate: two decimals below 10 (x5.75, x0.25), one above (x15.0). */
+    /**
+     * A measured rate: three decimals below 0.1 (x0.016 at x1/64), two below 10 (x5.75,
+     * x0.25), one above (x15.0).
+     */
     private static StringBuilder appendRate(StringBuilder text, float rate) {
-        return TextFormat.appendFixed(text, rate, rate < 10f ? 2 : 1);
+        return TextFormat.appendFixed(text, rate, rate < 0.1f ? 3 : rate < 10f ? 2 : 1);
     }
 
     /**

@@ -58,13 +58,13 @@ final class ParameterControls {
      * Declare the parameters every demo has: the fixed step h, applied live (the T key
      * switches to raw tpf, which ignores it).
      *
-     * @param clock the demo's clock (not null)
+     * @param applyStep puts a new h into the clock and tells the demo (not null)
      */
-    void declareShared(SimulationClock clock) {
+    void declareShared(DemoParameter.Setter applyStep) {
         parameters.add(new DemoParameter("h", "fixed step", "s",
                 MIN_STEP_SECONDS, MAX_STEP_SECONDS, MIN_STEP_SECONDS,
                 SimulationClock.DEFAULT_STEP_SECONDS, 4, DemoParameter.Applies.LIVE,
-                clock::setStepSeconds)
+                applyStep)
                 .withStops(STEP_STOPS).withDisplay(DemoParameter::appendStep));
     }
 

@@ -18,6 +18,7 @@ import particlelab.demo.KeyBinding;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
 import particlelab.view.WallView;
 import particlelab.world.Contact;
@@ -441,6 +442,17 @@ public final class FastBulletsDemo extends DemoState {
     @Override
     protected void onRestart() {
         fire();
+    }
+
+    /**
+     * A new h: the cheat frontier and the shot's stepped drop were for the old one, so the
+     * gun fires again with the new h (at the start, the h {@code --set} chose).
+     */
+    @Override
+    protected void onStepChanged(float stepSeconds) {
+        if (getClock().getMode() == SimulationClock.Mode.FIXED_STEP && stepSeconds != shotStep) {
+            fire();
+        }
     }
 
     @Override

@@ -18,7 +18,8 @@ import particlelab.view.TextFormat;
  *
  * <p>The Euler step: {@code V ← V + h·g}, then {@code P ← P + h·V}. What to watch for: the
  * trail is a parabola; {@code Vx} never changes while {@code Vy} falls by 9.8 m/s every
- * second; the sphere lands near {@code x = 2·Vx·Vy/g ≈ 20.4} m after {@code 2·Vy/g ≈ 2.04} s.
+ * second; the sphere lands near {@code x = 2·Vx·Vy/g ≈ 20.4} m after {@code 2·Vy/g ≈ 2.04} s
+ * (from a launch point raised to {@code y0}, after {@code T = (Vy + √(Vy² + 2·g·y0))/g}).
  * The stepped flight lands a little short of the continuous parabola (by {@code Vx·h}, about
  * 0.17 m at 60 steps per second): the samples lie on the parabola launched with
  * {@code Vy − g·h/2}. Press T and K to see what one long raw frame does to the path.
@@ -46,6 +47,10 @@ public final class GravitationalPullDemo extends DemoState {
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
     /** Scratch: the launch velocity as printed (m/s). */
     private final Vector3f shownVelocity = new Vector3f();
+    /** Scratch: the launch position now (m). */
+    private final Vector3f scratchPosition = new Vector3f();
+    /** The launch position the equations were written for (m). */
+    private final Vector3f shownPosition = new Vector3f();
     /** Scratch: g as the force has it now (m/s²). */
     private final Vector3f gravityNow = new Vector3f();
     private final Gravity gravity = new Gravity();
@@ -120,12 +125,26 @@ public final class GravitationalPullDemo extends DemoState {
         DemoParameter.appendShort(text, g, 2).append(", 0) m/s²,   V += h·g,   P += h·V\n");
         text.append("Launch V0 = (");
         DemoParameter.appendShort(text, shownVelocity.x, 2).append(", ");
-        DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands at"
-                + " 2·Vx·Vy/g = ");
-        TextFormat.appendFixed(text, 2f * shownVelocity.x * shownVelocity.y / g, 2)
-                .append(" m after 2·Vy/g = ");
-        TextFormat.appendFixed(text, 2f * shownVelocity.y / g, 2)
-                .append(" s (continuous)\n");
+        DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands Vx·T = ");
+        // The continuous parabola from the launch shown, at its height y0 (a drag can raise
+        // it) and any angle: it comes down at T = (Vy + √(Vy² + 2·g·y0))/g, which is 2·Vy/g
+        // from the ground, and Vx·T on. The launch stays at or above the ground (y0 ≥ 0).
+        ball.copyLaunchPosition(shownPosition);
+        double vy = shownVelocity.y;
+        double flightSeconds = (vy + Math.sqrt(vy * vy + 2.0 * g * Math.max(0f,
+                shownPosition.y))) / g;
+        TextFormat.appendFixed(text, shownVelocity.x * flightSeconds, 2)
+                .append(" m on at T = ");
+        TextFormat.appendFixed(text, flightSeconds, 2)
+                .append(" s (continuous; T = (Vy + √(Vy² + 2·g·y0))/g)\n");
+    }
+
+    /** A reset after a drag of the launch point: the landing line follows the new y0. */
+    @Override
+    protected void onRestart() {
+        if (!ball.copyLaunchPosition(scratchPosition).equals(shownPosition)) {
+            refreshEquations();
+        }
     }
 
     /** The slide: g alone changes V, only its y; the ball's V now, or where it landed. */

@@ -36,6 +36,7 @@ import particlelab.world.StateSlab;
  * 60 steps per second). The cure aims for the stepped bullet:
  * {@code vy = g·(S/vx + h)/2} ({@link LevelAim#discreteVy}). With raw tpf the step changes
  * from frame to frame and so does the landing: aim for the h you will actually step with.
+ * A new h ({@code --set h=1/10}, the panel) fires the shot in the air again, aimed for it.
  *
  * <p>What to watch for: the gun fires two shots at once, with the same vx, the same step and
  * the same world: the lecture's aim (yellow) and the discrete correction (cyan), each
@@ -114,6 +115,12 @@ public final class HelloAimingDemo extends DemoState {
     public static final int BOTH_CODES = 2;
     /** The slide bullet's colour. */
     private static final ColorRGBA SLIDE_COLOR = new ColorRGBA(1f, 0.35f, 0.95f, 1f);
+    /**
+     * How close {@code S/(vx·h)} must be to a whole number to count as whole: the float h =
+     * 1/60 s gives 299.99998 at 20 m/s; a thousandth of a step puts the sample within
+     * {@code 0.001·h·|vy|} (under half a millimetre here) of the ground.
+     */
+    private static final double WHOLE_TOLERANCE = 1e-3;
     /** The slide bullet's square's side (m): larger than the spheres, so it shows around them. */
     private static final float SLIDE_MARK_SIZE = 1.6f;
 
@@ -152,6 +159,8 @@ public final class HelloAimingDemo extends DemoState {
     private float shotVx;
     /** The highest vy of the shot in the air (m/s), for the framing. */
     private float shotVy;
+    /** The step h the shot in the air was aimed for (s). */
+    private float shotStep = Float.NaN;
     /** The demo's keys, named in the HUD. */
     private KeyBinding fireKey;
     private KeyBinding fasterKey;
@@ -388,8 +397,28 @@ public final class HelloAimingDemo extends DemoState {
         showFiredBullets();
         getClock().reset();
         shotVx = vx;
+        shotStep = getClock().getCurrentStepSeconds();
         frameArcs();
         ++shots;
+    }
+
+    /**
+     * A new h: the discrete aim and the predictions are for it (they read the clock). The
+     * shot in the air was aimed for the old h, so it is fired again: aimed for the new h,
+     * with the same number if it had not flown yet (a {@code --set h}), as the next shot if
+     * it was in flight. A shot that has landed stays as it landed.
+     */
+    @Override
+    protected void onStepChanged(float stepSeconds) {
+        if (getClock().getMode() != SimulationClock.Mode.FIXED_STEP
+                || stepSeconds == shotStep) {
+            return;
+        }
+        if (bullets[0].getFlightSeconds() == 0.0) {
+            reaimUnflown();
+        } else if (getLandedShotNumber() != shots) {
+            fire();
+        }
     }
 
     @Override
@@ -409,6 +438,7 @@ public final class HelloAimingDemo extends DemoState {
         }
         shots = 1;
         shotVx = vx;
+        shotStep = step;
         launchSlide();
         // The slide's code runs in the world's steps, after the world has moved the recipe's
         // bullets: both see the same h (the raw tpf in raw mode).
@@ -445,7 +475,7 @@ public final class HelloAimingDemo extends DemoState {
                 LaunchControl.MIN_G, LaunchControl.MAX_G, 0.1f, GRAVITY, 2,
                 DemoParameter.Applies.LIVE, this::setGravity));
         declareParameter(DemoParameter.choice("aim", "aims fired (next shot)", FIRING_NAMES,
-                firing, DemoParameter.Applies.LIVE, value -> firing = Math.round(value)));
+                firing, DemoParameter.Applies.LIVE, this::applyFiring));
         declareParameter(DemoParameter.choice("code", "bullets' code (next shot)", CODE_NAMES,
                 code, DemoParameter.Applies.LIVE, this::applyCode));
     }
@@ -602,7 +632,29 @@ public final class HelloAimingDemo extends DemoState {
                         .append(" m past the recipe's interpolated crossing");
             }
         }
-        text.append('\n').append(listing[2]).append('\n');
+        text.append('\n').append(listing[2]);
+        if (slideBullet.isStopped()) {
+            appendSampleNote(text);
+        }
+        text.append('\n');
+    }
+
+    /**
+     * Say why the slide's bullet stopped as far below as it did. A level shot's samples lie
+     * on a parabola that meets the ground at step {@code S/(vx·h) − 1} (the lecture's aim)
+     * or {@code S/(vx·h)} (the discrete one): when {@code S/(vx·h)} is whole a sample lies
+     * on {@code y = 0}, and float rounding decides whether {@code y >= 0} stops there (0 m
+     * below) or takes one more step; otherwise the first sample below is up to a step past.
+     */
+    private void appendSampleNote(StringBuilder text) {
+        double stepsToTarget = TARGET_DISTANCE / ((double) shotVx * shotStep);
+        double whole = Math.rint(stepsToTarget);
+        text.append("   // S/(vx·h) = ");
+        if (Math.abs(stepsToTarget - whole) < WHOLE_TOLERANCE) {
+            text.append((long) whole).append(" is whole: a sample on y = 0, rounding decides");
+        } else {
+            TextFormat.appendFixed(text, stepsToTarget, 3).append(": no sample on y = 0");
+        }
     }
 
     /**
@@ -623,6 +675,7 @@ public final class HelloAimingDemo extends DemoState {
     private void applyVx(float newVx) {
         vx = newVx;
         frameArcs();
+        reaimUnflown();
     }
 
     /**
@@ -631,9 +684,25 @@ public final class HelloAimingDemo extends DemoState {
      */
     private void applyCode(float value) {
         code = Math.round(value);
-        if (bullets[0] != null && bullets[0].getFlightSeconds() == 0.0) {
-            launchSlide();
-            showFiredBullets();
+        reaimUnflown();
+    }
+
+    /** The aim parameter's setter: like {@link #applyCode}. */
+    private void applyFiring(float value) {
+        firing = Math.round(value);
+        reaimUnflown();
+    }
+
+    /**
+     * Fire the shot in the air again, with the same number, if it has not flown a step yet:
+     * the scene fired it before the parameters applied, so a {@code --set} of h, vx, g, aim
+     * or code (or a change while paused at its start) would otherwise fly, and the HUD
+     * describe, a shot aimed with the old values.
+     */
+    private void reaimUnflown() {
+        if (shots > 0 && bullets[0] != null && bullets[0].getFlightSeconds() == 0.0) {
+            --shots;
+            fire();
         }
     }
 
@@ -652,6 +721,7 @@ public final class HelloAimingDemo extends DemoState {
         gravity.setAcceleration(gravityVector.set(0f, -newG, 0f));
         slideGravity.set(0f, -newG, 0f);
         frameArcs();
+        reaimUnflown();
     }
 
     /**
@@ -746,7 +816,7 @@ public final class HelloAimingDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1
+                return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1 + 1
                         + 1 + 3 + 3 + 1;
             }
 
@@ -764,6 +834,7 @@ public final class HelloAimingDemo extends DemoState {
                 slab.putFloat(lastShotVx);
                 slab.putFloat(shotVx);
                 slab.putFloat(shotVy);
+                slab.putFloat(shotStep);
                 slab.putInt(shotCode);
                 slab.putVector(slideBullet.position);
                 slab.putVector(slideBullet.velocity);
@@ -784,6 +855,7 @@ public final class HelloAimingDemo extends DemoState {
                 lastShotVx = slab.getFloat();
                 shotVx = slab.getFloat();
                 shotVy = slab.getFloat();
+                shotStep = slab.getFloat();
                 shotCode = slab.getInt();
                 slab.getVector(slideBullet.position);
                 slab.getVector(slideBullet.velocity);

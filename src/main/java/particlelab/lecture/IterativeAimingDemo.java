@@ -22,6 +22,7 @@ import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
+import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
@@ -560,6 +561,18 @@ public final class IterativeAimingDemo extends DemoState {
         startRound();
     }
 
+    /**
+     * A new h: the round in the air was planned (and its shots aimed) for the old one, so a
+     * new round is planned and fired for the new h, as F does. At the scene's start this is
+     * the h {@code --set} chose.
+     */
+    @Override
+    protected void onStepChanged(float stepSeconds) {
+        if (getClock().getMode() == SimulationClock.Mode.FIXED_STEP && stepSeconds != flyStep) {
+            restart();
+        }
+    }
+
     @Override
     protected void writeHudLines(StringBuilder text) {
         text.append("Strategy ").append(strategy.cliName()).append(" (")
@@ -739,19 +752,24 @@ public final class IterativeAimingDemo extends DemoState {
     }
 
     /** Shots used, the instant mode's count, and the mismatch's expected miss. */
+    /** Append "1 flown shot" or "3 flown shots": a count, a word before the noun, the noun. */
+    private static StringBuilder appendShots(StringBuilder text, int count, String adjective) {
+        return text.append(count).append(adjective).append(count == 1 ? " shot" : " shots");
+    }
+
     private void appendSummary(StringBuilder text) {
         int attempts = plan.size();
         if (isRoundOver()) {
-            text.append("Round over after ").append(plan.size() - firstFlown)
-                    .append(" flown shots (").append(roundKey.getKeyLabel())
-                    .append(" fires a new round)\n");
+            appendShots(text.append("Round over after "), plan.size() - firstFlown, " flown")
+                    .append(" (").append(roundKey.getKeyLabel()).append(" fires a new round)\n");
         }
         if (!result.isHit()) {
             text.append("No hit: ").append(result.getExplanation()).append('\n');
         } else if (instant) {
-            text.append("Instant: ").append(attempts).append(" shots in one invisible frame,"
-                    + " the last flown; the player would have watched ").append(attempts)
-                    .append(" shots, ");
+            appendShots(text.append("Instant: "), attempts, "")
+                    .append(" in one invisible frame, the last flown; the player would have"
+                            + " watched ");
+            appendShots(text, attempts, "").append(", ");
             TextFormat.appendFixed(text, watchSeconds, 1).append(" s of flight\n");
         } else {
             text.append("Shots used: ").append(fired).append(" of ").append(attempts)

@@ -72,6 +72,14 @@ public final class SimulationClock {
      */
     public static final float RATE_WINDOW_SECONDS = 0.5f;
     /**
+     * In fixed-step mode a measuring window also holds at least this many steps: steps are
+     * whole, so a window may hold one more or less than its frame time, and at x1/64 one
+     * step of 1/60 s takes 1.07 s of frame time, longer than {@link #RATE_WINDOW_SECONDS}
+     * (the rate read x0.03 or x0.00). With 8 steps the reading is within 1/8 of the rate,
+     * and the slowest scale is read every 8.5 s.
+     */
+    public static final int RATE_WINDOW_STEPS = 8;
+    /**
      * A fixed step is due once the leftover reaches h less this fraction of h. Float frame
      * times and steps add up to whole steps only to round-off (three frames of 1/90 s fall
      * 9e-10 s short of two steps of 1/60 s; 0.25 s falls 1.3e-8 s short of 15 such steps), and
@@ -460,7 +468,10 @@ public final class SimulationClock {
     private void measure(float tpf) {
         windowFrameSeconds += tpf;
         ++windowFrames;
-        if (windowFrameSeconds >= RATE_WINDOW_SECONDS) {
+        // In steps of h, half a step short for float round-off; paused, the rate is 0.
+        boolean enoughSteps = mode != Mode.FIXED_STEP || paused || windowSimulatedSeconds
+                + windowDroppedSeconds >= (RATE_WINDOW_STEPS - 0.5) * stepSeconds;
+        if (windowFrameSeconds >= RATE_WINDOW_SECONDS && enoughSteps) {
             measuredTimeScale = (float) (windowSimulatedSeconds / windowFrameSeconds);
             measuredFrameSeconds = (float) (windowFrameSeconds / windowFrames);
             measuredDropping = windowDroppedSeconds > 0.0;

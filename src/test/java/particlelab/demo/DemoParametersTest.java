@@ -123,7 +123,7 @@ class DemoParametersTest {
     @Test
     void stepStopsAndTheirDisplay() {
         ParameterControls controls = new ParameterControls();
-        controls.declareShared(new particlelab.physics.SimulationClock());
+        controls.declareShared(new particlelab.physics.SimulationClock()::setStepSeconds);
         DemoParameter h = controls.getParameters().get(0);
         assertEquals("h", h.getName());
         assertEquals(1f / 60f, h.getDefault());

@@ -24,7 +24,8 @@ class HelloAimingSlideCodeTest {
     /**
      * While the recipe's lecture bullet flies, the slide bullet's position has its bits at
      * every step (no tolerance: see {@code SlideCodeBulletTest}); the step the recipe lands in
-     * is the slide's last, {@code N = ceil(T/h − 1)} with {@code T = S/vx}; the slide stops
+     * is the slide's last, {@code N = floor(T/h)} with {@code T = S/vx} (its samples meet
+     * the ground at step {@code T/h − 1}, not whole here); the slide stops
      * there below the ground, past the recipe's interpolated crossing by less than one step
      * {@code vx·h}.
      */
@@ -49,7 +50,7 @@ class HelloAimingSlideCodeTest {
                         "y at step " + steps);
             }
         }
-        int expected = (int) Math.ceil(HelloAimingDemo.TARGET_DISTANCE / VX / H - 1.0);
+        int expected = (int) Math.floor(HelloAimingDemo.TARGET_DISTANCE / VX / H);
         assertEquals(expected, steps);
         assertEquals(expected, slide.getSteps());
         assertTrue(slide.isStopped());
@@ -100,5 +101,40 @@ class HelloAimingSlideCodeTest {
         demo.advancePhysics(H);
         // One step: vy − g·h in float, a rounding or two of about 1e-6 m/s.
         assertEquals(vy - 5f * H, demo.getSlideBullet().velocity.y, 1e-5);
+    }
+
+    /**
+     * The HUD says why the slide's bullet stops where it does: at the tour's vx = 21 m/s,
+     * {@code S/(vx·h)} = 285.714 is not whole and it stops at step floor(285.714) = 285, a
+     * visible overrun; at the lecture's 20 m/s, 300 is whole, sample 299 lies on the ground and
+     * float rounding puts it just below, so the listing stops there, 0.000 m below.
+     */
+    @Test
+    void theHudSaysWhetherASampleLiesOnTheGround() {
+        String[] expected = {"step 285: stopped 0.111 m below the ground at x = 99.750 m",
+            "   // S/(vx·h) = 285.714: no sample on y = 0\n",
+            "step 299: stopped 0.000 m below the ground at x = 99.667 m",
+            "   // S/(vx·h) = 300 is whole: a sample on y = 0, rounding decides\n"};
+        float[] speeds = {21f, 20f};
+        for (int i = 0; i < speeds.length; ++i) {
+            HelloAimingDemo demo = new HelloAimingDemo();
+            demo.getParameters().set("code", HelloAimingDemo.BOTH_CODES);
+            demo.getParameters().set("vx", speeds[i]);
+            for (int frame = 0; frame < 400; ++frame) {
+                demo.advancePhysics(H);
+            }
+            assertTrue(demo.getSlideBullet().isStopped());
+            String hud = demo.formatHud(new StringBuilder()).toString();
+            assertTrue(hud.contains(expected[2 * i]), expected[2 * i] + " in\n" + hud);
+            assertTrue(hud.contains(expected[2 * i + 1]), expected[2 * i + 1] + " in\n" + hud);
+        }
+        // The 0.111 m is the closed form's: the lecture aim's samples lie at
+        // y_n = n·h·vy − g·h²·n(n+1)/2 with vy = g·S/(2·vx); at vx = 21, h = 1/60, g = 9.8:
+        // y_285 = −0.110833 m exactly, which the HUD's three decimals show as 0.111.
+        double g = particlelab.physics.Gravity.STANDARD_G;
+        double vy = g * HelloAimingDemo.TARGET_DISTANCE / (2.0 * 21.0);
+        double h = 1.0 / 60.0;
+        int n = 285;
+        assertEquals(-0.110833, n * h * vy - g * h * h * n * (n + 1) / 2.0, 1e-6);
     }
 }

@@ -457,6 +457,28 @@ class SimulationClockTest {
     }
 
     @Test
+    void theSlowestScaleIsMeasuredOverEnoughSteps() {
+        // x1/64 at h = 1/60 s and 60 fps: one step every 64 frames (1.07 s), so a 0.5 s window
+        // held 0 or 1 step and read x0.00 or x0.03. A window of at least RATE_WINDOW_STEPS
+        // steps may hold one step more or less than its frame time: within 1/8 of x1/64.
+        SimulationClock clock = new SimulationClock();
+        clock.setTimeScale(SimulationClock.MIN_TIME_SCALE);
+        RecordingStepper stepper = new RecordingStepper();
+        float asked = SimulationClock.MIN_TIME_SCALE;
+        int measured = 0;
+        for (int i = 0; i < 60 * 120; ++i) {
+            clock.advance(H, stepper);
+            float rate = clock.getMeasuredTimeScale();
+            if (!Float.isNaN(rate)) {
+                ++measured;
+                assertEquals(asked, rate, asked / SimulationClock.RATE_WINDOW_STEPS,
+                        "frame " + i);
+            }
+        }
+        assertTrue(measured > 0);
+    }
+
+    @Test
     void measuredTimeScaleFollowsTheAskedScaleWithinItsLimitsAndIsZeroWhilePaused() {
         SimulationClock clock = new SimulationClock();
         RecordingStepper stepper = new RecordingStepper();
