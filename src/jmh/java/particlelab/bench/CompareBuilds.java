@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import particlelab.accuracy.AaControl;
+import particlelab.accuracy.HostInfo;
 
 /**
  * Two builds of the project side by side in one JVM: the same workloads ({@code MixBenchmark}'s
@@ -75,6 +76,7 @@ public final class CompareBuilds {
                     + " [MILLIS [REGEX]]]");
             System.exit(2);
         }
+        HostInfo host = HostInfo.now();
         int rounds = args.length > 2 ? Integer.parseInt(args[2]) : 7;
         long budget = (args.length > 3 ? Long.parseLong(args[3]) : 300L) * 1_000_000L;
         java.util.regex.Pattern keep = java.util.regex.Pattern.compile(
@@ -134,6 +136,7 @@ public final class CompareBuilds {
                 }
             }
         }
+        System.out.print("Host:\n" + host.block() + "\n");
         System.out.printf("| row | older (ns) | newer (ns) | A/A: older ÷ older per round |"
                 + " newer ÷ older per round | verdict |%n|---|---|---|---|---|---|%n");
         for (int r = 0; r < rows; ++r) {
