@@ -13,15 +13,21 @@ import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import particlelab.accuracy.AaControl;
+import particlelab.accuracy.HostInfo;
 
 /**
  * Two builds of the project side by side in one JVM: the same workloads ({@code MixBenchmark}'s
  * single and bulk rows) of an older and a newer build, each loaded by a class loader of its
  * own, timed in rotating rounds (the order of the two alternates from row to row and round to
  * round) by the thread's CPU time, so time the machine gives to other jobs does not count.
- * Prints each row's median ns per particle-step of both builds and the ratio newer ÷ older
- * per round, min / median / max: a ratio is trusted only as far as the rows of code neither
- * build changed (the primitive loop) stay near 1.
+ * Each row is timed three ways in every round: the older build (A), the older build again
+ * in a class loader of its own (A′, the A/A control: the same code on both sides, in the same
+ * row order), and the newer build (B). Prints each row's median ns per particle-step of A and
+ * B, the A/A ratio A′ ÷ A per round and the ratio B ÷ A per round (min / median / max each),
+ * and a verdict only where B ÷ A's median lies outside that row's A/A band
+ * ({@link particlelab.accuracy.AaControl}); otherwise "no verdict". Identical code has read as
+ * 0.73× here with a tight spread: a spread does not make a difference real, the A/A band does.
  *
  * <p>Usage: {@code CompareBuilds OLDER_CLASSES NEWER_CLASSES [ROUNDS [MILLIS [REGEX]]]}, where
  * REGEX keeps only the rows whose name it finds (default: every row), and each
@@ -47,6 +53,11 @@ public final class CompareBuilds {
         {"stepSharedBatchVector", "shared-batch-vector"},
         {"stepPrimitiveLoop", "primitive-loop"},
     };
+    /** The three timed sides: the older build, its A/A copy, the newer build. */
+    private static final int BUILDS = 3;
+    private static final int OLDER = 0;
+    private static final int CONTROL = 1;
+    private static final int NEWER = 2;
     /** Keeps the results alive so no work is dead code. */
     private static volatile Object sink;
 
@@ -65,11 +76,13 @@ public final class CompareBuilds {
                     + " [MILLIS [REGEX]]]");
             System.exit(2);
         }
+        HostInfo host = HostInfo.now();
         int rounds = args.length > 2 ? Integer.parseInt(args[2]) : 7;
         long budget = (args.length > 3 ? Long.parseLong(args[3]) : 300L) * 1_000_000L;
         java.util.regex.Pattern keep = java.util.regex.Pattern.compile(
                 args.length > 4 ? args[4] : "");
-        ClassLoader[] builds = {loader(args[0]), loader(args[1])};
+        // A, the A/A control A′ (the older build again, in a loader of its own) and B.
+        ClassLoader[] builds = {loader(args[0]), loader(args[0]), loader(args[1])};
         List<String> names = new ArrayList<>();
         List<MethodHandle[]> workloads = new ArrayList<>();
         List<Integer> units = new ArrayList<>();
@@ -79,8 +92,8 @@ public final class CompareBuilds {
                 if (!keep.matcher("single/" + mix + "/" + path[1]).find()) {
                     continue;
                 }
-                MethodHandle[] pair = new MethodHandle[2];
-                for (int b = 0; b < 2; ++b) {
+                MethodHandle[] pair = new MethodHandle[BUILDS];
+                for (int b = 0; b < BUILDS; ++b) {
                     Object scene = scene(builds[b], "OneParticleMixScene", mix, -1);
                     pair[b] = bind(scene, path[0]);
                 }
@@ -96,8 +109,8 @@ public final class CompareBuilds {
                             || !keep.matcher("bulk/" + mix + "/" + path[1] + "/" + count).find()) {
                         continue;
                     }
-                    MethodHandle[] pair = new MethodHandle[2];
-                    for (int b = 0; b < 2; ++b) {
+                    MethodHandle[] pair = new MethodHandle[BUILDS];
+                    for (int b = 0; b < BUILDS; ++b) {
                         pair[b] = bind(scene(builds[b], "BulkScene", mix, count), path[0]);
                     }
                     names.add("bulk/" + mix + "/" + path[1] + "/" + count);
@@ -107,34 +120,51 @@ public final class CompareBuilds {
             }
         }
         int rows = names.size();
-        double[][][] nanos = new double[rows][2][rounds];
+        double[][][] nanos = new double[rows][BUILDS][rounds];
         for (int r = 0; r < rows; ++r) {
-            for (int b = 0; b < 2; ++b) {
+            for (int b = 0; b < BUILDS; ++b) {
                 time(workloads.get(r)[b], 2 * budget);
             }
         }
         for (int round = 0; round < rounds; ++round) {
             for (int r = 0; r < rows; ++r) {
-                int first = (round + r) % 2;
-                for (int k = 0; k < 2; ++k) {
-                    int b = (first + k) % 2;
+                // The order of A, A′ and B rotates from row to row and round to round.
+                int first = (round + r) % BUILDS;
+                for (int k = 0; k < BUILDS; ++k) {
+                    int b = (first + k) % BUILDS;
                     nanos[r][b][round] = time(workloads.get(r)[b], budget) / units.get(r);
                 }
             }
         }
-        System.out.printf("| row | older (ns) | newer (ns) | newer ÷ older per round:"
-                + " min / median / max |%n|---|---|---|---|%n");
+        System.out.print("Host:\n" + host.block() + "\n");
+        System.out.printf("| row | older (ns) | newer (ns) | A/A: older ÷ older per round |"
+                + " newer ÷ older per round | verdict |%n|---|---|---|---|---|---|%n");
         for (int r = 0; r < rows; ++r) {
-            double[] ratio = new double[rounds];
-            for (int i = 0; i < rounds; ++i) {
-                ratio[i] = nanos[r][1][i] / nanos[r][0][i];
-            }
-            Arrays.sort(ratio);
-            String control = names.get(r).contains("primitive-loop") ? " (control)" : "";
-            System.out.printf("| `%s`%s | %.3f | %.3f | %.3f / **%.3f** / %.3f |%n",
-                    names.get(r), control, median(nanos[r][0]), median(nanos[r][1]), ratio[0],
-                    median(ratio), ratio[rounds - 1]);
+            double[] control = ratios(nanos[r][CONTROL], nanos[r][OLDER]);
+            double[] ratio = ratios(nanos[r][NEWER], nanos[r][OLDER]);
+            String unchanged = names.get(r).contains("primitive-loop") ? " (control)" : "";
+            System.out.printf("| `%s`%s | %.3f | %.3f | %s | %s | %s |%n", names.get(r),
+                    unchanged, AaControl.median(nanos[r][OLDER]),
+                    AaControl.median(nanos[r][NEWER]), spread(control), spread(ratio),
+                    AaControl.verdict(control, ratio));
         }
+    }
+
+    /** Per round, numerator ÷ denominator. */
+    private static double[] ratios(double[] numerator, double[] denominator) {
+        double[] ratio = new double[numerator.length];
+        for (int i = 0; i < ratio.length; ++i) {
+            ratio[i] = numerator[i] / denominator[i];
+        }
+        return ratio;
+    }
+
+    /** min / **median** / max of per-round ratios. */
+    private static String spread(double[] ratios) {
+        double[] sorted = ratios.clone();
+        Arrays.sort(sorted);
+        return String.format(java.util.Locale.ROOT, "%.3f / **%.3f** / %.3f", sorted[0],
+                AaControl.median(sorted), sorted[sorted.length - 1]);
     }
 
     private static ClassLoader loader(String classes) throws Exception {
@@ -177,12 +207,5 @@ public final class CompareBuilds {
             now = THREADS.getCurrentThreadCpuTime();
         } while (now - start < budgetNanos);
         return (double) (now - start) / calls;
-    }
-
-    private static double median(double[] values) {
-        double[] sorted = values.clone();
-        Arrays.sort(sorted);
-        int n = sorted.length;
-        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
     }
 }

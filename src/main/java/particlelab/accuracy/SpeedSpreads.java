@@ -32,6 +32,8 @@ final class SpeedSpreads {
     static final String PROBE_PREFIX = "lecture-over-objects";
     /** Verdict of a row too noisy to judge. */
     static final String TOO_NOISY = "too noisy: no verdict";
+    /** Verdict of a peer row from a sweep too short to warm its scenes to a steady state. */
+    static final String NOT_WARMED = "not warmed: no verdict";
     /** The peer rows' particle counts (the quick sweep leaves out the last). */
     static final int[] PEER_COUNTS = {10_000, 100_000, 1_000_000};
     /** Row: one particle through the integrator against the one-particle loop, linear drag. */
@@ -113,11 +115,21 @@ final class SpeedSpreads {
         private final double emitterHeap;
         private final double emitterDirect;
         private final double fountainHeap;
+        private final boolean warmed;
 
         PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
                 CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
                 CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
                 double fountainHeap) {
+            this(count, emitter, fountain, packed, emitterOverPacked, emitterOverFountain,
+                    emitterHeap, emitterDirect, fountainHeap, true);
+        }
+
+        PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
+                CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
+                CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
+                double fountainHeap, boolean warmed) {
+            this.warmed = warmed;
             this.count = count;
             this.emitter = emitter;
             this.fountain = fountain;
@@ -138,7 +150,7 @@ final class SpeedSpreads {
                     + spread(emitterOverFountain, 1) + "× | " + fix(emitterHeap, 0) + " + "
                     + fix(emitterDirect, 0) + " | " + fix(fountainHeap, 0) + " | "
                     + fix(PeerScenes.packedBytes(), 0) + " | "
-                    + (noisy ? TOO_NOISY : "judged") + " |";
+                    + (!warmed ? NOT_WARMED : noisy ? TOO_NOISY : "judged") + " |";
         }
     }
 
@@ -175,7 +187,8 @@ final class SpeedSpreads {
         List<PeerRow> peers = new ArrayList<>();
         for (int count : peerCounts(config)) {
             System.gc();
-            peers.add(peer(new PeerScenes(count), meter));
+            peers.add(peer(new PeerScenes(count), meter,
+                    config.size() == ReportConfig.Size.FULL));
         }
         appendTables(md, lines, peers, meter.rounds(), config);
     }
@@ -264,7 +277,9 @@ final class SpeedSpreads {
                 + "not counted); the packed state is its two arrays, 6 floats.");
         if (config.size() != ReportConfig.Size.FULL) {
             md.append(" This sweep leaves out the larger N (the full report has ")
-                    .append(PEER_COUNTS[PEER_COUNTS.length - 1]).append(").");
+                    .append(PEER_COUNTS[PEER_COUNTS.length - 1]).append(") and its rounds are "
+                    + "too short to warm these scenes to a steady state, so its rows say \"")
+                    .append(NOT_WARMED).append("\": run the full report to judge them.");
         }
         md.append("\n\n| N | emitter (ns) | `Fountain.step` (ns) | `stepPacked` (ns) "
                 + "| emitter ÷ `stepPacked` | emitter ÷ `Fountain.step` "
@@ -410,7 +425,7 @@ final class SpeedSpreads {
         return meter.measureSideBySide(workloads, units);
     }
 
-    private static PeerRow peer(PeerScenes scenes, CostMeter meter) {
+    private static PeerRow peer(PeerScenes scenes, CostMeter meter, boolean warmed) {
         int n = scenes.count();
         CostMeter.SideBySide timed = meter.measureSideBySide(new CostMeter.Workload[] {
             units -> scenes.emitterFrame(), units -> scenes.fountainStep(),
@@ -418,7 +433,7 @@ final class SpeedSpreads {
         return new PeerRow(n, timed.nanosPerUnit(0), timed.nanosPerUnit(1),
                 timed.nanosPerUnit(2), timed.ratio(0, 2), timed.ratio(0, 1),
                 scenes.emitterHeapBytes(), scenes.emitterDirectBytes(),
-                scenes.fountainHeapBytes());
+                scenes.fountainHeapBytes(), warmed);
     }
 
     /** The lecture row under the Parallel collector, from the child JVM. */

@@ -90,6 +90,8 @@ public final class SpeedVsErrorReport {
      */
     public void write(PrintStream progressOut, boolean interactive) throws IOException {
         Files.createDirectories(folder);
+        // The machine is read first, so its load average is the one at the start.
+        HostInfo host = HostInfo.now();
         BenchmarkTable jmh = jmhResults == null ? null : BenchmarkTable.read(jmhResults);
         CostMeter meter = new CostMeter(config);
         ProgressBar progress = new ProgressBar(progressOut, WorkPrecisionStudy.units()
@@ -112,7 +114,8 @@ public final class SpeedVsErrorReport {
         progress.phase("writing files and plots");
         writeCsvFiles(precision, stability, benchmarks, aiming, hitches);
         writePlots(precision, stability, benchmarks, aiming);
-        writeIndex(precision, stability, benchmarks, aiming, hitches, jmh != null, spreads);
+        writeIndex(host, precision, stability, benchmarks, aiming, hitches, jmh != null,
+                spreads);
         CollisionSection.write(config, meter, folder);
         RotationSection.write(config, meter, folder);
         progress.advance();
@@ -329,7 +332,7 @@ public final class SpeedVsErrorReport {
 
     // ---- index.md -----------------------------------------------------------------------------
 
-    private void writeIndex(WorkPrecisionStudy precision, StabilityStudy stability,
+    private void writeIndex(HostInfo host, WorkPrecisionStudy precision, StabilityStudy stability,
             BenchmarkTable benchmarks, AimingStudy aiming, HitchStudy hitches, boolean fromJmh,
             CharSequence spreads) throws IOException {
         StringBuilder md = new StringBuilder();
@@ -337,13 +340,13 @@ public final class SpeedVsErrorReport {
         md.append("Particle Lab's shared Euler integrator beside reference steppers: how far "
                 + "each is off, what it costs, when it blows up, and what that means for the "
                 + "demos. Regenerate with `gradle report` (or `particle-lab report`).\n\n");
+        md.append("## The host\n\n");
+        md.append("Every time and ratio below was measured on this machine; on another "
+                + "processor the ratios differ, so quote them with it.\n\n");
+        md.append(host.block()).append('\n');
         md.append("## How this was measured\n\n");
         md.append("- Size: **").append(config.size().name().toLowerCase(Locale.ROOT))
-                .append("**; JVM ").append(System.getProperty("java.vm.name")).append(' ')
-                .append(System.getProperty("java.version")).append(", ")
-                .append(Runtime.getRuntime().availableProcessors()).append(" cores, ")
-                .append(System.getProperty("os.name")).append(' ')
-                .append(System.getProperty("os.arch")).append(".\n");
+                .append("**.\n");
         md.append("- Every case launches from the origin at ").append(launchText())
                 .append(" m/s under g = ").append(num(CanonicalCase.G)).append(" m/s² on ")
                 .append(num(CanonicalCase.all().get(0).forces().getMassKg()))

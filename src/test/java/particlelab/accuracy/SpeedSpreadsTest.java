@@ -111,6 +111,22 @@ class SpeedSpreadsTest {
         assertTrue(text.contains("What the batch form gains a jME user"), text);
     }
 
+    @Test
+    void aQuickSweepsPeerRowsGiveNoVerdict() {
+        // The quick sweep's rounds are too short to warm the peer scenes (its fountain at 10^4
+        // read 6.83 ns against 1.81 in a full run), so even a steady row is not judged.
+        StringBuilder md = new StringBuilder();
+        CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
+        SpeedSpreads.PeerRow quick = new SpeedSpreads.PeerRow(10_000, one, one, one, one, one,
+                132.4, 36.0, 60.0, false);
+        SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(quick), 7,
+                ReportConfig.of(ReportConfig.Size.QUICK));
+        String text = md.toString();
+        assertTrue(text.contains("| 24 | not warmed: no verdict |"), text);
+        assertTrue(!text.contains("| judged |"), text);
+        assertTrue(text.contains("run the full report to judge them"), text);
+    }
+
     private static SpeedSpreads.Line line(CostMeter.Spread spread, double target,
             boolean atMost) {
         return new SpeedSpreads.Line("x", "G1, default heap", spread, target, atMost);
