@@ -325,6 +325,8 @@ final class DemoScene {
                     particle.getColor(), sphereRadius, TRAIL_POINTS);
             particle.view.getTrail().add(particle.getParticle().position);
             particle.view.getArrow().setVisible(arrowsVisible);
+            // No arrow crosses the ground band's distance marks into the footer.
+            particle.view.getArrow().setFloor(0f);
             particle.view.getTrail().setDotsVisible(dotsVisible);
             sceneNode.attachChild(particle.view.getNode());
         }
