@@ -8,6 +8,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.Camera;
 import com.jme3.scene.Node;
+import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.view.CameraFraming;
@@ -36,7 +37,8 @@ import particlelab.world.World;
  * places every text in pixels: the posts' names and the distance marks are shifted inside the
  * window or hidden where they would cover the HUD or each other; each frame, every particle's
  * label takes the first slot beside its sphere ({@link LabelSlots}) that covers no HUD text,
- * no other label, no other sphere and no trail, keeping its slot while that stays free.
+ * no other label, no other sphere and no trail, keeping its slot while that stays free; a
+ * particle whose view its demo culled has no label and is no obstacle.
  */
 final class DemoScene {
 
@@ -323,6 +325,8 @@ final class DemoScene {
                     particle.getColor(), sphereRadius, TRAIL_POINTS);
             particle.view.getTrail().add(particle.getParticle().position);
             particle.view.getArrow().setVisible(arrowsVisible);
+            // No arrow crosses the ground band's distance marks into the footer.
+            particle.view.getArrow().setFloor(0f);
             particle.view.getTrail().setDotsVisible(dotsVisible);
             sceneNode.attachChild(particle.view.getNode());
         }
@@ -712,12 +716,18 @@ final class DemoScene {
         int count = particles.size();
         for (int i = 0; i < count; ++i) {
             Vector3f position = particles.get(i).getParticle().position;
-            sphereX[i] = plane.screenX(position.x);
-            sphereY[i] = plane.screenY(position.y);
+            // A particle its demo hides (culled) covers nothing: NaN meets no slot.
+            boolean hidden = isHidden(particles.get(i).view);
+            sphereX[i] = hidden ? Float.NaN : plane.screenX(position.x);
+            sphereY[i] = hidden ? Float.NaN : plane.screenY(position.y);
         }
         float radius = sphereRadius * plane.getPixelsPerMetre();
         for (int i = 0; i < count; ++i) {
             ParticleView view = particles.get(i).view;
+            if (isHidden(view)) {
+                view.hideLabel();
+                continue;
+            }
             float width = labelWidths[i];
             gatherTrailPoints(sphereX[i], sphereY[i], radius, width);
             int current = fresh ? -1 : view.getLabelSlot();
@@ -751,6 +761,11 @@ final class DemoScene {
                 view.placeLabel(plane, labelSize, slot, chosen);
             }
         }
+    }
+
+    /** Test whether the demo hid a particle's view (sphere, trail, label) by culling it. */
+    private static boolean isHidden(ParticleView view) {
+        return view.getNode().getCullHint() == Spatial.CullHint.Always;
     }
 
     /** Test whether a rectangle holds one of the trail points gathered last. */

@@ -6,6 +6,7 @@ import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
 import java.util.List;
 import particlelab.collision.Plane;
 import particlelab.demo.DemoParameter;
@@ -18,6 +19,7 @@ import particlelab.view.CalloutLayout;
 import particlelab.view.HudFont;
 import particlelab.view.HudLayout;
 import particlelab.view.ImpulseArrows;
+import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
@@ -117,12 +119,18 @@ public final class CollisionsDemo extends DemoState {
     private static final float PADDLE_START_Y = 2f;
     private static final int BALLS = 5;
     private static final float LANE_Y = 3f;
-    /** The rack for the bodies a preset leaves out: on the ground right of the box (m). */
-    private static final float RACK_X = X_MAX + 0.8f;
-    /** The distance between two bodies on the rack, wide enough for their labels (m). */
+    /**
+     * The rack for the bodies a preset leaves out, held and hidden: on the ground right of
+     * the box, out of the framed view (m).
+     */
+    private static final float RACK_X = X_MAX + 3f;
+    /** The distance between two bodies on the rack (m). */
     private static final float RACK_SPACING = 1.5f;
-    /** The region framed: the box, the rack right of it, and room above the top wall (m). */
-    private static final float VIEW_X_MAX = RACK_X + 3f * RACK_SPACING + 2f * RADIUS;
+    /**
+     * The room framed beyond each side wall (m): more than a ball's diameter past the wall's
+     * 0.05 m, so the wall never lands on the window's edge (the panel open at 1280x720).
+     */
+    private static final float WALL_ROOM = 1f;
     private static final float VIEW_Y_MAX = Y_MAX + 0.6f;
     /** How far in front of the plane the arrows are drawn (in ball radii). */
     private static final float ARROW_LIFT = 1.2f;
@@ -287,8 +295,8 @@ public final class CollisionsDemo extends DemoState {
             getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
                     "top", X_MIN - t, Y_MAX, X_MAX + t, Y_MAX + t, grey));
         }
-        // The box, the rack right of it, and room above the top wall for the balls' labels.
-        setView(X_MIN, VIEW_X_MAX, VIEW_Y_MAX, 1f, 2, RADIUS);
+        // The box, room beside its walls, and room above the top wall for the balls' labels.
+        setView(X_MIN - WALL_ROOM, X_MAX + WALL_ROOM, VIEW_Y_MAX, 1f, 2, RADIUS);
         arrange();
         addStateRecord(impactState());
         addStateRecord(impulses);
@@ -669,6 +677,7 @@ public final class CollisionsDemo extends DemoState {
      */
     @Override
     public void update(float tpf) {
+        hideIdleBodies();
         super.update(tpf);
         showImpulses();
     }
@@ -947,8 +956,27 @@ public final class CollisionsDemo extends DemoState {
     }
 
     /**
+     * Hide the bodies the preset leaves out (sphere, trail, label), show the others; before
+     * the scene places the labels. Views exist only in a window; allocates nothing.
+     */
+    private void hideIdleBodies() {
+        for (int i = 0; i < BALLS; ++i) {
+            hideIfParked(balls[i]);
+        }
+        hideIfParked(paddle);
+    }
+
+    private void hideIfParked(DemoParticle body) {
+        ParticleView view = getView(body);
+        if (view != null) {
+            view.getNode().setCullHint(body.isParked() ? Spatial.CullHint.Always
+                    : Spatial.CullHint.Inherit);
+        }
+    }
+
+    /**
      * A body not in the preset: held on the rack, on the ground right of the box (where no
-     * ball goes), spaced so that the labels above them never meet; out of the HUD.
+     * ball goes), out of the view and hidden ({@link #hideIdleBodies}); out of the HUD.
      */
     private void park(DemoParticle body, int slot) {
         position.set(RACK_X + RACK_SPACING * slot, RADIUS, 0f);

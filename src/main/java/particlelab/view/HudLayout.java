@@ -16,9 +16,10 @@ import java.util.List;
  * help overlay covers everything below the title and is set in columns, its first section (the
  * demo's own keys) first; it shrinks its text until every column fits the window.
  *
- * <p>Text wider than the window is wrapped at spaces, continuation lines indented. The body
- * keeps the most lines it has needed so far ({@link #getBodyLinesNeeded()}), so that the
- * numbers changing from one refresh to the next never move the scene.
+ * <p>Text wider than the window is wrapped at spaces, continuation lines indented, a number
+ * kept on one line with its unit. The body keeps the most lines it has needed so far
+ * ({@link #getBodyLinesNeeded()}), so that the numbers changing from one refresh to the next
+ * never move the scene.
  *
  * <h2>A small window</h2>
  * At any size the layout gives every view a rectangle inside the window, and the scene at
@@ -77,6 +78,8 @@ public final class HudLayout {
     /** The last help line when the window cannot hold the whole help. */
     public static final String HELP_CUT_LINE = "(window too small: more help hidden)";
     private static final String CONTINUATION = "    ";
+    /** The longest word a wrap keeps with the number before it, as its unit (characters). */
+    private static final int MAX_UNIT_CHARS = 5;
     /** The space above and below the body (in body line heights). */
     private static final float BAND_SPACE = 0.2f;
     /** Presentation mode's space below the title and the formulas (in its line heights). */
@@ -840,9 +843,12 @@ public final class HudLayout {
             while (wordStart < to && text.charAt(wordStart) == ' ') {
                 ++wordStart;
             }
-            int wordEnd = wordStart;
-            while (wordEnd < to && text.charAt(wordEnd) != ' ') {
-                ++wordEnd;
+            int wordEnd = wordEnd(text, wordStart, to);
+            // A number keeps its unit: "10.57 m" moves down whole, no lone "m" below.
+            if (wordEnd > wordStart && Character.isDigit(text.charAt(wordEnd - 1))
+                    && wordEnd + 1 < to && text.charAt(wordEnd) == ' '
+                    && isUnit(text, wordEnd + 1, wordEnd(text, wordEnd + 1, to))) {
+                wordEnd = wordEnd(text, wordEnd + 1, to);
             }
             int kept = line.length();
             boolean hasWord = hasWord(line);
@@ -856,6 +862,32 @@ public final class HudLayout {
             i = wordEnd;
         }
         out.append(line);
+    }
+
+    /** @return the end of the word that starts at from (the next space, or to) */
+    private static int wordEnd(CharSequence text, int from, int to) {
+        int end = from;
+        while (end < to && text.charAt(end) != ' ') {
+            ++end;
+        }
+        return end;
+    }
+
+    /**
+     * @return true if text[from, to) reads as a unit after a number: 1 to
+     *     {@value #MAX_UNIT_CHARS} characters, no digit, no '=' (m, m/s², kg/m, N·s, %)
+     */
+    private static boolean isUnit(CharSequence text, int from, int to) {
+        if (to <= from || to - from > MAX_UNIT_CHARS) {
+            return false;
+        }
+        for (int i = from; i < to; ++i) {
+            char c = text.charAt(i);
+            if (Character.isDigit(c) || c == '=') {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static boolean hasWord(CharSequence line) {

@@ -28,6 +28,8 @@ public final class VelocityArrow {
     private final VertexBuffer positionBuffer;
     private final Geometry geometry;
     private boolean visible = true;
+    /** The lowest the arrow reaches (in metres; -∞: no floor). */
+    private float floorY = Float.NEGATIVE_INFINITY;
 
     /**
      * Create an arrow.
@@ -98,7 +100,24 @@ public final class VelocityArrow {
     }
 
     /**
-     * Point the arrow along a velocity from a start point.
+     * Keep the arrow above a height: an arrow from above it that would reach lower is drawn
+     * shorter, along the same direction, its head just above it (the ground, so that no arrow
+     * crosses the ground band and its distance marks into the footer). From below it the
+     * arrow is drawn whole.
+     *
+     * @param yMetres the height (in metres, finite; -∞ for none)
+     */
+    public void setFloor(float yMetres) {
+        if (Float.isNaN(yMetres) || yMetres == Float.POSITIVE_INFINITY) {
+            throw new IllegalArgumentException("floor y " + yMetres
+                    + " m: allowed a finite height or -infinity");
+        }
+        floorY = yMetres;
+    }
+
+    /**
+     * Point the arrow along a velocity from a start point, shortened at the floor
+     * ({@link #setFloor}).
      *
      * @param start the particle's position (in metres, not null, not modified)
      * @param velocity the particle's velocity (in m/s, not null, not modified)
@@ -111,6 +130,22 @@ public final class VelocityArrow {
             geometry.setCullHint(Spatial.CullHint.Always);
             return;
         }
+        float headHalfWidth = 2.5f * shaftHalfWidth;
+        // The head's corners reach at most its half width below the tip.
+        float lowest = floorY + headHalfWidth;
+        if (dy < 0f && start.y >= lowest && start.y + dy < lowest) {
+            float keep = (start.y - lowest) / -dy;
+            dx *= keep;
+            dy *= keep;
+            length *= keep;
+        } else if (dy < 0f && start.y < lowest && start.y >= floorY) {
+            // On the floor already, moving down: nothing to draw above it.
+            length = 0f;
+        }
+        if (!(length > MIN_LENGTH)) {
+            geometry.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
         geometry.setCullHint(Spatial.CullHint.Never);
         float ux = dx / length;
         float uy = dy / length;
@@ -118,7 +153,6 @@ public final class VelocityArrow {
         float px = -uy;
         float py = ux;
         float headLength = Math.min(0.35f * length, 6f * shaftHalfWidth);
-        float headHalfWidth = 2.5f * shaftHalfWidth;
         float neckX = start.x + ux * (length - headLength);
         float neckY = start.y + uy * (length - headLength);
         float z = start.z + 0.01f;

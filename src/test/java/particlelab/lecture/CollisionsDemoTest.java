@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -130,6 +131,40 @@ class CollisionsDemoTest {
     }
 
     @Test
+    void idleBodiesAreHiddenAndTheBoxStaysClearOfTheWindowsEdges() throws Exception {
+        // Issue 29: the balls and the paddle a preset leaves out lay labelled on a rack
+        // outside the box (head-on, cradle), and with the panel open at 1280x720 the box's
+        // left wall landed on the window's edge.
+        List<String> problems = new ArrayList<>();
+        for (CollisionsDemo.Preset preset : CollisionsDemo.Preset.values()) {
+            for (boolean panel : new boolean[] {false, true}) {
+                problems.addAll(harness.call(() -> {
+                    List<String> found = new ArrayList<>();
+                    String where = preset + (panel ? " panel open" : "");
+                    collisions.layOut(1280, 720);
+                    collisions.choose(preset);
+                    if (panel) {
+                        HeadlessHarness.press(collisions, "F2");
+                    }
+                    try {
+                        for (int frame = 0; frame < 30; ++frame) {
+                            collisions.update(H);
+                        }
+                        checkIdleAndWalls(found, where);
+                    } finally {
+                        if (panel) {
+                            HeadlessHarness.press(collisions, "F2");
+                            collisions.update(H);
+                        }
+                    }
+                    return found;
+                }));
+            }
+        }
+        assertEquals(List.of(), problems);
+    }
+
+    @Test
     void aPaddleFrameWithImpulseArrowsAllocatesNothing() throws Exception {
         boolean shown = harness.call(() -> {
             collisions.setMasses(0, 0);
@@ -152,6 +187,37 @@ class CollisionsDemoTest {
             return drawn;
         });
         assertTrue(shown, "no arrow was drawn");
+    }
+
+    /** Idle bodies shown or labelled; a wall's outer face within a ball's diameter of the edge. */
+    private static void checkIdleAndWalls(List<String> found, String where) {
+        for (DemoParticle particle : collisions.getParticles()) {
+            if (!particle.isParked()) {
+                continue;
+            }
+            if (collisions.getView(particle).getNode().getCullHint()
+                    != Spatial.CullHint.Always) {
+                found.add(where + ": idle " + particle.getLabel() + " is drawn");
+            }
+            if (!collisions.getView(particle).getLabelRect().isEmpty()) {
+                found.add(where + ": idle " + particle.getLabel() + " has a label");
+            }
+        }
+        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        PlaneView plane = collisions.getPlaneView();
+        // The walls are drawn 0.05 m thick outside their planes; a ball's diameter of room
+        // (2·RADIUS) beyond them shows the wall as a wall, not as the window's frame.
+        float room = 2f * CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
+        float left = plane.screenX(CollisionsDemo.X_MIN - 0.05f);
+        float right = plane.screenX(CollisionsDemo.X_MAX + 0.05f);
+        if (left - scene.getX() < room) {
+            found.add(where + ": the left wall at " + left + " px, the scene from "
+                    + scene.getX() + " px");
+        }
+        if (scene.getRight() - right < room) {
+            found.add(where + ": the right wall at " + right + " px, the scene to "
+                    + scene.getRight() + " px");
+        }
     }
 
     /** Run a preset for 10 s in a window: balls outside the scene, labels over texts. */
@@ -187,6 +253,10 @@ class CollisionsDemoTest {
         List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
         checkImpulses(found, where, plane, radius, hud);
         for (DemoParticle particle : collisions.getParticles()) {
+            if (particle.isParked()) {
+                // Not drawn (checked by idleBodiesAreHidden...).
+                continue;
+            }
             Vector3f p = particle.getParticle().position;
             float x = plane.screenX(p.x);
             float y = plane.screenY(p.y);

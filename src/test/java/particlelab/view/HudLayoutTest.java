@@ -244,6 +244,20 @@ class HudLayoutTest {
     }
 
     @Test
+    void wrapKeepsANumberWithItsUnit() {
+        // Issue 29 §3: a presentation readout ended "quadratic x = 10.57" with "m" alone on the
+        // next line. 12 characters fit in 120 px at size 20: "ab x = 10.57" fits, " m" does
+        // not, so the number moves down with its unit.
+        HudLayout layout = new HudLayout(MONO);
+        assertEquals("ab x =\n    10.57 m", layout.wrap("ab x = 10.57 m", 20f, 120f));
+        assertEquals("v =\n    3.5 m/s²", layout.wrap("v = 3.5 m/s²", 20f, 90f));
+        // A word that is not a unit still breaks after a number.
+        assertEquals("in 10.57\n    seconds", layout.wrap("in 10.57 seconds", 20f, 120f));
+        // A number and unit wider than the line stay whole on their own line.
+        assertEquals("x =\n    123456789 m", layout.wrap("x = 123456789 m", 20f, 80f));
+    }
+
+    @Test
     void scaleIsOneAtTheReferenceWindowAndGrowsWithIt() {
         assertEquals(1f, HudLayout.scaleFor(1280, 720), 0f);
         assertEquals(1.5f, HudLayout.scaleFor(1920, 1080), 0f);
