@@ -27,7 +27,7 @@ class BounceDemoTest {
     @Test
     void apexesFollowEToThe2nTimesH0WithinTheStepBound() throws Exception {
         float[] apexes = harness.call(() -> {
-            bounce.configure(8, 0, false, Detection.SWEPT);
+            bounce.configure(0.8f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -53,7 +53,7 @@ class BounceDemoTest {
     @Test
     void withAThresholdTheBallComesToRestExactlyStillAndTheHudSaysWhen() throws Exception {
         Object[] result = harness.call(() -> {
-            bounce.configure(5, 2, true, Detection.SWEPT);
+            bounce.configure(0.5f, 2, true, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -86,7 +86,7 @@ class BounceDemoTest {
     @Test
     void withEOneTheSweptTestKeepsItsApexesAndTheHudComparesBoth() throws Exception {
         Object[] result = harness.call(() -> {
-            bounce.configure(10, 0, false, Detection.SWEPT);
+            bounce.configure(1f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -110,13 +110,13 @@ class BounceDemoTest {
     void withCyclonesThresholdAndNoFixTheHudShowsTheFixedPointTheBallHopsAt() throws Exception {
         String[] huds = harness.call(() -> {
             String[] result = new String[3];
-            bounce.configure(8, 1, false, Detection.SWEPT);
+            bounce.configure(0.8f, 1, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }
             result[0] = bounce.formatHud(new StringBuilder()).toString();
             result[1] = String.valueOf(bounce.getRecorder(Detection.SWEPT).isResting());
-            bounce.configure(8, 2, false, Detection.SWEPT);
+            bounce.configure(0.8f, 2, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }
@@ -147,7 +147,7 @@ class BounceDemoTest {
     @Test
     void theHeightGraphKeepsABoundedNumberOfPointsOverTheWholeRun() throws Exception {
         float[] result = harness.call(() -> {
-            bounce.configure(9, 0, false, Detection.SWEPT);
+            bounce.configure(0.9f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }

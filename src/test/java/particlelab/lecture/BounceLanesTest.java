@@ -42,7 +42,7 @@ class BounceLanesTest {
     void eachLaneMovesExactlyAsItsDetectionTestAlone(int eTenths, int preset,
             boolean restingFix) {
         BounceDemo bounce = new BounceDemo();
-        bounce.configure(eTenths, preset, restingFix, Detection.SWEPT);
+        bounce.configure(eTenths / 10f, preset, restingFix, Detection.SWEPT);
         World[] alone = new World[TESTS.length];
         Body[] aloneBalls = new Body[TESTS.length];
         BounceRecorder[] aloneRecorders = new BounceRecorder[TESTS.length];
@@ -133,7 +133,7 @@ class BounceLanesTest {
     @CsvSource({"true", "false"})
     void theRestingFixTakesEGHOffEveryRebound(boolean restingFix) {
         BounceDemo bounce = new BounceDemo();
-        bounce.configure(9, 0, restingFix, Detection.SWEPT);
+        bounce.configure(0.9f, 0, restingFix, Detection.SWEPT);
         float e = bounce.getRestitution();
         List<float[]> impacts = new ArrayList<>();
         bounce.getWorld().addContactListener(new ContactListener() {
@@ -170,7 +170,7 @@ class BounceLanesTest {
     @Test
     void theHudTableListsTheChosenLanesApexesAndRatios() {
         BounceDemo bounce = new BounceDemo();
-        bounce.configure(9, 2, false, Detection.OVERLAP);
+        bounce.configure(0.9f, 2, false, Detection.OVERLAP);
         for (int frame = 0; frame < 300; ++frame) {
             bounce.advancePhysics(H);
         }
