@@ -554,7 +554,8 @@ public final class BounceDemo extends DemoState {
     }
 
     private static void appendSignedDrift(StringBuilder text, BounceRecorder from, int n) {
-        if (n == 0) {
+        // none yet, or the lane is so far ahead that its n-th apex has left its ring
+        if (n == 0 || n - 1 < from.firstKeptApex()) {
             text.append("-");
             return;
         }

@@ -19,7 +19,10 @@ import particlelab.world.World;
  */
 final class BounceRecorder implements ContactListener, StepListener, StateRecord {
 
-    /** The most apexes kept (the rest are not recorded). */
+    /**
+     * The latest apexes kept, a ring: every apex is counted, and the latest this many can be
+     * read (the HUD's table shows the last few for as long as the ball bounces).
+     */
     static final int MAX_APEXES = 64;
 
     private final Body ball;
@@ -178,15 +181,21 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     /**
      * Return the highest point after an impact, before the next.
      *
-     * @param index 0 for the apex after impact 1 (&lt;{@link #countApexes()})
+     * @param index 0 for the apex after impact 1 (from {@link #firstKeptApex()}, &lt;{@link
+     *     #countApexes()})
      * @return the height of the ball's lowest point (in metres)
      */
     float getApex(int index) {
-        if (index < 0 || index >= apexCount) {
-            throw new IndexOutOfBoundsException(
-                    "apex index must be from 0 to " + (apexCount - 1) + ", but was " + index);
+        if (index < firstKeptApex() || index >= apexCount) {
+            throw new IndexOutOfBoundsException("apex index must be from " + firstKeptApex()
+                    + " to " + (apexCount - 1) + ", but was " + index);
         }
-        return apexes[index];
+        return apexes[index % MAX_APEXES];
+    }
+
+    /** @return the index of the oldest apex still kept (0 until more than the ring holds) */
+    int firstKeptApex() {
+        return Math.max(0, apexCount - MAX_APEXES);
     }
 
     /** @return true once the ball rests on the ground */
@@ -240,8 +249,9 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     }
 
     private void closeApex() {
-        if (impacts > 0 && apex > Float.NEGATIVE_INFINITY && apexCount < MAX_APEXES) {
-            apexes[apexCount++] = apex;
+        if (impacts > 0 && apex > Float.NEGATIVE_INFINITY && apexCount < Integer.MAX_VALUE) {
+            apexes[apexCount % MAX_APEXES] = apex;
+            ++apexCount;
         }
         apex = Float.NEGATIVE_INFINITY;
     }

@@ -140,6 +140,32 @@ class BounceDemoTest {
     }
 
     /**
+     * With e = 1 the swept ball bounces for ever; after more apexes than the recorder's ring
+     * holds, the table still shows the latest four (numbered to the count), not rows 61 to 64
+     * for ever. One bounce from 4 m takes 2·t0 = 1.81 s: 9000 steps (150 s) give about 83.
+     */
+    @Test
+    void theApexTableKeepsShowingTheLatestApexesPastTheRing() throws Exception {
+        Object[] result = harness.call(() -> {
+            bounce.configure(1f, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 9000; ++frame) {
+                bounce.advance(H);
+            }
+            BounceRecorder swept = bounce.getRecorder(Detection.SWEPT);
+            int count = swept.countApexes();
+            return new Object[] {count, swept.getApex(count - 1),
+                bounce.formatHud(new StringBuilder()).toString()};
+        });
+        int count = (Integer) result[0];
+        assertTrue(count > BounceRecorder.MAX_APEXES + 4, "apexes " + count);
+        StringBuilder latest = new StringBuilder("  ").append(count).append(": ");
+        TextFormat.appendFixed(latest, (Float) result[1], 3);
+        String hud = (String) result[2];
+        assertTrue(hud.contains(latest), latest + " in " + hud);
+        assertTrue(hud.contains("  " + (count - 3) + ": "), hud);
+    }
+
+    /**
      * The height graph holds a bounded number of samples however long the balls bounce: it
      * thins itself to every other sample when full, so after 60 s it still spans the whole
      * run, from t = 0 to within its last stride of steps of 60 s.
