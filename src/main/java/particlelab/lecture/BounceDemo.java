@@ -44,17 +44,19 @@ import particlelab.world.SurfaceRule;
  * ball.</li>
  * <li>The restitution threshold (none, Cyclone's 0.25 m/s, Box2D's and Jolt's 1 m/s): an impact
  * at or below it is perfectly inelastic. It is no sure cure. Without the resting fix the
- * swept ball settles on hops of K whole steps (the rest of an impact's step has no gravity)
- * whose impact speed is the fixed point {@code w* = K·g·h/(1+e)} of
- * {@link HopCycle}: after this demo's 4 m drop with e = 0.8, K = 4 and w* = 0.363 m/s, so
- * Cyclone's 0.25 m/s never stops it (the HUD says so and shows w*) and Box2D's 1 m/s does.
- * A threshold stops a ball on its hop only when {@code w* ≤ v_t}.</li>
+ * swept ball's hops end on an orbit that repeats (the rest of an impact's step has no
+ * gravity, {@link HopCycle}): hops of K whole steps at the fixed point
+ * {@code w* = K·g·h/(1+e)}, or a cycle of several hops mixing K. After this demo's 4 m drop
+ * with e = 0.8 it is K = 4 and w* = 0.363 m/s, so Cyclone's 0.25 m/s never stops it and
+ * Box2D's 1 m/s does; with e = 0.9 it is a cycle of 64 hops, K 4 to 9, impacts 0.300 to
+ * 0.815 m/s. A threshold stops the ball once one impact comes at or below it; while none
+ * does, the HUD names the orbit, read from the latest impacts.</li>
  * <li>The resting fix (Cyclone's): the rebound leaves out the velocity gravity added during
  * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still and
  * no hop can repeat: the only cure that always works. The price is {@code e·g·h} off every
  * rebound (the HUD puts it beside the last impact's speeds), so every apex ratio reads below
- * e² (press F). With the fix off the ball hops at w* for ever unless the threshold is at or
- * above it.</li>
+ * e² (press F). With the fix off the ball hops on its orbit for ever unless the threshold
+ * reaches its slowest impact.</li>
  * <li>Overlap test against intersection (swept) test, lane beside lane: the overlap test finds
  * the ball inside the ground at the step's end and pushes it out, the swept test finds the
  * moment of impact on the step's straight segment. The HUD compares the lanes' apexes, rest
@@ -117,12 +119,6 @@ public final class BounceDemo extends DemoState {
     /** The graph's size at HUD scale 1 (pixels): the live graph's, as for the free flights. */
     private static final float GRAPH_WIDTH = 560f;
     private static final float GRAPH_HEIGHT = 220f;
-    /**
-     * The hop counts as settled (the HUD names its fixed point) once the latest impact speed
-     * is this close to w*, relatively: the speeds approach it by a factor e a hop, so a ball
-     * still wandering between hop lengths is not taken for one on its hop.
-     */
-    private static final double SETTLED_FRACTION = 0.05;
 
     /** The ground's response, the same for both lanes (it keeps no state between contacts). */
     private final ImpulseResponse response = new ImpulseResponse(START_E,
@@ -509,35 +505,43 @@ public final class BounceDemo extends DemoState {
     }
 
     /**
-     * Test whether a lane's ball, without the resting fix, has settled on a hop of K whole
-     * steps (the last two hops that long, the impact speed near w*) whose fixed-point impact
-     * speed w* is above the threshold: then it never rests. Only the swept test has such a
-     * hop ({@link HopCycle}).
+     * Test whether a lane's ball, without the resting fix, is on an orbit of hops that never
+     * ends: its latest impacts repeat a K-step fixed point or a cycle of several K
+     * ({@link HopCycle}), every impact of it above the threshold (or it would have stopped).
+     * Only the swept test has such orbits.
      */
     private boolean isOnHop(int lane, float e) {
         BounceRecorder recorder = recorders[lane];
-        float h = recorder.getLastStepSeconds();
-        if (response.isRestingFix() || getRestitution() == 1f || LANE_TESTS[lane] != Detection.SWEPT
-                || !recorder.isHopRepeating() || !(h > 0f)) {
-            return false;
-        }
-        int stepsPerHop = recorder.getLastHopSteps();
-        float g = Gravity.STANDARD_G;
-        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, g, h);
-        return !HopCycle.thresholdStops(response.getThresholdSpeed(), stepsPerHop, e, g, h)
-                && Math.abs(recorder.getLastImpactSpeed() - fixedPoint)
-                <= SETTLED_FRACTION * fixedPoint;
+        return !response.isRestingFix() && e < 1f && LANE_TESTS[lane] == Detection.SWEPT
+                && !recorder.isResting() && recorder.getLastStepSeconds() > 0f
+                && recorder.getOrbitHops() > 0;
     }
 
-    /** The reason a lane's ball on its hop ({@link #isOnHop}) never rests. */
+    /**
+     * The orbit a lane's ball on it ({@link #isOnHop}) hops on, from its latest impacts: a
+     * K-step fixed point with its w*, or a cycle of n hops with its range of K and of impact
+     * speeds, all above the threshold.
+     */
     private void appendHopCycle(StringBuilder text, int lane, float e) {
         BounceRecorder recorder = recorders[lane];
-        int stepsPerHop = recorder.getLastHopSteps();
-        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, Gravity.STANDARD_G,
-                recorder.getLastStepSeconds());
-        text.append(laneName(LANE_TESTS[lane])).append(" never at rest: hops of K = ")
-                .append(stepsPerHop).append(" steps, fixed point w* = K g h/(1+e) = ");
-        TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
+        int hops = recorder.getOrbitHops();
+        text.append(laneName(LANE_TESTS[lane])).append(" never at rest: ");
+        if (hops == 1) {
+            int stepsPerHop = recorder.getLastHopSteps();
+            double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, Gravity.STANDARD_G,
+                    recorder.getLastStepSeconds());
+            text.append("hops of K = ").append(stepsPerHop)
+                    .append(" steps, fixed point w* = K g h/(1+e) = ");
+            TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
+        } else {
+            text.append("a cycle of ").append(hops).append(" hops, K = ")
+                    .append(recorder.getHopStepsBound(hops, false)).append(" to ")
+                    .append(recorder.getHopStepsBound(hops, true)).append(" steps, impacts ");
+            TextFormat.appendFixed(text, recorder.getHopImpactBound(hops, false), 3)
+                    .append(" to ");
+            TextFormat.appendFixed(text, recorder.getHopImpactBound(hops, true), 3)
+                    .append(" m/s, all > threshold ");
+        }
         TextFormat.appendFixed(text, response.getThresholdSpeed(), 2).append(" m/s\n");
     }
 

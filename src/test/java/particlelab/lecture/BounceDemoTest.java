@@ -166,6 +166,25 @@ class BounceDemoTest {
     }
 
     /**
+     * With e = 0.9 and no threshold the demo's 4 m drop ends on a cycle of 64 hops, not on
+     * one K (HopCycleTest re-measures it in a world of its own): the HUD names the cycle from
+     * the latest impacts, and never a fixed point the ball is not on.
+     */
+    @Test
+    void withEPointNineTheHudNamesTheCycleOfHopsTheBallIsOn() throws Exception {
+        String hud = harness.call(() -> {
+            bounce.configure(0.9f, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 12_000; ++frame) {
+                bounce.advance(H);
+            }
+            return bounce.formatHud(new StringBuilder()).toString();
+        });
+        assertTrue(hud.contains("swept lane never at rest: a cycle of 64 hops, K = 4 to 9"
+                + " steps, impacts 0.300 to 0.815 m/s, all > threshold 0.00 m/s\n"), hud);
+        assertFalse(hud.contains("fixed point"), hud);
+    }
+
+    /**
      * The height graph holds a bounded number of samples however long the balls bounce: it
      * thins itself to every other sample when full, so after 60 s it still spans the whole
      * run, from t = 0 to within its last stride of steps of 60 s.
