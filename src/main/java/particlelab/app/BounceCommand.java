@@ -28,8 +28,8 @@ import particlelab.world.World;
  * <li>An impact is every resolved ground contact except those of a ball at rest: a contact
  * that leaves the ball with rebound 0 after one that did too. So a ball that settles gives a
  * last row with rebound 0 and then no more rows; a ball that hops on (no resting fix, and
- * no threshold at or above the fixed point of its hop, {@link HopCycle}) keeps giving
- * rows.</li>
+ * no threshold at or above the slowest impact of the orbit its hops end on, a fixed point or
+ * a cycle, {@link HopCycle}) keeps giving rows.</li>
  * <li>{@code rebound_speed} is the normal speed right after the impact's resolution; with the
  * resting fix on it is {@code e·(v − g·h)} rather than {@code e·v}, as in Cyclone.</li>
  * <li>The overlap test finds an impact at the end of the step it happened in: its t is that
@@ -97,14 +97,17 @@ public final class BounceCommand {
                         + " exactly still.")
                 .note("Without the resting fix a ball with e > 0 never rests unless the"
                         + " threshold stops it, and a threshold is no sure cure: with the swept"
-                        + " test the rest of an impact's step has no gravity, so the hops settle"
-                        + " on K whole steps"
-                        + " each and impact speed w* = K*g*h/(1+e) (K at most (1+e)/(1-e); which"
-                        + " K depends on the drop). The threshold stops the ball only if it is"
-                        + " at or above w*: H0 = 4 with e = 0.8 and h = 1/60 settles on K = 4,"
-                        + " w* = " + hopExample() + " m/s, above Cyclone's "
-                        + ImpulseResponse.CYCLONE_THRESHOLD + ", so that ball never rests."
-                        + " The resting fix always stops it.")
+                        + " test the rest of an impact's step has no gravity, so the hops end on"
+                        + " an orbit that repeats. Either hops of K whole steps each at the"
+                        + " fixed point w* = K*g*h/(1+e) (K at most (1+e)/(1-e)), or a cycle of"
+                        + " several hops mixing K values; which one depends on the drop. A"
+                        + " threshold stops the ball at its first impact at or below it: on a"
+                        + " fixed point only if it is at or above w*, on a cycle once it"
+                        + " reaches the cycle's slowest impact. H0 = 4 with e = 0.8 and"
+                        + " h = 1/60 settles on K = 4, w* = " + hopExample() + " m/s, above"
+                        + " Cyclone's " + ImpulseResponse.CYCLONE_THRESHOLD + ", so that ball"
+                        + " never rests; H0 = 4.25 with R = 0.25 and e = 0.9 ends on a cycle"
+                        + " of 64 hops, K 4 to 9. The resting fix always stops it.")
                 .note("Exit status: 0 on success; 2 on a bad command line, with one line on"
                         + " stderr.");
     }

@@ -283,6 +283,11 @@ public final class DemoCommand {
             String text = equals < 0 ? "" : setting.substring(equals + 1);
             int index = parameters.indexOf(name);
             String shown = SET + " " + Options.show(setting) + ": ";
+            if (equals >= 0 && index < 0) {
+                // The name is wrong whatever the value: say so before judging the value.
+                throw new UsageException(shown + "no parameter named " + Options.show(name)
+                        + "; " + parameters.describeAll());
+            }
             if (equals >= 0 && index >= 0 && parameters.get(index).isChoice()) {
                 // A named state (a preset, a strategy): its value is one of its names.
                 int choice = parameters.get(index).indexOfChoice(text);

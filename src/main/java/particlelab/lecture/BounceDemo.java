@@ -44,17 +44,19 @@ import particlelab.world.SurfaceRule;
  * ball.</li>
  * <li>The restitution threshold (none, Cyclone's 0.25 m/s, Box2D's and Jolt's 1 m/s): an impact
  * at or below it is perfectly inelastic. It is no sure cure. Without the resting fix the
- * swept ball settles on hops of K whole steps (the rest of an impact's step has no gravity)
- * whose impact speed is the fixed point {@code w* = K·g·h/(1+e)} of
- * {@link HopCycle}: after this demo's 4 m drop with e = 0.8, K = 4 and w* = 0.363 m/s, so
- * Cyclone's 0.25 m/s never stops it (the HUD says so and shows w*) and Box2D's 1 m/s does.
- * A threshold stops a ball on its hop only when {@code w* ≤ v_t}.</li>
+ * swept ball's hops end on an orbit that repeats (the rest of an impact's step has no
+ * gravity, {@link HopCycle}): hops of K whole steps at the fixed point
+ * {@code w* = K·g·h/(1+e)}, or a cycle of several hops mixing K. After this demo's 4 m drop
+ * with e = 0.8 it is K = 4 and w* = 0.363 m/s, so Cyclone's 0.25 m/s never stops it and
+ * Box2D's 1 m/s does; with e = 0.9 it is a cycle of 64 hops, K 4 to 9, impacts 0.300 to
+ * 0.815 m/s. A threshold stops the ball once one impact comes at or below it; while none
+ * does, the HUD names the orbit, read from the latest impacts.</li>
  * <li>The resting fix (Cyclone's): the rebound leaves out the velocity gravity added during
  * the step, {@code v' = e·(v − g·h)}, so a ball lying on the ground stays exactly still and
  * no hop can repeat: the only cure that always works. The price is {@code e·g·h} off every
  * rebound (the HUD puts it beside the last impact's speeds), so every apex ratio reads below
- * e² (press F). With the fix off the ball hops at w* for ever unless the threshold is at or
- * above it.</li>
+ * e² (press F). With the fix off the ball hops on its orbit for ever unless the threshold
+ * reaches its slowest impact.</li>
  * <li>Overlap test against intersection (swept) test, lane beside lane: the overlap test finds
  * the ball inside the ground at the step's end and pushes it out, the swept test finds the
  * moment of impact on the step's straight segment. The HUD compares the lanes' apexes, rest
@@ -73,10 +75,14 @@ public final class BounceDemo extends DemoState {
     /** The ball's mass (in kilograms). */
     public static final float MASS_KG = 1f;
     /**
-     * The restitution e at the start, in tenths: 0.9, whose many fast bounces keep the step's
-     * O(h) error of the apex ratios near 0.01 (it grows as 2·g·h over the rebound speed).
+     * The restitution e at the start: 0.9, whose many fast bounces keep the step's O(h) error
+     * of the apex ratios near 0.01 (it grows as 2·g·h over the rebound speed).
      */
-    public static final int START_E_TENTHS = 9;
+    public static final float START_E = 0.9f;
+    /** What the Up and Down keys (and the panel's keys) add to e or take from it. */
+    static final float E_KEY_STEP = 0.1f;
+    /** Decimals of e on the panel and the HUD: any e from 0 to 1 is taken as given. */
+    private static final int E_DIGITS = 2;
     /** The threshold presets (in m/s): none, Cyclone's, Box2D's and Jolt's. */
     static final float[] THRESHOLDS = {0f, ImpulseResponse.CYCLONE_THRESHOLD,
         ImpulseResponse.BOX2D_THRESHOLD};
@@ -113,24 +119,15 @@ public final class BounceDemo extends DemoState {
     /** The graph's size at HUD scale 1 (pixels): the live graph's, as for the free flights. */
     private static final float GRAPH_WIDTH = 560f;
     private static final float GRAPH_HEIGHT = 220f;
-    /**
-     * The hop counts as settled (the HUD names its fixed point) once the latest impact speed
-     * is this close to w*, relatively: the speeds approach it by a factor e a hop, so a ball
-     * still wandering between hop lengths is not taken for one on its hop.
-     */
-    private static final double SETTLED_FRACTION = 0.05;
 
     /** The ground's response, the same for both lanes (it keeps no state between contacts). */
-    private final ImpulseResponse response = new ImpulseResponse(START_E_TENTHS / 10f,
+    private final ImpulseResponse response = new ImpulseResponse(START_E,
             THRESHOLDS[START_THRESHOLD], false);
     private final Body[] balls = new Body[LANE_TESTS.length];
     private final BounceRecorder[] recorders = new BounceRecorder[LANE_TESTS.length];
-    private int eTenths = START_E_TENTHS;
-    private int thresholdPreset = START_THRESHOLD;
     /** The lane whose apex table and last impact the HUD shows. */
     private Detection detection = Detection.SWEPT;
-    private IdealBounce ideal = new IdealBounce(DROP_HEIGHT, START_E_TENTHS / 10.0,
-            Gravity.STANDARD_G);
+    private IdealBounce ideal = new IdealBounce(DROP_HEIGHT, START_E, Gravity.STANDARD_G);
     private CollisionSounds sounds;
     /** The height graph (null without a window). */
     private LiveGraph graph;
@@ -169,7 +166,6 @@ public final class BounceDemo extends DemoState {
             addStateRecord(recorders[lane]);
         }
         addStateRecord(graphState());
-        applyResponse();
         // The balls hit the ground at 6 m/s and more: their arrows would cross the ground's
         // labels and the footer (the HUD gives V; V shows the arrows).
         hideArrowsAtStart();
@@ -181,26 +177,32 @@ public final class BounceDemo extends DemoState {
 
     @Override
     protected void declareParameters() {
-        // A new e drops the balls again, as the Up and Down keys do.
+        // Each parameter is one value, put straight into the object that uses it (the shared
+        // ground response, the ideal ball, the table's lane); a change drops the balls again,
+        // as the keys do. Every other parameter keeps its value: none is written back.
         declareParameter(new DemoParameter("e", "restitution", "", 0f, 1f,
-                0.1f, START_E_TENTHS / 10f, 1, DemoParameter.Applies.LIVE, value -> {
-                    int tenths = Math.round(value * 10f);
-                    if (tenths != eTenths) {
-                        configure(tenths, thresholdPreset, response.isRestingFix(), detection);
+                E_KEY_STEP, START_E, E_DIGITS, DemoParameter.Applies.LIVE, value -> {
+                    if (value != response.getRestitution()) {
+                        response.setRestitution(value);
+                        ideal = new IdealBounce(DROP_HEIGHT, value, Gravity.STANDARD_G);
+                        refreshEquations();
+                        restart();
                     }
                 }));
         // The threshold, the resting fix and the lane in the apex table, as P, F and O do.
         declareParameter(DemoParameter.choice("threshold", "threshold speed", THRESHOLD_KEYS,
-                thresholdPreset, DemoParameter.Applies.LIVE, value -> {
-                    if (Math.round(value) != thresholdPreset) {
-                        configure(eTenths, Math.round(value), response.isRestingFix(),
-                                detection);
+                START_THRESHOLD, DemoParameter.Applies.LIVE, value -> {
+                    float speed = THRESHOLDS[Math.round(value)];
+                    if (speed != response.getThresholdSpeed()) {
+                        response.setThresholdSpeed(speed);
+                        restart();
                     }
                 }));
         declareParameter(DemoParameter.choice("fix", "resting fix", new String[] {"off", "on"},
                 response.isRestingFix() ? 1 : 0, DemoParameter.Applies.LIVE, value -> {
                     if ((Math.round(value) == 1) != response.isRestingFix()) {
-                        configure(eTenths, thresholdPreset, Math.round(value) == 1, detection);
+                        response.setRestingFix(Math.round(value) == 1);
+                        restart();
                     }
                 }));
         // Both lanes always run; the choice is the lane whose apex table the HUD shows.
@@ -210,7 +212,8 @@ public final class BounceDemo extends DemoState {
                     Detection wanted = Math.round(value) == 0 ? Detection.SWEPT
                             : Detection.OVERLAP;
                     if (wanted != detection) {
-                        configure(eTenths, thresholdPreset, response.isRestingFix(), wanted);
+                        detection = wanted;
+                        restart();
                     }
                 }));
     }
@@ -286,12 +289,12 @@ public final class BounceDemo extends DemoState {
         float e = getRestitution();
         float g = Gravity.STANDARD_G;
         text.append("e = ");
-        TextFormat.appendFixed(text, e, 1).append(", e^2 = ");
+        appendRestitution(text, e).append(", e^2 = ");
         TextFormat.appendFixed(text, e * e, RATIO_DIGITS).append("   threshold ");
-        TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s (")
-                .append(THRESHOLD_NAMES[thresholdPreset])
+        TextFormat.appendFixed(text, response.getThresholdSpeed(), 2).append(" m/s (")
+                .append(THRESHOLD_NAMES[thresholdPreset()])
                 .append(")   time to rest: T = t0 (1+e)/(1-e) = ");
-        if (eTenths == 10) {
+        if (getRestitution() == 1f) {
             text.append("never (e = 1)\n");
         } else {
             TextFormat.appendFixed(text, ideal.getRestSeconds(), 3).append(" s\n");
@@ -308,7 +311,7 @@ public final class BounceDemo extends DemoState {
         if (isOnHop(SWEPT_LANE, e)) {
             appendHopCycle(text, SWEPT_LANE, e);
         }
-        if (eTenths == 10) {
+        if (getRestitution() == 1f) {
             appendDrift(text);
         }
         sounds.getPlayer().getLog().appendLatest(text).append('\n');
@@ -331,7 +334,25 @@ public final class BounceDemo extends DemoState {
      * @return e (0 to 1)
      */
     public float getRestitution() {
-        return eTenths / 10f;
+        return response.getRestitution();
+    }
+
+    /**
+     * Return the threshold speed the lanes' ground applies now.
+     *
+     * @return v_t (in m/s, &ge;0)
+     */
+    public float getThresholdSpeed() {
+        return response.getThresholdSpeed();
+    }
+
+    /**
+     * Test whether the lanes' ground applies the resting fix now.
+     *
+     * @return true if it does
+     */
+    public boolean isRestingFix() {
+        return response.isRestingFix();
     }
 
     /**
@@ -385,33 +406,26 @@ public final class BounceDemo extends DemoState {
 
     /**
      * Set e, the threshold preset, the resting fix and the lane in the apex table, then drop
-     * both balls again (what the keys do, for tests and scripts).
+     * both balls again (what the keys do, for tests and scripts): through the demo's
+     * parameters, so the panel, {@code --set} and the keys change the same values.
      *
-     * @param newETenths e in tenths (0 to 10)
+     * @param restitution e (from 0 to 1)
      * @param preset index into the threshold presets (0 to 2)
      * @param restingFix true for the resting fix
      * @param newDetection the lane in the apex table (not null)
      */
-    public void configure(int newETenths, int preset, boolean restingFix,
+    public void configure(float restitution, int preset, boolean restingFix,
             Detection newDetection) {
-        if (newETenths < 0 || newETenths > 10 || preset < 0 || preset >= THRESHOLDS.length
-                || newDetection == null) {
-            throw new IllegalArgumentException("e tenths must be 0 to 10 and preset 0 to "
-                    + (THRESHOLDS.length - 1) + ", but were " + newETenths + ", " + preset
+        if (!(restitution >= 0f && restitution <= 1f) || preset < 0
+                || preset >= THRESHOLDS.length || newDetection == null) {
+            throw new IllegalArgumentException("e must be 0 to 1 and preset 0 to "
+                    + (THRESHOLDS.length - 1) + ", but were " + restitution + ", " + preset
                     + ", " + newDetection);
         }
-        eTenths = newETenths;
-        thresholdPreset = preset;
-        response.setRestingFix(restingFix);
-        detection = newDetection;
-        ideal = new IdealBounce(DROP_HEIGHT, eTenths / 10.0, Gravity.STANDARD_G);
-        applyResponse();
-        refreshEquations();
-        // The panel shows the e the keys or a caller chose.
-        getParameters().set("e", eTenths / 10f);
-        getParameters().set("threshold", thresholdPreset);
+        getParameters().set("e", restitution);
+        getParameters().set("threshold", preset);
         getParameters().set("fix", restingFix ? 1 : 0);
-        getParameters().set("detection", detection == Detection.SWEPT ? 0 : 1);
+        getParameters().set("detection", newDetection == Detection.SWEPT ? 0 : 1);
         restart();
     }
 
@@ -459,7 +473,7 @@ public final class BounceDemo extends DemoState {
         if (recorder.isResting()) {
             text.append("at rest at ");
             TextFormat.appendFixed(text, recorder.getRestSeconds(), 3).append(" s");
-        } else if (eTenths == 10) {
+        } else if (getRestitution() == 1f) {
             text.append("never at rest (e = 1)");
         } else if (isOnHop(lane, e)) {
             text.append("never at rest");
@@ -491,36 +505,44 @@ public final class BounceDemo extends DemoState {
     }
 
     /**
-     * Test whether a lane's ball, without the resting fix, has settled on a hop of K whole
-     * steps (the last two hops that long, the impact speed near w*) whose fixed-point impact
-     * speed w* is above the threshold: then it never rests. Only the swept test has such a
-     * hop ({@link HopCycle}).
+     * Test whether a lane's ball, without the resting fix, is on an orbit of hops that never
+     * ends: its latest impacts repeat a K-step fixed point or a cycle of several K
+     * ({@link HopCycle}), every impact of it above the threshold (or it would have stopped).
+     * Only the swept test has such orbits.
      */
     private boolean isOnHop(int lane, float e) {
         BounceRecorder recorder = recorders[lane];
-        float h = recorder.getLastStepSeconds();
-        if (response.isRestingFix() || eTenths == 10 || LANE_TESTS[lane] != Detection.SWEPT
-                || !recorder.isHopRepeating() || !(h > 0f)) {
-            return false;
-        }
-        int stepsPerHop = recorder.getLastHopSteps();
-        float g = Gravity.STANDARD_G;
-        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, g, h);
-        return !HopCycle.thresholdStops(THRESHOLDS[thresholdPreset], stepsPerHop, e, g, h)
-                && Math.abs(recorder.getLastImpactSpeed() - fixedPoint)
-                <= SETTLED_FRACTION * fixedPoint;
+        return !response.isRestingFix() && e < 1f && LANE_TESTS[lane] == Detection.SWEPT
+                && !recorder.isResting() && recorder.getLastStepSeconds() > 0f
+                && recorder.getOrbitHops() > 0;
     }
 
-    /** The reason a lane's ball on its hop ({@link #isOnHop}) never rests. */
+    /**
+     * The orbit a lane's ball on it ({@link #isOnHop}) hops on, from its latest impacts: a
+     * K-step fixed point with its w*, or a cycle of n hops with its range of K and of impact
+     * speeds, all above the threshold.
+     */
     private void appendHopCycle(StringBuilder text, int lane, float e) {
         BounceRecorder recorder = recorders[lane];
-        int stepsPerHop = recorder.getLastHopSteps();
-        double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, Gravity.STANDARD_G,
-                recorder.getLastStepSeconds());
-        text.append(laneName(LANE_TESTS[lane])).append(" never at rest: hops of K = ")
-                .append(stepsPerHop).append(" steps, fixed point w* = K g h/(1+e) = ");
-        TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
-        TextFormat.appendFixed(text, THRESHOLDS[thresholdPreset], 2).append(" m/s\n");
+        int hops = recorder.getOrbitHops();
+        text.append(laneName(LANE_TESTS[lane])).append(" never at rest: ");
+        if (hops == 1) {
+            int stepsPerHop = recorder.getLastHopSteps();
+            double fixedPoint = HopCycle.fixedPointSpeed(stepsPerHop, e, Gravity.STANDARD_G,
+                    recorder.getLastStepSeconds());
+            text.append("hops of K = ").append(stepsPerHop)
+                    .append(" steps, fixed point w* = K g h/(1+e) = ");
+            TextFormat.appendFixed(text, fixedPoint, 3).append(" m/s > threshold ");
+        } else {
+            text.append("a cycle of ").append(hops).append(" hops, K = ")
+                    .append(recorder.getHopStepsBound(hops, false)).append(" to ")
+                    .append(recorder.getHopStepsBound(hops, true)).append(" steps, impacts ");
+            TextFormat.appendFixed(text, recorder.getHopImpactBound(hops, false), 3)
+                    .append(" to ");
+            TextFormat.appendFixed(text, recorder.getHopImpactBound(hops, true), 3)
+                    .append(" m/s, all > threshold ");
+        }
+        TextFormat.appendFixed(text, response.getThresholdSpeed(), 2).append(" m/s\n");
     }
 
     private void appendDrift(StringBuilder text) {
@@ -536,7 +558,8 @@ public final class BounceDemo extends DemoState {
     }
 
     private static void appendSignedDrift(StringBuilder text, BounceRecorder from, int n) {
-        if (n == 0) {
+        // none yet, or the lane is so far ahead that its n-th apex has left its ring
+        if (n == 0 || n - 1 < from.firstKeptApex()) {
             text.append("-");
             return;
         }
@@ -545,6 +568,11 @@ public final class BounceDemo extends DemoState {
             text.append('+');
         }
         TextFormat.appendFixed(text, drift, 4).append(" m");
+    }
+
+    /** e with one decimal on the tenths the keys reach, else two (as the panel shows it). */
+    private static StringBuilder appendRestitution(StringBuilder text, float e) {
+        return TextFormat.appendFixed(text, e, Math.round(e * 10f) / 10f == e ? 1 : E_DIGITS);
     }
 
     private static String laneName(Detection test) {
@@ -560,36 +588,34 @@ public final class BounceDemo extends DemoState {
                 && a.getHeight() == b.getHeight();
     }
 
-    private void changeE(int tenths) {
-        configure(Math.max(0, Math.min(10, eTenths + tenths)), thresholdPreset,
-                response.isRestingFix(), detection);
+    /** The Up and Down keys: e ± 0.1, kept to hundredths (0.33 + 0.1 is 0.43) and 0 to 1. */
+    private void changeE(int direction) {
+        float hundredths = Math.round((getRestitution() + direction * E_KEY_STEP) * 100f);
+        getParameters().set("e", Math.max(0f, Math.min(1f, hundredths / 100f)));
     }
 
     private void nextThreshold() {
-        configure(eTenths, (thresholdPreset + 1) % THRESHOLDS.length, response.isRestingFix(),
-                detection);
+        getParameters().set("threshold", (thresholdPreset() + 1) % THRESHOLDS.length);
     }
 
     private void toggleRestingFix() {
-        configure(eTenths, thresholdPreset, !response.isRestingFix(), detection);
+        getParameters().set("fix", response.isRestingFix() ? 0 : 1);
     }
 
     private void toggleDetection() {
-        configure(eTenths, thresholdPreset, response.isRestingFix(),
-                detection == Detection.SWEPT ? Detection.OVERLAP : Detection.SWEPT);
+        getParameters().set("detection", detection == Detection.SWEPT ? 1 : 0);
     }
 
-    /** Give the lanes' shared ground response the e and threshold chosen. */
-    private void applyResponse() {
-        response.setRestitution(getRestitution());
-        response.setThresholdSpeed(THRESHOLDS[thresholdPreset]);
+    /** The threshold preset chosen: an index into {@link #THRESHOLDS}. */
+    private int thresholdPreset() {
+        return Math.round(getParameters().getValue("threshold"));
     }
 
     /** The slide: the impact law and the apex it predicts; the latest apex ratio. */
     @Override
     protected void writePresentation(particlelab.demo.Presentation slide) {
         float e = getRestitution();
-        TextFormat.appendFixed(slide.formula().append("impact: v_n' = -e v_n,   e = "), e, 1)
+        appendRestitution(slide.formula().append("impact: v_n' = -e v_n,   e = "), e)
                 .append(";   apex h_n = e^2n h0");
         StringBuilder readout = slide.readout();
         // the table's lane, the one the HUD's apex table shows

@@ -3,6 +3,7 @@ package particlelab.lecture;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
+import particlelab.world.HopCycle;
 import particlelab.world.StateRecord;
 import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
@@ -19,8 +20,28 @@ import particlelab.world.World;
  */
 final class BounceRecorder implements ContactListener, StepListener, StateRecord {
 
-    /** The most apexes kept (the rest are not recorded). */
+    /**
+     * The latest apexes kept, a ring: every apex is counted, and the latest this many can be
+     * read (the HUD's table shows the last few for as long as the ball bounces).
+     */
     static final int MAX_APEXES = 64;
+    /**
+     * The latest hops kept (whole steps and the impact speed that ended each), a ring twice
+     * as long as the longest orbit looked for, {@link #MAX_ORBIT_HOPS}.
+     */
+    static final int HOP_HISTORY = 256;
+    /**
+     * The longest orbit of hops looked for: twice the 64-hop cycle of the demo's own 4 m drop
+     * at e = 0.9 ({@link particlelab.world.HopCycle}).
+     */
+    static final int MAX_ORBIT_HOPS = HOP_HISTORY / 2;
+    /**
+     * How close the impact speeds one round apart must be, relatively, for the hops to count
+     * as on their orbit: the speeds close in on it by about a factor e a hop, so this is
+     * reached some 60 hops after a ball first comes within 0.5 of it at e = 0.9, and float
+     * round-off (1e-7 relatively) is far below it.
+     */
+    static final double ORBIT_TOLERANCE = 1e-3;
 
     private final Body ball;
     private final float[] apexes = new float[MAX_APEXES];
@@ -40,8 +61,12 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     private long lastImpactStep = -1L;
     /** Whole steps between the last two impacts, K (0 until there are two). */
     private int lastHopSteps;
-    /** Whole steps of the hop before that (0 until there are three impacts). */
-    private int previousHopSteps;
+    /** The latest hops' whole steps, a ring: hop m at m % HOP_HISTORY. */
+    private final int[] hopSteps = new int[HOP_HISTORY];
+    /** The impact speed that ended each of those hops (m/s). */
+    private final float[] hopImpactSpeeds = new float[HOP_HISTORY];
+    /** The hops completed (two impacts make one). */
+    private int hopCount;
     /** The step h of the latest step (in seconds, 0 before one). */
     private float lastStepSeconds;
 
@@ -70,8 +95,12 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
         impactStepSeconds = currentStepSeconds;
         long step = world.getStepCount();
         if (lastImpactStep >= 0L) {
-            previousHopSteps = lastHopSteps;
             lastHopSteps = (int) Math.min(Integer.MAX_VALUE, step - lastImpactStep);
+            if (hopCount < Integer.MAX_VALUE) {
+                hopSteps[hopCount % HOP_HISTORY] = lastHopSteps;
+                hopImpactSpeeds[hopCount % HOP_HISTORY] = lastImpactSpeed;
+                ++hopCount;
+            }
         }
         lastImpactStep = step;
         resting = rebound == 0f;
@@ -96,7 +125,7 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     /** @return the ints of the recorder's state (for the ring) */
     @Override
     public int countStateInts() {
-        return MAX_APEXES + 1 + 1 + 1 + 1 + 2 + 1 + 2 + 1 + 1 + 1 + 3;
+        return MAX_APEXES + 1 + 1 + 1 + 1 + 2 + 1 + 2 + 1 + 2 * HOP_HISTORY + 1 + 1 + 3;
     }
 
     /**
@@ -117,7 +146,11 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
         slab.putFloat(lastImpactSpeed);
         slab.putLong(lastImpactStep);
         slab.putInt(lastHopSteps);
-        slab.putInt(previousHopSteps);
+        for (int i = 0; i < HOP_HISTORY; ++i) {
+            slab.putInt(hopSteps[i]);
+            slab.putFloat(hopImpactSpeeds[i]);
+        }
+        slab.putInt(hopCount);
         slab.putFloat(lastStepSeconds);
         slab.putFloat(lastReboundSpeed);
         slab.putFloat(currentStepSeconds);
@@ -142,7 +175,11 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
         lastImpactSpeed = slab.getFloat();
         lastImpactStep = slab.getLong();
         lastHopSteps = slab.getInt();
-        previousHopSteps = slab.getInt();
+        for (int i = 0; i < HOP_HISTORY; ++i) {
+            hopSteps[i] = slab.getInt();
+            hopImpactSpeeds[i] = slab.getFloat();
+        }
+        hopCount = slab.getInt();
         lastStepSeconds = slab.getFloat();
         lastReboundSpeed = slab.getFloat();
         currentStepSeconds = slab.getFloat();
@@ -161,7 +198,7 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
         impactStepSeconds = 0f;
         lastImpactStep = -1L;
         lastHopSteps = 0;
-        previousHopSteps = 0;
+        hopCount = 0;
         lastStepSeconds = 0f;
     }
 
@@ -178,15 +215,21 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     /**
      * Return the highest point after an impact, before the next.
      *
-     * @param index 0 for the apex after impact 1 (&lt;{@link #countApexes()})
+     * @param index 0 for the apex after impact 1 (from {@link #firstKeptApex()}, &lt;{@link
+     *     #countApexes()})
      * @return the height of the ball's lowest point (in metres)
      */
     float getApex(int index) {
-        if (index < 0 || index >= apexCount) {
-            throw new IndexOutOfBoundsException(
-                    "apex index must be from 0 to " + (apexCount - 1) + ", but was " + index);
+        if (index < firstKeptApex() || index >= apexCount) {
+            throw new IndexOutOfBoundsException("apex index must be from " + firstKeptApex()
+                    + " to " + (apexCount - 1) + ", but was " + index);
         }
-        return apexes[index];
+        return apexes[index % MAX_APEXES];
+    }
+
+    /** @return the index of the oldest apex still kept (0 until more than the ring holds) */
+    int firstKeptApex() {
+        return Math.max(0, apexCount - MAX_APEXES);
     }
 
     /** @return true once the ball rests on the ground */
@@ -225,13 +268,46 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     }
 
     /**
-     * Test whether the last two hops took the same whole number of steps, as on the hop a ball
-     * without the resting fix settles on ({@link particlelab.world.HopCycle}).
+     * Return the orbit the latest hops repeat ({@link HopCycle#findOrbitHops}): 1 on a K-step
+     * fixed point, n &gt; 1 on a cycle of n hops. Allocates nothing.
      *
-     * @return true after three impacts with the same K between them
+     * @return the hops in one round of it, 0 while the hops repeat none (yet)
      */
-    boolean isHopRepeating() {
-        return lastHopSteps > 0 && lastHopSteps == previousHopSteps;
+    int getOrbitHops() {
+        return HopCycle.findOrbitHops(hopSteps, hopImpactSpeeds, hopCount, MAX_ORBIT_HOPS,
+                ORBIT_TOLERANCE);
+    }
+
+    /**
+     * Return the fewest or the most whole steps among the latest hops.
+     *
+     * @param hops how many of the latest hops (1 to the hops kept)
+     * @param most true for the most, false for the fewest
+     * @return K (&ge;1)
+     */
+    int getHopStepsBound(int hops, boolean most) {
+        int bound = hopSteps[(hopCount - 1) % HOP_HISTORY];
+        for (int back = 1; back < hops; ++back) {
+            int steps = hopSteps[(hopCount - 1 - back) % HOP_HISTORY];
+            bound = most ? Math.max(bound, steps) : Math.min(bound, steps);
+        }
+        return bound;
+    }
+
+    /**
+     * Return the slowest or the fastest impact that ended one of the latest hops.
+     *
+     * @param hops how many of the latest hops (1 to the hops kept)
+     * @param fastest true for the fastest, false for the slowest
+     * @return the speed (in m/s)
+     */
+    float getHopImpactBound(int hops, boolean fastest) {
+        float bound = hopImpactSpeeds[(hopCount - 1) % HOP_HISTORY];
+        for (int back = 1; back < hops; ++back) {
+            float speed = hopImpactSpeeds[(hopCount - 1 - back) % HOP_HISTORY];
+            bound = fastest ? Math.max(bound, speed) : Math.min(bound, speed);
+        }
+        return bound;
     }
 
     /** @return the step h of the latest step (in seconds, 0 before one) */
@@ -240,8 +316,9 @@ final class BounceRecorder implements ContactListener, StepListener, StateRecord
     }
 
     private void closeApex() {
-        if (impacts > 0 && apex > Float.NEGATIVE_INFINITY && apexCount < MAX_APEXES) {
-            apexes[apexCount++] = apex;
+        if (impacts > 0 && apex > Float.NEGATIVE_INFINITY && apexCount < Integer.MAX_VALUE) {
+            apexes[apexCount % MAX_APEXES] = apex;
+            ++apexCount;
         }
         apex = Float.NEGATIVE_INFINITY;
     }

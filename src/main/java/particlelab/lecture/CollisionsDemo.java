@@ -147,6 +147,8 @@ public final class CollisionsDemo extends DemoState {
     private static final int CALLOUT_OBSTACLES = 7 + 2 * 6 + 2 * ContactImpulses.CAPACITY;
 
     private final ImpulseResponse response = new ImpulseResponse(1f, 0f, false);
+    /** Decimals of e on the panel, the HUD and the slide: any e from 0 to 1 is taken. */
+    private static final int E_DIGITS = 2;
     /**
      * The balls' response: the impulse, then a note of balls 1 and 2's velocities the moment
      * their impact is resolved, before any wall can change them.
@@ -213,7 +215,6 @@ public final class CollisionsDemo extends DemoState {
     private boolean paddleStopped;
     private DemoParticle paddle;
     private Preset preset = Preset.HEAD_ON;
-    private int eTenths = 10;
     private int mass1 = 0;
     private int mass2 = 0;
     private SphereRule rule;
@@ -305,12 +306,13 @@ public final class CollisionsDemo extends DemoState {
 
     @Override
     protected void declareParameters() {
-        // A new e starts the collision again, as the Up and Down keys do.
+        // A new e starts the collision again, as the Up and Down keys do: one value, kept in
+        // the response that uses it, any e from 0 to 1 (shown to hundredths).
         declareParameter(new DemoParameter("e", "restitution", "", 0f, 1f, 0.1f,
-                eTenths / 10f, 1, DemoParameter.Applies.LIVE, value -> {
-                    int tenths = Math.round(value * 10f);
-                    if (tenths != eTenths) {
-                        setRestitutionTenths(tenths);
+                response.getRestitution(), E_DIGITS, DemoParameter.Applies.LIVE, value -> {
+                    if (value != response.getRestitution()) {
+                        response.setRestitution(value);
+                        restart();
                     }
                 }));
         // The preset, as the P key steps through them.
@@ -327,9 +329,9 @@ public final class CollisionsDemo extends DemoState {
         bindKey(KeyInput.KEY_P, "P", "preset: head-on, glancing, cradle, paddle",
                 () -> choose(Preset.values()[(preset.ordinal() + 1) % Preset.values().length]));
         bindKey(KeyInput.KEY_UP, "Up", "e + 0.1 (up to 1), restart",
-                () -> setRestitutionTenths(eTenths + 1));
+                () -> setRestitutionTenths(Math.round(getRestitution() * 10f) + 1));
         bindKey(KeyInput.KEY_DOWN, "Down", "e - 0.1 (down to 0), restart",
-                () -> setRestitutionTenths(eTenths - 1));
+                () -> setRestitutionTenths(Math.round(getRestitution() * 10f) - 1));
         StringBuilder masses = new StringBuilder();
         for (int i = 0; i < MASSES.length; ++i) {
             TextFormat.appendFixed(masses, MASSES[i], 1).append(i + 1 < MASSES.length ? " -> "
@@ -396,7 +398,7 @@ public final class CollisionsDemo extends DemoState {
     @Override
     protected void writeHudLines(StringBuilder text) {
         text.append("preset: ").append(preset.getLabel()).append("   e = ");
-        TextFormat.appendFixed(text, getRestitution(), 1).append("   m1 = ");
+        TextFormat.appendFixed(text, getRestitution(), eDigits()).append("   m1 = ");
         TextFormat.appendFixed(text, MASSES[mass1], 1).append(" kg   m2 = ");
         TextFormat.appendFixed(text, MASSES[mass2], 1).append(" kg   ")
                 .append(preset == Preset.CRADLE ? "overlap test, worst first"
@@ -477,15 +479,13 @@ public final class CollisionsDemo extends DemoState {
     }
 
     /**
-     * Set e and start again.
+     * Set e to a whole number of tenths and start again (what the keys do), through the
+     * parameter, so the panel and {@code --set} change the same value.
      *
      * @param tenths e in tenths (clamped to 0..10)
      */
     public void setRestitutionTenths(int tenths) {
-        eTenths = Math.max(0, Math.min(10, tenths));
-        response.setRestitution(getRestitution());
-        // The panel shows the e the keys or a caller chose.
-        getParameters().set("e", eTenths / 10f);
+        getParameters().set("e", Math.max(0, Math.min(10, tenths)) / 10f);
         restart();
     }
 
@@ -505,9 +505,15 @@ public final class CollisionsDemo extends DemoState {
         choose(preset);
     }
 
-    /** @return e (0 to 1) */
+    /** Decimals to show e with: one on the tenths the keys reach, else two (as the panel). */
+    private int eDigits() {
+        float e = getRestitution();
+        return Math.round(e * 10f) / 10f == e ? 1 : E_DIGITS;
+    }
+
+    /** @return e (0 to 1), as the response between the balls applies it */
     public float getRestitution() {
-        return eTenths / 10f;
+        return response.getRestitution();
     }
 
     /**
@@ -1086,7 +1092,7 @@ public final class CollisionsDemo extends DemoState {
             TextFormat.appendFixed(script, paddleAngle, 3).append(" rad");
             TextFormat.appendFixed(slide.formula()
                     .append("dynamic balls: v' = (1+e) u - e v along n,  e = "),
-                    getRestitution(), 1);
+                    getRestitution(), eDigits());
             StringBuilder readout = slide.readout();
             if (paddleContacts == 0) {
                 readout.append("the paddle has not hit a ball yet");
@@ -1097,7 +1103,8 @@ public final class CollisionsDemo extends DemoState {
             return;
         }
         TextFormat.appendFixed(slide.formula()
-                .append("j = -(1+e) v_rel·n / (1/m1 + 1/m2),   e = "), getRestitution(), 1);
+                .append("j = -(1+e) v_rel·n / (1/m1 + 1/m2),   e = "), getRestitution(),
+                eDigits());
         StringBuilder formula = slide.formula().append("V1 += j n/m1,  V2 -= j n/m2,   m1 = ");
         TextFormat.appendFixed(formula, MASSES[mass1], 1).append(" kg,  m2 = ");
         TextFormat.appendFixed(formula, MASSES[mass2], 1).append(" kg");

@@ -26,10 +26,10 @@ import particlelab.physics.Validate;
  * <ul>
  * <li><b>threshold</b> (Box2D, Jolt: 1 m/s; Cyclone's rigid bodies 0.25 m/s): a contact
  * closing at or below the threshold speed gets e = 0, perfectly inelastic. On the ground with
- * the swept test the hops settle at the impact speed {@code w* = K·g·h/(1+e)} of
- * {@link HopCycle} (K whole steps a hop), and the threshold stops the ball only if
- * {@code w* ≤ threshold}: 0.25 m/s never stops a 4 m drop with e = 0.8 at h = 1/60
- * (w* = 0.363 m/s);</li>
+ * the swept test the hops end on an orbit of {@link HopCycle}, K whole steps a hop at the
+ * impact speed {@code w* = K·g·h/(1+e)} or a cycle of several K, and the threshold stops the
+ * ball only once one impact is at or below it (on a fixed point, {@code w* ≤ threshold}):
+ * 0.25 m/s never stops a 4 m drop with e = 0.8 at h = 1/60 (w* = 0.363 m/s);</li>
  * <li><b>resting fix</b> (Cyclone's particle contacts): remove from the rebound the part due
  * to the velocity the forces added during this step, {@code Δv = h·a}: when
  * {@code (Δv_A − Δv_B)·n < 0}, {@code v_s' += e·(Δv_A − Δv_B)·n}, never below 0. A ball at

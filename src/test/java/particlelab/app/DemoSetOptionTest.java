@@ -8,7 +8,11 @@ import com.jme3.math.Vector3f;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
+import particlelab.lecture.BounceDemo;
+import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.DragDemo;
+import particlelab.world.Detection;
+import particlelab.world.ImpulseResponse;
 
 /**
  * {@code particle-lab demo NAME --set NAME=VALUE}: a bad setting is one line and exit 2,
@@ -37,6 +41,46 @@ class DemoSetOptionTest {
             assertEquals(1, run.errLines().size(), run.toString());
             assertTrue(run.err.contains("the parameters are h (fixed step)"), run.toString());
         }
+    }
+
+    @Test
+    void anUnknownNameIsNamedWhateverItsValue() {
+        for (String setting : new String[] {"preset=x", "preset=1"}) {
+            CommandRun run = CommandRun.of("demo", "drag", "--set", setting);
+            assertEquals(DemoCommand.USAGE, run.code, run.toString());
+            assertEquals(1, run.errLines().size(), run.toString());
+            assertTrue(run.err.contains("--set " + setting + ": no parameter named preset;"),
+                    run.toString());
+        }
+    }
+
+    /**
+     * Every {@code --set} reaches the physics, not only the first: a setter that restarts
+     * the scene must not write its own copies of the other parameters back over those still
+     * waiting. Read back from the ground response the lanes share.
+     */
+    @Test
+    void bounceTakesEverySettingAndEAsGiven() {
+        BounceDemo bounce = new BounceDemo();
+        DemoCommand.applySettings(bounce, List.of("e=0.8", "threshold=cyclone", "fix=on",
+                "detection=overlap"));
+        bounce.getWorld();
+        assertEquals(0.8f, bounce.getRestitution());
+        assertEquals(ImpulseResponse.CYCLONE_THRESHOLD, bounce.getThresholdSpeed());
+        assertTrue(bounce.isRestingFix());
+        assertEquals(Detection.OVERLAP, bounce.getDetection());
+        BounceDemo quarter = new BounceDemo();
+        DemoCommand.applySettings(quarter, List.of("threshold=none", "e=0.75"));
+        quarter.getWorld();
+        assertEquals(0.75f, quarter.getRestitution(), "e is not rounded to tenths");
+        assertEquals(0f, quarter.getThresholdSpeed());
+        // live, after the start: 0.33 stays 0.33
+        quarter.getParameters().set("e", 0.33f);
+        assertEquals(0.33f, quarter.getRestitution());
+        CollisionsDemo collisions = new CollisionsDemo();
+        DemoCommand.applySettings(collisions, List.of("e=0.75", "preset=glancing"));
+        collisions.getWorld();
+        assertEquals(0.75f, collisions.getRestitution());
     }
 
     @Test

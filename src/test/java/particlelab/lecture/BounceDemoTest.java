@@ -27,7 +27,7 @@ class BounceDemoTest {
     @Test
     void apexesFollowEToThe2nTimesH0WithinTheStepBound() throws Exception {
         float[] apexes = harness.call(() -> {
-            bounce.configure(8, 0, false, Detection.SWEPT);
+            bounce.configure(0.8f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -53,7 +53,7 @@ class BounceDemoTest {
     @Test
     void withAThresholdTheBallComesToRestExactlyStillAndTheHudSaysWhen() throws Exception {
         Object[] result = harness.call(() -> {
-            bounce.configure(5, 2, true, Detection.SWEPT);
+            bounce.configure(0.5f, 2, true, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -86,7 +86,7 @@ class BounceDemoTest {
     @Test
     void withEOneTheSweptTestKeepsItsApexesAndTheHudComparesBoth() throws Exception {
         Object[] result = harness.call(() -> {
-            bounce.configure(10, 0, false, Detection.SWEPT);
+            bounce.configure(1f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
                 bounce.advance(H);
             }
@@ -110,13 +110,13 @@ class BounceDemoTest {
     void withCyclonesThresholdAndNoFixTheHudShowsTheFixedPointTheBallHopsAt() throws Exception {
         String[] huds = harness.call(() -> {
             String[] result = new String[3];
-            bounce.configure(8, 1, false, Detection.SWEPT);
+            bounce.configure(0.8f, 1, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }
             result[0] = bounce.formatHud(new StringBuilder()).toString();
             result[1] = String.valueOf(bounce.getRecorder(Detection.SWEPT).isResting());
-            bounce.configure(8, 2, false, Detection.SWEPT);
+            bounce.configure(0.8f, 2, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }
@@ -140,6 +140,51 @@ class BounceDemoTest {
     }
 
     /**
+     * With e = 1 the swept ball bounces for ever; after more apexes than the recorder's ring
+     * holds, the table still shows the latest four (numbered to the count), not rows 61 to 64
+     * for ever. One bounce from 4 m takes 2·t0 = 1.81 s: 9000 steps (150 s) give about 83.
+     */
+    @Test
+    void theApexTableKeepsShowingTheLatestApexesPastTheRing() throws Exception {
+        Object[] result = harness.call(() -> {
+            bounce.configure(1f, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 9000; ++frame) {
+                bounce.advance(H);
+            }
+            BounceRecorder swept = bounce.getRecorder(Detection.SWEPT);
+            int count = swept.countApexes();
+            return new Object[] {count, swept.getApex(count - 1),
+                bounce.formatHud(new StringBuilder()).toString()};
+        });
+        int count = (Integer) result[0];
+        assertTrue(count > BounceRecorder.MAX_APEXES + 4, "apexes " + count);
+        StringBuilder latest = new StringBuilder("  ").append(count).append(": ");
+        TextFormat.appendFixed(latest, (Float) result[1], 3);
+        String hud = (String) result[2];
+        assertTrue(hud.contains(latest), latest + " in " + hud);
+        assertTrue(hud.contains("  " + (count - 3) + ": "), hud);
+    }
+
+    /**
+     * With e = 0.9 and no threshold the demo's 4 m drop ends on a cycle of 64 hops, not on
+     * one K (HopCycleTest re-measures it in a world of its own): the HUD names the cycle from
+     * the latest impacts, and never a fixed point the ball is not on.
+     */
+    @Test
+    void withEPointNineTheHudNamesTheCycleOfHopsTheBallIsOn() throws Exception {
+        String hud = harness.call(() -> {
+            bounce.configure(0.9f, 0, false, Detection.SWEPT);
+            for (int frame = 0; frame < 12_000; ++frame) {
+                bounce.advance(H);
+            }
+            return bounce.formatHud(new StringBuilder()).toString();
+        });
+        assertTrue(hud.contains("swept lane never at rest: a cycle of 64 hops, K = 4 to 9"
+                + " steps, impacts 0.300 to 0.815 m/s, all > threshold 0.00 m/s\n"), hud);
+        assertFalse(hud.contains("fixed point"), hud);
+    }
+
+    /**
      * The height graph holds a bounded number of samples however long the balls bounce: it
      * thins itself to every other sample when full, so after 60 s it still spans the whole
      * run, from t = 0 to within its last stride of steps of 60 s.
@@ -147,7 +192,7 @@ class BounceDemoTest {
     @Test
     void theHeightGraphKeepsABoundedNumberOfPointsOverTheWholeRun() throws Exception {
         float[] result = harness.call(() -> {
-            bounce.configure(9, 0, false, Detection.SWEPT);
+            bounce.configure(0.9f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
                 bounce.advance(H);
             }

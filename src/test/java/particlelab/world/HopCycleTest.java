@@ -24,6 +24,11 @@ class HopCycleTest {
     private static final float H = 1f / 60f;
     private static final float DROP_METRES = 4f;
     private static final int STEPS_IN_60_S = 3600;
+    private static final int STEPS_IN_300_S = 18_000;
+    /** The bounce demo's ball radius R (in metres). */
+    private static final float DEMO_RADIUS = 0.25f;
+    /** The hops the bounce demo's recorder keeps for the detector. */
+    private static final int RING = 256;
 
     /** Every impact: the step it came in, its fraction, its speed and the rebound. */
     private static final class Impacts implements ContactListener {
@@ -137,6 +142,149 @@ class HopCycleTest {
         Body ball = world.getBody(0);
         assertEquals(0f, ball.getVelocity().y);
         assertEquals(0f, ball.getPosition().y);
+    }
+
+    /**
+     * The orbits drops from 0.5 to 5 m end on, as the bounce demo drops its ball (R = 0.25 m,
+     * lowest point at the drop height, the swept ground, no fix, no threshold), 300 s each.
+     * The reference is the exact one of float arithmetic: the stepped world's own impacts,
+     * whose (K, impact speed bits) sequence ends periodic; its exact period P is found by
+     * equality of bits. The detector, given only the last 256 hops as the demo's recorder
+     * keeps them, must name an orbit of n hops that divides P and spans the same K and speeds
+     * (exactly: the same floats), and n = 1 exactly when every hop of the orbit has one K.
+     */
+    @ParameterizedTest(name = "e = {0}")
+    @CsvSource({"0.8", "0.9"})
+    void theDetectorNamesTheOrbitEachDropEndsOn(float e) {
+        int cycles = 0;
+        for (int tenths = 5; tenths <= 50; tenths += 5) {
+            Impacts impacts = dropDemoBall(tenths / 10f, e, 0f, STEPS_IN_300_S);
+            int exact = exactPeriod(impacts);
+            assertTrue(exact > 0, "drop " + tenths + ": no exact period in the tail");
+            int hops = orbitHops(impacts);
+            assertTrue(hops > 0 && exact % hops == 0, "drop " + tenths + ": n = " + hops
+                    + ", exact period " + exact);
+            String[] orbit = range(impacts, exact).split(" ");
+            String[] named = range(impacts, hops).split(" ");
+            assertEquals(orbit[1], named[1], "drop " + tenths + ": K");
+            // The speeds one round apart agree to the detector's tolerance, 1e-3 relatively
+            // (a fixed point's float orbit may alternate between two floats an ulp apart).
+            for (int end = 0; end < 2; ++end) {
+                double speed = Double.parseDouble(orbit[3].split("\\.\\.\\.")[end]);
+                assertEquals(speed, Double.parseDouble(named[3].split("\\.\\.\\.")[end]),
+                        1e-3 * speed, "drop " + tenths + ": impact speeds");
+            }
+            boolean oneK = orbit[1].equals(impacts.hopSteps(1) + "..." + impacts.hopSteps(1));
+            assertEquals(oneK, hops == 1, "drop " + tenths + ": " + range(impacts, exact));
+            if (hops > 1) {
+                ++cycles;
+            }
+        }
+        // Both values of e have drops ending on cycles: K alone does not say where they end.
+        assertTrue(cycles > 0, "cycles: " + cycles);
+    }
+
+    /**
+     * The audit's figures, re-measured: the demo's own 4 m drop at e = 0.9 ends on a cycle of
+     * 64 hops, K 4 to 9, impacts 0.300 to 0.815 m/s; at e = 0.8 the 0.5 m drop ends on a cycle
+     * of 12 hops, K 2 to 4, impacts 0.132 to 0.405 m/s, and the 4 m drop on the fixed point
+     * K = 4, w* = 0.36296 m/s. Cyclone's 0.25 m/s is below w*(4) but above the 0.5 m drop's
+     * slowest impact on its cycle: it stops that drop and not the 4 m one.
+     */
+    @Test
+    void theDemosDropsEndOnTheOrbitsTheTheoryNames() {
+        Impacts cycle = dropDemoBall(4f, 0.9f, 0f, STEPS_IN_300_S);
+        assertEquals(64, orbitHops(cycle));
+        // Speeds printed to three decimals: half a unit of the last digit.
+        assertEquals("K 4...9 v 0.300...0.815", rounded(cycle, 64));
+        Impacts small = dropDemoBall(0.5f, 0.8f, 0f, STEPS_IN_300_S);
+        assertEquals(12, orbitHops(small));
+        assertEquals("K 2...4 v 0.132...0.405", rounded(small, 12));
+        Impacts fixed = dropDemoBall(4f, 0.8f, 0f, STEPS_IN_300_S);
+        assertEquals(1, orbitHops(fixed));
+        assertEquals(4L, fixed.hopSteps(1));
+        // the fixed point to float round-off, as in impactSpeedsConvergeToTheFormulasFixedPoint
+        assertEquals(HopCycle.fixedPointSpeed(4, 0.8f, G, H),
+                fixed.speeds.get(fixed.count() - 1), 2e-6);
+        float cyclone = ImpulseResponse.CYCLONE_THRESHOLD;
+        Impacts stopped = dropDemoBall(0.5f, 0.8f, cyclone, STEPS_IN_60_S);
+        int last = stopped.count() - 1;
+        assertEquals(STEPS_IN_60_S - 1, (long) stopped.steps.get(last), "rests to the end");
+        assertEquals(0f, stopped.rebounds.get(last));
+        Impacts hopping = dropDemoBall(4f, 0.8f, cyclone, STEPS_IN_60_S);
+        assertTrue(hopping.rebounds.get(hopping.count() - 1) > 0f, "still hopping");
+    }
+
+    /** The orbit the detector names from the last 256 hops of a run. */
+    private static int orbitHops(Impacts impacts) {
+        int count = impacts.count();
+        int hopCount = count - 1;
+        int[] ringSteps = new int[RING];
+        float[] ringSpeeds = new float[RING];
+        for (int m = hopCount - RING; m < hopCount; ++m) {
+            ringSteps[m % RING] = (int) (impacts.steps.get(m + 1) - impacts.steps.get(m));
+            ringSpeeds[m % RING] = impacts.speeds.get(m + 1);
+        }
+        return HopCycle.findOrbitHops(ringSteps, ringSpeeds, hopCount, RING / 2, 1e-3);
+    }
+
+    /** The range of K and the exact impact speeds of the last n hops. */
+    private static String range(Impacts impacts, int hops) {
+        long fewest = Long.MAX_VALUE;
+        long most = 0L;
+        float slowest = Float.POSITIVE_INFINITY;
+        float fastest = 0f;
+        for (int k = 1; k <= hops; ++k) {
+            fewest = Math.min(fewest, impacts.hopSteps(k));
+            most = Math.max(most, impacts.hopSteps(k));
+            slowest = Math.min(slowest, impacts.speeds.get(impacts.count() - k));
+            fastest = Math.max(fastest, impacts.speeds.get(impacts.count() - k));
+        }
+        return "K " + fewest + "..." + most + " v " + slowest + "..." + fastest;
+    }
+
+    private static String rounded(Impacts impacts, int hops) {
+        String[] parts = range(impacts, hops).split(" ");
+        String[] speeds = parts[3].split("\\.\\.\\.");
+        return parts[0] + " " + parts[1] + " v " + String.format(java.util.Locale.ROOT,
+                "%.3f...%.3f", Float.parseFloat(speeds[0]), Float.parseFloat(speeds[1]));
+    }
+
+    /**
+     * The exact period of the tail: the smallest P such that the last 2P impacts repeat with
+     * period P in hop steps and in the bits of the impact speed; 0 if none up to 256.
+     */
+    private static int exactPeriod(Impacts impacts) {
+        int count = impacts.count();
+        for (int p = 1; p <= RING; ++p) {
+            boolean repeats = true;
+            for (int k = 1; k <= 2 * p && repeats; ++k) {
+                int i = count - k;
+                repeats = impacts.hopSteps(k) == impacts.hopSteps(k + p)
+                        && Float.floatToIntBits(impacts.speeds.get(i))
+                        == Float.floatToIntBits(impacts.speeds.get(i - p));
+            }
+            if (repeats) {
+                return p;
+            }
+        }
+        return 0;
+    }
+
+    /** Drop a ball of the demo's radius with its lowest point at a height and step. */
+    private static Impacts dropDemoBall(float dropMetres, float e, float threshold,
+            int steps) {
+        World world = new World();
+        world.addBody(new ParticleIntegrator(new Gravity()),
+                new Vector3f(0f, dropMetres + DEMO_RADIUS, 0f), Vector3f.ZERO, 1f, DEMO_RADIUS);
+        world.addRule(SurfaceRule.ground(new ImpulseResponse(e, threshold, false),
+                Detection.SWEPT));
+        Impacts impacts = new Impacts();
+        world.addContactListener(impacts);
+        for (int n = 0; n < steps; ++n) {
+            world.step(H);
+        }
+        return impacts;
     }
 
     /** Drop the ball 4 m with the resting fix off and step 60 s. */
