@@ -9,8 +9,10 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import com.jme3.system.AppSettings;
 import java.io.File;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
@@ -54,6 +56,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private final CountDownLatch finished = new CountDownLatch(1);
     private int frames;
     private volatile String failure;
+    /** The line of the failure the demo recovered from, or null while none was. */
+    private volatile String recovered;
 
     /**
      * Create the application.
@@ -212,6 +216,15 @@ public final class ParticleLabApp extends SimpleApplication {
     }
 
     /**
+     * Return the failure the window recovered from by restarting the demo, if one was.
+     *
+     * @return the line shown on the HUD, or null if nothing failed yet
+     */
+    public String getRecovered() {
+        return recovered;
+    }
+
+    /**
      * Access the screenshot capture.
      *
      * @return the capture, or null if no screenshot was asked for
@@ -273,15 +286,54 @@ public final class ParticleLabApp extends SimpleApplication {
         }
     }
 
+    /**
+     * Run a frame. The first exception a frame throws does not close the window: its stack
+     * goes to a log file, the demo shown restarts and says so on the HUD; a second one goes
+     * on to jME, whose loop ends the window through {@link #handleError}.
+     */
+    @Override
+    public void update() {
+        try {
+            super.update();
+        } catch (RuntimeException frameFailure) {
+            // Before the first frame (the demos initialising) there is no running demo to
+            // restart, and a demo half initialised would only fail again.
+            if (recovered != null || frames == 0 || !switcher.getSelected().isInitialized()) {
+                throw frameFailure;
+            }
+            recover(frameFailure);
+        }
+    }
+
     @Override
     public void handleError(String errorMessage, Throwable cause) {
-        // One line for the user; jME's own handler would print the whole stack trace.
-        String reason = cause == null || cause.getMessage() == null
-                || cause.getMessage().trim().equals(errorMessage) ? ""
-                : ": " + cause.getMessage().trim().replace('\n', ' ');
+        // One line for the user, naming the exception and where in the project it came
+        // from; the whole stack goes to a log file of this run's (jME's own handler would
+        // print it).
+        String reason = "";
+        if (cause != null) {
+            Path log = CrashLog.write(errorMessage, cause);
+            reason = ": " + CrashLog.describe(cause) + (log == null ? ""
+                    : "; the full stack is in " + log);
+        }
         failure = errorMessage + reason;
         stop();
         finished.countDown();
+    }
+
+    /** Log a frame's failure, restart the demo shown and say so on its HUD. */
+    private void recover(RuntimeException frameFailure) {
+        DemoState demo = switcher.getSelected();
+        double seconds = demo.getClock().getSimulatedSeconds();
+        String line = CrashLog.describe(frameFailure);
+        Path log = CrashLog.write("recovered from, at t = " + seconds + " s in "
+                + demo.getTitle(), frameFailure);
+        recovered = "recovered from " + line + " at t = "
+                + String.format(Locale.ROOT, "%.2f", seconds) + " s; see "
+                + (log == null ? "(no log could be written)" : log.toString());
+        LOGGER.log(Level.WARNING, recovered);
+        demo.restart();
+        demo.showNotice(recovered);
     }
 
     @Override

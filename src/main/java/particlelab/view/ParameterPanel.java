@@ -60,6 +60,8 @@ public final class ParameterPanel {
     private final List<Label> texts = new ArrayList<>();
     private final List<Label> rowLabels = new ArrayList<>();
     private final List<Button> buttons = new ArrayList<>();
+    /** The rows of buttons, for the panel's narrowest width. */
+    private final List<Container> buttonRows = new ArrayList<>();
     private final Slider[] sliders;
     private final List<VersionedReference<Double>> sliderReferences = new ArrayList<>();
     private final Label heading;
@@ -107,6 +109,7 @@ public final class ParameterPanel {
             if (i % BUTTONS_PER_ROW == 0) {
                 row = container.addChild(new Container(new SpringGridLayout(Axis.X, Axis.Y,
                         FillMode.Even, FillMode.Even)));
+                buttonRows.add(row);
             }
             Button button = new Button(buttonLabels.get(i));
             Runnable action = buttonActions.get(i);
@@ -305,11 +308,43 @@ public final class ParameterPanel {
             container.setInsets(new Insets3f(6f * hudScale, 8f * hudScale, 6f * hudScale,
                     8f * hudScale));
         }
-        // As tall as its content needs, as wide as the slot.
+        // As tall as its content needs, as wide as the slot: but never narrower than its
+        // buttons and sliders' ends need, or Lemur hands them a negative width and throws on
+        // the render thread (a small window's slot is 40 % of it). Then the panel reaches
+        // past its slot rather than break.
         container.setPreferredSize(null);
-        size.set(where.getWidth(), container.getPreferredSize().y, 0f);
+        size.set(Math.max(where.getWidth(), minimumWidth()), container.getPreferredSize().y,
+                0f);
         container.setPreferredSize(size.clone());
         container.setLocalTranslation(where.getX(), where.getTop(), 0f);
+    }
+
+    /**
+     * Return the narrowest the panel can be laid out: the container's insets and its widest
+     * row of buttons or slider's two end buttons and thumb, at their natural widths.
+     *
+     * @return the width (in pixels, &ge;0)
+     */
+    private float minimumWidth() {
+        float widest = 0f;
+        for (int i = 0; i < buttonRows.size(); ++i) {
+            widest = Math.max(widest, buttonRows.get(i).getPreferredSize().x);
+        }
+        for (Slider slider : sliders) {
+            widest = Math.max(widest, sliderEnds(slider));
+        }
+        if (timeline != null) {
+            widest = Math.max(widest, sliderEnds(timeline));
+        }
+        Insets3f insets = container.getInsets();
+        float sides = insets == null ? 0f : insets.min.x + insets.max.x;
+        return widest + sides;
+    }
+
+    private static float sliderEnds(Slider slider) {
+        return slider.getDecrementButton().getPreferredSize().x
+                + slider.getIncrementButton().getPreferredSize().x
+                + slider.getThumbButton().getPreferredSize().x;
     }
 
     /** @return the text size of the last {@link #place} (in pixels; NaN before it) */

@@ -41,7 +41,8 @@ class FailureHandlerTest {
         try {
             app.start(JmeContext.Type.Headless);
             assertTrue(app.awaitFinished(TIMEOUT_SECONDS), "no failure reported");
-            assertTrue(app.getFailure().endsWith(": " + REASON), app.getFailure());
+            assertTrue(app.getFailure().contains(": IllegalStateException: " + REASON + " at "),
+                    app.getFailure());
             // What the window's handler does next, on the jME thread (dead by now).
             assertDoesNotThrow(app::destroy, "tidying up after the failure threw");
         } finally {

@@ -179,7 +179,10 @@ public final class HeadlessHarness implements AutoCloseable, BeforeAllCallback,
     @Override
     public void close() {
         if (app != null) {
-            app.stop(true);
+            // After a failure the jME thread has ended: waiting for it to stop would hang.
+            if (app.getFailure() == null) {
+                app.stop(true);
+            }
             app = null;
         }
     }

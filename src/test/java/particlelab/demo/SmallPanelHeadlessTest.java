@@ -1,0 +1,117 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import com.jme3.app.state.AppStateManager;
+import com.jme3.renderer.RenderManager;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.app.DemoCatalog;
+import particlelab.app.HeadlessHarness;
+import particlelab.app.ParticleLabApp;
+import particlelab.view.ParameterPanel;
+import particlelab.view.ScreenRect;
+
+/**
+ * Issue 36: a small window with the parameter panel open ended the window with Lemur's
+ * "Size cannot be negative" on the render thread, because the panel was made exactly as wide
+ * as its slot (40 % of the window) and Lemur's layout then gave the sliders' tracks and the
+ * buttons less than nothing. Here the first demo of the catalogue, in a real headless
+ * application, opens its panel (F2) at 200x150, 320x240 and 640x360, presenting (F8) and
+ * not, and runs whole frames of jME's loop (Lemur lays the panel out in the GUI node's
+ * logical update): nothing throws.
+ */
+class SmallPanelHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    private static final int[][] WINDOWS = {{200, 150}, {320, 240}, {640, 360}};
+    /** Frames after each change: the panel is placed and laid out within one or two. */
+    private static final int FRAMES = 4;
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+
+    @Test
+    void theOpenPanelSurvivesSmallWindowsPresentingAndNot() throws Exception {
+        List<String> problems = new ArrayList<>();
+        ParticleLabApp app = harness.app();
+        DemoState demo = app.getSwitcher().getSelected();
+        harness.call(() -> {
+            HeadlessHarness.press(demo, "F2");
+            return true;
+        });
+        for (boolean presenting : new boolean[] {false, true}) {
+            for (int[] window : WINDOWS) {
+                problems.add(harness.call(() -> {
+                    try {
+                        app.getWindowControls().setPresenting(presenting);
+                        app.reshape(window[0], window[1]);
+                        for (int frame = 0; frame < FRAMES; ++frame) {
+                            frame(app);
+                        }
+                        return "";
+                    } catch (RuntimeException e) {
+                        return window[0] + "x" + window[1] + (presenting ? " presenting" : "")
+                                + ": " + e;
+                    }
+                }));
+            }
+        }
+        harness.call(() -> {
+            app.getWindowControls().setPresenting(false);
+            app.reshape(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+            return true;
+        });
+        problems.removeIf(String::isEmpty);
+        assertEquals(List.of(), problems);
+    }
+
+    /**
+     * The panel put into slots from a pixel wide up, at the HUD scales from the smallest to
+     * the largest, and laid out by Lemur as a frame does: nothing is handed a negative size.
+     */
+    @Test
+    void thePanelInASlotNarrowerThanItsContentIsLaidOutWithoutANegativeSize()
+            throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (DemoState demo : harness.app().getSwitcher().getDemos()) {
+            problems.addAll(harness.call(() -> {
+                List<String> found = new ArrayList<>();
+                ParameterPanel panel = demo.getParameterControls().getPanel();
+                for (float scale : new float[] {0.5f, 0.9f, 1f, 2f, 4f}) {
+                    for (float width : new float[] {1f, 10f, 40f, 80f, 160f}) {
+                        try {
+                            panel.place(new ScreenRect(0f, 0f, width, 400f), scale);
+                            panel.getNode().updateLogicalState(H);
+                        } catch (RuntimeException e) {
+                            found.add(demo.getTitle() + " " + width + " px at x" + scale
+                                    + ": " + e.getMessage());
+                        }
+                    }
+                }
+                panel.place(new ScreenRect(0f, 0f, 0f, 0f), 1f);
+                return found;
+            }));
+        }
+        assertEquals(List.of(), problems.subList(0, Math.min(5, problems.size())),
+                problems.size() + " problems");
+    }
+
+    /** One whole frame as {@code SimpleApplication.update()} runs it. */
+    static void frame(ParticleLabApp app) {
+        app.getInputManager().update(H);
+        AppStateManager states = app.getStateManager();
+        RenderManager render = app.getRenderManager();
+        states.update(H);
+        app.simpleUpdate(H);
+        app.getRootNode().updateLogicalState(H);
+        app.getGuiNode().updateLogicalState(H);
+        app.getRootNode().updateGeometricState();
+        app.getGuiNode().updateGeometricState();
+        states.render(render);
+        render.render(H, app.getContext().isRenderable());
+        app.simpleRender(render);
+        states.postRender();
+    }
+}
