@@ -263,8 +263,10 @@ final class HudWriter {
                     .append(" s");
             float frameSeconds = clock.getMeasuredFrameSeconds();
             if (!Float.isNaN(frameSeconds)) {
-                text.append("; at ");
-                TextFormat.appendFixed(text, 1f / frameSeconds, 0).append(" fps that is x");
+                // The frame time, not a rounded fps: "at 5 fps that is x1.31" read as a sum
+                // that does not add up (0.25 s × 5 = 1.25) when the frames took 191 ms.
+                text.append("; frames take ");
+                TextFormat.appendFixed(text, 1000f * frameSeconds, 1).append(" ms, so at most x");
                 appendRate(text, clock.getMaxMeasurableTimeScale());
             }
             text.append(')');

@@ -58,6 +58,8 @@ public final class LiveGraph {
     /** The widest label the layout must fit into a panel, measured at layout. */
     private static final String WIDEST_LABEL = "speed |V| (m/s): 0 to 500";
     private static final String LEGEND = "solid Euler, dashed exact";
+    /** The legend of a graph whose particles have no exact ghost: only solid curves. */
+    static final String LEGEND_EULER_ONLY = "Euler (no exact path)";
     /** The round numbers an axis ends at, times a power of ten. */
     private static final double[] ROUND_STEPS = {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0};
     /** The labels' size, as a fraction of the scene labels' size. */
@@ -102,6 +104,10 @@ public final class LiveGraph {
     private float axisHigh = Float.NaN;
     private float axisSpeed = Float.NaN;
     private boolean changed = true;
+    /** True once a recorded sample holds an exact value, since the last {@link #clear()}. */
+    private boolean exactSeen;
+    /** The legend's text now: {@link #LEGEND} or {@link #LEGEND_EULER_ONLY}. */
+    private String shownLegend;
     private boolean laidOut;
     private int labelChanges;
     /** The plots' boxes on the screen (pixels): left, bottom, width, height per panel. */
@@ -186,6 +192,7 @@ public final class LiveGraph {
             node.attachChild(labels[i]);
             labelRects[i] = new ScreenRect();
         }
+        shownLegend = LEGEND;
         labels[3].setText(LEGEND);
         clear();
     }
@@ -231,6 +238,7 @@ public final class LiveGraph {
         minHeight = 0f;
         maxHeight = 0f;
         maxSpeed = 0f;
+        exactSeen = false;
         changed = true;
     }
 
@@ -281,6 +289,7 @@ public final class LiveGraph {
             values[at + 1] = eulerSpeeds[i];
             values[at + 2] = exactHeights[i];
             values[at + 3] = exactSpeeds[i];
+            exactSeen |= !Float.isNaN(exactHeights[i]) || !Float.isNaN(exactSpeeds[i]);
         }
         maxTime = Math.max(maxTime, seconds);
         ++count;
@@ -454,6 +463,15 @@ public final class LiveGraph {
     }
 
     /**
+     * Read the legend shown now.
+     *
+     * @return {@link #LEGEND_EULER_ONLY} if no sample since the last clear had an exact value
+     */
+    String getLegend() {
+        return labels[3].getChars().toString();
+    }
+
+    /**
      * Write the curves into their mesh if samples came since the last refresh. Allocates
      * nothing, except when an axis's range grows (the labels' text is set then).
      */
@@ -462,6 +480,12 @@ public final class LiveGraph {
             return;
         }
         changed = false;
+        // The legend promises a dashed exact curve only where one is drawn.
+        String legend = exactSeen ? LEGEND : LEGEND_EULER_ONLY;
+        if (legend != shownLegend) {
+            shownLegend = legend;
+            labels[3].setText(legend);
+        }
         updateAxes();
         int buffered = countBeforeEnd();
         int points = countDrawn();

@@ -61,9 +61,21 @@ class HudWriterTest {
         String hud = write(false);
 
         assertTrue(hud.contains("time x64 asked, x15.0 measured: DROPPING TIME (a frame"
-                + " simulates at most 0.250 s; at 60 fps that is x15.0)\n"), hud);
+                + " simulates at most 0.250 s; frames take 16.7 ms, so at most x15.0)\n"), hud);
         assertTrue(hud.contains("\n   + / keypad +  x2,   - / keypad -  /2   (x1/64 to x64),"
                 + "   X  back to x1\n"), hud);
+    }
+
+    @Test
+    void atFiveFramesASecondTheDropNoticesFiguresAgreeWithEachOther() {
+        // Frames of 0.191 s: the cap of 0.25 s a frame gives x1.31. A rounded "5 fps" beside
+        // x1.31 did not multiply out (0.25 × 5 = 1.25); the frame time does (250 / 191).
+        clock.setTimeScale(SimulationClock.MAX_TIME_SCALE);
+        run(30, 0.191f);
+
+        String hud = write(false);
+
+        assertTrue(hud.contains("frames take 191.0 ms, so at most x1.31)"), hud);
     }
 
     @Test

@@ -76,6 +76,26 @@ class LiveGraphTest {
         assertEquals(3, graph.countLabelChanges(), "nothing new, nothing set");
     }
 
+    @Test
+    void theLegendPromisesADashedExactCurveOnlyWhereOneIsDrawn() {
+        LiveGraph graph = graph();
+        graph.layOut(new ScreenRect(700f, 300f, 560f, 200f), HudLayout.SCENE_LABEL_SIZE);
+        float[] euler = {5f};
+        float[] none = {Float.NaN};
+        graph.record(0f, euler, euler, none, none);
+        graph.record(1f, euler, euler, none, none);
+        graph.refresh();
+        // Bounce's balls have no exact ghost: no dashed curve, so no "dashed exact".
+        assertEquals(LiveGraph.LEGEND_EULER_ONLY, graph.getLegend());
+        graph.record(2f, euler, euler, euler, euler);
+        graph.refresh();
+        assertEquals("solid Euler, dashed exact", graph.getLegend());
+        graph.clear();
+        graph.record(0f, euler, euler, none, none);
+        graph.refresh();
+        assertEquals(LiveGraph.LEGEND_EULER_ONLY, graph.getLegend());
+    }
+
     private static LiveGraph graph() {
         return new LiveGraph(ASSETS, HudFont.load(ASSETS), new ColorRGBA[] {ColorRGBA.Orange});
     }
