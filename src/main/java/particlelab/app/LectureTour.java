@@ -456,8 +456,9 @@ public final class LectureTour {
 
     private static void watchIterations(DemoState demo, StringBuilder text) {
         IterativeAimingDemo iterate = (IterativeAimingDemo) demo;
-        text.append(WATCH).append(iterate.getStrategy().cliName()).append(": ")
-                .append(iterate.countLanded()).append(" shots landed so far; no formula,"
+        int landed = iterate.countLanded();
+        text.append(WATCH).append(iterate.getStrategy().cliName()).append(": ").append(landed)
+                .append(landed == 1 ? " shot" : " shots").append(" landed so far; no formula,"
                         + " the simulation itself is the predictor\n");
     }
 }

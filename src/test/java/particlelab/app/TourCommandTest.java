@@ -3,6 +3,7 @@ package particlelab.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.lang.management.ManagementFactory;
@@ -10,6 +11,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.lecture.IterativeAimingDemo;
 import particlelab.view.TextFormat;
 
 /**
@@ -126,6 +128,32 @@ class TourCommandTest {
         }
     }
 
+    /** Issue 29: the iterations stop counted "1 shots landed so far". */
+    @Test
+    void theIterationsStopCountsOneShotInTheSingular() {
+        LectureTour.Stop stop = null;
+        for (LectureTour.Stop candidate : LectureTour.stops()) {
+            if (candidate.getDemo().equals("iterate")) {
+                stop = candidate;
+            }
+        }
+        assertNotNull(stop, "no iterate stop");
+        IterativeAimingDemo demo = (IterativeAimingDemo) DemoCatalog.createAll().get(
+                DemoCatalog.indexOf("iterate"));
+        DemoCommand.applySettings(demo, stop.getSettings());
+        boolean sawOne = false;
+        for (int frame = 0; frame < 3000 && demo.countLanded() < 2; ++frame) {
+            demo.advancePhysics(TPF);
+            String line = watch(stop, demo);
+            if (demo.countLanded() == 1) {
+                sawOne = true;
+                assertTrue(line.contains(": 1 shot landed so far"), line);
+            }
+            assertFalse(line.contains(" 1 shots"), line);
+        }
+        assertTrue(sawOne, "the round never had exactly one shot landed");
+    }
+
     @Test
     void watchLinesAllocateNothing() {
         com.sun.management.ThreadMXBean threads =
@@ -139,13 +167,20 @@ class TourCommandTest {
                 text.setLength(0);
                 stop.getWatch().append(demo, text);
             }
-            long before = threads.getCurrentThreadAllocatedBytes();
-            for (int i = 0; i < 200; ++i) {
-                text.setLength(0);
-                stop.getWatch().append(demo, text);
+            // The least of five windows of 200 calls: a watch line that allocates does so in
+            // every call, so at least 200 objects in every window; the JVM under load has been
+            // seen to charge this thread 80 or 128 bytes in one window of code that allocates
+            // nothing (its own compilation and safepoint work), never in all five.
+            long least = Long.MAX_VALUE;
+            for (int window = 0; window < 5 && least > 0; ++window) {
+                long before = threads.getCurrentThreadAllocatedBytes();
+                for (int i = 0; i < 200; ++i) {
+                    text.setLength(0);
+                    stop.getWatch().append(demo, text);
+                }
+                least = Math.min(least, threads.getCurrentThreadAllocatedBytes() - before);
             }
-            long bytes = threads.getCurrentThreadAllocatedBytes() - before;
-            assertEquals(0L, bytes, stop.getSlide() + ": the watch lines allocated");
+            assertEquals(0L, least, stop.getSlide() + ": the watch lines allocated");
         }
     }
 
