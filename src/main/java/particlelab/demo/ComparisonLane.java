@@ -14,6 +14,8 @@ import particlelab.accuracy.ReportConfig;
 import particlelab.accuracy.Scheme;
 import particlelab.accuracy.SlideCode;
 import particlelab.accuracy.Stepper;
+import particlelab.coursework.RecipeExercise;
+import particlelab.coursework.StudentRunner;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -37,7 +39,14 @@ import particlelab.world.StateSlab;
  * step handed in as {@code tpf}), shown on the HUD line for line; or</li>
  * <li>one of the speed report's steppers ({@link Scheme}): forward Euler, the lecture's
  * semi-implicit Euler (the shared integrator itself), velocity Verlet, midpoint, RK4, in
- * double precision, at the demo's h.</li>
+ * double precision, at the demo's h; or</li>
+ * <li>{@code student}: exercise 1's class, the student's own recipe ({@link RecipeExercise},
+ * found by name: {@code particlelab.exercises.Recipe} under {@code gradle run},
+ * {@code particlelab.solutions.Recipe} under {@code gradle run -Psolutions}), in float as it
+ * takes it, each call on a worker thread ({@link StudentRunner}). A recipe that throws, gives
+ * NaN or has not returned within a second stops the lane with one line on the HUD (the
+ * exception, its message and the line of the student's file; the step and the value; "not
+ * written yet" for the stub), and the demo runs on.</li>
  * </ul>
  * {@code off} (the default) hides the lane and leaves its HUD lines out: the picture and the
  * HUD are the demo's own.
@@ -76,7 +85,9 @@ public final class ComparisonLane implements DemoPart {
         /** The explicit midpoint method (the report's). */
         MIDPOINT("midpoint", "midpoint (RK2)", Scheme.MIDPOINT),
         /** Classic fourth-order Runge-Kutta (the report's). */
-        RK4("rk4", "RK4", Scheme.RUNGE_KUTTA_4);
+        RK4("rk4", "RK4", Scheme.RUNGE_KUTTA_4),
+        /** Exercise 1: the student's recipe ({@link RecipeExercise}), found by name. */
+        STUDENT("student", "student's recipe", null);
 
         private final String id;
         private final String label;
@@ -98,7 +109,7 @@ public final class ComparisonLane implements DemoPart {
             return label;
         }
 
-        /** @return the report's scheme that moves the lane (null for the slide code) */
+        /** @return the report's scheme that moves the lane (null for the slide and student) */
         public Scheme scheme() {
             return scheme;
         }
@@ -113,6 +124,9 @@ public final class ComparisonLane implements DemoPart {
     /** The record's size: flags, the state, the slide's, the path's time, the readouts. */
     private static final int STATE_INTS = 2 + 12 + 6 + ExactPath.STATE_INTS + 10 + 2;
     private static final Kind[] KINDS = Kind.values();
+    /** The student lane's line when the followed sphere has a force exercise 1 has not. */
+    private static final String UNSUPPORTED_FOR_STUDENT = "these forces are not exercise 1's"
+            + " (gravity, linear drag, thrust)";
     /** The lane at the start: off, so the picture and the HUD are the demo's own. */
     private static final Kind DEFAULT_KIND = Kind.OFF;
 
@@ -153,6 +167,16 @@ public final class ComparisonLane implements DemoPart {
     private final double[] costNanos = new double[KINDS.length];
     private final double[] costBytes = new double[KINDS.length];
     private final boolean[] costAsked = new boolean[KINDS.length];
+    /** The student's class could not be measured (it threw on the meter's thread). */
+    private volatile boolean studentCostFailed;
+    /** The student lane's class (null: exercise 1's, in the package the app was started in). */
+    private String studentClass;
+    /** How long one call of the student's recipe may take (ns). */
+    private long studentLimitNanos = StudentRunner.DEFAULT_LIMIT_NANOS;
+    /** The student lane's mover (null until the lane is first chosen). */
+    private StudentRecipe student;
+    /** g for the student's recipe (m/s²). */
+    private final Vector3f studentGravity = new Vector3f();
 
     /**
      * Create a lane.
@@ -258,6 +282,47 @@ public final class ComparisonLane implements DemoPart {
     }
 
     /**
+     * Choose the class the student lane runs, and how long one of its calls may take: by
+     * default {@code Recipe} in the package the app was started with ({@link
+     * StudentRunner#className}) and {@link StudentRunner#DEFAULT_LIMIT_NANOS}. Applies from
+     * the next launch; a class whose call was abandoned is left behind with its thread.
+     *
+     * @param className a {@link RecipeExercise}'s binary name (not null)
+     * @param limitNanos how long one call may take before the lane gives up on it (in ns,
+     *     &gt;0)
+     */
+    public void useStudentClass(String className, long limitNanos) {
+        if (className == null || className.isEmpty()) {
+            throw new IllegalArgumentException("the student lane's class must be named, but"
+                    + " was " + (className == null ? "null" : "\"\""));
+        }
+        if (limitNanos <= 0L) {
+            throw new IllegalArgumentException("the student lane's time limit (ns) must be"
+                    + " > 0, but was " + limitNanos);
+        }
+        studentClass = className;
+        studentLimitNanos = limitNanos;
+        student = null;
+        costAsked[Kind.STUDENT.ordinal()] = false;
+        costNanos[Kind.STUDENT.ordinal()] = Double.NaN;
+        studentCostFailed = false;
+        needsStart = true;
+    }
+
+    /**
+     * Return what stopped the student lane, in one line.
+     *
+     * @return the line ("not written yet", "step N: threw ...", ...), or null while the
+     *     student's recipe runs (or the lane is another)
+     */
+    public String getStudentProblem() {
+        if (kind != Kind.STUDENT || !blewUp || student == null) {
+            return null;
+        }
+        return unsupported ? UNSUPPORTED_FOR_STUDENT : student.getProblem();
+    }
+
+    /**
      * Keep the demo the lane was added to ({@link DemoState#addPart}).
      *
      * @param owner the demo (not null)
@@ -269,7 +334,8 @@ public final class ComparisonLane implements DemoPart {
 
     /**
      * Declare the lane's parameter,
-     * {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4}, applied at the next launch,
+     * {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4|student}, applied at the next
+     * launch,
      * off at the start.
      *
      * @param parameters the demo's parameters (not null, modified)
@@ -289,7 +355,8 @@ public final class ComparisonLane implements DemoPart {
     @Override
     public void declareKeys() {
         demo.bindKey(KeyInput.KEY_L, "L",
-                "comparison lane: off, slide code, the report's steppers", this::cycle);
+                "comparison lane: off, slide code, the report's steppers, your recipe",
+                this::cycle);
     }
 
     /**
@@ -379,6 +446,18 @@ public final class ComparisonLane implements DemoPart {
         }
         measureCostOnce();
         text.append("Lane ").append(kind.label()).append(" (L):  ");
+        String problem = getStudentProblem();
+        if (problem != null) {
+            // one line: what stopped the student's recipe; the demo runs on
+            text.append(problem);
+            if (StudentRunner.NOT_WRITTEN.equals(problem)) {
+                text.append(": write ").append(student.getClassName())
+                        .append(" (docs/exercises.md)");
+            }
+            text.append('\n');
+            appendSeenError(text);
+            return;
+        }
         if (particle.hasLanded()) {
             TextFormat.appendFixed(text.append("landed at x = "), particle.getLandingX(), 2)
                     .append(" m after ");
@@ -436,6 +515,15 @@ public final class ComparisonLane implements DemoPart {
         if (kind == Kind.SLIDE) {
             slide.start(scratchPosition, scratchVelocity, body.getMass());
         }
+        if (kind == Kind.STUDENT) {
+            if (student == null) {
+                // once per class: a user's choice, not a step, so it may allocate
+                student = new StudentRecipe(studentClass != null ? studentClass
+                        : StudentRunner.className(StudentRecipe.SIMPLE_NAME),
+                        studentLimitNanos);
+            }
+            student.restart();
+        }
         exact.start(scratchPosition, scratchVelocity, body.getMass(),
                 particle.stopsAtGround());
     }
@@ -446,6 +534,14 @@ public final class ComparisonLane implements DemoPart {
             slide.update(stepSeconds);
             copyToState(slide.position, slide.velocity);
             return state.isFinite();
+        }
+        if (kind == Kind.STUDENT) {
+            if (unsupported) {
+                return false;
+            }
+            studentGravity.set(coefficients[0], coefficients[1], coefficients[2]);
+            return student.step(state, studentGravity, coefficients[3], coefficients[4],
+                    coefficients[6], stepSeconds);
         }
         if (stepper == null) {
             return false;
@@ -496,7 +592,8 @@ public final class ComparisonLane implements DemoPart {
             }
         }
         coefficients[3] = particle.getParticle().getMass();
-        unsupported = !known;
+        // exercise 1's recipe has gravity, linear drag and thrust, no quadratic drag
+        unsupported = !known || (kind == Kind.STUDENT && coefficients[5] != 0f);
         Scheme scheme = kind.scheme();
         if (scheme == null || !known) {
             return;
@@ -536,12 +633,16 @@ public final class ComparisonLane implements DemoPart {
 
     private void appendCost(StringBuilder text) {
         double nanos = costNanos[kind.ordinal()];
+        if (kind == Kind.STUDENT && studentCostFailed) {
+            text.append("   cost: not measured (the recipe threw on the meter's thread)");
+            return;
+        }
         if (Double.isNaN(nanos)) {
             text.append("   cost: measuring");
             return;
         }
         TextFormat.appendFixed(text.append("   "), nanos, 0).append(" ns");
-        if (kind == Kind.SLIDE) {
+        if (kind == Kind.SLIDE || kind == Kind.STUDENT) {
             TextFormat.appendFixed(text.append(", "), costBytes[kind.ordinal()], 0)
                     .append(" B");
         }
@@ -554,7 +655,9 @@ public final class ComparisonLane implements DemoPart {
             text.append(" at landing");
         }
         text.append(" (visible: 1 px or 1 radius):  ");
-        if (blewUp) {
+        if (blewUp && kind == Kind.STUDENT) {
+            text.append("the student's recipe stopped (above);  ");
+        } else if (blewUp) {
             text.append("the lane's step blew up (h beyond its stability limit);  ");
         } else if (unsupported && kind != Kind.SLIDE) {
             text.append("these forces are not among the report's models;  ");
@@ -588,6 +691,11 @@ public final class ComparisonLane implements DemoPart {
         if (costAsked[index] || (kind.scheme() != null && model == null)) {
             return;
         }
+        if (kind == Kind.STUDENT && (student == null || blewUp || unsupported || needsStart)) {
+            // measured only once the recipe has stepped: a recipe that never returns would
+            // keep the meter's thread busy for good
+            return;
+        }
         costAsked[index] = true;
         Kind measured = kind;
         ForceModel forces = model;
@@ -597,8 +705,16 @@ public final class ComparisonLane implements DemoPart {
         Vector3f launchPosition = scratchPosition.clone();
         Vector3f launchVelocity = scratchVelocity.clone();
         float stepSeconds = demo.getClock().getStepSeconds();
-        Thread thread = new Thread(() -> measure(measured, forces, launchPosition,
-                launchVelocity, mass, stepSeconds), "lane cost " + measured.id());
+        float[] studentForces = coefficients.clone();
+        String studentName = student == null ? null : student.getClassName();
+        Thread thread = new Thread(() -> {
+            if (measured == Kind.STUDENT) {
+                measureStudent(studentName, studentForces, launchPosition, launchVelocity,
+                        stepSeconds);
+            } else {
+                measure(measured, forces, launchPosition, launchVelocity, mass, stepSeconds);
+            }
+        }, "lane cost " + measured.id());
         thread.setDaemon(true);
         thread.start();
     }
@@ -630,6 +746,37 @@ public final class ComparisonLane implements DemoPart {
         }
         costBytes[measured.ordinal()] = result.bytesPerUnit();
         costNanos[measured.ordinal()] = result.nanosPerUnit();
+    }
+
+    /**
+     * The meter's run of the student's recipe: a fresh instance of the class on this thread,
+     * from the launch, 64 steps a call. Anything it throws marks the cost unmeasured.
+     */
+    private void measureStudent(String className, float[] forces, Vector3f launchPosition,
+            Vector3f launchVelocity, float stepSeconds) {
+        int index = Kind.STUDENT.ordinal();
+        try {
+            RecipeExercise recipe = Class.forName(className)
+                    .asSubclass(RecipeExercise.class).getDeclaredConstructor().newInstance();
+            Vector3f g = new Vector3f(forces[0], forces[1], forces[2]);
+            Vector3f position = new Vector3f();
+            Vector3f velocity = new Vector3f();
+            CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.QUICK));
+            CostMeter.Measurement result = meter.measure(units -> {
+                position.set(launchPosition);
+                velocity.set(launchVelocity);
+                for (int n = 0; n < units; ++n) {
+                    recipe.step(position, velocity, forces[3], g, forces[4], forces[6],
+                            stepSeconds);
+                }
+                return position;
+            }, COST_STEPS);
+            costBytes[index] = result.bytesPerUnit();
+            costNanos[index] = result.nanosPerUnit();
+        } catch (Throwable e) {
+            // the student's code, on the meter's own thread: its failure is the lane's line
+            studentCostFailed = true;
+        }
     }
 
     /** The lane's state for the replay ring. */
