@@ -448,14 +448,14 @@ public final class ComparisonLane implements DemoPart {
         text.append("Lane ").append(kind.label()).append(" (L):  ");
         String problem = getStudentProblem();
         if (problem != null) {
-            // one line: what stopped the student's recipe; the demo runs on
+            // one line, what stopped the student's recipe, and no error to see; the demo
+            // runs on
             text.append(problem);
             if (StudentRunner.NOT_WRITTEN.equals(problem)) {
                 text.append(": write ").append(student.getClassName())
                         .append(" (docs/exercises.md)");
             }
             text.append('\n');
-            appendSeenError(text);
             return;
         }
         if (particle.hasLanded()) {
@@ -655,9 +655,7 @@ public final class ComparisonLane implements DemoPart {
             text.append(" at landing");
         }
         text.append(" (visible: 1 px or 1 radius):  ");
-        if (blewUp && kind == Kind.STUDENT) {
-            text.append("the student's recipe stopped (above);  ");
-        } else if (blewUp) {
+        if (blewUp) {
             text.append("the lane's step blew up (h beyond its stability limit);  ");
         } else if (unsupported && kind != Kind.SLIDE) {
             text.append("these forces are not among the report's models;  ");
