@@ -11,6 +11,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
+import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.world.StateRing;
@@ -52,6 +53,21 @@ class ReplayDeterminismTest {
         demo.getParameters().set(ComparisonLane.PARAMETER, parameter.indexOfChoice(lane));
         demo.restart();
         assertReplaysTheSameBits(demo, "drag, lane=" + lane);
+    }
+
+    /**
+     * The student lane with the reference solution: stepped on again from a state read back,
+     * the student's recipe gives the same bits (its state is the lane's, in the ring).
+     */
+    @Test
+    void theStudentLaneReplaysTheSameBits() {
+        DragDemo demo = new DragDemo();
+        demo.getLane().useStudentClass("particlelab.solutions.Recipe", 10_000_000_000L);
+        demo.getParameters().set(ComparisonLane.PARAMETER,
+                ComparisonLane.Kind.STUDENT.ordinal());
+        demo.restart();
+        assertReplaysTheSameBits(demo, "drag, lane=student (the solution)");
+        assertEquals(null, demo.getLane().getStudentProblem());
     }
 
     /**
