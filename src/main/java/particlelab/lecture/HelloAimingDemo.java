@@ -10,6 +10,7 @@ import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.aiming.SlideCodeBullet;
+import particlelab.coursework.StudentRunner;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
@@ -60,6 +61,13 @@ import particlelab.world.StateSlab;
  * fly, for the comparison). The lane allocates {@value SlideCodeBullet#VECTORS_PER_STEP}
  * vectors a step by design, so it is off by default (the rest of the frame allocates
  * nothing).
+ *
+ * <p>The student's aim ({@code --set aim=student}, the last of L's choices): both aims and a
+ * third bullet, green, launched with the {@code discreteVy} of exercise 3's class (found by
+ * name, as the comparison lane's student recipe is: {@code particlelab.exercises.Aiming}
+ * under {@code gradle run}, the reference solution's under {@code -Psolutions}), called once
+ * per shot on a worker thread ({@link StudentRunner}). An aim that throws, gives NaN or has
+ * not returned within a second fires no student bullet, and one HUD line says why.
  */
 public final class HelloAimingDemo extends DemoState {
 
@@ -86,8 +94,15 @@ public final class HelloAimingDemo extends DemoState {
     private static final float GRAVITY = Gravity.STANDARD_G;
     /** The value of {@link #getFiring()} that fires both aims at once. */
     public static final int BOTH = 2;
-    /** The {@code aim} parameter's names: one aim alone, by {@link Aim} ordinal, or both. */
-    private static final String[] FIRING_NAMES = {"lecture", "discrete", "both"};
+    /** The value of {@link #getFiring()} that fires both aims and the student's. */
+    public static final int WITH_STUDENT = 3;
+    /**
+     * The {@code aim} parameter's names: one aim alone, by {@link Aim} ordinal, both, or both
+     * with the student's.
+     */
+    private static final String[] FIRING_NAMES = {"lecture", "discrete", "both", "student"};
+    /** The student bullet's colour: the comparison lane's green. */
+    private static final ColorRGBA STUDENT_COLOR = new ColorRGBA(0.45f, 1f, 0.35f, 1f);
     /** Each aim's HUD line start, by {@link Aim} ordinal. */
     private static final String[] FORMULAS = {"lecture   vy = g·S/(2·vx) = ",
         "discrete  vy = g·(S/vx + h)/2 = "};
@@ -177,6 +192,20 @@ public final class HelloAimingDemo extends DemoState {
     /** The slide bullet's square in the scene (null without a window). */
     private Geometry slideMark;
     private KeyBinding codeKey;
+    /** The student's bullet: flies in the shots fired {@link #WITH_STUDENT}. */
+    private DemoParticle studentBullet;
+    /** The student's aim (null until a shot first asks it). */
+    private StudentAim studentAim;
+    /** The class it runs (null: exercise 3's, in the package the app was started in). */
+    private String studentClass;
+    private long studentLimitNanos = StudentRunner.DEFAULT_LIMIT_NANOS;
+    /** The shot in the air's student vy (m/s; NaN when it has no student bullet). */
+    private float studentVy = Float.NaN;
+    private boolean studentInShot;
+    private boolean studentLandingRecorded;
+    /** The last shot that landed with the student's bullet: its number (0 if none), x. */
+    private int studentLandedShot;
+    private float studentLandingX = Float.NaN;
     /** The target's distance as printed, e.g. "S = 100 m". */
     private final String distanceText = "S = " + Math.round(TARGET_DISTANCE) + " m";
 
@@ -218,7 +247,70 @@ public final class HelloAimingDemo extends DemoState {
      * @return true if F fires it
      */
     public boolean firesAim(Aim aim) {
-        return firing == BOTH || firing == aim.ordinal();
+        return firing >= BOTH || firing == aim.ordinal();
+    }
+
+    /**
+     * Choose the class the student's bullet is aimed by, and how long its call may take: by
+     * default {@code Aiming} in the package the app was started with ({@link
+     * StudentRunner#className}) and {@link StudentRunner#DEFAULT_LIMIT_NANOS}. Applies from
+     * the next shot.
+     *
+     * @param className an {@link particlelab.coursework.AimingExercise}'s binary name (not
+     *     null)
+     * @param limitNanos how long one call may take (in ns, &gt;0)
+     */
+    public void useStudentClass(String className, long limitNanos) {
+        if (className == null || className.isEmpty() || limitNanos <= 0L) {
+            throw new IllegalArgumentException("the student's aim needs a class name and a"
+                    + " time limit > 0 ns, but got " + className + " and " + limitNanos);
+        }
+        studentClass = className;
+        studentLimitNanos = limitNanos;
+        studentAim = null;
+    }
+
+    /**
+     * Access the student's bullet.
+     *
+     * @return the live particle (not null)
+     */
+    public DemoParticle getStudentBullet() {
+        getWorld();
+        return studentBullet;
+    }
+
+    /**
+     * Return the vy the student's aim gave the shot in the air.
+     *
+     * @return vy (in m/s; NaN when the shot has no student bullet)
+     */
+    public float getStudentVy() {
+        return studentVy;
+    }
+
+    /**
+     * Return what kept the shot in the air (or the last one) from the student's aim, in one
+     * line.
+     *
+     * @return the line ("not written yet", "threw ...", ...), or null when the shot had the
+     *     student's bullet or did not fire the student's aim
+     */
+    public String getStudentProblem() {
+        // the first shot is fired with the scene; a shot without the student's aim asked
+        // nothing of it
+        getWorld();
+        return studentAim == null || shotFiring != WITH_STUDENT ? null
+                : studentAim.getProblem();
+    }
+
+    /**
+     * Return where the student's bullet of the last shot that fired it landed.
+     *
+     * @return x (in metres; NaN until such a shot lands)
+     */
+    public float getStudentLandingX() {
+        return studentLandingX;
     }
 
     /**
@@ -380,7 +472,7 @@ public final class HelloAimingDemo extends DemoState {
     public void fire() {
         // The bullets exist once the scene does (a test may fire before any frame).
         getWorld();
-        int alone = firing == BOTH ? -1 : firing;
+        int alone = firing >= BOTH ? -1 : firing;
         shotVy = 0f;
         for (int a = 0; a < AIMS.length; ++a) {
             boolean fired = alone < 0 || alone == a;
@@ -393,6 +485,7 @@ public final class HelloAimingDemo extends DemoState {
             shotVy = Math.max(shotVy, vy);
         }
         shotFiring = firing;
+        fireStudent();
         launchSlide();
         showFiredBullets();
         getClock().reset();
@@ -436,6 +529,13 @@ public final class HelloAimingDemo extends DemoState {
             inShot[a] = true;
             shotVy = Math.max(shotVy, vy);
         }
+        // The student's bullet flies the discrete aim's shot, parked and hidden, until a shot
+        // fires the student's aim.
+        launchVelocity.set(vx, bullets[Aim.DISCRETE.ordinal()].copyLaunchVelocity(
+                new Vector3f()).y, 0f);
+        studentBullet = addParticle("student's aim", STUDENT_COLOR, Vector3f.ZERO,
+                launchVelocity, 1f, integrator).stopAtGround();
+        studentBullet.setParked(true);
         shots = 1;
         shotVx = vx;
         shotStep = step;
@@ -489,7 +589,8 @@ public final class HelloAimingDemo extends DemoState {
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
                 () -> changeVx(-VX_STEP));
         aimKey = bindKey(KeyInput.KEY_L, "L",
-                "next shot fires: both aims -> lecture formula -> discrete correction",
+                "next shot fires: both aims -> lecture formula -> discrete correction"
+                        + " -> both and the student's aim",
                 () -> getParameters().set("aim", (firing + 1) % FIRING_NAMES.length));
         codeKey = bindKey(KeyInput.KEY_J, "J",
                 "next shot's code: shared recipe -> slide's listing -> both",
@@ -504,6 +605,8 @@ public final class HelloAimingDemo extends DemoState {
             lastLandingX[a] = Float.NaN;
             lastFlightSeconds[a] = Double.NaN;
         }
+        studentLandedShot = 0;
+        studentLandingX = Float.NaN;
         fire();
     }
 
@@ -518,6 +621,11 @@ public final class HelloAimingDemo extends DemoState {
                 lastFlightSeconds[a] = bullet.getLandingSeconds();
                 lastShotVx = shotVx;
             }
+        }
+        if (studentInShot && studentBullet.hasLanded() && !studentLandingRecorded) {
+            studentLandingRecorded = true;
+            studentLandedShot = shots;
+            studentLandingX = studentBullet.getLandingX();
         }
     }
 
@@ -546,8 +654,9 @@ public final class HelloAimingDemo extends DemoState {
         updatePrediction(step);
         // Few lines: two aims' numbers share the HUD with two ghost readouts.
         text.append("Next shot (").append(aimKey.getKeyLabel()).append("): ")
-                .append(firing == BOTH ? "both aims" : FIRING_NAMES[firing])
-                .append(firing == BOTH ? "" : " alone").append(",  ")
+                .append(firing == BOTH ? "both aims" : firing == WITH_STUDENT
+                        ? "both aims and the student's" : FIRING_NAMES[firing])
+                .append(firing >= BOTH ? "" : " alone").append(",  ")
                 .append(fireKey.getKeyLabel()).append(" fires;  ").append(distanceText)
                 .append(",  vx = ");
         TextFormat.appendFixed(text, vx, 1).append(" m/s (").append(fasterKey.getKeyLabel())
@@ -567,12 +676,15 @@ public final class HelloAimingDemo extends DemoState {
                 text.append("never lands\n");
             }
         }
+        if (firing == WITH_STUDENT || studentInShot || getStudentProblem() != null) {
+            writeStudentLine(text);
+        }
         if (code != RECIPE_CODE || isSlideInShot()) {
             writeSlideLines(text, step);
         }
         if (getLandedShotNumber() != shots) {
             text.append("Shot ").append(shots).append(": in the air for ");
-            DemoParticle flying = bullets[shotFiring == BOTH ? 0 : shotFiring];
+            DemoParticle flying = bullets[shotFiring >= BOTH ? 0 : shotFiring];
             TextFormat.appendFixed(text, flying.getFlightSeconds(), 2).append(" s  (")
                     .append(FIRING_NAMES[shotFiring]).append(", vx ");
             TextFormat.appendFixed(text, shotVx, 1).append(" m/s)\n");
@@ -594,7 +706,65 @@ public final class HelloAimingDemo extends DemoState {
             TextFormat.appendFixed(text, lastLandingX[a] - TARGET_DISTANCE, 3).append(" m");
             separator = ';';
         }
+        if (studentLandedShot == landed) {
+            text.append("; student x = ");
+            TextFormat.appendFixed(text, studentLandingX, 3).append(" m, miss ");
+            TextFormat.appendFixed(text, studentLandingX - TARGET_DISTANCE, 3).append(" m");
+        }
         text.append('\n');
+    }
+
+    /**
+     * The student's aim in one line: the vy it gave the shot beside the lecture's discrete
+     * one, or what kept the shot from it.
+     */
+    private void writeStudentLine(StringBuilder text) {
+        text.append("Student's aim (exercise 3), green:  ");
+        String problem = getStudentProblem();
+        if (problem != null) {
+            text.append(problem);
+            if (StudentRunner.NOT_WRITTEN.equals(problem)) {
+                text.append(": write ").append(studentAim.getClassName())
+                        .append(" (docs/exercises.md)");
+            }
+            text.append('\n');
+            return;
+        }
+        if (!studentInShot) {
+            text.append("fires with the next shot\n");
+            return;
+        }
+        TextFormat.appendFixed(text.append("discreteVy = "), studentVy, 3)
+                .append(" m/s (the lecture's ");
+        TextFormat.appendFixed(text, getVerticalSpeed(Aim.DISCRETE), 3).append(" m/s)\n");
+    }
+
+    /**
+     * Launch the student's bullet with the student's discrete aim if the shot fires it and
+     * the aim returns a number; otherwise park and hide it, flying the discrete aim's shot.
+     */
+    private void fireStudent() {
+        studentInShot = false;
+        studentLandingRecorded = false;
+        studentVy = Float.NaN;
+        float vy = Float.NaN;
+        if (firing == WITH_STUDENT) {
+            if (studentAim == null) {
+                // once per class: a user's choice, not a step, so it may allocate
+                studentAim = new StudentAim(studentClass != null ? studentClass
+                        : StudentRunner.className(StudentAim.SIMPLE_NAME), studentLimitNanos);
+            }
+            vy = studentAim.discreteVy(vx, TARGET_DISTANCE, g,
+                    getClock().getCurrentStepSeconds());
+        }
+        studentInShot = !Float.isNaN(vy);
+        if (studentInShot) {
+            studentVy = vy;
+            shotVy = Math.max(shotVy, vy);
+        }
+        launchVelocity.set(vx, studentInShot ? vy : getVerticalSpeed(Aim.DISCRETE), 0f);
+        launch(studentBullet, launchVelocity);
+        studentBullet.setParked(!studentInShot);
     }
 
     /**
@@ -805,6 +975,11 @@ public final class HelloAimingDemo extends DemoState {
                         ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
             }
         }
+        ParticleView student = getView(studentBullet);
+        if (student != null) {
+            student.getNode().setCullHint(studentInShot && shotCode != SLIDE_CODE
+                    ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        }
         if (slideMark != null) {
             slideMark.setCullHint(isSlideInShot() ? Spatial.CullHint.Inherit
                     : Spatial.CullHint.Always);
@@ -817,7 +992,7 @@ public final class HelloAimingDemo extends DemoState {
             @Override
             public int countStateInts() {
                 return 1 + 4 * AIMS.length + 2 * AIMS.length + 1 + 1 + 1 + 1 + 1
-                        + 1 + 3 + 3 + 1;
+                        + 1 + 3 + 3 + 1 + 5;
             }
 
             @Override
@@ -839,6 +1014,11 @@ public final class HelloAimingDemo extends DemoState {
                 slab.putVector(slideBullet.position);
                 slab.putVector(slideBullet.velocity);
                 slab.putInt(slideBullet.getSteps());
+                slab.putBoolean(studentInShot);
+                slab.putBoolean(studentLandingRecorded);
+                slab.putInt(studentLandedShot);
+                slab.putFloat(studentLandingX);
+                slab.putFloat(studentVy);
             }
 
             @Override
@@ -860,6 +1040,11 @@ public final class HelloAimingDemo extends DemoState {
                 slab.getVector(slideBullet.position);
                 slab.getVector(slideBullet.velocity);
                 slideBullet.setSteps(slab.getInt());
+                studentInShot = slab.getBoolean();
+                studentLandingRecorded = slab.getBoolean();
+                studentLandedShot = slab.getInt();
+                studentLandingX = slab.getFloat();
+                studentVy = slab.getFloat();
                 showFiredBullets();
             }
         };
