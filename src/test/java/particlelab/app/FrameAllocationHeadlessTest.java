@@ -12,8 +12,11 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.coursework.StudentRunner;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.physics.SimulationClock;
 
@@ -134,6 +137,50 @@ class FrameAllocationHeadlessTest {
             assertEquals(List.of(), measureAll(0f, 0, 0, new int[1]));
         } finally {
             presenting = false;
+        }
+    }
+
+    /**
+     * The drag demo's student lane running the reference solution (issue 31 §3): each step
+     * hands the recipe's call to a worker thread and waits for it, and the HUD gives the
+     * lane's readouts; the demo's thread allocates nothing for that either.
+     */
+    @Test
+    void theStudentLanesFrameAllocatesNothing() throws Exception {
+        int index = -1;
+        for (int i = 0; i < demos.size(); ++i) {
+            if (demos.get(i) instanceof DragDemo) {
+                index = i;
+            }
+        }
+        assertTrue(index >= 0, "drag is catalogued");
+        DragDemo drag = (DragDemo) demos.get(index);
+        int dragIndex = index;
+        int lane = drag.getParameters().indexOf(ComparisonLane.PARAMETER);
+        harness.call(() -> begin(dragIndex, 0f, 0, 0));
+        try {
+            harness.call(() -> {
+                drag.getLane().useStudentClass("particlelab.solutions.Recipe",
+                        StudentRunner.DEFAULT_LIMIT_NANOS);
+                drag.getParameters().set(lane, ComparisonLane.Kind.STUDENT.ordinal());
+                restart(drag);
+                return true;
+            });
+            for (int frames = 0; frames < MIN_WARM_UP_FRAMES;
+                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW) {
+                harness.call(() -> warmUp(drag));
+            }
+            assertEquals("", harness.call(() -> measure(dragIndex)));
+            // the recipe ran all along (jME's task result may not be null: "null" for none)
+            assertEquals("null", harness.call(() -> String.valueOf(
+                    drag.getLane().getStudentProblem())));
+        } finally {
+            harness.call(() -> {
+                drag.getParameters().set(lane, ComparisonLane.Kind.OFF.ordinal());
+                drag.getLane().useStudentClass(StudentRunner.className("Recipe"),
+                        StudentRunner.DEFAULT_LIMIT_NANOS);
+                return end(drag);
+            });
         }
     }
 
