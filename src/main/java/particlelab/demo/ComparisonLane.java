@@ -335,8 +335,7 @@ public final class ComparisonLane implements DemoPart {
     /**
      * Declare the lane's parameter,
      * {@code --set lane=off|slide|euler|semi|verlet|midpoint|rk4|student}, applied at the next
-     * launch,
-     * off at the start.
+     * launch, off at the start.
      *
      * @param parameters the demo's parameters (not null, modified)
      */

@@ -5,15 +5,20 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.lang.management.ManagementFactory;
 import org.junit.jupiter.api.Test;
 import particlelab.accuracy.MotionState;
+import particlelab.accuracy.SlideCode;
 import particlelab.coursework.RecipeExercise;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.GravitationalPullDemo;
 import particlelab.lecture.ThrustDemo;
 import particlelab.lecture.UniformMotionDemo;
+import particlelab.physics.Gravity;
+import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.QuadraticDrag;
 
 /**
  * The comparison lane's {@code student} (issue 31 §3), in plain JUnit: exercise 1's class
@@ -331,6 +336,37 @@ class StudentLaneTest {
         } finally {
             EndlessRecipe.released = true;
         }
+    }
+
+    /** A sphere under quadratic drag, which exercise 1's recipe does not have. */
+    private static final class QuadraticDragDemo extends DemoState {
+        private final LaunchControl launch = new LaunchControl(new Vector3f(10f, 10f, 0f));
+        private final ComparisonLane lane = addPart(new ComparisonLane(SlideCode::uniform,
+                0.3f));
+
+        QuadraticDragDemo() {
+            super("quadratic drag");
+        }
+
+        @Override
+        protected void createScene() {
+            DemoParticle sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan,
+                    Vector3f.ZERO, new Vector3f(10f, 10f, 0f), 1f,
+                    new ParticleIntegrator(new Gravity(), new QuadraticDrag(0.1f))));
+            sphere.stopAtGround();
+            lane.follow(launch, sphere);
+        }
+    }
+
+    @Test
+    void forcesTheRecipeHasNotStopTheLaneSayingSo() {
+        QuadraticDragDemo demo = new QuadraticDragDemo();
+        studentLane(demo, demo.lane, SOLUTION, GENEROUS_LIMIT_NANOS);
+        demo.advancePhysics(H);
+        assertEquals("these forces are not exercise 1's (gravity, linear drag, thrust)",
+                demo.lane.getStudentProblem());
+        assertEquals("Lane student's recipe (L):  these forces are not exercise 1's (gravity,"
+                + " linear drag, thrust)\n", hud(demo));
     }
 
     @Test
