@@ -17,8 +17,13 @@ import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.TunnellingDemo;
+import particlelab.physics.Force;
 import particlelab.physics.Gravity;
+import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.QuadraticDrag;
+import particlelab.physics.SlideFormDrag;
+import particlelab.physics.Thrust;
 import particlelab.rigid.RotationIntegrator;
 import particlelab.world.Detection;
 import particlelab.world.TunnelShots;
@@ -56,6 +61,11 @@ public final class TourQuestions {
     /** The pull demo's ball, as it labels it. */
     private static final String PULL_BALL = "ball";
     private static final String[] SHORT_ON_LONG = {"short", "on", "long"};
+    /** The drag demo's spheres, in its order (its first three particles). */
+    private static final String[] DRAG_SPHERES = {"gravity only", "linear drag",
+        "quadratic drag"};
+    /** The thrust demo's spheres, in its order. */
+    private static final String[] THRUST_SPHERES = {"pull + drag", "pull + drag + thrust"};
     private static final String[] KEPT_LOST_GAINED = {"kept", "lost", "gained"};
 
     /** Per stop, in the tour's order: its question, or null. */
@@ -69,9 +79,11 @@ public final class TourQuestions {
             null,
             null,
             landingQuestion(),
+            new TourQuestion("Which sphere lands nearest the launch?",
+                    TourQuestions::nearestRule, TourQuestions::nearestOutcome, DRAG_SPHERES),
             null,
-            null,
-            null,
+            new TourQuestion("Which sphere lands farther out?", TourQuestions::farthestRule,
+                    TourQuestions::farthestOutcome, THRUST_SPHERES),
             null,
             new TourQuestion("After " + ROTATION_STEPS + " plain Euler steps, is det R above 1,"
                     + " at 1, or below?", TourQuestions::determinantRule,
@@ -151,7 +163,7 @@ public final class TourQuestions {
         float h = demo.getParameters().getValue("h");
         // The aim command's simulator: the shared Euler step, the crossing interpolated.
         ShotSimulator simulator = new ShotSimulator(
-                new ParticleIntegrator(new Gravity(new Vector3f(0f, -g, 0f))),
+                new ParticleIntegrator(gravity(g)),
                 demo.getParameters().getValue("mass"), h, AimCommand.MAX_STEPS_PER_SHOT * h);
         Landing landing = new Landing();
         simulator.fire(velocity.x, velocity.y, landing);
@@ -173,6 +185,91 @@ public final class TourQuestions {
         Vector3f velocity = ball.copyLaunchVelocity(new Vector3f());
         return compare(ball.getLandingX(), exactLandingX(velocity,
                 demo.getParameters().getValue("g")), ON_METRES);
+    }
+
+    // ------------------------------------------- drag: which sphere lands nearest ----
+
+    private static int nearestRule(DemoState demo) {
+        float g = demo.getParameters().getValue("g");
+        float c = demo.getParameters().getValue("c");
+        // The law is a choice: 0 the physical -c|V|V, 1 the slide's -c|V|²V.
+        Force quadratic = demo.getParameters().getValue("law") == 0f ? new QuadraticDrag(c)
+                : new SlideFormDrag(c);
+        ParticleIntegrator[] integrators = {
+            new ParticleIntegrator(gravity(g)),
+            new ParticleIntegrator(gravity(g),
+                    new LinearDrag(demo.getParameters().getValue("b"))),
+            new ParticleIntegrator(gravity(g), quadratic)};
+        return extremeLanding(demo, integrators, -1);
+    }
+
+    /**
+     * Fly one shot per integrator from the demo's launch, with the trajectory command's step,
+     * and find the landing nearest (sign -1) or farthest (sign +1) out.
+     *
+     * @return the index of that integrator
+     */
+    private static int extremeLanding(DemoState demo, ParticleIntegrator[] integrators,
+            int sign) {
+        Vector3f velocity = launchVelocity(demo);
+        float h = demo.getParameters().getValue("h");
+        int extreme = 0;
+        double extremeX = Double.NEGATIVE_INFINITY;
+        Landing landing = new Landing();
+        for (int i = 0; i < integrators.length; ++i) {
+            new ShotSimulator(integrators[i], demo.getParameters().getValue("mass"), h,
+                    AimCommand.MAX_STEPS_PER_SHOT * h).fire(velocity.x, velocity.y, landing);
+            if (sign * landing.getX() > extremeX) {
+                extremeX = sign * landing.getX();
+                extreme = i;
+            }
+        }
+        return extreme;
+    }
+
+    /**
+     * Find the first spheres' landing nearest (sign -1) or farthest (sign +1) out, once all
+     * have landed.
+     *
+     * @return the sphere's index, or {@link TourQuestion#UNDECIDED} while one still flies
+     */
+    private static int extremeLanded(DemoState demo, int count, int sign) {
+        List<DemoParticle> particles = demo.getParticles();
+        int extreme = 0;
+        for (int i = 0; i < count; ++i) {
+            if (!particles.get(i).hasLanded()) {
+                return TourQuestion.UNDECIDED;
+            }
+            if (sign * particles.get(i).getLandingX()
+                    > sign * particles.get(extreme).getLandingX()) {
+                extreme = i;
+            }
+        }
+        return extreme;
+    }
+
+    // ------------------------------------------ thrust: which sphere lands farther ----
+
+    private static int farthestRule(DemoState demo) {
+        float g = demo.getParameters().getValue("g");
+        float b = demo.getParameters().getValue("b");
+        ParticleIntegrator[] integrators = {
+            new ParticleIntegrator(gravity(g), new LinearDrag(b)),
+            new ParticleIntegrator(gravity(g), new LinearDrag(b),
+                    new Thrust(demo.getParameters().getValue("k")))};
+        return extremeLanding(demo, integrators, 1);
+    }
+
+    private static int farthestOutcome(DemoState demo) {
+        return extremeLanded(demo, THRUST_SPHERES.length, 1);
+    }
+
+    private static Gravity gravity(float g) {
+        return new Gravity(new Vector3f(0f, -g, 0f));
+    }
+
+    private static int nearestOutcome(DemoState demo) {
+        return extremeLanded(demo, DRAG_SPHERES.length, -1);
     }
 
     // ---------------------------------------- collisions: is kinetic energy kept ----

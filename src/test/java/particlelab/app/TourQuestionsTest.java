@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -13,6 +14,7 @@ import particlelab.demo.DemoState;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.physics.Gravity;
+import particlelab.physics.SimulationClock;
 
 /**
  * The tour's questions without a window: one entry per stop, two to four different answers
@@ -125,6 +127,54 @@ class TourQuestionsTest {
         // Stop 2, head-on at e = 0.8: lost; stop 4, the cradle at e = 1: kept.
         assertEquals(1, TourQuestions.forStop(1).answer(TourCommand.stateOf(1)));
         assertEquals(0, TourQuestions.forStop(3).answer(TourCommand.stateOf(3)));
+    }
+
+    /**
+     * The drag stop's spheres, stepped without a window: linear drag lands 8.4 m out,
+     * quadratic 10.6 m, gravity alone 20.2 m. The nearest two are 2 m apart, far more than
+     * the step's own error (about vx·h = 0.17 m), so "linear drag" is no near thing.
+     */
+    @Test
+    void theDragStopsNearestLandingIsMetresClearOfTheNext() {
+        double[] landings = landings("Which sphere lands nearest", 3);
+        double[] sorted = landings.clone();
+        Arrays.sort(sorted);
+        assertTrue(sorted[1] - sorted[0] > 1.0, Arrays.toString(landings));
+        assertEquals(sorted[0], landings[answerTo("Which sphere lands nearest")]);
+    }
+
+    /** Likewise the thrust stop's two spheres: metres apart, the thruster the farther. */
+    @Test
+    void theThrustStopsFartherLandingIsMetresClearOfTheOther() {
+        double[] landings = landings("Which sphere lands farther", 2);
+        assertTrue(Math.abs(landings[1] - landings[0]) > 1.0, Arrays.toString(landings));
+        assertEquals(landings[0] > landings[1] ? 0 : 1,
+                answerTo("Which sphere lands farther"));
+    }
+
+    /**
+     * Step a stop's demo without a window until its first spheres have landed.
+     *
+     * @return where each landed (m)
+     */
+    private static double[] landings(String questionStart, int count) {
+        DemoState demo = TourCommand.stateOf(stopOf(questionStart));
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        // Ten seconds of frames: every sphere is down after a few.
+        for (int frame = 0; frame < 600; ++frame) {
+            demo.advancePhysics(1f / 60f);
+        }
+        double[] landings = new double[count];
+        for (int i = 0; i < count; ++i) {
+            assertTrue(demo.getParticles().get(i).hasLanded(), questionStart + " " + i);
+            landings[i] = demo.getParticles().get(i).getLandingX();
+        }
+        return landings;
+    }
+
+    private static int answerTo(String questionStart) {
+        int stop = stopOf(questionStart);
+        return TourQuestions.forStop(stop).answer(TourCommand.stateOf(stop));
     }
 
     private static int stopOf(String questionStart) {
