@@ -73,7 +73,8 @@ class TourQuestionsTest {
                     * Math.cos(Math.toRadians(parameters.getValue("angle")));
             double shortfall = vx * parameters.getValue("h");
             // Ten times the tolerance: float round-off (1e-5 m) cannot carry it across.
-            assertTrue(shortfall > 10 * TourQuestions.ON_METRES, "stop " + (i + 1) + ": " + shortfall);
+            assertTrue(shortfall > 10 * TourQuestions.ON_METRES,
+                    "stop " + (i + 1) + ": " + shortfall);
             assertEquals("short", question.getAnswers().get(question.answer(
                     TourCommand.stateOf(i))), "stop " + (i + 1));
         }
