@@ -20,6 +20,7 @@ import particlelab.lecture.TunnellingDemo;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.physics.SlideFormDrag;
@@ -51,6 +52,13 @@ public final class TourQuestions {
      * float32 impulse changes it by about 1e-6 of itself; e = 0.8 loses a third of it.
      */
     public static final double ENERGY_KEPT_FRACTION = 1e-3;
+    /** When the uniform-motion question compares the sphere with the line (s). */
+    public static final int UNIFORM_SECONDS = 2;
+    /**
+     * How near the line {@code P0 + V0·t} counts as "on" it (m): the float sums of 120 steps
+     * stray about 1e-5 m from it.
+     */
+    public static final double ON_LINE_METRES = 1e-3;
     /** The steps after which the rotation question reads det R. */
     public static final int ROTATION_STEPS = 100;
     /** The overlap test's shots the tunnel rule fires (as {@code tunnel --shots}). */
@@ -77,7 +85,9 @@ public final class TourQuestions {
             energyQuestion(),
             null,
             null,
-            null,
+            new TourQuestion("After " + UNIFORM_SECONDS + " s of steps, is the sphere behind,"
+                    + " on, or ahead of P0 + V0·t?", TourQuestions::uniformRule,
+                    TourQuestions::uniformOutcome, "behind", "on", "ahead"),
             landingQuestion(),
             new TourQuestion("Which sphere lands nearest the launch?",
                     TourQuestions::nearestRule, TourQuestions::nearestOutcome, DRAG_SPHERES),
@@ -185,6 +195,45 @@ public final class TourQuestions {
         Vector3f velocity = ball.copyLaunchVelocity(new Vector3f());
         return compare(ball.getLandingX(), exactLandingX(velocity,
                 demo.getParameters().getValue("g")), ON_METRES);
+    }
+
+    // ------------------------------------ uniform motion: is the step exact here ----
+
+    private static int uniformRule(DemoState demo) {
+        Vector3f velocity = launchVelocity(demo);
+        float h = demo.getParameters().getValue("h");
+        int steps = Math.round(UNIFORM_SECONDS / h);
+        // The step the trajectory command runs, with no force: P += h·V.
+        Particle sphere = new Particle();
+        sphere.velocity.set(velocity);
+        ParticleIntegrator noForce = new ParticleIntegrator();
+        for (int i = 0; i < steps; ++i) {
+            noForce.step(sphere, h);
+        }
+        return aheadOfLine(sphere.position, velocity, (double) steps * h);
+    }
+
+    private static int uniformOutcome(DemoState demo) {
+        double t = demo.getClock().getSimulatedSeconds();
+        if (t < UNIFORM_SECONDS) {
+            return TourQuestion.UNDECIDED;
+        }
+        DemoParticle sphere = demo.getParticles().get(0);
+        Vector3f moved = sphere.copyLaunchPosition(new Vector3f()).negateLocal()
+                .addLocal(sphere.getParticle().position);
+        return aheadOfLine(moved, sphere.copyLaunchVelocity(new Vector3f()), t);
+    }
+
+    /**
+     * Sort a displacement against {@code V·t} along V: behind, on or ahead.
+     *
+     * @return 0 behind, 1 on (within {@link #ON_LINE_METRES}), 2 ahead
+     */
+    private static int aheadOfLine(Vector3f moved, Vector3f velocity, double t) {
+        double speed = velocity.length();
+        double along = (moved.x * (double) velocity.x + moved.y * (double) velocity.y
+                + moved.z * (double) velocity.z) / speed;
+        return compare(along, speed * t, ON_LINE_METRES);
     }
 
     // ------------------------------------------- drag: which sphere lands nearest ----

@@ -84,7 +84,7 @@ class TourQuestionsTest {
     /** Plain Euler's det R grows by {@code 1 + (|ω|h)²} a step: 1.01¹⁰⁰ = 2.70 at stop 13. */
     @Test
     void theRotationStopsDeterminantIsFarAboveOne() {
-        int stop = stopOf("After ");
+        int stop = stopOf("After " + TourQuestions.ROTATION_STEPS + " ");
         DemoParameters parameters = TourCommand.stateOf(stop).getParameters();
         double wh = parameters.getValue("omega") * parameters.getValue("h");
         double det = Math.pow(1 + wh * wh, TourQuestions.ROTATION_STEPS);
@@ -151,6 +151,31 @@ class TourQuestionsTest {
         assertTrue(Math.abs(landings[1] - landings[0]) > 1.0, Arrays.toString(landings));
         assertEquals(landings[0] > landings[1] ? 0 : 1,
                 answerTo("Which sphere lands farther"));
+    }
+
+    /**
+     * The step {@code P += h·V} is exact for uniform motion: after 2 s the float sums of 120
+     * steps stray at most 120 half-ulps of 8 m (6e-5 m) from the line, a sixteenth of "on"'s
+     * millimetre, so "on" is no near thing and "behind" or "ahead" cannot be right.
+     */
+    @Test
+    void theUniformStopsSphereIsOnTheLineWellInsideTheTolerance() {
+        int stop = stopOf("After " + TourQuestions.UNIFORM_SECONDS + " s");
+        DemoState demo = TourCommand.stateOf(stop);
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        while (demo.getClock().getSimulatedSeconds() < TourQuestions.UNIFORM_SECONDS) {
+            demo.advancePhysics(1f / 60f);
+        }
+        com.jme3.math.Vector3f p = demo.getParticles().get(0).getParticle().position;
+        com.jme3.math.Vector3f p0 = demo.getParticles().get(0)
+                .copyLaunchPosition(new com.jme3.math.Vector3f());
+        com.jme3.math.Vector3f v = demo.getParticles().get(0)
+                .copyLaunchVelocity(new com.jme3.math.Vector3f());
+        double t = demo.getClock().getSimulatedSeconds();
+        double off = Math.hypot(p.x - (p0.x + v.x * t), p.y - (p0.y + v.y * t));
+        assertTrue(off < TourQuestions.ON_LINE_METRES / 16, "off the line by " + off + " m");
+        assertEquals(1, TourQuestions.forStop(stop).answer(TourCommand.stateOf(stop)));
+        assertEquals(1, TourQuestions.forStop(stop).observe(demo));
     }
 
     /**
