@@ -28,6 +28,7 @@ public final class TourCommand {
     /** The subcommand's name. */
     public static final String NAME = "tour";
     private static final String LIST = "--list";
+    private static final String QUESTIONS = "--questions";
     private static final String STOP = "--stop";
     private static final String FRAMES = "--frames";
     private static final String SCREENSHOT = "--screenshot";
@@ -52,6 +53,10 @@ public final class TourCommand {
                         + " it needs and shows what to watch for on the HUD; PageDown and"
                         + " PageUp go forward and back, F7 leaves the tour.")
                 .flag(LIST, "print the stops (number, slide, demo and settings) and exit")
+                .flag(QUESTIONS, "print each stop's question for the room, its answers"
+                        + " (numbered as keys 1 to 4) and, after the colon, the one that is"
+                        + " right for the stop's state, worked out by the command-line tools'"
+                        + " code; one stop a line, then exit")
                 .value(STOP, "N", "open on stop N, 1 to " + count + " (default 1)")
                 .value(FRAMES, "N", "quit after N frames (N >= 1); default: run until closed")
                 .value(SCREENSHOT, "FILE", "save the last frame as a PNG (needs --frames);"
@@ -100,6 +105,10 @@ public final class TourCommand {
                 for (int i = 0; i < stops.size(); ++i) {
                     out.println(stops.get(i).describe(i + 1));
                 }
+                return DemoCommand.OK;
+            }
+            if (options.has(QUESTIONS)) {
+                printQuestions(out);
                 return DemoCommand.OK;
             }
             stop = options.intInRange(STOP, 1, 1, stops.size()) - 1;
@@ -151,5 +160,35 @@ public final class TourCommand {
             SafeFiles.removeCreated(shotFolder, created);
         }
         return status;
+    }
+
+    /**
+     * Print every stop's question and its right answer for the stop's state: the stop's demo
+     * with its parameters at their defaults and the stop's settings applied, as the window's
+     * tour puts it (no scene is built).
+     */
+    private static void printQuestions(PrintStream out) {
+        List<LectureTour.Stop> stops = LectureTour.stops();
+        for (int i = 0; i < stops.size(); ++i) {
+            TourQuestion question = TourQuestions.forStop(i);
+            if (question == null) {
+                out.println((i + 1) + (i < 9 ? "   " : "  ") + "(no question yet)");
+                continue;
+            }
+            out.println(question.describe(i + 1, question.answer(stateOf(i))));
+        }
+    }
+
+    /**
+     * Put a fresh copy of a stop's demo in the stop's state, without building its scene.
+     *
+     * @param stop the stop (from 0)
+     * @return the demo, its parameters at their defaults and the stop's settings applied
+     */
+    static DemoState stateOf(int stop) {
+        LectureTour.Stop next = LectureTour.stops().get(stop);
+        DemoState demo = DemoCatalog.createAll().get(DemoCatalog.indexOf(next.getDemo()));
+        DemoCommand.applySettings(demo, next.getSettings());
+        return demo;
     }
 }
