@@ -529,8 +529,8 @@ public final class HelloAimingDemo extends DemoState {
             inShot[a] = true;
             shotVy = Math.max(shotVy, vy);
         }
-        // The student's bullet flies the discrete aim's shot, parked and hidden, until a shot
-        // fires the student's aim.
+        // The student's bullet flies the first shot's discrete aim, parked and hidden, and
+        // stays where it lands until a shot fires the student's aim.
         launchVelocity.set(vx, bullets[Aim.DISCRETE.ordinal()].copyLaunchVelocity(
                 new Vector3f()).y, 0f);
         studentBullet = addParticle("student's aim", STUDENT_COLOR, Vector3f.ZERO,
@@ -741,7 +741,7 @@ public final class HelloAimingDemo extends DemoState {
 
     /**
      * Launch the student's bullet with the student's discrete aim if the shot fires it and
-     * the aim returns a number; otherwise park and hide it, flying the discrete aim's shot.
+     * the aim returns a number; otherwise park and hide it where it is.
      */
     private void fireStudent() {
         studentInShot = false;
@@ -758,13 +758,16 @@ public final class HelloAimingDemo extends DemoState {
                     getClock().getCurrentStepSeconds());
         }
         studentInShot = !Float.isNaN(vy);
-        if (studentInShot) {
-            studentVy = vy;
-            shotVy = Math.max(shotVy, vy);
-        }
-        launchVelocity.set(vx, studentInShot ? vy : getVerticalSpeed(Aim.DISCRETE), 0f);
-        launch(studentBullet, launchVelocity);
         studentBullet.setParked(!studentInShot);
+        if (!studentInShot) {
+            // Not launched: a launch keeps the shot before it (F2's kept shots) and marks the
+            // replay, which a hidden bullet must not do.
+            return;
+        }
+        studentVy = vy;
+        shotVy = Math.max(shotVy, vy);
+        launchVelocity.set(vx, vy, 0f);
+        launch(studentBullet, launchVelocity);
     }
 
     /**
