@@ -33,7 +33,6 @@ import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
 import particlelab.world.World;
-import particlelab.lecture.DragDemo;
 
 /**
  * The one base class of every demo. A demo declares its particles and their forces, its keys
@@ -1890,9 +1889,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Declare the scene the first time anything needs it (the world, the particles, the HUD's
-     * text or the window): the particles, then the parameters and the keys. So
-     * {@code new DragDemo().getWorld().step(h)} steps the demo's physics with no jME
-     * application at all; the views are built later, by {@link #initialize}, if a window
+     * text or the window): the particles, then the parameters and the keys. So a new demo's
+     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views are built later, by {@link #initialize}, if a window
      * comes.
      */
     private void ensureScene() {
