@@ -49,26 +49,33 @@ final class EulerRecipe {
     }
 
     /**
-     * The recipe's update: {@code V' = V + h·a}, then {@code P' = P + h·V'} with the new
-     * velocity.
+     * The recipe's update, written into the particle: {@code V ← V + h·a}, then
+     * {@code P ← P + h·V} with the new velocity. Unchecked: it tells whether the new position
+     * is finite, and the caller decides what a non-finite one means (the integrator puts the
+     * old state back and refuses; the batch names the particle).
      *
-     * @param particle the particle at the start of the step (not null, not modified)
-     * @param acceleration a at the start of the step (m/s², not modified)
-     * @param stepSeconds h (in seconds)
-     * @param nextVelocity storage for V' (m/s, modified)
-     * @param nextPosition storage for P' (m, modified)
+     * @param particle the particle at the start of the step (not null, modified)
+     * @param ax a along x at the start of the step (m/s²)
+     * @param ay a along y (m/s²)
+     * @param az a along z (m/s²)
+     * @param stepSeconds h (in seconds, &gt;0)
+     * @return true if the new position is finite (with h &gt; 0, so is the new velocity)
      */
-    static void step(Particle particle, Vector3f acceleration, float stepSeconds,
-            Vector3f nextVelocity, Vector3f nextPosition) {
+    static boolean step(Particle particle, float ax, float ay, float az, float stepSeconds) {
         Vector3f velocity = particle.velocity;
         Vector3f position = particle.position;
         // V ← V + h·a
-        float vx = velocity.x + stepSeconds * acceleration.x;
-        float vy = velocity.y + stepSeconds * acceleration.y;
-        float vz = velocity.z + stepSeconds * acceleration.z;
-        nextVelocity.set(vx, vy, vz);
+        float vx = velocity.x + stepSeconds * ax;
+        float vy = velocity.y + stepSeconds * ay;
+        float vz = velocity.z + stepSeconds * az;
         // P ← P + h·V, with the new V
-        nextPosition.set(position.x + stepSeconds * vx, position.y + stepSeconds * vy,
-                position.z + stepSeconds * vz);
+        float px = position.x + stepSeconds * vx;
+        float py = position.y + stepSeconds * vy;
+        float pz = position.z + stepSeconds * vz;
+        velocity.set(vx, vy, vz);
+        position.set(px, py, pz);
+        // a finite sum means three finite terms
+        return Float.isFinite(px + py + pz)
+                || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz);
     }
 }

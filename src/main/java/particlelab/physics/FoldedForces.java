@@ -16,8 +16,8 @@ import com.jme3.math.Vector3f;
  * sum ({@link EulerRecipe#accelerationOf}) a rounds differently by a few ulp
  * ({@code ParticleIntegratorFoldingTest}); gravity alone gives identical numbers.
  *
- * <p>The per-particle step ({@link #acceleration}) and the batch ({@link PackedStep}) compute
- * the same σ and a, so they give the same floats. The numbers for a step and mass are filled
+ * <p>The per-particle step ({@link #step}), {@link #acceleration} and the batch
+ * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers for a step and mass are filled
  * by {@link StepLimits#remember}, which keys the regime's bound on the same h and m. A setter
  * of a folded force marks this fold {@link #markStale stale} ({@link FoldedForce}); the
  * integrator folds again before its next step ({@link #refoldIfStale}).
@@ -148,11 +148,48 @@ final class FoldedForces {
     }
 
     /**
+     * One per-particle step: the recipe ({@link EulerRecipe#step}) with a computed here in
+     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it. The
+     * numbers for h and the particle's mass must be remembered ({@link StepLimits#remember}).
+     *
+     * @param particle the particle (not null, modified even where the result is not finite)
+     * @param stepSeconds h (in seconds, &gt;0)
+     * @return true if the new position is finite; false if not (then the integrator puts the
+     *     old state back and takes {@link #acceleration}, which asks every force where the
+     *     fold overflows)
+     */
+    boolean step(Particle particle, float stepSeconds) {
+        Vector3f velocity = particle.velocity;
+        float vx = velocity.x;
+        float vy = velocity.y;
+        float vz = velocity.z;
+        float ax = gravityX;
+        float ay = gravityY;
+        float az = gravityZ;
+        if (hasOthers) {
+            EulerRecipe.accelerationOf(others, particle, field, push, otherAcceleration);
+            ax += otherAcceleration.x;
+            ay += otherAcceleration.y;
+            az += otherAcceleration.z;
+        }
+        float sigma = speedDependent ? dragRate(speed(vx, vy, vz), stepInverseMass)
+                : stepLinearRate;
+        // F/m = −σ·V; σ = 0 adds nothing to a finite V, so skip it (gravity alone)
+        if (sigma != 0f) {
+            ax -= sigma * vx;
+            ay -= sigma * vy;
+            az -= sigma * vz;
+        }
+        return EulerRecipe.step(particle, ax, ay, az, stepSeconds);
+    }
+
+    /**
      * The acceleration every per-particle step uses, {@code a = g + F/m} of all the scene's
      * forces at the particle's state: the built-in ones folded, {@code a = (g + a_other) − σ·V}
      * with {@code σ = (b + c·|V| − k/|V|)/m} ({@link #dragRate}), the others asked through
-     * the interface ({@link EulerRecipe#accelerationOf}). Where the folded sum is not finite
-     * (b/m beyond the float range for a particle at rest: ∞·0) it asks every force instead.
+     * the interface ({@link EulerRecipe#accelerationOf}); the same floats as {@link #step}
+     * and the batch ({@link PackedStep}). Where the folded sum is not finite (b/m beyond the
+     * float range for a particle at rest: ∞·0) it asks every force instead.
      *
      * @param particle the particle (not null, not modified)
      * @param storeResult storage for a (m/s², not null, modified)
@@ -173,10 +210,12 @@ final class FoldedForces {
         float vz = velocity.z;
         float sigma = dragRate(speedDependent ? speed(vx, vy, vz) : 0f,
                 inverseMass(particle.getMass()));
-        // F/m = −σ·V: the batch computes these same floats (PackedStep)
-        ax -= sigma * vx;
-        ay -= sigma * vy;
-        az -= sigma * vz;
+        // F/m = −σ·V, skipped for σ = 0 as in step()
+        if (sigma != 0f) {
+            ax -= sigma * vx;
+            ay -= sigma * vy;
+            az -= sigma * vz;
+        }
         // a finite sum means three finite terms
         if (Float.isFinite(ax + ay + az)
                 || Float.isFinite(ax) && Float.isFinite(ay) && Float.isFinite(az)) {

@@ -56,12 +56,8 @@ final class PackedStep {
     private boolean fusedCheck = FUSED_CHECK;
     /** Scratch for the one-by-one form: the particle being stepped ... */
     private final Particle particle = new Particle();
-    /** ... its acceleration (m/s²) ... */
+    /** ... and its acceleration (m/s²). */
     private final Vector3f acceleration = new Vector3f();
-    /** ... its new velocity (m/s) ... */
-    private final Vector3f nextVelocity = new Vector3f();
-    /** ... and its new position (m). */
-    private final Vector3f nextPosition = new Vector3f();
     /** Scratch of the step that finds a floor: vy of one block before its step (m/s) ... */
     private final float[] blockVelocityY = new float[BATCH_BLOCK];
     /** ... y of the block after it (m) ... */
@@ -451,13 +447,15 @@ final class PackedStep {
             particle.position.set(positions[i], positions[y], positions[z]);
             particle.velocity.set(velocities[i], velocities[y], velocities[z]);
             folded.acceleration(particle, acceleration);
-            EulerRecipe.step(particle, acceleration, stepSeconds, nextVelocity, nextPosition);
-            positions[i] = nextPosition.x;
-            positions[y] = nextPosition.y;
-            positions[z] = nextPosition.z;
-            velocities[i] = nextVelocity.x;
-            velocities[y] = nextVelocity.y;
-            velocities[z] = nextVelocity.z;
+            // unchecked here: the arrays are checked below
+            EulerRecipe.step(particle, acceleration.x, acceleration.y, acceleration.z,
+                    stepSeconds);
+            positions[i] = particle.position.x;
+            positions[y] = particle.position.y;
+            positions[z] = particle.position.z;
+            velocities[i] = particle.velocity.x;
+            velocities[y] = particle.velocity.y;
+            velocities[z] = particle.velocity.z;
         }
         boolean finite = isSumFinite(positions, 0, count)
                 & isSumFinite(positions, stride, count) & isSumFinite(positions, 2 * stride, count);

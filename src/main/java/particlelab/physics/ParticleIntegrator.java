@@ -46,10 +46,10 @@ public final class ParticleIntegrator {
     private final ParticleBatch batch;
     /** Scratch: a = g + F/m (m/s²). */
     private final Vector3f acceleration = new Vector3f();
-    /** Scratch: the velocity after the step (m/s), committed only if finite. */
-    private final Vector3f nextVelocity = new Vector3f();
-    /** Scratch: the position after the step (m), committed only if finite. */
-    private final Vector3f nextPosition = new Vector3f();
+    /** Scratch for {@link #stepCarefully}: the velocity before the step (m/s) ... */
+    private final Vector3f oldVelocity = new Vector3f();
+    /** ... and the position (m), put back if the step is not finite. */
+    private final Vector3f oldPosition = new Vector3f();
 
     /**
      * Create an integrator for a scene's forces.
@@ -281,29 +281,48 @@ public final class ParticleIntegrator {
     }
 
     /**
-     * One step of a particle: the recipe ({@link EulerRecipe#step}) with the acceleration of
-     * {@link #acceleration}, then the guard: commit only a finite result.
+     * One step of a particle: the recipe ({@link EulerRecipe#step}) with the folded
+     * acceleration ({@link FoldedForces#step}); where the new state is not finite, the old one
+     * is put back and {@link #stepCarefully} decides.
      */
     private void stepOne(Particle particle, float stepSeconds) {
-        // h and m remembered for the regime's bound (one comparison when they are)
+        // h and m remembered for the fold and the regime's bound (one comparison when they are)
         limits.remember(stepSeconds, particle.getMass());
+        Vector3f velocity = particle.velocity;
+        Vector3f position = particle.position;
+        float vx = velocity.x;
+        float vy = velocity.y;
+        float vz = velocity.z;
+        float px = position.x;
+        float py = position.y;
+        float pz = position.z;
+        if (!folded.step(particle, stepSeconds)) {
+            velocity.set(vx, vy, vz);
+            position.set(px, py, pz);
+            stepCarefully(particle, stepSeconds);
+        }
+    }
+
+    /**
+     * The step where the folded one was not finite: the recipe again with
+     * {@link #acceleration}, which asks every force where the fold overflows; a result that is
+     * still not finite is refused, the particle keeping its state.
+     */
+    private void stepCarefully(Particle particle, float stepSeconds) {
+        oldVelocity.set(particle.velocity);
+        oldPosition.set(particle.position);
         folded.acceleration(particle, acceleration);
-        EulerRecipe.step(particle, acceleration, stepSeconds, nextVelocity, nextPosition);
-        // P' = P + h·V' with h > 0 is finite only if V' is; a finite sum means three finite
-        // terms
-        float px = nextPosition.x;
-        float py = nextPosition.y;
-        float pz = nextPosition.z;
-        if (!(Float.isFinite(px + py + pz)
-                || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz))) {
+        if (!EulerRecipe.step(particle, acceleration.x, acceleration.y, acceleration.z,
+                stepSeconds)) {
+            String bad = "P=" + particle.position + ", V=" + particle.velocity;
+            particle.velocity.set(oldVelocity);
+            particle.position.set(oldPosition);
             String why = particle.isFinite()
                     ? "; the largest stable step here is " + maxStableStep(particle) + " s"
                     : "; it was already non-finite before the step";
             throw new NonFiniteStepException("the Euler step h=" + stepSeconds
                     + " s would leave the particle non-finite: " + particle
-                    + " would get P=" + nextPosition + ", V=" + nextVelocity + why);
+                    + " would get " + bad + why);
         }
-        particle.velocity.set(nextVelocity);
-        particle.position.set(nextPosition);
     }
 }
