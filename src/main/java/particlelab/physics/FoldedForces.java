@@ -17,10 +17,11 @@ import com.jme3.math.Vector3f;
  * ({@code ParticleIntegratorFoldingTest}); gravity alone gives identical numbers.
  *
  * <p>The per-particle step ({@link #step}), {@link #acceleration} and the batch
- * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers for a step and mass are filled
- * by {@link StepLimits#remember}, which keys the regime's bound on the same h and m. A setter
- * of a folded force marks this fold {@link #markStale stale} ({@link FoldedForce}); the
- * integrator folds again before its next step ({@link #refoldIfStale}).
+ * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers
+ * for a step and mass are filled by {@link StepLimits#remember}, which keys the regime's bound
+ * on the same h and m. A setter of a folded force marks this fold {@link #markStale stale}
+ * ({@link FoldedForce}); the integrator folds again before its next step
+ * ({@link #refoldIfStale}).
  */
 final class FoldedForces {
 
