@@ -12,13 +12,14 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleBatch;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.world.Fountain;
 
 /**
  * The fountain's whole physics step ({@link Fountain#step}: the Euler step of the particles in
  * flight, the ground, the lifecycle, the fireworks and new water) against the bare batch step
- * ({@link ParticleIntegrator#stepPacked}) of the same N particles under the same forces (rows
+ * ({@link ParticleBatch#stepPacked}) of the same N particles under the same forces (rows
  * {@code bulk/fountain-step/<N>} and {@code bulk/fountain-step-packed/<N>}, per particle of
  * the pool). The fountain runs {@value #FLOW_STEPS} steps first, so it is in full flow (about
  * 89 % of the pool in flight); the bare step moves a copy of that state, every particle of it,
@@ -86,7 +87,8 @@ public class FountainBenchmark {
             System.arraycopy(startPositions, 0, positions, 0, positions.length);
             System.arraycopy(startVelocities, 0, velocities, 0, velocities.length);
         }
-        integrator.stepPacked(positions, velocities, particles, Fountain.MASS_KG, STEP_SECONDS);
+        integrator.batch().stepPacked(positions, velocities, particles, Fountain.MASS_KG,
+                STEP_SECONDS);
         return positions;
     }
 }

@@ -13,6 +13,7 @@ import java.util.Locale;
 import particlelab.lecture.FountainPoints;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleBatch;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.PointCloudMesh;
 import particlelab.world.Fountain;
@@ -24,7 +25,7 @@ import particlelab.world.Fountain;
  * <ul>
  * <li>{@code fountain-step/N}: {@link Fountain#step} in full flow ({@value #FLOW_STEPS} steps
  * first, about 89 % of the pool in flight);</li>
- * <li>{@code step-packed/N}: {@link ParticleIntegrator#stepPacked} of all N particles of a
+ * <li>{@code step-packed/N}: {@link ParticleBatch#stepPacked} of all N particles of a
  * copy of that state under the same forces, restarted from the copy every
  * {@value #STEPS_PER_COPY} steps (as {@code FountainBenchmark} does);</li>
  * <li>{@code mesh-update/N}: {@link FountainPoints#update} of a fountain in full flow into a
@@ -135,7 +136,7 @@ public final class FountainRounds {
                 System.arraycopy(startPositions, 0, positions, 0, positions.length);
                 System.arraycopy(startVelocities, 0, velocities, 0, velocities.length);
             }
-            integrator.stepPacked(positions, velocities, n, Fountain.MASS_KG, STEP_SECONDS);
+            integrator.batch().stepPacked(positions, velocities, n, Fountain.MASS_KG, STEP_SECONDS);
             sink = positions;
         });
 

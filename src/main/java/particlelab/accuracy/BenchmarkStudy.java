@@ -2,7 +2,7 @@ package particlelab.accuracy;
 
 import java.util.ArrayList;
 import java.util.List;
-import particlelab.physics.ParticleIntegrator;
+import particlelab.physics.ParticleBatch;
 
 /**
  * The report's own benchmarks, timed in this JVM one after another (side by side): every
@@ -159,7 +159,7 @@ final class BenchmarkStudy {
 
     /** True if the mix's bulk rows include the Vector API form: it has one, the JVM too. */
     private static boolean hasVectorRows(ForceMix mix) {
-        return mix.hasVectorBatch() && ParticleIntegrator.isVectorApiAvailable();
+        return mix.hasVectorBatch() && ParticleBatch.isVectorApiAvailable();
     }
 
     private static List<String> names(BenchmarkTable table) {

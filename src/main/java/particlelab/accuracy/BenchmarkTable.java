@@ -35,7 +35,7 @@ public final class BenchmarkTable {
     public static final String BULK_LECTURE = "lecture-style";
     /** Bulk: an array of Particle objects through ParticleIntegrator.step(Particle[], h). */
     public static final String BULK_OBJECTS = "shared-objects";
-    /** Bulk: ParticleIntegrator.stepPacked over planar float arrays. */
+    /** Bulk: ParticleBatch.stepPacked over planar float arrays. */
     public static final String BULK_BATCH = "shared-batch";
     /** Bulk: the hand-written primitive loop. */
     public static final String BULK_PRIMITIVE = "primitive-loop";
@@ -44,7 +44,7 @@ public final class BenchmarkTable {
     public static final String PATH_LECTURE = "lecture-style";
     /** Path of a mix row: Particle objects, one {@code step(Particle, h)} each. */
     public static final String PATH_OBJECTS = "shared-objects";
-    /** Path of a bulk mix row: {@code ParticleIntegrator.stepPacked} over planar arrays. */
+    /** Path of a bulk mix row: {@code ParticleBatch.stepPacked} over planar arrays. */
     public static final String PATH_BATCH = "shared-batch";
     /**
      * Path of a bulk mix row: {@code stepPacked} on the Vector API, only for the mixes that

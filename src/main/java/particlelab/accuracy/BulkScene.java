@@ -4,6 +4,7 @@ import com.jme3.math.Vector3f;
 import java.util.Arrays;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
+import particlelab.physics.ParticleBatch;
 import particlelab.physics.ParticleIntegrator;
 
 /**
@@ -79,10 +80,10 @@ public final class BulkScene {
         integrator = mix.integrator();
         // the batch path as the app runs it by default: the scalar passes (the Vector API
         // only where the JVM was started with it, timed apart)
-        integrator.setVectorBatch(false);
-        if (mix.hasVectorBatch() && ParticleIntegrator.isVectorApiAvailable()) {
+        integrator.batch().setVectorBatch(false);
+        if (mix.hasVectorBatch() && ParticleBatch.isVectorApiAvailable()) {
             vectorIntegrator = mix.integrator();
-            vectorIntegrator.setVectorBatch(true);
+            vectorIntegrator.batch().setVectorBatch(true);
         } else {
             vectorIntegrator = null;
         }
@@ -178,7 +179,7 @@ public final class BulkScene {
      */
     public Object stepSharedBatch() {
         relaunchPackedIfDue();
-        integrator.stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
+        integrator.batch().stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
         return positions;
     }
 
@@ -201,11 +202,11 @@ public final class BulkScene {
     public Object stepSharedBatchVector() {
         if (vectorIntegrator == null) {
             throw new IllegalStateException("no Vector API form of the batch for "
-                    + mix.id() + (ParticleIntegrator.isVectorApiAvailable() ? ""
+                    + mix.id() + (ParticleBatch.isVectorApiAvailable() ? ""
                     : " in a JVM started without --add-modules=jdk.incubator.vector"));
         }
         relaunchPackedIfDue();
-        vectorIntegrator.stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
+        vectorIntegrator.batch().stepPacked(positions, velocities, count, 1f, STEP_SECONDS);
         return positions;
     }
 

@@ -3,6 +3,7 @@ package particlelab.accuracy;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleBatch;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.physics.Thrust;
@@ -106,7 +107,7 @@ public enum ForceMix {
 
     /**
      * Tell whether the batch step has two forms for this mix, the scalar passes and the
-     * Vector API ({@link ParticleIntegrator#setVectorBatch}): only without speed-dependent
+     * Vector API ({@link ParticleBatch#setVectorBatch}): only without speed-dependent
      * forces, where one velocity factor serves every particle.
      *
      * @return true for {@link #GRAVITY} and {@link #LINEAR}

@@ -90,7 +90,7 @@ final class PeerScenes {
         for (int i = 0; i < FLOW_STEPS; ++i) {
             fountain.step(FRAME_SECONDS);
         }
-        integrator.setVectorBatch(false);
+        integrator.batch().setVectorBatch(false);
         startPositions = planar(fountain.getPositions(), count);
         startVelocities = planar(fountain.getVelocities(), count);
         positions = startPositions.clone();
@@ -135,7 +135,8 @@ final class PeerScenes {
             System.arraycopy(startPositions, 0, positions, 0, positions.length);
             System.arraycopy(startVelocities, 0, velocities, 0, velocities.length);
         }
-        integrator.stepPacked(positions, velocities, count, Fountain.MASS_KG, FRAME_SECONDS);
+        integrator.batch().stepPacked(positions, velocities, count, Fountain.MASS_KG,
+                FRAME_SECONDS);
         return positions;
     }
 

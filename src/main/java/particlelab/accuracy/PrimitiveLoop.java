@@ -6,7 +6,7 @@ import particlelab.physics.Thrust;
  * The practical speed limit: gravity plus linear drag (or any {@link ForceMix}) stepped by a
  * hand-written loop over primitive float arrays, with no objects, no force abstraction and no
  * checks. The layout is planar (all x, then all y, then all z), the one
- * {@code ParticleIntegrator.stepPacked} takes, so the JIT can vectorise both. Benchmarks and
+ * {@code ParticleBatch.stepPacked} takes, so the JIT can vectorise both. Benchmarks and
  * the report compare the shared integrator against it.
  */
 public final class PrimitiveLoop {

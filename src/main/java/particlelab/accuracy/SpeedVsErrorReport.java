@@ -572,7 +572,7 @@ public final class SpeedVsErrorReport {
                 .append(num(TARGET_VS_PRIMITIVE)).append("× slower than the primitive loop at "
                 + "every N. Objects holding `Vector3f`s cannot get there, so "
                 + "the integrator has a batch form over packed float arrays, "
-                + "`ParticleIntegrator.stepPacked`.\n\n");
+                + "`ParticleBatch.stepPacked`.\n\n");
         md.append("| N | lecture style | Particle objects | packed batch (min–max) "
                 + "| primitive loop (min–max) | batch bytes/step | batch vs lecture "
                 + "| batch vs primitive | targets |\n"

@@ -18,7 +18,7 @@ import particlelab.world.StateSlab;
 /**
  * Demo "fountain": many particles. A fountain of water and a display of fireworks, 10^5
  * particles by default ({@code demo fountain --particles N}, up to 10^6), all moved by the
- * shared Euler step in its batch form ({@code ParticleIntegrator.stepPacked}: packed float
+ * shared Euler step in its batch form ({@code ParticleBatch.stepPacked}: packed float
  * arrays, no object per particle) and drawn as one mesh of points whose buffers are rewritten
  * in place every frame. Builds upon drag (every particle has gravity and linear drag), bounce
  * (the ground's restitution e, applied in one packed loop) and targets (an epilogue that
@@ -200,7 +200,7 @@ public final class FountainDemo extends DemoState {
     protected void describeEquations(StringBuilder text) {
         // linear drag's factor 1 - h*b/m stays above -1 for h < 2m/b (docs/numerics.md)
         // which of the batch's two forms runs (README, "The Vector API, opt-in")
-        text.append(fountain.getIntegrator().isVectorBatch()
+        text.append(fountain.getIntegrator().batch().isVectorBatch()
                 ? "batch Euler step (stepPacked, Vector API): "
                 : "batch Euler step (stepPacked, scalar): ");
         text.append("V = (1 − h·b/m)·V + h·g,  P += h·V;  stable for h < 2m/b = ");

@@ -2,7 +2,7 @@ package particlelab.physics;
 
 /**
  * What a batch step that finds a floor hands on, block by block
- * ({@link ParticleIntegrator#stepPackedFindingFloor(float[], float[], int, int, float, float,
+ * ({@link ParticleBatch#stepPackedFindingFloor(float[], float[], int, int, float, float,
  * float, int[], float[], FloorContacts)}): the particles of one block found at or below the
  * floor, right after that block's step, while its positions and velocities are still in the
  * processor's cache, so that a ground's rule can be applied to them there rather than in a

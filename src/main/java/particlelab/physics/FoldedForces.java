@@ -3,24 +3,25 @@ package particlelab.physics;
 import com.jme3.math.Vector3f;
 
 /**
- * The fast form of {@link ParticleIntegrator}'s recipe: its built-in forces folded into four
- * numbers, the summed gravity g, linear drag b, quadratic drag c and thrust k. Their pushes
- * all point along V, so {@code F/m = −σ·V} with {@code σ = (b + c·|V| − k/|V|)/m} (the thrust
- * term only from {@link Thrust#MIN_SPEED} on), and the recipe's velocity update becomes
+ * The fast form of the recipe's first line, {@code a = g + F/m} ({@link EulerRecipe}): the
+ * built-in forces folded into four numbers, the summed gravity g, linear drag b, quadratic
+ * drag c and thrust k. Their pushes all point along V, so {@code F/m = −σ·V} with
+ * {@code σ = (b + c·|V| − k/|V|)/m} (the thrust term only from {@link Thrust#MIN_SPEED} on),
+ * and a costs no call per force:
  * <pre>
- *   V + h·a = V + h·(g − σ·V) = (1 − h·σ)·V + h·g
+ *   a = (g + a_other) − σ·V       a_other: the other forces, asked through the interface
  * </pre>
- * with h and 1/m folded in too, per step and mass:
- * {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}. This rounds differently from the
- * recipe; the bound is in {@link ParticleIntegrator}'s Javadoc and
- * {@code ParticleIntegratorFoldingTest} and {@code FastPathsMatchTheRecipeTest} prove it.
+ * The fold speeds up the acceleration only: the update {@code V ← V + h·a},
+ * {@code P ← P + h·V} is the recipe's ({@link EulerRecipe#step}). Against the force-by-force
+ * sum ({@link EulerRecipe#accelerationOf}) a rounds differently by a few ulp
+ * ({@code ParticleIntegratorFoldingTest}); gravity alone gives identical numbers.
  *
- * <p>The per-particle step ({@link #step}), the careful step ({@link #compute}) and the batch
- * ({@link PackedStep}) read the same remembered numbers, so they compute the same floats. The
- * numbers for a step and mass are filled by {@link StepLimits#remember}, which keys the
- * regime's bound on the same h and m. A setter of a folded force marks this fold
- * {@link #markStale stale} ({@link FoldedForce}); the integrator folds again before its next
- * step ({@link #refoldIfStale}).
+ * <p>The per-particle step ({@link #step}), {@link #acceleration} and the batch
+ * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers
+ * for a step and mass are filled by {@link StepLimits#remember}, which keys the regime's bound
+ * on the same h and m. A setter of a folded force marks this fold {@link #markStale stale}
+ * ({@link FoldedForce}); the integrator folds again before its next step
+ * ({@link #refoldIfStale}).
  */
 final class FoldedForces {
 
@@ -38,18 +39,23 @@ final class FoldedForces {
     float thrustSum;
     /** Folded: true if σ depends on |V| (some c or k is not zero). */
     boolean speedDependent;
-    /** Remembered for one step and mass ({@link #isRememberedFor}): h·g (m/s) ... */
-    float stepGravityX;
-    float stepGravityY;
-    float stepGravityZ;
-    /** ... 1/m (1/kg) ... */
+    /** Remembered for one step and mass ({@link #isRememberedFor}): 1/m (1/kg) ... */
     float stepInverseMass;
-    /** ... the velocity factor 1 − h·b/m of linear drag ... */
+    /** ... σ of the folded forces at rest, {@code dragRate(0, 1/m)}: b/m (1/s) ... */
+    float stepLinearRate;
+    /** ... and the velocity factor 1 − h·b/m of linear drag, for the batch's message. */
     float stepFactor;
-    /** ... h·c/m of quadratic drag (1/m) ... */
-    float stepQuadratic;
-    /** ... h·k/m of thrust (m/s) ... */
-    float stepThrust;
+
+    /** The scene's forces, in its order: asked one by one where the fold overflows. */
+    private final Force[] forces;
+    /** Those that are not folded, asked through the interface every step. */
+    private final Force[] others;
+    /** Scratch for {@link EulerRecipe#accelerationOf}: g (m/s²) ... */
+    private final Vector3f field = new Vector3f();
+    /** ... F (N) ... */
+    private final Vector3f push = new Vector3f();
+    /** ... and a of the other forces (m/s²). */
+    private final Vector3f otherAcceleration = new Vector3f();
 
     /** The built-in forces by type, each in the scene's order. */
     private final Gravity[] gravities;
@@ -98,6 +104,8 @@ final class FoldedForces {
             }
         }
         hasOthers = gravity + linear + quadratic + thrust < forces.length;
+        this.forces = forces;
+        others = others(forces);
         fold();
     }
 
@@ -141,72 +149,81 @@ final class FoldedForces {
     }
 
     /**
-     * Step one particle with the folded forces alone, from the numbers remembered for its
-     * step and mass, and commit the result if it is finite.
+     * One per-particle step: the recipe ({@link EulerRecipe#step}) with a computed here in
+     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it. The
+     * numbers for h and the particle's mass must be remembered ({@link StepLimits#remember}).
      *
-     * @param particle the particle (not null, modified only on success)
+     * @param particle the particle (not null, modified even where the result is not finite)
      * @param stepSeconds h (in seconds, &gt;0)
-     * @return true if stepped; false (particle untouched) if the scene has other forces, h or
-     *     m are not the remembered ones, or the result is not finite: then the integrator's
-     *     careful step decides
+     * @return true if the new position is finite; false if not (then the integrator puts the
+     *     old state back and takes {@link #acceleration}, which asks every force where the
+     *     fold overflows)
      */
     boolean step(Particle particle, float stepSeconds) {
-        if (hasOthers || !isRememberedFor(stepSeconds, particle.getMass())) {
-            return false;
-        }
         Vector3f velocity = particle.velocity;
-        Vector3f position = particle.position;
         float vx = velocity.x;
         float vy = velocity.y;
         float vz = velocity.z;
-        float factor = speedDependent ? factor(speed(vx, vy, vz)) : stepFactor;
-        // V' = (1 − h·σ)·V + h·g, then P' = P + h·V' with the new V
-        vx = vx * factor + stepGravityX;
-        vy = vy * factor + stepGravityY;
-        vz = vz * factor + stepGravityZ;
-        float px = position.x + stepSeconds * vx;
-        float py = position.y + stepSeconds * vy;
-        float pz = position.z + stepSeconds * vz;
-        // P' = P + h·V' with h > 0 is finite only if V' is; a finite sum means three finite
-        // terms
-        if (Float.isFinite(px + py + pz)
-                || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz)) {
-            velocity.set(vx, vy, vz);
-            position.set(px, py, pz);
-            return true;
+        float ax = gravityX;
+        float ay = gravityY;
+        float az = gravityZ;
+        if (hasOthers) {
+            EulerRecipe.accelerationOf(others, particle, field, push, otherAcceleration);
+            ax += otherAcceleration.x;
+            ay += otherAcceleration.y;
+            az += otherAcceleration.z;
         }
-        return false;
+        float sigma = speedDependent ? dragRate(speed(vx, vy, vz), stepInverseMass)
+                : stepLinearRate;
+        // F/m = −σ·V; σ = 0 adds nothing to a finite V, so skip it (gravity alone)
+        if (sigma != 0f) {
+            ax -= sigma * vx;
+            ay -= sigma * vy;
+            az -= sigma * vz;
+        }
+        return EulerRecipe.step(particle, ax, ay, az, stepSeconds);
     }
 
     /**
-     * The folded step with the other forces' acceleration added to g, unchecked:
-     * {@code V' = (1 − h·σ)·V + h·(g + a_other)}, then {@code P' = P + h·V'}. The numbers for
-     * h and the particle's mass must be remembered ({@link StepLimits#remember}).
+     * The acceleration every per-particle step uses, {@code a = g + F/m} of all the scene's
+     * forces at the particle's state: the built-in ones folded, {@code a = (g + a_other) − σ·V}
+     * with {@code σ = (b + c·|V| − k/|V|)/m} ({@link #dragRate}), the others asked through
+     * the interface ({@link EulerRecipe#accelerationOf}); the same floats as {@link #step}
+     * and the batch ({@link PackedStep}). Where the folded sum is not finite (b/m beyond the
+     * float range for a particle at rest: ∞·0) it asks every force instead.
      *
      * @param particle the particle (not null, not modified)
-     * @param stepSeconds h (in seconds, &gt;0)
-     * @param otherAcceleration a of the forces that are not folded (m/s², zero if none)
-     * @param nextVelocity storage for V' (m/s, modified)
-     * @param nextPosition storage for P' (m, modified)
+     * @param storeResult storage for a (m/s², not null, modified)
      */
-    void compute(Particle particle, float stepSeconds, Vector3f otherAcceleration,
-            Vector3f nextVelocity, Vector3f nextPosition) {
+    void acceleration(Particle particle, Vector3f storeResult) {
+        float ax = gravityX;
+        float ay = gravityY;
+        float az = gravityZ;
+        if (hasOthers) {
+            EulerRecipe.accelerationOf(others, particle, field, push, otherAcceleration);
+            ax += otherAcceleration.x;
+            ay += otherAcceleration.y;
+            az += otherAcceleration.z;
+        }
         Vector3f velocity = particle.velocity;
         float vx = velocity.x;
         float vy = velocity.y;
         float vz = velocity.z;
-        float factor = speedDependent ? factor(speed(vx, vy, vz)) : stepFactor;
-        // g + 0 is g: without other forces this is the floats of step()
-        float ax = gravityX + otherAcceleration.x;
-        float ay = gravityY + otherAcceleration.y;
-        float az = gravityZ + otherAcceleration.z;
-        vx = vx * factor + stepSeconds * ax;
-        vy = vy * factor + stepSeconds * ay;
-        vz = vz * factor + stepSeconds * az;
-        nextVelocity.set(vx, vy, vz);
-        Vector3f position = particle.position;
-        nextPosition.set(position.x + stepSeconds * vx, position.y + stepSeconds * vy,
-                position.z + stepSeconds * vz);
+        float sigma = dragRate(speedDependent ? speed(vx, vy, vz) : 0f,
+                inverseMass(particle.getMass()));
+        // F/m = −σ·V, skipped for σ = 0 as in step()
+        if (sigma != 0f) {
+            ax -= sigma * vx;
+            ay -= sigma * vy;
+            az -= sigma * vz;
+        }
+        // a finite sum means three finite terms
+        if (Float.isFinite(ax + ay + az)
+                || Float.isFinite(ax) && Float.isFinite(ay) && Float.isFinite(az)) {
+            storeResult.set(ax, ay, az);
+        } else {
+            EulerRecipe.accelerationOf(forces, particle, field, push, storeResult);
+        }
     }
 
     /**
@@ -218,29 +235,10 @@ final class FoldedForces {
      */
     void remember(float stepSeconds, float massKg) {
         stepInverseMass = inverseMass(massKg);
-        stepGravityX = stepSeconds * gravityX;
-        stepGravityY = stepSeconds * gravityY;
-        stepGravityZ = stepSeconds * gravityZ;
-        stepFactor = 1f - stepSeconds * (linearSum * stepInverseMass);
-        stepQuadratic = stepSeconds * (quadraticSum * stepInverseMass);
-        stepThrust = stepSeconds * (thrustSum * stepInverseMass);
+        stepLinearRate = dragRate(0f, stepInverseMass);
+        stepFactor = 1f - stepSeconds * stepLinearRate;
         rememberedSeconds = stepSeconds;
         rememberedMass = massKg;
-    }
-
-    /**
-     * The folded velocity factor {@code 1 − h·σ = (1 − h·b/m) − (h·c/m)·|V| + (h·k/m)/|V|}
-     * for the remembered step and mass: the speed reaches it through one multiplication and
-     * one division, as in a hand-written loop.
-     *
-     * @param speed |V| (in m/s; 0 if neither c nor k matters)
-     * @return the factor (may be infinite where h·b/m overflows)
-     */
-    float factor(float speed) {
-        // c = 0 gives no term even when |V|² overflowed to an infinite speed (0·∞ is NaN)
-        float factor = quadraticSum == 0f ? stepFactor : stepFactor - stepQuadratic * speed;
-        return thrustSum != 0f && speed >= Thrust.MIN_SPEED ? factor + stepThrust / speed
-                : factor;
     }
 
     /**

@@ -6,7 +6,7 @@ package particlelab.physics;
  * too, since floats convert exactly). It serves the ground's contact test
  * ({@code particlelab.world.GroundBounce}) and the batch step that finds the contacts while
  * each block of particles is still in the cache
- * ({@link ParticleIntegrator#stepPackedFindingFloor}).
+ * ({@link ParticleBatch#stepPackedFindingFloor}).
  *
  * <p>Contacts are rare (about one particle in seventy in the fountain), so the test runs
  * over groups of {@value #GROUP} heights without a branch (an or of the comparisons, which

@@ -4,15 +4,17 @@ import com.jme3.math.Vector3f;
 import java.util.Arrays;
 
 /**
- * The batch form of {@link ParticleIntegrator}'s step ({@link ParticleIntegrator#stepPacked}):
+ * The batch form of {@link ParticleIntegrator}'s step ({@link ParticleBatch#stepPacked}):
  * many particles of one mass in planar float arrays, with the folded forces' numbers
- * ({@link FoldedForces}), so it computes the floats of the per-particle step. Three forms:
+ * ({@link FoldedForces}), so it computes the floats of the per-particle step: the recipe
+ * ({@link EulerRecipe}) with the folded a, {@code V ← V + h·(g − σ·V)}, {@code P ← P + h·V}.
+ * Three forms:
  * <ul>
- * <li>by axes (gravity and linear drag: one velocity factor for all), scalar passes the JIT
- * vectorises, or the Vector API ({@link VectorBatch}) with the check fused in;</li>
+ * <li>by axes (gravity and linear drag: one σ for all), scalar passes the JIT vectorises, or
+ * the Vector API ({@link VectorBatch}) with the check fused in;</li>
  * <li>by speed (quadratic drag, thrust): one pass over the particles;</li>
- * <li>one by one (other forces, or h·b/m beyond the float range): each particle through the
- * integrator's careful step ({@link ParticleIntegrator#computeStep}).</li>
+ * <li>one by one (other forces, or b/m beyond the float range): each particle through
+ * {@link FoldedForces#acceleration} and {@link EulerRecipe#step}.</li>
  * </ul>
  * Each checks that every particle is finite after the step and throws otherwise. The scalar
  * check of the step by axes has two forms, chosen once per JVM ({@link #FUSED_CHECK}): the
@@ -48,18 +50,14 @@ final class PackedStep {
             System.getProperty("particlelab.check"), Runtime.version().feature());
 
     private final FoldedForces folded;
-    /** The integrator whose careful step the one-by-one form takes. */
-    private final ParticleIntegrator integrator;
     /** True if the step by axes runs on {@link VectorBatch}. */
     private boolean vectorBatch = VECTOR_API;
     /** True if the scalar check is the fused AND ({@link #FUSED_CHECK} unless a test says). */
     private boolean fusedCheck = FUSED_CHECK;
     /** Scratch for the one-by-one form: the particle being stepped ... */
     private final Particle particle = new Particle();
-    /** ... its new velocity (m/s) ... */
-    private final Vector3f nextVelocity = new Vector3f();
-    /** ... and its new position (m). */
-    private final Vector3f nextPosition = new Vector3f();
+    /** ... and its acceleration (m/s²). */
+    private final Vector3f acceleration = new Vector3f();
     /** Scratch of the step that finds a floor: vy of one block before its step (m/s) ... */
     private final float[] blockVelocityY = new float[BATCH_BLOCK];
     /** ... y of the block after it (m) ... */
@@ -79,11 +77,9 @@ final class PackedStep {
      * Create the batch form of an integrator.
      *
      * @param folded the integrator's folded forces (not null)
-     * @param integrator the integrator, for the one-by-one form (not null)
      */
-    PackedStep(FoldedForces folded, ParticleIntegrator integrator) {
+    PackedStep(FoldedForces folded) {
         this.folded = folded;
-        this.integrator = integrator;
     }
 
     /** True if the step by axes runs on the Vector API. */
@@ -91,7 +87,7 @@ final class PackedStep {
         return vectorBatch;
     }
 
-    /** Choose the form of the step by axes (see {@link ParticleIntegrator#setVectorBatch}). */
+    /** Choose the form of the step by axes (see {@link ParticleBatch#setVectorBatch}). */
     void setVectorBatch(boolean use) {
         if (use && !VECTOR_API) {
             throw new IllegalStateException("the batch step can use the Vector API only in a"
@@ -141,19 +137,19 @@ final class PackedStep {
     /**
      * Step the particles, the numbers for h and m remembered ({@link StepLimits#remember}).
      *
-     * @throws NonFiniteStepException as {@link ParticleIntegrator#stepPacked}
+     * @throws NonFiniteStepException as {@link ParticleBatch#stepPacked}
      */
     void step(float[] positions, float[] velocities, int stride, int count, float massKg,
             float stepSeconds) {
         float factor = Float.NaN;
         int bad;
-        if (folded.hasOthers || !Float.isFinite(folded.stepFactor)) {
-            // other forces, or h·b/m beyond the float range, which the recipe may survive
+        if (folded.hasOthers || !Float.isFinite(folded.stepLinearRate)) {
+            // other forces, or b/m beyond the float range, which the recipe may survive
             bad = stepOneByOne(positions, velocities, stride, count, massKg, stepSeconds);
         } else if (folded.speedDependent) {
             bad = stepBySpeed(positions, velocities, stride, count, stepSeconds);
         } else {
-            // V ← (1 − h·σ)·V + h·g with σ = b/m, the same for every particle
+            // a = g − σ·V with σ = b/m, the same for every particle
             factor = folded.stepFactor;
             bad = stepByAxes(positions, velocities, stride, count, stepSeconds, 0f, null,
                     null, null);
@@ -179,7 +175,7 @@ final class PackedStep {
     int stepFindingFloor(float[] positions, float[] velocities, int stride, int count,
             float massKg, float stepSeconds, float floorMetres, int[] storeBelow,
             float[] storeVelocityYBefore, FloorContacts eachBlock) {
-        if (folded.hasOthers || !Float.isFinite(folded.stepFactor) || folded.speedDependent) {
+        if (folded.hasOthers || !Float.isFinite(folded.stepLinearRate) || folded.speedDependent) {
             System.arraycopy(velocities, stride, storeVelocityYBefore, 0, count);
             step(positions, velocities, stride, count, massKg, stepSeconds);
             return findAll(positions, stride, count, floorMetres, storeBelow,
@@ -269,10 +265,10 @@ final class PackedStep {
     private int stepByAxes(float[] positions, float[] velocities, int stride, int count,
             float stepSeconds, float floorMetres, int[] storeBelow,
             float[] storeVelocityYBefore, FloorContacts eachBlock) {
-        float factor = folded.stepFactor;
-        float gx = folded.stepGravityX;
-        float gy = folded.stepGravityY;
-        float gz = folded.stepGravityZ;
+        float sigma = folded.stepLinearRate;
+        float gx = folded.gravityX;
+        float gy = folded.gravityY;
+        float gz = folded.gravityZ;
         boolean finite = true;
         int found = 0;
         for (int start = 0; start < count; start += BATCH_BLOCK) {
@@ -285,16 +281,16 @@ final class PackedStep {
             // & rather than &&: every block is stepped and checked whatever the one before
             // found, with no branch per axis
             if (vectorBatch) {
-                finite &= VectorBatch.stepAxis(positions, velocities, start, n, factor, gx,
+                finite &= VectorBatch.stepAxis(positions, velocities, start, n, sigma, gx,
                                 stepSeconds)
-                        & VectorBatch.stepAxis(positions, velocities, y, n, factor, gy,
+                        & VectorBatch.stepAxis(positions, velocities, y, n, sigma, gy,
                                 stepSeconds)
-                        & VectorBatch.stepAxis(positions, velocities, z, n, factor, gz,
+                        & VectorBatch.stepAxis(positions, velocities, z, n, sigma, gz,
                                 stepSeconds);
             } else {
-                stepAxis(positions, velocities, start, n, factor, gx, stepSeconds);
-                stepAxis(positions, velocities, y, n, factor, gy, stepSeconds);
-                stepAxis(positions, velocities, z, n, factor, gz, stepSeconds);
+                stepAxis(positions, velocities, start, n, sigma, gx, stepSeconds);
+                stepAxis(positions, velocities, y, n, sigma, gy, stepSeconds);
+                stepAxis(positions, velocities, z, n, sigma, gz, stepSeconds);
                 // checked here, or by the floor's marks, which see a non-finite P too
                 if (storeBelow == null) {
                     finite &= fusedCheck
@@ -318,12 +314,17 @@ final class PackedStep {
         return finite ? -1 : searchNonFinite(positions, stride, count);
     }
 
-    /** One axis of gravity and linear drag: V ← r·V + h·g, then P ← P + h·V with the new V. */
+    /**
+     * One axis of gravity and linear drag, the recipe with the folded a ({@link EulerRecipe},
+     * {@link FoldedForces#acceleration}): {@code a = g − σ·V}, {@code V ← V + h·a}, then
+     * {@code P ← P + h·V} with the new V.
+     */
     private static void stepAxis(float[] positions, float[] velocities, int start, int count,
-            float factor, float stepGravity, float stepSeconds) {
+            float sigma, float gravity, float stepSeconds) {
         int end = start + count;
         for (int i = start; i < end; ++i) {
-            float v = velocities[i] * factor + stepGravity;
+            float v = velocities[i];
+            v = v + stepSeconds * (gravity - sigma * v);
             velocities[i] = v;
             positions[i] += stepSeconds * v;
         }
@@ -393,27 +394,29 @@ final class PackedStep {
 
     /**
      * σ depends on the speed (quadratic drag, thrust): one pass over the particles, the
-     * arithmetic of {@link FoldedForces#step}, and the finiteness check on the way: the sum of
-     * the positions is finite only if every position is (a sum that overflows although every
-     * position is finite only costs a search).
+     * arithmetic of {@link FoldedForces#acceleration} and {@link EulerRecipe#step}, and the
+     * finiteness check on the way: the sum of the positions is finite only if every position
+     * is (a sum that overflows although every position is finite only costs a search).
      *
      * @return the index of the first non-finite value, or -1
      */
     private int stepBySpeed(float[] positions, float[] velocities, int stride, int count,
             float stepSeconds) {
         FoldedForces forces = folded;
-        float gx = forces.stepGravityX;
-        float gy = forces.stepGravityY;
-        float gz = forces.stepGravityZ;
+        float gx = forces.gravityX;
+        float gy = forces.gravityY;
+        float gz = forces.gravityZ;
+        float inverseMass = forces.stepInverseMass;
         float check = 0f;
         for (int x = 0, y = stride, z = 2 * stride; x < count; ++x, ++y, ++z) {
             float vx = velocities[x];
             float vy = velocities[y];
             float vz = velocities[z];
-            float factor = forces.factor(FoldedForces.speed(vx, vy, vz));
-            vx = vx * factor + gx;
-            vy = vy * factor + gy;
-            vz = vz * factor + gz;
+            // the recipe with the folded a, as FoldedForces.acceleration computes it
+            float sigma = forces.dragRate(FoldedForces.speed(vx, vy, vz), inverseMass);
+            vx = vx + stepSeconds * (gx - sigma * vx);
+            vy = vy + stepSeconds * (gy - sigma * vy);
+            vz = vz + stepSeconds * (gz - sigma * vz);
             velocities[x] = vx;
             velocities[y] = vy;
             velocities[z] = vz;
@@ -429,9 +432,9 @@ final class PackedStep {
     }
 
     /**
-     * Other forces, or h·b/m beyond the float range: every particle through a scratch particle
-     * and the integrator's careful step (the recipe deciding where the folded form overflows,
-     * as in {@link ParticleIntegrator#step(Particle, float)}), unchecked.
+     * Other forces, or b/m beyond the float range: every particle through a scratch particle,
+     * {@link FoldedForces#acceleration} (force by force where the fold overflows) and the
+     * recipe's update, as {@link ParticleIntegrator#step(Particle, float)} does; unchecked.
      *
      * @return the index of the first non-finite value, or -1
      */
@@ -443,13 +446,16 @@ final class PackedStep {
             int z = 2 * stride + i;
             particle.position.set(positions[i], positions[y], positions[z]);
             particle.velocity.set(velocities[i], velocities[y], velocities[z]);
-            integrator.computeStep(particle, stepSeconds, nextVelocity, nextPosition);
-            positions[i] = nextPosition.x;
-            positions[y] = nextPosition.y;
-            positions[z] = nextPosition.z;
-            velocities[i] = nextVelocity.x;
-            velocities[y] = nextVelocity.y;
-            velocities[z] = nextVelocity.z;
+            folded.acceleration(particle, acceleration);
+            // unchecked here: the arrays are checked below
+            EulerRecipe.step(particle, acceleration.x, acceleration.y, acceleration.z,
+                    stepSeconds);
+            positions[i] = particle.position.x;
+            positions[y] = particle.position.y;
+            positions[z] = particle.position.z;
+            velocities[i] = particle.velocity.x;
+            velocities[y] = particle.velocity.y;
+            velocities[z] = particle.velocity.z;
         }
         boolean finite = isSumFinite(positions, 0, count)
                 & isSumFinite(positions, stride, count) & isSumFinite(positions, 2 * stride, count);

@@ -23,7 +23,7 @@ final class StepLimits {
     /** The forces that are not folded. */
     private final Force[] others;
     /**
-     * Remembered with the folded step's numbers, for the same h and m
+     * Remembered with the fold's numbers, for the same h and m
      * ({@link FoldedForces#isRememberedFor}): the regime of a moving particle without
      * speed-dependent forces ...
      */
@@ -60,7 +60,7 @@ final class StepLimits {
     }
 
     /**
-     * Make sure the folded step's numbers ({@link FoldedForces#remember}) and the regime's
+     * Make sure the fold's numbers ({@link FoldedForces#remember}) and the regime's
      * bound are remembered for h and m: both under one key, so that in a demo's loop the JIT
      * merges the regime's checks with the step's.
      *
@@ -252,11 +252,11 @@ final class StepLimits {
         if (others.length > 0) {
             // the others' share: −(a(V) − a(0))·V/|V|², a measured at V and at rest
             Vector3f velocity = particle.velocity;
-            ParticleIntegrator.accelerationOf(others, particle, otherField, otherForce,
+            EulerRecipe.accelerationOf(others, particle, otherField, otherForce,
                     movingAcceleration);
             restingScratch.copyFrom(particle);
             restingScratch.velocity.zero();
-            ParticleIntegrator.accelerationOf(others, restingScratch, otherField, otherForce,
+            EulerRecipe.accelerationOf(others, restingScratch, otherField, otherForce,
                     restingAcceleration);
             movingAcceleration.subtractLocal(restingAcceleration);
             rate -= ((double) movingAcceleration.x * velocity.x

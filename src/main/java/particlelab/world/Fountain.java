@@ -4,18 +4,19 @@ import java.util.Arrays;
 import particlelab.physics.FloorContacts;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.ParticleBatch;
 import particlelab.physics.ParticleIntegrator;
 
 /**
  * A fountain with fireworks: a fixed pool of particles, packed in float arrays and moved by
- * the shared Euler step in its batch form ({@link ParticleIntegrator#stepPacked}), bouncing on
+ * the shared Euler step in its batch form ({@link ParticleBatch#stepPacked}), bouncing on
  * the ground ({@link GroundBounce}), recycled when they come to rest or leave the region.
  *
  * <p>Every step, in order:
  * <ol>
  * <li>the Euler step of every particle in flight, gravity and linear drag
  * ({@code V ← (1 − h·b/m)·V + h·g}, {@code P ← P + h·V}), which finds the particles in
- * contact with the ground on the way ({@link ParticleIntegrator#stepPackedFindingFloor}:
+ * contact with the ground on the way ({@link ParticleBatch#stepPackedFindingFloor}:
  * each block of particles while it is in the cache);</li>
  * <li>the ground: restitution e with Cyclone's resting fix ({@link GroundBounce}), on those
  * in contact alone;</li>
@@ -40,7 +41,7 @@ import particlelab.physics.ParticleIntegrator;
  * <p>The pool never grows, and the particles in flight are kept first: slots 0 to
  * {@link #countLive()} − 1 are in flight, the rest dormant (at the nozzle, {@code P = (0, r,
  * 0)}, {@code V = 0}, invisible), so every pass touches only the particles in flight (the
- * Euler step too: {@link ParticleIntegrator#stepPacked(float[], float[], int, int, float,
+ * Euler step too: {@link ParticleBatch#stepPacked(float[], float[], int, int, float,
  * float)} with the pool as the stride), and the fireworks first of them (slots 0 to
  * {@link #countFireworks()} − 1), so their pass reads a few hundred slots side by side
  * rather than scattered over the pool. A water particle going back to the pool takes the
@@ -365,7 +366,7 @@ public final class Fountain implements StateRecord {
         blockLeaving = 0;
         // the step finds the ground's contacts (y <= r) and hands each block's on to
         // touchGround while the block is in the cache
-        integrator.stepPackedFindingFloor(positions, velocities, capacity, live, MASS_KG,
+        integrator.batch().stepPackedFindingFloor(positions, velocities, capacity, live, MASS_KG,
                 stepSeconds, ground.getRadius(), contacts, velocityYBefore, onGround);
         int waterHoles = blockLeaving;
         int leaving = burnFuses(stepSeconds, waterHoles);
@@ -459,7 +460,7 @@ public final class Fountain implements StateRecord {
     }
 
     /**
-     * Access the positions, planar as {@link ParticleIntegrator#stepPacked} packs them.
+     * Access the positions, planar as {@link ParticleBatch#stepPacked} packs them.
      *
      * @return the live array of 3·{@link #getCapacity()} floats (in metres, do not modify)
      */

@@ -5,7 +5,7 @@ import particlelab.physics.Validate;
 
 /**
  * The lecture's ground {@code y = 0} for many particles at once, packed as
- * {@link particlelab.physics.ParticleIntegrator#stepPacked} packs them: the same contact as a
+ * {@link particlelab.physics.ParticleBatch#stepPacked} packs them: the same contact as a
  * {@link World} with {@code SurfaceRule.ground(new ImpulseResponse(e, threshold, fix),
  * Detection.OVERLAP)} gives one body of radius r, as one small loop after the step instead of
  * a contact object per particle.
@@ -113,7 +113,7 @@ public final class GroundBounce {
     /**
      * {@link #resolve(float[], float[], float[], int, int[])} for the first count particles
      * of arrays laid out for stride particles, as
-     * {@link particlelab.physics.ParticleIntegrator#stepPacked(float[], float[], int, int,
+     * {@link particlelab.physics.ParticleBatch#stepPacked(float[], float[], int, int,
      * float, float)} lays them out: y of particle i is {@code positions[stride + i]}.
      *
      * @param positions P, planar with the stride (in metres, length &ge; 3·stride, modified)
@@ -147,7 +147,7 @@ public final class GroundBounce {
 
     /**
      * Resolve the contacts a step found itself: {@link
-     * particlelab.physics.ParticleIntegrator#stepPackedFindingFloor} with the floor at r
+     * particlelab.physics.ParticleBatch#stepPackedFindingFloor} with the floor at r
      * finds the same particles as the contact test of {@link #resolve} (y &le; r) and gives
      * each one's vy before the step, so this applies the same rule to the same numbers as
      * resolve would, without a pass over every particle (and, given each block as the step

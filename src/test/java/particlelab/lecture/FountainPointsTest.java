@@ -77,7 +77,7 @@ class FountainPointsTest {
         // scalar batch, which allocates nothing from the first call; the Vector API's batch
         // (this test JVM has the module) boxes its vectors until C2 has compiled it, which a
         // loaded machine may not do within the warm-up (seen: 15 MB in 30 steps)
-        fountain.getIntegrator().setVectorBatch(false);
+        fountain.getIntegrator().batch().setVectorBatch(false);
         PointCloudMesh mesh = new PointCloudMesh(POOL, Fountain.REGION_TOP);
         FountainPoints points = new FountainPoints(mesh, WATER_BRIGHTNESS);
         for (int step = 0; step < 300; ++step) {

@@ -142,7 +142,7 @@ class FastPathsMatchTheRecipeTest {
             fast.step(one, h);
             recipe.step(two, h);
             if (mix.onlyGravity()) {
-                // σ = 0: the factor is exactly 1, and V·1 + h·g is the recipe's V + h·(g + 0)
+                // σ = 0: the folded a is g − 0·V = g, the force-by-force sum g + 0·(1/m)
                 assertBitwiseEqual(two.velocity, one.velocity);
                 assertBitwiseEqual(two.position, one.position);
             } else {
@@ -159,7 +159,7 @@ class FastPathsMatchTheRecipeTest {
         for (boolean vector : new boolean[] {false, true}) {
             ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
             // only gravity and linear drag have two forms; the others ignore the choice
-            integrator.setVectorBatch(vector && ParticleIntegrator.isVectorApiAvailable());
+            integrator.batch().setVectorBatch(vector && ParticleBatch.isVectorApiAvailable());
             // 1100 particles: one block of 1024 and a partial one, tails of every vector width
             ParticleIntegratorFoldingTest.assertBatchMatchesObjects(integrator, 1.3f, 1100, 60);
         }

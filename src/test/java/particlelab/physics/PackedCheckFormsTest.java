@@ -80,7 +80,7 @@ class PackedCheckFormsTest {
             velocities[count + 2500] = Float.MAX_VALUE;
             positions[count + 2500] = Float.MAX_VALUE;
             NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
-                    () -> integrator.stepPacked(positions, velocities, count, 1f, STEP));
+                    () -> integrator.batch().stepPacked(positions, velocities, count, 1f, STEP));
             messages[form] = thrown.getMessage();
         }
         assertTrue(messages[0].contains("packed particle 2500 of 3000"), messages[0]);
@@ -96,7 +96,7 @@ class PackedCheckFormsTest {
             float[] velocities = new float[3 * count];
             positions[2 * count + 7] = Float.NaN;
             NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
-                    () -> integrator.stepPacked(positions, velocities, count, 1f, STEP));
+                    () -> integrator.batch().stepPacked(positions, velocities, count, 1f, STEP));
             assertTrue(thrown.getMessage().contains("packed particle 7 of 1500"),
                     thrown.getMessage());
         }
@@ -117,7 +117,7 @@ class PackedCheckFormsTest {
                 positions[count + i] = 3e38f;
                 velocities[2 * count + i] = i % 3 == 0 ? Float.MIN_VALUE : 1f;
             }
-            integrator.stepPacked(positions, velocities, count, 1f, STEP);
+            integrator.batch().stepPacked(positions, velocities, count, 1f, STEP);
             results[form] = positions;
         }
         assertArrayEquals(results[0], results[1]);
@@ -148,10 +148,10 @@ class PackedCheckFormsTest {
     private static ParticleIntegrator linearDrag(boolean fused) throws Exception {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(),
                 new LinearDrag(0.5f));
-        integrator.setVectorBatch(false);
-        Field packed = ParticleIntegrator.class.getDeclaredField("packed");
+        integrator.batch().setVectorBatch(false);
+        Field packed = ParticleBatch.class.getDeclaredField("packed");
         packed.setAccessible(true);
-        PackedStep step = (PackedStep) packed.get(integrator);
+        PackedStep step = (PackedStep) packed.get(integrator.batch());
         step.setFusedCheck(fused);
         assertEquals(fused, step.isFusedCheck());
         return integrator;

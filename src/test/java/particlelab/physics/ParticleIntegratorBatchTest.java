@@ -9,7 +9,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 
-/** The packed batch form {@link ParticleIntegrator#stepPacked}. */
+/** The packed batch form {@link ParticleBatch#stepPacked}. */
 class ParticleIntegratorBatchTest {
 
     private static final int COUNT = 37;
@@ -24,7 +24,7 @@ class ParticleIntegratorBatchTest {
         pack(particles, positions, velocities);
         for (int n = 0; n < 240; ++n) {
             integrator.step(particles, H);
-            integrator.stepPacked(positions, velocities, COUNT, 2f, H);
+            integrator.batch().stepPacked(positions, velocities, COUNT, 2f, H);
         }
         // The batch rearranges a = g − (b/m)·V into V·(1 − h·b/m) + h·g: a few ulp per step.
         // Drag damps old differences (factor 0.9925 per step), so they stay near 1e-6 relative;
@@ -49,7 +49,7 @@ class ParticleIntegratorBatchTest {
         pack(particles, positions, velocities);
         for (int n = 0; n < 100; ++n) {
             integrator.step(particles, H);
-            integrator.stepPacked(positions, velocities, COUNT, 1.5f, H);
+            integrator.batch().stepPacked(positions, velocities, COUNT, 1.5f, H);
         }
         for (int i = 0; i < COUNT; ++i) {
             // the same code on the same floats: identical
@@ -84,8 +84,8 @@ class ParticleIntegratorBatchTest {
                 System.arraycopy(velocities, axis * COUNT, wideVelocities, axis * stride, COUNT);
             }
             for (int n = 0; n < 120; ++n) {
-                integrator.stepPacked(positions, velocities, COUNT, 2f, H);
-                integrator.stepPacked(widePositions, wideVelocities, stride, COUNT, 2f, H);
+                integrator.batch().stepPacked(positions, velocities, COUNT, 2f, H);
+                integrator.batch().stepPacked(widePositions, wideVelocities, stride, COUNT, 2f, H);
             }
             for (int axis = 0; axis < 3; ++axis) {
                 for (int i = 0; i < stride; ++i) {
@@ -108,18 +108,18 @@ class ParticleIntegratorBatchTest {
     void aStrideBelowTheCountOrArraysTooShortForItAreRefused() {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
         IllegalArgumentException below = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(new float[30], new float[30], 9, 10, 1f, H));
+                () -> integrator.batch().stepPacked(new float[30], new float[30], 9, 10, 1f, H));
         assertTrue(below.getMessage().contains("stride between the axes must be >= the"
                 + " particle count 10, but was 9"), below.getMessage());
         float[] positions = new float[3 * 20];
         float[] velocities = new float[3 * 20];
         velocities[20 + 3] = Float.NaN;
         NonFiniteStepException nan = assertThrows(NonFiniteStepException.class,
-                () -> integrator.stepPacked(positions, velocities, 20, 10, 1f, H));
+                () -> integrator.batch().stepPacked(positions, velocities, 20, 10, 1f, H));
         assertTrue(nan.getMessage().contains("packed particle 3 of 10 non-finite"),
                 nan.getMessage());
         IllegalArgumentException shortArrays = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(new float[30], new float[60], 20, 10, 1f, H));
+                () -> integrator.batch().stepPacked(new float[30], new float[60], 20, 10, 1f, H));
         assertTrue(shortArrays.getMessage().contains("positions must hold 3*stride = 60"),
                 shortArrays.getMessage());
     }
@@ -133,7 +133,7 @@ class ParticleIntegratorBatchTest {
         // overflows after about 23 steps
         NonFiniteStepException failure = assertThrows(NonFiniteStepException.class, () -> {
             for (int n = 0; n < 100; ++n) {
-                integrator.stepPacked(positions, velocities, 4, 1f, 5f);
+                integrator.batch().stepPacked(positions, velocities, 4, 1f, 5f);
             }
         });
         assertTrue(failure.getMessage().contains("-49"), failure.getMessage());
@@ -164,7 +164,7 @@ class ParticleIntegratorBatchTest {
         float[] velocities = new float[3 * 2];
         NonFiniteStepException failure = assertThrows(NonFiniteStepException.class, () -> {
             for (int n = 0; n < 100; ++n) {
-                strongGravity.stepPacked(positions, velocities, 2, 1f, 1f);
+                strongGravity.batch().stepPacked(positions, velocities, 2, 1f, 1f);
             }
         });
         assertTrue(failure.getMessage().contains("packed particle 0 of 2"),
@@ -176,7 +176,7 @@ class ParticleIntegratorBatchTest {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
         float[] three = new float[3];
         IllegalArgumentException tiny = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(three, three, 1, 1e-39f, H));
+                () -> integrator.batch().stepPacked(three, three, 1, 1e-39f, H));
         // The message names the least mass allowed. Its digits are those of the compiler's
         // Float.toString (the constant is folded into the text); JDK 19 and later print the
         // same float with fewer digits (1.1754944E-38, not 1.17549435E-38), so read the
@@ -185,7 +185,7 @@ class ParticleIntegratorBatchTest {
         Matcher least = Pattern.compile("at least (\\S+) ").matcher(message);
         assertTrue(least.find(), message);
         assertEquals(Particle.MIN_MASS_KG, Float.parseFloat(least.group(1)), message);
-        integrator.stepPacked(three, three, 1, Particle.MIN_MASS_KG, H);
+        integrator.batch().stepPacked(three, three, 1, Particle.MIN_MASS_KG, H);
         assertTrue(Float.isFinite(three[1]));
     }
 
@@ -204,7 +204,7 @@ class ParticleIntegratorBatchTest {
         // one more finite particle after the bad one, to see that it was stepped too
         velocities[count + 5] = 1f;
         NonFiniteStepException failure = assertThrows(NonFiniteStepException.class,
-                () -> integrator.stepPacked(positions, velocities, count, 1f, H));
+                () -> integrator.batch().stepPacked(positions, velocities, count, 1f, H));
         assertTrue(failure.getMessage().contains("packed particle " + particle + " of 6"),
                 failure.getMessage());
         assertTrue(failure.getMessage().contains("every particle was stepped"),
@@ -218,8 +218,8 @@ class ParticleIntegratorBatchTest {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
         float[] positions = {1f, 2f, 3f};
         float[] velocities = {4f, 5f, 6f};
-        integrator.stepPacked(positions, velocities, 1, 1f, 0f);
-        integrator.stepPacked(positions, velocities, 0, 1f, H);
+        integrator.batch().stepPacked(positions, velocities, 1, 1f, 0f);
+        integrator.batch().stepPacked(positions, velocities, 0, 1f, H);
         assertEquals(2f, positions[1], 0f);
         assertEquals(5f, velocities[1], 0f);
     }
@@ -229,16 +229,16 @@ class ParticleIntegratorBatchTest {
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity());
         float[] six = new float[6];
         IllegalArgumentException shortArray = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(six, new float[9], 3, 1f, H));
+                () -> integrator.batch().stepPacked(six, new float[9], 3, 1f, H));
         assertTrue(shortArray.getMessage().contains("held 6"), shortArray.getMessage());
         IllegalArgumentException negative = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(six, six, -1, 1f, H));
+                () -> integrator.batch().stepPacked(six, six, -1, 1f, H));
         assertTrue(negative.getMessage().contains("-1"), negative.getMessage());
         IllegalArgumentException mass = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(six, six, 2, 0f, H));
+                () -> integrator.batch().stepPacked(six, six, 2, 0f, H));
         assertTrue(mass.getMessage().contains("mass"), mass.getMessage());
         assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPacked(six, six, 2, 1f, Float.NaN));
+                () -> integrator.batch().stepPacked(six, six, 2, 1f, Float.NaN));
     }
 
     private static Particle[] launch(float massKg) {

@@ -85,9 +85,9 @@ class PhysicsAllocationTest {
                 Arrays.fill(velocities, 1f);
                 for (int i = 0; i < STEPS / count; ++i) {
                     integrator.step(particles, H);
-                    integrator.stepPacked(positions, velocities, count, 2f, H);
-                    integrator.stepPackedFindingFloor(positions, velocities, count, count, 2f,
-                            H, 0.5f, below, velocityYBefore);
+                    integrator.batch().stepPacked(positions, velocities, count, 2f, H);
+                    integrator.batch().stepPackedFindingFloor(positions, velocities, count, count,
+                            2f, H, 0.5f, below, velocityYBefore);
                 }
             });
             assertTrue(particle.isFinite() && particles[0].isFinite(), mix);

@@ -12,8 +12,8 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@link ParticleIntegrator#stepPackedFindingFloor}: the same floats as
- * {@link ParticleIntegrator#stepPacked} with a stride, the same particles as a plain
+ * {@link ParticleBatch#stepPackedFindingFloor}: the same floats as
+ * {@link ParticleBatch#stepPacked} with a stride, the same particles as a plain
  * {@code y <= floor} over the stepped y (and as {@link HeightScan#findAtOrBelow}), each with
  * its vy before the step, in every form of the batch: by axes with either scalar check and
  * on the Vector API where this JVM has it, by speed (quadratic drag) and one by one (a
@@ -32,7 +32,7 @@ class StepFindingFloorTest {
     @Test
     void everyFormStepsAsStepPackedAndFindsWhatAPlainTestFinds() throws Exception {
         for (String form : new String[] {"tree", "fused", "vector", "speed", "one-by-one"}) {
-            if (form.equals("vector") && !ParticleIntegrator.isVectorApiAvailable()) {
+            if (form.equals("vector") && !ParticleBatch.isVectorApiAvailable()) {
                 continue;
             }
             for (int count : COUNTS) {
@@ -72,7 +72,7 @@ class StepFindingFloorTest {
         float[] before = positions.clone();
         int[] below = new int[3];
         float[] velocityYBefore = new float[3];
-        int found = integrator.stepPackedFindingFloor(positions, velocities, 3, 3, MASS, 0f,
+        int found = integrator.batch().stepPackedFindingFloor(positions, velocities, 3, 3, MASS, 0f,
                 FLOOR, below, velocityYBefore);
         assertArrayEquals(before, positions);
         assertEquals(2, found);
@@ -86,12 +86,12 @@ class StepFindingFloorTest {
         float[] positions = new float[30];
         float[] velocities = new float[30];
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPackedFindingFloor(positions, velocities, 10, 10, MASS,
+                () -> integrator.batch().stepPackedFindingFloor(positions, velocities, 10, 10, MASS,
                         STEP, FLOOR, new int[9], new float[10]));
         assertEquals("the stores of the particles found and of their vy before the step must"
                 + " each hold count = 10 values, but held 9 and 10", bad.getMessage());
         IllegalArgumentException nan = assertThrows(IllegalArgumentException.class,
-                () -> integrator.stepPackedFindingFloor(positions, velocities, 10, 10, MASS,
+                () -> integrator.batch().stepPackedFindingFloor(positions, velocities, 10, 10, MASS,
                         STEP, Float.NaN, new int[10], new float[10]));
         assertTrue(nan.getMessage().contains("floor (m)"), nan.getMessage());
     }
@@ -111,10 +111,10 @@ class StepFindingFloorTest {
         positions[axis * count + 2048] = bad;
         NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class, () -> {
             if (floorForm) {
-                integrator.stepPackedFindingFloor(positions, velocities, count, count, MASS,
+                integrator.batch().stepPackedFindingFloor(positions, velocities, count, count, MASS,
                         STEP, FLOOR, new int[count], new float[count]);
             } else {
-                integrator.stepPacked(positions, velocities, count, count, MASS, STEP);
+                integrator.batch().stepPacked(positions, velocities, count, count, MASS, STEP);
             }
         }, where);
         return thrown.getMessage();
@@ -137,12 +137,12 @@ class StepFindingFloorTest {
         float[] expectedVelocities = velocities.clone();
         float[] velocityY = Arrays.copyOfRange(velocities, stride, stride + count);
 
-        integrator(form, gravity).stepPacked(expectedPositions, expectedVelocities, stride, count,
-                MASS, STEP);
+        integrator(form, gravity).batch().stepPacked(expectedPositions, expectedVelocities,
+                stride, count, MASS, STEP);
         int[] below = new int[count];
         float[] velocityYBefore = new float[count];
-        int found = integrator(form, gravity).stepPackedFindingFloor(positions, velocities, stride,
-                count, MASS, STEP, floor, below, velocityYBefore);
+        int found = integrator(form, gravity).batch().stepPackedFindingFloor(positions,
+                velocities, stride, count, MASS, STEP, floor, below, velocityYBefore);
 
         assertArrayEquals(expectedPositions, positions, where);
         assertArrayEquals(expectedVelocities, velocities, where);
@@ -171,7 +171,7 @@ class StepFindingFloorTest {
         float[] handedVelocities = new float[count];
         int[] handed = {0};
         int[] ends = {0};
-        int foundAgain = integrator(form, gravity).stepPackedFindingFloor(again,
+        int foundAgain = integrator(form, gravity).batch().stepPackedFindingFloor(again,
                 againVelocities, stride, count, MASS, STEP, floor, new int[count],
                 new float[count], (indices, before, from, to) -> {
                     assertEquals(ends[0], from, "blocks follow on");
@@ -258,12 +258,12 @@ class StepFindingFloorTest {
                 break;
         }
         boolean vector = form.equals("vector");
-        if (ParticleIntegrator.isVectorApiAvailable() || !vector) {
-            integrator.setVectorBatch(vector);
+        if (ParticleBatch.isVectorApiAvailable() || !vector) {
+            integrator.batch().setVectorBatch(vector);
         }
-        Field packed = ParticleIntegrator.class.getDeclaredField("packed");
+        Field packed = ParticleBatch.class.getDeclaredField("packed");
         packed.setAccessible(true);
-        ((PackedStep) packed.get(integrator)).setFusedCheck(form.equals("fused"));
+        ((PackedStep) packed.get(integrator.batch())).setFusedCheck(form.equals("fused"));
         return integrator;
     }
 }

@@ -27,9 +27,9 @@ class VectorBatchTest {
 
     @Test
     void theTestJvmHasTheVectorApi() {
-        assertTrue(ParticleIntegrator.isVectorApiAvailable(), "the tests need a JVM started"
+        assertTrue(ParticleBatch.isVectorApiAvailable(), "the tests need a JVM started"
                 + " with --add-modules=jdk.incubator.vector (build.gradle adds it)");
-        assertTrue(new ParticleIntegrator(new Gravity()).isVectorBatch(),
+        assertTrue(new ParticleIntegrator(new Gravity()).batch().isVectorBatch(),
                 "where the JVM has the Vector API, the batch uses it by default");
     }
 
@@ -49,8 +49,8 @@ class VectorBatchTest {
                 float[] scalarPositions = positions.clone();
                 float[] scalarVelocities = velocities.clone();
                 for (int n = 0; n < 120; ++n) {
-                    vector.stepPacked(positions, velocities, count, 1.5f, H);
-                    scalar.stepPacked(scalarPositions, scalarVelocities, count, 1.5f, H);
+                    vector.batch().stepPacked(positions, velocities, count, 1.5f, H);
+                    scalar.batch().stepPacked(scalarPositions, scalarVelocities, count, 1.5f, H);
                 }
                 // the same operations on the same floats, each rounded once: identical bits
                 // (assertArrayEquals compares floats by their bits, -0 and 0 apart)
@@ -76,7 +76,7 @@ class VectorBatchTest {
         float[] expected = positions.clone();
         float[] expectedVelocities = velocities.clone();
         for (int n = 0; n < 60; ++n) {
-            vector.stepPacked(positions, velocities, count, 2f, H);
+            vector.batch().stepPacked(positions, velocities, count, 2f, H);
             for (int i = 0; i < count; ++i) {
                 particle.position.set(expected[i], expected[count + i], expected[2 * count + i]);
                 particle.velocity.set(expectedVelocities[i], expectedVelocities[count + i],
@@ -115,8 +115,8 @@ class VectorBatchTest {
                         ParticleIntegrator integrator = integrator(0.2f, useVector);
                         NonFiniteStepException failure = assertThrows(
                                 NonFiniteStepException.class,
-                                () -> integrator.stepPacked(positions, velocities, count, 1f,
-                                        H));
+                                () -> integrator.batch().stepPacked(positions, velocities,
+                                        count, 1f, H));
                         String where = "packed particle " + particle + " of " + count;
                         assertTrue(failure.getMessage().contains(where),
                                 (useVector ? "vector: " : "scalar: ") + failure.getMessage());
@@ -139,7 +139,7 @@ class VectorBatchTest {
             float[] positions = new float[3 * count];
             float[] velocities = new float[3 * count];
             java.util.Arrays.fill(positions, 0, count, 0.9f * Float.MAX_VALUE);
-            integrator(0f, useVector).stepPacked(positions, velocities, count, 1f, H);
+            integrator(0f, useVector).batch().stepPacked(positions, velocities, count, 1f, H);
             assertEquals(0.9f * Float.MAX_VALUE, positions[count - 1], 0f);
         }
     }
@@ -154,7 +154,7 @@ class VectorBatchTest {
             Allocations.assertAllocatesNothing((useVector ? "vector" : "scalar")
                     + " form, 1000 steps of 1000 particles", () -> {
                         for (int n = 0; n < 1000; ++n) {
-                            integrator.stepPacked(positions, velocities, 1000, 1f, H);
+                            integrator.batch().stepPacked(positions, velocities, 1000, 1f, H);
                         }
                     });
         }
@@ -163,7 +163,7 @@ class VectorBatchTest {
     private static ParticleIntegrator integrator(float linearDrag, boolean useVector) {
         ParticleIntegrator integrator = linearDrag == 0f ? new ParticleIntegrator(new Gravity())
                 : new ParticleIntegrator(new Gravity(), new LinearDrag(linearDrag));
-        integrator.setVectorBatch(useVector);
+        integrator.batch().setVectorBatch(useVector);
         return integrator;
     }
 }

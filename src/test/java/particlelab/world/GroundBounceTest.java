@@ -65,7 +65,7 @@ class GroundBounceTest {
         for (int step = 1; step <= STEPS; ++step) {
             System.arraycopy(velocities, count, before, 0, count);
             world.step(H);
-            packedIntegrator.stepPacked(positions, velocities, count, MASS, H);
+            packedIntegrator.batch().stepPacked(positions, velocities, count, MASS, H);
             float[] velocityYAfterStep = java.util.Arrays.copyOfRange(velocities, count,
                     2 * count);
             contacts += ground.resolve(positions, velocities, before, count, touched);
@@ -158,7 +158,7 @@ class GroundBounceTest {
         int[] touched = new int[1];
         for (int step = 0; step < 10_000; ++step) {
             before[0] = velocities[1];
-            integrator.stepPacked(positions, velocities, 1, MASS, H);
+            integrator.batch().stepPacked(positions, velocities, 1, MASS, H);
             ground.resolve(positions, velocities, before, 1, touched);
         }
         assertEquals(RADIUS, positions[1], 0f);
