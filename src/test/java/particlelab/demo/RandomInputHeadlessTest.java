@@ -117,11 +117,8 @@ class RandomInputHeadlessTest {
         int count = app.getSwitcher().getDemos().size();
         for (int index = 0; index < count && problems.isEmpty(); ++index) {
             List<Action> drawn = draw(seed + index, actions);
-            String problem = runFromFreshStart(index, drawn, drawn.size(), null);
-            if (problem.isEmpty()) {
-                int chosen = index;
-                problem = harness.call(() -> allocationAfterwards(chosen));
-            } else {
+            String problem = failureFromFreshStart(index, drawn, drawn.size());
+            if (!problem.isEmpty()) {
                 problem = problem + "\n" + shortestPrefixReport(index, drawn);
             }
             if (!problem.isEmpty()) {
@@ -246,13 +243,13 @@ class RandomInputHeadlessTest {
 
     /** Bisect a failing sequence of a demo and say what the shortest failing prefix is. */
     private static String shortestPrefixReport(int index, List<Action> drawn) throws Exception {
-        if (runFromFreshStart(index, drawn, drawn.size(), null).isEmpty()) {
+        if (failureFromFreshStart(index, drawn, drawn.size()).isEmpty()) {
             return "it did not fail again from a fresh start of the demo: it depends on what"
                     + " ran before (the demos before it, or the JVM)";
         }
         int shortest = shortestFailingPrefix(drawn.size(), prefix -> {
             try {
-                return !runFromFreshStart(index, drawn, prefix, null).isEmpty();
+                return !failureFromFreshStart(index, drawn, prefix).isEmpty();
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
@@ -261,6 +258,18 @@ class RandomInputHeadlessTest {
         runFromFreshStart(index, drawn, shortest, done);
         return "the shortest failing prefix from a fresh start: " + shortest + " actions "
                 + done;
+    }
+
+    /**
+     * Run a prefix of a demo's actions from a fresh start and check the frame's allocation
+     * afterwards.
+     *
+     * @return "" or what went wrong
+     */
+    private static String failureFromFreshStart(int index, List<Action> drawn, int prefix)
+            throws Exception {
+        String problem = runFromFreshStart(index, drawn, prefix, null);
+        return problem.isEmpty() ? harness.call(() -> allocationAfterwards(index)) : problem;
     }
 
     /**
@@ -380,7 +389,7 @@ class RandomInputHeadlessTest {
                 return "click " + x + "," + y;
             }
             case PRESENT:
-                app.getWindowControls().setPresenting(!app.getWindowControls().isPresenting());
+                pressKey(input, KeyInput.KEY_F8, false);
                 return "F8";
             case PANEL:
                 pressKey(input, KeyInput.KEY_F2, false);
@@ -496,9 +505,19 @@ class RandomInputHeadlessTest {
         if (least == 0L) {
             return "";
         }
-        return "afterwards, on " + demo.getTitle() + " (demo " + (index + 1) + " was run), every"
-                + " window of " + FRAMES_PER_WINDOW + " frames allocated: "
-                + Arrays.toString(bytes) + " bytes";
+        return "afterwards, on " + demo.getTitle() + " (demo " + (index + 1) + " was run; "
+                + describe(app, demo) + "), every window of " + FRAMES_PER_WINDOW
+                + " frames allocated: " + Arrays.toString(bytes) + " bytes";
+    }
+
+    /** The state the input left: what a frame's allocation may depend on. */
+    private static String describe(ParticleLabApp app, DemoState demo) {
+        return "window " + app.getCamera().getWidth() + "x" + app.getCamera().getHeight()
+                + (demo.isPresenting() ? ", presenting" : "")
+                + (demo.getParameterControls().isPanelVisible() ? ", panel open" : "")
+                + ", HUD factor " + app.getWindowControls().getUiFactor()
+                + ", time scale " + demo.getClock().getTimeScale()
+                + ", step " + demo.getClock().getStepSeconds() + " s";
     }
 
     /**
