@@ -88,17 +88,17 @@ public final class CurveView {
     }
 
     /**
-     * Show the curve through points, in order; fewer than two hide it.
+     * Show the curve through points, in order; fewer than two hide it. More points than the
+     * capacity (or than the arrays hold) are not drawn: the curve shows the first ones, rather
+     * than fail on the render thread.
      *
      * @param xs the points' x (in metres, not null, not modified)
      * @param ys the points' y (in metres, not null, not modified)
-     * @param count how many points to use (0 to the capacity, at most the arrays' length)
+     * @param requested how many points to use (0 to the capacity, at most the arrays'
+     *     length; clamped to those)
      */
-    public void setPoints(float[] xs, float[] ys, int count) {
-        if (count < 0 || count > capacity || count > xs.length || count > ys.length) {
-            throw new IllegalArgumentException("point count must be in 0.." + capacity
-                    + " and within the arrays, but was " + count);
-        }
+    public void setPoints(float[] xs, float[] ys, int requested) {
+        int count = Math.min(requested, Math.min(capacity, Math.min(xs.length, ys.length)));
         if (count < 2) {
             geometry.setCullHint(Spatial.CullHint.Always);
             return;

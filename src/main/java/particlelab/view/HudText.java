@@ -80,22 +80,20 @@ public final class HudText extends Node {
 
     /**
      * Show a text, if it differs from the one shown: its glyphs are laid out again into the
-     * same buffers. Allocates nothing unless the text is longer than any before.
+     * same buffers. Allocates nothing unless the text is longer than any before. A text
+     * longer than {@link #MAX_GLYPHS} characters (more glyphs than 16-bit indices can name)
+     * shows its first {@link #MAX_GLYPHS}, rather than fail on the render thread.
      *
-     * @param newText the text, lines separated by '\n' (not null, not modified, at most
-     *     {@link #MAX_GLYPHS} characters)
-     * @return true if the text changed
+     * @param newText the text, lines separated by '\n' (not null, not modified)
+     * @return true if the text shown changed
      */
     public boolean setText(CharSequence newText) {
-        if (newText.length() > MAX_GLYPHS) {
-            throw new IllegalArgumentException("a HudText holds at most " + MAX_GLYPHS
-                    + " characters, but the text has " + newText.length());
-        }
-        if (TextFormat.sameText(newText, text)) {
+        int length = Math.min(newText.length(), MAX_GLYPHS);
+        if (isShown(newText, length)) {
             return false;
         }
         text.setLength(0);
-        text.append(newText);
+        text.append(newText, 0, length);
         rebuild();
         return true;
     }
@@ -187,6 +185,19 @@ public final class HudText extends Node {
     public void setColor(ColorRGBA newColor) {
         color.set(newColor);
         fillColors();
+    }
+
+    /** @return true if the first length characters of a text are the text shown */
+    private boolean isShown(CharSequence newText, int length) {
+        if (text.length() != length) {
+            return false;
+        }
+        for (int i = 0; i < length; ++i) {
+            if (text.charAt(i) != newText.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Lay the glyphs out into the buffers, as BitmapText does, in the font's own units. */

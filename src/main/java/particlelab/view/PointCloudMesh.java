@@ -137,50 +137,60 @@ public final class PointCloudMesh {
 
     /**
      * Copy the positions of points first to first + points − 1 into the mesh, in place: one
-     * bulk copy an axis from the caller's planar array; the other points keep theirs.
+     * bulk copy an axis from the caller's planar array; the other points keep theirs. Points
+     * past the mesh's last are not written (nor is anything from a negative first or count),
+     * rather than fail on the render thread.
      *
      * @param first the first point to write (&ge;0)
      * @param planar all x, then all y, then all z, point first's x at index first (in metres,
      *     length &ge; 3·stride, not modified)
      * @param stride how far y is from x and z from y in planar (&ge; first + points)
-     * @param points how many to copy (&ge;0, first + points at most {@link #getCount()})
+     * @param points how many to copy (&ge;0, first + points at most {@link #getCount()};
+     *     clamped to it)
      */
     public void writePositions(int first, float[] planar, int stride, int points) {
-        if (first < 0 || points < 0 || points > count - first || stride < first + points) {
-            throw new IllegalArgumentException("points to write must lie within 0 to "
-                    + count + " and the stride of " + stride + ", but were " + points
-                    + " from " + first);
+        int written = clamp(first, points);
+        if (written == 0) {
+            return;
         }
-        positions[0].put(first, planar, first, points);
-        positions[1].put(first, planar, stride + first, points);
-        positions[2].put(first, planar, 2 * stride + first, points);
+        if (stride < first + written || planar.length < 2 * stride + first + written) {
+            throw new IllegalArgumentException("the planar array must hold " + written
+                    + " points from " + first + " at a stride of " + stride + ", but holds "
+                    + planar.length + " floats");
+        }
+        positions[0].put(first, planar, first, written);
+        positions[1].put(first, planar, stride + first, written);
+        positions[2].put(first, planar, 2 * stride + first, written);
     }
 
     /**
      * Set the colours of points first to first + points − 1, in place, one bulk copy (a put
-     * per point into a direct buffer costs several times more).
+     * per point into a direct buffer costs several times more). Points past the mesh's last
+     * are not written.
      *
      * @param first the first point (&ge;0)
      * @param packed the colours as {@link #pack} makes them, from index 0 (length &ge;
      *     points, not modified)
-     * @param points how many (&ge;0, first + points at most {@link #getCount()})
+     * @param points how many (&ge;0, first + points at most {@link #getCount()}; clamped to
+     *     it)
      */
     public void writeColours(int first, int[] packed, int points) {
-        if (first < 0 || points < 0 || points > count - first) {
-            throw new IllegalArgumentException("colours to write must lie within 0 to "
-                    + count + ", but were " + points + " from " + first);
+        int written = Math.min(clamp(first, points), packed.length);
+        if (written > 0) {
+            colourInts.put(first, packed, 0, written);
         }
-        colourInts.put(first, packed, 0, points);
     }
 
     /**
-     * Set one point's colour, in place.
+     * Set one point's colour, in place; a point not in the mesh is not written.
      *
      * @param index the point (from 0 to {@link #getCount()} − 1)
      * @param packed the colour as {@link #pack} makes it
      */
     public void writeColour(int index, int packed) {
-        colourInts.put(index, packed);
+        if (index >= 0 && index < count) {
+            colourInts.put(index, packed);
+        }
     }
 
     /**
@@ -191,6 +201,14 @@ public final class PointCloudMesh {
             buffer.setUpdateNeeded();
         }
         colourBuffer.setUpdateNeeded();
+    }
+
+    /** @return how many of points from first lie in the mesh (0 if first is outside) */
+    private int clamp(int first, int points) {
+        if (first < 0 || first >= count || points <= 0) {
+            return 0;
+        }
+        return Math.min(points, count - first);
     }
 
     private static int scale(int channel, float brightness) {

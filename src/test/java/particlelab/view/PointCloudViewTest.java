@@ -102,11 +102,16 @@ class PointCloudViewTest {
                 assertEquals(axis * stride + i + 0.5f, points.getPositionData(axis).get(i), 0f);
             }
         }
-        IllegalArgumentException tooMany = assertThrows(IllegalArgumentException.class,
-                () -> points.writePositions(3, planar, stride, 3));
-        assertTrue(tooMany.getMessage().contains("3 from 3"), tooMany.getMessage());
-        assertThrows(IllegalArgumentException.class,
+        // Three from point 3 of five: the two the mesh has are written, not the third
+        // (issue 36: nothing past a buffer's end, and nothing thrown on the render thread).
+        points.writePositions(3, planar, stride, 3);
+        for (int axis = 0; axis < AXES.length; ++axis) {
+            assertEquals(axis * stride + 4 + 0.5f, points.getPositionData(axis).get(4), 0f);
+        }
+        // A planar array that cannot hold the points is the caller's mistake: refused.
+        IllegalArgumentException tooShort = assertThrows(IllegalArgumentException.class,
                 () -> points.writePositions(0, planar, 2, 3));
+        assertTrue(tooShort.getMessage().contains("stride of 2"), tooShort.getMessage());
     }
 
     @Test
