@@ -911,6 +911,11 @@ final class DemoScene {
                 ++score;
             }
         }
+        // Over a trail as drawn: never taken, so a free place below the ground line wins over
+        // one that touches a trail only in its clearance and would then be hidden.
+        if (coversNearPoint(place)) {
+            score += SPHERE_PENALTY;
+        }
         return score;
     }
 
