@@ -37,8 +37,10 @@ import particlelab.world.World;
  * places every text in pixels: the posts' names and the distance marks are shifted inside the
  * window or hidden where they would cover the HUD or each other; each frame, every particle's
  * label takes the first slot beside its sphere ({@link LabelSlots}) that covers no HUD text,
- * no other label, no other sphere and no trail, keeping its slot while that stays free; a
- * particle whose view its demo culled has no label and is no obstacle.
+ * no other label, no other sphere and no trail as drawn, above the ground line where it can,
+ * keeping its slot while that stays free; a particle whose view its demo culled has no label
+ * and is no obstacle. A distance mark or a post's name that a sphere covers (the "0 m" mark
+ * under a ball at launch) is hidden until the sphere has moved on.
  */
 final class DemoScene {
 
@@ -53,13 +55,18 @@ final class DemoScene {
     /** Slot scores: covering text or leaving the window, covering a sphere, a trail point. */
     private static final int TEXT_PENALTY = 1_000_000;
     private static final int SPHERE_PENALTY = 1_000;
+    /** Slot score: reaching below the ground line (kept only where nothing above is free). */
+    private static final int GROUND_PENALTY = 500;
     /** The least ground shown below y = 0, in scene label heights. */
     private static final float GROUND_LABEL_ROOM = 1.8f;
     /** Points sampled along each velocity arrow, which a label avoids like a trail. */
     private static final int ARROW_SAMPLES = 16;
     /** The least room between two distance marks shown (as a fraction of the text size). */
     private static final float MARK_GAP_FRACTION = 1f;
-    /** A trail point counts as covered this close to a label (in pixels at HUD scale 1). */
+    /**
+     * A trail counts as covered this close to a label, beyond the trail's drawn half width
+     * (in pixels at HUD scale 1).
+     */
     private static final float TRAIL_CLEARANCE = 3f;
 
     private final List<DemoParticle> particles;
@@ -118,6 +125,8 @@ final class DemoScene {
     private float labelSize = HudLayout.SCENE_LABEL_SIZE;
     private float labelHeight;
     private float trailClearance = TRAIL_CLEARANCE;
+    /** How far the trails are drawn on each side of their points (ribbon, dots; pixels). */
+    private float trailHalfWidth;
     private boolean laidOut;
     /** Per particle: its label's width (px), and its sphere's centre on the screen (px). */
     private float[] labelWidths = new float[0];
@@ -395,7 +404,14 @@ final class DemoScene {
         fixedArea.set(Math.max(area.getX(), margin), fixedBottom,
                 Math.min(area.getRight(), window.getWidth() - margin)
                         - Math.max(area.getX(), margin), area.getTop() - fixedBottom);
-        trailClearance = TRAIL_CLEARANCE * hud.getScale();
+        // A label keeps clear of a trail as drawn, not of its centre line: the step dots
+        // reach 0.35 radii to each side ("undamped spring" ran into its trail at 1920x1080).
+        trailHalfWidth = 0f;
+        for (int i = 0; i < particles.size(); ++i) {
+            trailHalfWidth = Math.max(trailHalfWidth, plane.getPixelsPerMetre()
+                    * particles.get(i).view.getTrail().getDrawnHalfWidth());
+        }
+        trailClearance = trailHalfWidth + TRAIL_CLEARANCE * hud.getScale();
         hudRects.clear();
         hudRects.add(hud.getTitle());
         hudRects.add(hud.getBody());
@@ -438,7 +454,7 @@ final class DemoScene {
             }
             for (int j = 0; j < i && free; ++j) {
                 SceneLabel other = fixedLabels.get(j);
-                free = !(other.isVisible() && other.getRect().intersects(candidate));
+                free = !(other.isPlaced() && other.getRect().intersects(candidate));
             }
             label.apply(plane, labelSize, candidate, free);
         }
@@ -496,6 +512,7 @@ final class DemoScene {
         }
         if (laidOut) {
             placeParticleLabels(false);
+            uncoverFixedLabels();
         }
     }
 
@@ -763,15 +780,40 @@ final class DemoScene {
         }
     }
 
+    /**
+     * Hide each post's name and distance mark while a sphere shown covers it (the "0 m" mark
+     * under a ball launched from the ground), and show it again when the sphere has moved on.
+     * Allocates nothing.
+     */
+    private void uncoverFixedLabels() {
+        float radius = sphereRadius * plane.getPixelsPerMetre();
+        for (int i = 0; i < fixedLabels.size(); ++i) {
+            SceneLabel label = fixedLabels.get(i);
+            ScreenRect place = label.getRect();
+            boolean covered = false;
+            for (int p = 0; p < particles.size() && !covered; ++p) {
+                // sphereX is NaN for a culled particle: it covers nothing.
+                covered = label.isPlaced() && sphereX[p] + radius > place.getX()
+                        && sphereX[p] - radius < place.getRight()
+                        && sphereY[p] + radius > place.getY()
+                        && sphereY[p] - radius < place.getTop();
+            }
+            label.setCovered(covered);
+        }
+    }
+
     /** Test whether the demo hid a particle's view (sphere, trail, label) by culling it. */
     private static boolean isHidden(ParticleView view) {
         return view.getNode().getCullHint() == Spatial.CullHint.Always;
     }
 
-    /** Test whether a rectangle holds one of the trail points gathered last. */
+    /** Test whether a rectangle covers a trail, as drawn, at a point gathered last. */
     private boolean coversNearPoint(ScreenRect place) {
         for (int i = 0; i < nearTrailCount; ++i) {
-            if (place.contains(nearX[i], nearY[i])) {
+            if (nearX[i] >= place.getX() - trailHalfWidth
+                    && nearX[i] <= place.getRight() + trailHalfWidth
+                    && nearY[i] >= place.getY() - trailHalfWidth
+                    && nearY[i] <= place.getTop() + trailHalfWidth) {
                 return true;
             }
         }
@@ -821,9 +863,16 @@ final class DemoScene {
         if (!textArea.contains(place) || coversHud(place)) {
             score += TEXT_PENALTY;
         }
+        // A sphere above the ground keeps its label above the ground line where it can: the
+        // band below holds the distance marks and the footer ("slide code" lay across the
+        // ground line by the "20 m" mark). Where nothing above is free, below beats no label.
+        float ground = plane.screenY(0f);
+        if (sphereY[self] >= ground && place.getY() < ground) {
+            score += GROUND_PENALTY;
+        }
         for (int i = 0; i < fixedLabels.size(); ++i) {
             SceneLabel label = fixedLabels.get(i);
-            if (label.isVisible() && label.getRect().intersects(place)) {
+            if (label.isPlaced() && label.getRect().intersects(place)) {
                 score += TEXT_PENALTY;
             }
         }
@@ -835,7 +884,6 @@ final class DemoScene {
         // a post (a target, a gun) standing from the ground to its height, with a margin of
         // its own width on each side: as bad to cover as a sphere
         float postHalfWidth = Math.max(1f, POST_RADIUS_FRACTION * radius);
-        float ground = plane.screenY(0f);
         for (int i = 0; i < markers.size(); ++i) {
             Marker marker = markers.get(i);
             float postX = plane.screenX(marker.x);
@@ -862,6 +910,11 @@ final class DemoScene {
                     && nearY[i] <= top) {
                 ++score;
             }
+        }
+        // Over a trail as drawn: never taken, so a free place below the ground line wins over
+        // one that touches a trail only in its clearance and would then be hidden.
+        if (coversNearPoint(place)) {
+            score += SPHERE_PENALTY;
         }
         return score;
     }

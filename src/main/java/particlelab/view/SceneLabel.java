@@ -40,6 +40,8 @@ public final class SceneLabel {
     private final Anchor anchor;
     private final ScreenRect rect = new ScreenRect();
     private boolean visible = true;
+    /** True while something drawn in front of the scene's texts (a sphere) covers the place. */
+    private boolean covered;
 
     /**
      * Create a label.
@@ -113,7 +115,20 @@ public final class SceneLabel {
         visible = show;
         text.setSize(size / view.getPixelsPerMetre());
         text.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
-        text.setCullHint(show ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        showIfFree();
+    }
+
+    /**
+     * Hide the text while something moving covers its place (a sphere on it), and show it
+     * again when it moves off; the place stays as {@link #apply} put it. Allocates nothing.
+     *
+     * @param isCovered true while covered
+     */
+    public void setCovered(boolean isCovered) {
+        if (isCovered != covered) {
+            covered = isCovered;
+            showIfFree();
+        }
     }
 
     /**
@@ -128,9 +143,23 @@ public final class SceneLabel {
     /**
      * Test whether the text is shown.
      *
-     * @return true unless the layout hid it
+     * @return true unless the layout hid it or something covers it
      */
     public boolean isVisible() {
+        return visible && !covered;
+    }
+
+    /**
+     * Test whether the layout placed the text (it may still be covered for a while).
+     *
+     * @return true unless the layout hid it
+     */
+    public boolean isPlaced() {
         return visible;
+    }
+
+    private void showIfFree() {
+        text.setCullHint(visible && !covered ? Spatial.CullHint.Inherit
+                : Spatial.CullHint.Always);
     }
 }

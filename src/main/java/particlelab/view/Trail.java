@@ -228,6 +228,16 @@ public final class Trail {
     }
 
     /**
+     * Return how far the trail is drawn on each side of its points: the ribbon's half width,
+     * or a step dot's half side where that is more (dots shown or not).
+     *
+     * @return the half width (in metres, &gt;0)
+     */
+    public float getDrawnHalfWidth() {
+        return Math.max(halfWidth, dotHalfSide);
+    }
+
+    /**
      * Remember a point, dropping the oldest when full.
      *
      * @param point the position (in metres, not null, not modified)

@@ -1,0 +1,128 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.demo.DemoState;
+import particlelab.demo.OverlapProbe;
+import particlelab.physics.SimulationClock;
+
+/**
+ * Issue 29 §3, "nothing on screen covers anything else": every demo of the catalogue and every
+ * tour stop, laid out at 640x360, 1280x720, 1920x1080 and 3840x2160, presenting and not, its
+ * parameter panel open and not, at moments of launch, flight and landing: no two texts cover
+ * each other (HUD, distance marks, posts' names, particles' labels, readouts), no text leaves
+ * the window, no text covers a sphere, and no particle's label covers a post or a trail
+ * ({@link OverlapProbe}).
+ *
+ * <p>The physics runs once per case; at each sampled frame the same state is laid out in every
+ * configuration of the matrix (layout moves no body). CI checks a fixed subset that covers
+ * every demo, every stop, every size and both modes: each case in one of the 16
+ * configurations, taken in turn so the 41 cases take each at least twice, at launch and after
+ * a second of flight. A night's run sets
+ * {@code PARTICLELAB_OVERLAP_FULL=1} for the whole matrix at four frames (docs/testing.md).
+ */
+class OverlapMatrixHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    private static final int[][] WINDOWS = {{640, 360}, {1280, 720}, {1920, 1080},
+        {3840, 2160}};
+    /** Every configuration: 4 sizes x presenting or not x panel open or not. */
+    private static final int CONFIGURATIONS = WINDOWS.length * 4;
+    /** The whole matrix when this environment variable is set (a night's run). */
+    static final String FULL = "PARTICLELAB_OVERLAP_FULL";
+    /** Frames at which the layout is checked: launch, climb, flight, landing or later. */
+    private static final int[] FULL_FRAMES = {1, 45, 120, 240};
+    private static final int[] CI_FRAMES = {1, 60};
+    /** Configurations a case takes in CI. */
+    private static final int CI_CONFIGURATIONS = 1;
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+
+    @Test
+    void noTextCoversAnotherASphereOrTheWindowsEdgeInAnyDemoOrStop() throws Exception {
+        boolean full = System.getenv(FULL) != null;
+        ParticleLabApp app = harness.app();
+        List<String> problems = new ArrayList<>();
+        List<DemoState> demos = app.getSwitcher().getDemos();
+        int cases = demos.size() + LectureTour.stops().size();
+        for (int c = 0; c < cases; ++c) {
+            int index = c;
+            String name;
+            DemoState demo;
+            if (c < demos.size()) {
+                demo = demos.get(c);
+                name = "demo " + DemoCatalog.names().get(c);
+            } else {
+                int stop = c - demos.size();
+                harness.call(() -> {
+                    app.getTour().go(stop);
+                    return true;
+                });
+                demo = harness.call(() -> app.getSwitcher().getSelected());
+                name = "tour stop " + (stop + 1);
+            }
+            problems.addAll(runCase(demo, name, index, full));
+        }
+        harness.call(() -> {
+            app.getTour().leave();
+            return true;
+        });
+        assertEquals(List.of(), problems.subList(0, Math.min(40, problems.size())),
+                problems.size() + " problems");
+    }
+
+    /**
+     * Run one case's physics and check its frames in the configurations it takes, each piece
+     * in a call of its own on jME's thread (a call has a time limit).
+     */
+    private static List<String> runCase(DemoState demo, String name, int index, boolean full)
+            throws Exception {
+        List<String> problems = new ArrayList<>();
+        harness.call(() -> {
+            demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            demo.getClock().setPaused(false);
+            demo.restart();
+            return true;
+        });
+        int done = 0;
+        for (int sample : full ? FULL_FRAMES : CI_FRAMES) {
+            int frames = sample - done;
+            done = sample;
+            harness.call(() -> {
+                for (int f = 0; f < frames; ++f) {
+                    demo.update(H);
+                }
+                return true;
+            });
+            for (int k = 0; k < (full ? CONFIGURATIONS : CI_CONFIGURATIONS); ++k) {
+                // In CI, case i takes configuration i (mod 16): consecutive cases walk the
+                // matrix, so every size, mode and panel state is met.
+                int configuration = full ? k : (CI_CONFIGURATIONS * index + k) % CONFIGURATIONS;
+                int[] window = WINDOWS[configuration / 4];
+                boolean presenting = (configuration & 2) != 0;
+                boolean panel = (configuration & 1) != 0;
+                String where = name + " " + window[0] + "x" + window[1]
+                        + (presenting ? " presenting" : "") + (panel ? " panel" : "")
+                        + " frame " + sample;
+                problems.addAll(harness.call(() -> {
+                    demo.setPresenting(presenting);
+                    OverlapProbe.setPanel(demo, panel);
+                    demo.layOut(window[0], window[1]);
+                    demo.update(0f);
+                    return OverlapProbe.check(demo, window[0], window[1], where);
+                }));
+            }
+        }
+        harness.call(() -> {
+            demo.setPresenting(false);
+            OverlapProbe.setPanel(demo, false);
+            demo.layOut(1280, 720);
+            return true;
+        });
+        return problems;
+    }
+}

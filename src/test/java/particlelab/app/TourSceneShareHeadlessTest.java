@@ -1,0 +1,79 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.demo.DemoState;
+import particlelab.physics.SimulationClock;
+import particlelab.view.ScreenRect;
+
+/**
+ * The scene's share of the window at every tour stop, as a viewer sees it: the rectangle where
+ * the grid and the ground band are drawn and no HUD backdrop covers them (it matches the
+ * screenshots: stop 4 at 1280x720 shows the grid from row 348, this rectangle's top is row
+ * 347). A stop adds its heading and watch lines to the full HUD, so its scene is smaller than
+ * its demo's ({@code demo/SceneShareHeadlessTest}); the bounds here are the figures
+ * docs/window.md states: at least {@value #MIN_FULL_HUD_SHARE} at 16:9 with the full HUD, at
+ * least {@value #MIN_HALL_SHARE} with the hall command of docs/lecturing.md (presenting at
+ * 1920x1080, {@code --ui-scale 1.25}).
+ */
+class TourSceneShareHeadlessTest {
+
+    /** The least share of the window with the full HUD at 16:9 on a tour stop. */
+    static final float MIN_FULL_HUD_SHARE = 0.5f;
+    /** The least share presenting at 1920x1080 with the HUD factor 1.25. */
+    static final float MIN_HALL_SHARE = 0.6f;
+    private static final float HALL_FACTOR = 1.25f;
+    /** Frames flown before measuring: the launch framed and the body's lines grown. */
+    private static final int FRAMES = 60;
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+
+    @Test
+    void everyStopLeavesTheSceneTheShareTheDocsState() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<String> problems = new ArrayList<>();
+        for (int stop = 0; stop < LectureTour.stops().size(); ++stop) {
+            int index = stop;
+            DemoState demo = harness.call(() -> {
+                app.getTour().go(index);
+                return app.getSwitcher().getSelected();
+            });
+            String name = "stop " + (stop + 1) + " (" + LectureTour.stops().get(stop).getDemo()
+                    + ")";
+            problems.addAll(harness.call(() -> {
+                List<String> found = new ArrayList<>();
+                demo.layOut(1280, 720);
+                HeadlessHarness.fly(demo, FRAMES, 1f / 60f);
+                check(demo, 1280, 720, 1f, false, MIN_FULL_HUD_SHARE, name, found);
+                check(demo, 1920, 1080, 1f, false, MIN_FULL_HUD_SHARE, name, found);
+                check(demo, 1920, 1080, HALL_FACTOR, true, MIN_HALL_SHARE, name, found);
+                demo.setPresenting(false);
+                demo.layOut(1280, 720);
+                return found;
+            }));
+        }
+        harness.call(() -> {
+            app.getTour().leave();
+            return true;
+        });
+        assertEquals(List.of(), problems);
+    }
+
+    private static void check(DemoState demo, int width, int height, float factor,
+            boolean presenting, float least, String name, List<String> found) {
+        demo.setPresenting(presenting);
+        demo.layOut(width, height, factor);
+        demo.update(0f);
+        ScreenRect scene = demo.copySceneRect(new ScreenRect());
+        float share = scene.getWidth() * scene.getHeight() / (width * (float) height);
+        if (share < least) {
+            found.add(name + " " + width + "x" + height + " x" + factor
+                    + (presenting ? " presenting" : "") + ": the scene " + scene + " is "
+                    + Math.round(1000f * share) / 10f + " % of the window");
+        }
+    }
+}

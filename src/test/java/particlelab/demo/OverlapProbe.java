@@ -1,0 +1,117 @@
+package particlelab.demo;
+
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
+import java.util.ArrayList;
+import java.util.List;
+import particlelab.lecture.CollisionsDemo;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
+import particlelab.view.Trail;
+
+/**
+ * The overlap checks of a laid-out frame, for tests outside this package (the tour's): no two
+ * texts cover each other, no text leaves the window, no text covers a sphere shown in the
+ * scene, and no particle's label covers a post or a trail as drawn; from the rectangles the
+ * layout itself placed ({@link DemoState#copyTextRects}, the particles' label slots, the
+ * posts, the collisions demo's impulse labels).
+ */
+public final class OverlapProbe {
+
+    /** A pixel's rounding: edges this close count as touching, not covering. */
+    private static final float PIXEL = 1f;
+
+    private OverlapProbe() {
+    }
+
+    /**
+     * Open or close a demo's parameter panel, as F2 does, when it is not so already.
+     *
+     * @param demo the demo (initialised, not null)
+     * @param open true for the panel open
+     */
+    public static void setPanel(DemoState demo, boolean open) {
+        if (demo.getParameterControls().isPanelVisible() != open) {
+            particlelab.app.HeadlessHarness.press(demo, "F2");
+        }
+    }
+
+    /**
+     * Check a demo's frame as last laid out and updated.
+     *
+     * @param demo the demo (initialised, laid out, not null)
+     * @param width the window's width (pixels)
+     * @param height the window's height (pixels)
+     * @param where what was laid out, for the messages (not null)
+     * @return one line per problem (empty if none)
+     */
+    public static List<String> check(DemoState demo, int width, int height, String where) {
+        List<ScreenRect> texts = demo.copyTextRects(new ArrayList<>());
+        if (demo instanceof CollisionsDemo) {
+            // The impulses' labels, placed by their own layout (CalloutLayout).
+            ((CollisionsDemo) demo).copyImpulseLabelRects(texts);
+        }
+        List<String> problems = new ArrayList<>(ScreenChecks.textsApartInside(texts, width,
+                height, where));
+        PlaneView plane = demo.getPlaneView();
+        List<DemoParticle> particles = demo.getParticles();
+        List<ScreenRect> posts = demo.copyPostRects(new ArrayList<>());
+        // The spheres a viewer sees: shown, and inside the scene (above it the HUD's backdrop
+        // covers them).
+        ScreenRect scene = demo.copySceneRect(new ScreenRect());
+        List<ScreenRect> spheres = new ArrayList<>();
+        List<String> sphereNames = new ArrayList<>();
+        for (DemoParticle particle : particles) {
+            Vector3f centre = particle.getParticle().position;
+            float radius = particle.view.getRadius() * plane.getPixelsPerMetre();
+            float x = plane.screenX(centre.x);
+            float y = plane.screenY(centre.y);
+            if (particle.view.getNode().getCullHint() != Spatial.CullHint.Always
+                    && scene.contains(x, y)) {
+                spheres.add(new ScreenRect(x - radius, y - radius, 2f * radius, 2f * radius));
+                sphereNames.add(particle.getLabel());
+            }
+        }
+        for (int t = 0; t < texts.size(); ++t) {
+            for (int s = 0; s < spheres.size(); ++s) {
+                if (texts.get(t).intersects(spheres.get(s))) {
+                    problems.add(where + ": text " + t + " " + texts.get(t)
+                            + " covers the sphere of '" + sphereNames.get(s) + "' "
+                            + spheres.get(s));
+                }
+            }
+        }
+        Vector3f point = new Vector3f();
+        for (int i = 0; i < particles.size(); ++i) {
+            DemoParticle particle = particles.get(i);
+            ScreenRect label = particle.view.getLabelRect();
+            if (label.isEmpty()) {
+                continue;
+            }
+            String name = where + ": label '" + particle.getLabel() + "' " + label;
+            for (int p = 0; p < posts.size(); ++p) {
+                if (label.intersects(posts.get(p))) {
+                    problems.add(name + " covers post " + p + " " + posts.get(p));
+                }
+            }
+            // No trail as drawn (ribbon and step dots) under a label.
+            for (DemoParticle other : particles) {
+                Trail trail = other.view.getTrail();
+                float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    float x = plane.screenX(point.x);
+                    float y = plane.screenY(point.y);
+                    if (x > label.getX() - half + PIXEL && x < label.getRight() + half - PIXEL
+                            && y > label.getY() - half + PIXEL
+                            && y < label.getTop() + half - PIXEL) {
+                        problems.add(name + " covers the trail of '" + other.getLabel()
+                                + "' at (" + x + ", " + y + ")");
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+}
