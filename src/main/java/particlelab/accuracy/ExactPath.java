@@ -130,6 +130,7 @@ public final class ExactPath {
         probe.setMass(mass);
         stopsAtGround = stopAtGround;
         timeSeconds = 0.0;
+        stepStartSeconds = 0.0;
         landed = false;
         landingSeconds = Double.NaN;
         landingX = Double.NaN;
@@ -239,6 +240,29 @@ public final class ExactPath {
      */
     public Vector3f copyPosition(Vector3f storeResult) {
         return storeResult.set((float) position[0], (float) position[1], (float) position[2]);
+    }
+
+    /**
+     * Copy the position at an earlier time of the last step advanced into storeResult: where
+     * the path was when a stepped particle landed inside that step. A time at or after now
+     * gives the position now (the landing point once the path has stopped). Allocates nothing.
+     *
+     * @param seconds the time since the start (in seconds, not before the start of the last
+     *     step advanced)
+     * @param storeResult storage for x, y and z (in metres, length &ge; 3, modified)
+     * @return storeResult
+     */
+    public double[] copyPositionAt(double seconds, double[] storeResult) {
+        if (seconds >= timeSeconds) {
+            System.arraycopy(position, 0, storeResult, 0, 3);
+            return storeResult;
+        }
+        if (!(seconds >= stepStartSeconds)) {
+            throw new IllegalArgumentException("seconds " + seconds
+                    + " must lie in the last step advanced, from " + stepStartSeconds + " s");
+        }
+        stateAt(seconds - stepStartSeconds, storeResult, trialVelocity);
+        return storeResult;
     }
 
     /**

@@ -20,10 +20,11 @@ import particlelab.view.TextFormat;
  * attached but disabled (scene detached, keys unmapped), so switching back resumes them.
  *
  * <p>Typing a number: a digit that no two-digit demo starts with chooses its demo at once
- * (with 17 demos, 2 to 9); a digit that one does (1) waits up to {@link #ENTRY_SECONDS} of
- * frame time for a second digit, which completes the number (1 then 2: demo 12), and chooses
- * demo 1 if none comes; meanwhile the title says what was typed ("typed 1_"). A number with
- * no demo behind it (0, 18) says so on the HUD instead of doing nothing. Tab or Shift+Tab
+ * (with 19 demos, 2 to 9; a 20th would make 2 wait too); a digit that one does (1) waits up
+ * to {@link #ENTRY_SECONDS} of frame time for a second digit, which completes the number (1
+ * then 2: demo 12), and chooses demo 1 if none comes; meanwhile the title says what was typed
+ * ("typed 1_"). A number with no demo behind it (0) says so on the HUD instead of doing
+ * nothing. Tab or Shift+Tab
  * during an entry drops it and steps from the demo shown.
  * The help overlay states this rule, generated with the bindings, and lists the demos by
  * number.
@@ -298,8 +299,8 @@ public final class DemoSwitcher extends BaseAppState {
     }
 
     /**
-     * The digit keys' help line, with the rule for the catalogue's size, e.g. for 17 demos:
-     * "type a demo's number (1-17): 2-9 choose at once; 1 waits 1 s for a second digit (1
+     * The digit keys' help line, with the rule for the catalogue's size, e.g. for 19 demos:
+     * "type a demo's number (1-19): 2-9 choose at once; 1 waits 1 s for a second digit (1
      * then 2: demo 12), else it is demo 1".
      */
     private String describeDigits() {

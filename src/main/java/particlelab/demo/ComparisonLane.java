@@ -64,7 +64,8 @@ import particlelab.world.StateSlab;
  * waits for it); and the error as the viewer sees it, for the lane and for the followed
  * sphere, {@code |P − P_exact|} in metres, in pixels on the screen and in sphere radii,
  * "visible" from {@value ScreenError#VISIBLE_PIXELS} px or {@value ScreenError#VISIBLE_RADII}
- * radius ({@link ScreenError}); frozen at the last step before the lane lands. The slide lane
+ * radius ({@link ScreenError}); each measured at its sphere's landing, where its sphere stops:
+ * the contact point against the exact path at the same time. The slide lane
  * adds its listing. Per step and per frame this allocates nothing, except the slide code
  * itself, whose allocation is its point (the HUD gives its bytes per step, measured).
  */
@@ -163,6 +164,11 @@ public final class ComparisonLane implements DemoPart {
     private double followedDx;
     private double followedDy;
     private double slideDifference;
+    /** Whether the lane's and the followed sphere's were flying when the step began. */
+    private boolean laneWasFlying;
+    private boolean followedWasFlying;
+    /** Scratch: the exact path where a sphere landed inside the step (m). */
+    private final double[] exactAtLanding = new double[3];
     /** Measured costs per kind (ns and bytes per step; NaN until measured). */
     private final double[] costNanos = new double[KINDS.length];
     private final double[] costBytes = new double[KINDS.length];
@@ -263,8 +269,9 @@ public final class ComparisonLane implements DemoPart {
     }
 
     /**
-     * Return the lane's error {@code |P − P_exact|} noted last: after the last step, or the
-     * last one before the lane (or its exact path) reached the ground.
+     * Return the lane's error {@code |P − P_exact|} noted last: after the last step, or, once
+     * the lane has landed, at its landing: its contact point against the exact path at that
+     * moment (or where the exact path stopped, if it landed first).
      *
      * @return the distance (in metres; NaN before the first step)
      */
@@ -273,7 +280,8 @@ public final class ComparisonLane implements DemoPart {
     }
 
     /**
-     * Return the followed sphere's error {@code |P − P_exact|} at the same time.
+     * Return the followed sphere's error {@code |P − P_exact|} at the same time, or, once it
+     * has landed, at its landing (as for the lane).
      *
      * @return the distance (in metres; NaN before the first step)
      */
@@ -367,12 +375,24 @@ public final class ComparisonLane implements DemoPart {
      */
     @Override
     public void beforeStep(float stepSeconds) {
-        if (particle == null || particle.hasLanded() || blewUp) {
+        laneWasFlying = false;
+        followedWasFlying = false;
+        if (particle == null || blewUp) {
+            return;
+        }
+        if (particle.hasLanded()) {
+            // the exact path goes on while the followed sphere flies, for its error
+            followedWasFlying = !needsStart && !followed.hasLanded();
+            if (followedWasFlying) {
+                exact.advance(stepSeconds);
+            }
             return;
         }
         if (needsStart) {
             start();
         }
+        laneWasFlying = true;
+        followedWasFlying = !followed.hasLanded();
         refreshForces();
         Particle body = particle.getParticle();
         double[] p = state.position;
@@ -398,7 +418,7 @@ public final class ComparisonLane implements DemoPart {
      */
     @Override
     public void afterStep(float stepSeconds) {
-        if (particle == null || particle.hasLanded() || blewUp || needsStart) {
+        if (particle == null || blewUp || needsStart) {
             return;
         }
         noteErrors();
@@ -610,24 +630,40 @@ public final class ComparisonLane implements DemoPart {
         stepperScheme = scheme;
     }
 
-    /** Note both errors after a step, while the lane and the exact path fly. */
+    /**
+     * Note both errors after a step, for each sphere that flew in it: after a step in flight,
+     * its state against the exact path now; in the step it landed, the contact point where it
+     * stopped against the exact path at its landing time (what "at landing" names). The exact
+     * path stops where it lands itself, as its ghost does.
+     */
     private void noteErrors() {
-        if (exact.hasLanded()) {
-            return;
+        if (laneWasFlying) {
+            if (particle.hasLanded()) {
+                Vector3f contact = particle.getParticle().position;
+                exact.copyPositionAt(particle.getLandingSeconds(), exactAtLanding);
+                laneDx = contact.x - exactAtLanding[0];
+                laneDy = contact.y - exactAtLanding[1];
+            } else {
+                laneDx = state.position[0] - exact.getPosition(0);
+                laneDy = state.position[1] - exact.getPosition(1);
+            }
+            hasErrors = true;
         }
-        double ex = exact.getPosition(0);
-        double ey = exact.getPosition(1);
-        laneDx = state.position[0] - ex;
-        laneDy = state.position[1] - ey;
-        Vector3f main = followed.getParticle().position;
-        if (kind == Kind.SLIDE && !followed.hasLanded()) {
-            slideDifference = main.distance(slide.position);
+        if (followedWasFlying) {
+            Vector3f main = followed.getParticle().position;
+            if (followed.hasLanded()) {
+                exact.copyPositionAt(followed.getLandingSeconds(), exactAtLanding);
+                followedDx = main.x - exactAtLanding[0];
+                followedDy = main.y - exactAtLanding[1];
+            } else {
+                if (kind == Kind.SLIDE) {
+                    slideDifference = main.distance(slide.position);
+                }
+                followedDx = main.x - exact.getPosition(0);
+                followedDy = main.y - exact.getPosition(1);
+            }
+            hasErrors = true;
         }
-        if (!followed.hasLanded()) {
-            followedDx = main.x - ex;
-            followedDy = main.y - ey;
-        }
-        hasErrors = true;
     }
 
     private void appendCost(StringBuilder text) {

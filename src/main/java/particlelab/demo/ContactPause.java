@@ -1,5 +1,6 @@
 package particlelab.demo;
 
+import com.jme3.math.Vector3f;
 import java.util.List;
 import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
@@ -16,7 +17,9 @@ import particlelab.world.World;
  * ({@link SimulationClock#setPaused}): {@code t} is the end of that step, and the views show
  * the bodies as the resolution left them. The HUD's time line then says which bodies met, how
  * fast they approached and when inside the step, until the next step is taken; while armed it
- * says so.
+ * says so. A contact of bodies that were not approaching when the step began is a resting
+ * contact (a ball lying on the ground meets it every step, closing at {@code g·h}, at the
+ * step's start): the line says "resting", so it is not read as the moment the body stopped.
  *
  * <p>The key: when idle or while paused by Space, arm and run to the next contact; at a
  * contact, run on to the next one; while armed and running, cancel. Space resumes as ever
@@ -43,6 +46,9 @@ final class ContactPause implements ContactListener {
     private World pausedWorld;
     private KeyBinding key;
     private KeyBinding pauseKey;
+    /** Scratch: the bodies' velocities at the step's start (m/s). */
+    private final Vector3f startVelocityA = new Vector3f();
+    private final Vector3f startVelocityB = new Vector3f();
 
     /**
      * Create a disarmed pause for one demo.
@@ -164,9 +170,25 @@ final class ContactPause implements ContactListener {
         } else {
             description.append("a surface");
         }
-        description.append(", approach ");
-        TextFormat.appendFixed(description, contact.getApproachSpeed(), 2).append(" m/s at t = ");
+        description.append(isResting(contact) ? ", resting: approach " : ", approach ");
+        TextFormat.appendFixed(description, contact.getApproachSpeed(), 2).append(" m/s");
+        if (isResting(contact)) {
+            description.append(" (this step's h·a alone)");
+        }
+        description.append(" at t = ");
         TextFormat.appendFixed(description, contact.getTimeSeconds(), 4).append(" s");
+    }
+
+    /**
+     * Test whether the bodies were not approaching along the contact's normal when the step
+     * began, so only the step's own forces brought them together: a resting contact.
+     */
+    private boolean isResting(Contact contact) {
+        contact.getBodyA().copyPreviousVelocity(startVelocityA);
+        if (contact.getBodyB() != null) {
+            startVelocityA.subtractLocal(contact.getBodyB().copyPreviousVelocity(startVelocityB));
+        }
+        return startVelocityA.dot(contact.getNormal()) >= 0f;
     }
 
     /** A body by its particle's label, else by its number in the world. */

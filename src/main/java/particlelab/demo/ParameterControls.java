@@ -219,8 +219,9 @@ final class ParameterControls {
             panel.setLegend(legend);
         }
         updateTimeline();
-        panel.place(layout.getSidePanel(), layout.getScale());
+        // the texts first, so the panel is placed (and wrapped) with this frame's texts
         panel.refresh();
+        panel.place(layout.getSidePanel(), layout.getPanelScale());
     }
 
     /**

@@ -122,6 +122,8 @@ public final class HudLayout {
     private String footerText = "";
     /** The side panel's width at HUD scale 1 (pixels; 0: no panel). */
     private float panelWidth;
+    /** The side panel's own scale ({@link #getPanelScale}). */
+    private float panelScale = 1f;
     /** The graph's size at HUD scale 1 (pixels; 0: no graph). */
     private float graphWidth;
     private float graphHeight;
@@ -194,8 +196,9 @@ public final class HudLayout {
         title.set(margin, height - margin - titleHeight,
                 measure.width(titleText, getTitleSize()), titleHeight);
 
+        panelScale = panelScaleFor(width, height, hudScale);
         float panelPixels = panelWidth <= 0f ? 0f
-                : Math.min(panelWidth * scale, MAX_PANEL_SHARE * width);
+                : Math.min(panelWidth * panelScale, MAX_PANEL_SHARE * width);
         float leftWidth = width - panelPixels;
         float textWidth = Math.max(1f, leftWidth - 2f * margin);
 
@@ -532,6 +535,32 @@ public final class HudLayout {
             start = end + 1;
         }
         return storeResult;
+    }
+
+    /**
+     * Return the side panel's scale: the HUD's, but never below what puts the panel's text
+     * at {@link ParameterPanel#MIN_TEXT_PIXELS} where the window suits that ({@link
+     * #scaleFor} reaches it: 1280x720 and up). The body's band may shrink the HUD's scale to
+     * fit its lines; the panel has a column of its own and keeps its text legible.
+     *
+     * @return the scale (&gt;0)
+     */
+    public float getPanelScale() {
+        return panelScale;
+    }
+
+    /**
+     * Return the side panel's scale for a window and a HUD scale (see {@link
+     * #getPanelScale}).
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     * @param hudScale the HUD's scale (&gt;0)
+     * @return the scale (&gt;0)
+     */
+    public static float panelScaleFor(float width, float height, float hudScale) {
+        float legible = ParameterPanel.MIN_TEXT_PIXELS / ParameterPanel.TEXT_SIZE;
+        return Math.max(hudScale, Math.min(legible, scaleFor(width, height)));
     }
 
     /** @return the HUD scale in use */

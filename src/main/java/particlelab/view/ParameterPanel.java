@@ -40,8 +40,17 @@ public final class ParameterPanel {
     public static final float WIDTH_AT_SCALE_ONE = 320f;
     /** The panel's text size at HUD scale 1 (in pixels): legible on a projector. */
     public static final float TEXT_SIZE = 17f;
+    /**
+     * The least text size where the window suits it (in pixels): the lecture hall's 14 px,
+     * reached at 1280x720 and up ({@link HudLayout#getPanelScale}).
+     */
+    public static final float MIN_TEXT_PIXELS = 14f;
     /** The most buttons in one row (more start another row), so every label fits. */
     private static final int BUTTONS_PER_ROW = 4;
+    /** A panel taller than its slot is laid out again at this share of its scale... */
+    private static final float SHRINK = 0.9f;
+    /** ...down to this share of the scale asked for: past it, it reaches below its slot. */
+    private static final float SHRINK_FLOOR = 0.7f;
     /** The slider's thumb's width at HUD scale 1 (in pixels). */
     private static final float THUMB_WIDTH = 12f;
     /** A slider's height at HUD scale 1 (in pixels). */
@@ -65,11 +74,18 @@ public final class ParameterPanel {
     private final Slider[] sliders;
     private final List<VersionedReference<Double>> sliderReferences = new ArrayList<>();
     private final Label heading;
+    private final String headingText;
     private final Label legend;
+    /** The rows' texts as the model wrote them; the labels show them wrapped to the panel. */
+    private final String[] rowTexts;
+    /** Measures the texts for wrapping them. */
+    private final TextMeasure measure;
     private final StringBuilder scratch = new StringBuilder(128);
     private final Vector3f size = new Vector3f();
     private int shownVersion = Integer.MIN_VALUE;
     private float scale = Float.NaN;
+    /** The scale {@link #place} was last asked for (the one used may be smaller). */
+    private float askedScale = Float.NaN;
     /** Where the panel was last placed (pixels), so an unchanged slot costs nothing. */
     private final ScreenRect placed = new ScreenRect();
     /** True when the texts changed, so the panel's height must be measured again. */
@@ -80,6 +96,7 @@ public final class ParameterPanel {
     private Label timelineLabel;
     private Slider timeline;
     private VersionedReference<Double> timelineReference;
+    private String timelineText = " ";
 
     /**
      * Build the panel. Call after {@link #initializeLemur} ran for the application.
@@ -99,6 +116,10 @@ public final class ParameterPanel {
         }
         this.model = model;
         this.font = font;
+        this.measure = TextMeasure.of(font);
+        this.headingText = title;
+        this.rowTexts = new String[model.countRows()];
+        java.util.Arrays.fill(rowTexts, "");
         container = new Container(new SpringGridLayout(Axis.Y, Axis.X, FillMode.None,
                 FillMode.Even));
         container.setBackground(new QuadBackgroundComponent(PANEL_COLOR));
@@ -209,8 +230,8 @@ public final class ParameterPanel {
         if (timeline == null) {
             return;
         }
-        if (!TextFormat.sameText(timelineLabel.getText(), text)) {
-            timelineLabel.setText(text.toString());
+        if (!TextFormat.sameText(timelineText, text)) {
+            timelineText = text.toString();
             placeAgain = true;
         }
         if (timeline.getModel().getValue() != fraction) {
@@ -242,7 +263,7 @@ public final class ParameterPanel {
 
     /** @return the timeline's text as shown (empty without a timeline) */
     public String getTimelineText() {
-        return timelineLabel == null ? "" : timelineLabel.getText();
+        return timelineLabel == null ? "" : timelineText;
     }
 
     /** @return the live node, to attach to the GUI scene (not null) */
@@ -277,46 +298,68 @@ public final class ParameterPanel {
             return;
         }
         node.setCullHint(Spatial.CullHint.Inherit);
-        if (!placeAgain && hudScale == scale && where.getX() == placed.getX()
+        if (!placeAgain && hudScale == askedScale && where.getX() == placed.getX()
                 && where.getY() == placed.getY() && where.getWidth() == placed.getWidth()
                 && where.getHeight() == placed.getHeight()) {
             return;
         }
         placed.set(where);
         placeAgain = false;
-        if (hudScale != scale) {
-            scale = hudScale;
-            float textSize = TEXT_SIZE * hudScale;
-            for (int i = 0; i < texts.size(); ++i) {
-                texts.get(i).setFontSize(textSize);
-            }
-            for (int i = 0; i < buttons.size(); ++i) {
-                buttons.get(i).setFontSize(textSize);
-                buttons.get(i).setInsets(new Insets3f(2f * hudScale, 4f * hudScale,
-                        2f * hudScale, 4f * hudScale));
-            }
-            for (Slider slider : sliders) {
-                slider.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * hudScale, 0f));
-                slider.getThumbButton().setPreferredSize(new Vector3f(THUMB_WIDTH * hudScale,
-                        SLIDER_HEIGHT * hudScale, 0f));
-            }
-            if (timeline != null) {
-                timeline.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * hudScale, 0f));
-                timeline.getThumbButton().setPreferredSize(new Vector3f(
-                        THUMB_WIDTH * hudScale, SLIDER_HEIGHT * hudScale, 0f));
-            }
-            container.setInsets(new Insets3f(6f * hudScale, 8f * hudScale, 6f * hudScale,
-                    8f * hudScale));
-        }
+        askedScale = hudScale;
         // As tall as its content needs, as wide as the slot: but never narrower than its
         // buttons and sliders' ends need, or Lemur hands them a negative width and throws on
         // the render thread (a small window's slot is 40 % of it). Then the panel reaches
-        // past its slot rather than break.
-        container.setPreferredSize(null);
-        size.set(Math.max(where.getWidth(), minimumWidth()), container.getPreferredSize().y,
-                0f);
+        // past its slot rather than break. Taller than the slot (many rows, wrapped, in a
+        // small window), it is laid out again at a smaller scale, down to a floor.
+        float tryScale = hudScale;
+        float width = layOutAt(where, tryScale);
+        while (size.y > where.getHeight() && tryScale > SHRINK_FLOOR * hudScale) {
+            tryScale = Math.max(SHRINK_FLOOR * hudScale, SHRINK * tryScale);
+            width = layOutAt(where, tryScale);
+        }
         container.setPreferredSize(size.clone());
         container.setLocalTranslation(where.getX(), where.getTop(), 0f);
+    }
+
+    /**
+     * Size the panel's parts for a scale and measure it in a slot: its width is returned,
+     * its content's height left in {@link #size}.
+     */
+    private float layOutAt(ScreenRect where, float tryScale) {
+        if (tryScale != scale) {
+            applyScale(tryScale);
+        }
+        float width = Math.max(where.getWidth(), minimumWidth());
+        wrapTexts(width);
+        container.setPreferredSize(null);
+        size.set(width, container.getPreferredSize().y, 0f);
+        return width;
+    }
+
+    /** Size the texts, buttons, sliders and insets for a scale. Allocates. */
+    private void applyScale(float newScale) {
+        scale = newScale;
+        float textSize = TEXT_SIZE * newScale;
+        for (int i = 0; i < texts.size(); ++i) {
+            texts.get(i).setFontSize(textSize);
+        }
+        for (int i = 0; i < buttons.size(); ++i) {
+            buttons.get(i).setFontSize(textSize);
+            buttons.get(i).setInsets(new Insets3f(2f * newScale, 4f * newScale,
+                    2f * newScale, 4f * newScale));
+        }
+        for (Slider slider : sliders) {
+            slider.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * newScale, 0f));
+            slider.getThumbButton().setPreferredSize(new Vector3f(THUMB_WIDTH * newScale,
+                    SLIDER_HEIGHT * newScale, 0f));
+        }
+        if (timeline != null) {
+            timeline.setPreferredSize(new Vector3f(10f, SLIDER_HEIGHT * newScale, 0f));
+            timeline.getThumbButton().setPreferredSize(new Vector3f(
+                    THUMB_WIDTH * newScale, SLIDER_HEIGHT * newScale, 0f));
+        }
+        container.setInsets(new Insets3f(6f * newScale, 8f * newScale, 6f * newScale,
+                8f * newScale));
     }
 
     /**
@@ -368,7 +411,7 @@ public final class ParameterPanel {
             shownVersion = model.getVersion();
             for (int i = 0; i < sliders.length; ++i) {
                 scratch.setLength(0);
-                rowLabels.get(i).setText(model.formatRow(i, scratch).toString());
+                rowTexts[i] = model.formatRow(i, scratch).toString();
                 rowLabels.get(i).setColor(i == model.getSelected() ? SELECTED_COLOR
                         : TEXT_COLOR);
                 sliders[i].getModel().setValue(model.getSliderFraction(i));
@@ -380,7 +423,6 @@ public final class ParameterPanel {
         }
         if (legendChanged) {
             legendChanged = false;
-            legend.setText(legendText.length() == 0 ? " " : legendText.toString());
             placeAgain = true;
         }
     }
@@ -397,12 +439,32 @@ public final class ParameterPanel {
      * @return the text (not null)
      */
     public String getRowText(int row) {
+        return rowTexts[row];
+    }
+
+    /**
+     * Return a row's text as drawn: wrapped to the panel's width at the last {@link #place}.
+     *
+     * @param row which (&ge;0, &lt;the model's row count)
+     * @return the text, lines separated by '\n' (not null)
+     */
+    public String getShownRowText(int row) {
         return rowLabels.get(row).getText();
     }
 
-    /** @return the legend as shown (not null) */
+    /** @return the legend (not null; a space when empty) */
     public String getLegendText() {
-        return legend.getText();
+        return legendText.length() == 0 ? " " : legendText.toString();
+    }
+
+    /**
+     * Access the panel's Lemur container, whose children are its heading, rows of buttons,
+     * texts and sliders, top to bottom (for layout tests).
+     *
+     * @return the live container (do not modify)
+     */
+    public Container getContainer() {
+        return container;
     }
 
     /**
@@ -443,6 +505,62 @@ public final class ParameterPanel {
         Vector3f at = container.getLocalTranslation();
         Vector3f extent = container.getPreferredSize();
         return storeResult.set(at.x, at.y - extent.y, extent.x, extent.y);
+    }
+
+    /**
+     * Give every label its text wrapped to the panel's inner width, with explicit line
+     * breaks, so Lemur sizes each label for all its lines: a label Lemur wraps itself keeps
+     * the height of one line and its other lines cover what lies below (a slider, the
+     * timeline's text). Allocates only when placing anew.
+     *
+     * @param panelWidth the panel's width (in pixels)
+     */
+    private void wrapTexts(float panelWidth) {
+        Insets3f insets = container.getInsets();
+        float sides = insets == null ? 0f : insets.min.x + insets.max.x;
+        float textWidth = Math.max(1f, panelWidth - sides);
+        float textSize = TEXT_SIZE * scale;
+        heading.setText(wrap(headingText, textSize, textWidth));
+        for (int i = 0; i < rowTexts.length; ++i) {
+            rowLabels.get(i).setText(wrap(rowTexts[i], textSize, textWidth));
+        }
+        legend.setText(wrap(getLegendText(), textSize, textWidth));
+        if (timelineLabel != null) {
+            timelineLabel.setText(wrap(timelineText, textSize, textWidth));
+        }
+    }
+
+    /**
+     * Break a text's lines at spaces so that none is wider than a width (a single word wider
+     * than it stays whole on its own line).
+     */
+    private String wrap(String text, float textSize, float maxWidth) {
+        if (measure.width(text, textSize) <= maxWidth) {
+            return text;
+        }
+        StringBuilder wrapped = new StringBuilder(text.length() + 8);
+        StringBuilder line = new StringBuilder();
+        for (String paragraph : text.split("\n", -1)) {
+            if (wrapped.length() > 0) {
+                wrapped.append('\n');
+            }
+            line.setLength(0);
+            for (String word : paragraph.split(" ", -1)) {
+                int before = line.length();
+                if (before > 0) {
+                    line.append(' ');
+                }
+                line.append(word);
+                if (before > 0 && measure.width(line, textSize) > maxWidth) {
+                    line.setLength(before);
+                    wrapped.append(line).append('\n');
+                    line.setLength(0);
+                    line.append(word);
+                }
+            }
+            wrapped.append(line);
+        }
+        return wrapped.toString();
     }
 
     private Label text(String value, ColorRGBA color) {

@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import particlelab.demo.DemoState;
+import particlelab.lecture.UniformMotionDemo;
 import particlelab.demo.KeyBinding;
 
 /**
@@ -146,6 +147,31 @@ class DemoSwitcherTest {
                 + " 1 s for a second digit (1 then 2: demo 12), else it is demo 1",
                 "Tab / Shift+Tab: next demo; with Shift, the previous one (both wrap around)"),
                 help);
+    }
+
+    /**
+     * Issue 29 §4: a 20th demo makes 2 start a two-digit number, so 2 waits for a second
+     * digit and the help says so; 3 still chooses at once, and 2 then 0 is demo 20.
+     */
+    @Test
+    void aTwentiethDemoMakesTwoWaitAndTheHelpSaysSo() {
+        List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
+        demos.add(new UniformMotionDemo());
+        assertEquals(20, demos.size());
+        DemoSwitcher switcher = new DemoSwitcher(demos, 0);
+
+        assertEquals("type a demo's number (1-20): 3-9 choose at once; 1-2 wait 1 s for a"
+                + " second digit (1 then 2: demo 12), else they are demos 1-2",
+                switcher.getBindings().get(0).getDescription());
+        press(switcher, "2");
+        assertTrue(switcher.isEntryPending(), "2 waits: demo 20 starts with it");
+        press(switcher, "0");
+        switcher.update(FRAME);
+        assertEquals(19, demos.indexOf(switcher.getSelected()));
+        press(switcher, "3");
+        assertFalse(switcher.isEntryPending(), "no demo 30");
+        switcher.update(FRAME);
+        assertEquals(2, demos.indexOf(switcher.getSelected()));
     }
 
     @Test

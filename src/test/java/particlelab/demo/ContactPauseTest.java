@@ -139,6 +139,30 @@ class ContactPauseTest {
         assertTrue(world.getLog().size() >= 3, "log " + world.getLog().size());
     }
 
+    /**
+     * Once Box2D's threshold (1 m/s, the default) has stopped the swept lane's ball, at the
+     * impact its HUD gives as "at rest at", the ball lies on the ground and meets it again
+     * every step, closing at g·h from rest, at the step's start. A pause there (15.83 s in
+     * the audit) is such a resting contact, not the moment the ball stopped: it says so.
+     */
+    @Test
+    void aPauseOnABallLyingOnTheGroundSaysItIsAResting() {
+        BounceDemo bounce = new BounceDemo();
+        // 950 frames: 15.83 s, after both lanes came to rest (the swept one at 15.49 s)
+        for (int frame = 0; frame < 950; ++frame) {
+            bounce.advancePhysics(H);
+        }
+        assertTrue(hud(bounce).contains("swept 0.042 m, 0.000 J, at rest at 15.494 s"),
+                hud(bounce));
+        press(bounce, "Enter");
+        runUntilPaused(bounce, H);
+        // One step of gravity from rest: V = −g·h, shown to 2 decimals (0.16 m/s).
+        StringBuilder expected = new StringBuilder(" - ground, resting: approach ");
+        TextFormat.appendFixed(expected, Gravity.STANDARD_G * H, 2)
+                .append(" m/s (this step's h·a alone) at t = ");
+        assertTrue(hud(bounce).contains(expected), expected + " in\n" + hud(bounce));
+    }
+
     @Test
     void enterWhileArmedCancelsAndNothingPausesWithoutIt() {
         BounceDemo bounce = new BounceDemo();

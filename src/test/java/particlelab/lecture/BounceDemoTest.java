@@ -102,7 +102,7 @@ class BounceDemoTest {
         assertTrue((Integer) result[1] >= 3);
         String hud = (String) result[2];
         assertTrue(hud.contains("time to rest: T = t0 (1+e)/(1-e) = never (e = 1)"), hud);
-        assertTrue(hud.contains("e = 1, apex drift (apex - h0) after "), hud);
+        assertTrue(hud.contains("e = 1, apex - h0 after "), hud);
         assertTrue(hud.contains("never at rest (e = 1)"), hud);
     }
 

@@ -189,4 +189,40 @@ class BounceLanesTest {
         assertTrue(hud.contains("apex, energy: overlap "), hud);
         assertTrue(hud.contains(" J, still bouncing   swept "), hud);
     }
+
+    /**
+     * At e = 1 the overlap lane's apexes sit a constant 0.1045 m below h0: no drift that
+     * grows. From rest the semi-implicit step falls g·h²·n(n+1)/2 in n steps, so the lowest
+     * point first goes below the ground at step N = 54; the overlap test pushes the ball out
+     * onto the ground and turns V = −N·g·h round, and the climb from y = 0 at N·g·h rises
+     * g·h²·N(N−1)/2 = 3.8955 m, its steps mirroring the fall's; the next fall from that apex
+     * lands on the ground at step N − 1 exactly and overlaps it at step N again, so every
+     * bounce repeats the first. The HUD's line says "apex - h0" (not a drift).
+     */
+    @Test
+    void atEOneTheOverlapLanesApexesSitAConstantOffsetBelowTheDrop() {
+        BounceDemo bounce = new BounceDemo();
+        bounce.configure(1f, 2, false, Detection.SWEPT);
+        BounceRecorder overlap = bounce.getRecorder(Detection.OVERLAP);
+        for (int frame = 0; frame < 3600 && overlap.countApexes() < 20; ++frame) {
+            bounce.advancePhysics(H);
+        }
+        int n = 0;
+        while (BounceDemo.DROP_HEIGHT - G * H * H * n * (n + 1) / 2.0 >= 0.0) {
+            ++n;
+        }
+        assertEquals(54, n, "first overlap step");
+        double offset = G * H * H * n * (n - 1) / 2.0 - BounceDemo.DROP_HEIGHT;
+        assertEquals(-0.1045, offset, 5e-5, "the figure the pages give");
+        assertTrue(overlap.countApexes() >= 20, "apexes " + overlap.countApexes());
+        for (int i = 0; i < overlap.countApexes(); ++i) {
+            // about 110 float additions of metres up to 4 (half an ulp, 2.4e-7, each) per
+            // bounce, the bounce repeating the first: 1e-4 m bounds the round-off
+            assertEquals(offset, overlap.getApex(i) - BounceDemo.DROP_HEIGHT, 1e-4,
+                    "apex " + (i + 1));
+        }
+        String hud = bounce.formatHud(new StringBuilder()).toString();
+        assertTrue(hud.contains("e = 1, apex - h0 after "), hud);
+        assertTrue(hud.contains("overlap test -0.1045 m"), hud);
+    }
 }
