@@ -51,6 +51,14 @@ public final class EnergyLedger {
     /** Columns: work done by scripts (kinematic bodies). */
     public static final int SCRIPT = 1 << 6;
 
+    /** The CSV names of the columns, in order: bit i of a column set is name i. */
+    private static final String[] COLUMN_NAMES = {"kinetic_J", "potential_J", "spring_J",
+        "thrust_work_J", "drag_loss_J", "impact_loss_J", "script_work_J"};
+    /** The index of the numerical column in {@link #getColumn}: after the seven others. */
+    public static final int NUMERICAL_COLUMN = 7;
+    /** The CSV name of the numerical column, always last. */
+    public static final String NUMERICAL_NAME = "numerical_J";
+
     private double startJoules;
     private double kineticJoules;
     private double potentialJoules;
@@ -232,6 +240,66 @@ public final class EnergyLedger {
             }
         }
         return columns;
+    }
+
+    /**
+     * Write the CSV header of a set of columns: {@code t}, the columns in the order
+     * {@code kinetic_J, potential_J, spring_J, thrust_work_J, drag_loss_J, impact_loss_J,
+     * script_work_J} (those not in the set left out), then {@code numerical_J}.
+     *
+     * @param columns the set, OR-ed ({@link #KINETIC} ...)
+     * @param prefix what comes before the energy columns, e.g. {@code "t"} (not null)
+     * @return the header (not null)
+     */
+    public static String csvHeader(int columns, String prefix) {
+        StringBuilder header = new StringBuilder(prefix);
+        for (int i = 0; i < COLUMN_NAMES.length; ++i) {
+            if ((columns & (1 << i)) != 0) {
+                header.append(',').append(COLUMN_NAMES[i]);
+            }
+        }
+        return header.append(',').append(NUMERICAL_NAME).toString();
+    }
+
+    /**
+     * Count the values of a CSV row of a set of columns, {@code numerical_J} included.
+     *
+     * @param columns the set, OR-ed
+     * @return the count (&ge;1)
+     */
+    public static int countColumns(int columns) {
+        return Integer.bitCount(columns & ((1 << COLUMN_NAMES.length) - 1)) + 1;
+    }
+
+    /**
+     * Return the value of a column.
+     *
+     * @param index which: 0 to 6 the columns in {@link #csvHeader}'s order as bits
+     *     ({@code 1 << index}), 7 the numerical column
+     * @return the value (in J)
+     */
+    public double getColumn(int index) {
+        switch (index) {
+            case 0:
+                return kineticJoules;
+            case 1:
+                return potentialJoules;
+            case 2:
+                return springJoules;
+            case 3:
+                return thrustWorkJoules;
+            case 4:
+                return dragLossJoules;
+            case 5:
+                return impactLossJoules;
+            case 6:
+                return scriptWorkJoules;
+            case NUMERICAL_COLUMN:
+                return numericalJoules;
+            default:
+                throw new IllegalArgumentException("column index must be from 0 to 7, but was "
+                        + index);
+        }
     }
 
     /**

@@ -34,6 +34,11 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
     private final EnergyLedger ledger = new EnergyLedger();
     /** Measures one body at a time. */
     private final EnergyLedger probe = new EnergyLedger();
+    /** The bodies at the start of the step under way, in the world's order ... */
+    private Body[] startBodies = new Body[0];
+    /** ... and the energy each had then, with the forces of then (J). */
+    private double[] startEnergies = new double[0];
+    private int startCount;
     /** Bodies added during the step under way: not moved by it, their energy enters. */
     private final List<Body> addedInStep = new ArrayList<>();
     private boolean stepping;
@@ -128,9 +133,16 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         // put in by hand for the rest.
         double dynamic = 0.0;
         double kinematic = 0.0;
-        for (int i = 0; i < world.countBodies(); ++i) {
+        startCount = world.countBodies();
+        if (startBodies.length < startCount) {
+            startBodies = new Body[2 * startCount];
+            startEnergies = new double[2 * startCount];
+        }
+        for (int i = 0; i < startCount; ++i) {
             Body body = world.getBody(i);
             double joules = energyNow(body);
+            startBodies[i] = body;
+            startEnergies[i] = joules;
             if (body.isKinematic()) {
                 kinematic += joules;
             } else {
@@ -182,16 +194,27 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
             bookStep(world.getBody(i), stepSeconds);
         }
         addedInStep.clear();
+        for (int i = 0; i < startCount; ++i) {
+            startBodies[i] = null;
+        }
         measure();
     }
 
-    /** Book one body's step: its forces' work, or a kinematic body's change as script. */
+    /**
+     * Book one body's step: its forces' work, or a kinematic body's change as script; and if
+     * its forces changed during the step (a demo switching gravity on at an impact), the
+     * energy that change alone made: it was put in, not created by the step.
+     */
     private void bookStep(Body body, float stepSeconds) {
         if (addedInStep.contains(body)) {
             return;
         }
+        double before = energyAt(body, body.previousPosition, body.previousVelocity);
+        int at = indexAtStart(body);
+        if (at >= 0) {
+            ledger.addToStart(before - startEnergies[at]);
+        }
         if (body.isKinematic()) {
-            double before = energyAt(body, body.previousPosition, body.previousVelocity);
             double after = energyAt(body, body.particle.position, body.particle.velocity);
             ledger.addScriptWork(after - before);
             return;
@@ -203,6 +226,16 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         atStart.setState(body.copyPreviousPosition(previousPosition), body.previousVelocity);
         stepVelocity.set(body.previousVelocity).addLocal(body.gainedVelocity);
         ledger.addStepWork(body.getIntegrator(), atStart, stepSeconds, stepVelocity);
+    }
+
+    /** Find a body among those at the start of the step (-1: added since). */
+    private int indexAtStart(Body body) {
+        for (int i = 0; i < startCount; ++i) {
+            if (startBodies[i] == body) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** Measure every body into the ledger, and remember the dynamic and kinematic sums. */
