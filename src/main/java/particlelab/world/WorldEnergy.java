@@ -31,6 +31,7 @@ import particlelab.rigid.RigidBody;
 public final class WorldEnergy implements StepListener, ContactListener, BodyListener {
 
     private final World world;
+    private final boolean listensToSteps;
     private final EnergyLedger ledger = new EnergyLedger();
     /** Measures one body at a time. */
     private final EnergyLedger probe = new EnergyLedger();
@@ -66,11 +67,27 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
      * @param world the world (not null)
      */
     public WorldEnergy(World world) {
+        this(world, true);
+    }
+
+    /**
+     * Keep the ledger of a world, listening to its contacts and bodies, and to its steps if
+     * asked: otherwise the owner calls {@link #beforeStep} and {@link #afterStep} itself, at
+     * the same moments (a demo's part, which the demo's own step listener calls, so a ledger
+     * made inside a step starts with that step).
+     *
+     * @param world the world (not null)
+     * @param listenToSteps true to add this as a step listener of the world
+     */
+    public WorldEnergy(World world, boolean listenToSteps) {
         if (world == null) {
             throw new IllegalArgumentException("world must be a world, but was null");
         }
         this.world = world;
-        world.addStepListener(this);
+        this.listensToSteps = listenToSteps;
+        if (listenToSteps) {
+            world.addStepListener(this);
+        }
         world.addContactListener(this);
         world.addBodyListener(this);
         restart();
@@ -78,7 +95,9 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
 
     /** Stop listening to the world. */
     public void detach() {
-        world.removeStepListener(this);
+        if (listensToSteps) {
+            world.removeStepListener(this);
+        }
         world.removeContactListener(this);
         world.removeBodyListener(this);
     }
@@ -142,7 +161,7 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
             Body body = world.getBody(i);
             double joules = energyNow(body);
             startBodies[i] = body;
-            startEnergies[i] = joules;
+            startEnergies[i] = joules - rotationJoules(body);
             if (body.isKinematic()) {
                 kinematic += joules;
             } else {
@@ -212,7 +231,9 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         double before = energyAt(body, body.previousPosition, body.previousVelocity);
         int at = indexAtStart(body);
         if (at >= 0) {
-            ledger.addToStart(before - startEnergies[at]);
+            // the same state as at the start, measured with the forces now (the rotation
+            // left out: the step turned it, and that is the step's)
+            ledger.addToStart(before - rotationJoules(body) - startEnergies[at]);
         }
         if (body.isKinematic()) {
             double after = energyAt(body, body.particle.position, body.particle.velocity);
