@@ -180,7 +180,8 @@ public final class EnergyLedger {
             // W = (F + m·a_field)·h·V'
             double work = (force.x + m * field.x) * dx + (force.y + m * field.y) * dy
                     + (force.z + m * field.z) * dz;
-            if (isDrag(each)) {
+            if (each instanceof Spring || isDrag(each)) {
+                // a spring's elastic force is its potential; what is booked is its damping
                 dragLossJoules -= work;
             } else {
                 thrustWorkJoules += work;

@@ -50,6 +50,13 @@ class EnergyLedgerAllDemosTest {
                 scale = Math.max(scale, Math.abs(column));
             }
             largest = Math.max(largest, scale);
+            // a column the demo does not export holds nothing, or the file would not add up
+            for (int i = 0; i < EnergyLedger.NUMERICAL_COLUMN; ++i) {
+                if ((energy.getColumns() & (1 << i)) == 0) {
+                    assertEquals(0.0, ledger.getColumn(i), 0.0,
+                            name + ": column " + i + " is not in the export but holds energy");
+                }
+            }
             double residual = ledger.getKineticJoules() + ledger.getPotentialJoules()
                     + ledger.getSpringJoules() - (ledger.getStartJoules()
                     + ledger.getThrustWorkJoules() - ledger.getDragLossJoules()

@@ -188,6 +188,28 @@ class EnergyLedgerTest {
     }
 
     @Test
+    void aSpringsDampingIsDragLoss() {
+        // Along the spring, its damping is linear drag with c: b·h·V·V' as for LinearDrag
+        float c = 0.8f;
+        Spring spring = new Spring(new Vector3f(), 0f, 30f, c);
+        ParticleIntegrator integrator = new ParticleIntegrator(spring);
+        Particle particle = new Particle(new Vector3f(1f, 0f, 0f), new Vector3f(2f, 0f, 0f),
+                1f);
+        EnergyLedger ledger = startedOn(integrator, particle);
+        Particle atStart = new Particle();
+        double sum = 0.0;
+        for (int n = 0; n < 100; ++n) {
+            float v = particle.velocity.x;
+            stepBooked(integrator, particle, ledger, atStart);
+            sum += c * H * (double) v * particle.velocity.x;
+        }
+        // the damping force rounded to float: 2^-24 relative of each term, |terms| < 0.1 J
+        assertEquals(sum, ledger.getDragLossJoules(), 100 * 0.1 / (1 << 23));
+        assertTrue(sum > 0.1);
+        assertEquals(0.0, ledger.getThrustWorkJoules(), 0.0);
+    }
+
+    @Test
     void columnsAddUpAndBookingAllocatesNothing() {
         Spring spring = new Spring(new Vector3f(0f, 3f, 0f), 1f, 40f, 0.5f);
         ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(),
