@@ -36,6 +36,8 @@ public final class EnergyPart implements DemoPart {
     private DemoState demo;
     private WorldEnergy energy;
     private StepTable table;
+    /** The columns {@link #table} was made for. */
+    private int tableColumns;
     private boolean shown;
 
     @Override
@@ -62,6 +64,9 @@ public final class EnergyPart implements DemoPart {
 
     @Override
     public void afterStep(float stepSeconds) {
+        if (energy == null) {
+            return;
+        }
         World world = demo.getWorld();
         energy.afterStep(world, stepSeconds);
         putRow(world.getTimeSeconds());
@@ -141,11 +146,16 @@ public final class EnergyPart implements DemoPart {
         return shown;
     }
 
-    /** A table for the ledger's columns now, with the start's row. */
+    /**
+     * A table for the ledger's columns now, with the start's row: a new one only if the
+     * columns changed, so a reset (a demo's refire) allocates nothing.
+     */
     private void startTable() {
-        String header = EnergyLedger.csvHeader(energy.getColumns(), "t");
-        if (table == null || !table.getHeader().equals(header)) {
-            table = new StepTable(TABLE_NAME, header, StepTable.DEFAULT_CAPACITY);
+        int columns = energy.getColumns();
+        if (table == null || columns != tableColumns) {
+            table = new StepTable(TABLE_NAME, EnergyLedger.csvHeader(columns, "t"),
+                    StepTable.DEFAULT_CAPACITY);
+            tableColumns = columns;
         } else {
             table.clear();
         }

@@ -30,18 +30,21 @@ import particlelab.rigid.RigidBody;
  */
 public final class WorldEnergy implements StepListener, ContactListener, BodyListener {
 
+    /** Room for this many bodies at the start of a step before the arrays grow. */
+    private static final int INITIAL_CAPACITY = 256;
+
     private final World world;
     private final boolean listensToSteps;
     private final EnergyLedger ledger = new EnergyLedger();
     /** Measures one body at a time. */
     private final EnergyLedger probe = new EnergyLedger();
     /** The bodies at the start of the step under way, in the world's order ... */
-    private Body[] startBodies = new Body[0];
+    private Body[] startBodies = new Body[INITIAL_CAPACITY];
     /** ... and the energy each had then, with the forces of then (J). */
-    private double[] startEnergies = new double[0];
+    private double[] startEnergies = new double[INITIAL_CAPACITY];
     private int startCount;
     /** Bodies added during the step under way: not moved by it, their energy enters. */
-    private final List<Body> addedInStep = new ArrayList<>();
+    private final List<Body> addedInStep = new ArrayList<>(INITIAL_CAPACITY);
     private boolean stepping;
     /** h of the step under way (s). */
     private float stepSeconds;
@@ -117,8 +120,13 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         }
         for (int i = 0; i < world.countRules(); ++i) {
             columns |= EnergyLedger.IMPACT;
+            // an impulse and a stop take energy; a clip, or a response the ledger does not
+            // know (a demo's own, choosing per contact), may also give some: a script's
             ContactResponse response = world.getRule(i).getResponse();
-            if (response instanceof ScriptedResponse && ((ScriptedResponse) response).isClip()) {
+            boolean known = response instanceof ImpulseResponse
+                    || response instanceof ScriptedResponse
+                    && !((ScriptedResponse) response).isClip();
+            if (!known) {
                 columns |= EnergyLedger.SCRIPT;
             }
         }

@@ -16,13 +16,15 @@ import particlelab.lecture.UniformMotionDemo;
 
 /**
  * The export's {@code energy.csv} (issue 32): the header of the columns each demo has, a row
- * per step since the reset with the start's row first, and its columns adding up.
+ * per step since the reset with the start's row first, and its columns adding up (with the
+ * HUD's ledger on, as a lecturer would have it).
  */
 class EnergyExportTest {
 
     private static final float H = 1f / 60f;
 
     private static List<String> exported(DemoState demo, Path folder) throws IOException {
+        demo.getParameters().set(EnergyPart.PARAMETER, 1f);
         for (int i = 0; i < 60; ++i) {
             demo.advancePhysics(H);
         }
