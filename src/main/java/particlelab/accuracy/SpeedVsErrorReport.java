@@ -48,6 +48,7 @@ public final class SpeedVsErrorReport {
         }
         files.addAll(CollisionSection.FILES);
         files.addAll(RotationSection.FILES);
+        files.addAll(EnergySection.FILES);
         FILES = Collections.unmodifiableList(files);
     }
 
@@ -118,6 +119,7 @@ public final class SpeedVsErrorReport {
                 spreads);
         CollisionSection.write(config, meter, folder);
         RotationSection.write(config, meter, folder);
+        EnergySection.write(folder);
         progress.advance();
         progress.finish();
     }

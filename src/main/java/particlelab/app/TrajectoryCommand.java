@@ -2,6 +2,7 @@ package particlelab.app;
 
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
+import particlelab.physics.EnergyLedger;
 import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
@@ -48,6 +49,7 @@ public final class TrajectoryCommand {
     private static final String STEPS = "--steps";
     private static final String DURATION = "--duration";
     private static final String UNTIL_GROUND = "--until-ground";
+    private static final String ENERGY = "--energy";
 
     private TrajectoryCommand() {
     }
@@ -84,6 +86,11 @@ public final class TrajectoryCommand {
                 .flag(UNTIL_GROUND, "stop at the first step with y < 0, that row included. The"
                         + " start needs y >= 0; a particle still up after " + MAX_STEPS
                         + " steps is an error (exit 2).")
+                .flag(ENERGY, "append the energy ledger's columns to each row (issue 32):"
+                        + " kinetic_J, potential_J, and thrust_work_J and drag_loss_J where"
+                        + " those forces are on, then numerical_J, the energy the steps"
+                        + " themselves created: total now - total at the start - the forces'"
+                        + " work (docs/energy.md).")
                 .note("Give exactly one of " + STEPS + ", " + DURATION + ", " + UNTIL_GROUND
                         + ". Only the forces with non-zero coefficients are composed.")
                 .note("Each step is the lecture's semi-implicit Euler step: a = g + F/m,"
@@ -139,10 +146,10 @@ public final class TrajectoryCommand {
             steps = MAX_STEPS;
         }
         checkStepMoves(p0, v0, step);
-        int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null);
+        int taken = fly(integrator, start, step, steps, options.has(UNTIL_GROUND), null, false);
         // Only a run that succeeded gets the warning: a blow-up is its one error line.
         CommandSupport.warnIfUnstable(integrator, start, step, err);
-        fly(integrator, start, step, taken, false, out);
+        fly(integrator, start, step, taken, false, out, options.has(ENERGY));
         return 0;
     }
 
@@ -187,27 +194,38 @@ public final class TrajectoryCommand {
      *
      * @param maxSteps the steps to take, or the most to take until the ground
      * @param untilGround stop after the first step with y &lt; 0
+     * @param energy true to append the energy ledger's columns to each row
      * @return the number of steps taken
      * @throws UsageException if the particle became non-finite, or never came down
      */
     private static int fly(ParticleIntegrator integrator, Particle start, float stepSeconds,
-            int maxSteps, boolean untilGround, PrintStream out) {
+            int maxSteps, boolean untilGround, PrintStream out, boolean energy) {
         Particle particle = new Particle();
         particle.copyFrom(start);
+        Particle atStart = new Particle();
         StringBuilder row = new StringBuilder();
+        EnergyLedger ledger = new EnergyLedger();
+        int columns = EnergyLedger.KINETIC | EnergyLedger.columnsOf(integrator);
+        measure(ledger, integrator, particle);
+        ledger.start();
         if (out != null) {
-            out.println(HEADER);
-            printRow(0, stepSeconds, particle, row, out);
+            out.println(energy ? EnergyLedger.csvHeader(columns, HEADER) : HEADER);
+            printRow(0, stepSeconds, particle, row, out, energy ? ledger : null, columns);
         }
         for (int n = 1; n <= maxSteps; ++n) {
+            atStart.copyFrom(particle);
             try {
                 integrator.step(particle, stepSeconds);
             } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(stepSeconds, "at step " + n,
                         integrator.maxStableStep(start));
             }
+            if (energy) {
+                ledger.addStepWork(integrator, atStart, stepSeconds, particle.velocity);
+                measure(ledger, integrator, particle);
+            }
             if (out != null) {
-                printRow(n, stepSeconds, particle, row, out);
+                printRow(n, stepSeconds, particle, row, out, energy ? ledger : null, columns);
                 if (n % ROWS_PER_OUTPUT_CHECK == 0 && out.checkError()) {
                     // The reader has gone (a closed pipe) or the disk is full: stop here;
                     // Main reports it in one line.
@@ -227,8 +245,16 @@ public final class TrajectoryCommand {
         return maxSteps;
     }
 
+    /** The particle's state as the ledger's kinetic and potential columns. */
+    private static void measure(EnergyLedger ledger, ParticleIntegrator integrator,
+            Particle particle) {
+        ledger.beginState();
+        ledger.addBody(integrator, particle);
+        ledger.endState();
+    }
+
     private static void printRow(int n, float stepSeconds, Particle particle, StringBuilder row,
-            PrintStream out) {
+            PrintStream out, EnergyLedger ledger, int columns) {
         Vector3f p = particle.position;
         Vector3f v = particle.velocity;
         row.setLength(0);
@@ -236,6 +262,15 @@ public final class TrajectoryCommand {
         row.append((float) (n * (double) stepSeconds))
                 .append(',').append(p.x).append(',').append(p.y).append(',').append(p.z)
                 .append(',').append(v.x).append(',').append(v.y).append(',').append(v.z);
+        if (ledger != null) {
+            // the energies to float's digits, as the state (summed in double)
+            for (int column = 0; column < EnergyLedger.NUMERICAL_COLUMN; ++column) {
+                if ((columns & (1 << column)) != 0) {
+                    row.append(',').append((float) ledger.getColumn(column));
+                }
+            }
+            row.append(',').append((float) ledger.getNumericalJoules());
+        }
         out.println(row);
     }
 }

@@ -132,6 +132,8 @@ public abstract class DemoState extends BaseAppState {
     private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
     /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
     private final List<DemoPart> parts = new ArrayList<>();
+    /** Where the energy goes (issue 32): every demo's first part, its world's ledger. */
+    private final EnergyPart energyPart = addPart(new EnergyPart());
     /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
     private final FrameTimes physicsTimes = new FrameTimes();
     // ------------------------------------ the state ring: step back, replay, interpolation --
@@ -596,6 +598,15 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("state record must not be null");
         }
         stateRecords.add(record);
+    }
+
+    /**
+     * Access the energy ledger's part (issue 32): the ledger, its HUD lines and its export.
+     *
+     * @return the part (not null)
+     */
+    public EnergyPart getEnergyPart() {
+        return energyPart;
     }
 
     /**

@@ -16,7 +16,9 @@ import particlelab.world.StateRing;
  * every step since the particle's launch. A particle parked by the demo (out of its current
  * preset, left out of the HUD) is left out here too; a particle not stepped since its launch
  * gets its one launch row. A demo's own tables ({@link DemoState#collectExportTables}, e.g.
- * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header.
+ * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header,
+ * then the energy ledger's {@code FOLDER/energy.csv} ({@link EnergyPart#getTable}; at the
+ * live end only).
  * While the demo shows a recorded step (stepped back with Home, or scrubbed on the timeline),
  * each particle's states over the ring's whole recorded span follow its own file, as
  * {@code FOLDER/<particle>-recorded.csv}, same header and format.
@@ -123,6 +125,12 @@ public final class TrajectoryExport {
         }
         List<StepTable> tables = new ArrayList<>();
         demo.collectExportTables(tables);
+        // the energy ledger's columns per step (issue 32), once the demo has stepped; not
+        // while a recorded step is shown: the ledger is the live end's, not the state shown
+        StepTable energy = demo.getEnergyPart().getTable();
+        if (energy != null && !demo.isReplaying()) {
+            tables.add(energy);
+        }
         for (int i = 0; i < tables.size(); ++i) {
             StepTable table = tables.get(i);
             String name = table.getName();

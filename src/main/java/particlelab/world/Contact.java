@@ -66,6 +66,10 @@ public final class Contact {
     /** The penetration now, refreshed likewise (in metres). */
     float penetrationNow;
     float impulse;
+    /** The kinetic energy the resolution took, in the contact's frame (J): the impact's. */
+    double impactLossJoules;
+    /** What the resolution gave the bodies beyond that, a kinematic body's push (J). */
+    double scriptWorkJoules;
     Prologue prologue = Prologue.PENDING;
     Resolution resolution = Resolution.NONE;
     String epilogueNote;
@@ -187,6 +191,28 @@ public final class Contact {
     }
 
     /**
+     * Return the kinetic energy the resolution took from the bodies, measured in the frame of
+     * the contact (the static or kinematic side at rest): {@code ½·μ·(1−e²)·v_n²} for an
+     * impulse with restitution e, {@code ½m|V|²} for a stick.
+     *
+     * @return the energy (in J), 0 if none
+     */
+    public double getImpactLossJoules() {
+        return impactLossJoules;
+    }
+
+    /**
+     * Return the kinetic energy the resolution gave the dynamic bodies beyond the impact's
+     * loss: the work of a kinematic body that hit them (a scripted paddle), 0 against a static
+     * surface or between two dynamic bodies.
+     *
+     * @return the work (in J)
+     */
+    public double getScriptWorkJoules() {
+        return scriptWorkJoules;
+    }
+
+    /**
      * Return what the prologue decided.
      *
      * @return the decision (not null)
@@ -289,6 +315,8 @@ public final class Contact {
         closingNow = source.closingNow;
         penetrationNow = source.penetrationNow;
         impulse = source.impulse;
+        impactLossJoules = source.impactLossJoules;
+        scriptWorkJoules = source.scriptWorkJoules;
         prologue = source.prologue;
         resolution = source.resolution;
         epilogueNote = source.epilogueNote;
@@ -305,6 +333,8 @@ public final class Contact {
         resolution = Resolution.NONE;
         epilogueNote = null;
         impulse = 0f;
+        impactLossJoules = 0.0;
+        scriptWorkJoules = 0.0;
         penetrationMetres = 0f;
         closingNow = 0f;
         penetrationNow = 0f;

@@ -1,6 +1,7 @@
 package particlelab.world;
 
 import com.jme3.math.Vector3f;
+import particlelab.physics.EnergyLedger;
 import particlelab.physics.Validate;
 
 /**
@@ -183,11 +184,14 @@ public final class ImpulseResponse implements ContactResponse {
                 }
             }
             float change = wanted - separating;
+            double kineticBefore = dynamicKinetic(a, b, wa, wb);
             addAlong(a.particle.velocity, n, change * shareA);
             if (b != null) {
                 addAlong(b.particle.velocity, n, -change * shareB);
             }
             contact.impulse += change / w;
+            bookEnergy(contact, kineticBefore, dynamicKinetic(a, b, wa, wb), separating,
+                    change, w, b != null && (wa == 0f || wb == 0f));
         } else {
             decision = Contact.Resolution.SEPARATING;
         }
@@ -213,6 +217,35 @@ public final class ImpulseResponse implements ContactResponse {
         return "impulse, e = " + restitution
                 + (thresholdSpeed > 0f ? ", threshold " + thresholdSpeed + " m/s" : "")
                 + ", resting fix " + (restingFix ? "on" : "off");
+    }
+
+    /**
+     * Book the energy of one resolution on the contact. Against a static surface or between
+     * two dynamic bodies every joule of kinetic energy the bodies lost is the impact's. When
+     * one side is a body of infinite mass that may move (kinematic, held), the impact's loss
+     * is measured in its frame, {@code −j·(v_s + Δv_s/2)} with {@code j = Δv_s/(w_A + w_B)}
+     * ({@code ½·μ·(1−e²)·v_s²} without the resting fix), and what the dynamic bodies gained
+     * beyond it is the script's work.
+     */
+    private static void bookEnergy(Contact contact, double kineticBefore, double kineticAfter,
+            float separating, float change, float inverseMassSum, boolean pushed) {
+        double gained = kineticAfter - kineticBefore;
+        if (!pushed) {
+            contact.impactLossJoules -= gained;
+            return;
+        }
+        double loss = -((double) change / inverseMassSum) * (separating + 0.5 * change);
+        contact.impactLossJoules += loss;
+        contact.scriptWorkJoules += gained + loss;
+    }
+
+    /** The kinetic energy ½m|V|² of the contact's bodies that have a finite mass (J). */
+    private static double dynamicKinetic(Body a, Body b, float wa, float wb) {
+        double sum = wa > 0f ? EnergyLedger.kineticJoules(a.particle) : 0.0;
+        if (b != null && wb > 0f) {
+            sum += EnergyLedger.kineticJoules(b.particle);
+        }
+        return sum;
     }
 
     /** vector += amount·n, in place. */

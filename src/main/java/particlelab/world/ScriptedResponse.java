@@ -1,6 +1,7 @@
 package particlelab.world;
 
 import com.jme3.math.Vector3f;
+import particlelab.physics.EnergyLedger;
 
 /**
  * Animation-based resolution: a scripted reaction instead of the physics. The bodies do what
@@ -43,6 +44,15 @@ public final class ScriptedResponse implements ContactResponse {
         return new ScriptedResponse(false);
     }
 
+    /**
+     * Tell whether this is the "hand both bodies to a clip" response.
+     *
+     * @return true for {@link #clip()}, false for {@link #stick()}
+     */
+    public boolean isClip() {
+        return !stick;
+    }
+
     @Override
     public void resolve(Contact contact, float stepSeconds) {
         Body a = contact.bodyA;
@@ -56,6 +66,10 @@ public final class ScriptedResponse implements ContactResponse {
         Vector3f v = a.particle.velocity;
         // What A's momentum along n loses: the "impulse" a script takes away.
         contact.impulse = -v.dot(n) * a.getMass();
+        if (stick) {
+            // The stop takes A's whole kinetic energy: an impact's loss.
+            contact.impactLossJoules += EnergyLedger.kineticJoules(a.particle);
+        }
         v.zero();
         if (stick) {
             a.setHeld(true);
