@@ -93,7 +93,7 @@ import particlelab.world.World;
 public abstract class DemoState extends BaseAppState {
 
     /** The frame time injected by the hitch key (in seconds). */
-    public static final float HITCH_SECONDS = 0.5f;
+    public static final float HITCH_SECONDS = DemoRun.HITCH_SECONDS;
     /**
      * How often the HUD text is rebuilt by default (in seconds of frame time): 0, every frame,
      * so the HUD's numbers are those of the picture they are drawn on.
@@ -108,106 +108,83 @@ public abstract class DemoState extends BaseAppState {
     public static final float HUD_BAND_KEEP_SECONDS = 2f;
     /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
-    /** What the time scale keys multiply or divide by. */
-    private static final float TIME_SCALE_FACTOR = 2f;
     /** Between the title and its note. */
     private static final String TITLE_NOTE_GAP = "      ";
 
     private final String title;
-    private final SimulationClock clock = new SimulationClock();
-    private final World world = new World();
-    private final List<DemoParticle> particles = new ArrayList<>();
-    private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
-    private final DemoScene scene = new DemoScene(particles);
-    private final ExactGhosts ghosts = new ExactGhosts(particles);
-    private final DemoKeys keys = new DemoKeys();
-    private final KeyMappings keyMappings;
-    private final ParameterControls parameterControls = new ParameterControls();
-    private final HudWriter hudWriter = new HudWriter(clock, particles);
-    private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
-    /** Pause at the next contact the world resolves (its key, its HUD line). */
-    private final ContactPause contactPause = new ContactPause(clock, particles);
-    private final SimulationClock.Stepper stepper = this::stepWorld;
-    /** Simulations beside the world (a second world, a packed batch), stepped after it. */
-    private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
-    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
-    private final List<DemoPart> parts = new ArrayList<>();
-    /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
-    private final FrameTimes physicsTimes = new FrameTimes();
-    // ------------------------------------ the state ring: step back, replay, interpolation --
-    /** What a demo declared as its own state, and the simulations beside that have one. */
-    private final List<StateRecord> stateRecords = new ArrayList<>();
-    /**
-     * The demo's whole state, one ring entry: t and each particle's P and V first (what the
-     * export of the recorded span reads), then the world, each particle's own counters, the
-     * declared records in the order declared, and what the views show of the state: the
-     * exact ghosts (their paths, readouts and the graph's last sample) and how many shots
-     * were kept, so a step back shows them as they were at that step.
-     */
-    private final StateRecord wholeState = new StateRecord() {
+    /** What the run tells the demo at fixed moments of a step and a reset. */
+    private final DemoRun.Hooks runHooks = new DemoRun.Hooks() {
         @Override
-        public int countStateInts() {
-            int ints = 2 + particles.size() * (6 + DemoParticle.STATE_INTS)
-                    + world.countStateInts();
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                ints += stateRecords.get(i).countStateInts();
-            }
-            return ints + ghosts.countStateInts() + 1;
+        public void prepare() {
+            ensureScene();
         }
 
         @Override
-        public void writeState(StateSlab slab) {
-            slab.putDouble(world.getTimeSeconds());
-            for (int i = 0; i < particles.size(); ++i) {
-                slab.putVector(particles.get(i).getParticle().position);
-                slab.putVector(particles.get(i).getParticle().velocity);
-            }
-            world.writeState(slab);
-            for (int i = 0; i < particles.size(); ++i) {
-                particles.get(i).writeState(slab);
-            }
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                stateRecords.get(i).writeState(slab);
-            }
-            ghosts.writeState(slab);
-            slab.putInt(parameterControls.countKeptShots());
-        }
-
-        @Override
-        public void readState(StateSlab slab) {
-            slab.getDouble();
-            for (int i = 0; i < 6 * particles.size(); ++i) {
-                slab.getFloat();
-            }
-            world.readState(slab);
-            for (int i = 0; i < particles.size(); ++i) {
-                particles.get(i).readState(slab);
-            }
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                stateRecords.get(i).readState(slab);
-            }
-            ghosts.readState(slab);
-            parameterControls.showKeptShotsUpTo(slab.getInt());
-        }
-    };
-    private final Replay replay = new Replay(new StateRing(), wholeState, clock, world,
-            particles);
-    private final StepListener stepListener = new StepListener() {
-        @Override
-        public void beforeStep(World stepping, float stepSeconds) {
-            contactPause.beforeStep();
+        public void beforeStep(float stepSeconds) {
             DemoState.this.beforeStep(stepSeconds);
             for (int i = 0; i < parts.size(); ++i) {
                 parts.get(i).beforeStep(stepSeconds);
             }
-            observeParticles(stepSeconds);
         }
 
         @Override
-        public void afterStep(World stepping, float stepSeconds) {
-            finishStep(stepSeconds);
+        public void afterStep(float stepSeconds) {
+            ghosts.afterStep(stepSeconds);
+            DemoState.this.afterStep(stepSeconds);
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).afterStep(stepSeconds);
+            }
+        }
+
+        @Override
+        public void beforeRestart() {
+            parameterControls.beforeLaunch();
+        }
+
+        @Override
+        public void particlesRestarted() {
+            for (int i = 0; i < particles.size(); ++i) {
+                scene.restartTrail(particles.get(i));
+            }
+            ghosts.restartAll();
+        }
+
+        @Override
+        public void restarted() {
+            onRestart();
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).onRestart();
+            }
+            if (!drags.isDragging()) {
+                // During a drag the camera holds still, so the grip stays under the mouse.
+                frameLaunches();
+            }
+            hudDirty = true;
+        }
+
+        @Override
+        public void changed() {
+            hudDirty = true;
         }
     };
+    /** The run: clock, world, particles, restart, recovery, the replay ring (no jME). */
+    private final DemoRun run = new DemoRun(runHooks);
+    private final SimulationClock clock = run.getClock();
+    private final World world = run.getWorld();
+    private final List<DemoParticle> particles = run.getParticles();
+    private final DemoScene scene = new DemoScene(particles);
+    private final ExactGhosts ghosts = new ExactGhosts(particles);
+    private final DemoKeys keys = new DemoKeys();
+    private final KeyMappings keyMappings;
+    private final ParameterControls parameterControls =
+            new ParameterControls(run.getParameterValues());
+    private final HudWriter hudWriter = new HudWriter(clock, particles);
+    private final StepWarnings warnings = run.getWarnings();
+    /** Pause at the next contact the world resolves (its key, its HUD line). */
+    private final ContactPause contactPause = run.getContactPause();
+    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
+    private final List<DemoPart> parts = new ArrayList<>();
+    private final Replay replay = run.getReplay();
     private final Node sceneNode;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -220,35 +197,8 @@ public abstract class DemoState extends BaseAppState {
     private int catalogNumber;
     /** A short note after the title ({@link #setTitleNote}), or null. */
     private String titleNote;
-    /** Scratch: a particle's position before its step (m). */
-    private final Vector3f previousPosition = new Vector3f();
-    /** Scratch: a particle's velocity before its step (m/s). */
-    private final Vector3f previousVelocity = new Vector3f();
-    /** Scratch: a landed particle's step without the ground, for its export row. */
-    private final Particle freeStep = new Particle();
-    /**
-     * The lecture's stop at the ground, as a rule of the world: the plane y = 0, the swept
-     * test and the stick response, for the particles told to {@link DemoParticle#stopAtGround}
-     * (created with the first of them).
-     */
-    private SurfaceRule groundStop;
-    /** Tells a particle the ground stop landed it, with when in the step. */
-    private final ContactListener landings = new ContactListener() {
-        @Override
-        public void resolved(Contact contact, World stepping) {
-            if (contact.getRule() != groundStop) {
-                return;
-            }
-            for (int i = 0; i < particles.size(); ++i) {
-                DemoParticle particle = particles.get(i);
-                if (particle.getBody() == contact.getBodyA()) {
-                    particle.recordLanding(contact.getFraction(), currentStepSeconds);
-                }
-            }
-        }
-    };
-    /** h of the step under way (s). */
-    private float currentStepSeconds;
+    /** Scratch: a particle's launch position (m). */
+    private final Vector3f launchPosition = new Vector3f();
     /** What the launches reach, for the camera to frame. */
     private final LaunchReach reach = new LaunchReach();
     /** The mouse on the bodies: the declared drags and the picked body; its inspector. */
@@ -273,10 +223,6 @@ public abstract class DemoState extends BaseAppState {
     private float hudSlackSeconds;
     /** Lines after the demo's own on the HUD (a tour stop's), or null. */
     private HudNote note;
-    private float pendingHitchSeconds;
-    private int blowUps;
-    /** A restart asked for inside a step: done once the frame's steps are over. */
-    private boolean restartRequested;
     /** An export asked for (key or button), for the application to carry out. */
     private boolean exportRequested;
     /** The window size (pixels) and the user's HUD scale factor of the last layout. */
@@ -304,9 +250,35 @@ public abstract class DemoState extends BaseAppState {
         titleText.append(title);
         hudWriter.setWarnings(warnings);
         hudWriter.setContactPause(contactPause);
-        world.addStepListener(stepListener);
-        world.addContactListener(contactPause);
         hudWriter.setGhosts(ghosts);
+        run.addViewRecord(ghosts);
+        run.addViewRecord(new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putInt(parameterControls.countKeptShots());
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                parameterControls.showKeptShotsUpTo(slab.getInt());
+            }
+        });
+        replay.setTrails(new Replay.TrailWalk() {
+            @Override
+            public void undone(DemoParticle particle) {
+                scene.undoTrailStep(particle);
+            }
+
+            @Override
+            public void redone(DemoParticle particle) {
+                scene.redoTrailStep(particle);
+            }
+        });
         hudWriter.setReplay(replay);
         parameterControls.setReplay(replay);
     }
@@ -452,10 +424,7 @@ public abstract class DemoState extends BaseAppState {
         if (label == null || color == null || integrator == null) {
             throw new IllegalArgumentException("label, color and integrator must not be null");
         }
-        Body body = world.addBody(integrator, position, velocity, massKg, 0f);
-        DemoParticle particle = new DemoParticle(label, color, body, this::joinGroundStop);
-        particles.add(particle);
-        return particle;
+        return run.addParticle(label, color, position, velocity, massKg, integrator);
     }
 
     /**
@@ -561,7 +530,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live view, or null before the views are built (no window yet, or none)
      */
     public ParticleView getView(DemoParticle particle) {
-        return particle.view;
+        return scene.viewOf(particle);
     }
 
     /**
@@ -573,14 +542,7 @@ public abstract class DemoState extends BaseAppState {
      * @param simulation what takes each step (not null)
      */
     protected void addSimulation(SimulationClock.Stepper simulation) {
-        if (simulation == null) {
-            throw new IllegalArgumentException("simulation must be a stepper, but was null");
-        }
-        simulations.add(simulation);
-        if (simulation instanceof StateRecord) {
-            // A second world: its state goes into the ring with the demo's own.
-            stateRecords.add((StateRecord) simulation);
-        }
+        run.addSimulation(simulation);
     }
 
     /**
@@ -592,10 +554,7 @@ public abstract class DemoState extends BaseAppState {
      * @param record writes and reads the state (not null)
      */
     protected void addStateRecord(StateRecord record) {
-        if (record == null) {
-            throw new IllegalArgumentException("state record must not be null");
-        }
-        stateRecords.add(record);
+        run.addStateRecord(record);
     }
 
     /**
@@ -737,11 +696,11 @@ public abstract class DemoState extends BaseAppState {
      */
     protected void launch(DemoParticle particle, Vector3f velocity) {
         parameterControls.beforeLaunch();
-        particle.copyLaunchPosition(previousPosition);
-        particle.setLaunch(previousPosition, velocity);
+        particle.copyLaunchPosition(launchPosition);
+        particle.setLaunch(launchPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
-        ghosts.restart(particles.indexOf(particle));
+        ghosts.restart(particle.index);
         frameLaunches();
         replay.stateChanged();
         hudDirty = true;
@@ -907,6 +866,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Access the demo's run: the clock, the world, the particles, restart and the replay
+     * ring, without jME (what a physics test steps).
+     *
+     * @return the live run (not null; its scene declared)
+     */
+    public DemoRun getRun() {
+        ensureScene();
+        return run;
+    }
+
+    /**
      * Access the stepping clock: pause, single step, time scale, raw tpf or fixed step.
      *
      * @return the live clock (not null)
@@ -922,7 +892,7 @@ public abstract class DemoState extends BaseAppState {
      */
     public List<DemoParticle> getParticles() {
         ensureScene();
-        return particlesView;
+        return particles;
     }
 
     /**
@@ -1134,7 +1104,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the count (&ge;0)
      */
     public int countBlowUps() {
-        return blowUps;
+        return run.countBlowUps();
     }
 
     /**
@@ -1148,33 +1118,7 @@ public abstract class DemoState extends BaseAppState {
      * which allocates, and the camera reframed.
      */
     public void restart() {
-        ensureScene();
-        if (world.isStepping()) {
-            restartRequested = true;
-            return;
-        }
-        restartRequested = false;
-        parameterControls.beforeLaunch();
-        world.restart();
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            particle.restart();
-            scene.restartTrail(particle);
-        }
-        ghosts.restartAll();
-        clock.reset();
-        replay.clear();
-        warnings.clear();
-        contactPause.restart();
-        onRestart();
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).onRestart();
-        }
-        if (!drags.isDragging()) {
-            // During a drag the camera holds still, so the grip stays under the mouse.
-            frameLaunches();
-        }
-        hudDirty = true;
+        run.restart();
     }
 
     /**
@@ -1184,15 +1128,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if over
      */
     public boolean isSceneOver() {
-        if (particles.isEmpty()) {
-            return false;
-        }
-        for (int i = 0; i < particles.size(); ++i) {
-            if (!particles.get(i).hasLanded()) {
-                return false;
-            }
-        }
-        return true;
+        return run.isSceneOver();
     }
 
     /**
@@ -1238,8 +1174,7 @@ public abstract class DemoState extends BaseAppState {
      * mode that is one long Euler step; in fixed-step mode the clock clamps it.
      */
     public void injectHitch() {
-        pendingHitchSeconds = HITCH_SECONDS;
-        warnings.hitchInjected();
+        run.injectHitch();
     }
 
     /**
@@ -1273,25 +1208,7 @@ public abstract class DemoState extends BaseAppState {
      * @param tpf the frame time (in seconds, finite, &ge;0)
      */
     public void advancePhysics(float tpf) {
-        ensureScene();
-        float frameSeconds = tpf;
-        if (pendingHitchSeconds > 0f) {
-            frameSeconds = pendingHitchSeconds;
-            pendingHitchSeconds = 0f;
-            warnings.hitchApplied(frameSeconds);
-        }
-        long physicsStart = System.nanoTime();
-        if (!isSceneOver()) {
-            try {
-                clock.advance(frameSeconds, stepper);
-            } catch (NonFiniteStepException blowUp) {
-                recoverFromBlowUp();
-            }
-            if (restartRequested) {
-                restart();
-            }
-        }
-        physicsTimes.record(System.nanoTime() - physicsStart);
+        run.advancePhysics(tpf);
     }
 
     /**
@@ -1301,7 +1218,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live record (not null)
      */
     public FrameTimes getPhysicsTimes() {
-        return physicsTimes;
+        return run.getPhysicsTimes();
     }
 
     /**
@@ -1502,7 +1419,7 @@ public abstract class DemoState extends BaseAppState {
         frameLaunches();
         scene.build(assets, font, sceneNode);
         world.addStepListener(scene.getTrailWriter());
-        ghosts.build(assets, font, sceneNode, world);
+        ghosts.build(assets, font, sceneNode, world, scene);
         hud = new HudView(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
         laidOutWidth = app.getCamera().getWidth();
@@ -1705,13 +1622,13 @@ public abstract class DemoState extends BaseAppState {
                 .append(" (the HUD shows the speed reached)");
         KeyBinding faster = keys.addShared(new KeyBinding(
                 new int[] {KeyInput.KEY_EQUALS, KeyInput.KEY_ADD}, new String[] {"+", "keypad +"},
-                up.toString(), null, key -> scaleTime(TIME_SCALE_FACTOR)));
+                up.toString(), null, key -> scaleTime(DemoRun.TIME_SCALE_FACTOR)));
         StringBuilder down = new StringBuilder("time scale /2, down to ");
         HudWriter.appendScale(down, SimulationClock.MIN_TIME_SCALE);
         KeyBinding slower = keys.addShared(new KeyBinding(
                 new int[] {KeyInput.KEY_MINUS, KeyInput.KEY_SUBTRACT},
                 new String[] {"-", "keypad -"}, down.toString(), null,
-                key -> scaleTime(1f / TIME_SCALE_FACTOR)));
+                key -> scaleTime(1f / DemoRun.TIME_SCALE_FACTOR)));
         KeyBinding realTime = keys.addShared(new KeyBinding(KeyInput.KEY_X, "X",
                 "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
         keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
@@ -1774,7 +1691,7 @@ public abstract class DemoState extends BaseAppState {
                 actions.add(() -> binding.press(0));
             }
         }
-        parameterControls.build(app, font, hud.getLayout(), particles,
+        parameterControls.build(app, font, hud.getLayout(), particles, scene,
                 scene.getSphereRadius(), sceneNode, labels, actions);
         equationsVersion = getParameters().getVersion();
         // The side panel's slot narrows the HUD's body: lay it out again.
@@ -1828,15 +1745,11 @@ public abstract class DemoState extends BaseAppState {
     }
 
     private void singleStep() {
-        clock.setPaused(true);
-        clock.requestSingleStep();
+        run.singleStep();
     }
 
     private void scaleTime(float factor) {
-        float scale = clock.getTimeScale() * factor;
-        scale = Math.max(SimulationClock.MIN_TIME_SCALE,
-                Math.min(SimulationClock.MAX_TIME_SCALE, scale));
-        clock.setTimeScale(scale);
+        run.scaleTime(factor);
     }
 
     private void frameCamera() {
@@ -1864,91 +1777,6 @@ public abstract class DemoState extends BaseAppState {
                 frameCamera();
             }
         }
-    }
-
-    /**
-     * One step of h of the world: the clock's stepper. After a restart was requested in this
-     * frame the remaining steps do nothing; the restart follows them.
-     */
-    private void stepWorld(float stepSeconds) {
-        if (restartRequested) {
-            return;
-        }
-        replay.beforeStep();
-        world.step(stepSeconds);
-        for (int i = 0; i < simulations.size(); ++i) {
-            simulations.get(i).step(stepSeconds);
-        }
-        if (!restartRequested) {
-            replay.afterStep(stepSeconds);
-        }
-    }
-
-    /** Before the world moves anything: which particles it steps, and what h does to them. */
-    private void observeParticles(float stepSeconds) {
-        warnings.beginStep(stepSeconds);
-        currentStepSeconds = stepSeconds;
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle demoParticle = particles.get(i);
-            demoParticle.landedThisStep = false;
-            demoParticle.steppedThisStep = !demoParticle.isHeld();
-            if (demoParticle.steppedThisStep) {
-                demoParticle.getRecord().begin(demoParticle.getParticle());
-                warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
-                        demoParticle.getParticle());
-            }
-        }
-    }
-
-    /**
-     * After the world's step: the export's rows, the stop at the ground, the demo's hook. The
-     * trails are the view's: {@link DemoScene}'s own listener writes them.
-     */
-    private void finishStep(float stepSeconds) {
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle demoParticle = particles.get(i);
-            if (!demoParticle.steppedThisStep) {
-                continue;
-            }
-            // The export's row: the stepped state, the landing step's as the Euler step left
-            // it below the ground (what `trajectory --until-ground` prints last).
-            demoParticle.getRecord().add(demoParticle.landedThisStep
-                    ? stepWithoutGround(demoParticle, stepSeconds)
-                    : demoParticle.getParticle(), stepSeconds);
-            demoParticle.countStep(stepSeconds);
-        }
-        ghosts.afterStep(stepSeconds);
-        afterStep(stepSeconds);
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).afterStep(stepSeconds);
-        }
-        warnings.endStep();
-    }
-
-    /**
-     * Put a particle under the world's ground stop rule, made with the first particle that
-     * stops at the ground.
-     */
-    private void joinGroundStop(DemoParticle particle) {
-        if (groundStop == null) {
-            groundStop = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
-            world.addRule(groundStop);
-            world.addContactListener(landings);
-        }
-        groundStop.limitTo(particle.getBody());
-    }
-
-    /**
-     * Redo a landed particle's last step without the ground: the same integrator from the same
-     * state, so the same bits the world's integration gave before the stick moved it.
-     */
-    private Particle stepWithoutGround(DemoParticle particle, float stepSeconds) {
-        Body body = particle.getBody();
-        freeStep.setMass(body.getMass());
-        freeStep.setState(body.copyPreviousPosition(previousPosition),
-                body.copyPreviousVelocity(previousVelocity));
-        particle.getIntegrator().step(freeStep, stepSeconds);
-        return freeStep;
     }
 
     /**
@@ -1981,11 +1809,5 @@ public abstract class DemoState extends BaseAppState {
         if (sceneCreated) {
             onStepChanged(stepSeconds);
         }
-    }
-
-    private void recoverFromBlowUp() {
-        ++blowUps;
-        restart();
-        warnings.blewUp();
     }
 }
