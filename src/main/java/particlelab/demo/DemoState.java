@@ -46,6 +46,8 @@ import particlelab.world.World;
  * demo plays in.</li>
  * <li>{@link #showExactGhosts()} (optional, in {@code createScene()}): each particle's exact
  * path beside it, readouts Euler against exact, and the live graph.</li>
+ * <li>{@link #buildViews(Application)} (optional): the demo's own views, beyond the
+ * particles (walls, curves, sounds), built only in a window, after {@code createScene()}.</li>
  * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
  * <li>{@link #declareParameters()}: call {@link #declareParameter} for each number the user
  * may change (the panel, its keys and {@code --set} are built from them).</li>
@@ -289,9 +291,20 @@ public abstract class DemoState extends BaseAppState {
      * Declare the particles ({@link #addParticle}) and the view ({@link #setView}). Called once,
      * the first time the world, the particles or the window need the scene: so a demo's
      * physics runs without jME. Create no jME object here (the views come from the
-     * declarations, later).
+     * declarations, later; a demo's own views from {@link #buildViews}).
      */
     protected abstract void createScene();
+
+    /**
+     * Build the demo's own views, those the shared ones do not draw (walls, curves, a point
+     * cloud, bodies beyond the particles, sounds), and attach them to {@link #getSceneNode()}.
+     * Called once, only in a window: at initialisation, after {@link #createScene()} and
+     * before the shared views (grid, posts, particles) are built. The default builds none.
+     *
+     * @param app the application whose assets, audio and camera the views use (not null)
+     */
+    protected void buildViews(Application app) {
+    }
 
     /**
      * Declare the demo's own keys with {@link #bindKey}. Called once, after
@@ -1413,6 +1426,7 @@ public abstract class DemoState extends BaseAppState {
     @Override
     protected void initialize(Application app) {
         ensureScene();
+        buildViews(app);
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
@@ -1591,82 +1605,6 @@ public abstract class DemoState extends BaseAppState {
         }
     }
 
-    /**
-     * The controls every demo shares. The footer, the help and the HUD's key hints are all
-     * written from these bindings, so renaming a key here renames it everywhere.
-     */
-    private void declareSharedKeys() {
-        keys.addShared(new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
-                () -> hud.setHelpVisible(!hud.isHelpVisible())).withSummary("help"));
-        KeyBinding pause = keys.addShared(new KeyBinding(KeyInput.KEY_SPACE, "Space",
-                "pause / resume the simulation (the camera keeps moving)",
-                () -> clock.setPaused(!clock.isPaused())).withSummary("pause"));
-        KeyBinding step = keys.addShared(new KeyBinding(KeyInput.KEY_N, "N",
-                "single step of h (pauses first)", this::singleStep).withSummary("step"));
-        declareReplayKeys();
-        KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
-                "reset: launch again, reframe the camera", this::restartAndReframe)
-                .withSummary("reset"));
-        KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
-                "pause at the step that resolves the next contact (again: the one after;"
-                        + " while waiting: cancel)",
-                contactPause::press));
-        contactPause.setKeys(atContact, pause);
-        keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
-                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
-        StringBuilder hitch = new StringBuilder("inject one ");
-        TextFormat.appendFixed(hitch, HITCH_SECONDS, 1).append(" s frame (a hitch)");
-        keys.addShared(new KeyBinding(KeyInput.KEY_K, "K", hitch.toString(), this::injectHitch));
-        StringBuilder up = new StringBuilder("time scale x2, up to ");
-        HudWriter.appendScale(up, SimulationClock.MAX_TIME_SCALE)
-                .append(" (the HUD shows the speed reached)");
-        KeyBinding faster = keys.addShared(new KeyBinding(
-                new int[] {KeyInput.KEY_EQUALS, KeyInput.KEY_ADD}, new String[] {"+", "keypad +"},
-                up.toString(), null, key -> scaleTime(DemoRun.TIME_SCALE_FACTOR)));
-        StringBuilder down = new StringBuilder("time scale /2, down to ");
-        HudWriter.appendScale(down, SimulationClock.MIN_TIME_SCALE);
-        KeyBinding slower = keys.addShared(new KeyBinding(
-                new int[] {KeyInput.KEY_MINUS, KeyInput.KEY_SUBTRACT},
-                new String[] {"-", "keypad -"}, down.toString(), null,
-                key -> scaleTime(1f / DemoRun.TIME_SCALE_FACTOR)));
-        KeyBinding realTime = keys.addShared(new KeyBinding(KeyInput.KEY_X, "X",
-                "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
-        keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
-                scene::toggleArrows));
-        keys.addShared(new KeyBinding(KeyInput.KEY_U, "U",
-                "show / hide the step dots (one per step)",
-                scene::toggleDots));
-        if (ghosts.isEnabled()) {
-            keys.addShared(new KeyBinding(KeyInput.KEY_G, "G",
-                    "show / hide the exact ghosts (the continuous paths, faint)",
-                    ghosts::toggleGhosts));
-            keys.addShared(new KeyBinding(KeyInput.KEY_Y, "Y",
-                    "show / hide the live graph: height and speed against time",
-                    this::toggleGraph));
-        }
-        hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
-        parameterControls.declareKeys(keys, this::relayOutPanel);
-    }
-
-    /**
-     * The replay's keys: Home steps back one recorded step, End forward (a new step at the
-     * live end), F6 switches the interpolated drawing off and on.
-     */
-    private void declareReplayKeys() {
-        keys.addShared(new KeyBinding(KeyInput.KEY_HOME, "Home",
-                "step back one recorded step (pauses; Space goes on from there)",
-                this::stepBack));
-        keys.addShared(new KeyBinding(KeyInput.KEY_END, "End",
-                "step forward one recorded step (at the end: like N)",
-                this::stepForward));
-        keys.addShared(new KeyBinding(KeyInput.KEY_F6, "F6",
-                "drawn: interpolated <-> raw steps",
-                () -> {
-                    replay.toggleInterpolation();
-                    hudDirty = true;
-                }));
-    }
-
     /** @return the parameters' panel and kept shots (for tests of this package) */
     ParameterControls getParameterControls() {
         return parameterControls;
@@ -1700,7 +1638,7 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
-    private void relayOutPanel() {
+    void relayOutPanel() {
         if (presenting) {
             // The slide has no panel: the footer says where F2's panel is.
             hud.setFooter(buildPresentationFooter());
@@ -1709,7 +1647,8 @@ public abstract class DemoState extends BaseAppState {
         layOutAgain();
     }
 
-    private void toggleGraph() {
+    /** Show or hide the live graph, and lay out again for its slot. */
+    void toggleGraph() {
         ghosts.toggleGraph(hud.getLayout());
         layOutAgain();
     }
@@ -1739,17 +1678,14 @@ public abstract class DemoState extends BaseAppState {
         hudDirty = true;
     }
 
-    private void restartAndReframe() {
+    /** The R key and the panel's Reset: restart, and frame the camera afresh. */
+    void restartAndReframe() {
         restart();
         frameCamera();
     }
 
     private void singleStep() {
         run.singleStep();
-    }
-
-    private void scaleTime(float factor) {
-        run.scaleTime(factor);
     }
 
     private void frameCamera() {
@@ -1794,7 +1730,7 @@ public abstract class DemoState extends BaseAppState {
         creatingScene = false;
         sceneCreated = true;
         getParameters().start();
-        declareSharedKeys();
+        SharedKeys.declare(this, keys, run, scene, ghosts, hudWriter, parameterControls);
         declareKeys();
         for (int i = 0; i < parts.size(); ++i) {
             parts.get(i).declareKeys();
