@@ -11,8 +11,6 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import particlelab.physics.NonFiniteStepException;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
@@ -23,10 +21,7 @@ import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;
-import particlelab.world.Contact;
 import particlelab.world.ContactListener;
-import particlelab.world.Detection;
-import particlelab.world.ScriptedResponse;
 import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
 import particlelab.world.StateSlab;
@@ -110,8 +105,6 @@ public abstract class DemoState extends BaseAppState {
     public static final float HUD_BAND_KEEP_SECONDS = 2f;
     /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
-    /** Between the title and its note. */
-    private static final String TITLE_NOTE_GAP = "      ";
 
     private final String title;
     /** What the run tells the demo at fixed moments of a step and a reset. */
@@ -161,12 +154,12 @@ public abstract class DemoState extends BaseAppState {
                 // During a drag the camera holds still, so the grip stays under the mouse.
                 frameLaunches();
             }
-            hudDirty = true;
+            demoHud.markDirty();
         }
 
         @Override
         public void changed() {
-            hudDirty = true;
+            demoHud.markDirty();
         }
     };
     /** The run: clock, world, particles, restart, recovery, the replay ring (no jME). */
@@ -188,17 +181,8 @@ public abstract class DemoState extends BaseAppState {
     private final List<DemoPart> parts = new ArrayList<>();
     private final Replay replay = run.getReplay();
     private final Node sceneNode;
-    private final StringBuilder hudText = new StringBuilder(2048);
-    private final StringBuilder warningText = new StringBuilder(256);
-    private final StringBuilder titleText = new StringBuilder(64);
-    /** Presentation mode's slide, written every frame while presenting. */
-    private final Presentation presentation = new Presentation();
-    /** True in presentation mode: the scene large, the HUD reduced to the slide. */
-    private boolean presenting;
-    /** The demo's place in the catalogue, shown before the title (0: none). */
-    private int catalogNumber;
-    /** A short note after the title ({@link #setTitleNote}), or null. */
-    private String titleNote;
+    /** The HUD: title, body, band, layout, note and presentation mode. */
+    private final DemoHud demoHud;
     /** Scratch: a particle's launch position (m). */
     private final Vector3f launchPosition = new Vector3f();
     /** What the launches reach, for the camera to frame. */
@@ -211,26 +195,11 @@ public abstract class DemoState extends BaseAppState {
     private boolean sceneCreated;
     /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
     private boolean creatingScene;
-    private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
     private String helpText = "";
-    private float hudAgeSeconds;
-    /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
-    private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
-    private boolean hudDirty = true;
-    /** Lay the HUD out afresh at the next refresh: its note (a tour stop's lines) changed. */
-    private boolean hudAfresh;
-    /** How long the body has needed fewer lines than its band keeps (seconds of frame time). */
-    private float hudSlackSeconds;
-    /** Lines after the demo's own on the HUD (a tour stop's), or null. */
-    private HudNote note;
     /** An export asked for (key or button), for the application to carry out. */
     private boolean exportRequested;
-    /** The window size (pixels) and the user's HUD scale factor of the last layout. */
-    private int laidOutWidth;
-    private int laidOutHeight;
-    private float uiScale = 1f;
     private boolean parametersDeclared;
     /** The parameters' version the equations were written for. */
     private int equationsVersion;
@@ -249,7 +218,7 @@ public abstract class DemoState extends BaseAppState {
         this.title = title;
         this.sceneNode = new Node(title + " scene");
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
-        titleText.append(title);
+        this.demoHud = new DemoHud(this, title, scene, keys, parameterControls, warnings);
         hudWriter.setWarnings(warnings);
         hudWriter.setContactPause(contactPause);
         hudWriter.setGhosts(ghosts);
@@ -484,8 +453,8 @@ public abstract class DemoState extends BaseAppState {
      */
     protected void setViewTop(float topMetres) {
         scene.setFrameTop(topMetres);
-        if (hud != null) {
-            scene.layOut(hud.getLayout());
+        if (getHud() != null) {
+            scene.layOut(getHud().getLayout());
             if (isEnabled()) {
                 frameCamera();
             }
@@ -649,7 +618,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if the HUD is there
      */
     public boolean isHudAt(float screenX, float screenY) {
-        if (hud == null || hud.isHelpVisible()) {
+        if (getHud() == null || getHud().isHelpVisible()) {
             return true;
         }
         ScreenRect panel = parameterControls.getPanel().copyRect(new ScreenRect());
@@ -716,7 +685,7 @@ public abstract class DemoState extends BaseAppState {
         ghosts.restart(particle.index);
         frameLaunches();
         replay.stateChanged();
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -769,7 +738,7 @@ public abstract class DemoState extends BaseAppState {
         StringBuilder text = new StringBuilder();
         describeEquations(text);
         hudWriter.setEquations(text.toString());
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -798,8 +767,7 @@ public abstract class DemoState extends BaseAppState {
      * @param number the number (&ge;1)
      */
     public void setCatalogNumber(int number) {
-        catalogNumber = number;
-        showTitle();
+        demoHud.setCatalogNumber(number);
     }
 
     /**
@@ -814,8 +782,7 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("a title note must be null or one non-empty"
                     + " line, but was \"" + note + "\"");
         }
-        titleNote = note;
-        showTitle();
+        demoHud.setTitleNote(note);
     }
 
     /**
@@ -824,7 +791,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the note, or null if none
      */
     public String getTitleNote() {
-        return titleNote;
+        return demoHud.getTitleNote();
     }
 
     /**
@@ -837,6 +804,7 @@ public abstract class DemoState extends BaseAppState {
     public void setApplicationBindings(List<KeyBinding> bindings) {
         keys.setApplication(bindings);
         applicationBindings = new ArrayList<>(bindings);
+        demoHud.setApplicationBindings(bindings);
     }
 
     /**
@@ -945,7 +913,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live HUD (null before initialisation)
      */
     public HudView getHud() {
-        return hud;
+        return demoHud.getView();
     }
 
     /**
@@ -981,21 +949,7 @@ public abstract class DemoState extends BaseAppState {
      *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
      */
     public void layOut(int width, int height, float userScale) {
-        // A new size or factor sizes the body's band afresh: the lines the old width or text
-        // size needed mean nothing now (a band grown on a small window would stay grown).
-        boolean afresh = userScale != uiScale || width != laidOutWidth
-                || height != laidOutHeight;
-        HudScale.layOut(hud, width, height, userScale, afresh);
-        laidOutWidth = width;
-        laidOutHeight = height;
-        uiScale = userScale;
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
-        scene.updateViews();
-        if (isEnabled() && getApplication().getCamera().getWidth() == width
-                && getApplication().getCamera().getHeight() == height) {
-            frameCamera();
-        }
+        demoHud.layOut(width, height, userScale);
     }
 
     /**
@@ -1007,7 +961,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if {@link #layOut(int, int, float)} with these would change nothing
      */
     public boolean isLaidOutFor(int width, int height, float userScale) {
-        return width == laidOutWidth && height == laidOutHeight && userScale == uiScale;
+        return demoHud.isLaidOutFor(width, height, userScale);
     }
 
     /**
@@ -1071,7 +1025,7 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public ScreenRect copySceneRect(ScreenRect storeResult) {
-        return scene.copyDrawnRect(hud.getLayout().getScene(), storeResult);
+        return scene.copyDrawnRect(getHud().getLayout().getScene(), storeResult);
     }
 
     /**
@@ -1082,8 +1036,8 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
-        hud.copyTextRects(storeResult);
-        if (!hud.isHelpVisible()) {
+        getHud().copyTextRects(storeResult);
+        if (!getHud().isHelpVisible()) {
             scene.copyTextRects(storeResult);
             ghosts.copyTextRects(storeResult);
             if (!inspector.getRect().isEmpty()) {
@@ -1155,7 +1109,7 @@ public abstract class DemoState extends BaseAppState {
                     + (text == null ? "null" : "\"" + text + "\""));
         }
         hudWriter.showNotice(text);
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1179,7 +1133,7 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
                     + " >= 0, but was " + seconds);
         }
-        hudRefreshSeconds = seconds;
+        demoHud.setRefreshSeconds(seconds);
     }
 
     /**
@@ -1207,7 +1161,7 @@ public abstract class DemoState extends BaseAppState {
         world.getImpacts().clear();
         scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
         scene.updateViews();
-        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
+        ghosts.updateViews(getHud().getLayout(), getHud().isHelpVisible());
         warnings.age(tpf);
         hudWriter.age(tpf);
     }
@@ -1244,6 +1198,7 @@ public abstract class DemoState extends BaseAppState {
         ensureScene();
         hudWriter.write(storeResult, isSceneOver());
         writeOwnHudLines(storeResult);
+        HudNote note = demoHud.getNote();
         if (note != null) {
             int length = storeResult.length();
             if (length > 0 && storeResult.charAt(length - 1) != '\n') {
@@ -1265,18 +1220,12 @@ public abstract class DemoState extends BaseAppState {
      * @param on true for presentation mode
      */
     public void setPresenting(boolean on) {
-        if (on == presenting) {
-            return;
-        }
-        presenting = on;
-        if (hud != null) {
-            applyPresentation();
-        }
+        demoHud.setPresenting(on);
     }
 
     /** @return true in presentation mode */
     public boolean isPresenting() {
-        return presenting;
+        return demoHud.isPresenting();
     }
 
     /**
@@ -1287,9 +1236,10 @@ public abstract class DemoState extends BaseAppState {
      */
     public Presentation formatPresentation() {
         ensureScene();
-        presentation.clear();
-        writePresentation(presentation);
-        return presentation;
+        Presentation slide = demoHud.getSlide();
+        slide.clear();
+        writePresentation(slide);
+        return slide;
     }
 
     /**
@@ -1298,19 +1248,12 @@ public abstract class DemoState extends BaseAppState {
      * @param newNote writes the lines from the demo's numbers, or null for none
      */
     public void setNote(HudNote newNote) {
-        note = newNote;
-        hudDirty = true;
-        // Another stop's lines: the band is sized for them, not for the lines before.
-        hudAfresh = true;
-        if (hud != null && presenting) {
-            // On a tour stop the footer names the tour's keys too.
-            hud.setFooter(buildPresentationFooter());
-        }
+        demoHud.setNote(newNote);
     }
 
     /** @return the lines shown after the demo's own, or null if none */
     public HudNote getNote() {
-        return note;
+        return demoHud.getNote();
     }
 
     // ------------------------------------------ step back, replay, timeline (issue 21) ----
@@ -1327,7 +1270,7 @@ public abstract class DemoState extends BaseAppState {
         if (!done) {
             showNotice("no earlier step recorded (the ring starts at the last reset)");
         }
-        hudDirty = true;
+        demoHud.markDirty();
         return done;
     }
 
@@ -1340,7 +1283,7 @@ public abstract class DemoState extends BaseAppState {
         if (!replay.stepForward()) {
             singleStep();
         }
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1351,7 +1294,7 @@ public abstract class DemoState extends BaseAppState {
     public void scrubTo(double fraction) {
         ensureScene();
         replay.scrub(fraction);
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1381,7 +1324,7 @@ public abstract class DemoState extends BaseAppState {
     public void setInterpolating(boolean newInterpolating) {
         if (newInterpolating != replay.isInterpolating()) {
             replay.toggleInterpolation();
-            hudDirty = true;
+            demoHud.markDirty();
         }
     }
 
@@ -1434,11 +1377,8 @@ public abstract class DemoState extends BaseAppState {
         scene.build(assets, font, sceneNode);
         world.addStepListener(scene.getTrailWriter());
         ghosts.build(assets, font, sceneNode, world, scene);
-        hud = new HudView(assets, font, app.getCamera().getWidth(),
+        HudView hud = demoHud.build(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
-        laidOutWidth = app.getCamera().getWidth();
-        laidOutHeight = app.getCamera().getHeight();
-        hud.setTitle(titleText);
         inspector.build(assets, font);
         hud.getNode().attachChild(inspector.getNode());
         drags.setSphereRadius(scene.getSphereRadius());
@@ -1447,17 +1387,12 @@ public abstract class DemoState extends BaseAppState {
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
         buildPanel(app, font);
-        // The body's lines size the HUD's band, and the band the scene's area; on a small
-        // window the text shrinks first, then lines are hidden (HudScale, HudLayout).
-        hud.setBody(formatHud(hudText));
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
+        demoHud.layOutFirst();
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
         scene.updateViews();
-        if (presenting) {
-            applyPresentation();
+        if (demoHud.isPresenting()) {
+            demoHud.applyPresentation();
         }
     }
 
@@ -1470,24 +1405,24 @@ public abstract class DemoState extends BaseAppState {
     @Override
     protected void onEnable() {
         sceneRoot.attachChild(sceneNode);
-        guiRoot.attachChild(hud.getNode());
+        guiRoot.attachChild(getHud().getNode());
         guiRoot.attachChild(ghosts.getGraphNode());
         guiRoot.attachChild(parameterControls.getPanel().getNode());
         keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     @Override
     protected void onDisable() {
-        if (hud == null) {
+        if (getHud() == null) {
             // Cleaned up without having been initialised (another state failed first, and
             // jME tidies up every attached state): onEnable never ran, nothing to undo.
             return;
         }
         keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
-        hud.getNode().removeFromParent();
+        getHud().getNode().removeFromParent();
         ghosts.getGraphNode().removeFromParent();
         parameterControls.getPanel().getNode().removeFromParent();
     }
@@ -1500,110 +1435,14 @@ public abstract class DemoState extends BaseAppState {
             equationsVersion = getParameters().getVersion();
             refreshEquations();
         }
-        hudAgeSeconds += tpf;
-        if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
-            float sinceRefresh = hudAgeSeconds;
-            hudAgeSeconds = 0f;
-            hudDirty = false;
-            if (presenting) {
-                formatPresentation();
-                hud.setBody(presentation.getFormulas());
-                hud.setReadout(presentation.getReadout());
-            } else {
-                hud.setBody(formatHud(hudText));
-            }
-            hud.setWarning(warnings.format(warningText));
-            fitHudBand(sinceRefresh);
-        }
+        demoHud.update(tpf);
+        HudView hud = demoHud.getView();
         parameterControls.update(hud.getLayout());
         inspector.show(drags.getPicked());
         inspector.update(hud.getLayout(), hud.isHelpVisible());
     }
 
     // ---------------------------------------------------------------- private helpers ----
-
-    /**
-     * Keep the HUD's body band fitted to the body after a refresh. A body grown past its band
-     * is laid out again at the scale that suits the window, shrunk while the window cannot
-     * hold every line ({@link HudScale#layOut}), so lines are hidden only when even the
-     * smallest text does not fit. A new note, or a body needing fewer lines than the band for
-     * {@link #HUD_BAND_KEEP_SECONDS}, lays it out afresh: the band and the text size follow
-     * the body as it is now, not the most it ever needed. Allocates only when it lays out.
-     *
-     * @param sinceRefresh the frame time since the last refresh (in seconds, &ge;0)
-     */
-    private void fitHudBand(float sinceRefresh) {
-        boolean grew = hud.takeLayoutChange();
-        if (hud.getBodyLinesWrapped() < hud.getLayout().getBodyLinesNeeded()) {
-            hudSlackSeconds += sinceRefresh;
-        } else {
-            hudSlackSeconds = 0f;
-        }
-        boolean afresh = hudAfresh || hudSlackSeconds >= HUD_BAND_KEEP_SECONDS;
-        if (!grew && !afresh) {
-            return;
-        }
-        hudAfresh = false;
-        hudSlackSeconds = 0f;
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, afresh);
-        hud.takeLayoutChange();
-        // The band grew or shrank: the scene's area follows it.
-        scene.layOut(hud.getLayout());
-        frameCamera();
-    }
-
-    /**
-     * Lay the HUD out for the mode now chosen: presentation's slide or the full HUD, its
-     * footer, the scale that suits the window for it, and the scene for the new area.
-     */
-    private void applyPresentation() {
-        hud.setPresenting(presenting);
-        hud.setFooter(presenting ? buildPresentationFooter() : keys.buildFooter());
-        if (presenting) {
-            formatPresentation();
-            hud.setBody(presentation.getFormulas());
-            hud.setReadout(presentation.getReadout());
-        } else {
-            hud.setBody(formatHud(hudText));
-        }
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
-        scene.updateViews();
-        if (isEnabled()) {
-            frameCamera();
-        }
-        hudDirty = true;
-    }
-
-    /**
-     * Presentation mode's footer, one short line: the key back to the full HUD and, on a
-     * tour stop, the tour's keys (both the application's, found by their keys).
-     */
-    private String buildPresentationFooter() {
-        StringBuilder footer = new StringBuilder();
-        appendApplicationKey(footer, KeyInput.KEY_F8, "full HUD");
-        if (note != null) {
-            appendApplicationKey(footer, KeyInput.KEY_PGDN, "next stop");
-            appendApplicationKey(footer, KeyInput.KEY_PGUP, "previous stop");
-        }
-        if (parameterControls.isPanelVisible()) {
-            footer.append("     F2  panel open: it shows in the full HUD (F8)");
-        }
-        return footer.toString();
-    }
-
-    /** Append an application key's label and what it does here, if the application has it. */
-    private void appendApplicationKey(StringBuilder footer, int keyCode, String what) {
-        for (int i = 0; i < applicationBindings.size(); ++i) {
-            KeyBinding binding = applicationBindings.get(i);
-            if (binding.getKeyCode(0) == keyCode) {
-                footer.append(footer.length() == 0 ? "" : "     ")
-                        .append(binding.getKeyLabel()).append("  ").append(what);
-                return;
-            }
-        }
-    }
 
     /** @return the parameters' panel and kept shots (for tests of this package) */
     ParameterControls getParameterControls() {
@@ -1629,53 +1468,27 @@ public abstract class DemoState extends BaseAppState {
                 actions.add(() -> binding.press(0));
             }
         }
-        parameterControls.build(app, font, hud.getLayout(), particles, scene,
+        parameterControls.build(app, font, getHud().getLayout(), particles, scene,
                 scene.getSphereRadius(), sceneNode, labels, actions);
         equationsVersion = getParameters().getVersion();
         // The side panel's slot narrows the HUD's body: lay it out again.
-        hud.layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
-                hud.getLayout().getScale());
+        getHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
+                getHud().getLayout().getScale());
     }
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
     void relayOutPanel() {
-        if (presenting) {
-            // The slide has no panel: the footer says where F2's panel is.
-            hud.setFooter(buildPresentationFooter());
-        }
-        parameterControls.requestSlot(hud.getLayout());
-        layOutAgain();
+        demoHud.panelMoved();
     }
 
     /** Show or hide the live graph, and lay out again for its slot. */
     void toggleGraph() {
-        ghosts.toggleGraph(hud.getLayout());
-        layOutAgain();
-    }
-
-    /** The title line: the catalogue number, the title, and the note if there is one. */
-    private void showTitle() {
-        titleText.setLength(0);
-        if (catalogNumber > 0) {
-            titleText.append(catalogNumber).append(".  ");
-        }
-        titleText.append(title);
-        if (titleNote != null) {
-            titleText.append(TITLE_NOTE_GAP).append(titleNote);
-        }
-        if (hud != null) {
-            hud.setTitle(titleText);
-        }
-    }
-
-    /** After a slot came or went: the same window, at the user's HUD factor in use. */
-    private void layOutAgain() {
-        layOut(getApplication().getCamera().getWidth(),
-                getApplication().getCamera().getHeight(), uiScale);
+        ghosts.toggleGraph(getHud().getLayout());
+        demoHud.layOutAgain();
     }
 
     private void markHudDirty() {
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /** The R key and the panel's Reset: restart, and frame the camera afresh. */
@@ -1688,7 +1501,8 @@ public abstract class DemoState extends BaseAppState {
         run.singleStep();
     }
 
-    private void frameCamera() {
+    /** Frame the scene's region with the application's camera. */
+    void frameCamera() {
         scene.frame(getApplication().getCamera());
     }
 
@@ -1706,8 +1520,8 @@ public abstract class DemoState extends BaseAppState {
                 reach.include(particle, clock.getStepSeconds());
             }
         }
-        if (scene.frameReach(reach) && hud != null) {
-            scene.layOut(hud.getLayout());
+        if (scene.frameReach(reach) && getHud() != null) {
+            scene.layOut(getHud().getLayout());
             scene.updateViews();
             if (isEnabled()) {
                 frameCamera();
@@ -1718,8 +1532,8 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Declare the scene the first time anything needs it (the world, the particles, the HUD's
      * text or the window): the particles, then the parameters and the keys. So a new demo's
-     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views are built later, by {@link #initialize}, if a window
-     * comes.
+     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views
+     * are built later, by {@link #initialize}, if a window comes.
      */
     private void ensureScene() {
         if (sceneCreated || creatingScene) {

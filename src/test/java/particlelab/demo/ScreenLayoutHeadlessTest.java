@@ -106,7 +106,8 @@ class ScreenLayoutHeadlessTest {
                         aiming.update(H);
                         PlaneView plane = aiming.getPlaneView();
                         Vector3f p = bullet.getParticle().position;
-                        float radius = aiming.getView(bullet).getRadius() * plane.getPixelsPerMetre();
+                        float radius = aiming.getView(bullet).getRadius()
+                                * plane.getPixelsPerMetre();
                         ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
                                 plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
                         if (!area.contains(sphere)) {
@@ -196,7 +197,8 @@ class ScreenLayoutHeadlessTest {
             }
             for (int j = 0; j < particles.size(); ++j) {
                 Vector3f other = particles.get(j).getParticle().position;
-                float radius = demo.getView(particles.get(j)).getRadius() * plane.getPixelsPerMetre();
+                float radius = demo.getView(particles.get(j)).getRadius()
+                        * plane.getPixelsPerMetre();
                 ScreenRect sphere = new ScreenRect(plane.screenX(other.x) - radius,
                         plane.screenY(other.y) - radius, 2f * radius, 2f * radius);
                 if (j != i && label.intersects(sphere)) {
