@@ -1370,6 +1370,9 @@ public abstract class DemoState extends BaseAppState {
     protected void initialize(Application app) {
         ensureScene();
         buildViews(app);
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).buildViews(app);
+        }
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
