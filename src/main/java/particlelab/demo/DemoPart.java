@@ -1,5 +1,7 @@
 package particlelab.demo;
 
+import com.jme3.app.Application;
+
 /**
  * A piece of a demo with hooks of its own, such as the free-flight demos'
  * {@link ComparisonLane}: added once with {@link DemoState#addPart}, it is then called by the
@@ -37,6 +39,16 @@ public interface DemoPart {
      * the demo's {@code bindKey}. The default declares none.
      */
     default void declareKeys() {
+    }
+
+    /**
+     * Build the part's own views and attach them to the demo's scene node, after the demo's
+     * own ({@link DemoState#buildViews}). Called once, only in a window. The default builds
+     * none.
+     *
+     * @param app the application whose assets the views use (not null)
+     */
+    default void buildViews(Application app) {
     }
 
     /**

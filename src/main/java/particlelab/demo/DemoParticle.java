@@ -5,7 +5,6 @@ import com.jme3.math.Vector3f;
 import java.util.function.Consumer;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
-import particlelab.view.ParticleView;
 import particlelab.world.Body;
 import particlelab.world.StateSlab;
 
@@ -52,10 +51,12 @@ public final class DemoParticle {
     private float landingX = Float.NaN;
     private double landingSeconds = Double.NaN;
     private double flightSeconds;
-    /** Created by the base class at initialisation. */
-    ParticleView view;
+    /** The particle's place in its demo's list (0 for the first added). */
+    final int index;
 
-    DemoParticle(String label, ColorRGBA color, Body body, Consumer<DemoParticle> groundStop) {
+    DemoParticle(int index, String label, ColorRGBA color, Body body,
+            Consumer<DemoParticle> groundStop) {
+        this.index = index;
         this.label = label;
         this.groundStop = groundStop;
         this.color = color.clone();

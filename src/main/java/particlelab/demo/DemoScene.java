@@ -70,6 +70,8 @@ final class DemoScene {
     private static final float TRAIL_CLEARANCE = 3f;
 
     private final List<DemoParticle> particles;
+    /** Each particle's view, in the particles' order (empty until {@link #build}). */
+    private final List<ParticleView> views = new ArrayList<>();
     private final List<Marker> markers = new ArrayList<>();
     private float xMin = -2f;
     private float xMax = 22f;
@@ -151,8 +153,8 @@ final class DemoScene {
         public void afterStep(World stepping, float stepSeconds) {
             for (int i = 0; i < particles.size(); ++i) {
                 DemoParticle particle = particles.get(i);
-                if (particle.steppedThisStep && particle.view != null) {
-                    particle.view.getTrail().add(particle.getParticle().position);
+                if (particle.steppedThisStep && viewOf(particle) != null) {
+                    viewOf(particle).getTrail().add(particle.getParticle().position);
                 }
             }
         }
@@ -330,14 +332,15 @@ final class DemoScene {
         sceneNode.addLight(new AmbientLight(new ColorRGBA(0.45f, 0.45f, 0.5f, 1f)));
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
-            particle.view = new ParticleView(assets, font, particle.getLabel(),
+            ParticleView view = new ParticleView(assets, font, particle.getLabel(),
                     particle.getColor(), sphereRadius, TRAIL_POINTS);
-            particle.view.getTrail().add(particle.getParticle().position);
-            particle.view.getArrow().setVisible(arrowsVisible);
+            views.add(view);
+            view.getTrail().add(particle.getParticle().position);
+            view.getArrow().setVisible(arrowsVisible);
             // No arrow crosses the ground band's distance marks into the footer.
-            particle.view.getArrow().setFloor(0f);
-            particle.view.getTrail().setDotsVisible(dotsVisible);
-            sceneNode.attachChild(particle.view.getNode());
+            view.getArrow().setFloor(0f);
+            view.getTrail().setDotsVisible(dotsVisible);
+            sceneNode.attachChild(view.getNode());
         }
         int count = particles.size();
         labelWidths = new float[count];
@@ -409,7 +412,7 @@ final class DemoScene {
         trailHalfWidth = 0f;
         for (int i = 0; i < particles.size(); ++i) {
             trailHalfWidth = Math.max(trailHalfWidth, plane.getPixelsPerMetre()
-                    * particles.get(i).view.getTrail().getDrawnHalfWidth());
+                    * views.get(i).getTrail().getDrawnHalfWidth());
         }
         trailClearance = trailHalfWidth + TRAIL_CLEARANCE * hud.getScale();
         hudRects.clear();
@@ -507,7 +510,7 @@ final class DemoScene {
             DemoParticle particle = particles.get(i);
             // Drawn between the last two physics states (the replay's blend); the arrow is
             // the physics velocity.
-            particle.view.update(particle.getBody().copyDrawnPosition(drawBlend, drawn),
+            viewOf(particle).update(particle.getBody().copyDrawnPosition(drawBlend, drawn),
                     particle.getParticle().velocity);
         }
         if (laidOut) {
@@ -519,6 +522,38 @@ final class DemoScene {
     /** @return the particles' radius as drawn (in metres, &gt;0) */
     float getSphereRadius() {
         return sphereRadius;
+    }
+
+    /**
+     * Access a particle's view (its sphere, label, trail and arrow).
+     *
+     * @param particle one of the demo's particles (not null)
+     * @return the live view, or null before {@link #build}
+     */
+    ParticleView viewOf(DemoParticle particle) {
+        return views.isEmpty() ? null : views.get(particle.index);
+    }
+
+    /**
+     * Walk a particle's trail back one step, as a step undone by the replay.
+     *
+     * @param particle one of the demo's particles (not null)
+     */
+    void undoTrailStep(DemoParticle particle) {
+        if (!views.isEmpty()) {
+            viewOf(particle).getTrail().removeNewest();
+        }
+    }
+
+    /**
+     * Walk a particle's trail forward one step, as a step redone by the replay.
+     *
+     * @param particle one of the demo's particles (not null)
+     */
+    void redoTrailStep(DemoParticle particle) {
+        if (!views.isEmpty()) {
+            viewOf(particle).getTrail().add(particle.getParticle().position);
+        }
     }
 
     /**
@@ -594,7 +629,7 @@ final class DemoScene {
             }
         }
         for (int i = 0; i < particles.size(); ++i) {
-            storeResult.add(new ScreenRect().set(particles.get(i).view.getLabelRect()));
+            storeResult.add(new ScreenRect().set(viewOf(particles.get(i)).getLabelRect()));
         }
         return storeResult;
     }
@@ -616,9 +651,9 @@ final class DemoScene {
      * @param particle one of the demo's particles (not null, not modified)
      */
     void restartTrail(DemoParticle particle) {
-        if (particle.view != null) {
-            particle.view.getTrail().clear();
-            particle.view.getTrail().add(particle.getParticle().position);
+        if (viewOf(particle) != null) {
+            viewOf(particle).getTrail().clear();
+            viewOf(particle).getTrail().add(particle.getParticle().position);
         }
     }
 
@@ -630,10 +665,10 @@ final class DemoScene {
      * @param particle one of the demo's particles, already relabelled (not null)
      */
     void relabel(DemoParticle particle) {
-        if (particle.view == null) {
+        if (viewOf(particle) == null) {
             return;
         }
-        particle.view.setLabelText(particle.getLabel());
+        viewOf(particle).setLabelText(particle.getLabel());
         int index = particles.indexOf(particle);
         if (laidOut && index >= 0) {
             labelWidths[index] = measure.width(particle.getLabel(), labelSize);
@@ -646,8 +681,8 @@ final class DemoScene {
     void toggleArrows() {
         arrowsVisible = !arrowsVisible;
         for (int i = 0; i < particles.size(); ++i) {
-            if (particles.get(i).view != null) {
-                particles.get(i).view.getArrow().setVisible(arrowsVisible);
+            if (viewOf(particles.get(i)) != null) {
+                viewOf(particles.get(i)).getArrow().setVisible(arrowsVisible);
             }
         }
     }
@@ -658,8 +693,8 @@ final class DemoScene {
     void toggleDots() {
         dotsVisible = !dotsVisible;
         for (int i = 0; i < particles.size(); ++i) {
-            if (particles.get(i).view != null) {
-                particles.get(i).view.getTrail().setDotsVisible(dotsVisible);
+            if (viewOf(particles.get(i)) != null) {
+                viewOf(particles.get(i)).getTrail().setDotsVisible(dotsVisible);
             }
         }
     }
@@ -734,13 +769,13 @@ final class DemoScene {
         for (int i = 0; i < count; ++i) {
             Vector3f position = particles.get(i).getParticle().position;
             // A particle its demo hides (culled) covers nothing: NaN meets no slot.
-            boolean hidden = isHidden(particles.get(i).view);
+            boolean hidden = isHidden(viewOf(particles.get(i)));
             sphereX[i] = hidden ? Float.NaN : plane.screenX(position.x);
             sphereY[i] = hidden ? Float.NaN : plane.screenY(position.y);
         }
         float radius = sphereRadius * plane.getPixelsPerMetre();
         for (int i = 0; i < count; ++i) {
-            ParticleView view = particles.get(i).view;
+            ParticleView view = viewOf(particles.get(i));
             if (isHidden(view)) {
                 view.hideLabel();
                 continue;
@@ -827,7 +862,7 @@ final class DemoScene {
                 2f * (far + trailClearance), 2f * (far + trailClearance));
         nearCount = 0;
         for (int i = 0; i < particles.size(); ++i) {
-            Trail trail = particles.get(i).view.getTrail();
+            Trail trail = viewOf(particles.get(i)).getTrail();
             for (int age = 0; age < trail.size(); ++age) {
                 trail.copyPoint(age, trailPoint);
                 float x = plane.screenX(trailPoint.x);
@@ -877,7 +912,7 @@ final class DemoScene {
             }
         }
         for (int i = 0; i < self; ++i) {
-            if (particles.get(i).view.getLabelRect().intersects(place)) {
+            if (viewOf(particles.get(i)).getLabelRect().intersects(place)) {
                 score += TEXT_PENALTY;
             }
         }

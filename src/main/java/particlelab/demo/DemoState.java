@@ -11,8 +11,6 @@ import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import particlelab.physics.NonFiniteStepException;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
@@ -23,10 +21,7 @@ import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.world.Body;
-import particlelab.world.Contact;
 import particlelab.world.ContactListener;
-import particlelab.world.Detection;
-import particlelab.world.ScriptedResponse;
 import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
 import particlelab.world.StateSlab;
@@ -46,6 +41,8 @@ import particlelab.world.World;
  * demo plays in.</li>
  * <li>{@link #showExactGhosts()} (optional, in {@code createScene()}): each particle's exact
  * path beside it, readouts Euler against exact, and the live graph.</li>
+ * <li>{@link #buildViews(Application)} (optional): the demo's own views, beyond the
+ * particles (walls, curves, sounds), built only in a window, after {@code createScene()}.</li>
  * <li>{@link #declareKeys()}: call {@link #bindKey} for each key the demo adds.</li>
  * <li>{@link #declareParameters()}: call {@link #declareParameter} for each number the user
  * may change (the panel, its keys and {@code --set} are built from them).</li>
@@ -93,7 +90,7 @@ import particlelab.world.World;
 public abstract class DemoState extends BaseAppState {
 
     /** The frame time injected by the hitch key (in seconds). */
-    public static final float HITCH_SECONDS = 0.5f;
+    public static final float HITCH_SECONDS = DemoRun.HITCH_SECONDS;
     /**
      * How often the HUD text is rebuilt by default (in seconds of frame time): 0, every frame,
      * so the HUD's numbers are those of the picture they are drawn on.
@@ -108,149 +105,88 @@ public abstract class DemoState extends BaseAppState {
     public static final float HUD_BAND_KEEP_SECONDS = 2f;
     /** A slower HUD refresh a demo may choose ({@link #setHudRefreshSeconds}): 10 Hz (s). */
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
-    /** What the time scale keys multiply or divide by. */
-    private static final float TIME_SCALE_FACTOR = 2f;
-    /** Between the title and its note. */
-    private static final String TITLE_NOTE_GAP = "      ";
 
     private final String title;
-    private final SimulationClock clock = new SimulationClock();
-    private final World world = new World();
-    private final List<DemoParticle> particles = new ArrayList<>();
-    private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
-    private final DemoScene scene = new DemoScene(particles);
-    private final ExactGhosts ghosts = new ExactGhosts(particles);
-    private final DemoKeys keys = new DemoKeys();
-    private final KeyMappings keyMappings;
-    private final ParameterControls parameterControls = new ParameterControls();
-    private final HudWriter hudWriter = new HudWriter(clock, particles);
-    private final StepWarnings warnings = new StepWarnings(clock, this::markHudDirty);
-    /** Pause at the next contact the world resolves (its key, its HUD line). */
-    private final ContactPause contactPause = new ContactPause(clock, particles);
-    private final SimulationClock.Stepper stepper = this::stepWorld;
-    /** Simulations beside the world (a second world, a packed batch), stepped after it. */
-    private final List<SimulationClock.Stepper> simulations = new ArrayList<>();
-    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
-    private final List<DemoPart> parts = new ArrayList<>();
-    /** Where the energy goes (issue 32): every demo's first part, its world's ledger. */
-    private final EnergyPart energyPart = addPart(new EnergyPart());
-    /** Per frame: the wall time of the clock's steps (for the HUD and --profile). */
-    private final FrameTimes physicsTimes = new FrameTimes();
-    // ------------------------------------ the state ring: step back, replay, interpolation --
-    /** What a demo declared as its own state, and the simulations beside that have one. */
-    private final List<StateRecord> stateRecords = new ArrayList<>();
-    /**
-     * The demo's whole state, one ring entry: t and each particle's P and V first (what the
-     * export of the recorded span reads), then the world, each particle's own counters, the
-     * declared records in the order declared, and what the views show of the state: the
-     * exact ghosts (their paths, readouts and the graph's last sample) and how many shots
-     * were kept, so a step back shows them as they were at that step.
-     */
-    private final StateRecord wholeState = new StateRecord() {
+    /** What the run tells the demo at fixed moments of a step and a reset. */
+    private final DemoRun.Hooks runHooks = new DemoRun.Hooks() {
         @Override
-        public int countStateInts() {
-            int ints = 2 + particles.size() * (6 + DemoParticle.STATE_INTS)
-                    + world.countStateInts();
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                ints += stateRecords.get(i).countStateInts();
-            }
-            return ints + ghosts.countStateInts() + 1;
+        public void prepare() {
+            ensureScene();
         }
 
         @Override
-        public void writeState(StateSlab slab) {
-            slab.putDouble(world.getTimeSeconds());
-            for (int i = 0; i < particles.size(); ++i) {
-                slab.putVector(particles.get(i).getParticle().position);
-                slab.putVector(particles.get(i).getParticle().velocity);
-            }
-            world.writeState(slab);
-            for (int i = 0; i < particles.size(); ++i) {
-                particles.get(i).writeState(slab);
-            }
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                stateRecords.get(i).writeState(slab);
-            }
-            ghosts.writeState(slab);
-            slab.putInt(parameterControls.countKeptShots());
-        }
-
-        @Override
-        public void readState(StateSlab slab) {
-            slab.getDouble();
-            for (int i = 0; i < 6 * particles.size(); ++i) {
-                slab.getFloat();
-            }
-            world.readState(slab);
-            for (int i = 0; i < particles.size(); ++i) {
-                particles.get(i).readState(slab);
-            }
-            for (int i = 0; i < stateRecords.size(); ++i) {
-                stateRecords.get(i).readState(slab);
-            }
-            ghosts.readState(slab);
-            parameterControls.showKeptShotsUpTo(slab.getInt());
-        }
-    };
-    private final Replay replay = new Replay(new StateRing(), wholeState, clock, world,
-            particles);
-    private final StepListener stepListener = new StepListener() {
-        @Override
-        public void beforeStep(World stepping, float stepSeconds) {
-            contactPause.beforeStep();
+        public void beforeStep(float stepSeconds) {
             DemoState.this.beforeStep(stepSeconds);
             for (int i = 0; i < parts.size(); ++i) {
                 parts.get(i).beforeStep(stepSeconds);
             }
-            observeParticles(stepSeconds);
         }
 
         @Override
-        public void afterStep(World stepping, float stepSeconds) {
-            finishStep(stepSeconds);
+        public void afterStep(float stepSeconds) {
+            ghosts.afterStep(stepSeconds);
+            DemoState.this.afterStep(stepSeconds);
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).afterStep(stepSeconds);
+            }
         }
-    };
-    private final Node sceneNode;
-    private final StringBuilder hudText = new StringBuilder(2048);
-    private final StringBuilder warningText = new StringBuilder(256);
-    private final StringBuilder titleText = new StringBuilder(64);
-    /** Presentation mode's slide, written every frame while presenting. */
-    private final Presentation presentation = new Presentation();
-    /** True in presentation mode: the scene large, the HUD reduced to the slide. */
-    private boolean presenting;
-    /** The demo's place in the catalogue, shown before the title (0: none). */
-    private int catalogNumber;
-    /** A short note after the title ({@link #setTitleNote}), or null. */
-    private String titleNote;
-    /** Scratch: a particle's position before its step (m). */
-    private final Vector3f previousPosition = new Vector3f();
-    /** Scratch: a particle's velocity before its step (m/s). */
-    private final Vector3f previousVelocity = new Vector3f();
-    /** Scratch: a landed particle's step without the ground, for its export row. */
-    private final Particle freeStep = new Particle();
-    /**
-     * The lecture's stop at the ground, as a rule of the world: the plane y = 0, the swept
-     * test and the stick response, for the particles told to {@link DemoParticle#stopAtGround}
-     * (created with the first of them).
-     */
-    private SurfaceRule groundStop;
-    /** Tells a particle the ground stop landed it, with when in the step. */
-    private final ContactListener landings = new ContactListener() {
+
         @Override
-        public void resolved(Contact contact, World stepping) {
-            if (contact.getRule() != groundStop) {
-                return;
-            }
+        public void beforeRestart() {
+            parameterControls.beforeLaunch();
+        }
+
+        @Override
+        public void particlesRestarted() {
             for (int i = 0; i < particles.size(); ++i) {
-                DemoParticle particle = particles.get(i);
-                if (particle.getBody() == contact.getBodyA()) {
-                    particle.recordLanding(contact.getFraction(), currentStepSeconds);
-                }
+                scene.restartTrail(particles.get(i));
             }
+            ghosts.restartAll();
+        }
+
+        @Override
+        public void restarted() {
+            onRestart();
+            for (int i = 0; i < parts.size(); ++i) {
+                parts.get(i).onRestart();
+            }
+            if (!drags.isDragging()) {
+                // During a drag the camera holds still, so the grip stays under the mouse.
+                frameLaunches();
+            }
+            demoHud.markDirty();
+        }
+
+        @Override
+        public void changed() {
+            demoHud.markDirty();
         }
     };
-    /** h of the step under way (s). */
-    private float currentStepSeconds;
+    /** The run: clock, world, particles, restart, recovery, the replay ring (no jME). */
+    private final DemoRun run = new DemoRun(runHooks);
+    private final SimulationClock clock = run.getClock();
+    private final World world = run.getWorld();
+    private final List<DemoParticle> particles = run.getParticles();
+    private final DemoScene scene = new DemoScene(particles);
+    private final ExactGhosts ghosts = new ExactGhosts(particles);
+    private final DemoKeys keys = new DemoKeys();
+    private final KeyMappings keyMappings;
+    private final ParameterControls parameterControls =
+            new ParameterControls(run.getParameterValues());
+    private final HudWriter hudWriter = new HudWriter(clock, particles);
+    private final StepWarnings warnings = run.getWarnings();
+    /** Pause at the next contact the world resolves (its key, its HUD line). */
+    private final ContactPause contactPause = run.getContactPause();
+    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
+    private final List<DemoPart> parts = new ArrayList<>();
+    /** Where the energy goes (issue 32): every demo's first part, its world's ledger. */
+    private final EnergyPart energyPart = addPart(new EnergyPart());
+    private final Replay replay = run.getReplay();
+    private final Node sceneNode;
+    /** The HUD: title, body, band, layout, note and presentation mode. */
+    private final DemoHud demoHud;
+    /** Scratch: a particle's launch position (m). */
+    private final Vector3f launchPosition = new Vector3f();
     /** What the launches reach, for the camera to frame. */
     private final LaunchReach reach = new LaunchReach();
     /** The mouse on the bodies: the declared drags and the picked body; its inspector. */
@@ -261,30 +197,11 @@ public abstract class DemoState extends BaseAppState {
     private boolean sceneCreated;
     /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
     private boolean creatingScene;
-    private HudView hud;
     private Node guiRoot;
     private Node sceneRoot;
     private String helpText = "";
-    private float hudAgeSeconds;
-    /** How often the HUD text is rebuilt (in seconds of frame time, 0: every frame). */
-    private float hudRefreshSeconds = HUD_REFRESH_SECONDS;
-    private boolean hudDirty = true;
-    /** Lay the HUD out afresh at the next refresh: its note (a tour stop's lines) changed. */
-    private boolean hudAfresh;
-    /** How long the body has needed fewer lines than its band keeps (seconds of frame time). */
-    private float hudSlackSeconds;
-    /** Lines after the demo's own on the HUD (a tour stop's), or null. */
-    private HudNote note;
-    private float pendingHitchSeconds;
-    private int blowUps;
-    /** A restart asked for inside a step: done once the frame's steps are over. */
-    private boolean restartRequested;
     /** An export asked for (key or button), for the application to carry out. */
     private boolean exportRequested;
-    /** The window size (pixels) and the user's HUD scale factor of the last layout. */
-    private int laidOutWidth;
-    private int laidOutHeight;
-    private float uiScale = 1f;
     private boolean parametersDeclared;
     /** The parameters' version the equations were written for. */
     private int equationsVersion;
@@ -303,12 +220,38 @@ public abstract class DemoState extends BaseAppState {
         this.title = title;
         this.sceneNode = new Node(title + " scene");
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
-        titleText.append(title);
+        this.demoHud = new DemoHud(this, title, scene, keys, parameterControls, warnings);
         hudWriter.setWarnings(warnings);
         hudWriter.setContactPause(contactPause);
-        world.addStepListener(stepListener);
-        world.addContactListener(contactPause);
         hudWriter.setGhosts(ghosts);
+        run.addViewRecord(ghosts);
+        run.addViewRecord(new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putInt(parameterControls.countKeptShots());
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                parameterControls.showKeptShotsUpTo(slab.getInt());
+            }
+        });
+        replay.setTrails(new Replay.TrailWalk() {
+            @Override
+            public void undone(DemoParticle particle) {
+                scene.undoTrailStep(particle);
+            }
+
+            @Override
+            public void redone(DemoParticle particle) {
+                scene.redoTrailStep(particle);
+            }
+        });
         hudWriter.setReplay(replay);
         parameterControls.setReplay(replay);
     }
@@ -319,9 +262,20 @@ public abstract class DemoState extends BaseAppState {
      * Declare the particles ({@link #addParticle}) and the view ({@link #setView}). Called once,
      * the first time the world, the particles or the window need the scene: so a demo's
      * physics runs without jME. Create no jME object here (the views come from the
-     * declarations, later).
+     * declarations, later; a demo's own views from {@link #buildViews}).
      */
     protected abstract void createScene();
+
+    /**
+     * Build the demo's own views, those the shared ones do not draw (walls, curves, a point
+     * cloud, bodies beyond the particles, sounds), and attach them to {@link #getSceneNode()}.
+     * Called once, only in a window: at initialisation, after {@link #createScene()} and
+     * before the shared views (grid, posts, particles) are built. The default builds none.
+     *
+     * @param app the application whose assets, audio and camera the views use (not null)
+     */
+    protected void buildViews(Application app) {
+    }
 
     /**
      * Declare the demo's own keys with {@link #bindKey}. Called once, after
@@ -454,10 +408,7 @@ public abstract class DemoState extends BaseAppState {
         if (label == null || color == null || integrator == null) {
             throw new IllegalArgumentException("label, color and integrator must not be null");
         }
-        Body body = world.addBody(integrator, position, velocity, massKg, 0f);
-        DemoParticle particle = new DemoParticle(label, color, body, this::joinGroundStop);
-        particles.add(particle);
-        return particle;
+        return run.addParticle(label, color, position, velocity, massKg, integrator);
     }
 
     /**
@@ -504,8 +455,8 @@ public abstract class DemoState extends BaseAppState {
      */
     protected void setViewTop(float topMetres) {
         scene.setFrameTop(topMetres);
-        if (hud != null) {
-            scene.layOut(hud.getLayout());
+        if (getHud() != null) {
+            scene.layOut(getHud().getLayout());
             if (isEnabled()) {
                 frameCamera();
             }
@@ -563,7 +514,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live view, or null before the views are built (no window yet, or none)
      */
     public ParticleView getView(DemoParticle particle) {
-        return particle.view;
+        return scene.viewOf(particle);
     }
 
     /**
@@ -575,14 +526,7 @@ public abstract class DemoState extends BaseAppState {
      * @param simulation what takes each step (not null)
      */
     protected void addSimulation(SimulationClock.Stepper simulation) {
-        if (simulation == null) {
-            throw new IllegalArgumentException("simulation must be a stepper, but was null");
-        }
-        simulations.add(simulation);
-        if (simulation instanceof StateRecord) {
-            // A second world: its state goes into the ring with the demo's own.
-            stateRecords.add((StateRecord) simulation);
-        }
+        run.addSimulation(simulation);
     }
 
     /**
@@ -594,10 +538,7 @@ public abstract class DemoState extends BaseAppState {
      * @param record writes and reads the state (not null)
      */
     protected void addStateRecord(StateRecord record) {
-        if (record == null) {
-            throw new IllegalArgumentException("state record must not be null");
-        }
-        stateRecords.add(record);
+        run.addStateRecord(record);
     }
 
     /**
@@ -688,7 +629,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if the HUD is there
      */
     public boolean isHudAt(float screenX, float screenY) {
-        if (hud == null || hud.isHelpVisible()) {
+        if (getHud() == null || getHud().isHelpVisible()) {
             return true;
         }
         ScreenRect panel = parameterControls.getPanel().copyRect(new ScreenRect());
@@ -748,14 +689,14 @@ public abstract class DemoState extends BaseAppState {
      */
     protected void launch(DemoParticle particle, Vector3f velocity) {
         parameterControls.beforeLaunch();
-        particle.copyLaunchPosition(previousPosition);
-        particle.setLaunch(previousPosition, velocity);
+        particle.copyLaunchPosition(launchPosition);
+        particle.setLaunch(launchPosition, velocity);
         particle.restart();
         scene.restartTrail(particle);
-        ghosts.restart(particles.indexOf(particle));
+        ghosts.restart(particle.index);
         frameLaunches();
         replay.stateChanged();
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -808,7 +749,7 @@ public abstract class DemoState extends BaseAppState {
         StringBuilder text = new StringBuilder();
         describeEquations(text);
         hudWriter.setEquations(text.toString());
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -837,8 +778,7 @@ public abstract class DemoState extends BaseAppState {
      * @param number the number (&ge;1)
      */
     public void setCatalogNumber(int number) {
-        catalogNumber = number;
-        showTitle();
+        demoHud.setCatalogNumber(number);
     }
 
     /**
@@ -853,8 +793,7 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("a title note must be null or one non-empty"
                     + " line, but was \"" + note + "\"");
         }
-        titleNote = note;
-        showTitle();
+        demoHud.setTitleNote(note);
     }
 
     /**
@@ -863,7 +802,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the note, or null if none
      */
     public String getTitleNote() {
-        return titleNote;
+        return demoHud.getTitleNote();
     }
 
     /**
@@ -876,6 +815,7 @@ public abstract class DemoState extends BaseAppState {
     public void setApplicationBindings(List<KeyBinding> bindings) {
         keys.setApplication(bindings);
         applicationBindings = new ArrayList<>(bindings);
+        demoHud.setApplicationBindings(bindings);
     }
 
     /**
@@ -918,6 +858,17 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
+     * Access the demo's run: the clock, the world, the particles, restart and the replay
+     * ring, without jME (what a physics test steps).
+     *
+     * @return the live run (not null; its scene declared)
+     */
+    public DemoRun getRun() {
+        ensureScene();
+        return run;
+    }
+
+    /**
      * Access the stepping clock: pause, single step, time scale, raw tpf or fixed step.
      *
      * @return the live clock (not null)
@@ -933,7 +884,7 @@ public abstract class DemoState extends BaseAppState {
      */
     public List<DemoParticle> getParticles() {
         ensureScene();
-        return particlesView;
+        return particles;
     }
 
     /**
@@ -973,7 +924,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live HUD (null before initialisation)
      */
     public HudView getHud() {
-        return hud;
+        return demoHud.getView();
     }
 
     /**
@@ -1009,21 +960,7 @@ public abstract class DemoState extends BaseAppState {
      *     to {@link HudScale#MAX_FACTOR}; 1: the scale that suits the window)
      */
     public void layOut(int width, int height, float userScale) {
-        // A new size or factor sizes the body's band afresh: the lines the old width or text
-        // size needed mean nothing now (a band grown on a small window would stay grown).
-        boolean afresh = userScale != uiScale || width != laidOutWidth
-                || height != laidOutHeight;
-        HudScale.layOut(hud, width, height, userScale, afresh);
-        laidOutWidth = width;
-        laidOutHeight = height;
-        uiScale = userScale;
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
-        scene.updateViews();
-        if (isEnabled() && getApplication().getCamera().getWidth() == width
-                && getApplication().getCamera().getHeight() == height) {
-            frameCamera();
-        }
+        demoHud.layOut(width, height, userScale);
     }
 
     /**
@@ -1035,7 +972,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if {@link #layOut(int, int, float)} with these would change nothing
      */
     public boolean isLaidOutFor(int width, int height, float userScale) {
-        return width == laidOutWidth && height == laidOutHeight && userScale == uiScale;
+        return demoHud.isLaidOutFor(width, height, userScale);
     }
 
     /**
@@ -1099,7 +1036,7 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public ScreenRect copySceneRect(ScreenRect storeResult) {
-        return scene.copyDrawnRect(hud.getLayout().getScene(), storeResult);
+        return scene.copyDrawnRect(getHud().getLayout().getScene(), storeResult);
     }
 
     /**
@@ -1110,8 +1047,8 @@ public abstract class DemoState extends BaseAppState {
      * @return storeResult
      */
     public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
-        hud.copyTextRects(storeResult);
-        if (!hud.isHelpVisible()) {
+        getHud().copyTextRects(storeResult);
+        if (!getHud().isHelpVisible()) {
             scene.copyTextRects(storeResult);
             ghosts.copyTextRects(storeResult);
             if (!inspector.getRect().isEmpty()) {
@@ -1145,7 +1082,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the count (&ge;0)
      */
     public int countBlowUps() {
-        return blowUps;
+        return run.countBlowUps();
     }
 
     /**
@@ -1159,33 +1096,7 @@ public abstract class DemoState extends BaseAppState {
      * which allocates, and the camera reframed.
      */
     public void restart() {
-        ensureScene();
-        if (world.isStepping()) {
-            restartRequested = true;
-            return;
-        }
-        restartRequested = false;
-        parameterControls.beforeLaunch();
-        world.restart();
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            particle.restart();
-            scene.restartTrail(particle);
-        }
-        ghosts.restartAll();
-        clock.reset();
-        replay.clear();
-        warnings.clear();
-        contactPause.restart();
-        onRestart();
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).onRestart();
-        }
-        if (!drags.isDragging()) {
-            // During a drag the camera holds still, so the grip stays under the mouse.
-            frameLaunches();
-        }
-        hudDirty = true;
+        run.restart();
     }
 
     /**
@@ -1195,15 +1106,7 @@ public abstract class DemoState extends BaseAppState {
      * @return true if over
      */
     public boolean isSceneOver() {
-        if (particles.isEmpty()) {
-            return false;
-        }
-        for (int i = 0; i < particles.size(); ++i) {
-            if (!particles.get(i).hasLanded()) {
-                return false;
-            }
-        }
-        return true;
+        return run.isSceneOver();
     }
 
     /**
@@ -1217,7 +1120,7 @@ public abstract class DemoState extends BaseAppState {
                     + (text == null ? "null" : "\"" + text + "\""));
         }
         hudWriter.showNotice(text);
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1241,7 +1144,7 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
                     + " >= 0, but was " + seconds);
         }
-        hudRefreshSeconds = seconds;
+        demoHud.setRefreshSeconds(seconds);
     }
 
     /**
@@ -1249,8 +1152,7 @@ public abstract class DemoState extends BaseAppState {
      * mode that is one long Euler step; in fixed-step mode the clock clamps it.
      */
     public void injectHitch() {
-        pendingHitchSeconds = HITCH_SECONDS;
-        warnings.hitchInjected();
+        run.injectHitch();
     }
 
     /**
@@ -1270,7 +1172,7 @@ public abstract class DemoState extends BaseAppState {
         world.getImpacts().clear();
         scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
         scene.updateViews();
-        ghosts.updateViews(hud.getLayout(), hud.isHelpVisible());
+        ghosts.updateViews(getHud().getLayout(), getHud().isHelpVisible());
         warnings.age(tpf);
         hudWriter.age(tpf);
     }
@@ -1284,25 +1186,7 @@ public abstract class DemoState extends BaseAppState {
      * @param tpf the frame time (in seconds, finite, &ge;0)
      */
     public void advancePhysics(float tpf) {
-        ensureScene();
-        float frameSeconds = tpf;
-        if (pendingHitchSeconds > 0f) {
-            frameSeconds = pendingHitchSeconds;
-            pendingHitchSeconds = 0f;
-            warnings.hitchApplied(frameSeconds);
-        }
-        long physicsStart = System.nanoTime();
-        if (!isSceneOver()) {
-            try {
-                clock.advance(frameSeconds, stepper);
-            } catch (NonFiniteStepException blowUp) {
-                recoverFromBlowUp();
-            }
-            if (restartRequested) {
-                restart();
-            }
-        }
-        physicsTimes.record(System.nanoTime() - physicsStart);
+        run.advancePhysics(tpf);
     }
 
     /**
@@ -1312,7 +1196,7 @@ public abstract class DemoState extends BaseAppState {
      * @return the live record (not null)
      */
     public FrameTimes getPhysicsTimes() {
-        return physicsTimes;
+        return run.getPhysicsTimes();
     }
 
     /**
@@ -1325,6 +1209,7 @@ public abstract class DemoState extends BaseAppState {
         ensureScene();
         hudWriter.write(storeResult, isSceneOver());
         writeOwnHudLines(storeResult);
+        HudNote note = demoHud.getNote();
         if (note != null) {
             int length = storeResult.length();
             if (length > 0 && storeResult.charAt(length - 1) != '\n') {
@@ -1346,18 +1231,12 @@ public abstract class DemoState extends BaseAppState {
      * @param on true for presentation mode
      */
     public void setPresenting(boolean on) {
-        if (on == presenting) {
-            return;
-        }
-        presenting = on;
-        if (hud != null) {
-            applyPresentation();
-        }
+        demoHud.setPresenting(on);
     }
 
     /** @return true in presentation mode */
     public boolean isPresenting() {
-        return presenting;
+        return demoHud.isPresenting();
     }
 
     /**
@@ -1368,9 +1247,10 @@ public abstract class DemoState extends BaseAppState {
      */
     public Presentation formatPresentation() {
         ensureScene();
-        presentation.clear();
-        writePresentation(presentation);
-        return presentation;
+        Presentation slide = demoHud.getSlide();
+        slide.clear();
+        writePresentation(slide);
+        return slide;
     }
 
     /**
@@ -1379,19 +1259,12 @@ public abstract class DemoState extends BaseAppState {
      * @param newNote writes the lines from the demo's numbers, or null for none
      */
     public void setNote(HudNote newNote) {
-        note = newNote;
-        hudDirty = true;
-        // Another stop's lines: the band is sized for them, not for the lines before.
-        hudAfresh = true;
-        if (hud != null && presenting) {
-            // On a tour stop the footer names the tour's keys too.
-            hud.setFooter(buildPresentationFooter());
-        }
+        demoHud.setNote(newNote);
     }
 
     /** @return the lines shown after the demo's own, or null if none */
     public HudNote getNote() {
-        return note;
+        return demoHud.getNote();
     }
 
     // ------------------------------------------ step back, replay, timeline (issue 21) ----
@@ -1408,7 +1281,7 @@ public abstract class DemoState extends BaseAppState {
         if (!done) {
             showNotice("no earlier step recorded (the ring starts at the last reset)");
         }
-        hudDirty = true;
+        demoHud.markDirty();
         return done;
     }
 
@@ -1421,7 +1294,7 @@ public abstract class DemoState extends BaseAppState {
         if (!replay.stepForward()) {
             singleStep();
         }
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1432,7 +1305,7 @@ public abstract class DemoState extends BaseAppState {
     public void scrubTo(double fraction) {
         ensureScene();
         replay.scrub(fraction);
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     /**
@@ -1462,7 +1335,7 @@ public abstract class DemoState extends BaseAppState {
     public void setInterpolating(boolean newInterpolating) {
         if (newInterpolating != replay.isInterpolating()) {
             replay.toggleInterpolation();
-            hudDirty = true;
+            demoHud.markDirty();
         }
     }
 
@@ -1507,18 +1380,19 @@ public abstract class DemoState extends BaseAppState {
     @Override
     protected void initialize(Application app) {
         ensureScene();
+        buildViews(app);
+        for (int i = 0; i < parts.size(); ++i) {
+            parts.get(i).buildViews(app);
+        }
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
         frameLaunches();
         scene.build(assets, font, sceneNode);
         world.addStepListener(scene.getTrailWriter());
-        ghosts.build(assets, font, sceneNode, world);
-        hud = new HudView(assets, font, app.getCamera().getWidth(),
+        ghosts.build(assets, font, sceneNode, world, scene);
+        HudView hud = demoHud.build(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
-        laidOutWidth = app.getCamera().getWidth();
-        laidOutHeight = app.getCamera().getHeight();
-        hud.setTitle(titleText);
         inspector.build(assets, font);
         hud.getNode().attachChild(inspector.getNode());
         drags.setSphereRadius(scene.getSphereRadius());
@@ -1527,17 +1401,12 @@ public abstract class DemoState extends BaseAppState {
         helpText = keys.buildHelp(title);
         hud.setHelp(helpText);
         buildPanel(app, font);
-        // The body's lines size the HUD's band, and the band the scene's area; on a small
-        // window the text shrinks first, then lines are hidden (HudScale, HudLayout).
-        hud.setBody(formatHud(hudText));
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
+        demoHud.layOutFirst();
         sceneRoot = (Node) app.getViewPort().getScenes().get(0);
         guiRoot = (Node) app.getGuiViewPort().getScenes().get(0);
         scene.updateViews();
-        if (presenting) {
-            applyPresentation();
+        if (demoHud.isPresenting()) {
+            demoHud.applyPresentation();
         }
     }
 
@@ -1550,24 +1419,24 @@ public abstract class DemoState extends BaseAppState {
     @Override
     protected void onEnable() {
         sceneRoot.attachChild(sceneNode);
-        guiRoot.attachChild(hud.getNode());
+        guiRoot.attachChild(getHud().getNode());
         guiRoot.attachChild(ghosts.getGraphNode());
         guiRoot.attachChild(parameterControls.getPanel().getNode());
         keyMappings.map(getApplication().getInputManager(), getBindings());
         frameCamera();
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
     @Override
     protected void onDisable() {
-        if (hud == null) {
+        if (getHud() == null) {
             // Cleaned up without having been initialised (another state failed first, and
             // jME tidies up every attached state): onEnable never ran, nothing to undo.
             return;
         }
         keyMappings.unmap(getApplication().getInputManager());
         sceneNode.removeFromParent();
-        hud.getNode().removeFromParent();
+        getHud().getNode().removeFromParent();
         ghosts.getGraphNode().removeFromParent();
         parameterControls.getPanel().getNode().removeFromParent();
     }
@@ -1580,186 +1449,14 @@ public abstract class DemoState extends BaseAppState {
             equationsVersion = getParameters().getVersion();
             refreshEquations();
         }
-        hudAgeSeconds += tpf;
-        if (hudDirty || hudAgeSeconds >= hudRefreshSeconds) {
-            float sinceRefresh = hudAgeSeconds;
-            hudAgeSeconds = 0f;
-            hudDirty = false;
-            if (presenting) {
-                formatPresentation();
-                hud.setBody(presentation.getFormulas());
-                hud.setReadout(presentation.getReadout());
-            } else {
-                hud.setBody(formatHud(hudText));
-            }
-            hud.setWarning(warnings.format(warningText));
-            fitHudBand(sinceRefresh);
-        }
+        demoHud.update(tpf);
+        HudView hud = demoHud.getView();
         parameterControls.update(hud.getLayout());
         inspector.show(drags.getPicked());
         inspector.update(hud.getLayout(), hud.isHelpVisible());
     }
 
     // ---------------------------------------------------------------- private helpers ----
-
-    /**
-     * Keep the HUD's body band fitted to the body after a refresh. A body grown past its band
-     * is laid out again at the scale that suits the window, shrunk while the window cannot
-     * hold every line ({@link HudScale#layOut}), so lines are hidden only when even the
-     * smallest text does not fit. A new note, or a body needing fewer lines than the band for
-     * {@link #HUD_BAND_KEEP_SECONDS}, lays it out afresh: the band and the text size follow
-     * the body as it is now, not the most it ever needed. Allocates only when it lays out.
-     *
-     * @param sinceRefresh the frame time since the last refresh (in seconds, &ge;0)
-     */
-    private void fitHudBand(float sinceRefresh) {
-        boolean grew = hud.takeLayoutChange();
-        if (hud.getBodyLinesWrapped() < hud.getLayout().getBodyLinesNeeded()) {
-            hudSlackSeconds += sinceRefresh;
-        } else {
-            hudSlackSeconds = 0f;
-        }
-        boolean afresh = hudAfresh || hudSlackSeconds >= HUD_BAND_KEEP_SECONDS;
-        if (!grew && !afresh) {
-            return;
-        }
-        hudAfresh = false;
-        hudSlackSeconds = 0f;
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, afresh);
-        hud.takeLayoutChange();
-        // The band grew or shrank: the scene's area follows it.
-        scene.layOut(hud.getLayout());
-        frameCamera();
-    }
-
-    /**
-     * Lay the HUD out for the mode now chosen: presentation's slide or the full HUD, its
-     * footer, the scale that suits the window for it, and the scene for the new area.
-     */
-    private void applyPresentation() {
-        hud.setPresenting(presenting);
-        hud.setFooter(presenting ? buildPresentationFooter() : keys.buildFooter());
-        if (presenting) {
-            formatPresentation();
-            hud.setBody(presentation.getFormulas());
-            hud.setReadout(presentation.getReadout());
-        } else {
-            hud.setBody(formatHud(hudText));
-        }
-        HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
-        hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
-        scene.updateViews();
-        if (isEnabled()) {
-            frameCamera();
-        }
-        hudDirty = true;
-    }
-
-    /**
-     * Presentation mode's footer, one short line: the key back to the full HUD and, on a
-     * tour stop, the tour's keys (both the application's, found by their keys).
-     */
-    private String buildPresentationFooter() {
-        StringBuilder footer = new StringBuilder();
-        appendApplicationKey(footer, KeyInput.KEY_F8, "full HUD");
-        if (note != null) {
-            appendApplicationKey(footer, KeyInput.KEY_PGDN, "next stop");
-            appendApplicationKey(footer, KeyInput.KEY_PGUP, "previous stop");
-        }
-        if (parameterControls.isPanelVisible()) {
-            footer.append("     F2  panel open: it shows in the full HUD (F8)");
-        }
-        return footer.toString();
-    }
-
-    /** Append an application key's label and what it does here, if the application has it. */
-    private void appendApplicationKey(StringBuilder footer, int keyCode, String what) {
-        for (int i = 0; i < applicationBindings.size(); ++i) {
-            KeyBinding binding = applicationBindings.get(i);
-            if (binding.getKeyCode(0) == keyCode) {
-                footer.append(footer.length() == 0 ? "" : "     ")
-                        .append(binding.getKeyLabel()).append("  ").append(what);
-                return;
-            }
-        }
-    }
-
-    /**
-     * The controls every demo shares. The footer, the help and the HUD's key hints are all
-     * written from these bindings, so renaming a key here renames it everywhere.
-     */
-    private void declareSharedKeys() {
-        keys.addShared(new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
-                () -> hud.setHelpVisible(!hud.isHelpVisible())).withSummary("help"));
-        KeyBinding pause = keys.addShared(new KeyBinding(KeyInput.KEY_SPACE, "Space",
-                "pause / resume the simulation (the camera keeps moving)",
-                () -> clock.setPaused(!clock.isPaused())).withSummary("pause"));
-        KeyBinding step = keys.addShared(new KeyBinding(KeyInput.KEY_N, "N",
-                "single step of h (pauses first)", this::singleStep).withSummary("step"));
-        declareReplayKeys();
-        KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
-                "reset: launch again, reframe the camera", this::restartAndReframe)
-                .withSummary("reset"));
-        KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
-                "pause at the step that resolves the next contact (again: the one after;"
-                        + " while waiting: cancel)",
-                contactPause::press));
-        contactPause.setKeys(atContact, pause);
-        keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",
-                "stepping: raw tpf (the lecture's loop) <-> fixed step h", clock::toggleMode));
-        StringBuilder hitch = new StringBuilder("inject one ");
-        TextFormat.appendFixed(hitch, HITCH_SECONDS, 1).append(" s frame (a hitch)");
-        keys.addShared(new KeyBinding(KeyInput.KEY_K, "K", hitch.toString(), this::injectHitch));
-        StringBuilder up = new StringBuilder("time scale x2, up to ");
-        HudWriter.appendScale(up, SimulationClock.MAX_TIME_SCALE)
-                .append(" (the HUD shows the speed reached)");
-        KeyBinding faster = keys.addShared(new KeyBinding(
-                new int[] {KeyInput.KEY_EQUALS, KeyInput.KEY_ADD}, new String[] {"+", "keypad +"},
-                up.toString(), null, key -> scaleTime(TIME_SCALE_FACTOR)));
-        StringBuilder down = new StringBuilder("time scale /2, down to ");
-        HudWriter.appendScale(down, SimulationClock.MIN_TIME_SCALE);
-        KeyBinding slower = keys.addShared(new KeyBinding(
-                new int[] {KeyInput.KEY_MINUS, KeyInput.KEY_SUBTRACT},
-                new String[] {"-", "keypad -"}, down.toString(), null,
-                key -> scaleTime(1f / TIME_SCALE_FACTOR)));
-        KeyBinding realTime = keys.addShared(new KeyBinding(KeyInput.KEY_X, "X",
-                "time scale back to x1 (real time)", () -> clock.setTimeScale(1f)));
-        keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "show / hide velocity arrows",
-                scene::toggleArrows));
-        keys.addShared(new KeyBinding(KeyInput.KEY_U, "U",
-                "show / hide the step dots (one per step)",
-                scene::toggleDots));
-        if (ghosts.isEnabled()) {
-            keys.addShared(new KeyBinding(KeyInput.KEY_G, "G",
-                    "show / hide the exact ghosts (the continuous paths, faint)",
-                    ghosts::toggleGhosts));
-            keys.addShared(new KeyBinding(KeyInput.KEY_Y, "Y",
-                    "show / hide the live graph: height and speed against time",
-                    this::toggleGraph));
-        }
-        hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
-        parameterControls.declareKeys(keys, this::relayOutPanel);
-    }
-
-    /**
-     * The replay's keys: Home steps back one recorded step, End forward (a new step at the
-     * live end), F6 switches the interpolated drawing off and on.
-     */
-    private void declareReplayKeys() {
-        keys.addShared(new KeyBinding(KeyInput.KEY_HOME, "Home",
-                "step back one recorded step (pauses; Space goes on from there)",
-                this::stepBack));
-        keys.addShared(new KeyBinding(KeyInput.KEY_END, "End",
-                "step forward one recorded step (at the end: like N)",
-                this::stepForward));
-        keys.addShared(new KeyBinding(KeyInput.KEY_F6, "F6",
-                "drawn: interpolated <-> raw steps",
-                () -> {
-                    replay.toggleInterpolation();
-                    hudDirty = true;
-                }));
-    }
 
     /** @return the parameters' panel and kept shots (for tests of this package) */
     ParameterControls getParameterControls() {
@@ -1785,72 +1482,41 @@ public abstract class DemoState extends BaseAppState {
                 actions.add(() -> binding.press(0));
             }
         }
-        parameterControls.build(app, font, hud.getLayout(), particles,
+        parameterControls.build(app, font, getHud().getLayout(), particles, scene,
                 scene.getSphereRadius(), sceneNode, labels, actions);
         equationsVersion = getParameters().getVersion();
         // The side panel's slot narrows the HUD's body: lay it out again.
-        hud.layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
-                hud.getLayout().getScale());
+        getHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
+                getHud().getLayout().getScale());
     }
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
-    private void relayOutPanel() {
-        if (presenting) {
-            // The slide has no panel: the footer says where F2's panel is.
-            hud.setFooter(buildPresentationFooter());
-        }
-        parameterControls.requestSlot(hud.getLayout());
-        layOutAgain();
+    void relayOutPanel() {
+        demoHud.panelMoved();
     }
 
-    private void toggleGraph() {
-        ghosts.toggleGraph(hud.getLayout());
-        layOutAgain();
-    }
-
-    /** The title line: the catalogue number, the title, and the note if there is one. */
-    private void showTitle() {
-        titleText.setLength(0);
-        if (catalogNumber > 0) {
-            titleText.append(catalogNumber).append(".  ");
-        }
-        titleText.append(title);
-        if (titleNote != null) {
-            titleText.append(TITLE_NOTE_GAP).append(titleNote);
-        }
-        if (hud != null) {
-            hud.setTitle(titleText);
-        }
-    }
-
-    /** After a slot came or went: the same window, at the user's HUD factor in use. */
-    private void layOutAgain() {
-        layOut(getApplication().getCamera().getWidth(),
-                getApplication().getCamera().getHeight(), uiScale);
+    /** Show or hide the live graph, and lay out again for its slot. */
+    void toggleGraph() {
+        ghosts.toggleGraph(getHud().getLayout());
+        demoHud.layOutAgain();
     }
 
     private void markHudDirty() {
-        hudDirty = true;
+        demoHud.markDirty();
     }
 
-    private void restartAndReframe() {
+    /** The R key and the panel's Reset: restart, and frame the camera afresh. */
+    void restartAndReframe() {
         restart();
         frameCamera();
     }
 
     private void singleStep() {
-        clock.setPaused(true);
-        clock.requestSingleStep();
+        run.singleStep();
     }
 
-    private void scaleTime(float factor) {
-        float scale = clock.getTimeScale() * factor;
-        scale = Math.max(SimulationClock.MIN_TIME_SCALE,
-                Math.min(SimulationClock.MAX_TIME_SCALE, scale));
-        clock.setTimeScale(scale);
-    }
-
-    private void frameCamera() {
+    /** Frame the scene's region with the application's camera. */
+    void frameCamera() {
         scene.frame(getApplication().getCamera());
     }
 
@@ -1868,8 +1534,8 @@ public abstract class DemoState extends BaseAppState {
                 reach.include(particle, clock.getStepSeconds());
             }
         }
-        if (scene.frameReach(reach) && hud != null) {
-            scene.layOut(hud.getLayout());
+        if (scene.frameReach(reach) && getHud() != null) {
+            scene.layOut(getHud().getLayout());
             scene.updateViews();
             if (isEnabled()) {
                 frameCamera();
@@ -1878,95 +1544,10 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * One step of h of the world: the clock's stepper. After a restart was requested in this
-     * frame the remaining steps do nothing; the restart follows them.
-     */
-    private void stepWorld(float stepSeconds) {
-        if (restartRequested) {
-            return;
-        }
-        replay.beforeStep();
-        world.step(stepSeconds);
-        for (int i = 0; i < simulations.size(); ++i) {
-            simulations.get(i).step(stepSeconds);
-        }
-        if (!restartRequested) {
-            replay.afterStep(stepSeconds);
-        }
-    }
-
-    /** Before the world moves anything: which particles it steps, and what h does to them. */
-    private void observeParticles(float stepSeconds) {
-        warnings.beginStep(stepSeconds);
-        currentStepSeconds = stepSeconds;
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle demoParticle = particles.get(i);
-            demoParticle.landedThisStep = false;
-            demoParticle.steppedThisStep = !demoParticle.isHeld();
-            if (demoParticle.steppedThisStep) {
-                demoParticle.getRecord().begin(demoParticle.getParticle());
-                warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
-                        demoParticle.getParticle());
-            }
-        }
-    }
-
-    /**
-     * After the world's step: the export's rows, the stop at the ground, the demo's hook. The
-     * trails are the view's: {@link DemoScene}'s own listener writes them.
-     */
-    private void finishStep(float stepSeconds) {
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle demoParticle = particles.get(i);
-            if (!demoParticle.steppedThisStep) {
-                continue;
-            }
-            // The export's row: the stepped state, the landing step's as the Euler step left
-            // it below the ground (what `trajectory --until-ground` prints last).
-            demoParticle.getRecord().add(demoParticle.landedThisStep
-                    ? stepWithoutGround(demoParticle, stepSeconds)
-                    : demoParticle.getParticle(), stepSeconds);
-            demoParticle.countStep(stepSeconds);
-        }
-        ghosts.afterStep(stepSeconds);
-        afterStep(stepSeconds);
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).afterStep(stepSeconds);
-        }
-        warnings.endStep();
-    }
-
-    /**
-     * Put a particle under the world's ground stop rule, made with the first particle that
-     * stops at the ground.
-     */
-    private void joinGroundStop(DemoParticle particle) {
-        if (groundStop == null) {
-            groundStop = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
-            world.addRule(groundStop);
-            world.addContactListener(landings);
-        }
-        groundStop.limitTo(particle.getBody());
-    }
-
-    /**
-     * Redo a landed particle's last step without the ground: the same integrator from the same
-     * state, so the same bits the world's integration gave before the stick moved it.
-     */
-    private Particle stepWithoutGround(DemoParticle particle, float stepSeconds) {
-        Body body = particle.getBody();
-        freeStep.setMass(body.getMass());
-        freeStep.setState(body.copyPreviousPosition(previousPosition),
-                body.copyPreviousVelocity(previousVelocity));
-        particle.getIntegrator().step(freeStep, stepSeconds);
-        return freeStep;
-    }
-
-    /**
      * Declare the scene the first time anything needs it (the world, the particles, the HUD's
      * text or the window): the particles, then the parameters and the keys. So a new demo's
-     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views are built later, by {@link #initialize}, if a window
-     * comes.
+     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views
+     * are built later, by {@link #initialize}, if a window comes.
      */
     private void ensureScene() {
         if (sceneCreated || creatingScene) {
@@ -1977,7 +1558,7 @@ public abstract class DemoState extends BaseAppState {
         creatingScene = false;
         sceneCreated = true;
         getParameters().start();
-        declareSharedKeys();
+        SharedKeys.declare(this, keys, run, scene, ghosts, hudWriter, parameterControls);
         declareKeys();
         for (int i = 0; i < parts.size(); ++i) {
             parts.get(i).declareKeys();
@@ -1992,11 +1573,5 @@ public abstract class DemoState extends BaseAppState {
         if (sceneCreated) {
             onStepChanged(stepSeconds);
         }
-    }
-
-    private void recoverFromBlowUp() {
-        ++blowUps;
-        restart();
-        warnings.blewUp();
     }
 }

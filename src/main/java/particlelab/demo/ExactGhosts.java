@@ -148,8 +148,10 @@ final class ExactGhosts implements StateRecord {
      * @param sceneNode where the ghosts go (not null, modified)
      * @param world the demo's world, whose resolved contacts stop the ghosts (not null,
      *     a listener is added)
+     * @param scene the particles' views, built: the ghosts take their size (not null)
      */
-    void build(AssetManager assets, BitmapFont font, Node sceneNode, World world) {
+    void build(AssetManager assets, BitmapFont font, Node sceneNode, World world,
+            DemoScene scene) {
         if (!enabled) {
             return;
         }
@@ -177,7 +179,8 @@ final class ExactGhosts implements StateRecord {
             DemoParticle particle = particles.get(i);
             paths[i] = new ExactPath(particle.getPathIntegrator());
             views[i] = new GhostView(assets, particle.getLabel(), particle.getColor(),
-                    particle.view.getRadius(), particle.view.getTrail().getCapacity());
+                    scene.viewOf(particle).getRadius(),
+                    scene.viewOf(particle).getTrail().getCapacity());
             sceneNode.attachChild(views[i].getNode());
             colors[i] = particle.getColor();
         }

@@ -35,6 +35,8 @@ final class KeptShots {
     /** The values the shot in the air was launched with. */
     private final float[] launched;
     private List<DemoParticle> particles;
+    /** The scene whose particle views' trails are kept. */
+    private DemoScene scene;
     /** Ring index of the newest shot (-1: none). */
     private int newest = -1;
     private int count;
@@ -71,18 +73,20 @@ final class KeptShots {
      *
      * @param assets loads the material (not null)
      * @param demoParticles the demo's particles (not null, live)
+     * @param demoScene the scene holding their views, built (not null)
      * @param radiusMetres the particles' drawn radius (in metres, &gt;0)
      * @param sceneNode where to attach the paths (not null, modified)
      */
-    void build(AssetManager assets, List<DemoParticle> demoParticles, float radiusMetres,
-            Node sceneNode) {
+    void build(AssetManager assets, List<DemoParticle> demoParticles, DemoScene demoScene,
+            float radiusMetres, Node sceneNode) {
         particles = demoParticles;
+        scene = demoScene;
         int perShot = Math.min(MAX_PARTICLES, demoParticles.size());
         Material unshaded = new Material(assets, "Common/MatDefs/Misc/Unshaded.j3md");
         paths = new ShotTrail[SHOTS][perShot];
         for (int shot = 0; shot < SHOTS; ++shot) {
             for (int p = 0; p < perShot; ++p) {
-                Trail trail = demoParticles.get(p).view.getTrail();
+                Trail trail = demoScene.viewOf(demoParticles.get(p)).getTrail();
                 ShotTrail path = new ShotTrail("kept shot " + shot + " of "
                         + demoParticles.get(p).getLabel(), trail.getCapacity(),
                         WIDTH_FRACTION * radiusMetres, unshaded);
@@ -103,7 +107,7 @@ final class KeptShots {
         dropHidden();
         newest = (newest + 1) % SHOTS;
         for (int p = 0; p < paths[newest].length; ++p) {
-            paths[newest][p].copyFrom(particles.get(p).view.getTrail());
+            paths[newest][p].copyFrom(scene.viewOf(particles.get(p)).getTrail());
         }
         System.arraycopy(launched, 0, values[newest], 0, launched.length);
         count = Math.min(count + 1, SHOTS);
@@ -204,7 +208,7 @@ final class KeptShots {
 
     private boolean anyMoved() {
         for (int p = 0; p < paths[0].length; ++p) {
-            if (particles.get(p).view.getTrail().size() >= 2) {
+            if (scene.viewOf(particles.get(p)).getTrail().size() >= 2) {
                 return true;
             }
         }

@@ -26,7 +26,7 @@ final class ParameterControls {
     private static final float[] STEP_STOPS = {1f / 240f, 1f / 120f, 1f / 90f, 1f / 60f,
         1f / 45f, 1f / 30f, 1f / 20f, 1f / 15f, 1f / 10f, 1f / 5f};
 
-    private final DemoParameters parameters = new DemoParameters();
+    private final DemoParameters parameters;
     private final StringBuilder legend = new StringBuilder(512);
     private KeptShots keptShots;
     private ParameterPanel panel;
@@ -44,6 +44,15 @@ final class ParameterControls {
     /** The timeline's text, rebuilt only when what it says changed. */
     private final StringBuilder timelineText = new StringBuilder(128);
     private final StringBuilder timelineScratch = new StringBuilder(128);
+
+    /**
+     * Create the panel's controls of a demo's parameters.
+     *
+     * @param parameters the demo's parameters, whose values its run owns (not null)
+     */
+    ParameterControls(DemoParameters parameters) {
+        this.parameters = parameters;
+    }
 
     /**
      * Access the parameters.
@@ -102,16 +111,17 @@ final class ParameterControls {
      * @param font the HUD's font (not null)
      * @param layout the HUD's layout (not null, modified: the panel's width)
      * @param particles the demo's particles (not null, live)
+     * @param scene the scene holding their views, built (not null)
      * @param radiusMetres the particles' drawn radius (in metres, &gt;0)
      * @param sceneNode where the kept paths go (not null, modified)
      * @param labels the buttons' texts (not null)
      * @param actions what each button does (not null, one per label)
      */
     void build(Application app, BitmapFont font, HudLayout layout,
-            List<DemoParticle> particles, float radiusMetres, Node sceneNode,
-            List<String> labels, List<Runnable> actions) {
+            List<DemoParticle> particles, DemoScene scene, float radiusMetres,
+            Node sceneNode, List<String> labels, List<Runnable> actions) {
         keptShots = new KeptShots(parameters.size());
-        keptShots.build(app.getAssetManager(), particles, radiusMetres, sceneNode);
+        keptShots.build(app.getAssetManager(), particles, scene, radiusMetres, sceneNode);
         keptShots.launched(parameters);
         panel = new ParameterPanel(parameters, font, "Parameters  (F2 hides)", labels,
                 actions);

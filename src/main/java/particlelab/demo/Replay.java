@@ -3,7 +3,6 @@ package particlelab.demo;
 import java.util.List;
 import particlelab.physics.SimulationClock;
 import particlelab.view.TextFormat;
-import particlelab.view.Trail;
 import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
 import particlelab.world.StateSlab;
@@ -44,6 +43,25 @@ final class Replay {
     private float frameBlend = 1f;
     /** Bumped at every change the timeline shows (a step, a restore). */
     private int version;
+    /** The views' trails, walked with the steps shown (null: no views). */
+    private TrailWalk trails;
+
+    /** What the views do when a recorded step is undone or redone. */
+    interface TrailWalk {
+        /**
+         * Take the newest trail point of a particle the undone step moved.
+         *
+         * @param particle the particle (not null)
+         */
+        void undone(DemoParticle particle);
+
+        /**
+         * Add the position of a particle the redone step moved to its trail.
+         *
+         * @param particle the particle (not null)
+         */
+        void redone(DemoParticle particle);
+    }
 
     /**
      * Create the replay of a demo.
@@ -61,6 +79,15 @@ final class Replay {
         this.clock = clock;
         this.world = world;
         this.particles = particles;
+    }
+
+    /**
+     * Walk the views' trails with the steps shown from now on.
+     *
+     * @param walk the trails (not null)
+     */
+    void setTrails(TrailWalk walk) {
+        trails = walk;
     }
 
     /**
@@ -301,8 +328,8 @@ final class Replay {
             ring.restore(from, record);
             for (int i = 0; i < particles.size(); ++i) {
                 DemoParticle particle = particles.get(i);
-                if (particle.steppedThisStep && particle.view != null) {
-                    particle.view.getTrail().removeNewest();
+                if (particle.steppedThisStep && trails != null) {
+                    trails.undone(particle);
                 }
             }
             --from;
@@ -312,9 +339,9 @@ final class Replay {
             ring.restore(from, record);
             for (int i = 0; i < particles.size(); ++i) {
                 DemoParticle particle = particles.get(i);
-                if (particle.steppedThisStep && particle.view != null
+                if (particle.steppedThisStep && trails != null
                         && ring.getStepSeconds(from) > 0f) {
-                    particle.view.getTrail().add(particle.getParticle().position);
+                    trails.redone(particle);
                 }
             }
         }

@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
@@ -246,18 +247,6 @@ public final class AnyHeightDemo extends DemoState {
                 return true;
             }
         });
-        if (getApplication() != null) {
-            envelope = new CurveView(getApplication().getAssetManager(), "envelope",
-                    CURVE_POINTS, CURVE_WIDTH, ENVELOPE_COLOR);
-            low.curve = new CurveView(getApplication().getAssetManager(), "low parabola",
-                    CURVE_POINTS, CURVE_WIDTH, LOW_COLOR.clone().setAlpha(0.45f));
-            high.curve = new CurveView(getApplication().getAssetManager(), "high parabola",
-                    CURVE_POINTS, CURVE_WIDTH, HIGH_COLOR.clone().setAlpha(0.45f));
-            getSceneNode().attachChild(envelope.getGeometry());
-            getSceneNode().attachChild(low.curve.getGeometry());
-            getSceneNode().attachChild(high.curve.getGeometry());
-            drawEnvelope();
-        }
         addMarker("gun", 0f, GUN_HEIGHT, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         // The envelope's apex is s²/(2g) above the gun.
         float top = GUN_HEIGHT + LAUNCH_SPEED * LAUNCH_SPEED / (2f * GRAVITY);
@@ -267,6 +256,20 @@ public final class AnyHeightDemo extends DemoState {
         addStateRecord(shotState());
         placeTarget();
         fire();
+    }
+
+    @Override
+    protected void buildViews(Application app) {
+        envelope = new CurveView(app.getAssetManager(), "envelope", CURVE_POINTS, CURVE_WIDTH,
+                ENVELOPE_COLOR);
+        low.curve = new CurveView(app.getAssetManager(), "low parabola", CURVE_POINTS,
+                CURVE_WIDTH, LOW_COLOR.clone().setAlpha(0.45f));
+        high.curve = new CurveView(app.getAssetManager(), "high parabola", CURVE_POINTS,
+                CURVE_WIDTH, HIGH_COLOR.clone().setAlpha(0.45f));
+        getSceneNode().attachChild(envelope.getGeometry());
+        getSceneNode().attachChild(low.curve.getGeometry());
+        getSceneNode().attachChild(high.curve.getGeometry());
+        drawEnvelope();
     }
 
     @Override

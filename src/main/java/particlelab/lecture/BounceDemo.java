@@ -129,7 +129,8 @@ public final class BounceDemo extends DemoState {
     /** The lane whose apex table and last impact the HUD shows. */
     private Detection detection = Detection.SWEPT;
     private IdealBounce ideal = new IdealBounce(DROP_HEIGHT, START_E, Gravity.STANDARD_G);
-    private CollisionSounds sounds;
+    private CollisionSounds sounds =
+            new CollisionSounds(new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE));
     /** The height graph (null without a window). */
     private LiveGraph graph;
     /** Simulated time since the drop, the graph's time axis (in seconds). */
@@ -170,10 +171,13 @@ public final class BounceDemo extends DemoState {
         // The balls hit the ground at 6 m/s and more: their arrows would cross the ground's
         // labels and the footer (the HUD gives V; V shows the arrows).
         hideArrowsAtStart();
-        sounds = new CollisionSounds(getApplication() == null
-                ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
-                : SoundPlayer.forApplication(getApplication()));
         setView(-6f, 6f, DROP_HEIGHT + 2f * RADIUS + 0.5f, 0.5f, 2, RADIUS);
+    }
+
+    /** The bounces' sounds, in a window (silent without one). */
+    @Override
+    protected void buildViews(Application app) {
+        sounds = new CollisionSounds(SoundPlayer.forApplication(app));
     }
 
     @Override

@@ -286,22 +286,25 @@ public final class CollisionsDemo extends DemoState {
         for (Plane wall : walls) {
             world.addRule(new SurfaceRule("wall", wall, response, Detection.SWEPT));
         }
-        if (getApplication() != null) {
-            ColorRGBA grey = new ColorRGBA(0.6f, 0.6f, 0.65f, 1f);
-            float t = 0.05f;
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "left", X_MIN - t, 0f, X_MIN, Y_MAX, grey));
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "right", X_MAX, 0f, X_MAX + t, Y_MAX, grey));
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "top", X_MIN - t, Y_MAX, X_MAX + t, Y_MAX + t, grey));
-        }
         // The box, room beside its walls, and room above the top wall for the balls' labels.
         setView(X_MIN - WALL_ROOM, X_MAX + WALL_ROOM, VIEW_Y_MAX, 1f, 2, RADIUS);
         arrange();
         addStateRecord(impactState());
         addStateRecord(impulses);
         addStateRecord(paddleState());
+    }
+
+    /** The box's three walls above the ground. */
+    @Override
+    protected void buildViews(Application app) {
+        ColorRGBA grey = new ColorRGBA(0.6f, 0.6f, 0.65f, 1f);
+        float t = 0.05f;
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "left", X_MIN - t, 0f, X_MIN, Y_MAX, grey));
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "right", X_MAX, 0f, X_MAX + t, Y_MAX, grey));
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "top", X_MIN - t, Y_MAX, X_MAX + t, Y_MAX + t, grey));
     }
 
     @Override

@@ -323,33 +323,36 @@ public final class FastBulletsDemo extends DemoState {
         addMarker("gun", 0f, GUN_HEIGHT, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  r = " + TARGET_RADIUS + " m", DISTANCE, GUN_HEIGHT + TARGET_RADIUS,
                 TARGET_COLOR);
-        if (getApplication() != null) {
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "ray", 0f, GUN_HEIGHT - RAY_WIDTH / 2f, DISTANCE, GUN_HEIGHT
-                            + RAY_WIDTH / 2f, RAY_COLOR));
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "disc", DISTANCE, GUN_HEIGHT - TARGET_RADIUS, DISTANCE + DISC_THICKNESS,
-                    GUN_HEIGHT + TARGET_RADIUS, TARGET_COLOR));
-            impactMark = WallView.create(getApplication().getAssetManager(), "impact",
-                    -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f, MARK_SIZE / 2f,
-                    IMPACT_COLOR);
-            impactMark.setCullHint(Spatial.CullHint.Always);
-            getSceneNode().attachChild(impactMark);
-            ColorRGBA[] colors = {null, STRAIGHT_COLOR, CORRECTED_COLOR, null};
-            for (int w = 0; w < WAYS.length; ++w) {
-                if (colors[w] != null) {
-                    lineMarks[w] = WallView.create(getApplication().getAssetManager(),
-                            WAY_NAMES[w], -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f,
-                            MARK_SIZE / 2f, colors[w]);
-                    getSceneNode().attachChild(lineMarks[w]);
-                }
-            }
-        }
         impact.set(Float.NaN, Float.NaN, 0f);
         addStateRecord(shotState());
         setView(-3f, DISTANCE + 12f, GUN_HEIGHT + 4f, 2f, 5, 0.3f);
         hideArrowsAtStart();
         fire();
+    }
+
+    /** The ray, the target's disc, and the marks of the impact and the lines' crossings. */
+    @Override
+    protected void buildViews(Application app) {
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "ray", 0f, GUN_HEIGHT - RAY_WIDTH / 2f, DISTANCE, GUN_HEIGHT
+                        + RAY_WIDTH / 2f, RAY_COLOR));
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "disc", DISTANCE, GUN_HEIGHT - TARGET_RADIUS, DISTANCE + DISC_THICKNESS,
+                GUN_HEIGHT + TARGET_RADIUS, TARGET_COLOR));
+        impactMark = WallView.create(app.getAssetManager(), "impact",
+                -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f, MARK_SIZE / 2f,
+                IMPACT_COLOR);
+        impactMark.setCullHint(Spatial.CullHint.Always);
+        getSceneNode().attachChild(impactMark);
+        ColorRGBA[] colors = {null, STRAIGHT_COLOR, CORRECTED_COLOR, null};
+        for (int w = 0; w < WAYS.length; ++w) {
+            if (colors[w] != null) {
+                lineMarks[w] = WallView.create(app.getAssetManager(),
+                        WAY_NAMES[w], -MARK_SIZE / 2f, -MARK_SIZE / 2f, MARK_SIZE / 2f,
+                        MARK_SIZE / 2f, colors[w]);
+                getSceneNode().attachChild(lineMarks[w]);
+            }
+        }
     }
 
     @Override

@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
@@ -171,17 +172,20 @@ public final class FountainDemo extends DemoState {
         addStateRecord(countsState());
         waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
                 * Math.sqrt((double) Fountain.DEFAULT_PARTICLES / particleCount));
-        if (getApplication() != null) {
-            points = new PointCloudView(getApplication().getAssetManager(), "fountain",
-                    particleCount, POINT_SIZE_PIXELS, Fountain.REGION_TOP);
-            getSceneNode().attachChild(points.getGeometry());
-            meshUpdate = new FountainPoints(points.getPoints(), waterBrightness);
-        }
         setView(-Fountain.REGION_HALF_WIDTH + 2f, Fountain.REGION_HALF_WIDTH - 2f, 28f, 2f, 5,
                 0.3f);
         addMarker("nozzle", 0f, 0.4f, new ColorRGBA(0.4f, 0.6f, 1f, 1f));
         addMarker("shells", -Fountain.LAUNCHER_X, 0.6f, ColorRGBA.Orange);
         addMarker("shells", Fountain.LAUNCHER_X, 0.6f, ColorRGBA.Orange);
+    }
+
+    /** The pool drawn as one mesh of points. */
+    @Override
+    protected void buildViews(Application app) {
+        points = new PointCloudView(app.getAssetManager(), "fountain", particleCount,
+                POINT_SIZE_PIXELS, Fountain.REGION_TOP);
+        getSceneNode().attachChild(points.getGeometry());
+        meshUpdate = new FountainPoints(points.getPoints(), waterBrightness);
     }
 
     @Override

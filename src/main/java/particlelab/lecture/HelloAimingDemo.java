@@ -543,12 +543,6 @@ public final class HelloAimingDemo extends DemoState {
         // The slide's code runs in the world's steps, after the world has moved the recipe's
         // bullets: both see the same h (the raw tpf in raw mode).
         addSimulation(this::stepSlide);
-        if (getApplication() != null) {
-            slideMark = WallView.create(getApplication().getAssetManager(), "slide code",
-                    -SLIDE_MARK_SIZE / 2f, -SLIDE_MARK_SIZE / 2f, SLIDE_MARK_SIZE / 2f,
-                    SLIDE_MARK_SIZE / 2f, SLIDE_COLOR);
-            getSceneNode().attachChild(slideMark);
-        }
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
         // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
@@ -561,6 +555,15 @@ public final class HelloAimingDemo extends DemoState {
         showExactGhosts();
         frameArcs();
         addStateRecord(shotState());
+    }
+
+    /** The slide code's bullet, a square mark. */
+    @Override
+    protected void buildViews(Application app) {
+        slideMark = WallView.create(app.getAssetManager(), "slide code",
+                -SLIDE_MARK_SIZE / 2f, -SLIDE_MARK_SIZE / 2f, SLIDE_MARK_SIZE / 2f,
+                SLIDE_MARK_SIZE / 2f, SLIDE_COLOR);
+        getSceneNode().attachChild(slideMark);
     }
 
     @Override

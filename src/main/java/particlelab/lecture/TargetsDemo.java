@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.FastMath;
@@ -161,30 +162,42 @@ public final class TargetsDemo extends DemoState {
                 epilogue(contact, stepping);
             }
         });
-        SoundPlayer player = getApplication() == null
-                ? new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE)
-                : SoundPlayer.forApplication(getApplication());
-        sounds = new CollisionSounds(player);
+        // Silent until a window's buildViews gives the sounds a player.
+        sounds = new CollisionSounds(new SilentSoundPlayer(SoundPlayer.NO_AUDIO_DEVICE));
         sounds.attach(world);
-        if (getApplication() != null) {
-            views = new BodyViews(getApplication().getAssetManager(),
-                    TARGETS + MAX_FRAGMENTS + 1);
-            world.addBodyListener(views);
-            getSceneNode().attachChild(views.getNode());
-            views.show(platform, ColorRGBA.Gray);
-            paneView = WallView.create(getApplication().getAssetManager(), "pane",
-                    PANE_X - 0.05f, 0f, PANE_X + 0.05f, Y_MAX, PANE_GHOST);
-            getSceneNode().attachChild(paneView);
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "far", WALL_X, 0f, WALL_X + 0.1f, Y_MAX, ColorRGBA.Gray));
-            flash = WallView.create(getApplication().getAssetManager(), "flash", -0.3f, -0.3f,
-                    0.3f, 0.3f, ColorRGBA.Yellow);
-            flash.setCullHint(Spatial.CullHint.Always);
-            getSceneNode().attachChild(flash);
-        }
         spawnTargets();
         addStateRecord(targetState());
         setView(X_MIN, WALL_X + 1f, Y_MAX, 2f, 2, SHOT_RADIUS);
+    }
+
+    /**
+     * The bodies beyond the particles (the platform, the targets, later the fragments), the
+     * pane, the far wall, the flash, and the impacts' sounds.
+     */
+    @Override
+    protected void buildViews(Application app) {
+        World world = getWorld();
+        sounds.detach(world);
+        sounds = new CollisionSounds(SoundPlayer.forApplication(app));
+        sounds.attach(world);
+        views = new BodyViews(app.getAssetManager(), TARGETS + MAX_FRAGMENTS + 1);
+        world.addBodyListener(views);
+        getSceneNode().attachChild(views.getNode());
+        views.show(platform, ColorRGBA.Gray);
+        for (int i = 0; i < TARGETS; ++i) {
+            if (targets[i] != null) {
+                views.show(targets[i], TARGET_COLOR);
+            }
+        }
+        paneView = WallView.create(app.getAssetManager(), "pane",
+                PANE_X - 0.05f, 0f, PANE_X + 0.05f, Y_MAX, PANE_GHOST);
+        getSceneNode().attachChild(paneView);
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "far", WALL_X, 0f, WALL_X + 0.1f, Y_MAX, ColorRGBA.Gray));
+        flash = WallView.create(app.getAssetManager(), "flash", -0.3f, -0.3f,
+                0.3f, 0.3f, ColorRGBA.Yellow);
+        flash.setCullHint(Spatial.CullHint.Always);
+        getSceneNode().attachChild(flash);
     }
 
     @Override

@@ -1,5 +1,6 @@
 package particlelab.lecture;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
@@ -112,15 +113,18 @@ public final class TunnellingDemo extends DemoState {
                 hit(contact.getBodyA());
             }
         });
-        if (getApplication() != null) {
-            getSceneNode().attachChild(WallView.create(getApplication().getAssetManager(),
-                    "thin", WALL_X - THICKNESS / 2f, 0f, WALL_X + THICKNESS / 2f, 4f,
-                    new ColorRGBA(0.8f, 0.8f, 0.85f, 1f)));
-        }
         setView(-1f, 12f, 4.5f, 1f, 2, RADIUS);
         hideArrowsAtStart();
         addStateRecord(laneState());
         fire();
+    }
+
+    /** The thin wall. */
+    @Override
+    protected void buildViews(Application app) {
+        getSceneNode().attachChild(WallView.create(app.getAssetManager(),
+                "thin", WALL_X - THICKNESS / 2f, 0f, WALL_X + THICKNESS / 2f, 4f,
+                new ColorRGBA(0.8f, 0.8f, 0.85f, 1f)));
     }
 
     @Override

@@ -122,7 +122,7 @@ class DemoParametersTest {
 
     @Test
     void stepStopsAndTheirDisplay() {
-        ParameterControls controls = new ParameterControls();
+        ParameterControls controls = new ParameterControls(new DemoParameters());
         controls.declareShared(new particlelab.physics.SimulationClock()::setStepSeconds);
         DemoParameter h = controls.getParameters().get(0);
         assertEquals("h", h.getName());

@@ -1,9 +1,11 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.app.Application;
 import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
@@ -74,10 +76,22 @@ class DemoPartTest {
     }
 
     @Test
-    void afterFrameReachesEveryPartOnceAfterTheDemosOwn() throws Exception {
+    void theWindowsHooksReachEveryPartOnceAfterTheDemosOwn() throws Exception {
         List<String> log = new ArrayList<>();
         RecordingDemo demo = new RecordingDemo(log);
+        demo.advancePhysics(H);
+        assertFalse(log.contains("demo.buildViews"), "views built without a window: " + log);
         try (HeadlessHarness harness = HeadlessHarness.start(List.of(demo))) {
+            List<String> built = harness.call(() -> {
+                List<String> seen = new ArrayList<>();
+                for (String entry : log) {
+                    if (entry.endsWith("buildViews")) {
+                        seen.add(entry);
+                    }
+                }
+                return seen;
+            });
+            assertEquals(List.of("demo.buildViews", "a.buildViews", "b.buildViews"), built);
             List<String> frame = harness.call(() -> {
                 log.clear();
                 demo.advance(H);
@@ -156,6 +170,11 @@ class DemoPartTest {
         }
 
         @Override
+        protected void buildViews(Application app) {
+            log.add("demo.buildViews");
+        }
+
+        @Override
         protected void writeHudLines(StringBuilder text) {
             log.add("demo.writeHudLines");
             text.append("demo's line\n");
@@ -214,6 +233,11 @@ class DemoPartTest {
         @Override
         public void afterFrame() {
             log.add(name + ".afterFrame");
+        }
+
+        @Override
+        public void buildViews(Application app) {
+            log.add(name + ".buildViews");
         }
 
         @Override

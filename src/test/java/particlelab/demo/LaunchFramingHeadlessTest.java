@@ -80,7 +80,7 @@ class LaunchFramingHeadlessTest {
             demo.update(H);
             PlaneView plane = demo.getPlaneView();
             Vector3f p = ball.getParticle().position;
-            float radius = ball.view.getRadius() * plane.getPixelsPerMetre();
+            float radius = demo.getView(ball).getRadius() * plane.getPixelsPerMetre();
             ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
                     plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
             if (!area.contains(sphere)) {

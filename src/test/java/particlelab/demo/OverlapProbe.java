@@ -63,10 +63,10 @@ public final class OverlapProbe {
         List<String> sphereNames = new ArrayList<>();
         for (DemoParticle particle : particles) {
             Vector3f centre = particle.getParticle().position;
-            float radius = particle.view.getRadius() * plane.getPixelsPerMetre();
+            float radius = demo.getView(particle).getRadius() * plane.getPixelsPerMetre();
             float x = plane.screenX(centre.x);
             float y = plane.screenY(centre.y);
-            if (particle.view.getNode().getCullHint() != Spatial.CullHint.Always
+            if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
                     && scene.contains(x, y)) {
                 spheres.add(new ScreenRect(x - radius, y - radius, 2f * radius, 2f * radius));
                 sphereNames.add(particle.getLabel());
@@ -84,7 +84,7 @@ public final class OverlapProbe {
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
-            ScreenRect label = particle.view.getLabelRect();
+            ScreenRect label = demo.getView(particle).getLabelRect();
             if (label.isEmpty()) {
                 continue;
             }
@@ -96,7 +96,7 @@ public final class OverlapProbe {
             }
             // No trail as drawn (ribbon and step dots) under a label.
             for (DemoParticle other : particles) {
-                Trail trail = other.view.getTrail();
+                Trail trail = demo.getView(other).getTrail();
                 float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);

@@ -124,7 +124,7 @@ class PostLabelsHeadlessTest {
                 if (particle.isParked()) {
                     continue;
                 }
-                float radius = particle.view.getRadius() * plane.getPixelsPerMetre();
+                float radius = clip.getView(particle).getRadius() * plane.getPixelsPerMetre();
                 Vector3f centre = particle.getParticle().position;
                 // The sphere is drawn as a disc: the rectangle's point nearest its centre.
                 float x = plane.screenX(centre.x);
@@ -143,7 +143,7 @@ class PostLabelsHeadlessTest {
                 ScreenRect reach = new ScreenRect(name.getX() - halfWidth,
                         name.getY() - halfWidth, name.getWidth() + 2f * halfWidth,
                         name.getHeight() + 2f * halfWidth);
-                Trail trail = particle.view.getTrail();
+                Trail trail = clip.getView(particle).getTrail();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
                     if (reach.contains(plane.screenX(point.x), plane.screenY(point.y))) {

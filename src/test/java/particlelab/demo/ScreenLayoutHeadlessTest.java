@@ -106,7 +106,8 @@ class ScreenLayoutHeadlessTest {
                         aiming.update(H);
                         PlaneView plane = aiming.getPlaneView();
                         Vector3f p = bullet.getParticle().position;
-                        float radius = bullet.view.getRadius() * plane.getPixelsPerMetre();
+                        float radius = aiming.getView(bullet).getRadius()
+                                * plane.getPixelsPerMetre();
                         ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
                                 plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
                         if (!area.contains(sphere)) {
@@ -186,7 +187,7 @@ class ScreenLayoutHeadlessTest {
         List<ScreenRect> posts = demo.copyPostRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
-            ScreenRect label = particles.get(i).view.getLabelRect();
+            ScreenRect label = demo.getView(particles.get(i)).getLabelRect();
             for (int p = 0; p < posts.size(); ++p) {
                 if (label.intersects(posts.get(p))) {
                     problems.add(demo.getTitle() + " " + width + "x" + height + " frame "
@@ -196,7 +197,8 @@ class ScreenLayoutHeadlessTest {
             }
             for (int j = 0; j < particles.size(); ++j) {
                 Vector3f other = particles.get(j).getParticle().position;
-                float radius = particles.get(j).view.getRadius() * plane.getPixelsPerMetre();
+                float radius = demo.getView(particles.get(j)).getRadius()
+                        * plane.getPixelsPerMetre();
                 ScreenRect sphere = new ScreenRect(plane.screenX(other.x) - radius,
                         plane.screenY(other.y) - radius, 2f * radius, 2f * radius);
                 if (j != i && label.intersects(sphere)) {
@@ -204,7 +206,7 @@ class ScreenLayoutHeadlessTest {
                             + frame + ": label of " + particles.get(i).getLabel()
                             + " covers the sphere of " + particles.get(j).getLabel());
                 }
-                Trail trail = particles.get(j).view.getTrail();
+                Trail trail = demo.getView(particles.get(j)).getTrail();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
                     if (label.contains(plane.screenX(point.x), plane.screenY(point.y))) {
