@@ -154,21 +154,32 @@ class StudentLaneTest {
         // Linear drag: the slide's listing (force = −b·V, a = g + force/m, V + a·h, P + V·h)
         // and the solution (a = (−b·V)/m + g, V += h·a, P += h·V) are the same float
         // operations; jME's divide and divideLocal both multiply by 1/m.
-        DragDemo slide = new DragDemo();
-        DragDemo student = new DragDemo();
+        assertStudentLaneIsTheSlideLane(new DragDemo(), new DragDemo());
+    }
+
+    @Test
+    void withTheSolutionTheThrustsStudentLaneIsTheSlideLaneBitForBit() {
+        // Thrust: the slide adds velocity.normalize().mult(k) to −b·V, the solution adds
+        // normalizeLocal().multLocal(T) of a copy of V: the same float operations again.
+        assertStudentLaneIsTheSlideLane(new ThrustDemo(), new ThrustDemo());
+    }
+
+    private static void assertStudentLaneIsTheSlideLane(DemoState slide, DemoState student) {
+        ComparisonLane slideLane = laneOf(slide);
+        ComparisonLane studentLane = laneOf(student);
         choose(slide, ComparisonLane.Kind.SLIDE);
-        studentLane(student, student.getLane(), SOLUTION, GENEROUS_LIMIT_NANOS);
+        studentLane(student, studentLane, SOLUTION, GENEROUS_LIMIT_NANOS);
         int steps = 0;
-        while (!student.getLane().getParticle().hasLanded() && steps < MAX_STEPS) {
+        while (!studentLane.getParticle().hasLanded() && steps < MAX_STEPS) {
             slide.advancePhysics(H);
             student.advancePhysics(H);
             ++steps;
-            if (student.getLane().getParticle().hasLanded()) {
+            if (studentLane.getParticle().hasLanded()) {
                 break;
             }
-            Vector3f p = slide.getLane().getSlideCode().position;
-            Vector3f v = slide.getLane().getSlideCode().velocity;
-            MotionState state = student.getLane().getState();
+            Vector3f p = slideLane.getSlideCode().position;
+            Vector3f v = slideLane.getSlideCode().velocity;
+            MotionState state = studentLane.getState();
             for (int i = 0; i < 3; ++i) {
                 assertEquals(Float.floatToIntBits(p.get(i)),
                         Float.floatToIntBits((float) state.position[i]), "P at step " + steps);
@@ -177,6 +188,11 @@ class StudentLaneTest {
             }
         }
         assertTrue(steps > 90, "flew " + steps + " steps");
+    }
+
+    private static ComparisonLane laneOf(DemoState demo) {
+        return demo instanceof DragDemo ? ((DragDemo) demo).getLane()
+                : ((ThrustDemo) demo).getLane();
     }
 
     @Test
