@@ -95,7 +95,7 @@ public final class EnergyPart implements DemoPart {
         for (int i = 0; i <= EnergyLedger.NUMERICAL_COLUMN; ++i) {
             largest = Math.max(largest, Math.abs(ledger.getColumn(i)));
         }
-        text.append("energy (J): K + U + spring = start ");
+        text.append("energy (J, all bodies, U = 0 at y = 0): K + U + spring = start ");
         TextFormat.appendFixed(text, ledger.getStartJoules(), 2)
                 .append(" + thrust - drag - impacts + script + numerical\n");
         for (int i = 0; i <= EnergyLedger.NUMERICAL_COLUMN; ++i) {
