@@ -608,9 +608,11 @@ public final class TargetsDemo extends DemoState {
     /** The slide: the three stages of a contact; the score and the last impulse. */
     @Override
     protected void writePresentation(Presentation slide) {
-        slide.formula().append("1 prologue: ignore or flash   2 collision: impulse j");
-        TextFormat.appendFixed(slide.formula().append("e = "), RESTITUTION, 1)
-                .append("   3 epilogue: destroy, fragments, score");
+        // A phase a line's end never splits: the impulse and its e on the first line.
+        TextFormat.appendFixed(slide.formula()
+                .append("1 prologue: ignore or flash   2 collision: impulse j, e = "),
+                RESTITUTION, 1);
+        slide.formula().append("3 epilogue: destroy, fragments, score");
         StringBuilder readout = slide.readout().append("score ").append(score)
                 .append("   last collision ");
         if (resolutionImpulse == 0f) {

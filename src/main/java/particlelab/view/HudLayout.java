@@ -78,6 +78,8 @@ public final class HudLayout {
     /** The last help line when the window cannot hold the whole help. */
     public static final String HELP_CUT_LINE = "(window too small: more help hidden)";
     private static final String CONTINUATION = "    ";
+    /** Scratch for {@link #wrapLine}: a group moved down to the next line. */
+    private final StringBuilder spill = new StringBuilder(128);
     /** The longest word a wrap keeps with the number before it, as its unit (characters). */
     private static final int MAX_UNIT_CHARS = 5;
     /** The space above and below the body (in body line heights). */
@@ -884,6 +886,26 @@ public final class HudLayout {
             line.append(text, i, wordEnd);
             if (hasWord && measure.width(line, size) > maxWidth) {
                 line.setLength(kept);
+                // A line's groups stand three spaces apart ("2 collision: impulse j, e =
+                // 0.6"): break at the last such gap when the rest fits, so a group (a phase,
+                // a readout) moves down whole rather than split before its last word.
+                int gap = lastGroupGap(line);
+                if (gap > 0) {
+                    int rest = gap;
+                    while (line.charAt(rest) == ' ') {
+                        ++rest;
+                    }
+                    spill.setLength(0);
+                    spill.append(CONTINUATION).append(line, rest, kept).append(text, i, wordEnd);
+                    if (measure.width(spill, size) <= maxWidth) {
+                        line.setLength(gap);
+                        out.append(line).append('\n');
+                        line.setLength(0);
+                        line.append(spill);
+                        i = wordEnd;
+                        continue;
+                    }
+                }
                 out.append(line).append('\n');
                 line.setLength(0);
                 line.append(CONTINUATION).append(text, wordStart, wordEnd);
@@ -917,6 +939,35 @@ public final class HudLayout {
             }
         }
         return true;
+    }
+
+    /**
+     * Find where the last gap of three or more spaces after a word starts in a line.
+     *
+     * @param line the line so far (not null)
+     * @return the gap's first index, or -1 if the line has no such gap after a word
+     */
+    private static int lastGroupGap(CharSequence line) {
+        int end = line.length();
+        // the gap must end before the line does: trailing spaces are no group's gap
+        while (end > 0 && line.charAt(end - 1) == ' ') {
+            --end;
+        }
+        for (int i = end - 1; i >= 3; --i) {
+            if (line.charAt(i) == ' ' && line.charAt(i - 1) == ' ' && line.charAt(i - 2) == ' ') {
+                int start = i - 2;
+                while (start > 0 && line.charAt(start - 1) == ' ') {
+                    --start;
+                }
+                for (int k = 0; k < start; ++k) {
+                    if (line.charAt(k) != ' ') {
+                        return start;
+                    }
+                }
+                return -1;
+            }
+        }
+        return -1;
     }
 
     private static boolean hasWord(CharSequence line) {

@@ -258,6 +258,20 @@ class HudLayoutTest {
     }
 
     @Test
+    void wrapMovesAGroupDownWholeAtItsThreeSpaceGap() {
+        // Issue 29 §3: the targets slide's "2 collision: impulse j, e = 0.6" was split before
+        // its last words. 30 characters fit in 300 px at size 20.
+        HudLayout layout = new HudLayout(MONO);
+        assertEquals("1 prologue: ignore\n    2 collision: impulse j, e",
+                layout.wrap("1 prologue: ignore   2 collision: impulse j, e", 20f, 300f));
+        // Where the group would not fit on its own line either, the break stays at the word.
+        assertEquals("a   bc\n    defghijklmnopqrstuvwxyz12",
+                layout.wrap("a   bc defghijklmnopqrstuvwxyz12", 20f, 300f));
+        // Two spaces are no group gap; a line without a gap breaks at its words as before.
+        assertEquals("alpha  beta\n    gamma", layout.wrap("alpha  beta gamma", 20f, 120f));
+    }
+
+    @Test
     void scaleIsOneAtTheReferenceWindowAndGrowsWithIt() {
         assertEquals(1f, HudLayout.scaleFor(1280, 720), 0f);
         assertEquals(1.5f, HudLayout.scaleFor(1920, 1080), 0f);
