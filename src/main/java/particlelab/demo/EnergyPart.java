@@ -89,6 +89,10 @@ public final class EnergyPart implements DemoPart {
             text.append("energy ledger: from the first step\n");
             return;
         }
+        if (demo.getWorld().countBodies() == 0) {
+            text.append("energy ledger: none here: the demo's world has no bodies\n");
+            return;
+        }
         EnergyLedger ledger = energy.getLedger();
         int columns = energy.getColumns();
         double largest = Math.abs(ledger.getStartJoules());

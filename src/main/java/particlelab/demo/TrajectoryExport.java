@@ -126,9 +126,11 @@ public final class TrajectoryExport {
         List<StepTable> tables = new ArrayList<>();
         demo.collectExportTables(tables);
         // the energy ledger's columns per step (issue 32), once the demo has stepped; not
-        // while a recorded step is shown: the ledger is the live end's, not the state shown
+        // while a recorded step is shown: the ledger is the live end's, not the state shown;
+        // not where the world has no bodies (the fountain's points): a table of zeros would
+        // say its thousands of particles had no energy
         StepTable energy = demo.getEnergyPart().getTable();
-        if (energy != null && !demo.isReplaying()) {
+        if (energy != null && !demo.isReplaying() && demo.getWorld().countBodies() > 0) {
             tables.add(energy);
         }
         for (int i = 0; i < tables.size(); ++i) {

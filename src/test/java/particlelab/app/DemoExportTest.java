@@ -43,7 +43,9 @@ class DemoExportTest {
                 FRAME, "--export", folder.toString());
         assertEquals(0, demo.code, demo.toString());
         Path csv = folder.resolve("ball.csv");
-        assertEquals(List.of("csv " + csv + ": 123 rows"), demo.outLines());
+        // the ball's table and the energy ledger's (issue 32), a row for each of its rows
+        assertEquals(List.of("csv " + csv + ": 123 rows",
+                "csv " + folder.resolve("energy.csv") + ": 123 rows"), demo.outLines());
         assertEquals("", demo.err);
         // The pull demo's launch: P0 = 0, V0 = (10, 10, 0) m/s, m = 1 kg, gravity only; its
         // last row is the step that came down through y = 0.
@@ -78,7 +80,10 @@ class DemoExportTest {
     private static void assertDragFilesMatchTrajectory(CommandRun demo, Path folder,
             String step, String linearB, String quadraticC) throws IOException {
         assertEquals(0, demo.code, demo.toString());
-        assertEquals(3, demo.outLines().size(), demo.out);
+        // three balls' tables, then the energy ledger's (issue 32)
+        assertEquals(4, demo.outLines().size(), demo.out);
+        assertTrue(demo.outLines().get(3).startsWith("csv " + folder.resolve("energy.csv")),
+                demo.out);
         String[][] files = {
             {"gravity-only.csv"},
             {"linear-drag-f-b-v.csv", "--linear-drag", linearB},
@@ -113,7 +118,12 @@ class DemoExportTest {
             CommandRun run = CommandRun.of("demo", c[0], "--frames", "30", "--fixed-tpf",
                     FRAME, "--export", folder.toString());
             assertEquals(0, run.code, run.toString());
-            assertEquals(c.length - 2, run.outLines().size(), run.toString());
+            // each table named, and the energy ledger's where the demo's world has bodies
+            // (rotation's plates, iterate's shots; the fountain's points are no bodies)
+            boolean energy = !c[0].equals("fountain");
+            assertEquals(c.length - 2 + (energy ? 1 : 0), run.outLines().size(),
+                    run.toString());
+            assertEquals(energy, Files.exists(folder.resolve("energy.csv")), run.toString());
             for (int i = 2; i < c.length; ++i) {
                 List<String> lines = Files.readAllLines(folder.resolve(c[i]));
                 assertEquals(c[1], lines.get(0), c[i]);
@@ -128,10 +138,19 @@ class DemoExportTest {
                 }
             }
         }
+        // The racket records no table of its own: its plates' energy ledger (issue 32) is
+        // all it writes, one row per step and the start's.
         CommandRun racket = CommandRun.of("demo", "racket", "--frames", "3", "--export",
                 temp.resolve("racket").toString());
         assertEquals(0, racket.code, racket.toString());
-        assertEquals(List.of("csv: none; " + ExportRun.NOTHING_TO_EXPORT), racket.outLines());
+        assertEquals(1, racket.outLines().size(), racket.toString());
+        assertTrue(racket.outLines().get(0).startsWith("csv "
+                + temp.resolve("racket").resolve("energy.csv")), racket.toString());
+        // Before its first step (h = 1/5 s, one frame of 1/60 s) it has nothing: it says so.
+        CommandRun early = CommandRun.of("demo", "racket", "--set", "h=1/5", "--frames", "1",
+                "--fixed-tpf", FRAME, "--export", temp.resolve("early").toString());
+        assertEquals(0, early.code, early.toString());
+        assertEquals(List.of("csv: none; " + ExportRun.NOTHING_TO_EXPORT), early.outLines());
     }
 
     @Test

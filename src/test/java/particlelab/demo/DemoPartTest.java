@@ -40,8 +40,10 @@ class DemoPartTest {
         // the parts' parameters follow the demo's, in the order added
         int own = parameters.indexOf("own");
         assertTrue(own >= 0, "the demo's parameter is declared");
-        assertEquals(own + 1, parameters.indexOf("a"));
-        assertEquals(own + 2, parameters.indexOf("b"));
+        // every demo's first part is its energy ledger's (issue 32), then those it added
+        assertEquals(own + 1, parameters.indexOf(EnergyPart.PARAMETER));
+        assertEquals(own + 2, parameters.indexOf("a"));
+        assertEquals(own + 3, parameters.indexOf("b"));
 
         log.clear();
         demo.getWorld();

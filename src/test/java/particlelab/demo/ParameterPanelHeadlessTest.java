@@ -79,16 +79,19 @@ class ParameterPanelHeadlessTest {
 
     @Test
     void firstDemosDeclareTheirLaunchMassGravityAndCoefficients() throws Exception {
-        // The free-flight demos end with their comparison lane.
-        assertNames(UniformMotionDemo.class, "h", "speed", "angle", "lane");
-        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "lane");
-        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
+        // Each demo's own, then its parts': the energy ledger's switch (every demo's first
+        // part, issue 32), and the free-flight demos' comparison lane last.
+        assertNames(UniformMotionDemo.class, "h", "speed", "angle", "energy", "lane");
+        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "energy",
                 "lane");
-        assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "lane");
-        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code");
-        assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection");
-        assertNames(CollisionsDemo.class, "h", "e", "preset");
-        assertNames(WindDemo.class, "h", "w");
+        assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
+                "energy", "lane");
+        assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "energy",
+                "lane");
+        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code", "energy");
+        assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection", "energy");
+        assertNames(CollisionsDemo.class, "h", "e", "preset", "energy");
+        assertNames(WindDemo.class, "h", "w", "energy");
     }
 
     private static void assertNames(Class<? extends DemoState> type, String... names)
