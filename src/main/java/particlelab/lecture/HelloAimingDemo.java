@@ -101,6 +101,11 @@ public final class HelloAimingDemo extends DemoState {
      * with the student's.
      */
     private static final String[] FIRING_NAMES = {"lecture", "discrete", "both", "student"};
+    /**
+     * What L fires next, by {@link #FIRING_NAMES} index: from the default (both) the lecture's
+     * alone, the correction alone, then the student's beside both, and back to both.
+     */
+    private static final int[] NEXT_FIRING = {1, 3, 0, 2};
     /** The student bullet's colour: the comparison lane's green. */
     private static final ColorRGBA STUDENT_COLOR = new ColorRGBA(0.45f, 1f, 0.35f, 1f);
     /** Each aim's HUD line start, by {@link Aim} ordinal. */
@@ -594,7 +599,7 @@ public final class HelloAimingDemo extends DemoState {
         aimKey = bindKey(KeyInput.KEY_L, "L",
                 "next shot fires: both aims -> lecture formula -> discrete correction"
                         + " -> both and the student's aim",
-                () -> getParameters().set("aim", (firing + 1) % FIRING_NAMES.length));
+                () -> getParameters().set("aim", NEXT_FIRING[firing]));
         codeKey = bindKey(KeyInput.KEY_J, "J",
                 "next shot's code: shared recipe -> slide's listing -> both",
                 () -> getParameters().set("code", (code + 1) % CODE_NAMES.length));

@@ -84,11 +84,11 @@ class DemoPresetsTest {
 
     @Test
     void helloAimingAimsFiredMatchTheKeys() {
-        // Both aims by default; L adds the student's (the last choice, issue 31 §3), then
-        // fires the lecture's alone, then the correction alone.
-        assertSameState(HelloAimingDemo::new, new String[] {"L"}, "aim=student");
-        assertSameState(HelloAimingDemo::new, new String[] {"L", "L"}, "aim=lecture");
-        assertSameState(HelloAimingDemo::new, new String[] {"L", "L", "L"}, "aim=discrete");
+        // Both aims by default; L fires the lecture's alone, then the correction alone, then
+        // both with the student's (the last choice, issue 31 §3).
+        assertSameState(HelloAimingDemo::new, new String[] {"L"}, "aim=lecture");
+        assertSameState(HelloAimingDemo::new, new String[] {"L", "L"}, "aim=discrete");
+        assertSameState(HelloAimingDemo::new, new String[] {"L", "L", "L"}, "aim=student");
     }
 
     @Test
