@@ -363,10 +363,12 @@ public final class LectureTour {
 
     private static void watchRacket(DemoState demo, StringBuilder text) {
         TennisRacketDemo racket = (TennisRacketDemo) demo;
-        text.append(WATCH).append("spin about the middle axis flips: explicit Euler ")
-                .append(racket.countFlips(0)).append(" flips, implicit midpoint ")
+        // Degrees, as the demo's own line above says it: one unit for one angle on screen.
+        text.append(WATCH).append("spin about the middle axis flips; flips so far: explicit"
+                + " Euler ").append(racket.countFlips(0)).append(", implicit midpoint ")
                 .append(racket.countFlips(1)).append("; the plates are ");
-        TextFormat.appendFixed(text, racket.angleBetweenRadians(), 2).append(" rad apart\n");
+        TextFormat.appendFixed(text, Math.toDegrees(racket.angleBetweenRadians()), 1)
+                .append("° apart\n");
     }
 
     private static void watchCoarseFall(DemoState demo, StringBuilder text) {

@@ -128,13 +128,13 @@ public final class GravitationalPullDemo extends DemoState {
         DemoParameter.appendShort(text, shownVelocity.y, 2).append(", 0) m/s:  lands Vx·T = ");
         // The continuous parabola from the launch shown, at its height y0 (a drag can raise
         // it) and any angle: it comes down at T = (Vy + √(Vy² + 2·g·y0))/g, which is 2·Vy/g
-        // from the ground, and Vx·T on. The launch stays at or above the ground (y0 ≥ 0).
+        // from the ground, and Vx·T downrange. The launch stays at or above the ground (y0 ≥ 0).
         ball.copyLaunchPosition(shownPosition);
         double vy = shownVelocity.y;
         double flightSeconds = (vy + Math.sqrt(vy * vy + 2.0 * g * Math.max(0f,
                 shownPosition.y))) / g;
         TextFormat.appendFixed(text, shownVelocity.x * flightSeconds, 2)
-                .append(" m on at T = ");
+                .append(" m downrange at T = ");
         TextFormat.appendFixed(text, flightSeconds, 2)
                 .append(" s (continuous; T = (Vy + √(Vy² + 2·g·y0))/g)\n");
     }

@@ -42,7 +42,7 @@ class PullLandingLineTest {
                 }
             }
             StringBuilder line = new StringBuilder("lands Vx·T = ");
-            TextFormat.appendFixed(line, velocity.x * low, 2).append(" m on at T = ");
+            TextFormat.appendFixed(line, velocity.x * low, 2).append(" m downrange at T = ");
             TextFormat.appendFixed(line, low, 2).append(" s");
             assertTrue(equations.toString().contains(line), line + " in\n" + equations);
         }
