@@ -64,6 +64,28 @@ final class Charts {
     /**
      * Add a line with markers in the style of slot {@code style} (one per stepper).
      */
+    /**
+     * A horizontal bar at height y from x = low to x = high, in a style's colour, with no
+     * marker and no legend entry: a spread drawn through a point of a line.
+     *
+     * @param chart the chart (not null, modified)
+     * @param name the series' name (unique in the chart)
+     * @param low the bar's left end
+     * @param high its right end
+     * @param y its height
+     * @param style the style index of the line it belongs to
+     * @return the new series
+     */
+    static XYSeries horizontalBar(XYChart chart, String name, double low, double high, double y,
+            int style) {
+        XYSeries series = chart.addSeries(name, new double[] {low, high}, new double[] {y, y});
+        series.setLineColor(COLOURS[style % COLOURS.length]);
+        series.setMarker(SeriesMarkers.NONE);
+        series.setLineStyle(new BasicStroke(1.5f));
+        series.setShowInLegend(false);
+        return series;
+    }
+
     static XYSeries line(XYChart chart, String name, double[] x, double[] y, int style) {
         XYSeries series = chart.addSeries(name, x, y);
         series.setLineColor(COLOURS[style % COLOURS.length]);

@@ -190,32 +190,58 @@ public final class SpeedVsErrorReport {
 
     // ---- plots --------------------------------------------------------------------------------
 
+    /**
+     * One case's work-precision chart: a line per stepper through its points (median cost per
+     * simulated second, error), and through each point a horizontal bar from the cost of the
+     * cheapest round to that of the dearest (no legend entry, the line's colour).
+     *
+     * @param scene the case (not null)
+     * @param points every case's points (not null, not modified)
+     * @return a new chart
+     */
+    static XYChart workPrecisionChart(CanonicalCase scene, List<WorkPrecisionStudy.Point> points) {
+        XYChart chart = Charts.create("Work vs precision: " + scene.label(),
+                "cost (ns per simulated second)", "position error after "
+                        + (int) CanonicalCase.DURATION_SECONDS + " s (m)", true, true);
+        for (Scheme scheme : Scheme.values()) {
+            List<WorkPrecisionStudy.Point> line = new ArrayList<>();
+            for (WorkPrecisionStudy.Point p : points) {
+                if (p.scene == scene && p.scheme == scheme) {
+                    line.add(p);
+                }
+            }
+            if (line.isEmpty()) {
+                continue;
+            }
+            double[] cost = new double[line.size()];
+            double[] error = Charts.floored(errors(line));
+            for (int i = 0; i < cost.length; ++i) {
+                cost[i] = line.get(i).nanosPerSimulatedSecond();
+            }
+            Charts.line(chart, scheme.shortLabel(), cost, error, scheme.ordinal());
+            for (int i = 0; i < cost.length; ++i) {
+                WorkPrecisionStudy.Point p = line.get(i);
+                Charts.horizontalBar(chart, scheme.shortLabel() + " spread " + i,
+                        p.minNanosPerSimulatedSecond(), p.maxNanosPerSimulatedSecond(),
+                        error[i], scheme.ordinal());
+            }
+        }
+        return chart;
+    }
+
+    private static double[] errors(List<WorkPrecisionStudy.Point> line) {
+        double[] error = new double[line.size()];
+        for (int i = 0; i < error.length; ++i) {
+            error[i] = line.get(i).errorMetres;
+        }
+        return error;
+    }
+
     private void writePlots(WorkPrecisionStudy precision, StabilityStudy stability,
             BenchmarkTable benchmarks, AimingStudy aiming) throws IOException {
         List<XYChart> grid = new ArrayList<>();
         for (CanonicalCase scene : CanonicalCase.all()) {
-            XYChart chart = Charts.create("Work vs precision: " + scene.label(),
-                    "cost (ns per simulated second)", "position error after "
-                            + (int) CanonicalCase.DURATION_SECONDS + " s (m)", true, true);
-            for (Scheme scheme : Scheme.values()) {
-                List<WorkPrecisionStudy.Point> line = new ArrayList<>();
-                for (WorkPrecisionStudy.Point p : precision.points) {
-                    if (p.scene == scene && p.scheme == scheme) {
-                        line.add(p);
-                    }
-                }
-                if (line.isEmpty()) {
-                    continue;
-                }
-                double[] cost = new double[line.size()];
-                double[] error = new double[line.size()];
-                for (int i = 0; i < cost.length; ++i) {
-                    cost[i] = line.get(i).nanosPerSimulatedSecond();
-                    error[i] = line.get(i).errorMetres;
-                }
-                Charts.line(chart, scheme.shortLabel(), cost, Charts.floored(error),
-                        scheme.ordinal());
-            }
+            XYChart chart = workPrecisionChart(scene, precision.points);
             Charts.save(chart, folder.resolve(workPrecisionPlot(scene)));
             grid.add(chart);
         }
@@ -397,7 +423,9 @@ public final class SpeedVsErrorReport {
         md.append("How to read it: each line is one stepper, each point one step size h, "
                 + "from ").append(stepText(config.steps()[0])).append(" (left, cheap, "
                 + "inaccurate) to ").append(stepText(config.steps()[config.steps().length - 1]))
-                .append(" (right). Lower is more accurate, further left is cheaper; the best "
+                .append(" (right); the thin horizontal bar through a point spans its cost "
+                + "from the cheapest to the dearest of the meter's rounds. Lower is more "
+                + "accurate, further left is cheaper; the best "
                 + "method for a given error budget is the line furthest down-left. The slope is "
                 + "minus the order: a first-order method gains one digit of accuracy for ten "
                 + "times the work, RK4 four. Points at the bottom are exact up to round-off (an "

@@ -31,21 +31,35 @@ final class WorkPrecisionStudy {
         final double stepSeconds;
         final int steps;
         final double errorMetres;
+        /** The stepper's cost per step, min / median / max over the meter's rounds (ns). */
+        final CostMeter.Spread nanosPerStepSpread;
+        /** Its median (ns). */
         final double nanosPerStep;
 
         Point(CanonicalCase scene, Scheme scheme, double stepSeconds, int steps,
-                double errorMetres, double nanosPerStep) {
+                double errorMetres, CostMeter.Spread nanosPerStep) {
             this.scene = scene;
             this.scheme = scheme;
             this.stepSeconds = stepSeconds;
             this.steps = steps;
             this.errorMetres = errorMetres;
-            this.nanosPerStep = nanosPerStep;
+            this.nanosPerStepSpread = nanosPerStep;
+            this.nanosPerStep = nanosPerStep.median();
         }
 
-        /** The cost of simulating one second at this h (in ns). */
+        /** The cost of simulating one second at this h, the median (in ns). */
         double nanosPerSimulatedSecond() {
             return nanosPerStep / stepSeconds;
+        }
+
+        /** The cost of simulating one second at this h in the cheapest round (in ns). */
+        double minNanosPerSimulatedSecond() {
+            return nanosPerStepSpread.min() / stepSeconds;
+        }
+
+        /** The cost of simulating one second at this h in the dearest round (in ns). */
+        double maxNanosPerSimulatedSecond() {
+            return nanosPerStepSpread.max() / stepSeconds;
         }
     }
 
@@ -105,7 +119,7 @@ final class WorkPrecisionStudy {
                 }
                 progress.phase("work-precision: " + scene.id() + ", " + scheme.id());
                 Stepper stepper = scheme.create(forces);
-                double nanosPerStep = timeStep(meter, stepper, launch);
+                CostMeter.Spread nanosPerStep = timeStep(meter, stepper, launch);
                 double[] runSteps = scheme == Scheme.SEMI_IMPLICIT_EULER
                         ? config.floatSteps() : steps;
                 List<Double> fitSteps = new ArrayList<>();
@@ -134,10 +148,11 @@ final class WorkPrecisionStudy {
         return study;
     }
 
-    private static double timeStep(CostMeter meter, Stepper stepper, MotionState launch) {
+    private static CostMeter.Spread timeStep(CostMeter meter, Stepper stepper,
+            MotionState launch) {
         MotionState state = new MotionState();
         return meter.measure(units -> timingFlight(stepper, launch, state),
-                STEPS_PER_TIMING_CALL).nanosPerUnit();
+                STEPS_PER_TIMING_CALL).spread();
     }
 
     /**

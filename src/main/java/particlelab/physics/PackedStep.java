@@ -343,7 +343,10 @@ final class PackedStep {
      * mark is thus a particle at or below the floor or with a non-finite P, and is looked
      * at: the same particles as {@link HeightScan#findAtOrBelow}, in the same order, and the
      * block's finiteness check (in place of the tree of sums), which sets
-     * {@link #blockFinite}.
+     * {@link #blockFinite}. Where the fused check runs ({@link #isFusedFinite}, JDK 25 on),
+     * x and z are checked by it in place instead: no copies and no additions to the marks,
+     * which then say only "at or below the floor, or y not finite"; a non-finite x or z
+     * sets {@link #blockFinite} false all the same.
      *
      * @return how many are stored now: found plus this block's
      */
@@ -358,18 +361,24 @@ final class PackedStep {
             float e = above - heights[k];
             marks[k] = Math.abs(e) + e;
         }
-        // x and z: p − p is +0 for a finite p and NaN otherwise, so the marks check them too
-        System.arraycopy(positions, start, others, 0, n);
-        for (int k = 0; k < n; ++k) {
-            float p = others[k];
-            marks[k] += p - p;
-        }
-        System.arraycopy(positions, 2 * stride + start, others, 0, n);
-        for (int k = 0; k < n; ++k) {
-            float p = others[k];
-            marks[k] += p - p;
-        }
         boolean finite = true;
+        if (fusedCheck) {
+            // x and z by the fused AND, in place: one vectorised pass each where it runs
+            finite = isFusedFinite(positions, start, n)
+                    & isFusedFinite(positions, 2 * stride + start, n);
+        } else {
+            // x and z: p − p is +0 for a finite p and NaN otherwise, so the marks check them
+            System.arraycopy(positions, start, others, 0, n);
+            for (int k = 0; k < n; ++k) {
+                float p = others[k];
+                marks[k] += p - p;
+            }
+            System.arraycopy(positions, 2 * stride + start, others, 0, n);
+            for (int k = 0; k < n; ++k) {
+                float p = others[k];
+                marks[k] += p - p;
+            }
+        }
         int stored = found;
         int k = 0;
         while (k < n) {

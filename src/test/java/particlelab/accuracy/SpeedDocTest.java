@@ -77,6 +77,48 @@ class SpeedDocTest {
         }
     }
 
+    @Test
+    void everyRatioTheSectionStatesIsInThePastedRun() throws IOException {
+        // The prose around the pasted block once kept figures its table had lost (2.40× and
+        // 2.58× beside a table of 2.32× and 2.33×): each ratio the section states in words
+        // ("2.3×", "1.8–2.0×", "1.6 times") must be a figure of the pasted run.
+        String page = new String(Files.readAllBytes(Paths.get("docs", "speed.md")),
+                StandardCharsets.UTF_8);
+        int begin = page.indexOf(BEGIN);
+        int end = page.indexOf(END);
+        assertTrue(begin >= 0 && end > begin, "docs/speed.md has no pasted report section");
+        int start = page.lastIndexOf("\n## ", begin);
+        int stop = page.indexOf("\n## ", end);
+        String block = page.substring(begin, end);
+        String prose = page.substring(start, begin) + page.substring(end + END.length(), stop);
+        List<String> stated = statedRatios(prose);
+        assertTrue(stated.size() >= 4, "the section states too few ratios to check: " + stated);
+        for (String ratio : stated) {
+            assertTrue(Pattern.compile("(?<![0-9.])" + Pattern.quote(ratio) + "(?![0-9])")
+                    .matcher(block).find(), ratio + "× is stated beside the pasted run but is "
+                    + "not one of its figures");
+        }
+    }
+
+    @Test
+    void statedRatiosAreReadFromSignsWordsAndRanges() {
+        assertEquals(List.of("2.3", "1.8", "2.0", "1.6", "1.3", "1.7", "4.1"),
+                statedRatios("2.3× and 1.8–2.0× here, 1.6, 1.3 and 1.7 times; 4.1 times"));
+    }
+
+    /** The ratios a text states: "a×", "a–b×", "a times", "a, b and c times". */
+    static List<String> statedRatios(String text) {
+        List<String> ratios = new ArrayList<>();
+        Matcher m = Pattern.compile("((?:[0-9]+(?:\\.[0-9]+)?(?:, | and |–))*[0-9]+"
+                + "(?:\\.[0-9]+)?)(?:×| times)").matcher(text);
+        while (m.find()) {
+            for (String number : m.group(1).split(", | and |–")) {
+                ratios.add(number);
+            }
+        }
+        return ratios;
+    }
+
     /**
      * The figures are pasted rounded (ratios of the peer table to 0.1), so a row whose
      * max ÷ min lies at the spread bound may be judged from the unrounded figures one way and

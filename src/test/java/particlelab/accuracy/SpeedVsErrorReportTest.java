@@ -44,6 +44,34 @@ class SpeedVsErrorReportTest {
     }
 
     @Test
+    void theWorkPrecisionChartDrawsEachCostsSpreadAsABarThroughItsPoint() {
+        CanonicalCase scene = CanonicalCase.all().get(0);
+        Scheme scheme = Scheme.SEMI_IMPLICIT_EULER;
+        List<WorkPrecisionStudy.Point> points = List.of(
+                new WorkPrecisionStudy.Point(scene, scheme, 0.1, 40, 0.25,
+                        new CostMeter.Spread(3.0, 4.0, 6.0)),
+                new WorkPrecisionStudy.Point(scene, scheme, 0.01, 400, 0.0,
+                        new CostMeter.Spread(3.5, 3.5, 3.5)));
+        org.knowm.xchart.XYChart chart = SpeedVsErrorReport.workPrecisionChart(scene, points);
+        java.util.Map<String, org.knowm.xchart.XYSeries> series = chart.getSeriesMap();
+        // the line: the medians per simulated second (4 / 0.1 and 3.5 / 0.01, exact in double
+        // up to one rounding each, hence 1e-9 relative)
+        double[] lineX = series.get(scheme.shortLabel()).getXData();
+        assertEquals(40.0, lineX[0], 40.0 * 1e-9);
+        assertEquals(350.0, lineX[1], 350.0 * 1e-9);
+        // a bar per point, min to max at the point's (floored) error, not in the legend
+        org.knowm.xchart.XYSeries wide = series.get(scheme.shortLabel() + " spread 0");
+        assertEquals(30.0, wide.getXData()[0], 30.0 * 1e-9);
+        assertEquals(60.0, wide.getXData()[1], 60.0 * 1e-9);
+        assertEquals(0.25, wide.getYData()[0]);
+        assertEquals(0.25, wide.getYData()[1]);
+        assertTrue(!wide.isShowInLegend());
+        org.knowm.xchart.XYSeries exact = series.get(scheme.shortLabel() + " spread 1");
+        assertEquals(Charts.LOG_FLOOR, exact.getYData()[0]);
+        assertEquals(3, series.size());
+    }
+
+    @Test
     void ordersCsvHasItsFixedHeaderAndARowPerCaseAndStepper() throws IOException {
         List<String> lines = lines("orders.csv");
         assertEquals("case,stepper,measured_order,theoretical_order", lines.get(0));
