@@ -25,6 +25,7 @@ import particlelab.physics.QuadraticDrag;
 import particlelab.physics.SlideFormDrag;
 import particlelab.physics.Spring;
 import particlelab.physics.Thrust;
+import particlelab.world.Body;
 import particlelab.world.ClipReader;
 import particlelab.world.CollisionRule;
 import particlelab.world.ContactResponse;
@@ -119,14 +120,14 @@ class ParameterRoundTripTest {
                 .ordinal());
         // The physics lane's response: the impulse the pair rule hands that lane's contacts.
         exact("clip/e", demo -> ((ClipResponseDemo) demo).getRestitution());
-        READERS.put("clip/speed", new Reader(demo -> ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE, ClipResponseDemo.ROCKET)
+        READERS.put("clip/speed", new Reader(demo -> rocket(demo)
                 .getParticle().velocity.length(), RELATIVE_LAUNCH_TOLERANCE, true));
         READERS.put("clip/angle", new Reader(demo -> {
-            Vector3f v = ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE, ClipResponseDemo.ROCKET).getParticle().velocity;
+            Vector3f v = rocket(demo).getParticle().velocity;
             return (float) Math.toDegrees(Math.atan2(v.y, v.x));
         }, ANGLE_TOLERANCE_DEGREES, false));
-        exact("clip/m_rocket", demo -> ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE, ClipResponseDemo.ROCKET).getMass());
-        exact("clip/m_target", demo -> ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE, ClipResponseDemo.TARGET).getMass());
+        exact("clip/m_rocket", demo -> rocket(demo).getMass());
+        exact("clip/m_target", demo -> clipTarget(demo).getMass());
         exact("clip/clip", demo -> (float) indexOfClip((ClipResponseDemo) demo));
         // ω = |ω|·axis, a unit axis off the coordinate axes: three products rounded to floats
         // and a square root, so the length is |ω| to a few float roundings (≈ 6e-8 each).
@@ -329,6 +330,18 @@ class ParameterRoundTripTest {
             }
         }
         return -1;
+    }
+
+    /** The clip demo's physics-lane rocket. */
+    private static Body rocket(DemoState demo) {
+        return ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE,
+                ClipResponseDemo.ROCKET);
+    }
+
+    /** The clip demo's physics-lane target. */
+    private static Body clipTarget(DemoState demo) {
+        return ((ClipResponseDemo) demo).body(ClipResponseDemo.PHYSICS_LANE,
+                ClipResponseDemo.TARGET);
     }
 
     private static int indexOfClip(ClipResponseDemo demo) {
