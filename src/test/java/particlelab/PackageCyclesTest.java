@@ -24,7 +24,8 @@ import org.junit.jupiter.api.Test;
  * The packages of the main code form no cycle (docs/architecture.md draws them as layers): a
  * package that uses another, by an import or a fully qualified name in code, is never used
  * back, directly or through others. The framework ({@code demo}) never names a demo
- * ({@code lecture}). Read from the sources, so no class is loaded.
+ * ({@code lecture}); only the launcher ({@code app}) uses the report ({@code accuracy}). Read
+ * from the sources, so no class is loaded.
  */
 class PackageCyclesTest {
 
@@ -47,6 +48,24 @@ class PackageCyclesTest {
     void theFrameworkNamesNoDemo() throws IOException {
         assertEquals(null, uses().get("demo").get("lecture"),
                 "the first class of demo that names a demo of lecture");
+    }
+
+    /**
+     * The report ({@code accuracy}) is a leaf that only the launcher runs: the demos and the
+     * framework use the reference steppers, exact paths and cost meter of {@code reference},
+     * which never uses the report back.
+     */
+    @Test
+    void noPackageButTheAppUsesTheReport() throws IOException {
+        Map<String, String> users = new TreeMap<>();
+        for (Map.Entry<String, Map<String, String>> from : uses().entrySet()) {
+            String file = from.getValue().get("accuracy");
+            if (file != null && !from.getKey().equals("app")) {
+                users.put(from.getKey(), file);
+            }
+        }
+        assertEquals(Map.of(), users, "packages that use the report, with their first file");
+        assertTrue(uses().containsKey("reference"), "the reference package is scanned");
     }
 
     /** For each package, the packages it uses, each with the first file that does. */

@@ -10,15 +10,15 @@ import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
-import particlelab.accuracy.ExactDragStep;
-import particlelab.accuracy.ForwardEuler;
+import particlelab.reference.ExactDragStep;
+import particlelab.reference.ForwardEuler;
 import particlelab.accuracy.LectureStyleParticle;
-import particlelab.accuracy.MidpointStepper;
-import particlelab.accuracy.MotionState;
+import particlelab.reference.MidpointStepper;
+import particlelab.reference.MotionState;
 import particlelab.accuracy.OneParticleScene;
-import particlelab.accuracy.RungeKutta4;
-import particlelab.accuracy.SharedEulerStepper;
-import particlelab.accuracy.VelocityVerlet;
+import particlelab.reference.RungeKutta4;
+import particlelab.reference.SharedEulerStepper;
+import particlelab.reference.VelocityVerlet;
 
 /**
  * One particle under gravity and linear drag ({@link OneParticleScene}: b/m = 0.5/s,

@@ -7,6 +7,8 @@ import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.reference.ForceModel;
+
 
 /**
  * Aiming: the level shot of HelloAiming (S = 100 m, vx = 20 m/s) aimed three ways — the

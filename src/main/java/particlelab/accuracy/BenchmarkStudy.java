@@ -3,6 +3,10 @@ package particlelab.accuracy;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.physics.ParticleBatch;
+import particlelab.reference.CostMeter;
+import particlelab.reference.Scheme;
+import particlelab.reference.Stepper;
+
 
 /**
  * The report's own benchmarks, timed in this JVM one after another (side by side): every

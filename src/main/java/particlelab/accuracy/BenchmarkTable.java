@@ -9,6 +9,9 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import particlelab.files.SafeFiles;
+import particlelab.reference.CostMeter;
+import particlelab.reference.Scheme;
+
 
 /**
  * The rows of {@code benchmarks.csv}, written by the JMH runner and by the report's own

@@ -3,6 +3,9 @@ package particlelab.accuracy;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+
 
 /**
  * One of the report's canonical scenes: the forces, the launch and how long to fly. All start

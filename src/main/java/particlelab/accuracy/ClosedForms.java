@@ -1,5 +1,10 @@
 package particlelab.accuracy;
 
+import particlelab.reference.ExactDragStep;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.RungeKutta4;
+
 /**
  * Reference solutions in double precision: the continuous closed form for gravity plus linear
  * drag, and a high-accuracy numerical solution for scenes without one.

@@ -10,8 +10,10 @@ import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
 import particlelab.files.SafeFiles;
+import particlelab.reference.CostMeter;
 import particlelab.world.Detection;
 import particlelab.world.World;
+
 
 /**
  * The report's collision section: runs {@link CollisionStudy}, writes its CSV files and plots

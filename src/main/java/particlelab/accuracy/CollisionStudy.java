@@ -8,6 +8,7 @@ import particlelab.collision.Plane;
 import particlelab.collision.ThinWall;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.reference.CostMeter;
 import particlelab.world.Body;
 import particlelab.world.Contact;
 import particlelab.world.ContactListener;
@@ -18,6 +19,7 @@ import particlelab.world.StepListener;
 import particlelab.world.SurfaceRule;
 import particlelab.world.TunnelShots;
 import particlelab.world.World;
+
 
 /**
  * Collisions, speed against error: the world's overlap test against its swept (intersection)

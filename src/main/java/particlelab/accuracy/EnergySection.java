@@ -7,6 +7,8 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import particlelab.files.SafeFiles;
+import particlelab.reference.VelocityVerlet;
+
 
 /**
  * The report's energy section (issue 32): the numerical energy, the energy a stepper itself

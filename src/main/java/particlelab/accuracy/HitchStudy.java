@@ -8,6 +8,10 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Stepper;
+
 
 /**
  * Frame hitches: the canonical shot under linear drag, played at 60 frames per second with a

@@ -1,6 +1,8 @@
 package particlelab.accuracy;
 
 import java.util.Locale;
+import particlelab.reference.CostMeter;
+
 
 /**
  * The child JVM of the report's lecture-style row ({@link SpeedSpreads}): measures one
@@ -28,7 +30,7 @@ public final class LectureCollectorProbe {
             System.exit(2);
             return;
         }
-        CostMeter meter = new CostMeter(ReportConfig.of(size));
+        CostMeter meter = new CostMeter(ReportConfig.of(size).budget());
         CostMeter.Spread ratio = SpeedSpreads.oneParticle(ForceMix.LINEAR, meter, true)
                 .ratio(2, 1);
         System.out.println(String.format(Locale.ROOT, "%s %.4f %.4f %.4f %s",

@@ -2,6 +2,10 @@ package particlelab.accuracy;
 
 import com.jme3.math.Vector3f;
 import particlelab.physics.Gravity;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Stepper;
+
 
 /**
  * The one-particle benchmark scene, shared by the report's in-process timing and the JMH

@@ -1,5 +1,7 @@
 package particlelab.accuracy;
 
+import particlelab.reference.CostMeter;
+
 /**
  * How large a report to make: which step sizes, how many drag rates, particle counts, and how
  * long each timing loop runs. Three sizes: full (a few minutes on 2 cores), quick (a minute or
@@ -22,21 +24,16 @@ public final class ReportConfig {
     private final int floatExtraHalvings;
     private final double[] linearRates;
     private final int[] particleCounts;
-    private final long warmupNanos;
-    private final long roundNanos;
-    private final int rounds;
+    private final CostMeter.Budget budget;
 
     private ReportConfig(Size size, int stepHalvings, int floatExtraHalvings,
-            double[] linearRates, int[] particleCounts, long warmupMillis, long roundMillis,
-            int rounds) {
+            double[] linearRates, int[] particleCounts, CostMeter.Budget budget) {
         this.size = size;
         this.stepHalvings = stepHalvings;
         this.floatExtraHalvings = floatExtraHalvings;
         this.linearRates = linearRates;
         this.particleCounts = particleCounts;
-        this.warmupNanos = warmupMillis * 1_000_000L;
-        this.roundNanos = roundMillis * 1_000_000L;
-        this.rounds = rounds;
+        this.budget = budget;
     }
 
     /**
@@ -50,13 +47,13 @@ public final class ReportConfig {
             case FULL:
                 return new ReportConfig(size, 7, 4,
                         new double[] {0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100},
-                        new int[] {1_000, 10_000, 100_000, 1_000_000}, 300, 60, 7);
+                        new int[] {1_000, 10_000, 100_000, 1_000_000}, CostMeter.Budget.FULL);
             case QUICK:
                 return new ReportConfig(size, 5, 2, new double[] {0.1, 1, 10, 100},
-                        new int[] {1_000, 100_000}, 80, 20, 5);
+                        new int[] {1_000, 100_000}, CostMeter.Budget.QUICK);
             case TINY:
                 return new ReportConfig(size, 3, 1, new double[] {1, 10},
-                        new int[] {1_000}, 5, 2, 3);
+                        new int[] {1_000}, CostMeter.Budget.TINY);
             default:
                 throw new AssertionError(size);
         }
@@ -114,7 +111,7 @@ public final class ReportConfig {
      * @return the time (in nanoseconds)
      */
     public long warmupNanos() {
-        return warmupNanos;
+        return budget.warmupNanos();
     }
 
     /**
@@ -123,7 +120,7 @@ public final class ReportConfig {
      * @return the time (in nanoseconds)
      */
     public long roundNanos() {
-        return roundNanos;
+        return budget.roundNanos();
     }
 
     /**
@@ -132,7 +129,16 @@ public final class ReportConfig {
      * @return the count (&ge;1)
      */
     public int rounds() {
-        return rounds;
+        return budget.rounds();
+    }
+
+    /**
+     * Return the timing budget, for a {@link CostMeter}.
+     *
+     * @return the budget (not null)
+     */
+    public CostMeter.Budget budget() {
+        return budget;
     }
 
     private static double[] halvings(int count) {

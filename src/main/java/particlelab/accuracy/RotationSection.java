@@ -9,8 +9,10 @@ import java.util.List;
 import java.util.Locale;
 import org.knowm.xchart.XYChart;
 import particlelab.files.SafeFiles;
+import particlelab.reference.CostMeter;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
+
 
 /**
  * The report's rotation section: runs {@link RotationStudy}, writes its CSV files and plot

@@ -5,13 +5,15 @@ import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import particlelab.reference.CostMeter;
 import particlelab.rigid.Inertia;
 import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
-import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
+import particlelab.rigid.RotationIntegrator;
 import particlelab.rigid.SpinAngle;
+
 
 /**
  * The rotation section's measurements: for a sphere spinning at constant ω, each orientation

@@ -11,6 +11,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
+import particlelab.reference.CostMeter;
+
 
 /**
  * The report's ratios side by side, with their spreads: every ratio a speed target is judged

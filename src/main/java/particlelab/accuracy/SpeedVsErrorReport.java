@@ -12,6 +12,11 @@ import java.util.Locale;
 import org.knowm.xchart.XYChart;
 import particlelab.files.SafeFiles;
 import particlelab.physics.SimulationClock;
+import particlelab.reference.CostMeter;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Scheme;
+
 
 /**
  * The speed-vs-error report: runs every study and writes {@code index.md}, CSV files and PNG
@@ -94,7 +99,7 @@ public final class SpeedVsErrorReport {
         // The machine is read first, so its load average is the one at the start.
         HostInfo host = HostInfo.now();
         BenchmarkTable jmh = jmhResults == null ? null : BenchmarkTable.read(jmhResults);
-        CostMeter meter = new CostMeter(config);
+        CostMeter meter = new CostMeter(config.budget());
         ProgressBar progress = new ProgressBar(progressOut, WorkPrecisionStudy.units()
                 + StabilityStudy.units(config)
                 + (jmh == null ? BenchmarkStudy.units(config) : 0) + 4, interactive);

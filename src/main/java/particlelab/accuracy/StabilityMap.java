@@ -5,6 +5,11 @@ import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Spring;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Scheme;
+import particlelab.reference.Stepper;
+
 
 /**
  * Measures the largest stable step of a method under gravity plus linear drag, by bisection,

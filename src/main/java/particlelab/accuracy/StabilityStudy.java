@@ -3,6 +3,8 @@ package particlelab.accuracy;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.reference.Scheme;
+
 
 /**
  * The stability map: the largest stable step of every stepper at each damping rate b/m,

@@ -2,6 +2,12 @@ package particlelab.accuracy;
 
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.reference.CostMeter;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Scheme;
+import particlelab.reference.Stepper;
+
 
 /**
  * The work-precision sweep: for every canonical case and stepper, the final-position error

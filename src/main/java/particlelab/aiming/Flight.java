@@ -16,12 +16,27 @@ import particlelab.physics.Validate;
  * new one (semi-implicit Euler), so where it crossed the ground is found by the same swept
  * test the world's ground rule uses ({@link Plane#ground()}'s {@link Surface#sweep}), and the
  * point is interpolated on that segment here: the one place in the code where a flight's
- * ground crossing is interpolated. Allocates nothing once made.
+ * ground crossing is interpolated. A hitscan's shot at a disc or a sphere steps the same way,
+ * swept against its target ({@link Sweep}). Allocates nothing once made.
  */
 public final class Flight {
 
     /** What {@link #step} returns for a step that did not reach the ground. */
     public static final double NO_LANDING = Surface.NO_HIT;
+
+    /** A target a step's straight segment is swept against (a plane, a sphere). */
+    @FunctionalInterface
+    public interface Sweep {
+        /**
+         * Find where a segment first reaches the target.
+         *
+         * @param from the particle's position before the step (m; not null, unmodified)
+         * @param to its position after the step (m; not null, unmodified)
+         * @return where inside the step it reached the target (0 to 1), or
+         *     {@link #NO_LANDING}
+         */
+        double sweep(Vector3f from, Vector3f to);
+    }
 
     private ParticleIntegrator integrator;
     private final Plane ground = Plane.ground();
@@ -65,13 +80,39 @@ public final class Flight {
     }
 
     /**
-     * Return x where the last step's segment reached the ground.
+     * Take one step of the particle and tell whether its segment reached a target other than
+     * the ground (a hitscan's disc or sphere).
+     *
+     * @param particle the particle (not null, modified: stepped)
+     * @param stepSeconds h (in seconds, finite, &gt;0)
+     * @param target what the segment is swept against (not null)
+     * @return where inside the step it reached the target (0 to 1), or {@link #NO_LANDING}
+     */
+    public double step(Particle particle, float stepSeconds, Sweep target) {
+        previous.set(particle.position);
+        integrator.step(particle, stepSeconds);
+        current.set(particle.position);
+        return target.sweep(previous, current);
+    }
+
+    /**
+     * Return x where the last step's segment reached the ground (or the target).
      *
      * @param fraction what {@link #step} returned (0 to 1)
      * @return x at that point of the segment (in metres, in double)
      */
     public double crossingX(double fraction) {
         return previous.x + fraction * ((double) current.x - previous.x);
+    }
+
+    /**
+     * Return y where the last step's segment reached the target.
+     *
+     * @param fraction what {@link #step} returned (0 to 1)
+     * @return y at that point of the segment (in metres, in double)
+     */
+    public double crossingY(double fraction) {
+        return previous.y + fraction * ((double) current.y - previous.y);
     }
 
     /**

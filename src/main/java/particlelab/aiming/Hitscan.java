@@ -3,7 +3,6 @@ package particlelab.aiming;
 import com.jme3.math.Vector3f;
 import particlelab.collision.Plane;
 import particlelab.collision.SphereTests;
-import particlelab.collision.Surface;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Validate;
@@ -29,16 +28,23 @@ import particlelab.physics.Validate;
  */
 public final class Hitscan {
 
-    private final ParticleIntegrator integrator;
+    /** Steps the projectile and sweeps each step's segment against the target. */
+    private final Flight flight;
     private final Particle projectile = new Particle();
     private float stepSeconds;
     private final int maxSteps;
-    private final Vector3f previous = new Vector3f();
     private final Vector3f centre = new Vector3f();
     private final Vector3f normal = new Vector3f();
     /** The last disc's plane, rebuilt only when the distance changes. */
     private Plane face;
     private float faceDistance;
+    /** The sphere's radius of the shot under way (m). */
+    private float sphereRadius;
+    /** The disc's plane, swept with radius 0. */
+    private final Flight.Sweep faceSweep = (from, to) -> face.sweep(from, to, 0f, normal);
+    /** The sphere, which does not move: its segment is a point. */
+    private final Flight.Sweep sphereSweep = (from, to) -> SphereTests.sweep(from, to, centre,
+            centre, sphereRadius);
 
     /**
      * Create a projectile range.
@@ -49,7 +55,7 @@ public final class Hitscan {
      *     steps (&ge;1)
      */
     public Hitscan(ParticleIntegrator integrator, float stepSeconds, int maxSteps) {
-        this.integrator = Validate.notNull(integrator, "integrator");
+        this.flight = new Flight(Validate.notNull(integrator, "integrator"));
         this.stepSeconds = Validate.positive(stepSeconds, "step h (s)");
         if (maxSteps < 1) {
             throw new IllegalArgumentException("max steps must be >= 1, but was " + maxSteps);
@@ -141,10 +147,8 @@ public final class Hitscan {
         }
         launch(speed);
         for (int step = 1; step <= maxSteps; ++step) {
-            previous.set(projectile.position);
-            integrator.step(projectile, stepSeconds);
-            double fraction = face.sweep(previous, projectile.position, 0f, normal);
-            if (fraction != Surface.NO_HIT) {
+            double fraction = flight.step(projectile, stepSeconds, faceSweep);
+            if (fraction != Flight.NO_LANDING) {
                 store(fraction, step, storeResult);
                 // Fired in the x-y plane: the distance from the centre is |y|.
                 storeResult.set(true, Math.abs(storeResult.getY()) <= radiusMetres,
@@ -173,15 +177,12 @@ public final class Hitscan {
         Validate.notNull(storeResult, "storeResult");
         checkShot(speed, distance, radiusMetres);
         centre.set(distance, 0f, 0f);
+        sphereRadius = radiusMetres;
         launch(speed);
         double beyond = (double) distance + radiusMetres;
         for (int step = 1; step <= maxSteps; ++step) {
-            previous.set(projectile.position);
-            integrator.step(projectile, stepSeconds);
-            // The target does not move: its segment is a point.
-            double fraction = SphereTests.sweep(previous, projectile.position, centre, centre,
-                    radiusMetres);
-            if (fraction != Surface.NO_HIT) {
+            double fraction = flight.step(projectile, stepSeconds, sphereSweep);
+            if (fraction != Flight.NO_LANDING) {
                 store(fraction, step, storeResult);
                 return true;
             }
@@ -200,11 +201,9 @@ public final class Hitscan {
 
     /** Store the point at the fraction of the last step's segment as a hit. */
     private void store(double fraction, int step, TargetImpact storeResult) {
-        Vector3f end = projectile.position;
-        double x = previous.x + fraction * ((double) end.x - previous.x);
-        double y = previous.y + fraction * ((double) end.y - previous.y);
         double time = (step - 1 + fraction) * stepSeconds;
-        storeResult.set(true, true, x, y, time, step);
+        storeResult.set(true, true, flight.crossingX(fraction), flight.crossingY(fraction),
+                time, step);
     }
 
     private static void checkShot(float speed, float distance, float radiusMetres) {

@@ -67,7 +67,7 @@ public final class AimCommand {
      */
     public static final int MAX_STEPS_PER_SHOT = 1_000_000;
 
-    private static final String COMMAND = "particle-lab " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     /** The decimals of the readable output. */
     private static final int READABLE_DECIMALS = 4;
     /** Smaller magnitudes are shown with significant digits instead of decimals. */
@@ -289,7 +289,7 @@ public final class AimCommand {
                         + " m");
             }
         }
-        return 0;
+        return Program.OK;
     }
 
     /**

@@ -47,7 +47,7 @@ public final class BounceCommand {
     /** The default duration (in seconds). */
     public static final float DEFAULT_DURATION_SECONDS = 10f;
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String HEIGHT = "--height";
     private static final String RESTITUTION = "--restitution";
     private static final String THRESHOLD = "--threshold";
@@ -151,7 +151,7 @@ public final class BounceCommand {
         List<Impact> impacts = simulate(height, e, threshold, restingFix, detection, step,
                 gravity, radius, steps);
         print(impacts, out);
-        return 0;
+        return Program.OK;
     }
 
     /** One row. */

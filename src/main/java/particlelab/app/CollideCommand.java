@@ -46,7 +46,7 @@ public final class CollideCommand {
      */
     static final double LOST_MOMENTUM_FRACTION = 1e-3;
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String M1 = "--m1";
     private static final String M2 = "--m2";
     private static final String P1 = "--p1";
@@ -155,7 +155,7 @@ public final class CollideCommand {
         }
         out.println(HEADER);
         out.println(recorder.row);
-        return 0;
+        return Program.OK;
     }
 
     /**

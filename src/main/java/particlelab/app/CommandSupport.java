@@ -217,7 +217,7 @@ final class CommandSupport {
     /**
      * Run a command the way every subcommand runs: parse the arguments, print the help if it
      * was asked for, else run the command; a bad command line is one line on err and
-     * {@link UsageException#EXIT_CODE}.
+     * {@link Program#USAGE}.
      *
      * @param command the command's full name, e.g. "particle-lab aim" (not null)
      * @param options the command's declared options (not null)
@@ -233,7 +233,7 @@ final class CommandSupport {
             options.parse(args);
             if (options.isHelpRequested()) {
                 out.print(options.help());
-                return 0;
+                return Program.OK;
             }
             return body.run(options);
         } catch (UsageException problem) {
@@ -247,10 +247,10 @@ final class CommandSupport {
      * @param command the command's full name, e.g. "particle-lab aim" (not null)
      * @param problem the exception (not null)
      * @param err where to print (not null)
-     * @return {@link UsageException#EXIT_CODE}
+     * @return {@link Program#USAGE}
      */
     static int reportUsage(String command, UsageException problem, PrintStream err) {
         err.println(command + ": " + problem.getMessage());
-        return UsageException.EXIT_CODE;
+        return Program.USAGE;
     }
 }

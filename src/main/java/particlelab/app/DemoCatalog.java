@@ -3,6 +3,7 @@ package particlelab.app;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.IntFunction;
 import java.util.function.Supplier;
 import particlelab.demo.DemoState;
 import particlelab.lecture.AnyHeightDemo;
@@ -35,10 +36,18 @@ public final class DemoCatalog {
     public static final class Entry {
         private final String name;
         private final Supplier<DemoState> factory;
+        /** Creates it with a particle count ({@code --particles}); null if it has none. */
+        private final IntFunction<DemoState> countedFactory;
 
         Entry(String name, Supplier<DemoState> factory) {
+            this(name, factory, null);
+        }
+
+        Entry(String name, Supplier<DemoState> factory,
+                IntFunction<DemoState> countedFactory) {
             this.name = name;
             this.factory = factory;
+            this.countedFactory = countedFactory;
         }
 
         /** @return the name used by {@code particle-lab demo NAME} (not null) */
@@ -49,6 +58,22 @@ public final class DemoCatalog {
         /** @return a new instance of the demo (not null) */
         public DemoState create() {
             return factory.get();
+        }
+
+        /** @return true if the demo takes a particle count ({@code --particles}) */
+        public boolean hasParticleCount() {
+            return countedFactory != null;
+        }
+
+        /**
+         * Create the demo with a particle count, if it takes one.
+         *
+         * @param particles how many particles (in the demo's range; ignored by a demo
+         *     without a count)
+         * @return a new instance of the demo (not null)
+         */
+        public DemoState create(int particles) {
+            return countedFactory == null ? factory.get() : countedFactory.apply(particles);
         }
     }
 
@@ -69,7 +94,11 @@ public final class DemoCatalog {
             new Entry("throw", SpinThrowDemo::new),
             new Entry("racket", TennisRacketDemo::new),
             new Entry("wind", WindDemo::new),
-            new Entry("fountain", FountainDemo::new),
+            new Entry("fountain", FountainDemo::new, particles -> {
+                FountainDemo fountain = new FountainDemo();
+                fountain.setParticleCount(particles);
+                return fountain;
+            }),
             new Entry("spring", SpringDemo::new),
             new Entry("clip", ClipResponseDemo::new)));
 
@@ -125,5 +154,34 @@ public final class DemoCatalog {
             demos.add(entry.create());
         }
         return demos;
+    }
+
+    /**
+     * Create one instance of every demo, in lecture order, those that take a particle count
+     * ({@code --particles}) with the one given.
+     *
+     * @param particles the count (in the range of those demos)
+     * @return a new list (not null)
+     */
+    public static List<DemoState> createAll(int particles) {
+        List<DemoState> demos = new ArrayList<>();
+        for (Entry entry : ENTRIES) {
+            demos.add(entry.create(particles));
+        }
+        return demos;
+    }
+
+    /**
+     * Name the demo that takes a particle count, for {@code --particles}' messages.
+     *
+     * @return its command-line name (not null)
+     */
+    public static String nameWithParticleCount() {
+        for (Entry entry : ENTRIES) {
+            if (entry.hasParticleCount()) {
+                return entry.getName();
+            }
+        }
+        throw new IllegalStateException("no demo of the catalogue takes a particle count");
     }
 }

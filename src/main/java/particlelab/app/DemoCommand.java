@@ -41,15 +41,10 @@ public final class DemoCommand {
     /** Set to true by the build's run task, so advice can mention the Gradle daemon. */
     static final String GRADLE_RUN_PROPERTY = "particlelab.gradleRun";
 
-    /** Exit status: success. */
-    public static final int OK = 0;
-    /** Exit status: the window could not run. */
-    public static final int FAILED = 1;
-    /** Exit status: bad command line. */
-    public static final int USAGE = UsageException.EXIT_CODE;
-
     /** The subcommand's name. */
     public static final String NAME = "demo";
+    /** The command as its error lines name it. */
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String DEMO = "--demo";
     private static final String LIST = "--list";
     private static final String FRAMES = "--frames";
@@ -64,7 +59,6 @@ public final class DemoCommand {
     private static final String PARTICLES = "--particles";
     private static final double MILLIS_PER_SECOND = 1000.0;
     private static final String PROFILE = "--profile";
-    private static final String FOUNTAIN = "fountain";
     /**
      * The window sizes --window accepts (in pixels): from the smallest the HUD is laid out
      * for without overlaps (lines hidden, "window too small" said in the window) to 8K.
@@ -98,108 +92,41 @@ public final class DemoCommand {
      * @param args the arguments after {@code demo} (not null)
      * @param out where results go (not null)
      * @param err where errors go (not null)
-     * @return the exit status: {@link #OK}, {@link #FAILED} or {@link #USAGE}
+     * @return the exit status: {@link Program#OK}, {@link Program#FAILED} or
+     *     {@link Program#USAGE}
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = declareOptions();
-        String[] optionArgs = args;
-        String name = null;
-        if (args.length > 0 && !args[0].startsWith("-")) {
-            // "particle-lab demo aiming ...": the demo's name may come first, without --demo.
-            name = args[0];
-            optionArgs = Arrays.copyOfRange(args, 1, args.length);
-        }
-        int frames;
-        File screenshot;
-        float fixedTpf;
-        int[] window;
-        Path exportFolder = null;
-        boolean force;
-        float uiScale;
-        boolean present;
-        List<String> settings;
-        int particles;
-        try {
-            options.parse(optionArgs);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return OK;
-            }
-            if (options.has(LIST)) {
-                for (String demo : DemoCatalog.names()) {
-                    out.println(demo);
-                }
-                return OK;
-            }
-            if (name != null && options.has(DEMO)) {
-                throw new UsageException(DEMO + ": the demo was already named "
-                        + Options.show(name) + "; give it once");
-            }
-            name = options.string(DEMO, name);
-            if (name != null && DemoCatalog.indexOf(name) < 0) {
-                // The demo first: its options mean nothing without it.
-                throw new UsageException(unknownDemo(name));
-            }
-            frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
-            String file = options.string(SCREENSHOT, null);
-            screenshot = file == null ? null : new File(file);
-            fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF) : Float.NaN;
-            if (fixedTpf > MAX_FIXED_TPF) {
-                throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
-                        + " s, but was " + fixedTpf);
-            }
-            window = parseWindow(options.string(WINDOW, null));
-            uiScale = parseUiScale(options);
-            present = options.has(PRESENT);
-            if (present && options.has(ExportRun.EXPORT) && !options.has(SCREENSHOT)) {
-                throw new UsageException(PRESENT + ": shows the window in presentation mode,"
-                        + " but " + ExportRun.EXPORT + " without " + SCREENSHOT + " runs with"
-                        + " no window; add " + SCREENSHOT + " FILE or drop " + PRESENT);
-            }
-            if (options.has(ExportRun.EXPORT) && frames == 0) {
-                throw new UsageException(ExportRun.EXPORT + ": needs " + FRAMES + " N, so the"
-                        + " app knows when to write the files");
-            }
-            settings = options.strings(SET);
-            if (screenshot != null && frames == 0) {
-                throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
-                        + " knows which frame to save");
-            }
-            force = options.has(SafeFiles.FORCE);
-            if (force && screenshot == null && !options.has(ExportRun.EXPORT)) {
-                throw new UsageException(SafeFiles.FORCE + ": replaces the files of "
-                        + SCREENSHOT + " or " + ExportRun.EXPORT + "; give one of them");
-            }
-            if (screenshot != null) {
-                checkScreenshotPath(file, force);
-            }
-            if (options.has(ExportRun.EXPORT)) {
-                exportFolder = ExportRun.checkFolder(options.string(ExportRun.EXPORT, null),
-                        force);
-            }
-            particles = options.intInRange(PARTICLES, Fountain.DEFAULT_PARTICLES, 1,
-                    Fountain.MAX_PARTICLES);
-            if (options.has(PARTICLES)
-                    && DemoCatalog.indexOf(name) != DemoCatalog.indexOf(FOUNTAIN)) {
-                throw new UsageException(PARTICLES + ": only the demo " + FOUNTAIN
-                        + " has a particle count; give it as: demo " + FOUNTAIN + " "
-                        + PARTICLES + " N");
-            }
-        } catch (UsageException e) {
-            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
-            return USAGE;
-        }
-        int index = name == null ? 0 : DemoCatalog.indexOf(name);
-        List<DemoState> demos = DemoCatalog.createAll();
-        try {
-            applySettings(demos.get(index), settings);
-        } catch (UsageException e) {
-            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
-            return USAGE;
-        }
+        // "particle-lab demo aiming ...": the demo's name may come first, without --demo.
+        boolean named = args.length > 0 && !args[0].startsWith("-");
+        String first = named ? args[0] : null;
+        String[] optionArgs = named ? Arrays.copyOfRange(args, 1, args.length) : args;
+        return CommandSupport.execute(COMMAND, declareOptions(), optionArgs, out, err,
+                options -> {
+                    if (options.has(LIST)) {
+                        for (String demo : DemoCatalog.names()) {
+                            out.println(demo);
+                        }
+                        return Program.OK;
+                    }
+                    return open(Request.parse(first, options), out, err);
+                });
+    }
+
+    /**
+     * Open the window (or run the export headless) on an accepted command line: the demos
+     * are made, the settings applied, and only then are the folders made; a run that failed
+     * leaves no folder it made.
+     *
+     * @throws UsageException for a bad setting or a folder that cannot be made
+     */
+    private static int open(Request request, PrintStream out, PrintStream err) {
+        int index = request.name == null ? 0 : DemoCatalog.indexOf(request.name);
+        List<DemoState> demos = DemoCatalog.createAll(request.particles);
+        applySettings(demos.get(index), request.settings);
         // The whole command line was accepted: only now are the folders made.
-        Path shotFolder = screenshot == null ? null
-                : screenshot.toPath().toAbsolutePath().getParent();
+        Path exportFolder = request.exportFolder;
+        Path shotFolder = request.screenshot == null ? null
+                : request.screenshot.toPath().toAbsolutePath().getParent();
         Path createdForExport = null;
         Path createdForShot = null;
         try {
@@ -211,29 +138,115 @@ public final class DemoCommand {
             }
         } catch (UsageException e) {
             SafeFiles.removeCreated(exportFolder, createdForExport);
-            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
-            return USAGE;
+            throw e;
         }
-        if (window != null) {
-            System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
+        if (request.window != null) {
+            System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY,
+                    request.window[0] + "x" + request.window[1]);
         }
-        ((FountainDemo) demos.get(DemoCatalog.indexOf(FOUNTAIN))).setParticleCount(particles);
-        int status = exportFolder != null && screenshot == null
-                ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, force,
-                        out, err)
-                : openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
-                        uiScale, present, exportFolder, force, out, err);
-        if (status != OK) {
+        int status = exportFolder != null && request.screenshot == null
+                ? ExportRun.runHeadless(demos, index, request.frames, request.fixedTpf,
+                        exportFolder, request.force, out, err)
+                : openWindow(demos, index, TourGuide.NOT_TOURING, request.frames,
+                        request.screenshot, request.fixedTpf, request.uiScale, request.present,
+                        exportFolder, request.force, out, err);
+        if (status != Program.OK) {
             // A run that failed (no display, say) leaves no empty folder it made.
             SafeFiles.removeCreated(exportFolder, createdForExport);
             if (shotFolder != null) {
                 SafeFiles.removeCreated(shotFolder, createdForShot);
             }
         }
-        if (status == OK && options.has(PROFILE)) {
+        if (status == Program.OK && request.profile) {
             out.println(profileLine(demos.get(index)));
         }
         return status;
+    }
+
+    /** A command line of {@code demo}, checked whole before anything is made. */
+    private static final class Request {
+        String name;
+        int frames;
+        File screenshot;
+        float fixedTpf;
+        int[] window;
+        Path exportFolder;
+        boolean force;
+        float uiScale;
+        boolean present;
+        List<String> settings;
+        int particles;
+        boolean profile;
+
+        /**
+         * Read and check the options, the demo first (its options mean nothing without it).
+         *
+         * @param first the demo named before the options, or null
+         * @param options the parsed options (not null)
+         * @return the request (not null)
+         * @throws UsageException naming the first bad option
+         */
+        static Request parse(String first, Options options) {
+            Request request = new Request();
+            if (first != null && options.has(DEMO)) {
+                throw new UsageException(DEMO + ": the demo was already named "
+                        + Options.show(first) + "; give it once");
+            }
+            request.name = options.string(DEMO, first);
+            if (request.name != null && DemoCatalog.indexOf(request.name) < 0) {
+                throw new UsageException(unknownDemo(request.name));
+            }
+            request.frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
+            String file = options.string(SCREENSHOT, null);
+            request.screenshot = file == null ? null : new File(file);
+            request.fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF)
+                    : Float.NaN;
+            if (request.fixedTpf > MAX_FIXED_TPF) {
+                throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
+                        + " s, but was " + request.fixedTpf);
+            }
+            request.window = parseWindow(options.string(WINDOW, null));
+            request.uiScale = parseUiScale(options);
+            request.present = options.has(PRESENT);
+            boolean export = options.has(ExportRun.EXPORT);
+            if (request.present && export && file == null) {
+                throw new UsageException(PRESENT + ": shows the window in presentation mode,"
+                        + " but " + ExportRun.EXPORT + " without " + SCREENSHOT + " runs with"
+                        + " no window; add " + SCREENSHOT + " FILE or drop " + PRESENT);
+            }
+            if (export && request.frames == 0) {
+                throw new UsageException(ExportRun.EXPORT + ": needs " + FRAMES + " N, so the"
+                        + " app knows when to write the files");
+            }
+            request.settings = options.strings(SET);
+            if (file != null && request.frames == 0) {
+                throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
+                        + " knows which frame to save");
+            }
+            request.force = options.has(SafeFiles.FORCE);
+            if (request.force && file == null && !export) {
+                throw new UsageException(SafeFiles.FORCE + ": replaces the files of "
+                        + SCREENSHOT + " or " + ExportRun.EXPORT + "; give one of them");
+            }
+            if (file != null) {
+                checkScreenshotPath(file, request.force);
+            }
+            if (export) {
+                request.exportFolder = ExportRun.checkFolder(
+                        options.string(ExportRun.EXPORT, null), request.force);
+            }
+            request.particles = options.intInRange(PARTICLES, Fountain.DEFAULT_PARTICLES, 1,
+                    Fountain.MAX_PARTICLES);
+            String counted = DemoCatalog.nameWithParticleCount();
+            if (options.has(PARTICLES)
+                    && DemoCatalog.indexOf(request.name) != DemoCatalog.indexOf(counted)) {
+                throw new UsageException(PARTICLES + ": only the demo " + counted
+                        + " has a particle count; give it as: demo " + counted + " "
+                        + PARTICLES + " N");
+            }
+            request.profile = options.has(PROFILE);
+            return request;
+        }
     }
 
     /** Word the refusal of a demo name that is not in the catalog. */
@@ -419,7 +432,7 @@ public final class DemoCommand {
      * @return new options (not null)
      */
     static Options declareOptions() {
-        return new Options(Main.PROGRAM + " " + NAME + " [NAME]",
+        return new Options(Program.NAME + " " + NAME + " [NAME]",
                 "Open the window on one of the lecture's demos (NAME or --demo NAME;"
                         + " default: the first).")
                 .value(DEMO, "NAME", "the demo to open on; see --list")
@@ -549,8 +562,8 @@ public final class DemoCommand {
             boolean replace, PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
-            err.println("particle-lab: cannot open the window: " + noDisplay);
-            return FAILED;
+            err.println(Program.NAME + ": cannot open the window: " + noDisplay);
+            return Program.FAILED;
         }
         quietLogs();
         if (isBlank(System.getenv("WAYLAND_DISPLAY"))) {
@@ -578,21 +591,21 @@ public final class DemoCommand {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             app.stop();
-            err.println("particle-lab: interrupted");
-            return FAILED;
+            err.println(Program.NAME + ": interrupted");
+            return Program.FAILED;
         }
         if (app.getFailure() != null) {
-            err.println("particle-lab: cannot run the window: " + app.getFailure());
-            return FAILED;
+            err.println(Program.NAME + ": cannot run the window: " + app.getFailure());
+            return Program.FAILED;
         }
         ScreenshotCapture capture = app.getCapture();
         if (capture != null) {
             if (!capture.isWritten()) {
-                err.println("particle-lab: the screenshot "
+                err.println(Program.NAME + ": the screenshot "
                         + Options.showWhole(screenshot.toString()) + " was not written"
                         + (capture.getFailure() == null ? ""
                                 : ": " + UsageException.reason(capture.getFailure())));
-                return FAILED;
+                return Program.FAILED;
             }
             out.println(writtenLine(screenshot.toString(), capture.getStatistics()));
         }
@@ -600,7 +613,7 @@ public final class DemoCommand {
             return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace, out,
                     err);
         }
-        return OK;
+        return Program.OK;
     }
 
     /**

@@ -113,12 +113,12 @@ final class ExportRun {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             app.stop();
-            err.println("particle-lab: interrupted");
-            return DemoCommand.FAILED;
+            err.println(Program.NAME + ": interrupted");
+            return Program.FAILED;
         }
         if (app.getFailure() != null) {
-            err.println("particle-lab: the demo failed: " + app.getFailure());
-            return DemoCommand.FAILED;
+            err.println(Program.NAME + ": the demo failed: " + app.getFailure());
+            return Program.FAILED;
         }
         return write(app.getSwitcher().getSelected(), folder, replace, out, err);
     }
@@ -144,10 +144,10 @@ final class ExportRun {
                 out.println("csv: none; " + NOTHING_TO_EXPORT);
             }
         } catch (IOException failure) {
-            err.println("particle-lab: the export to " + SafeFiles.printable(folder)
+            err.println(Program.NAME + ": the export to " + SafeFiles.printable(folder)
                     + " failed: " + UsageException.reason(failure));
-            return DemoCommand.FAILED;
+            return Program.FAILED;
         }
-        return DemoCommand.OK;
+        return Program.OK;
     }
 }

@@ -35,7 +35,7 @@ public final class HitscanCommand {
     /** The target's radius when {@code --target-radius} is not given (in metres). */
     public static final float DEFAULT_RADIUS_METRES = 0.5f;
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String DISTANCE = "--distance";
     private static final String SPEED = "--speed";
     private static final String G = "--g";
@@ -130,7 +130,7 @@ public final class HitscanCommand {
         out.println(HEADER);
         out.println(speed + "," + distance + "," + impact.getTimeSeconds() + "," + formula
                 + "," + impact.getDrop() + "," + impact.isHit());
-        return 0;
+        return Program.OK;
     }
 
     /** The shortest decimal that reads back as the float, as a double. */

@@ -15,12 +15,6 @@ import java.util.Arrays;
  */
 public final class Main {
 
-    /** The launcher's name, as the installed script calls it. */
-    public static final String PROGRAM = "particle-lab";
-    /** Exit status: the output could not be written (stdout closed or full). */
-    public static final int OUTPUT_FAILED = 1;
-    /** Exit status: a bug, reported in one line. */
-    public static final int INTERNAL_ERROR = 1;
     /** The help subcommand: alone, or followed by a command whose help to show. */
     public static final String HELP = "help";
 
@@ -56,8 +50,9 @@ public final class Main {
      * @param args the command line (not null)
      * @param out where results and help go (not null)
      * @param err where warnings and error lines go (not null)
-     * @return the exit code: 0 on success, 2 on a bad command line, {@link #OUTPUT_FAILED} when
-     *     out could not be written (closed, full), 1 when a window could not run or on a bug
+     * @return the exit code ({@link Program}): OK on success, USAGE on a bad command line,
+     *     FAILED when out could not be written (closed, full), a window could not run or on a
+     *     bug
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
         int code;
@@ -66,13 +61,13 @@ public final class Main {
         } catch (RuntimeException bug) {
             // Every bad input has its own message; this is a bug. One line, still.
             err.println(internalErrorLine(bug));
-            return INTERNAL_ERROR;
+            return Program.FAILED;
         }
         // checkError flushes out and tells whether any write to it failed.
         if (out.checkError()) {
-            err.println(PROGRAM + ": could not write the output (stdout is closed or full);"
+            err.println(Program.NAME + ": could not write the output (stdout is closed or full);"
                     + " the output is incomplete");
-            return OUTPUT_FAILED;
+            return Program.FAILED;
         }
         return code;
     }
@@ -96,23 +91,23 @@ public final class Main {
                 }
                 if (rest.length > 1 || rest.length == 1 && !Options.HELP.equals(rest[0])
                         && !Options.SHORT_HELP.equals(rest[0])) {
-                    err.println(PROGRAM + " " + HELP + ": takes at most one command, e.g. "
-                            + PROGRAM + " " + HELP + " " + AimCommand.NAME + ", but was given "
-                            + Options.show(String.join(" ", rest)) + " (see " + PROGRAM
+                    err.println(Program.NAME + " " + HELP + ": takes at most one command, e.g. "
+                            + Program.NAME + " " + HELP + " " + AimCommand.NAME + ", but was given "
+                            + Options.show(String.join(" ", rest)) + " (see " + Program.NAME
                             + " --help)");
-                    return UsageException.EXIT_CODE;
+                    return Program.USAGE;
                 }
                 out.print(help());
-                return 0;
+                return Program.OK;
             case Options.HELP:
             case Options.SHORT_HELP:
                 out.print(help());
-                return 0;
+                return Program.OK;
             default:
-                err.println(PROGRAM + ": unknown command " + Options.show(command)
+                err.println(Program.NAME + ": unknown command " + Options.show(command)
                         + "; the commands are "
-                        + commandNames() + " (see " + PROGRAM + " --help)");
-                return UsageException.EXIT_CODE;
+                        + commandNames() + " (see " + Program.NAME + " --help)");
+                return Program.USAGE;
         }
     }
 
@@ -125,7 +120,7 @@ public final class Main {
      * @return the line, without a line end (not null)
      */
     static String internalErrorLine(RuntimeException bug) {
-        return PROGRAM + ": internal error, please report it with the command line: "
+        return Program.NAME + ": internal error, please report it with the command line: "
                 + bug.getClass().getSimpleName() + ": "
                 + Options.showWhole(String.valueOf(bug.getMessage()));
     }
@@ -136,7 +131,7 @@ public final class Main {
      * @return the help text, lines ending in '\n' (not null)
      */
     public static String help() {
-        return "Usage: " + PROGRAM + " [COMMAND [OPTIONS]]\n"
+        return "Usage: " + Program.NAME + " [COMMAND [OPTIONS]]\n"
                 + "Particle Lab: the lecture's game particle physics, every particle moved by\n"
                 + "the same semi-implicit Euler step.\n"
                 + "\n"
@@ -145,10 +140,10 @@ public final class Main {
                 + "Commands:\n"
                 + commandList()
                 + "\n"
-                + "Every option of a command, with defaults and units: " + PROGRAM
+                + "Every option of a command, with defaults and units: " + Program.NAME
                 + " COMMAND --help.\n"
-                + "The demo and report commands are described by " + PROGRAM + " demo --help\n"
-                + "and " + PROGRAM + " report --help.\n"
+                + "The demo and report commands are described by " + Program.NAME + " demo --help\n"
+                + "and " + Program.NAME + " report --help.\n"
                 + "\n"
                 + "Exit status: 0 on success; 2 on a bad command line, with one line on stderr;\n"
                 + "1 when the output cannot be written (stdout closed or full) or the window\n"

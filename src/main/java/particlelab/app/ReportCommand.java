@@ -24,17 +24,8 @@ public final class ReportCommand {
     public static final String NAME = "report";
     /** The default output folder, relative to the working directory. */
     public static final String DEFAULT_OUT = "build/reports/speed-vs-error";
-    /** Exit status: the report was written. */
-    public static final int OK = 0;
-    /**
-     * Exit status: the files could not be written. It is the usage code, as the help has
-     * always promised: an unwritable {@code --out} is a bad command line.
-     */
-    public static final int FAILED = UsageException.EXIT_CODE;
-    /** Exit status: the demos could not run in jME's headless context (no report section). */
-    public static final int HEADLESS_FAILED = 1;
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String OUT = "--out";
     private static final String QUICK = "--quick";
     private static final String TINY = "--tiny";
@@ -83,45 +74,43 @@ public final class ReportCommand {
      * @param args the arguments after "report" (not null)
      * @param out where the summary or help goes (not null)
      * @param err where the progress bar and the error line go (not null)
-     * @return the exit status: {@link #OK}, {@link #FAILED}, {@link #HEADLESS_FAILED} or
-     *     {@link UsageException#EXIT_CODE}
+     * @return the exit status: {@link Program#OK}; {@link Program#FAILED} when the demos
+     *     could not run in jME's headless context (no report section); {@link Program#USAGE}
+     *     for a bad command line or files that could not be written (an unwritable
+     *     {@code --out} is a bad command line, as the help has always promised)
      */
     public static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        Path folder;
-        Path jmh;
-        boolean force;
-        ReportConfig.Size size;
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return OK;
-            }
-            options.atMostOneOf(QUICK, TINY);
-            size = options.has(QUICK) ? ReportConfig.Size.QUICK
-                    : options.has(TINY) ? ReportConfig.Size.TINY : ReportConfig.Size.FULL;
-            folder = path(OUT, options.string(OUT, DEFAULT_OUT));
-            String blocked = SafeFiles.folderRefusal(folder);
-            if (blocked != null) {
-                throw new UsageException(OUT + ": cannot write to "
-                        + SafeFiles.printable(folder) + ": " + blocked);
-            }
-            jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
-            force = options.has(SafeFiles.FORCE);
-            checkTargets(folder, force);
-            // The whole command line was accepted: only now is the folder made.
-            OutputFolders.create(OUT, folder);
-        } catch (UsageException problem) {
-            return CommandSupport.reportUsage(COMMAND, problem, err);
+        return CommandSupport.execute(COMMAND, options(), args, out, err,
+                options -> write(options, out, err));
+    }
+
+    /**
+     * Write the report on an accepted command line.
+     *
+     * @throws UsageException for a bad command line or files that could not be written
+     */
+    private static int write(Options options, PrintStream out, PrintStream err) {
+        options.atMostOneOf(QUICK, TINY);
+        ReportConfig.Size size = options.has(QUICK) ? ReportConfig.Size.QUICK
+                : options.has(TINY) ? ReportConfig.Size.TINY : ReportConfig.Size.FULL;
+        Path folder = path(OUT, options.string(OUT, DEFAULT_OUT));
+        String blocked = SafeFiles.folderRefusal(folder);
+        if (blocked != null) {
+            throw new UsageException(OUT + ": cannot write to "
+                    + SafeFiles.printable(folder) + ": " + blocked);
         }
+        Path jmh = options.has(JMH) ? benchmarks(options.string(JMH)) : null;
+        boolean force = options.has(SafeFiles.FORCE);
+        checkTargets(folder, force);
+        // The whole command line was accepted: only now is the folder made.
+        OutputFolders.create(OUT, folder);
         if (force) {
             try {
                 for (String name : targets()) {
                     SafeFiles.removeToReplace(folder.resolve(name));
                 }
             } catch (IOException failure) {
-                return unwritable(folder, failure, err);
+                throw unwritable(folder, failure);
             }
         }
         if (System.getProperty("java.awt.headless") == null) {
@@ -135,7 +124,7 @@ public final class ReportCommand {
             new SpeedVsErrorReport(ReportConfig.of(size), folder, jmh)
                     .write(err, System.console() != null);
         } catch (IOException failure) {
-            return unwritable(folder, failure, err);
+            throw unwritable(folder, failure);
         }
         try {
             // the demos live in this package, so their section is measured and added here
@@ -143,24 +132,24 @@ public final class ReportCommand {
         } catch (IOException failure) {
             err.println(COMMAND + ": the demos could not run headless for the physics share: "
                     + UsageException.reason(failure));
-            return HEADLESS_FAILED;
+            return Program.FAILED;
         }
         try {
             share.write(folder);
         } catch (IOException failure) {
-            return unwritable(folder, failure, err);
+            throw unwritable(folder, failure);
         }
         out.printf("Wrote the speed-vs-error report (%d files) to %s in %.0f s; open index.md%n",
                 SpeedVsErrorReport.FILES.size() + PhysicsShare.FILES.size(),
                 folder.toAbsolutePath(),
                 (System.nanoTime() - start) / 1e9);
-        return OK;
+        return Program.OK;
     }
 
-    private static int unwritable(Path folder, IOException failure, PrintStream err) {
-        err.println(COMMAND + ": " + OUT + ": could not write to "
-                + SafeFiles.printable(folder) + ": " + UsageException.reason(failure));
-        return FAILED;
+    /** Files that could not be written: a bad --out, reported as a bad command line. */
+    private static UsageException unwritable(Path folder, IOException failure) {
+        return new UsageException(OUT + ": could not write to " + SafeFiles.printable(folder)
+                + ": " + UsageException.reason(failure));
     }
 
     private static Path path(String option, String text) {

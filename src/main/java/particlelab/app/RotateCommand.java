@@ -45,7 +45,7 @@ public final class RotateCommand {
     public static final String HEADER =
             "t,det,orthogonality_error,angle_error,wx,wy,wz,energy,angular_momentum,angle_lag";
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String OMEGA = "--omega";
     private static final String INERTIA = "--inertia";
     private static final String TPF = "--tpf";
@@ -147,7 +147,7 @@ public final class RotateCommand {
         boolean steady = !gyroscopic || inertia.isSteadySpin(omega);
         spin(integrator, inertia, omega, steady, step, steps, null);
         spin(integrator, inertia, omega, steady, step, steps, out);
-        return 0;
+        return Program.OK;
     }
 
     /** The moments from --inertia, as a usage error when no solid body has them. */

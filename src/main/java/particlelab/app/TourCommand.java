@@ -27,6 +27,8 @@ public final class TourCommand {
 
     /** The subcommand's name. */
     public static final String NAME = "tour";
+    /** The command as its error lines name it. */
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String LIST = "--list";
     private static final String QUESTIONS = "--questions";
     private static final String STOP = "--stop";
@@ -48,7 +50,7 @@ public final class TourCommand {
      */
     static Options options() {
         int count = LectureTour.stops().size();
-        return new Options(Main.PROGRAM + " " + NAME,
+        return new Options(Program.NAME + " " + NAME,
                 "Walk lecture 15 slide by slide: each stop opens the slide's demo in the state"
                         + " it needs and shows what to watch for on the HUD; PageDown and"
                         + " PageUp go forward and back, F7 leaves the tour.")
@@ -86,69 +88,56 @@ public final class TourCommand {
      * @return the exit status
      */
     static int run(String[] args, PrintStream out, PrintStream err) {
-        Options options = options();
-        List<LectureTour.Stop> stops = LectureTour.stops();
-        int stop;
-        int frames;
-        File screenshot;
-        float fixedTpf;
-        int[] window;
-        float uiScale;
-        boolean force;
-        try {
-            options.parse(args);
-            if (options.isHelpRequested()) {
-                out.print(options.help());
-                return DemoCommand.OK;
-            }
+        return CommandSupport.execute(COMMAND, options(), args, out, err, options -> {
+            List<LectureTour.Stop> stops = LectureTour.stops();
             if (options.has(LIST)) {
                 for (int i = 0; i < stops.size(); ++i) {
                     out.println(stops.get(i).describe(i + 1));
                 }
-                return DemoCommand.OK;
+                return Program.OK;
             }
             if (options.has(QUESTIONS)) {
                 printQuestions(out);
-                return DemoCommand.OK;
+                return Program.OK;
             }
-            stop = options.intInRange(STOP, 1, 1, stops.size()) - 1;
-            frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
-            String file = options.string(SCREENSHOT, null);
-            screenshot = file == null ? null : new File(file);
-            fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF) : Float.NaN;
-            if (fixedTpf > MAX_FIXED_TPF) {
-                throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
-                        + " s, but was " + fixedTpf);
-            }
-            window = DemoCommand.parseWindow(options.string(WINDOW, null));
-            uiScale = DemoCommand.parseUiScale(options);
-            if (screenshot != null && frames == 0) {
-                throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
-                        + " knows which frame to save");
-            }
-            force = options.has(SafeFiles.FORCE);
-            if (force && screenshot == null) {
-                throw new UsageException(SafeFiles.FORCE + ": replaces the file of "
-                        + SCREENSHOT + "; give it");
-            }
-            if (screenshot != null) {
-                DemoCommand.checkScreenshotPath(file, force);
-            }
-        } catch (UsageException e) {
-            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
-            return DemoCommand.USAGE;
+            return open(options, stops, out, err);
+        });
+    }
+
+    /**
+     * Open the window on a stop, once the whole command line is accepted; a run that failed
+     * leaves no folder it made.
+     *
+     * @throws UsageException naming the first bad option, or a folder that cannot be made
+     */
+    private static int open(Options options, List<LectureTour.Stop> stops, PrintStream out,
+            PrintStream err) {
+        int stop = options.intInRange(STOP, 1, 1, stops.size()) - 1;
+        int frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
+        String file = options.string(SCREENSHOT, null);
+        File screenshot = file == null ? null : new File(file);
+        float fixedTpf = options.has(FIXED_TPF) ? options.positiveFloat(FIXED_TPF) : Float.NaN;
+        if (fixedTpf > MAX_FIXED_TPF) {
+            throw new UsageException(FIXED_TPF + ": must be at most " + MAX_FIXED_TPF
+                    + " s, but was " + fixedTpf);
+        }
+        int[] window = DemoCommand.parseWindow(options.string(WINDOW, null));
+        float uiScale = DemoCommand.parseUiScale(options);
+        if (screenshot != null && frames == 0) {
+            throw new UsageException(SCREENSHOT + ": needs " + FRAMES + " N, so the app"
+                    + " knows which frame to save");
+        }
+        boolean force = options.has(SafeFiles.FORCE);
+        if (force && screenshot == null) {
+            throw new UsageException(SafeFiles.FORCE + ": replaces the file of "
+                    + SCREENSHOT + "; give it");
+        }
+        if (screenshot != null) {
+            DemoCommand.checkScreenshotPath(file, force);
         }
         Path shotFolder = screenshot == null ? null
                 : screenshot.toPath().toAbsolutePath().getParent();
-        Path created = null;
-        try {
-            if (shotFolder != null) {
-                created = OutputFolders.create(SCREENSHOT, shotFolder);
-            }
-        } catch (UsageException e) {
-            err.println(Main.PROGRAM + " " + NAME + ": " + e.getMessage());
-            return DemoCommand.USAGE;
-        }
+        Path created = shotFolder == null ? null : OutputFolders.create(SCREENSHOT, shotFolder);
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
@@ -156,7 +145,7 @@ public final class TourCommand {
         int demoIndex = DemoCatalog.indexOf(stops.get(stop).getDemo());
         int status = DemoCommand.openWindow(demos, demoIndex, stop, frames, screenshot,
                 fixedTpf, uiScale, options.has(PRESENT), null, force, out, err);
-        if (status != DemoCommand.OK && shotFolder != null) {
+        if (status != Program.OK && shotFolder != null) {
             SafeFiles.removeCreated(shotFolder, created);
         }
         return status;

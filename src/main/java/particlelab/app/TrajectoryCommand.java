@@ -37,7 +37,7 @@ public final class TrajectoryCommand {
     /** While printing, rows between checks that stdout still takes them. */
     private static final int ROWS_PER_OUTPUT_CHECK = 1024;
 
-    private static final String COMMAND = "particle-lab " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String P0 = "--p0";
     private static final String V0 = "--v0";
     private static final String MASS = "--mass";
@@ -150,7 +150,7 @@ public final class TrajectoryCommand {
         // Only a run that succeeded gets the warning: a blow-up is its one error line.
         CommandSupport.warnIfUnstable(integrator, start, step, err);
         fly(integrator, start, step, taken, false, out, options.has(ENERGY));
-        return 0;
+        return Program.OK;
     }
 
     /**

@@ -34,7 +34,7 @@ public final class TunnelCommand {
     /** The most shots one run fires. */
     public static final int MAX_SHOTS = 1_000_000;
 
-    private static final String COMMAND = Main.PROGRAM + " " + NAME;
+    private static final String COMMAND = Program.NAME + " " + NAME;
     private static final String SPEED = "--speed";
     private static final String RADIUS = "--radius";
     private static final String THICKNESS = "--thickness";
@@ -133,6 +133,6 @@ public final class TunnelCommand {
                 ? wall.overlapMissProbability(radius, speed, step) : 0.0;
         out.println(HEADER);
         out.println(shots + "," + hits + "," + (shots - hits) + "," + predicted);
-        return 0;
+        return Program.OK;
     }
 }

@@ -6,14 +6,13 @@ import com.jme3.math.Vector3f;
 import com.jme3.scene.Spatial;
 import java.util.List;
 import java.util.function.Supplier;
-import particlelab.accuracy.CostMeter;
-import particlelab.accuracy.ExactPath;
-import particlelab.accuracy.ForceModel;
-import particlelab.accuracy.MotionState;
-import particlelab.accuracy.ReportConfig;
-import particlelab.accuracy.Scheme;
-import particlelab.accuracy.SlideCode;
-import particlelab.accuracy.Stepper;
+import particlelab.reference.CostMeter;
+import particlelab.reference.ExactPath;
+import particlelab.reference.ForceModel;
+import particlelab.reference.MotionState;
+import particlelab.reference.Scheme;
+import particlelab.reference.SlideCode;
+import particlelab.reference.Stepper;
 import particlelab.coursework.RecipeExercise;
 import particlelab.coursework.StudentRunner;
 import particlelab.physics.Force;
@@ -755,7 +754,7 @@ public final class ComparisonLane implements DemoPart {
     /** The meter's run: the lane's method alone, from the launch, 64 steps a call. */
     private void measure(Kind measured, ForceModel forces, Vector3f launchPosition,
             Vector3f launchVelocity, float mass, float stepSeconds) {
-        CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.QUICK));
+        CostMeter meter = new CostMeter(CostMeter.Budget.QUICK);
         CostMeter.Measurement result;
         if (measured == Kind.SLIDE) {
             SlideCode code = slideFactory.get();
@@ -794,7 +793,7 @@ public final class ComparisonLane implements DemoPart {
             Vector3f g = new Vector3f(forces[0], forces[1], forces[2]);
             Vector3f position = new Vector3f();
             Vector3f velocity = new Vector3f();
-            CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.QUICK));
+            CostMeter meter = new CostMeter(CostMeter.Budget.QUICK);
             CostMeter.Measurement result = meter.measure(units -> {
                 position.set(launchPosition);
                 velocity.set(launchVelocity);

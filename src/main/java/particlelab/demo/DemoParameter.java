@@ -14,6 +14,12 @@ import particlelab.view.TextFormat;
  * so applying a value boxes nothing. A state that is no number (a preset, a strategy, a
  * switch) is a {@link #choice}: its values are the indexes 0, 1, ... of a few named values,
  * set by name from the command line ({@code --set preset=glancing}) and shown by name.
+ *
+ * <p>A parameter is one value, and no parameter has a grid: any value in the range reaches
+ * the setter as given, and the setter puts it, unrounded, into the one object that uses it
+ * (a force, a contact response, the launch). The step and the {@link #withStops stops} only
+ * say where a key press or the slider goes next. A state that has only certain values is a
+ * choice.
  */
 public final class DemoParameter {
 

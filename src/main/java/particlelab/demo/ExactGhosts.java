@@ -6,7 +6,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
 import java.util.List;
-import particlelab.accuracy.ExactPath;
+import particlelab.reference.ExactPath;
 import particlelab.physics.Particle;
 import particlelab.view.GhostView;
 import particlelab.view.HudLayout;

@@ -1,7 +1,7 @@
 package particlelab.demo;
 
 import com.jme3.math.Vector3f;
-import particlelab.accuracy.MotionState;
+import particlelab.reference.MotionState;
 import particlelab.coursework.RecipeExercise;
 import particlelab.coursework.StudentRunner;
 import particlelab.view.TextFormat;

@@ -206,6 +206,11 @@ public final class ClipResponseDemo extends DemoState {
         return spheres[lane][which].getBody();
     }
 
+    /** @return e of the physics lane's impulse (0 to 1), the response its rule applies */
+    float getRestitution() {
+        return impulse.getRestitution();
+    }
+
     /**
      * Access the clip the clip lane plays.
      *

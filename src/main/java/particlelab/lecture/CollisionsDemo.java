@@ -519,6 +519,11 @@ public final class CollisionsDemo extends DemoState {
         return response.getRestitution();
     }
 
+    /** @return the preset whose bodies are in play (not null) */
+    Preset getPreset() {
+        return preset;
+    }
+
     /**
      * Return the total momentum of the dynamic balls now.
      *

@@ -6,8 +6,7 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Spatial;
-import particlelab.accuracy.CostMeter;
-import particlelab.accuracy.ReportConfig;
+import particlelab.reference.CostMeter;
 import particlelab.aiming.CheatFrontier;
 import particlelab.aiming.Hitscan;
 import particlelab.collision.Plane;
@@ -270,7 +269,7 @@ public final class FastBulletsDemo extends DemoState {
      * Allocates; called once when the demo starts in an application.
      */
     public void measureCosts() {
-        CostMeter meter = new CostMeter(ReportConfig.of(ReportConfig.Size.TINY));
+        CostMeter meter = new CostMeter(CostMeter.Budget.TINY);
         for (int w = 0; w < WAYS.length; ++w) {
             CheatFrontier.Way way = WAYS[w];
             CheatFrontier timed = frontier;

@@ -2,7 +2,7 @@ package particlelab.lecture;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import particlelab.accuracy.SlideCode;
+import particlelab.reference.SlideCode;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;

@@ -354,6 +354,11 @@ public final class TargetsDemo extends DemoState {
         return score;
     }
 
+    /** @return true if the pane lets shots through (a ghost), false if they bounce off it */
+    boolean isPaneGhost() {
+        return paneGhost;
+    }
+
     /** @return the count of targets destroyed since the demo was created */
     public long countDestroyed() {
         return destroyed;

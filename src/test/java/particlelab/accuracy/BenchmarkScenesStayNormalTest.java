@@ -8,6 +8,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import particlelab.physics.Particle;
+import particlelab.reference.MotionState;
+import particlelab.reference.Scheme;
+import particlelab.reference.Stepper;
+
 
 /**
  * Every benchmark scene keeps its state in the normal float range however long a measurement

@@ -11,6 +11,9 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.reference.CostMeter;
+import particlelab.reference.Scheme;
+
 
 /**
  * The benchmark rows the report promises: the old ones and one per force mix, path and N,
@@ -34,7 +37,7 @@ class BenchmarkStudyTest {
     @Test
     void quickSweepWritesEveryPromisedRowToTheCsv(@TempDir Path temp) throws IOException {
         ReportConfig quick = ReportConfig.of(ReportConfig.Size.QUICK);
-        CostMeter shortMeter = new CostMeter(ReportConfig.of(ReportConfig.Size.TINY));
+        CostMeter shortMeter = new CostMeter(CostMeter.Budget.TINY);
         ProgressBar progress = new ProgressBar(new PrintStream(new ByteArrayOutputStream(),
                 true), BenchmarkStudy.units(quick), false);
         BenchmarkStudy.run(quick, shortMeter, progress).write(temp.resolve("benchmarks.csv"));

@@ -14,7 +14,9 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.reference.CostMeter;
 import particlelab.world.Detection;
+
 
 /** The collision section's files and prose, written from a tiny study. */
 class CollisionSectionTest {
@@ -29,7 +31,7 @@ class CollisionSectionTest {
     @BeforeAll
     static void writeTinySection() throws IOException {
         ReportConfig tiny = ReportConfig.of(ReportConfig.Size.TINY);
-        study = CollisionStudy.run(tiny, new CostMeter(tiny));
+        study = CollisionStudy.run(tiny, new CostMeter(tiny.budget()));
         folder = shared.resolve("report");
         Files.createDirectories(folder);
         Files.write(folder.resolve("index.md"), EARLIER.getBytes(StandardCharsets.UTF_8));

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import particlelab.reference.VelocityVerlet;
+
 
 /**
  * The report's energy section (issue 32): the numerical energy's fitted orders are the

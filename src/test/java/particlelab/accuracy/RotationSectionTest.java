@@ -14,8 +14,10 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.reference.CostMeter;
 import particlelab.rigid.RotationIntegrator.Angular;
 import particlelab.rigid.RotationIntegrator.Orientation;
+
 
 /** The rotation section's measurements, files and prose, written from a tiny-timed study. */
 class RotationSectionTest {
@@ -32,7 +34,7 @@ class RotationSectionTest {
     @BeforeAll
     static void writeSection() throws IOException {
         ReportConfig tiny = ReportConfig.of(ReportConfig.Size.TINY);
-        study = RotationStudy.run(new CostMeter(tiny));
+        study = RotationStudy.run(new CostMeter(tiny.budget()));
         folder = shared.resolve("report");
         Files.createDirectories(folder);
         Files.write(folder.resolve("index.md"), EARLIER.getBytes(StandardCharsets.UTF_8));

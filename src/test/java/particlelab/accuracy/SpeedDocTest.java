@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import particlelab.reference.CostMeter;
+
 
 /**
  * {@code docs/speed.md} shows the report's side-by-side section as a full report wrote it:

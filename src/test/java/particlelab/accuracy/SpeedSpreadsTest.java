@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import particlelab.reference.CostMeter;
+
 
 /** The side-by-side section's verdicts, labels and child JVM, on fixed numbers. */
 class SpeedSpreadsTest {

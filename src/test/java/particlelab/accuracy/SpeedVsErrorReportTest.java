@@ -17,6 +17,8 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.reference.Scheme;
+
 
 /** The report's files, written by {@link SpeedVsErrorReport} on the tiny sweep. */
 class SpeedVsErrorReportTest {

@@ -8,6 +8,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import particlelab.physics.ParticleIntegrator;
+import particlelab.reference.Scheme;
+
 
 class StabilityMapTest {
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import org.junit.jupiter.api.Test;
+import particlelab.collision.Plane;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -56,6 +57,42 @@ class FlightTest {
         assertFalse(shot.fly(particle(0f, 0f, 20f, 24.5f), H, 10, landing));
         assertFalse(landing.hasLanded());
         assertEquals(10, landing.getSteps());
+    }
+
+    /**
+     * A step swept against a target of the caller's (a hitscan's disc or sphere) is the
+     * integrator's step and that sweep on its segment, and the crossing is interpolated on the
+     * same segment: the hitscan's shots go through this one helper, bit for bit what it did
+     * with its own loop.
+     */
+    @Test
+    void aStepSweptAgainstATargetIsTheStepAndTheSweepOnItsSegment() {
+        ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+        Flight flight = new Flight(gravity);
+        Particle flown = particle(0.25f, 1.5f, 300f, 0.7f);
+        Particle byHand = particle(0.25f, 1.5f, 300f, 0.7f);
+        // A plane x = 4 facing back along x, swept with radius 0 as the disc's face is.
+        Plane face = new Plane(new Vector3f(-1f, 0f, 0f), -4f);
+        Vector3f normal = new Vector3f();
+        Flight.Sweep sweep = (from, to) -> face.sweep(from, to, 0f, normal);
+        for (int step = 0; step < 3; ++step) {
+            Vector3f before = byHand.position.clone();
+            gravity.step(byHand, H);
+            double expected = face.sweep(before, byHand.position, 0f, new Vector3f());
+            double fraction = flight.step(flown, H, sweep);
+            assertEquals(expected, fraction, 0.0, "step " + step);
+            assertEquals(byHand.position, flown.position);
+            assertEquals(byHand.velocity, flown.velocity);
+            if (fraction != Flight.NO_LANDING) {
+                // the same double sums as before the helper: no tolerance
+                assertEquals(before.x + fraction * ((double) byHand.position.x - before.x),
+                        flight.crossingX(fraction), 0.0);
+                assertEquals(before.y + fraction * ((double) byHand.position.y - before.y),
+                        flight.crossingY(fraction), 0.0);
+                return;
+            }
+        }
+        throw new AssertionError("300 m/s reaches x = 4 m within the first steps of 1/60 s");
     }
 
     private static Particle particle(float x, float y, float vx, float vy) {

@@ -114,7 +114,7 @@ class BadInputTest {
         int code = Main.run(new String[] {"aim", "--distance", "100", "--vx", "20"},
                 new PrintStream(full, false, StandardCharsets.UTF_8), err);
         String message = errBytes.toString(StandardCharsets.UTF_8);
-        assertEquals(Main.OUTPUT_FAILED, code, message);
+        assertEquals(Program.FAILED, code, message);
         assertEquals(1, message.split("\\R").length, message);
         assertTrue(message.startsWith("particle-lab: could not write the output"), message);
     }
@@ -131,7 +131,7 @@ class BadInputTest {
         int code = Main.run(new String[] {"trajectory", "--steps", "1000000"},
                 new PrintStream(closed, false, StandardCharsets.UTF_8),
                 new PrintStream(errBytes, true, StandardCharsets.UTF_8));
-        assertEquals(Main.OUTPUT_FAILED, code);
+        assertEquals(Program.FAILED, code);
         // At most one check interval of rows (1024 rows of at most 100 bytes) after the
         // failure, plus the buffer of the PrintStream.
         assertTrue(closed.attempted < 200_000, "attempted " + closed.attempted + " bytes");
@@ -181,7 +181,7 @@ class BadInputTest {
 
     private static CommandRun assertOneLine(String named, String... args) {
         CommandRun run = CommandRun.of(args);
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals("", run.out, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         assertTrue(run.err.contains(named), run.toString());
@@ -191,7 +191,7 @@ class BadInputTest {
     }
 
     private static void assertEscaped(CommandRun run) {
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         String line = run.err.substring(0, run.err.length() - System.lineSeparator().length());
         for (int i = 0; i < line.length(); ++i) {
             assertFalse(Character.isISOControl(line.charAt(i)), run.toString());

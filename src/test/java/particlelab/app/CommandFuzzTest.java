@@ -84,7 +84,7 @@ class CommandFuzzTest {
     })
     void hostileCommandLineIsOneLineAndExitTwo(String commandLine) {
         CommandRun run = CommandRun.of(commandLine.split(" "));
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         assertFalse(run.err.contains("Exception"), run.toString());
         assertFalse(run.err.contains("at particlelab"), run.toString());
@@ -166,7 +166,7 @@ class CommandFuzzTest {
         if (run.code == 0) {
             return clean;
         }
-        return run.code == UsageException.EXIT_CODE && run.errLines().size() == 1 && clean;
+        return run.code == Program.USAGE && run.errLines().size() == 1 && clean;
     }
 
     /** The declared options of a command, the source of its help. */

@@ -80,4 +80,22 @@ class DemoCatalogTest {
         assertEquals(-1, DemoCatalog.indexOf("0"));
         assertEquals(-1, DemoCatalog.indexOf("no such demo"));
     }
+
+    /**
+     * {@code --particles N} reaches the one demo that takes a count (the fountain) through
+     * the catalogue, with no cast in the command; every other demo is made as by name.
+     */
+    @Test
+    void aParticleCountReachesOnlyTheDemoThatTakesOne() {
+        String counted = DemoCatalog.nameWithParticleCount();
+        assertEquals("fountain", counted);
+        List<DemoState> demos = DemoCatalog.createAll(2000);
+        List<DemoState> plain = DemoCatalog.createAll();
+        for (int i = 0; i < demos.size(); ++i) {
+            boolean takesCount = DemoCatalog.entries().get(i).hasParticleCount();
+            assertEquals(i == DemoCatalog.indexOf(counted), takesCount, demos.get(i).getTitle());
+            assertEquals(takesCount ? 2000 : plain.get(i).countSimulatedParticles(),
+                    demos.get(i).countSimulatedParticles(), demos.get(i).getTitle());
+        }
+    }
 }

@@ -15,34 +15,34 @@ class DemoCommandTest {
 
     @Test
     void listPrintsTheDemoNamesOnePerLine() {
-        assertEquals(DemoCommand.OK, run("--list"));
+        assertEquals(Program.OK, run("--list"));
         assertEquals(String.join(System.lineSeparator(), DemoCatalog.names())
                 + System.lineSeparator(), text(out));
     }
 
     @Test
     void badArgumentsAreUsageErrorsThatSayWhy() {
-        assertEquals(DemoCommand.USAGE, run("--frames", "zero"));
+        assertEquals(Program.USAGE, run("--frames", "zero"));
         assertTrue(text(err).startsWith("particle-lab demo: --frames: must be a whole number"),
                 text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("--fixed-tpf", "-1"));
+        assertEquals(Program.USAGE, run("--fixed-tpf", "-1"));
         assertTrue(text(err).contains("--fixed-tpf"), text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("--fixed-tpf", "2"));
+        assertEquals(Program.USAGE, run("--fixed-tpf", "2"));
         assertTrue(text(err).contains("--fixed-tpf: must be at most 1.0 s, but was 2.0"),
                 text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("gyroscope"));
+        assertEquals(Program.USAGE, run("gyroscope"));
         assertTrue(text(err).contains("no demo named 'gyroscope'; the demos are uniform,"));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("aiming", "--screenshot", "x.png"));
+        assertEquals(Program.USAGE, run("aiming", "--screenshot", "x.png"));
         assertTrue(text(err).contains("--screenshot: needs --frames N"), text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("aiming", "--frames"));
+        assertEquals(Program.USAGE, run("aiming", "--frames"));
         assertTrue(text(err).contains("--frames: needs a value"), text(err));
         err.reset();
-        assertEquals(DemoCommand.USAGE, run("aiming", "--demo", "drag"));
+        assertEquals(Program.USAGE, run("aiming", "--demo", "drag"));
         assertTrue(text(err).contains("already named aiming"), text(err));
     }
 

@@ -18,7 +18,7 @@ class DemoPresentOptionTest {
     void demoAndTourHelpListPresent() {
         for (String command : new String[] {"demo", "tour"}) {
             CommandRun run = CommandRun.of(command, "--help");
-            assertEquals(DemoCommand.OK, run.code, run.toString());
+            assertEquals(Program.OK, run.code, run.toString());
             assertTrue(run.out.contains("--present"), command + ": " + run.out);
             assertTrue(run.out.contains("F8"), command + ": " + run.out);
         }
@@ -29,7 +29,7 @@ class DemoPresentOptionTest {
         Path out = folder.resolve("out");
         CommandRun run = CommandRun.of("demo", "drag", "--present", "--frames", "10",
                 "--export", out.toString());
-        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         assertTrue(run.err.startsWith("particle-lab demo: --present: shows the window in"
                 + " presentation mode, but --export without --screenshot runs with no window"),

@@ -101,7 +101,7 @@ class DemoPresetsTest {
     @Test
     void aWrongNameForAChoiceIsOneLineListingTheNames() {
         CommandRun run = CommandRun.of("demo", "collisions", "--set", "preset=sideways");
-        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         String line = run.errLines().get(0);
         assertTrue(line.startsWith("particle-lab demo: --set preset=sideways: sideways is not"
@@ -114,7 +114,7 @@ class DemoPresetsTest {
     @Test
     void aNumberForAChoiceIsRefusedWithItsNames() {
         CommandRun run = CommandRun.of("demo", "iterate", "--set", "strategy=1");
-        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertTrue(run.err.contains("strategy (aiming strategy) one of"
                 + " lecture|bisection|secant|believable"), run.toString());
         assertTrue(run.err.contains("instant (instant mode) one of off|on"), run.toString());
@@ -123,7 +123,7 @@ class DemoPresetsTest {
     @Test
     void theHelpNamesEveryDemosChoices() {
         CommandRun run = CommandRun.of("demo", "--help");
-        assertEquals(DemoCommand.OK, run.code, run.toString());
+        assertEquals(Program.OK, run.code, run.toString());
         String help = run.out.replaceAll("\\s+", " ");
         for (String named : new String[] {"preset=head-on|glancing|cradle|paddle",
             "strategy=lecture|bisection|secant|believable", "drag=linear|quadratic",

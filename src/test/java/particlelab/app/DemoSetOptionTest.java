@@ -23,7 +23,7 @@ class DemoSetOptionTest {
     @Test
     void outOfRangeValueIsOneLineWithEveryRangeAndExitTwo() {
         CommandRun run = CommandRun.of("demo", "drag", "--set", "b=7");
-        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         String line = run.errLines().get(0);
         assertTrue(line.startsWith("particle-lab demo: --set b=7: b = 7.0 is out of range;"
@@ -37,7 +37,7 @@ class DemoSetOptionTest {
     void unknownNameAndBadValueAreOneLineEach() {
         for (String setting : new String[] {"q=1", "b", "b=fast", "h=1/0", "b=NaN"}) {
             CommandRun run = CommandRun.of("demo", "drag", "--set", setting);
-            assertEquals(DemoCommand.USAGE, run.code, run.toString());
+            assertEquals(Program.USAGE, run.code, run.toString());
             assertEquals(1, run.errLines().size(), run.toString());
             assertTrue(run.err.contains("the parameters are h (fixed step)"), run.toString());
         }
@@ -47,7 +47,7 @@ class DemoSetOptionTest {
     void anUnknownNameIsNamedWhateverItsValue() {
         for (String setting : new String[] {"preset=x", "preset=1"}) {
             CommandRun run = CommandRun.of("demo", "drag", "--set", setting);
-            assertEquals(DemoCommand.USAGE, run.code, run.toString());
+            assertEquals(Program.USAGE, run.code, run.toString());
             assertEquals(1, run.errLines().size(), run.toString());
             assertTrue(run.err.contains("--set " + setting + ": no parameter named preset;"),
                     run.toString());

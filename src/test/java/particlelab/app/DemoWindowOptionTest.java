@@ -34,7 +34,7 @@ class DemoWindowOptionTest {
                 new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
         String message = err.toString(StandardCharsets.UTF_8);
-        assertEquals(DemoCommand.USAGE, status);
+        assertEquals(Program.USAGE, status);
         assertTrue(message.startsWith("particle-lab demo: --window: must be WIDTHxHEIGHT"),
                 message);
         assertEquals(1, message.split("\n", -1).length - 1, message);

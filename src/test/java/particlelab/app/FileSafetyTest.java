@@ -209,7 +209,7 @@ class FileSafetyTest {
 
     /** Exit 2, nothing on stdout, one line on stderr naming the option and the target. */
     private static void assertRefused(CommandRun run, String option, String target) {
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals("", run.out, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         assertTrue(run.err.contains(option), run.toString());

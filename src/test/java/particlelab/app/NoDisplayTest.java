@@ -56,7 +56,7 @@ class NoDisplayTest {
         List<String> errLines = Files.readAllLines(err, StandardCharsets.UTF_8);
         String report = "stderr: " + errLines + ", stdout: "
                 + Files.readAllLines(out, StandardCharsets.UTF_8);
-        assertEquals(DemoCommand.FAILED, child.exitValue(), report);
+        assertEquals(Program.FAILED, child.exitValue(), report);
         assertEquals(1, errLines.size(), report);
         assertTrue(errLines.get(0).startsWith("particle-lab: cannot open the window: no display"),
                 report);

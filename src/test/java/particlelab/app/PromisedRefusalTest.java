@@ -127,7 +127,7 @@ class PromisedRefusalTest {
         // The same text given to an option is refused too.
         String value = setting.substring(2);
         CommandRun run = CommandRun.of("trajectory", "--steps", "1", "--mass", value);
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
     }
 
     /** What --set documents still reads: decimals and fractions. */
@@ -208,7 +208,7 @@ class PromisedRefusalTest {
 
     private static CommandRun assertRefused(String named, String... args) {
         CommandRun run = CommandRun.of(args);
-        assertEquals(UsageException.EXIT_CODE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertEquals("", run.out, run.toString());
         assertEquals(1, run.errLines().size(), run.toString());
         assertTrue(run.err.contains(named), run.toString());

@@ -30,7 +30,7 @@ class TourCommandTest {
     @Test
     void listPrintsEveryStopInOrderWithItsDemoAndSettings() {
         CommandRun run = CommandRun.of("tour", "--list");
-        assertEquals(DemoCommand.OK, run.code, run.toString());
+        assertEquals(Program.OK, run.code, run.toString());
         List<LectureTour.Stop> stops = LectureTour.stops();
         List<String> lines = run.outLines();
         assertEquals(stops.size(), lines.size(), run.toString());
@@ -189,7 +189,7 @@ class TourCommandTest {
         int count = LectureTour.stops().size();
         for (String bad : new String[] {"0", Integer.toString(count + 1), "two"}) {
             CommandRun run = CommandRun.of("tour", "--stop", bad);
-            assertEquals(DemoCommand.USAGE, run.code, run.toString());
+            assertEquals(Program.USAGE, run.code, run.toString());
             assertEquals(1, run.errLines().size(), run.toString());
             assertTrue(run.err.startsWith("particle-lab tour: --stop"), run.toString());
             assertTrue(run.err.contains(Integer.toString(count)), run.toString());
@@ -199,14 +199,14 @@ class TourCommandTest {
     @Test
     void aScreenshotNeedsFrames() {
         CommandRun run = CommandRun.of("tour", "--stop", "2", "--screenshot", "x.png");
-        assertEquals(DemoCommand.USAGE, run.code, run.toString());
+        assertEquals(Program.USAGE, run.code, run.toString());
         assertTrue(run.err.contains("--screenshot: needs --frames N"), run.toString());
     }
 
     @Test
     void helpNamesTheKeysAndOptions() {
         CommandRun run = CommandRun.of("tour", "--help");
-        assertEquals(DemoCommand.OK, run.code, run.toString());
+        assertEquals(Program.OK, run.code, run.toString());
         for (String option : new String[] {"--list", "--stop", "--frames", "--fixed-tpf",
             "--screenshot", "--window", "--ui-scale", "--present", "--force", "PageDown",
             "PageUp"}) {

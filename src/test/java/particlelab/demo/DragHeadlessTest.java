@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
-import particlelab.accuracy.ExactPath;
+import particlelab.reference.ExactPath;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.physics.Gravity;

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import particlelab.accuracy.ExactPath;
+import particlelab.reference.ExactPath;
 import particlelab.demo.DemoParticle;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;

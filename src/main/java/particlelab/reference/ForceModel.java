@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import com.jme3.math.Vector3f;
 import particlelab.physics.Force;

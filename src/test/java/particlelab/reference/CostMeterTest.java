@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
+
 /**
  * The meter's arithmetic on a scripted clock: no test times code. Each call of a workload
  * advances the fake clock by the time it is scripted to take, so every figure is exact.
@@ -18,7 +19,7 @@ import org.junit.jupiter.api.Test;
  */
 class CostMeterTest {
 
-    private static final ReportConfig TINY = ReportConfig.of(ReportConfig.Size.TINY);
+    private static final CostMeter.Budget TINY = CostMeter.Budget.TINY;
     private static final long MS = 1_000_000L;
     private static final int UNITS = CostMeter.UNITS_PER_CLOCK_READ;
 

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import com.jme3.math.Vector3f;
 import particlelab.physics.Force;
@@ -7,6 +7,7 @@ import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.world.StateSlab;
+
 
 /**
  * The continuous path of one particle under the forces of its own integrator, in double
@@ -17,7 +18,8 @@ import particlelab.world.StateSlab;
  * then (a coefficient changed live takes effect from that moment, for both):
  * <ul>
  * <li>gravity and linear drag only (uniform motion, gravity, gravity + linear drag): the
- * closed form of {@link ClosedForms#gravityLinearDrag}, {@code V(t) = e^{−kt}·V0 + t·φ1(kt)·g},
+ * closed form (the report's {@code ClosedForms.gravityLinearDrag}),
+ * {@code V(t) = e^{−kt}·V0 + t·φ1(kt)·g},
  * {@code P(t) = P0 + t·φ1(kt)·V0 + t²·φ2(kt)·g}, {@code k = b/m}, evaluated from the state at
  * the last change of the forces (the launch, usually);</li>
  * <li>any other force (quadratic drag, thrust, wind, a spring): classic RK4 with at most

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -10,8 +10,11 @@ import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
+import particlelab.accuracy.ClosedForms;
+import particlelab.accuracy.OrderFit;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
+
 
 class SteppersTest {
 

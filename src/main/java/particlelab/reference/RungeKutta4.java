@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * The classic fourth-order Runge–Kutta method, in double precision. The forces depend on V

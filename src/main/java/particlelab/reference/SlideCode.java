@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import com.jme3.math.Vector3f;
 import java.util.Arrays;
@@ -8,13 +8,14 @@ import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.Thrust;
 
+
 /**
  * A free-flight demo's update transcribed from the lecture's slide, as the slide writes it:
  * jME's allocating {@code mult}/{@code add}/{@code divide}/{@code normalize}, each result a new
  * {@code Vector3f} that replaces the particle's position or velocity, and the frame's
  * {@code tpf} as the step. The demos' comparison lane runs it beside the shared integrator
- * (which does the same step in place); {@link LectureStyleParticle} is the same style kept as
- * a benchmark row.
+ * (which does the same step in place); the report's {@code LectureStyleParticle} is the same
+ * style kept as a benchmark row.
  *
  * <p>Each kind's {@link #listing()} is its {@link #update} line for line, so the HUD can show
  * the code that moves the lane's sphere. The coefficients are read live from the demo's own

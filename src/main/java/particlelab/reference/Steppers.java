@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * Checks shared by the stepper constructors.

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * Forward (explicit) Euler, in double precision: both updates use the state at the start of

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * One stepping method bound to one scene's forces: it advances a {@link MotionState} by steps

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * The exact update for gravity plus linear drag, the exponential step: with {@code k = b/m}

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * The explicit midpoint method, a second-order Runge–Kutta method, in double precision:

@@ -1,7 +1,8 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
+
 
 /**
  * The report's in-process timing loop: runs a piece of work until the JIT has settled, then
@@ -14,6 +15,45 @@ import java.util.Arrays;
  * ratios to each other, not as absolute numbers.
  */
 public final class CostMeter {
+
+    /**
+     * How long each timing loop runs: the report's sizes (a full report, a quick one, a tiny
+     * one for tests) and the demos' in-process meters use these three budgets.
+     */
+    public enum Budget {
+        /** Timings long enough to be steady: 300 ms warm-up, 7 rounds of 60 ms. */
+        FULL(300, 60, 7),
+        /** A first look: 80 ms warm-up, 5 rounds of 20 ms. */
+        QUICK(80, 20, 5),
+        /** Seconds for a whole report, for tests: 5 ms warm-up, 3 rounds of 2 ms. */
+        TINY(5, 2, 3);
+
+        private static final long NANOS_PER_MILLI = 1_000_000L;
+        private final long warmupMillis;
+        private final long roundMillis;
+        private final int rounds;
+
+        Budget(long warmupMillis, long roundMillis, int rounds) {
+            this.warmupMillis = warmupMillis;
+            this.roundMillis = roundMillis;
+            this.rounds = rounds;
+        }
+
+        /** @return how long each timing loop warms up before measuring (in nanoseconds) */
+        public long warmupNanos() {
+            return warmupMillis * NANOS_PER_MILLI;
+        }
+
+        /** @return how long each measured round lasts, at least (in nanoseconds) */
+        public long roundNanos() {
+            return roundMillis * NANOS_PER_MILLI;
+        }
+
+        /** @return how many rounds are measured; the median is reported (&ge;1) */
+        public int rounds() {
+            return rounds;
+        }
+    }
 
     /** A clock: the thread's CPU time in the report, a scripted one in tests. */
     @FunctionalInterface
@@ -39,7 +79,7 @@ public final class CostMeter {
          * @param median the median
          * @param max the largest value
          */
-        Spread(double min, double median, double max) {
+        public Spread(double min, double median, double max) {
             this.min = min;
             this.median = median;
             this.max = max;
@@ -195,22 +235,22 @@ public final class CostMeter {
     /**
      * Create a meter on the thread's CPU time.
      *
-     * @param config the timing budget (not null)
+     * @param budget the timing budget (not null)
      */
-    public CostMeter(ReportConfig config) {
-        this(config, threadCpuClock());
+    public CostMeter(Budget budget) {
+        this(budget, threadCpuClock());
     }
 
     /**
      * Create a meter on a given clock (tests: a scripted one).
      *
-     * @param config the timing budget (not null)
+     * @param budget the timing budget (not null)
      * @param clock the clock (not null)
      */
-    CostMeter(ReportConfig config, Clock clock) {
-        this.warmupNanos = config.warmupNanos();
-        this.roundNanos = config.roundNanos();
-        this.rounds = config.rounds();
+    CostMeter(Budget budget, Clock clock) {
+        this.warmupNanos = budget.warmupNanos();
+        this.roundNanos = budget.roundNanos();
+        this.rounds = budget.rounds();
         this.clock = clock;
     }
 

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * The stepping methods compared, with what theory says about each: the order of the global

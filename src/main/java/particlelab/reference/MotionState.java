@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * A point's position and velocity in double precision, for the reference steppers. The arrays

@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -7,10 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Vector3f;
 import org.junit.jupiter.api.Test;
 import particlelab.Allocations;
+import particlelab.accuracy.ClosedForms;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
+
 
 /**
  * The exact path a demo draws as a particle's ghost: the closed form where one exists, RK4

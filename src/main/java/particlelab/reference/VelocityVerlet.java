@@ -1,4 +1,4 @@
-package particlelab.accuracy;
+package particlelab.reference;
 
 /**
  * Velocity Verlet as games write it, in double precision:
