@@ -20,6 +20,7 @@ import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.SceneLabel;
 import particlelab.view.ScreenRect;
+import particlelab.view.TextFormat;
 import particlelab.view.TextMeasure;
 import particlelab.view.Trail;
 import particlelab.world.StepListener;
@@ -57,6 +58,21 @@ final class DemoScene {
     private static final int SPHERE_PENALTY = 1_000;
     /** Slot score: reaching below the ground line (kept only where nothing above is free). */
     private static final int GROUND_PENALTY = 500;
+    /**
+     * Slot score: lying over a trail as drawn. Taken, on a plate, only where every slot
+     * covers a trail or worse: a label over a trail beats no label (issue 29 §3: the
+     * linear-drag sphere had none when its trail and its neighbours' hemmed it in).
+     */
+    private static final int TRAIL_PENALTY = 600;
+    /** The most a slot's trail points within the clearance add to its score. */
+    private static final int MAX_NEAR_POINTS = 99;
+    /** An edge label's arrows: its sphere is beyond the scene's right or left edge. */
+    private static final String RIGHT_ARROW = " \u2192";
+    private static final String LEFT_ARROW = "\u2190 ";
+    /** An edge label's position's decimals (metres). */
+    private static final int EDGE_DECIMALS = 1;
+    /** How many label heights an edge label moves up, at most, to leave a text free. */
+    private static final int EDGE_TRIES = 6;
     /** The least ground shown below y = 0, in scene label heights. */
     private static final float GROUND_LABEL_ROOM = 1.8f;
     /** Points sampled along each velocity arrow, which a label avoids like a trail. */
@@ -134,6 +150,14 @@ final class DemoScene {
     private float[] labelWidths = new float[0];
     private float[] sphereX = new float[0];
     private float[] sphereY = new float[0];
+    /**
+     * Per particle: true while its label stands at the scene's edge, its sphere beyond it
+     * (the text then says where: "target (physics) at x = 21.0 m →"), and that text.
+     */
+    private boolean[] atEdge = new boolean[0];
+    private StringBuilder[] edgeTexts = new StringBuilder[0];
+    /** The HUD's scene rectangle (live): a sphere beyond its sides gets an edge label. */
+    private ScreenRect sceneArea = new ScreenRect();
     /** Scratch: the trail points near the label being placed, on the screen (px). */
     private float[] nearX = new float[0];
     private float[] nearY = new float[0];
@@ -346,6 +370,11 @@ final class DemoScene {
         labelWidths = new float[count];
         sphereX = new float[count];
         sphereY = new float[count];
+        atEdge = new boolean[count];
+        edgeTexts = new StringBuilder[count];
+        for (int i = 0; i < count; ++i) {
+            edgeTexts[i] = new StringBuilder(64);
+        }
         nearX = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
         nearY = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
     }
@@ -427,6 +456,7 @@ final class DemoScene {
         hudRects.add(hud.getGraph());
         panelSlot = hud.getSidePanel();
         graphSlot = hud.getGraph();
+        sceneArea = hud.getScene();
         // The ground's marks thinned to a stride that keeps two shown from touching.
         float widestMark = 0f;
         int marks = grid.countGroundMarks();
@@ -780,6 +810,9 @@ final class DemoScene {
                 view.hideLabel();
                 continue;
             }
+            if (placeEdgeLabel(i, view, radius)) {
+                continue;
+            }
             float width = labelWidths[i];
             gatherTrailPoints(sphereX[i], sphereY[i], radius, width);
             int current = fresh ? -1 : view.getLabelSlot();
@@ -803,16 +836,101 @@ final class DemoScene {
             int slot = keep ? current : best;
             LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
             if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
-                    || (keep ? currentScore : bestScore) >= SPHERE_PENALTY
-                    || coversNearPoint(chosen)) {
+                    || (keep ? currentScore : bestScore) >= SPHERE_PENALTY) {
                 // The sphere is under the panel or the graph, or every slot beside it covers
-                // text, a sphere or a trail point, or leaves the window (large text on a
-                // crowded scene): the label waits for a free slot.
+                // text, a sphere or a post, or leaves the window (large text on a crowded
+                // scene): the label waits for a free slot.
                 view.hideLabel();
             } else {
-                view.placeLabel(plane, labelSize, slot, chosen);
+                // The least bad slot: over a trail only where every slot is, then on a plate
+                // that hides the trail under it, so the name stays readable.
+                view.placeLabel(plane, labelSize, slot, chosen, coversNearPoint(chosen));
             }
         }
+    }
+
+    /**
+     * Give a particle whose sphere lies beyond the scene's left or right side a label at that
+     * side, on a plate, at the sphere's height (above the ground line), saying where it is
+     * ("target (physics) at x = 21.0 m →"): a body that rolled out of the framed view is not
+     * lost from it (issue 29 §3, clip's physics lane). When the sphere is back, its label is
+     * its name again. Allocates nothing once the edge text has been this long.
+     *
+     * @return true if the particle's label was handled here (its sphere is beyond a side)
+     */
+    private boolean placeEdgeLabel(int i, ParticleView view, float radius) {
+        boolean beyondRight = sphereX[i] - radius > sceneArea.getRight();
+        boolean beyondLeft = sphereX[i] + radius < sceneArea.getX();
+        DemoParticle particle = particles.get(i);
+        if (!beyondRight && !beyondLeft) {
+            if (atEdge[i]) {
+                atEdge[i] = false;
+                view.setLabelText(particle.getLabel());
+            }
+            return false;
+        }
+        StringBuilder text = edgeTexts[i];
+        text.setLength(0);
+        if (beyondLeft) {
+            text.append(LEFT_ARROW);
+        }
+        text.append(particle.getLabel()).append(" at x = ");
+        TextFormat.appendFixed(text, particle.getParticle().position.x, EDGE_DECIMALS)
+                .append(" m");
+        if (beyondRight) {
+            text.append(RIGHT_ARROW);
+        }
+        atEdge[i] = true;
+        view.setLabelText(text);
+        float width = measure.width(text, labelSize);
+        float x = beyondRight ? fixedArea.getRight() - width : fixedArea.getX();
+        float lowest = Math.max(fixedArea.getY(), plane.screenY(0f) + 0.15f * labelHeight);
+        float highest = fixedArea.getTop() - labelHeight;
+        float y = Math.max(lowest, Math.min(highest, sphereY[i] - labelHeight / 2f));
+        for (int tries = 0; tries < EDGE_TRIES; ++tries) {
+            chosen.set(x, y, width, labelHeight);
+            if (isFreeForEdgeLabel(chosen, i, radius)) {
+                view.placeLabel(plane, labelSize, -1, chosen, true);
+                return true;
+            }
+            y += labelHeight;
+            if (y > highest) {
+                break;
+            }
+        }
+        view.hideLabel();
+        return true;
+    }
+
+    /**
+     * Test whether an edge label's place covers no HUD text, no fixed label, no label placed
+     * before it and no sphere.
+     */
+    private boolean isFreeForEdgeLabel(ScreenRect place, int self, float radius) {
+        if (!textArea.contains(place) || coversHud(place)) {
+            return false;
+        }
+        for (int i = 0; i < particles.size(); ++i) {
+            // sphereX is NaN for a culled particle: it covers nothing.
+            if (i != self && sphereX[i] + radius > place.getX()
+                    && sphereX[i] - radius < place.getRight()
+                    && sphereY[i] + radius > place.getY()
+                    && sphereY[i] - radius < place.getTop()) {
+                return false;
+            }
+        }
+        for (int i = 0; i < fixedLabels.size(); ++i) {
+            SceneLabel label = fixedLabels.get(i);
+            if (label.isPlaced() && label.getRect().intersects(place)) {
+                return false;
+            }
+        }
+        for (int i = 0; i < self; ++i) {
+            if (viewOf(particles.get(i)).getLabelRect().intersects(place)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
@@ -940,16 +1058,17 @@ final class DemoScene {
         float right = place.getRight() + trailClearance;
         float bottom = place.getY() - trailClearance;
         float top = place.getTop() + trailClearance;
+        int near = 0;
         for (int i = 0; i < nearCount; ++i) {
             if (nearX[i] >= left && nearX[i] <= right && nearY[i] >= bottom
                     && nearY[i] <= top) {
-                ++score;
+                ++near;
             }
         }
-        // Over a trail as drawn: never taken, so a free place below the ground line wins over
-        // one that touches a trail only in its clearance and would then be hidden.
+        score += Math.min(near, MAX_NEAR_POINTS);
+        // Over a trail as drawn: worse than below the ground line, better than no label.
         if (coversNearPoint(place)) {
-            score += SPHERE_PENALTY;
+            score += TRAIL_PENALTY;
         }
         return score;
     }

@@ -3,6 +3,7 @@ package particlelab.view;
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
 import com.jme3.material.Material;
+import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.queue.RenderQueue;
@@ -23,16 +24,31 @@ public final class ParticleView {
     private static final int SPHERE_SAMPLES = 24;
     /** Velocity arrows show this much travel (in seconds); labels keep clear of them. */
     public static final float ARROW_SECONDS = 0.4f;
+    /**
+     * A label's plate: the scene's background colour, nearly opaque, so a label that has to
+     * lie over a trail (no free slot beside its sphere) stays readable.
+     */
+    private static final ColorRGBA PLATE_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.9f);
+    /**
+     * The plate and the label stand this far in front of the particles' plane (in metres):
+     * the plate hides what lies under it, the label is drawn over the plate. Against the
+     * camera's distance (tens of metres) the shift on the screen is far below a pixel.
+     */
+    private static final float PLATE_Z = 0.01f;
+    private static final float LABEL_Z = 2f * PLATE_Z;
 
     private final Node node;
     private final Geometry sphere;
     private final Trail trail;
     private final VelocityArrow arrow;
     private final HudText label;
+    /** The label's plate, shown only while the label lies over a trail. */
+    private final Geometry plate;
     private final float radius;
     /** Where the label is on the screen (in pixels), and which slot it took. */
     private final ScreenRect labelRect = new ScreenRect();
     private int labelSlot = -1;
+    private boolean labelPlated;
 
     /**
      * Create the views of one particle.
@@ -67,6 +83,16 @@ public final class ParticleView {
         arrow = new VelocityArrow(name + " velocity", 0.4f * radiusMetres, ARROW_SECONDS,
                 ColorRGBA.White.clone(), unshaded);
         node.attachChild(arrow.getGeometry());
+
+        Material plateMaterial = new Material(assetManager,
+                "Common/MatDefs/Misc/Unshaded.j3md");
+        plateMaterial.setColor("Color", PLATE_COLOR);
+        plateMaterial.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        plate = new Geometry(name + " label plate", new Quad(1f, 1f));
+        plate.setMaterial(plateMaterial);
+        plate.setQueueBucket(RenderQueue.Bucket.Transparent);
+        plate.setCullHint(Spatial.CullHint.Always);
+        node.attachChild(plate);
 
         label = new HudText(font, color);
         label.setText(name);
@@ -170,8 +196,8 @@ public final class ParticleView {
     }
 
     /**
-     * Put the label into a rectangle of the screen, through the plane's mapping. Allocates
-     * nothing.
+     * Put the label into a rectangle of the screen, through the plane's mapping, with no
+     * plate. Allocates nothing.
      *
      * @param view the plane's mapping (not null, not modified)
      * @param size the text size (in pixels, &gt;0)
@@ -179,14 +205,51 @@ public final class ParticleView {
      * @param where the rectangle (in pixels, not null, copied)
      */
     public void placeLabel(PlaneView view, float size, int slot, ScreenRect where) {
+        placeLabel(view, size, slot, where, false);
+    }
+
+    /**
+     * Put the label into a rectangle of the screen, through the plane's mapping, on a plate
+     * of the background's colour if asked (a label that lies over a trail: the plate hides
+     * the trail there, so the text stays readable). Allocates nothing.
+     *
+     * @param view the plane's mapping (not null, not modified)
+     * @param size the text size (in pixels, &gt;0)
+     * @param slot the slot taken ({@link LabelSlots})
+     * @param where the rectangle (in pixels, not null, copied)
+     * @param plated true to draw the plate under the label
+     */
+    public void placeLabel(PlaneView view, float size, int slot, ScreenRect where,
+            boolean plated) {
         labelRect.set(where);
         labelSlot = slot;
+        labelPlated = plated;
         float worldSize = size / view.getPixelsPerMetre();
         if (label.getSize() != worldSize) {
             label.setSize(worldSize);
         }
-        label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
+        label.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()),
+                LABEL_Z);
         label.setCullHint(Spatial.CullHint.Inherit);
+        if (plated) {
+            plate.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getY()),
+                    PLATE_Z);
+            plate.setLocalScale(where.getWidth() / view.getPixelsPerMetre(),
+                    where.getHeight() / view.getPixelsPerMetre(), 1f);
+            plate.setCullHint(Spatial.CullHint.Inherit);
+        } else {
+            plate.setCullHint(Spatial.CullHint.Always);
+        }
+    }
+
+    /**
+     * Test whether the label was last placed on a plate ({@link #placeLabel}): it lies over a
+     * trail, which the plate hides under it.
+     *
+     * @return true if plated (false while hidden)
+     */
+    public boolean isLabelPlated() {
+        return labelPlated;
     }
 
     /**
@@ -195,7 +258,9 @@ public final class ParticleView {
      */
     public void hideLabel() {
         labelRect.set(0f, 0f, 0f, 0f);
+        labelPlated = false;
         label.setCullHint(Spatial.CullHint.Always);
+        plate.setCullHint(Spatial.CullHint.Always);
     }
 
     /**

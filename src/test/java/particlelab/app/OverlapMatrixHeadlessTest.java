@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoState;
 import particlelab.demo.OverlapProbe;
 import particlelab.physics.SimulationClock;
@@ -39,6 +40,8 @@ class OverlapMatrixHeadlessTest {
     private static final int[] CI_FRAMES = {1, 60};
     /** Configurations a case takes in CI. */
     private static final int CI_CONFIGURATIONS = 1;
+    /** Frames of the issue's screenshots ({@code --frames 200}): the shots have landed. */
+    private static final int LANDED_FRAMES = 200;
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
@@ -73,6 +76,67 @@ class OverlapMatrixHeadlessTest {
         });
         assertEquals(List.of(), problems.subList(0, Math.min(40, problems.size())),
                 problems.size() + " problems");
+    }
+
+    /**
+     * The scenes issue 29 §3 names, at the frame its screenshots show (200 frames: every
+     * shot of drag and pull has landed, trails drawn in full): no overlap, and every sphere
+     * a viewer sees keeps its label (drag's linear-drag sphere had none at 1280x720, with
+     * and without the RK4 lane, its every slot touching a trail), and a sphere that rolled
+     * beyond the scene's side (clip's physics target) keeps its label at that side.
+     */
+    @Test
+    void theIssuesScenesKeepEveryLabelClearOrPlatedAfterTheLanding() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<String> problems = new ArrayList<>();
+        // demo, lane (-1: the default), window, presenting
+        Object[][] cases = {
+            {"drag", -1, 1280, 720, false},
+            {"drag", ComparisonLane.Kind.RK4.ordinal(), 1280, 720, false},
+            {"pull", ComparisonLane.Kind.SLIDE.ordinal(), 1280, 720, false},
+            {"spring", -1, 1920, 1080, true},
+            {"aiming", -1, 1280, 720, false},
+            // the physics lane's target has rolled to x = 21 m, beyond the framed 9.5 m
+            {"clip", -1, 1280, 720, false},
+            {"drag", -1, 640, 360, false},
+            {"drag", -1, 3840, 2160, true},
+        };
+        for (Object[] c : cases) {
+            DemoState demo = app.getSwitcher().getDemos().get(
+                    DemoCatalog.names().indexOf((String) c[0]));
+            int lane = (Integer) c[1];
+            int width = (Integer) c[2];
+            int height = (Integer) c[3];
+            boolean presenting = (Boolean) c[4];
+            String where = c[0] + (lane >= 0 ? " lane " + ComparisonLane.Kind.values()[lane]
+                    : "") + " " + width + "x" + height + (presenting ? " presenting" : "")
+                    + " frame " + LANDED_FRAMES;
+            problems.addAll(harness.call(() -> {
+                demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+                demo.getClock().setPaused(false);
+                float laneBefore = lane >= 0
+                        ? demo.getParameters().getValue(ComparisonLane.PARAMETER) : 0f;
+                if (lane >= 0) {
+                    demo.getParameters().set(ComparisonLane.PARAMETER, lane);
+                }
+                demo.restart();
+                demo.setPresenting(presenting);
+                demo.layOut(width, height);
+                for (int f = 0; f < LANDED_FRAMES; ++f) {
+                    demo.update(H);
+                }
+                demo.update(0f);
+                List<String> found = OverlapProbe.check(demo, width, height, where);
+                if (lane >= 0) {
+                    demo.getParameters().set(ComparisonLane.PARAMETER, laneBefore);
+                    demo.restart();
+                }
+                demo.setPresenting(false);
+                demo.layOut(1280, 720);
+                return found;
+            }));
+        }
+        assertEquals(List.of(), problems);
     }
 
     /**

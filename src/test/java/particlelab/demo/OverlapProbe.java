@@ -12,7 +12,9 @@ import particlelab.view.Trail;
 /**
  * The overlap checks of a laid-out frame, for tests outside this package (the tour's): no two
  * texts cover each other, no text leaves the window, no text covers a sphere shown in the
- * scene, and no particle's label covers a post or a trail as drawn; from the rectangles the
+ * scene, no particle's label covers a post or (unless on its plate) a trail as drawn, and no
+ * sphere a viewer sees goes without its label (nor one beyond the scene's side without its
+ * label at that side); from the rectangles the
  * layout itself placed ({@link DemoState#copyTextRects}, the particles' label slots, the
  * posts, the collisions demo's impulse labels).
  */
@@ -61,6 +63,8 @@ public final class OverlapProbe {
         ScreenRect scene = demo.copySceneRect(new ScreenRect());
         List<ScreenRect> spheres = new ArrayList<>();
         List<String> sphereNames = new ArrayList<>();
+        ScreenRect panel = demo.getHud().getLayout().getSidePanel();
+        ScreenRect graph = demo.getHud().getLayout().getGraph();
         for (DemoParticle particle : particles) {
             Vector3f centre = particle.getParticle().position;
             float radius = demo.getView(particle).getRadius() * plane.getPixelsPerMetre();
@@ -70,6 +74,20 @@ public final class OverlapProbe {
                     && scene.contains(x, y)) {
                 spheres.add(new ScreenRect(x - radius, y - radius, 2f * radius, 2f * radius));
                 sphereNames.add(particle.getLabel());
+                // A label is never dropped silently: only a sphere under the panel or the
+                // graph, which hide it anyway, may go without one.
+                if (demo.getView(particle).getLabelRect().isEmpty() && !panel.contains(x, y)
+                        && !graph.contains(x, y)) {
+                    problems.add(where + ": the sphere of '" + particle.getLabel() + "' at ("
+                            + x + ", " + y + ") has no label");
+                }
+            } else if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
+                    && (x + radius < scene.getX() || x - radius > scene.getRight())
+                    && demo.getView(particle).getLabelRect().isEmpty()) {
+                // Beyond the scene's side (rolled out of the framed view): its label stands
+                // at that side and says where it is.
+                problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
+                        + " the scene's side at x = " + x + " px has no label at the edge");
             }
         }
         for (int t = 0; t < texts.size(); ++t) {
@@ -94,8 +112,11 @@ public final class OverlapProbe {
                     problems.add(name + " covers post " + p + " " + posts.get(p));
                 }
             }
-            // No trail as drawn (ribbon and step dots) under a label.
-            for (DemoParticle other : particles) {
+            // No trail as drawn (ribbon and step dots) under a label, but where no slot was
+            // free: then the label lies on a plate that hides the trail under it.
+            for (int o = 0; o < particles.size()
+                    && !demo.getView(particle).isLabelPlated(); ++o) {
+                DemoParticle other = particles.get(o);
                 Trail trail = demo.getView(other).getTrail();
                 float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
                 for (int age = 0; age < trail.size(); ++age) {
