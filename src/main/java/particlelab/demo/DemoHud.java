@@ -103,7 +103,7 @@ final class DemoHud {
         hud.setBody(demo.formatHud(hudText));
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
+        layOutScene();
     }
 
     /** @return the view (null before {@link #build}) */
@@ -127,8 +127,12 @@ final class DemoHud {
         showTitle();
     }
 
-    /** @param newNote one short line after the title, or null (checked by the demo) */
+    /** @param newNote one short line after the title, or null (else refused) */
     void setTitleNote(String newNote) {
+        if (newNote != null && (newNote.isEmpty() || newNote.indexOf('\n') >= 0)) {
+            throw new IllegalArgumentException("a title note must be null or one non-empty"
+                    + " line, but was \"" + newNote + "\"");
+        }
         titleNote = newNote;
         showTitle();
     }
@@ -138,8 +142,12 @@ final class DemoHud {
         return titleNote;
     }
 
-    /** @param seconds how often the text is rebuilt (checked by the demo) */
+    /** @param seconds how often the text is rebuilt (s, finite, &ge;0; else refused) */
     void setRefreshSeconds(float seconds) {
+        if (!(seconds >= 0f) || Float.isInfinite(seconds)) {
+            throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
+                    + " >= 0, but was " + seconds);
+        }
         refreshSeconds = seconds;
     }
 
@@ -207,7 +215,7 @@ final class DemoHud {
         laidOutHeight = height;
         uiScale = userScale;
         hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
+        layOutScene();
         scene.updateViews();
         if (demo.isEnabled() && demo.getApplication().getCamera().getWidth() == width
                 && demo.getApplication().getCamera().getHeight() == height) {
@@ -271,12 +279,18 @@ final class DemoHud {
         writeBody();
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
-        scene.layOut(hud.getLayout());
+        layOutScene();
         scene.updateViews();
         if (demo.isEnabled()) {
             demo.frameCamera();
         }
         dirty = true;
+    }
+
+    /** The scene's area follows the HUD's layout, then the demo's parts lay out for it. */
+    private void layOutScene() {
+        scene.layOut(hud.getLayout());
+        demo.layOutParts(hud.getLayout());
     }
 
     /** The slide's formulas and readout while presenting, else the full body. */
@@ -317,7 +331,7 @@ final class DemoHud {
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, fresh);
         hud.takeLayoutChange();
         // The band grew or shrank: the scene's area follows it.
-        scene.layOut(hud.getLayout());
+        layOutScene();
         demo.frameCamera();
     }
 

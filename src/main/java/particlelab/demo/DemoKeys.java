@@ -28,6 +28,8 @@ final class DemoKeys {
     private final List<String> demoTitles = new ArrayList<>();
     /** What the demo lets the mouse drag, for the help's "Mouse" section. */
     private List<Draggable> draggables = new ArrayList<>();
+    /** The demo's key that fires or launches, for the panel's Fire button, or null. */
+    private KeyBinding fireKey;
 
     /**
      * Declare a key every demo has.
@@ -94,6 +96,47 @@ final class DemoKeys {
         List<KeyBinding> all = new ArrayList<>(shared);
         all.addAll(own);
         return all;
+    }
+
+    /**
+     * Name the key that fires or launches, so the panel gets a Fire button for it.
+     *
+     * @param binding one of the demo's bindings (not null)
+     */
+    void setFireKey(KeyBinding binding) {
+        fireKey = binding;
+    }
+
+    /**
+     * List the parameter panel's buttons, each doing what a key does: Pause, Step, Reset,
+     * Fire (if the demo named its fire key), Export, and Next demo (if the application binds
+     * Tab).
+     *
+     * @param labels where to add the buttons' texts (not null, modified)
+     * @param actions where to add what each does, one per label (not null, modified)
+     * @param pause pauses or resumes the clock (not null)
+     * @param step takes a single step (not null)
+     * @param reset restarts and reframes (not null)
+     * @param export asks for an export (not null)
+     */
+    void listPanelButtons(List<String> labels, List<Runnable> actions, Runnable pause,
+            Runnable step, Runnable reset, Runnable export) {
+        labels.addAll(List.of("Pause", "Step", "Reset"));
+        actions.addAll(List.of(pause, step, reset));
+        if (fireKey != null) {
+            KeyBinding fire = fireKey;
+            labels.add("Fire");
+            actions.add(() -> fire.press(0));
+        }
+        labels.add("Export");
+        actions.add(export);
+        for (int i = 0; i < application.size(); ++i) {
+            KeyBinding binding = application.get(i);
+            if (binding.getKeyCode(0) == KeyInput.KEY_TAB) {
+                labels.add("Next demo");
+                actions.add(() -> binding.press(0));
+            }
+        }
     }
 
     /**

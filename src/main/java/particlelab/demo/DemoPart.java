@@ -1,6 +1,8 @@
 package particlelab.demo;
 
 import com.jme3.app.Application;
+import particlelab.view.HudLayout;
+import particlelab.world.StateRecord;
 
 /**
  * A piece of a demo with hooks of its own, such as the free-flight demos'
@@ -9,10 +11,19 @@ import com.jme3.app.Application;
  * forward them by hand. {@link DemoState} calls each hook right after the demo's own hook,
  * the parts in the order they were added: a part's parameters come after the demo's in the
  * panel and {@code --set}, its keys after the demo's keys, its HUD lines after the demo's
- * lines. Every hook does nothing by default; a part overrides those it needs.
+ * lines, its slide after the demo's slide. Every hook does nothing by default; a part
+ * overrides those it needs.
  *
- * <p>The step hooks, {@link #afterFrame()} and {@link #writeHudLines} run every step or
- * frame: like the demo's, they must allocate nothing.
+ * <p>The hooks in their lifecycle order: {@link #attach} (the demo's constructor), then
+ * {@link #declareParameters}; when the scene is declared, {@link #stateRecord},
+ * {@link #declareKeys} and {@link #declareDraggables}; in a window {@link #buildViews} and
+ * {@link #layOut} (again at every new layout); then every step {@link #beforeStep} and
+ * {@link #afterStep}, every frame {@link #afterFrame}, {@link #writeHudLines} and while
+ * presenting {@link #writePresentation}; at a reset {@link #onRestart}.
+ *
+ * <p>The step hooks, {@link #afterFrame()}, {@link #writeHudLines} and
+ * {@link #writePresentation} run every step or frame: like the demo's, they must allocate
+ * nothing.
  */
 public interface DemoPart {
 
@@ -90,5 +101,45 @@ public interface DemoPart {
      * @param text where to append (not null, modified)
      */
     default void writeHudLines(StringBuilder text) {
+    }
+
+    /**
+     * Return the state of the part's own that its steps change and its next step reads, so a
+     * step back and a replay give the same bits (as {@link DemoState#addStateRecord}). Asked
+     * once, right after the demo's {@link DemoState#createScene()}. The default has none.
+     *
+     * @return the record, or null for none
+     */
+    default StateRecord stateRecord() {
+        return null;
+    }
+
+    /**
+     * Declare what the mouse may drag, after the demo's own
+     * ({@link DemoState#declareDraggables()}), with the demo's {@code declareDraggable}.
+     * The default declares none.
+     */
+    default void declareDraggables() {
+    }
+
+    /**
+     * Lay the part's own views out for the HUD's layout, right after the scene's area
+     * followed it: at the first layout, a new window size or HUD factor, a slot that came or
+     * went, presentation mode. Only in a window. The default does nothing.
+     *
+     * @param layout the HUD's layout (not null, do not modify)
+     */
+    default void layOut(HudLayout layout) {
+    }
+
+    /**
+     * Add to the slide presentation mode shows, after the demo's own
+     * ({@link DemoState#writePresentation}): only what the demo left free (a slide holds
+     * one readout and at most two formula lines, {@link Presentation}). Called every frame
+     * while presenting. The default adds nothing.
+     *
+     * @param slide where to write (not null, modified)
+     */
+    default void writePresentation(Presentation slide) {
     }
 }

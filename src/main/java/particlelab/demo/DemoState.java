@@ -9,30 +9,26 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudFont;
+import particlelab.view.HudLayout;
 import particlelab.view.HudScale;
 import particlelab.view.HudView;
 import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
-import particlelab.world.Body;
-import particlelab.world.ContactListener;
 import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
-import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
-import particlelab.world.SurfaceRule;
 import particlelab.world.World;
 
 /**
  * The one base class of every demo. A demo declares its particles and their forces, its keys
- * and its HUD lines; this class owns the rest: the lifecycle, the stepping clock, the shared
- * keys, the views (spheres, trails, velocity arrows, distance grid, camera) and the HUD.
+ * and its HUD lines; this class keeps the jME lifecycle, the authoring hooks and one-line
+ * forwarders to the pieces beside it, which own the rest.
  *
  * <h2>Writing a demo</h2>
  * <ul>
@@ -62,30 +58,25 @@ import particlelab.world.World;
  * </ul>
  *
  * <h2>Once per frame</h2>
- * {@link #update} hands the frame time to the {@link SimulationClock}, which decides the steps
- * (pause, single step, time scale, raw tpf or fixed h); the demo's {@link World} takes each
- * step: it moves every particle with its own integrator ({@link ParticleIntegrator#step}, the
- * lecture's Euler step), then detects, resolves and propagates the contacts of its rules.
- * Nothing else moves a particle. This class hears each step as a {@link StepListener}: the
- * stability warnings look at the particles before it, and after it the lecture's stop at the
- * ground, the trails and the demo's {@link #afterStep} hook run. Then the views read the
- * particles. None of this allocates; the HUD text is rebuilt in a reused
- * {@link StringBuilder} every frame, after the frame's steps and views, so its numbers are
- * those of the picture (or less often, see {@link #setHudRefreshSeconds}), and shown in
- * {@code HudText}s, whose glyph meshes are rewritten in place, so a whole frame allocates
- * nothing (FrameAllocationHeadlessTest).
+ * {@link #update} hands the frame time to the run ({@link DemoRun}: the
+ * {@link SimulationClock} decides the steps, the demo's {@link World} takes each: every
+ * particle moved by its own integrator, {@link ParticleIntegrator#step}, the lecture's Euler
+ * step, then the contacts of its rules). Nothing else moves a particle. The demo and its parts
+ * hear each step ({@link StepListener}: the warnings before it; after it the lecture's stop
+ * at the ground, the trails and {@link #afterStep}). Then the views read the particles, and
+ * the HUD text is rebuilt in a reused {@link StringBuilder} (every frame, or see
+ * {@link #setHudRefreshSeconds}), so its numbers are those of the picture; a whole frame
+ * allocates nothing (FrameAllocationHeadlessTest). A step that blows up resets the scene and
+ * says why; once every particle has landed the clock stops until a launch or a reset.
  *
- * <p>If a step blows up (the integrator refuses a non-finite result), the demo resets its
- * scene and shows why, instead of crashing the window. Once every particle has landed the
- * scene is over: the clock stops, so {@code t} stays at the last landing's step, until a
- * launch or a reset.
- *
- * <h2>Inside</h2>
- * This class coordinates; the details live in small classes of this package:
- * {@code DemoScene} (the region, grid, posts, lights and particle views), {@code DemoKeys}
- * (the bindings, their checks and the help text), {@code HudWriter} (the HUD lines every demo
- * shows), {@code StepWarnings} (the stability, hitch and blow-up warning) and
- * {@code ParameterControls} (the declared parameters, their panel and the kept shots).
+ * <h2>Beside it</h2>
+ * {@code DemoRun} (the physics, without jME), {@code DemoScene} (region, grid, posts, lights,
+ * particle views), {@code SceneFraming} (the camera's frame of the launches), {@code DemoHud}
+ * (HUD, layout, presentation mode), {@code HudWriter} (the lines every demo shows),
+ * {@code DemoKeys} and {@code SharedKeys} (the bindings, the help, the panel's buttons),
+ * {@code ParameterControls} (the parameters' panel, the kept shots), {@code ReplayControls}
+ * (step back, timeline, F6), {@code DemoMouse} (drags, picking, the inspector),
+ * {@code ExactGhosts}, and the demo's {@link DemoPart}s (the energy ledger first).
  */
 public abstract class DemoState extends BaseAppState {
 
@@ -107,7 +98,7 @@ public abstract class DemoState extends BaseAppState {
     public static final float SLOW_HUD_REFRESH_SECONDS = 0.1f;
 
     private final String title;
-    /** What the run tells the demo at fixed moments of a step and a reset. */
+    /** What the run tells the demo and its parts at fixed moments of a step and a reset. */
     private final DemoRun.Hooks runHooks = new DemoRun.Hooks() {
         @Override
         public void prepare() {
@@ -116,19 +107,13 @@ public abstract class DemoState extends BaseAppState {
 
         @Override
         public void beforeStep(float stepSeconds) {
-            DemoState.this.beforeStep(stepSeconds);
-            for (int i = 0; i < parts.size(); ++i) {
-                parts.get(i).beforeStep(stepSeconds);
-            }
+            parts.beforeStep(stepSeconds);
         }
 
         @Override
         public void afterStep(float stepSeconds) {
             ghosts.afterStep(stepSeconds);
-            DemoState.this.afterStep(stepSeconds);
-            for (int i = 0; i < parts.size(); ++i) {
-                parts.get(i).afterStep(stepSeconds);
-            }
+            parts.afterStep(stepSeconds);
         }
 
         @Override
@@ -146,13 +131,10 @@ public abstract class DemoState extends BaseAppState {
 
         @Override
         public void restarted() {
-            onRestart();
-            for (int i = 0; i < parts.size(); ++i) {
-                parts.get(i).onRestart();
-            }
-            if (!drags.isDragging()) {
+            parts.onRestart();
+            if (!mouse.getDrags().isDragging()) {
                 // During a drag the camera holds still, so the grip stays under the mouse.
-                frameLaunches();
+                framing.frameLaunches();
             }
             demoHud.markDirty();
         }
@@ -168,6 +150,7 @@ public abstract class DemoState extends BaseAppState {
     private final World world = run.getWorld();
     private final List<DemoParticle> particles = run.getParticles();
     private final DemoScene scene = new DemoScene(particles);
+    private final SceneFraming framing = new SceneFraming(this, scene, particles, clock);
     private final ExactGhosts ghosts = new ExactGhosts(particles);
     private final DemoKeys keys = new DemoKeys();
     private final KeyMappings keyMappings;
@@ -175,24 +158,20 @@ public abstract class DemoState extends BaseAppState {
             new ParameterControls(run.getParameterValues());
     private final HudWriter hudWriter = new HudWriter(clock, particles);
     private final StepWarnings warnings = run.getWarnings();
-    /** Pause at the next contact the world resolves (its key, its HUD line). */
-    private final ContactPause contactPause = run.getContactPause();
-    /** The demo's parts ({@link #addPart}), whose hooks follow the demo's own. */
-    private final List<DemoPart> parts = new ArrayList<>();
+    /** The demo's hooks, then its parts' ({@link #addPart}), at each moment. */
+    private final DemoParts parts = new DemoParts(this);
     /** Where the energy goes (issue 32): every demo's first part, its world's ledger. */
     private final EnergyPart energyPart = addPart(new EnergyPart());
     private final Replay replay = run.getReplay();
     private final Node sceneNode;
     /** The HUD: title, body, band, layout, note and presentation mode. */
     private final DemoHud demoHud;
+    private final ReplayControls replayControls;
     /** Scratch: a particle's launch position (m). */
     private final Vector3f launchPosition = new Vector3f();
-    /** What the launches reach, for the camera to frame. */
-    private final LaunchReach reach = new LaunchReach();
-    /** The mouse on the bodies: the declared drags and the picked body; its inspector. */
-    private final DragControl drags = new DragControl(particles, clock, this::restart,
-            this::frameLaunches, scene::areArrowsVisible);
-    private final Inspector inspector = new Inspector();
+    /** The mouse on the bodies: the declared drags, the picked body, its inspector. */
+    private final DemoMouse mouse = new DemoMouse(new DragControl(particles, clock,
+            this::restart, framing::frameLaunches, scene::areArrowsVisible));
 
     private boolean sceneCreated;
     /** Inside {@link #createScene()}: the scene is being declared, not yet complete. */
@@ -205,8 +184,6 @@ public abstract class DemoState extends BaseAppState {
     private boolean parametersDeclared;
     /** The parameters' version the equations were written for. */
     private int equationsVersion;
-    private KeyBinding fireKey;
-    private List<KeyBinding> applicationBindings = Collections.emptyList();
 
     /**
      * Create a demo.
@@ -221,37 +198,12 @@ public abstract class DemoState extends BaseAppState {
         this.sceneNode = new Node(title + " scene");
         this.keyMappings = new KeyMappings("particlelab/" + title + "/", this::markHudDirty);
         this.demoHud = new DemoHud(this, title, scene, keys, parameterControls, warnings);
+        this.replayControls = new ReplayControls(run, scene, hudWriter, demoHud);
         hudWriter.setWarnings(warnings);
-        hudWriter.setContactPause(contactPause);
+        hudWriter.setContactPause(run.getContactPause());
         hudWriter.setGhosts(ghosts);
         run.addViewRecord(ghosts);
-        run.addViewRecord(new StateRecord() {
-            @Override
-            public int countStateInts() {
-                return 1;
-            }
-
-            @Override
-            public void writeState(StateSlab slab) {
-                slab.putInt(parameterControls.countKeptShots());
-            }
-
-            @Override
-            public void readState(StateSlab slab) {
-                parameterControls.showKeptShotsUpTo(slab.getInt());
-            }
-        });
-        replay.setTrails(new Replay.TrailWalk() {
-            @Override
-            public void undone(DemoParticle particle) {
-                scene.undoTrailStep(particle);
-            }
-
-            @Override
-            public void redone(DemoParticle particle) {
-                scene.redoTrailStep(particle);
-            }
-        });
+        run.addViewRecord(parameterControls.keptShotsRecord());
         hudWriter.setReplay(replay);
         parameterControls.setReplay(replay);
     }
@@ -291,6 +243,15 @@ public abstract class DemoState extends BaseAppState {
      * setters may). The default declares none; the fixed step h is declared for every demo.
      */
     protected void declareParameters() {
+    }
+
+    /**
+     * Declare what the mouse may drag: call {@link #declareDraggable} for each (a launch's
+     * position and velocity, a ball, a target). The help's "Mouse" section and the pages'
+     * mouse table are written from them. Called once, after {@link #declareKeys()}. The
+     * default declares nothing: a click on a sphere still shows it in the inspector.
+     */
+    protected void declareDraggables() {
     }
 
     /**
@@ -387,10 +348,32 @@ public abstract class DemoState extends BaseAppState {
     protected void onRestart() {
     }
 
+    /**
+     * Add the demo's own tables to an export, beside its particles' trajectories: what a demo
+     * with no free particle has to show (the rotation boxes per step, the fountain's counts,
+     * the aimer's shots). Called on the jME thread, or after the application stopped; may
+     * allocate. The default adds none.
+     *
+     * @param storeResult where to add them (not null, modified)
+     */
+    public void collectExportTables(List<StepTable> storeResult) {
+    }
+
+    /**
+     * Count the particles this demo simulates, for the report's physics share and
+     * {@code demo --profile}: by default its world's bodies or its declared particles,
+     * whichever are more. A demo that steps more of its own (a packed batch) overrides this.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countSimulatedParticles() {
+        return Math.max(particles.size(), world.countBodies());
+    }
+
     // ------------------------------------------------------- tools for createScene etc. ----
 
     /**
-     * Add a particle to the scene.
+     * Add a particle to the scene. Call from {@link #createScene()}.
      *
      * @param label its label, shown next to it and in the HUD (not null)
      * @param color its colour (not null, not modified)
@@ -414,8 +397,7 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Append a particle's state for a slide ({@link #writePresentation}) as its HUD line shows
      * it on the same frame: its speed while it flies ("11.84 m/s"), where it landed once it
-     * has ("x = 9.81 m", the HUD's landing x, which is the range Euler gives for a launch
-     * from x = 0). Allocates nothing.
+     * has ("x = 9.81 m", the HUD's landing x). Allocates nothing.
      *
      * @param text where to append (not null, modified)
      * @param particle one of the demo's particles (not null)
@@ -454,13 +436,7 @@ public abstract class DemoState extends BaseAppState {
      * @param topMetres the top edge to frame (in metres, finite, &gt;0)
      */
     protected void setViewTop(float topMetres) {
-        scene.setFrameTop(topMetres);
-        if (getHud() != null) {
-            scene.layOut(getHud().getLayout());
-            if (isEnabled()) {
-                frameCamera();
-            }
-        }
+        framing.setTop(topMetres);
     }
 
     /**
@@ -477,9 +453,8 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Add a labelled post standing on the ground, its name right of its foot: for a post a
-     * body rests on (a ledge), whose top the body and its trail cover. Call from
-     * {@link #createScene()}.
+     * Add a labelled post as {@link #addMarker}, its name right of its foot: for a post a
+     * body rests on (a ledge), whose top the body and its trail cover.
      *
      * @param label the text beside the post's foot (not null)
      * @param x where it stands (in metres)
@@ -506,22 +481,35 @@ public abstract class DemoState extends BaseAppState {
         return keys.addOwn(keyCode, keyLabel, description, action);
     }
 
+    /** @param binding the demo's key that fires or launches: the panel's Fire (not null) */
+    protected void setFireKey(KeyBinding binding) {
+        keys.setFireKey(binding);
+    }
+
     /**
-     * Access the view of one of the demo's particles (its sphere, label, trail and arrow),
-     * for a demo that draws a particle its own way. Views exist only in a window.
+     * Declare a parameter. Call from {@link #declareParameters()}.
      *
-     * @param particle one of this demo's particles (not null)
-     * @return the live view, or null before the views are built (no window yet, or none)
+     * @param parameter the declaration, its name not declared yet (not null)
+     * @return parameter
      */
-    public ParticleView getView(DemoParticle particle) {
-        return scene.viewOf(particle);
+    protected DemoParameter declareParameter(DemoParameter parameter) {
+        return parameterControls.getParameters().add(parameter);
+    }
+
+    /**
+     * Declare a thing the mouse may drag. Call from {@link #declareDraggables()}.
+     *
+     * @param draggable the declaration, its particles the demo's (not null)
+     * @return draggable
+     */
+    protected Draggable declareDraggable(Draggable draggable) {
+        return mouse.getDrags().add(draggable);
     }
 
     /**
      * Add a simulation beside the demo's world, stepped right after it with every step of the
      * same clock: a second world (Bounce's other detection lane) or a packed batch (the
-     * fountain). Not inside the world's step: its listeners observe, they move nothing. Call
-     * in {@link #createScene()}.
+     * fountain). Its listeners observe, they move nothing. Call in {@link #createScene()}.
      *
      * @param simulation what takes each step (not null)
      */
@@ -542,15 +530,6 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Access the energy ledger's part (issue 32): the ledger, its HUD lines and its export.
-     *
-     * @return the part (not null)
-     */
-    public EnergyPart getEnergyPart() {
-        return energyPart;
-    }
-
-    /**
      * Add a part with hooks of its own ({@link DemoPart}, e.g. a {@link ComparisonLane}):
      * from now on the demo calls each of the part's hooks right after its own hook of the
      * same name, so the demo forwards none of them. Call from the demo's constructor or a
@@ -568,116 +547,8 @@ public abstract class DemoState extends BaseAppState {
             throw new IllegalStateException("add parts in the demo's constructor, before its"
                     + " parameters and scene are declared");
         }
-        if (parts.contains(part)) {
-            throw new IllegalArgumentException("demo part " + part + " was added already");
-        }
         parts.add(part);
-        part.attach(this);
         return part;
-    }
-
-    /**
-     * Return the blend the views draw with this frame: {@code α = leftover / h} between the
-     * last two physics states, or 1 (the physics state) with interpolation off, in raw tpf,
-     * paused or while replaying. For a demo that draws bodies of its own
-     * ({@link particlelab.world.Body#copyDrawnPosition}).
-     *
-     * @return α (0 to 1)
-     */
-    protected float getDrawBlend() {
-        return replay.getFrameBlend();
-    }
-
-    // ------------------------------------------------- the mouse: drags and inspector ----
-
-    /**
-     * Declare what the mouse may drag: call {@link #declareDraggable} for each (a launch's
-     * position and velocity, a ball, a target). The help's "Mouse" section and the pages'
-     * mouse table are written from them. Called once, after {@link #declareKeys()}. The
-     * default declares nothing: a click on a sphere still shows it in the inspector.
-     */
-    protected void declareDraggables() {
-    }
-
-    /**
-     * Declare a thing the mouse may drag. Call from {@link #declareDraggables()}.
-     *
-     * @param draggable the declaration, its particles the demo's (not null)
-     * @return draggable
-     */
-    protected Draggable declareDraggable(Draggable draggable) {
-        return drags.add(draggable);
-    }
-
-    /**
-     * Access the mouse's control of the bodies (pick, drag, release), for the application's
-     * mouse input and for tests.
-     *
-     * @return the live control (not null)
-     */
-    public DragControl getDragControl() {
-        ensureScene();
-        return drags;
-    }
-
-    /**
-     * Test whether the HUD takes the mouse at a screen point, so that a press there must not
-     * pick a body behind it: the help overlay (it covers the scene) or the parameter panel.
-     *
-     * @param screenX the point's x (in pixels from the window's left edge)
-     * @param screenY the point's y (in pixels from the window's bottom edge)
-     * @return true if the HUD is there
-     */
-    public boolean isHudAt(float screenX, float screenY) {
-        if (getHud() == null || getHud().isHelpVisible()) {
-            return true;
-        }
-        ScreenRect panel = parameterControls.getPanel().copyRect(new ScreenRect());
-        return !panel.isEmpty() && panel.contains(screenX, screenY);
-    }
-
-    /**
-     * Access the inspector's text rectangle, as last placed, for tests of this package.
-     *
-     * @return the live rectangle (empty while closed; do not modify)
-     */
-    ScreenRect getInspectorRect() {
-        return inspector.getRect();
-    }
-
-    /**
-     * Write the inspector's text for the picked body, as its box shows it.
-     *
-     * @param storeResult where to write (not null, cleared and modified)
-     * @return storeResult, empty when nothing is picked
-     */
-    public StringBuilder formatInspector(StringBuilder storeResult) {
-        DemoParticle picked = drags.getPicked();
-        inspector.show(picked);
-        if (picked == null) {
-            storeResult.setLength(0);
-            return storeResult;
-        }
-        return inspector.format(storeResult, picked);
-    }
-
-    /**
-     * Declare a parameter. Call from {@link #declareParameters()}.
-     *
-     * @param parameter the declaration, its name not declared yet (not null)
-     * @return parameter
-     */
-    protected DemoParameter declareParameter(DemoParameter parameter) {
-        return parameterControls.getParameters().add(parameter);
-    }
-
-    /**
-     * Name the key that fires or launches, so the panel gets a Fire button for it.
-     *
-     * @param binding one of the demo's bindings (not null)
-     */
-    protected void setFireKey(KeyBinding binding) {
-        fireKey = binding;
     }
 
     /**
@@ -694,15 +565,14 @@ public abstract class DemoState extends BaseAppState {
         particle.restart();
         scene.restartTrail(particle);
         ghosts.restart(particle.index);
-        frameLaunches();
+        framing.frameLaunches();
         replay.stateChanged();
         demoHud.markDirty();
     }
 
     /**
      * Change the label shown next to a particle and in the HUD, e.g. to a shot's result once
-     * it landed. The label's glyphs are rewritten in place; the label String is the caller's
-     * (build it on such events, not every frame).
+     * it landed; its glyphs are rewritten in place (build the String on such events only).
      *
      * @param particle the particle (one of this demo's, not null)
      * @param label the new label, one line (not null)
@@ -714,10 +584,9 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Show each particle's exact ghost (its continuous path from the same launch under the
-     * same forces, drawn faint), the HUD's readouts Euler against exact (apex, range, flight
-     * time, the live distance) and the live graph key. Meant for particles that fly free (and
-     * may stop at the ground): a ghost stops for good at its particle's first resolved
-     * contact. Call from {@link #createScene()}.
+     * same forces, drawn faint), the HUD's readouts Euler against exact and the live graph
+     * key; a ghost stops for good at its particle's first resolved contact. Call from
+     * {@link #createScene()}.
      */
     protected void showExactGhosts() {
         ghosts.enable();
@@ -726,25 +595,19 @@ public abstract class DemoState extends BaseAppState {
     /**
      * Say that this demo's own views draw the raw physics steps, not the interpolated picture
      * of F6 (the fountain's points, the rotating boxes), so the HUD's stepping line says so.
-     * Call from the constructor or {@link #createScene()}.
      */
     protected void drawsRawSteps() {
         replay.drawsRawSteps();
     }
 
-    /**
-     * Start with the velocity arrows hidden (for fast balls, whose arrows would leave the
-     * scene); the V key still shows them. Call from {@link #createScene()}.
-     */
+    /** Start with the velocity arrows hidden (fast balls); the V key still shows them. */
     protected void hideArrowsAtStart() {
         if (scene.areArrowsVisible()) {
             scene.toggleArrows();
         }
     }
 
-    /**
-     * Rebuild the equations shown in the HUD, after a demo changed a coefficient.
-     */
+    /** Rebuild the equations shown in the HUD, after a demo changed a coefficient. */
     protected void refreshEquations() {
         StringBuilder text = new StringBuilder();
         describeEquations(text);
@@ -753,84 +616,47 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Access the node holding the demo's scene, to attach extra geometry (targets, markers).
+     * Return the blend the views draw with this frame: {@code α = leftover / h} between the
+     * last two physics states, or 1 (the physics state) with interpolation off, in raw tpf,
+     * paused or while replaying ({@link particlelab.world.Body#copyDrawnPosition}).
      *
-     * @return the live node (not null)
+     * @return α (0 to 1)
      */
-    public Node getSceneNode() {
-        return sceneNode;
+    protected float getDrawBlend() {
+        return replay.getFrameBlend();
     }
 
     // ----------------------------------------------------------------------- public API ----
 
-    /**
-     * Return the demo's name.
-     *
-     * @return the title (not null)
-     */
+    /** @return the demo's name, shown in the HUD and the demo list (not null) */
     public String getTitle() {
         return title;
     }
 
     /**
-     * Set the number shown before the title, the demo's place in the catalogue.
+     * Access the view of one of the demo's particles (its sphere, label, trail and arrow).
      *
-     * @param number the number (&ge;1)
+     * @param particle one of this demo's particles (not null)
+     * @return the live view, or null before the views are built (no window yet, or none)
      */
-    public void setCatalogNumber(int number) {
-        demoHud.setCatalogNumber(number);
+    public ParticleView getView(DemoParticle particle) {
+        return scene.viewOf(particle);
+    }
+
+    /** @return the node holding the demo's scene, for extra geometry (live, not null) */
+    public Node getSceneNode() {
+        return sceneNode;
+    }
+
+    /** @return the energy ledger's part (issue 32): ledger, HUD lines, export (not null) */
+    public EnergyPart getEnergyPart() {
+        return energyPart;
     }
 
     /**
-     * Show a short note after the title, or none: what the application is in the middle of,
-     * e.g. a demo number being typed ("typed 1_"). Not meant for every frame (the title is
-     * laid out again).
-     *
-     * @param note one short line, or null for none
-     */
-    public void setTitleNote(String note) {
-        if (note != null && (note.isEmpty() || note.indexOf('\n') >= 0)) {
-            throw new IllegalArgumentException("a title note must be null or one non-empty"
-                    + " line, but was \"" + note + "\"");
-        }
-        demoHud.setTitleNote(note);
-    }
-
-    /**
-     * Return the note shown after the title.
-     *
-     * @return the note, or null if none
-     */
-    public String getTitleNote() {
-        return demoHud.getTitleNote();
-    }
-
-    /**
-     * Tell the demo about keys the application handles (choosing demos), so that its help
-     * overlay and footer list them too and the demo may not bind them. Call before the demo
-     * is initialised.
-     *
-     * @param bindings the application's keys (not null, copied)
-     */
-    public void setApplicationBindings(List<KeyBinding> bindings) {
-        keys.setApplication(bindings);
-        applicationBindings = new ArrayList<>(bindings);
-        demoHud.setApplicationBindings(bindings);
-    }
-
-    /**
-     * Tell the demo the application's demos, so that its help overlay lists them by the
-     * numbers the digit keys reach. Call before the demo is initialised.
-     *
-     * @param titles the demos' titles in catalogue order, demo 1 first (not null, copied)
-     */
-    public void setDemoTitles(List<String> titles) {
-        keys.setDemoTitles(titles);
-    }
-
-    /**
-     * Access the demo's parameters (the shared step h, then the demo's own), declared at the
-     * first call: {@code --set} changes them before the window opens, the panel after.
+     * Access the demo's parameters (the shared step h, then the demo's own, then its parts'),
+     * declared at the first call: {@code --set} changes them before the window opens, the
+     * panel after.
      *
      * @return the live parameters (not null)
      */
@@ -838,108 +664,118 @@ public abstract class DemoState extends BaseAppState {
         if (!parametersDeclared) {
             parametersDeclared = true;
             parameterControls.declareShared(this::applyFixedStep);
-            declareParameters();
-            for (int i = 0; i < parts.size(); ++i) {
-                parts.get(i).declareParameters(parameterControls.getParameters());
-            }
+            parts.declareParameters(parameterControls.getParameters());
         }
         return parameterControls.getParameters();
     }
 
-    /**
-     * Access the world that steps the demo's particles: add collision rules and contact or
-     * step listeners to it in {@link #createScene()}.
-     *
-     * @return the live world (not null)
-     */
+    /** @return the world that steps the particles: rules, listeners (live, not null) */
     public World getWorld() {
         ensureScene();
         return world;
     }
 
-    /**
-     * Access the demo's run: the clock, the world, the particles, restart and the replay
-     * ring, without jME (what a physics test steps).
-     *
-     * @return the live run (not null; its scene declared)
-     */
+    /** @return the run: clock, world, particles, restart, ring, no jME (live, declared) */
     public DemoRun getRun() {
         ensureScene();
         return run;
     }
 
-    /**
-     * Access the stepping clock: pause, single step, time scale, raw tpf or fixed step.
-     *
-     * @return the live clock (not null)
-     */
+    /** @return the stepping clock: pause, single step, scale, raw or fixed (live, not null) */
     public SimulationClock getClock() {
         return clock;
     }
 
-    /**
-     * Access the particles in the order they were added.
-     *
-     * @return an unmodifiable live list (not null)
-     */
+    /** @return the particles in the order added (unmodifiable, live, not null) */
     public List<DemoParticle> getParticles() {
         ensureScene();
         return particles;
     }
 
-    /**
-     * Count the particles this demo simulates, for the report's physics share and
-     * {@code demo --profile}: by default its world's bodies or its declared particles,
-     * whichever are more. A demo that steps more of
-     * its own (a packed batch) overrides this.
-     *
-     * @return the count (&ge;0)
-     */
-    public int countSimulatedParticles() {
-        return Math.max(particles.size(), world.countBodies());
-    }
-
-    /**
-     * Return every key the demo responds to: the shared controls, then the demo's own.
-     *
-     * @return a new list (not null)
-     */
+    /** @return every key the demo responds to: shared, then the demo's (a new list) */
     public List<KeyBinding> getBindings() {
         ensureScene();
         return keys.copyMapped();
     }
 
-    /**
-     * Return the help overlay's text, generated from the bindings.
-     *
-     * @return the text (not null, empty before initialisation)
-     */
+    /** @return the help overlay's text, from the bindings (empty before initialisation) */
     public String getHelpText() {
         return helpText;
     }
 
-    /**
-     * Access the HUD.
-     *
-     * @return the live HUD (null before initialisation)
-     */
+    /** @return the HUD (live, null before initialisation) */
     public HudView getHud() {
         return demoHud.getView();
     }
 
-    /**
-     * Test whether velocity arrows are shown.
-     *
-     * @return true if shown
-     */
+    /** @return the mouse's control of the bodies: pick, drag, release (live, not null) */
+    public DragControl getDragControl() {
+        ensureScene();
+        return mouse.getDrags();
+    }
+
+    /** @return the mapping of the scene's plane to the window, as last laid out (live) */
+    public PlaneView getPlaneView() {
+        return scene.getPlaneView();
+    }
+
+    /** @return the wall time of each frame's simulation steps (live record, not null) */
+    public FrameTimes getPhysicsTimes() {
+        return run.getPhysicsTimes();
+    }
+
+    /** @return the count of steps that blew up (and reset the scene) since creation */
+    public int countBlowUps() {
+        return run.countBlowUps();
+    }
+
+    /** @return true once every particle has landed: the clock stops until a launch or reset */
+    public boolean isSceneOver() {
+        return run.isSceneOver();
+    }
+
+    /** @return true if velocity arrows are shown */
     public boolean areArrowsVisible() {
         return scene.areArrowsVisible();
     }
 
+    /** @param number the demo's place in the catalogue, shown before the title (&ge;1) */
+    public void setCatalogNumber(int number) {
+        demoHud.setCatalogNumber(number);
+    }
+
     /**
-     * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
-     * suits it, and frame the camera for it if it has that size. Call on the jME thread,
-     * after initialisation.
+     * Show a short note after the title ("typed 1_"), or none; lays the title out again.
+     *
+     * @param note one non-empty line, or null for none
+     */
+    public void setTitleNote(String note) {
+        demoHud.setTitleNote(note);
+    }
+
+    /** @return the note shown after the title, or null if none */
+    public String getTitleNote() {
+        return demoHud.getTitleNote();
+    }
+
+    /**
+     * Tell the demo the keys the application handles, for its help, footer and panel; the
+     * demo may not bind them. Call before initialisation.
+     *
+     * @param bindings the application's keys (not null, copied)
+     */
+    public void setApplicationBindings(List<KeyBinding> bindings) {
+        keys.setApplication(bindings);
+        demoHud.setApplicationBindings(bindings);
+    }
+
+    /** @param titles the demos in catalogue order, for the help (not null, copied) */
+    public void setDemoTitles(List<String> titles) {
+        keys.setDemoTitles(titles);
+    }
+
+    /**
+     * Lay the HUD and the scene's texts out for a window, at the HUD scale that suits it.
      *
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)
@@ -950,9 +786,8 @@ public abstract class DemoState extends BaseAppState {
 
     /**
      * Lay the HUD and the scene's texts out for a window of a size, at the HUD scale that
-     * suits it times the user's factor ({@link HudScale#layOut}: a larger factor always gives
-     * larger text; lines are hidden where the window cannot hold them), and frame the camera
-     * for it if it has that size. Call on the jME thread, after initialisation.
+     * suits it times the user's factor ({@link HudScale#layOut}), and frame the camera for it
+     * if it has that size. Call on the jME thread, after initialisation.
      *
      * @param width the window's width (in pixels, &gt;0)
      * @param height the window's height (in pixels, &gt;0)
@@ -964,8 +799,6 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Test whether the last layout was for this window size and HUD factor.
-     *
      * @param width the window's width (in pixels)
      * @param height the window's height (in pixels)
      * @param userScale the user's factor on the HUD scale
@@ -976,231 +809,55 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Ask for the current trajectories to be exported (the export key, or a panel's button):
-     * the application writes them, with a screenshot, at the end of the frame and names the
-     * folder on the HUD. Without an application that carries it out (a test), nothing happens.
-     */
-    public void requestExport() {
-        exportRequested = true;
-    }
-
-    /**
-     * Test, and forget, whether an export was asked for since the last call: for the
-     * application that carries it out.
+     * Choose how often the HUD text is rebuilt: every frame by default
+     * ({@link #HUD_REFRESH_SECONDS}), or less often ({@link #SLOW_HUD_REFRESH_SECONDS}).
      *
-     * @return true if asked for
+     * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
      */
-    public boolean takeExportRequest() {
-        boolean requested = exportRequested;
-        exportRequested = false;
-        return requested;
+    public void setHudRefreshSeconds(float seconds) {
+        demoHud.setRefreshSeconds(seconds);
     }
 
     /**
-     * Add the demo's own tables to an export, beside its particles' trajectories: what a demo
-     * with no free particle has to show (the rotation boxes per step, the fountain's counts,
-     * the aimer's shots). Called on the jME thread, or after the application stopped; may
-     * allocate. The default adds none.
+     * Switch presentation mode (F8, {@code --present}) on or off: the scene large, the HUD
+     * reduced to the title and the slide ({@link #writePresentation}). Before initialisation
+     * it is remembered and applied when the window comes.
      *
-     * @param storeResult where to add them (not null, modified)
+     * @param on true for presentation mode
      */
-    public void collectExportTables(List<StepTable> storeResult) {
+    public void setPresenting(boolean on) {
+        demoHud.setPresenting(on);
     }
 
-    /**
-     * Copy the screen rectangle of every post of the scene (targets, a gun) into a list: what
-     * a test checks particle labels against.
-     *
-     * @param storeResult where to add them (not null, modified)
-     * @return storeResult
-     */
-    List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
-        return scene.copyPostRects(storeResult);
+    /** @return true in presentation mode */
+    public boolean isPresenting() {
+        return demoHud.isPresenting();
     }
 
-    /**
-     * Copy the screen rectangle of every post's name, for tests of the layout.
-     *
-     * @param storeResult where to add them, in the posts' order (not null, modified)
-     * @return storeResult
-     */
-    List<ScreenRect> copyPostLabelRects(List<ScreenRect> storeResult) {
-        return scene.copyPostLabelRects(storeResult);
+    /** @param newNote writes lines after the demo's own (a tour stop's), or null for none */
+    public void setNote(HudNote newNote) {
+        demoHud.setNote(newNote);
     }
 
-    /**
-     * Copy the rectangle the scene (its grid, ground and bodies) is drawn into on the screen,
-     * as last laid out: the region the camera frames, widened to the scene area's shape.
-     *
-     * @param storeResult storage for the rectangle (in pixels, not null, modified)
-     * @return storeResult
-     */
-    public ScreenRect copySceneRect(ScreenRect storeResult) {
-        return scene.copyDrawnRect(getHud().getLayout().getScene(), storeResult);
+    /** @return the lines shown after the demo's own, or null if none */
+    public HudNote getNote() {
+        return demoHud.getNote();
     }
 
-    /**
-     * Copy the screen rectangle of every text shown, HUD and scene, into a list: what a test
-     * checks for overlaps. The scene's texts are left out while the help hides them.
-     *
-     * @param storeResult where to add them (not null, modified)
-     * @return storeResult
-     */
-    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
-        getHud().copyTextRects(storeResult);
-        if (!getHud().isHelpVisible()) {
-            scene.copyTextRects(storeResult);
-            ghosts.copyTextRects(storeResult);
-            if (!inspector.getRect().isEmpty()) {
-                storeResult.add(new ScreenRect().set(inspector.getRect()));
-            }
-        }
-        return storeResult;
-    }
-
-    /**
-     * Access the mapping of the scene's plane to the window, as last laid out.
-     *
-     * @return the live mapping (not null, do not modify)
-     */
-    public PlaneView getPlaneView() {
-        return scene.getPlaneView();
-    }
-
-    /**
-     * Access the exact ghosts, readouts and live graph, for tests.
-     *
-     * @return the live ghosts (not null; inactive unless the demo showed them)
-     */
-    ExactGhosts getExactGhosts() {
-        return ghosts;
-    }
-
-    /**
-     * Count the steps that blew up (and reset the scene) since the demo was created.
-     *
-     * @return the count (&ge;0)
-     */
-    public int countBlowUps() {
-        return run.countBlowUps();
-    }
-
-    /**
-     * Put every particle back to its launch state and the clock to zero; keeps the stepping
-     * mode, time scale and pause, and the camera. Allocates nothing, so a demo may call it
-     * from {@link #afterStep}: there it is recorded and done once the frame's steps are over
-     * (the rest of them do nothing), so the clock is never reset in the middle of its own
-     * step and {@code t} reads 0 with every particle at its launch point. The R key also
-     * reframes the camera. The launches are flown ahead to frame what they reach; only when
-     * that goes beyond the region framed so far (new parameters) is the grid built again,
-     * which allocates, and the camera reframed.
-     */
-    public void restart() {
-        run.restart();
-    }
-
-    /**
-     * Test whether the scene is over: every particle has landed, so nothing moves and the
-     * clock is stopped until a launch or a reset.
-     *
-     * @return true if over
-     */
-    public boolean isSceneOver() {
-        return run.isSceneOver();
-    }
-
-    /**
-     * Show a short notice on the HUD for a few seconds, e.g. why a key did nothing.
-     *
-     * @param text the notice, one line (not null, not empty)
-     */
+    /** @param text a short notice for the HUD, shown a few seconds (one non-empty line) */
     public void showNotice(String text) {
-        if (text == null || text.isEmpty() || text.indexOf('\n') >= 0) {
-            throw new IllegalArgumentException("a notice must be one non-empty line, but was "
-                    + (text == null ? "null" : "\"" + text + "\""));
-        }
         hudWriter.showNotice(text);
         demoHud.markDirty();
     }
 
-    /**
-     * Return the notice on the HUD now.
-     *
-     * @return the notice, or null if none is up
-     */
+    /** @return the notice on the HUD now, or null if none is up */
     public String getNotice() {
         return hudWriter.getNotice();
     }
 
     /**
-     * Choose how often the HUD text is rebuilt and handed to the screen: every frame by
-     * default ({@link #HUD_REFRESH_SECONDS}, 0), so the numbers match the picture, or less
-     * often, e.g. {@link #SLOW_HUD_REFRESH_SECONDS}. Either way a frame allocates nothing.
-     *
-     * @param seconds the interval (in seconds of frame time, finite, &ge;0; 0: every frame)
-     */
-    public void setHudRefreshSeconds(float seconds) {
-        if (!(seconds >= 0f) || Float.isInfinite(seconds)) {
-            throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
-                    + " >= 0, but was " + seconds);
-        }
-        demoHud.setRefreshSeconds(seconds);
-    }
-
-    /**
-     * Make the next frame last {@link #HITCH_SECONDS}, as if the game had stalled: in raw-tpf
-     * mode that is one long Euler step; in fixed-step mode the clock clamps it.
-     */
-    public void injectHitch() {
-        run.injectHitch();
-    }
-
-    /**
-     * Advance the simulation by one frame and move the views: the allocation-free part of
-     * {@link #update}, without the HUD.
-     *
-     * @param tpf the frame time (in seconds, finite, &ge;0)
-     */
-    public void advance(float tpf) {
-        advancePhysics(tpf);
-        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
-        replay.updateFrameBlend(isSceneOver());
-        afterFrame();
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).afterFrame();
-        }
-        world.getImpacts().clear();
-        scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
-        scene.updateViews();
-        ghosts.updateViews(getHud().getLayout(), getHud().isHelpVisible());
-        warnings.age(tpf);
-        hudWriter.age(tpf);
-    }
-
-    /**
-     * Advance the simulation by one frame and nothing else: the hitch, the clock's steps of
-     * the world, a blow-up's recovery and a restart asked for inside a step. Touches no view,
-     * so a test drives a demo's physics with it and no jME application; {@link #advance} is
-     * this plus the views.
-     *
-     * @param tpf the frame time (in seconds, finite, &ge;0)
-     */
-    public void advancePhysics(float tpf) {
-        run.advancePhysics(tpf);
-    }
-
-    /**
-     * Access the wall time each frame's simulation steps took ({@link #advance}: the clock,
-     * the world's steps and every hook inside them), measured with {@link System#nanoTime}.
-     *
-     * @return the live record (not null)
-     */
-    public FrameTimes getPhysicsTimes() {
-        return run.getPhysicsTimes();
-    }
-
-    /**
-     * Rebuild the HUD's body text into storeResult, without allocating.
+     * Rebuild the HUD's body text into storeResult, without allocating: the lines every demo
+     * shows, the demo's own, its parts', then the note.
      *
      * @param storeResult storage for the text (not null, cleared and modified)
      * @return storeResult
@@ -1222,26 +879,8 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Switch presentation mode on or off: the scene large (at least 75 % of the window), the
-     * HUD reduced to the title, the slide's formula lines and its readout in large type
-     * ({@link #writePresentation}), and a footer saying which key gives the full HUD back.
-     * The application's F8 and {@code --present} call it, and keep it on across demos and
-     * tour stops. Before initialisation it is remembered and applied when the window comes.
-     *
-     * @param on true for presentation mode
-     */
-    public void setPresenting(boolean on) {
-        demoHud.setPresenting(on);
-    }
-
-    /** @return true in presentation mode */
-    public boolean isPresenting() {
-        return demoHud.isPresenting();
-    }
-
-    /**
-     * Write the slide presentation mode shows now, without allocating: what the HUD shows
-     * each frame while presenting (for tests: the same numbers as {@link #formatHud}).
+     * Write the slide presentation mode shows now, the demo's then its parts', without
+     * allocating (the same numbers as {@link #formatHud}).
      *
      * @return the slide (live: rewritten by the next call or frame)
      */
@@ -1249,130 +888,156 @@ public abstract class DemoState extends BaseAppState {
         ensureScene();
         Presentation slide = demoHud.getSlide();
         slide.clear();
-        writePresentation(slide);
+        parts.writePresentation(slide);
         return slide;
     }
 
     /**
-     * Show lines after the demo's own on its HUD, e.g. a tour stop's "what to watch for".
+     * Copy the rectangle the scene is drawn into on the screen, as last laid out.
      *
-     * @param newNote writes the lines from the demo's numbers, or null for none
+     * @param storeResult storage for the rectangle (in pixels, not null, modified)
+     * @return storeResult
      */
-    public void setNote(HudNote newNote) {
-        demoHud.setNote(newNote);
+    public ScreenRect copySceneRect(ScreenRect storeResult) {
+        return scene.copyDrawnRect(getHud().getLayout().getScene(), storeResult);
     }
 
-    /** @return the lines shown after the demo's own, or null if none */
-    public HudNote getNote() {
-        return demoHud.getNote();
+    /**
+     * Copy the screen rectangle of every text shown, HUD and scene (left out while the help
+     * hides it), into a list: what a test checks for overlaps.
+     *
+     * @param storeResult where to add them (not null, modified)
+     * @return storeResult
+     */
+    public List<ScreenRect> copyTextRects(List<ScreenRect> storeResult) {
+        getHud().copyTextRects(storeResult);
+        if (!getHud().isHelpVisible()) {
+            scene.copyTextRects(storeResult);
+            ghosts.copyTextRects(storeResult);
+            mouse.copyTextRects(storeResult);
+        }
+        return storeResult;
+    }
+
+    /**
+     * Test whether the HUD takes the mouse at a screen point (the help, the panel), so that
+     * a press there picks no body behind it.
+     *
+     * @param screenX the point's x (in pixels from the window's left edge)
+     * @param screenY the point's y (in pixels from the window's bottom edge)
+     * @return true if the HUD is there
+     */
+    public boolean isHudAt(float screenX, float screenY) {
+        return mouse.isHudAt(getHud(), parameterControls.getPanel(), screenX, screenY);
+    }
+
+    /**
+     * @param storeResult where to write the picked body's inspector text (cleared, modified)
+     * @return storeResult, empty when nothing is picked
+     */
+    public StringBuilder formatInspector(StringBuilder storeResult) {
+        return mouse.formatInspector(storeResult);
+    }
+
+    /** Ask for an export of the trajectories (key, panel), carried out by the application. */
+    public void requestExport() {
+        exportRequested = true;
+    }
+
+    /** @return true if an export was asked for since the last call, which forgets it */
+    public boolean takeExportRequest() {
+        boolean requested = exportRequested;
+        exportRequested = false;
+        return requested;
+    }
+
+    /**
+     * Put every particle back to its launch state and the clock to zero ({@link DemoRun}
+     * says when; from {@link #afterStep} it is done once the frame's steps are over);
+     * keeps the stepping mode, time scale, pause and camera. Allocates nothing unless the
+     * launches reach beyond the region framed so far (the grid is built again).
+     */
+    public void restart() {
+        run.restart();
+    }
+
+    /** Make the next frame last {@link #HITCH_SECONDS}, as if the game had stalled. */
+    public void injectHitch() {
+        run.injectHitch();
+    }
+
+    /**
+     * Advance the simulation by one frame and move the views: the allocation-free part of
+     * {@link #update}, without the HUD.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advance(float tpf) {
+        advancePhysics(tpf);
+        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
+        replay.updateFrameBlend(isSceneOver());
+        parts.afterFrame();
+        world.getImpacts().clear();
+        scene.setDrawBlend(replay.updateFrameBlend(isSceneOver()));
+        scene.updateViews();
+        ghosts.updateViews(getHud().getLayout(), getHud().isHelpVisible());
+        warnings.age(tpf);
+        hudWriter.age(tpf);
+    }
+
+    /**
+     * Advance the physics by one frame and touch no view ({@link DemoRun#advancePhysics}):
+     * what a test drives without a jME application.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advancePhysics(float tpf) {
+        run.advancePhysics(tpf);
     }
 
     // ------------------------------------------ step back, replay, timeline (issue 21) ----
 
-    /**
-     * Step back one recorded step: the ring's previous state is put back and the clock
-     * paused. Allocates nothing.
-     *
-     * @return false if the ring holds no earlier step
-     */
+    /** @return false if the ring holds no earlier step (see {@link ReplayControls}) */
     public boolean stepBack() {
         ensureScene();
-        boolean done = replay.stepBack();
-        if (!done) {
-            showNotice("no earlier step recorded (the ring starts at the last reset)");
-        }
-        demoHud.markDirty();
-        return done;
+        return replayControls.stepBack();
     }
 
-    /**
-     * Step forward one step: the ring's next state while behind the live end, else a new
-     * step of h like N. Allocates nothing.
-     */
+    /** Step forward: the ring's next state while behind the live end, else a step of h. */
     public void stepForward() {
         ensureScene();
-        if (!replay.stepForward()) {
-            singleStep();
-        }
-        demoHud.markDirty();
+        replayControls.stepForward();
     }
 
-    /**
-     * Show a recorded step by its place on the timeline, pausing first (the panel's slider).
-     *
-     * @param fraction 0 for the oldest step the ring holds, 1 for the newest (clamped)
-     */
+    /** @param fraction the timeline's place to show: 0 the oldest step held, 1 the newest */
     public void scrubTo(double fraction) {
         ensureScene();
-        replay.scrub(fraction);
-        demoHud.markDirty();
+        replayControls.scrubTo(fraction);
     }
 
-    /**
-     * Test whether a recorded step, not the live end, is shown.
-     *
-     * @return true while behind the live end
-     */
+    /** @return true while a recorded step, not the live end, is shown */
     public boolean isReplaying() {
         return replay.isBehind();
     }
 
-    /**
-     * Test whether the views blend the last two physics states (F6 switches).
-     *
-     * @return true if interpolating
-     */
+    /** @return true if the views blend the last two physics states (F6 switches) */
     public boolean isInterpolating() {
         return replay.isInterpolating();
     }
 
-    /**
-     * Draw the bodies between their last two physics states, or at the raw steps (what F6
-     * switches).
-     *
-     * @param newInterpolating true to interpolate
-     */
+    /** @param newInterpolating true to draw between the last two states, false raw (F6) */
     public void setInterpolating(boolean newInterpolating) {
-        if (newInterpolating != replay.isInterpolating()) {
-            replay.toggleInterpolation();
-            demoHud.markDirty();
-        }
+        replayControls.setInterpolating(newInterpolating);
     }
 
-    /**
-     * Access the ring of recorded states (steps back, the timeline, the span export).
-     *
-     * @return the live ring (not null)
-     */
+    /** @return the ring of recorded states: steps back, timeline, span export (live) */
     public StateRing getStateRing() {
         return replay.getRing();
     }
 
-    /**
-     * Return the ring entry shown: the newest while live.
-     *
-     * @return the entry's number
-     */
+    /** @return the number of the ring entry shown: the newest while live */
     public long getShownStep() {
         return replay.getShownIndex();
-    }
-
-    /** @return the demo's replay: the ring, the step shown, the blend (for this package) */
-    Replay getReplay() {
-        return replay;
-    }
-
-    /**
-     * Append the lines the demo writes itself, below the lines every demo shows: its own
-     * ({@link #writeHudLines}), then its parts', in the order added.
-     *
-     * @param text where to append (not null, modified)
-     */
-    void writeOwnHudLines(StringBuilder text) {
-        writeHudLines(text);
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).writeHudLines(text);
-        }
     }
 
     // ------------------------------------------------------------- framework overrides ----
@@ -1380,22 +1045,17 @@ public abstract class DemoState extends BaseAppState {
     @Override
     protected void initialize(Application app) {
         ensureScene();
-        buildViews(app);
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).buildViews(app);
-        }
+        parts.buildViews(app);
         AssetManager assets = app.getAssetManager();
         BitmapFont font = HudFont.load(assets);
 
-        frameLaunches();
+        framing.frameLaunches();
         scene.build(assets, font, sceneNode);
         world.addStepListener(scene.getTrailWriter());
         ghosts.build(assets, font, sceneNode, world, scene);
         HudView hud = demoHud.build(assets, font, app.getCamera().getWidth(),
                 app.getCamera().getHeight());
-        inspector.build(assets, font);
-        hud.getNode().attachChild(inspector.getNode());
-        drags.setSphereRadius(scene.getSphereRadius());
+        mouse.build(assets, font, hud.getNode(), scene.getSphereRadius());
         hud.setFooter(keys.buildFooter());
         refreshEquations();
         helpText = keys.buildHelp(title);
@@ -1452,42 +1112,56 @@ public abstract class DemoState extends BaseAppState {
         demoHud.update(tpf);
         HudView hud = demoHud.getView();
         parameterControls.update(hud.getLayout());
-        inspector.show(drags.getPicked());
-        inspector.update(hud.getLayout(), hud.isHelpVisible());
+        mouse.update(hud);
     }
 
-    // ---------------------------------------------------------------- private helpers ----
+    // ------------------------------------------------- for this package and its tests ----
 
-    /** @return the parameters' panel and kept shots (for tests of this package) */
+    /** @return the inspector's text rectangle as last placed (live, empty while closed) */
+    ScreenRect getInspectorRect() {
+        return mouse.getInspectorRect();
+    }
+
+    /** @return the exact ghosts, readouts and live graph (live; inactive unless shown) */
+    ExactGhosts getExactGhosts() {
+        return ghosts;
+    }
+
+    /** @return the parameters' panel and kept shots (live) */
     ParameterControls getParameterControls() {
         return parameterControls;
     }
 
-    /** The parameter panel and its buttons: pause, step, reset, fire, export, next demo. */
-    private void buildPanel(Application app, BitmapFont font) {
-        List<String> labels = new ArrayList<>(List.of("Pause", "Step", "Reset"));
-        List<Runnable> actions = new ArrayList<>(List.of(
-                () -> clock.setPaused(!clock.isPaused()), this::singleStep,
-                this::restartAndReframe));
-        if (fireKey != null) {
-            labels.add("Fire");
-            actions.add(() -> fireKey.press(0));
-        }
-        labels.add("Export");
-        actions.add(this::requestExport);
-        for (int i = 0; i < applicationBindings.size(); ++i) {
-            KeyBinding binding = applicationBindings.get(i);
-            if (binding.getKeyCode(0) == KeyInput.KEY_TAB) {
-                labels.add("Next demo");
-                actions.add(() -> binding.press(0));
-            }
-        }
-        parameterControls.build(app, font, getHud().getLayout(), particles, scene,
-                scene.getSphereRadius(), sceneNode, labels, actions);
-        equationsVersion = getParameters().getVersion();
-        // The side panel's slot narrows the HUD's body: lay it out again.
-        getHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
-                getHud().getLayout().getScale());
+    /** @return the demo's replay: the ring, the step shown, the blend (live) */
+    Replay getReplay() {
+        return replay;
+    }
+
+    /**
+     * @param storeResult where to add every post's screen rectangle (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostRects(List<ScreenRect> storeResult) {
+        return scene.copyPostRects(storeResult);
+    }
+
+    /**
+     * @param storeResult where to add every post name's screen rectangle, in the posts'
+     *     order (not null, modified)
+     * @return storeResult
+     */
+    List<ScreenRect> copyPostLabelRects(List<ScreenRect> storeResult) {
+        return scene.copyPostLabelRects(storeResult);
+    }
+
+    /** @param text where to append the demo's own HUD lines, then its parts' (modified) */
+    void writeOwnHudLines(StringBuilder text) {
+        parts.writeHudLines(text);
+    }
+
+    /** @param layout the HUD's new layout, which the scene's area followed: the parts' turn */
+    void layOutParts(HudLayout layout) {
+        parts.layOut(layout);
     }
 
     /** After the panel came or went: the HUD and the scene get the window's width back. */
@@ -1501,53 +1175,42 @@ public abstract class DemoState extends BaseAppState {
         demoHud.layOutAgain();
     }
 
-    private void markHudDirty() {
-        demoHud.markDirty();
-    }
-
     /** The R key and the panel's Reset: restart, and frame the camera afresh. */
     void restartAndReframe() {
         restart();
         frameCamera();
     }
 
-    private void singleStep() {
-        run.singleStep();
-    }
-
     /** Frame the scene's region with the application's camera. */
     void frameCamera() {
-        scene.frame(getApplication().getCamera());
+        framing.frameCamera();
     }
 
-    /**
-     * Frame the region the launches reach, beyond the declared one if they go further: each
-     * particle that stops at the ground and is in flight is flown ahead with its own
-     * integrator and h ({@code LaunchReach}), so the frame follows the launch speed, angle,
-     * g and coefficients the particle has now. At every launch and reset.
-     */
-    private void frameLaunches() {
-        reach.clear();
-        for (int i = 0; i < particles.size(); ++i) {
-            DemoParticle particle = particles.get(i);
-            if (particle.stopsAtGround() && !particle.isHeld() && !particle.isParked()) {
-                reach.include(particle, clock.getStepSeconds());
-            }
-        }
-        if (scene.frameReach(reach) && getHud() != null) {
-            scene.layOut(getHud().getLayout());
-            scene.updateViews();
-            if (isEnabled()) {
-                frameCamera();
-            }
-        }
+    // ---------------------------------------------------------------- private helpers ----
+
+    /** The parameter panel with its buttons (pause, step, reset, fire, export, next demo). */
+    private void buildPanel(Application app, BitmapFont font) {
+        List<String> labels = new ArrayList<>();
+        List<Runnable> actions = new ArrayList<>();
+        keys.listPanelButtons(labels, actions, () -> clock.setPaused(!clock.isPaused()),
+                run::singleStep, this::restartAndReframe, this::requestExport);
+        parameterControls.build(app, font, getHud().getLayout(), particles, scene,
+                scene.getSphereRadius(), sceneNode, labels, actions);
+        equationsVersion = getParameters().getVersion();
+        // The side panel's slot narrows the HUD's body: lay it out again.
+        getHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight(),
+                getHud().getLayout().getScale());
+    }
+
+    private void markHudDirty() {
+        demoHud.markDirty();
     }
 
     /**
      * Declare the scene the first time anything needs it (the world, the particles, the HUD's
-     * text or the window): the particles, then the parameters and the keys. So a new demo's
-     * {@code getWorld().step(h)} steps its physics with no jME application at all; the views
-     * are built later, by {@link #initialize}, if a window comes.
+     * text or the window): the particles and the parts' records, then the parameters, the
+     * keys and the draggables. So a demo's physics steps with no jME application at all; the
+     * views are built later, by {@link #initialize}, if a window comes.
      */
     private void ensureScene() {
         if (sceneCreated || creatingScene) {
@@ -1555,16 +1218,13 @@ public abstract class DemoState extends BaseAppState {
         }
         creatingScene = true;
         createScene();
+        parts.addStateRecords(run);
         creatingScene = false;
         sceneCreated = true;
         getParameters().start();
         SharedKeys.declare(this, keys, run, scene, ghosts, hudWriter, parameterControls);
-        declareKeys();
-        for (int i = 0; i < parts.size(); ++i) {
-            parts.get(i).declareKeys();
-        }
-        declareDraggables();
-        keys.setDraggables(drags.getDraggables());
+        parts.declareKeysAndDraggables();
+        keys.setDraggables(mouse.getDrags().getDraggables());
     }
 
     /** The h parameter's setter: the clock's step, then the demo's own values from h. */

@@ -138,6 +138,10 @@ final class HudWriter {
      * @param text the notice, one line (not null)
      */
     void showNotice(String text) {
+        if (text == null || text.isEmpty() || text.indexOf('\n') >= 0) {
+            throw new IllegalArgumentException("a notice must be one non-empty line, but was "
+                    + (text == null ? "null" : "\"" + text + "\""));
+        }
         notice = text;
         noticeAgeSeconds = 0f;
     }

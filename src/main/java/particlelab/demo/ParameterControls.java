@@ -9,7 +9,9 @@ import particlelab.physics.SimulationClock;
 import particlelab.view.HudLayout;
 import particlelab.view.ParameterPanel;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
+import particlelab.world.StateSlab;
 
 /**
  * What {@link DemoState} does with a demo's parameters, in one place: declares the shared
@@ -129,6 +131,31 @@ final class ParameterControls {
             panel.addTimeline();
         }
         layout.setPanelWidth(panelVisible ? ParameterPanel.WIDTH_AT_SCALE_ONE : 0f);
+    }
+
+    /**
+     * Return the record of how many shots are kept, for the replay ring: a step back shows
+     * the kept paths of that step.
+     *
+     * @return a new record (not null)
+     */
+    StateRecord keptShotsRecord() {
+        return new StateRecord() {
+            @Override
+            public int countStateInts() {
+                return 1;
+            }
+
+            @Override
+            public void writeState(StateSlab slab) {
+                slab.putInt(countKeptShots());
+            }
+
+            @Override
+            public void readState(StateSlab slab) {
+                showKeptShotsUpTo(slab.getInt());
+            }
+        };
     }
 
     /**

@@ -15,6 +15,9 @@ import org.junit.jupiter.api.Test;
 import particlelab.app.HeadlessHarness;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.view.HudLayout;
+import particlelab.world.StateRecord;
+import particlelab.world.StateSlab;
 
 /**
  * The parts a demo adds with {@link DemoState#addPart}: the demo calls each of a part's hooks
@@ -47,8 +50,15 @@ class DemoPartTest {
 
         log.clear();
         demo.getWorld();
-        assertEquals(List.of("demo.createScene", "demo.declareKeys", "a.declareKeys",
-                "b.declareKeys"), log);
+        assertEquals(List.of("demo.createScene", "a.stateRecord", "b.stateRecord",
+                "demo.declareKeys", "a.declareKeys", "b.declareKeys", "demo.declareDraggables",
+                "a.declareDraggables", "b.declareDraggables"), log);
+        // a part's draggable follows the demo's, in the order added
+        List<String> drags = new ArrayList<>();
+        for (Draggable draggable : demo.getDragControl().getDraggables()) {
+            drags.add(draggable.getGestureLabel());
+        }
+        assertEquals(List.of("drag demo's ball", "drag a's ball"), drags);
         List<String> keys = new ArrayList<>();
         for (KeyBinding binding : demo.getBindings()) {
             keys.add(binding.getKeyLabel());
@@ -75,6 +85,30 @@ class DemoPartTest {
         String hud = demo.formatHud(new StringBuilder()).toString();
         assertEquals(List.of("demo.writeHudLines", "a.writeHudLines", "b.writeHudLines"), log);
         assertTrue(hud.endsWith("demo's line\na's line\nb's line\n"), hud);
+
+        log.clear();
+        Presentation slide = demo.formatPresentation();
+        assertEquals(List.of("demo.writePresentation", "a.writePresentation",
+                "b.writePresentation"), log);
+        // the demo wrote the slide's one readout; the parts add their formula lines after it
+        assertEquals("demo's readout", slide.getReadout().toString());
+        assertEquals("a's formula\nb's formula", slide.getFormulas().toString());
+    }
+
+    @Test
+    void aPartsStateRecordGoesBackWithAStepBack() {
+        RecordingDemo demo = new RecordingDemo(new ArrayList<>());
+        demo.getClock().setMode(SimulationClock.Mode.RAW_TPF);
+        for (int i = 0; i < 5; ++i) {
+            // raw tpf: one frame is one step
+            demo.advancePhysics(H);
+        }
+        assertEquals(5, demo.first.steps);
+        assertTrue(demo.stepBack(), "the ring holds the earlier steps");
+        // the part's count is read back from the ring with the world's state: exact ints
+        assertEquals(4, demo.first.steps);
+        demo.stepForward();
+        assertEquals(5, demo.first.steps);
     }
 
     @Test
@@ -94,6 +128,8 @@ class DemoPartTest {
                 return seen;
             });
             assertEquals(List.of("demo.buildViews", "a.buildViews", "b.buildViews"), built);
+            assertTrue(harness.call(() -> log.contains("a.layOut") && log.contains("b.layOut")),
+                    "the parts were laid out with the first layout: " + log);
             List<String> frame = harness.call(() -> {
                 log.clear();
                 demo.advance(H);
@@ -106,6 +142,19 @@ class DemoPartTest {
                 return seen;
             });
             assertEquals(List.of("demo.afterFrame", "a.afterFrame", "b.afterFrame"), frame);
+            List<String> laidOut = harness.call(() -> {
+                log.clear();
+                demo.layOut(640, 360);
+                List<String> seen = new ArrayList<>();
+                for (String entry : log) {
+                    if (entry.endsWith("layOut")) {
+                        seen.add(entry);
+                    }
+                }
+                return seen;
+            });
+            // a new layout: the scene's area follows the HUD, then each part lays out once
+            assertEquals(List.of("a.layOut", "b.layOut"), laidOut);
         }
     }
 
@@ -177,6 +226,18 @@ class DemoPartTest {
         }
 
         @Override
+        protected void declareDraggables() {
+            log.add("demo.declareDraggables");
+            declareDraggable(Draggable.launchPosition("demo's ball", getParticles()));
+        }
+
+        @Override
+        protected void writePresentation(Presentation slide) {
+            log.add("demo.writePresentation");
+            slide.readout().append("demo's readout");
+        }
+
+        @Override
         protected void writeHudLines(StringBuilder text) {
             log.add("demo.writeHudLines");
             text.append("demo's line\n");
@@ -190,6 +251,8 @@ class DemoPartTest {
         private final String keyLabel;
         private final List<String> log;
         private DemoState demo;
+        /** The steps the part saw: state of its own, recorded in the ring. */
+        private int steps;
 
         RecordingPart(String name, int keyCode, String keyLabel, List<String> log) {
             this.name = name;
@@ -225,6 +288,48 @@ class DemoPartTest {
         @Override
         public void afterStep(float stepSeconds) {
             log.add(name + ".afterStep");
+            ++steps;
+        }
+
+        @Override
+        public StateRecord stateRecord() {
+            log.add(name + ".stateRecord");
+            return new StateRecord() {
+                @Override
+                public int countStateInts() {
+                    return 1;
+                }
+
+                @Override
+                public void writeState(StateSlab slab) {
+                    slab.putInt(steps);
+                }
+
+                @Override
+                public void readState(StateSlab slab) {
+                    steps = slab.getInt();
+                }
+            };
+        }
+
+        @Override
+        public void declareDraggables() {
+            log.add(name + ".declareDraggables");
+            if (name.equals("a")) {
+                demo.declareDraggable(Draggable.launchPosition("a's ball",
+                        demo.getParticles()));
+            }
+        }
+
+        @Override
+        public void layOut(HudLayout layout) {
+            log.add(name + ".layOut");
+        }
+
+        @Override
+        public void writePresentation(Presentation slide) {
+            log.add(name + ".writePresentation");
+            slide.formula().append(name).append("'s formula");
         }
 
         @Override
