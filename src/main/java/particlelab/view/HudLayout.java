@@ -120,6 +120,11 @@ public final class HudLayout {
      * counts (about 160 flows of every help line: most of a small window's layout time).
      */
     private String helpLaidOutText;
+    /**
+     * The help text of the last layout: its columns are laid out when first asked for (the
+     * help is shown on request, and a HUD laid out again at every resize need not flow it).
+     */
+    private String helpToLayOut = "";
     private float helpLaidOutWidth = -1f;
     private float helpLaidOutHeight = -1f;
     private float helpLaidOutScale = -1f;
@@ -283,7 +288,7 @@ public final class HudLayout {
         } else {
             graph.set(0f, 0f, 0f, 0f);
         }
-        layOutHelp(helpText);
+        helpToLayOut = helpText.toString();
     }
 
     /**
@@ -376,7 +381,7 @@ public final class HudLayout {
         } else {
             graph.set(0f, 0f, 0f, 0f);
         }
-        layOutHelp(helpText);
+        helpToLayOut = helpText.toString();
     }
 
     /**
@@ -638,6 +643,7 @@ public final class HudLayout {
 
     /** @return the help's text size after shrinking to fit (in pixels) */
     public float getHelpSize() {
+        layOutHelp(helpToLayOut);
         return helpSize;
     }
 
@@ -711,11 +717,13 @@ public final class HudLayout {
 
     /** @return the help panel's background: the window below the title (live) */
     public ScreenRect getHelpPanel() {
+        layOutHelp(helpToLayOut);
         return helpPanel;
     }
 
     /** @return the help's columns, in reading order (live, do not modify) */
     public List<ScreenRect> getHelpColumns() {
+        layOutHelp(helpToLayOut);
         return helpColumns;
     }
 
@@ -731,6 +739,7 @@ public final class HudLayout {
 
     /** @return the text of each help column, in reading order (live, do not modify) */
     public List<String> getHelpColumnTexts() {
+        layOutHelp(helpToLayOut);
         return helpColumnTexts;
     }
 
