@@ -112,6 +112,24 @@ public final class HudLayout {
     private final List<String> helpColumnTexts = new ArrayList<>();
     private float scale = 1f;
     private float helpSize = HELP_SIZE;
+    /**
+     * What the help's columns were last laid out for: its text, its panel's width and height
+     * and the HUD scale (the help depends on nothing else). A body that grew a line, a new
+     * footer or title re-lays the HUD out, but not the help, which at a small window tries
+     * every size from {@link #HELP_SIZE} down in up to {@value #MAX_HELP_COLUMNS} column
+     * counts (about 160 flows of every help line: most of a small window's layout time).
+     */
+    private String helpLaidOutText;
+    /**
+     * The help text of the last layout: its columns are laid out when first asked for (the
+     * help is shown on request, and a HUD laid out again at every resize need not flow it).
+     */
+    private String helpToLayOut = "";
+    private float helpLaidOutWidth = -1f;
+    private float helpLaidOutHeight = -1f;
+    private float helpLaidOutScale = -1f;
+    /** How many times the help was flowed into columns (for tests of the layout's work). */
+    private int helpFlows;
     /** The most lines the body has needed so far, wrapped. */
     private int bodyLinesNeeded = 1;
     /** The lines the body band shows: all it needs, or fewer on a small window. */
@@ -270,7 +288,7 @@ public final class HudLayout {
         } else {
             graph.set(0f, 0f, 0f, 0f);
         }
-        layOutHelp(helpText);
+        helpToLayOut = helpText.toString();
     }
 
     /**
@@ -363,7 +381,7 @@ public final class HudLayout {
         } else {
             graph.set(0f, 0f, 0f, 0f);
         }
-        layOutHelp(helpText);
+        helpToLayOut = helpText.toString();
     }
 
     /**
@@ -625,6 +643,7 @@ public final class HudLayout {
 
     /** @return the help's text size after shrinking to fit (in pixels) */
     public float getHelpSize() {
+        layOutHelp(helpToLayOut);
         return helpSize;
     }
 
@@ -698,16 +717,29 @@ public final class HudLayout {
 
     /** @return the help panel's background: the window below the title (live) */
     public ScreenRect getHelpPanel() {
+        layOutHelp(helpToLayOut);
         return helpPanel;
     }
 
     /** @return the help's columns, in reading order (live, do not modify) */
     public List<ScreenRect> getHelpColumns() {
+        layOutHelp(helpToLayOut);
         return helpColumns;
+    }
+
+    /**
+     * Count the help's flows into columns so far: the work its layout did (each wraps every
+     * help line at one size and column width).
+     *
+     * @return the count since creation (&ge;0)
+     */
+    int countHelpFlows() {
+        return helpFlows;
     }
 
     /** @return the text of each help column, in reading order (live, do not modify) */
     public List<String> getHelpColumnTexts() {
+        layOutHelp(helpToLayOut);
         return helpColumnTexts;
     }
 
@@ -719,6 +751,15 @@ public final class HudLayout {
     private void layOutHelp(CharSequence helpText) {
         float margin = getMargin();
         helpPanel.set(0f, 0f, window.getWidth(), title.getY() - 0.3f * margin);
+        if (helpPanel.getWidth() == helpLaidOutWidth && helpPanel.getHeight() == helpLaidOutHeight
+                && scale == helpLaidOutScale && helpLaidOutText != null
+                && TextFormat.sameText(helpText, helpLaidOutText)) {
+            return;
+        }
+        helpLaidOutText = helpText.toString();
+        helpLaidOutWidth = helpPanel.getWidth();
+        helpLaidOutHeight = helpPanel.getHeight();
+        helpLaidOutScale = scale;
         List<List<String>> sections = splitSections(helpText);
         float innerWidth = helpPanel.getWidth() - 2f * margin;
         float innerHeight = helpPanel.getHeight() - 2f * margin;
@@ -744,6 +785,17 @@ public final class HudLayout {
     private boolean flowHelpInColumns(List<List<String>> sections, float size,
             float innerWidth, float innerHeight) {
         float space = 2f * getMargin();
+        // Wrapping never joins lines, and a column holds at most maxLines: when the help's
+        // own lines need more than the most columns, no flow at this size fits (the quick
+        // answer for a small window, where the sizes down to the smallest all fail).
+        int maxLines = Math.max(1, (int) Math.floor(innerHeight / measure.lineHeight(size)));
+        int lines = 0;
+        for (int i = 0; i < sections.size(); ++i) {
+            lines += sections.get(i).size();
+        }
+        if (lines > MAX_HELP_COLUMNS * maxLines) {
+            return false;
+        }
         for (int count = 1; count <= MAX_HELP_COLUMNS; ++count) {
             float columnWidth = (innerWidth - (count - 1) * space) / count;
             if (columnWidth < 1f) {
@@ -790,6 +842,7 @@ public final class HudLayout {
      */
     private boolean flowHelp(List<List<String>> sections, float size, float innerWidth,
             float innerHeight, float columnWidth) {
+        ++helpFlows;
         helpColumns.clear();
         helpColumnTexts.clear();
         float margin = getMargin();

@@ -353,6 +353,9 @@ public final class HudView {
      * @param visible true to show it
      */
     public void setHelpVisible(boolean visible) {
+        if (visible && !isHelpVisible()) {
+            placeHelp();
+        }
         helpPanel.setCullHint(visible ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
     }
 
@@ -416,6 +419,7 @@ public final class HudView {
      * @return a new list (not null)
      */
     public List<String> getHelpColumnTexts() {
+        placeHelp();
         List<String> texts = new ArrayList<>();
         for (HudText column : helpColumns) {
             texts.add(column.getText());
@@ -456,6 +460,16 @@ public final class HudView {
         backdrop.setLocalScale(screenWidth, screenHeight - scene.getTop(), 1f);
         backdrop.setLocalTranslation(0f, scene.getTop(), 0f);
 
+        if (isHelpVisible()) {
+            placeHelp();
+        }
+    }
+
+    /**
+     * Lay the help's columns out (the layout flows them when first asked since the last
+     * layout) and place them: when the help is shown, and at every layout while it is.
+     */
+    private void placeHelp() {
         ScreenRect panel = layout.getHelpPanel();
         helpBackground.setLocalScale(panel.getWidth(), panel.getHeight(), 1f);
         helpBackground.setLocalTranslation(panel.getX(), panel.getY(), 2f);

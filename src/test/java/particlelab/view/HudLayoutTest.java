@@ -223,6 +223,57 @@ class HudLayoutTest {
         assertTrue(texts.get(0).startsWith("Demo - keys\n   F  -  fire"), texts.get(0));
     }
 
+    /**
+     * Issue 36: a small window's frames took about a second each under load, because every
+     * layout (a resize, a body that grew a line, a new footer) flowed the help again at
+     * every size from the largest down, in up to five column counts, shown or not. The help
+     * is flowed when first asked for after a layout, again only when its text, its panel or
+     * the scale changed, and a size whose own lines cannot fit the most columns is passed
+     * over without a flow; the columns come out as a fresh layout's.
+     */
+    @Test
+    void theHelpIsFlowedWhenAskedForAndAgainOnlyWhenItsTextPanelOrScaleChanged() {
+        HudLayout layout = new HudLayout(MONO);
+        String help = help(80);
+        float scale = HudLayout.scaleFor(1280, 720);
+        layout.layOut(1280, 720, scale, "5.  HelloAiming", BODY, FOOTER, help);
+        layout.layOut(1920, 1080, scale, "5.  HelloAiming", BODY, FOOTER, help);
+        assertEquals(0, layout.countHelpFlows(), "laid out twice, the help never asked for");
+        layout.layOut(1280, 720, scale, "5.  HelloAiming", BODY, FOOTER, help);
+        layout.getHelpColumns();
+        int flows = layout.countHelpFlows();
+        assertTrue(flows >= 1, flows + " flows");
+        layout.layOut(1280, 720, scale, "5.  HelloAiming", BODY + "\none more line", "F8  only",
+                help);
+        layout.getHelpColumns();
+        assertEquals(flows, layout.countHelpFlows(), "a new body and footer, the same help");
+        HudLayout fresh = new HudLayout(MONO);
+        fresh.layOut(1280, 720, scale, "5.  HelloAiming", BODY + "\none more line", "F8  only",
+                help);
+        assertEquals(fresh.getHelpColumnTexts(), layout.getHelpColumnTexts());
+        assertEquals(fresh.getHelpColumns().toString(), layout.getHelpColumns().toString());
+        assertEquals(fresh.getHelpSize(), layout.getHelpSize(), 0f);
+        layout.layOut(1280, 720, scale, "5.  HelloAiming", BODY, FOOTER, help(81));
+        layout.getHelpColumnTexts();
+        assertTrue(layout.countHelpFlows() > flows, "a new help is flowed");
+        int before = layout.countHelpFlows();
+        layout.layOut(1281, 720, scale, "5.  HelloAiming", BODY, FOOTER, help(81));
+        layout.getHelpPanel();
+        assertTrue(layout.countHelpFlows() > before, "a new width is flowed");
+    }
+
+    @Test
+    void theSmallestWindowFlowsItsHelpAFewTimesNotAtEverySize() {
+        HudLayout layout = new HudLayout(MONO);
+        layout.layOut(HudLayout.MIN_WIDTH, HudLayout.MIN_HEIGHT, HudScale.MIN_SCALE,
+                "5.  HelloAiming", BODY, FOOTER, help(80));
+        layout.getHelpColumns();
+        // 93 help lines against a panel of a few lines: no size down to the smallest can
+        // hold them in five columns, so the one flow left is the smallest size's cut (it
+        // was every size from 21 px down to 11 px by 2 % in one to five columns: 165).
+        assertEquals(1, layout.countHelpFlows());
+    }
+
     @Test
     void firstLinesKeepsWholeLinesFromTheTop() {
         assertEquals("a\nb", HudLayout.firstLines("a\nb\nc", 2).toString());
