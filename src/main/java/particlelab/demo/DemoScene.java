@@ -454,6 +454,8 @@ final class DemoScene {
         // The side panel's and the graph's slots (empty, covering nothing, when not asked for).
         hudRects.add(hud.getSidePanel());
         hudRects.add(hud.getGraph());
+        // The energy ledger's strip (empty when not shown): the scene's area stays left of it.
+        hudRects.add(hud.getLedger());
         panelSlot = hud.getSidePanel();
         graphSlot = hud.getGraph();
         sceneArea = hud.getScene();

@@ -1,6 +1,12 @@
 package particlelab.demo;
 
+import com.jme3.app.Application;
+import com.jme3.math.ColorRGBA;
 import particlelab.physics.EnergyLedger;
+import particlelab.view.EnergyBars;
+import particlelab.view.HudFont;
+import particlelab.view.HudLayout;
+import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.world.World;
 import particlelab.world.WorldEnergy;
@@ -8,18 +14,24 @@ import particlelab.world.WorldEnergy;
 /**
  * Where the energy goes (issue 32): every demo's part that keeps the {@link WorldEnergy}
  * ledger of its world, records it for the export ({@code energy.csv}, one row per step) and,
- * when shown (the panel's "energy ledger", {@code --set energy=on}), writes it on the HUD as
- * a bar per
- * column: kinetic, potential, spring, thrust work, drag loss, impact loss, script work and
- * the numerical column, the energy the steps themselves created or destroyed.
+ * when shown (the panel's "energy ledger", {@code --set energy=on}), draws it as
+ * {@link EnergyBars} in the HUD's ledger strip down the scene's right edge
+ * ({@link HudLayout#getLedger}; the scene stays left of it, so no body flies under it) and
+ * writes its equation on one HUD line. A bar per column: kinetic, potential, spring, thrust
+ * work, drag loss, impact loss, script work and the numerical column, the energy the steps
+ * themselves created or destroyed, in a colour of its own. Energy held or put in goes right
+ * of the zero line, energy taken (drag, impacts) left of it; the scale is a round number at
+ * or above the largest energy since the last reset (the start's, at first), so the bars do
+ * not jitter from frame to frame.
  *
- * <p>Hidden by default: the ledger takes up to ten HUD lines, which would crowd every demo's
- * own readouts; the lecturer shows it where the slide is about energy. A parameter rather
- * than a key: every letter is taken by some demo, and a part's key would sit among each
- * demo's own keys.
+ * <p>Hidden by default in the full HUD: the strip takes a third of the scene's width. In
+ * presentation mode the bars are shown where the slide is about energy
+ * ({@link #showOnSlide}: bounce, collisions, clip, spring, racket) or when switched on. A
+ * parameter rather than a key: every letter is taken by some demo, and a part's key would
+ * sit among each demo's own keys.
  *
- * <p>The ledger starts at the demo's first step and again at every reset. Its step hooks
- * and HUD lines allocate nothing.
+ * <p>The ledger starts at the demo's first step and again at every reset. Its step hooks,
+ * frame hook and HUD line allocate nothing.
  */
 public final class EnergyPart implements DemoPart {
 
@@ -27,11 +39,31 @@ public final class EnergyPart implements DemoPart {
     public static final String PARAMETER = "energy";
     /** The export's table name: {@code energy.csv}. */
     public static final String TABLE_NAME = "energy";
-    /** The widest bar on the HUD (in characters). */
-    private static final int BAR_CHARACTERS = 24;
-    /** The HUD's names of the columns, in {@link EnergyLedger#getColumn}'s order. */
-    private static final String[] HUD_NAMES = {"kinetic", "potential", "spring",
-        "thrust work", "drag loss", "impact loss", "script work", "NUMERICAL"};
+    /** The first bar's name: the start's energy, which the others add up to. */
+    private static final String START_NAME = "start";
+    private static final ColorRGBA START_COLOR = new ColorRGBA(0.6f, 0.6f, 0.65f, 1f);
+    /** The bars' names of the columns, in {@link EnergyLedger#getColumn}'s order. */
+    private static final String[] BAR_NAMES = {"kinetic", "potential", "spring",
+        "thrust work", "drag loss", "impact loss", "script work", "numerical"};
+    /** The bars' colours, likewise: the numerical bar's is like none of the others'. */
+    private static final ColorRGBA[] BAR_COLORS = {
+        new ColorRGBA(0.35f, 0.65f, 1f, 1f),
+        new ColorRGBA(0.35f, 0.85f, 0.4f, 1f),
+        new ColorRGBA(0.3f, 0.85f, 0.8f, 1f),
+        new ColorRGBA(1f, 0.6f, 0.2f, 1f),
+        new ColorRGBA(0.95f, 0.3f, 0.3f, 1f),
+        new ColorRGBA(0.85f, 0.4f, 0.85f, 1f),
+        new ColorRGBA(0.9f, 0.85f, 0.3f, 1f),
+        new ColorRGBA(1f, 1f, 1f, 1f)};
+    /** The widest name the strip keeps room for. */
+    private static final String WIDEST_NAME = "thrust work";
+    /**
+     * The bars' text when presenting, as a fraction of the slide's text: read from the back
+     * row beside the slide's large type (the full HUD's is the scene labels' size).
+     */
+    private static final float PRESENT_TEXT_FRACTION = 0.6f;
+    /** The bars' rows: the start, every column and the numerical one. */
+    private static final int ROWS = EnergyLedger.NUMERICAL_COLUMN + 2;
 
     private DemoState demo;
     private WorldEnergy energy;
@@ -39,6 +71,20 @@ public final class EnergyPart implements DemoPart {
     /** The columns {@link #table} was made for. */
     private int tableColumns;
     private boolean shown;
+    /** Shown on the slide in presentation mode even when not switched on. */
+    private boolean onSlide;
+    /** The bars (null without a window). */
+    private EnergyBars bars;
+    /** The rows the layout's strip was asked for (0: no strip), and for which mode. */
+    private int stripRows;
+    private boolean stripPresenting;
+    /** The strip, text size and rows the bars were last laid out for. */
+    private final ScreenRect barsRect = new ScreenRect();
+    private float barsTextSize = Float.NaN;
+    private int barsRows = -1;
+    /** The bars' scale (J per half-bar; 0: choose afresh), kept until it is exceeded. */
+    private double barsScale;
+    private final StringBuilder barsTitle = new StringBuilder(48);
 
     @Override
     public void attach(DemoState newDemo) {
@@ -50,6 +96,11 @@ public final class EnergyPart implements DemoPart {
         parameters.add(DemoParameter.choice(PARAMETER, "energy ledger",
                 new String[] {"off", "on"}, 0, DemoParameter.Applies.LIVE,
                 value -> shown = Math.round(value) == 1));
+    }
+
+    @Override
+    public void buildViews(Application app) {
+        bars = new EnergyBars(app.getAssetManager(), HudFont.load(app.getAssetManager()), ROWS);
     }
 
     @Override
@@ -78,6 +129,52 @@ public final class EnergyPart implements DemoPart {
             energy.restart();
             startTable();
         }
+        barsScale = 0.0;
+    }
+
+    /**
+     * Once a frame, in a window: ask the layout for the ledger's strip or give it back, and
+     * draw the bars in it. Allocates nothing but when the strip comes or goes.
+     */
+    @Override
+    public void afterFrame() {
+        if (bars == null || demo.getHud() == null) {
+            return;
+        }
+        if (bars.getNode().getParent() == null) {
+            // The HUD's node comes and goes with the demo: the bars with it.
+            demo.getHud().getNode().attachChild(bars.getNode());
+        }
+        HudLayout layout = demo.getHud().getLayout();
+        boolean wanted = isDrawn() && energy != null && demo.getWorld().countBodies() > 0;
+        int rows = wanted ? writeBars() : 0;
+        boolean presenting = demo.isPresenting();
+        if (rows != stripRows || rows > 0 && presenting != stripPresenting) {
+            // The strip comes, goes, or fits another number of rows (a reset's new columns)
+            // or another mode's text.
+            stripRows = rows;
+            stripPresenting = presenting;
+            float size = presenting ? PRESENT_TEXT_FRACTION * HudLayout.PRESENT_SIZE
+                    : HudLayout.SCENE_LABEL_SIZE;
+            layout.setLedgerSize(wanted ? bars.widthFor(WIDEST_NAME, size) : 0f,
+                    wanted ? bars.heightFor(rows, size) : 0f);
+            demo.relayOutPanel();
+        }
+        boolean visible = wanted && !demo.getHud().isHelpVisible();
+        bars.setVisible(visible);
+        if (!visible) {
+            return;
+        }
+        ScreenRect slot = layout.getLedger();
+        float textSize = layout.isPresenting()
+                ? PRESENT_TEXT_FRACTION * layout.getBodySize() : layout.getSceneLabelSize();
+        if (rows != barsRows || !sameRect(slot, barsRect) || textSize != barsTextSize) {
+            barsRows = rows;
+            barsRect.set(slot);
+            barsTextSize = textSize;
+            bars.layOut(slot, barsTextSize, WIDEST_NAME);
+        }
+        bars.refresh();
     }
 
     @Override
@@ -94,36 +191,39 @@ public final class EnergyPart implements DemoPart {
             return;
         }
         EnergyLedger ledger = energy.getLedger();
-        int columns = energy.getColumns();
-        double largest = Math.abs(ledger.getStartJoules());
-        for (int i = 0; i <= EnergyLedger.NUMERICAL_COLUMN; ++i) {
-            largest = Math.max(largest, Math.abs(ledger.getColumn(i)));
-        }
-        text.append("energy (J, all bodies, U = 0 at y = 0): K + U + spring = start ");
-        TextFormat.appendFixed(text, ledger.getStartJoules(), 2)
-                .append(" + thrust - drag - impacts + script + numerical\n");
-        for (int i = 0; i <= EnergyLedger.NUMERICAL_COLUMN; ++i) {
-            if (i < EnergyLedger.NUMERICAL_COLUMN && (columns & (1 << i)) == 0) {
-                continue;
-            }
-            double value = ledger.getColumn(i);
-            // the name and value first, then the bar: the HUD's font is proportional
-            text.append("  ").append(HUD_NAMES[i]).append(' ');
-            TextFormat.appendFixed(text, value, 2).append("   ");
-            int length = largest > 0.0
-                    ? (int) Math.round(BAR_CHARACTERS * Math.abs(value) / largest) : 0;
-            if (length == 0 && value != 0.0) {
-                length = 1;
-            }
-            char mark = i == EnergyLedger.NUMERICAL_COLUMN ? '%' : '#';
-            for (int k = 0; k < length; ++k) {
-                text.append(mark);
-            }
-            if (i == EnergyLedger.NUMERICAL_COLUMN) {
-                text.append("  the step's own");
-            }
-            text.append('\n');
-        }
+        // One short line (a line that wraps as its numbers grow lays the HUD out again): the
+        // bars beside the scene hold the columns.
+        text.append("energy (J, all bodies, U = 0 at y = 0): K+U+spring = start + work - losses"
+                + " + numerical;  start ");
+        TextFormat.appendFixed(text, ledger.getStartJoules(), 2).append(", numerical ");
+        TextFormat.appendFixed(text, ledger.getNumericalJoules(), 4).append('\n');
+    }
+
+    /**
+     * Show the bars on the slide in presentation mode, switched on or not: for a demo whose
+     * slide is about energy. Call in the demo's constructor.
+     */
+    public void showOnSlide() {
+        onSlide = true;
+    }
+
+    /**
+     * Tell whether the bars are drawn: switched on, or presenting a demo whose slide is
+     * about energy ({@link #showOnSlide}).
+     *
+     * @return true if wanted on screen (in a window, with a ledger)
+     */
+    public boolean isDrawn() {
+        return shown || onSlide && demo.isPresenting();
+    }
+
+    /**
+     * Access the bars, for tests.
+     *
+     * @return the bars, or null without a window
+     */
+    EnergyBars getBars() {
+        return bars;
     }
 
     /**
@@ -164,6 +264,49 @@ public final class EnergyPart implements DemoPart {
             table.clear();
         }
         putRow(demo.getWorld().getTimeSeconds());
+    }
+
+    /**
+     * Set the bars' rows from the ledger now: the demo's columns and the numerical one,
+     * losses drawn left of zero; grow the scale if a bar went past it. Allocates nothing but
+     * the title's text when the scale changes.
+     *
+     * @return how many rows are set
+     */
+    private int writeBars() {
+        EnergyLedger ledger = energy.getLedger();
+        int columns = energy.getColumns();
+        double largest = Math.abs(ledger.getStartJoules());
+        bars.setRowCount(1);
+        bars.setRow(0, START_NAME, ledger.getStartJoules(), START_COLOR);
+        int rows = 1;
+        for (int i = 0; i <= EnergyLedger.NUMERICAL_COLUMN; ++i) {
+            if (i < EnergyLedger.NUMERICAL_COLUMN && (columns & (1 << i)) == 0) {
+                continue;
+            }
+            double value = ledger.getColumn(i);
+            largest = Math.max(largest, Math.abs(value));
+            // the losses are taken from the energy: drawn left of zero
+            int bit = 1 << i;
+            boolean loss = bit == EnergyLedger.DRAG || bit == EnergyLedger.IMPACT;
+            bars.setRowCount(rows + 1);
+            bars.setRow(rows, BAR_NAMES[i], loss ? -value : value, BAR_COLORS[i]);
+            ++rows;
+        }
+        if (largest > barsScale) {
+            barsScale = EnergyBars.roundUp(largest);
+            bars.setFullScale(barsScale);
+            barsTitle.setLength(0);
+            barsTitle.append("energy (J), ends at \u00b1");
+            TextFormat.appendFixed(barsTitle, barsScale, barsScale < 1.0 ? 3 : 0);
+            bars.setTitle(barsTitle);
+        }
+        return rows;
+    }
+
+    private static boolean sameRect(ScreenRect a, ScreenRect b) {
+        return a.getX() == b.getX() && a.getY() == b.getY() && a.getWidth() == b.getWidth()
+                && a.getHeight() == b.getHeight();
     }
 
     private void putRow(double timeSeconds) {

@@ -146,6 +146,8 @@ public final class BounceDemo extends DemoState {
     /** Create the demo. */
     public BounceDemo() {
         super("Bounce");
+        // The slide is about energy: presenting shows the ledger's bars.
+        getEnergyPart().showOnSlide();
     }
 
     @Override

@@ -170,6 +170,8 @@ public final class ClipResponseDemo extends DemoState {
     /** Create the demo; read its clips (a bad clip file is refused, naming line and value). */
     public ClipResponseDemo() {
         super("Clip vs physics");
+        // The slide is about energy: presenting shows the ledger's bars.
+        getEnergyPart().showOnSlide();
         for (int i = 0; i < CLIP_NAMES.length; ++i) {
             clips[i] = ClipReader.readResource("clips/" + CLIP_NAMES[i] + ".clip");
             for (int b = 0; b < TRACKS.length; ++b) {

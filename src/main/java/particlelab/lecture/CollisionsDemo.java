@@ -232,6 +232,8 @@ public final class CollisionsDemo extends DemoState {
     /** Create the demo. */
     public CollisionsDemo() {
         super("Collisions");
+        // The slide is about energy: presenting shows the ledger's bars.
+        getEnergyPart().showOnSlide();
         for (int i = 0; i < impulseLabelRects.length; ++i) {
             impulseLabelRects[i] = new ScreenRect();
         }

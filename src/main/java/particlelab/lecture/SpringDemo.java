@@ -80,6 +80,8 @@ public final class SpringDemo extends DemoState {
     /** Create the demo. */
     public SpringDemo() {
         super("Spring pull");
+        // The slide is about energy: presenting shows the ledger's bars.
+        getEnergyPart().showOnSlide();
     }
 
     // ------------------------------------------------------------------ public API ----

@@ -109,6 +109,8 @@ public final class TennisRacketDemo extends DemoState {
     /** Create the demo. */
     public TennisRacketDemo() {
         super("Tennis racket (intermediate axis)");
+        // The slide is about energy: presenting shows the ledger's bars.
+        getEnergyPart().showOnSlide();
         for (int i = 0; i < METHODS.length; ++i) {
             integrators[i] = new RotationIntegrator(RotationIntegrator.Orientation.EXACT,
                     METHODS[i], true);

@@ -10,8 +10,10 @@ import java.util.List;
  * warning band is drawn over its sky (kept even when empty, so the scene does not jump when a
  * warning comes and goes) and the footer on its ground, below {@link #getSceneFloor()}. Two
  * optional slots: a side panel down the right edge, between the title and the footer (the
- * body, warning and scene then stay left of it), and a graph in the scene's top right corner,
- * below the warning band.
+ * body, warning and scene then stay left of it), a graph in the scene's top right corner,
+ * below the warning band, and the energy ledger's strip down the scene's right edge, from
+ * below the warning band to the footer's top (the scene then stays left of it, so no body
+ * flies under it).
  * Each is asked for by its size at HUD scale 1 and is empty when not asked for. The
  * help overlay covers everything below the title and is set in columns, its first section (the
  * demo's own keys) first; it shrinks its text until every column fits the window.
@@ -93,6 +95,8 @@ public final class HudLayout {
     private static final float MAX_PANEL_SHARE = 0.4f;
     /** The largest share of the scene's width and height the graph takes. */
     private static final float MAX_GRAPH_SHARE = 0.45f;
+    /** The largest share of the width left of the side panel the ledger's strip takes. */
+    private static final float MAX_LEDGER_SHARE = 0.35f;
     /** The least a view's rectangle is high, however small the window (in pixels). */
     private static final float MIN_VIEW_PIXELS = 1f;
 
@@ -108,6 +112,7 @@ public final class HudLayout {
     private final ScreenRect helpPanel = new ScreenRect();
     private final ScreenRect sidePanel = new ScreenRect();
     private final ScreenRect graph = new ScreenRect();
+    private final ScreenRect ledger = new ScreenRect();
     private final List<ScreenRect> helpColumns = new ArrayList<>();
     private final List<String> helpColumnTexts = new ArrayList<>();
     private float scale = 1f;
@@ -147,6 +152,9 @@ public final class HudLayout {
     /** The graph's size at HUD scale 1 (pixels; 0: no graph). */
     private float graphWidth;
     private float graphHeight;
+    /** The ledger strip's size at HUD scale 1 (pixels; 0: no strip). */
+    private float ledgerWidth;
+    private float ledgerHeight;
     /** How high above the window's bottom the scene's ground must reach (in pixels). */
     private float sceneFloor;
     /** True when laid out for presentation mode ({@link #layOutPresentation}). */
@@ -271,7 +279,9 @@ public final class HudLayout {
         // texts cannot all fit: the scene still gets a rectangle of at least a pixel.
         sceneFloor = footer.getTop() + gap;
         float sceneHeight = Math.max(MIN_VIEW_PIXELS, warning.getTop());
-        scene.set(0f, 0f, leftWidth, Math.min(sceneHeight, height));
+        float ledgerPixels = placeLedger(leftWidth, warning.getY() - gap, margin);
+        scene.set(0f, 0f, Math.max(MIN_VIEW_PIXELS, leftWidth - ledgerPixels),
+                Math.min(sceneHeight, height));
         if (panelPixels > 0f) {
             float panelBottom = footer.getTop() + gap;
             sidePanel.set(leftWidth, panelBottom, panelPixels - margin,
@@ -370,7 +380,9 @@ public final class HudLayout {
                 readoutLines == 0 ? 0f : textWidth, readoutHeight);
 
         sceneFloor = readout.getTop() + gap;
-        scene.set(0f, 0f, width, Math.min(height, Math.max(MIN_VIEW_PIXELS, warning.getTop())));
+        float ledgerPixels = placeLedger(width, warning.getY() - gap, margin);
+        scene.set(0f, 0f, Math.max(MIN_VIEW_PIXELS, width - ledgerPixels),
+                Math.min(height, Math.max(MIN_VIEW_PIXELS, warning.getTop())));
         sidePanel.set(0f, 0f, 0f, 0f);
         if (graphWidth > 0f && graphHeight > 0f) {
             float graphW = Math.min(graphWidth * scale, MAX_GRAPH_SHARE * scene.getWidth());
@@ -428,6 +440,25 @@ public final class HudLayout {
         }
         graphWidth = widthAtScaleOne;
         graphHeight = heightAtScaleOne;
+    }
+
+    /**
+     * Ask for the energy ledger's strip down the scene's right edge, or none; it takes effect
+     * at the next {@link #layOut} or {@link #layOutPresentation}.
+     *
+     * @param widthAtScaleOne the strip's width at HUD scale 1 (in pixels, &ge;0; 0: none); the
+     *     layout gives it at most {@value #MAX_LEDGER_SHARE} of the width left of the panel
+     * @param heightAtScaleOne its height at HUD scale 1 (in pixels, &ge;0; 0: none); the
+     *     layout gives it at most the height from the footer's top to below the warning band
+     */
+    public void setLedgerSize(float widthAtScaleOne, float heightAtScaleOne) {
+        if (!(widthAtScaleOne >= 0f && widthAtScaleOne < Float.POSITIVE_INFINITY
+                && heightAtScaleOne >= 0f && heightAtScaleOne < Float.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("ledger size " + widthAtScaleOne + "x"
+                    + heightAtScaleOne + " must be finite and >= 0");
+        }
+        ledgerWidth = widthAtScaleOne;
+        ledgerHeight = heightAtScaleOne;
     }
 
     /**
@@ -508,6 +539,14 @@ public final class HudLayout {
     /** @return the graph's rectangle (live, do not modify; empty when none was asked for) */
     public ScreenRect getGraph() {
         return graph;
+    }
+
+    /**
+     * @return the energy ledger's strip (live, do not modify; empty when none was asked for
+     *     or the window leaves it no room)
+     */
+    public ScreenRect getLedger() {
+        return ledger;
     }
 
     /**
@@ -741,6 +780,32 @@ public final class HudLayout {
     public List<String> getHelpColumnTexts() {
         layOutHelp(helpToLayOut);
         return helpColumnTexts;
+    }
+
+    /**
+     * Place the ledger's strip at the right of the width left of the side panel, its top
+     * under the warning band, no lower than the scene's floor (above the footer). Call once
+     * the footer and {@link #sceneFloor} are set.
+     *
+     * @param leftWidth the width left of the side panel (in pixels)
+     * @param top the strip's highest top (in pixels)
+     * @param margin the HUD's margin (in pixels)
+     * @return the width the scene gives up (in pixels, &ge;0)
+     */
+    private float placeLedger(float leftWidth, float top, float margin) {
+        if (!(ledgerWidth > 0f && ledgerHeight > 0f)) {
+            ledger.set(0f, 0f, 0f, 0f);
+            return 0f;
+        }
+        float pixels = Math.min(ledgerWidth * scale, MAX_LEDGER_SHARE * leftWidth);
+        float stripWidth = Math.max(0f, pixels - margin);
+        float stripHeight = Math.max(0f, Math.min(ledgerHeight * scale, top - sceneFloor));
+        if (stripWidth <= 0f || stripHeight <= 0f) {
+            ledger.set(0f, 0f, 0f, 0f);
+            return 0f;
+        }
+        ledger.set(leftWidth - pixels, top - stripHeight, stripWidth, stripHeight);
+        return pixels;
     }
 
     /**

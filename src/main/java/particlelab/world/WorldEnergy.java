@@ -27,6 +27,11 @@ import particlelab.rigid.RigidBody;
  * </ul>
  * A body's energy counts its rotation {@code ½ωᵀIω} if it has a rotation part. Allocates
  * nothing per step once the list of bodies added in a step has met its largest size.
+ *
+ * <p>A step costs O(bodies): each body's start is found by a search that resumes where the
+ * last one ended, since the world keeps its bodies in order (removing one keeps the order
+ * of the rest, adding one puts it at the end); a body added in the step costs a look
+ * through those added in it.
  */
 public final class WorldEnergy implements StepListener, ContactListener, BodyListener {
 
@@ -43,6 +48,10 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
     /** ... and the energy each had then, with the forces of then (J). */
     private double[] startEnergies = new double[INITIAL_CAPACITY];
     private int startCount;
+    /** Where the next search of the start's bodies begins ({@link #indexAtStart}). */
+    private int searchFrom;
+    /** Bodies looked at by the searches since this was made: the cost, for tests. */
+    private long searchSteps;
     /** Bodies added during the step under way: not moved by it, their energy enters. */
     private final List<Body> addedInStep = new ArrayList<>(INITIAL_CAPACITY);
     private boolean stepping;
@@ -181,6 +190,7 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         lastDynamicJoules = dynamic;
         lastKinematicJoules = kinematic;
         addedInStep.clear();
+        searchFrom = 0;
         this.stepSeconds = stepSeconds;
         this.stepping = true;
     }
@@ -217,6 +227,7 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
     @Override
     public void afterStep(World stepping, float stepSeconds) {
         this.stepping = false;
+        searchFrom = 0;
         for (int i = 0; i < world.countBodies(); ++i) {
             bookStep(world.getBody(i), stepSeconds);
         }
@@ -233,7 +244,7 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
      * energy that change alone made: it was put in, not created by the step.
      */
     private void bookStep(Body body, float stepSeconds) {
-        if (addedInStep.contains(body)) {
+        if (!addedInStep.isEmpty() && addedInStep.contains(body)) {
             return;
         }
         double before = energyAt(body, body.previousPosition, body.previousVelocity);
@@ -257,10 +268,33 @@ public final class WorldEnergy implements StepListener, ContactListener, BodyLis
         ledger.addStepWork(body.getIntegrator(), atStart, stepSeconds, stepVelocity);
     }
 
-    /** Find a body among those at the start of the step (-1: added since). */
+    /**
+     * Count the bodies the searches for a body's start have looked at, since this was made:
+     * about one per body and step when the world keeps its order.
+     *
+     * @return the count (&ge;0)
+     */
+    long countSearchSteps() {
+        return searchSteps;
+    }
+
+    /**
+     * Find a body among those at the start of the step (-1: added since): from where the
+     * last search ended, then from the beginning, so bodies asked for in the world's order
+     * cost one look each.
+     */
     private int indexAtStart(Body body) {
-        for (int i = 0; i < startCount; ++i) {
+        for (int i = searchFrom; i < startCount; ++i) {
+            ++searchSteps;
             if (startBodies[i] == body) {
+                searchFrom = i + 1;
+                return i;
+            }
+        }
+        for (int i = 0; i < Math.min(searchFrom, startCount); ++i) {
+            ++searchSteps;
+            if (startBodies[i] == body) {
+                searchFrom = i + 1;
                 return i;
             }
         }

@@ -16,6 +16,7 @@ import particlelab.coursework.StudentRunner;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.EnergyPart;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.physics.SimulationClock;
@@ -82,6 +83,8 @@ class FrameAllocationHeadlessTest {
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> demos);
     /** True while the demos are measured in presentation mode (F8, --present). */
     private static boolean presenting;
+    /** True while the demos are measured with the energy ledger's bars on. */
+    private static boolean energyOn;
 
     @BeforeAll
     static void startApp() throws Exception {
@@ -137,6 +140,33 @@ class FrameAllocationHeadlessTest {
             assertEquals(List.of(), measureAll(0f, 0, 0, new int[1]));
         } finally {
             presenting = false;
+        }
+    }
+
+    /**
+     * The energy ledger's bars on ({@code --set energy=on}): the strip beside the scene, its
+     * bars and values rewritten every frame, in a demo of each kind of column (drag, impacts,
+     * a spring, a clip's script), laid out at the window's size and in a small window at a
+     * large HUD factor, allocate nothing.
+     */
+    @Test
+    void theEnergyBarsFrameAllocatesNothing() throws Exception {
+        energyOn = true;
+        try {
+            List<String> problems = new ArrayList<>();
+            for (int i = 0; i < demos.size(); ++i) {
+                String name = DemoCatalog.names().get(i);
+                if (name.equals("drag") || name.equals("bounce") || name.equals("spring")
+                        || name.equals("clip")) {
+                    problems.addAll(measureOne(i, 0f, 0, 0));
+                    if (name.equals("bounce")) {
+                        problems.addAll(measureOne(i, 0f, SMALL_WIDTH, SMALL_HEIGHT));
+                    }
+                }
+            }
+            assertEquals(List.of(), problems);
+        } finally {
+            energyOn = false;
         }
     }
 
@@ -260,17 +290,7 @@ class FrameAllocationHeadlessTest {
             int index = i;
             harness.call(() -> begin(index, hudRefreshSeconds, width, height));
             try {
-                // Warm up in calls of a few windows each, so none outlasts the harness's wait.
-                int frames = 0;
-                boolean quiet = false;
-                while (frames < MAX_WARM_UP_FRAMES && !(quiet && frames >= MIN_WARM_UP_FRAMES)) {
-                    quiet = harness.call(() -> warmUp(demos.get(index)));
-                    frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW;
-                }
-                String problem = harness.call(() -> measure(index));
-                if (!problem.isEmpty()) {
-                    problems.add(problem);
-                }
+                warmUpAndMeasure(index, problems);
                 if (harness.call(() -> isBodyWrapped(demos.get(index)))) {
                     ++wrapped[0];
                 }
@@ -279,6 +299,34 @@ class FrameAllocationHeadlessTest {
             }
         }
         return problems;
+    }
+
+    /** Measure one demo as {@link #measureAll} does each. */
+    private static List<String> measureOne(int index, float hudRefreshSeconds, int width,
+            int height) throws Exception {
+        List<String> problems = new ArrayList<>();
+        harness.call(() -> begin(index, hudRefreshSeconds, width, height));
+        try {
+            warmUpAndMeasure(index, problems);
+        } finally {
+            harness.call(() -> end(demos.get(index)));
+        }
+        return problems;
+    }
+
+    /** Warm a demo up, then measure it; a problem found goes into the list. */
+    private static void warmUpAndMeasure(int index, List<String> problems) throws Exception {
+        // Warm up in calls of a few windows each, so none outlasts the harness's wait.
+        int frames = 0;
+        boolean quiet = false;
+        while (frames < MAX_WARM_UP_FRAMES && !(quiet && frames >= MIN_WARM_UP_FRAMES)) {
+            quiet = harness.call(() -> warmUp(demos.get(index)));
+            frames += WARM_UP_WINDOWS * FRAMES_PER_WINDOW;
+        }
+        String problem = harness.call(() -> measure(index));
+        if (!problem.isEmpty()) {
+            problems.add(problem);
+        }
     }
 
     /**
@@ -295,6 +343,9 @@ class FrameAllocationHeadlessTest {
             // the demo out again at its next frame.
             resize(width, height);
             harness.app().getWindowControls().setUiFactor(LARGE_FACTOR);
+        }
+        if (energyOn) {
+            demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 1);
         }
         frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
@@ -314,6 +365,7 @@ class FrameAllocationHeadlessTest {
     /** Put the HUD's refresh rate, the window's size and the HUD factor back. */
     private static Boolean end(DemoState demo) {
         demo.getDragControl().clearPick();
+        demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
         demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
         resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
         harness.app().getWindowControls().setUiFactor(1f);

@@ -445,6 +445,57 @@ class HudLayoutTest {
         return text.toString();
     }
 
+    /**
+     * The energy ledger's strip (issue 32) takes its own place down the scene's right edge,
+     * in the full HUD and presenting, with the side panel and the graph or without, from the
+     * smallest window to 4K: inside the window, never of negative size, clear of every text,
+     * the panel and the graph, and the scene stays left of it (no body flies under it).
+     */
+    @ParameterizedTest
+    @CsvSource({"200, 150", "640, 360", "1280, 720", "1920, 1080", "3840, 2160", "150, 100"})
+    void theLedgerStripKeepsClearOfTheTextsAndTheSceneAtEverySize(int width, int height) {
+        for (int mode = 0; mode < 4; ++mode) {
+            boolean presenting = mode % 2 == 1;
+            boolean extras = mode >= 2;
+            HudLayout layout = new HudLayout(MONO);
+            layout.setPanelWidth(extras ? 320f : 0f);
+            layout.setGraphSize(extras ? 360f : 0f, extras ? 200f : 0f);
+            layout.setLedgerSize(380f, 180f);
+            float scale = HudLayout.scaleFor(width, height);
+            if (presenting) {
+                layout.layOutPresentation(width, height, scale, "9.  Bounce", SLIDE, READOUT,
+                        "F8  full HUD", help(40));
+            } else {
+                layout.layOut(width, height, scale, "9.  Bounce", BODY, FOOTER, help(40));
+            }
+            String where = width + "x" + height + (presenting ? " presenting" : "")
+                    + (extras ? " with panel and graph" : "");
+            ScreenRect ledger = layout.getLedger();
+            assertTrue(ledger.getWidth() >= 0f && ledger.getHeight() >= 0f,
+                    ledger + " " + where);
+            if (ledger.isEmpty()) {
+                // no room for it: the scene keeps the whole width left of the panel
+                assertTrue(width < 640, "the strip went at " + where);
+                continue;
+            }
+            assertTrue(layout.getWindow().contains(ledger), ledger + " " + where);
+            for (ScreenRect other : List.of(layout.getTitle(), layout.getBody(),
+                    layout.getWarning(), layout.getFooter(), layout.getReadout(),
+                    layout.getSidePanel(), layout.getGraph())) {
+                assertFalse(other.intersects(ledger), other + " over the strip " + ledger
+                        + " " + where);
+            }
+            assertTrue(layout.getScene().getRight() <= ledger.getX(),
+                    "the scene " + layout.getScene() + " runs under the strip " + ledger
+                    + " " + where);
+            if (width >= 1280 && !extras) {
+                // on a lecture's window it has the room it asked for, at the HUD's scale
+                assertEquals(380f * layout.getScale() - layout.getMargin(), ledger.getWidth(),
+                        1e-3f, where);
+            }
+        }
+    }
+
     /** A help text like the demos': the demo's section first, then sections of 8 keys. */
     private static String help(int keys) {
         StringBuilder text = new StringBuilder("Demo - keys\n   F  -  fire\n   Up  -  vx + 1\n");

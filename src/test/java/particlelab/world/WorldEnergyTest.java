@@ -157,4 +157,55 @@ class WorldEnergyTest {
             }
         });
     }
+
+    /**
+     * Issue 32 §4: finding each body's start costs one look per body and step when the world
+     * keeps its order, so a step is O(bodies), not O(bodies²) (a scan from the start of the
+     * list for each body looked at n(n+1)/2 = 500500 bodies a step here). Counted, not
+     * timed. Bodies destroyed mid-step and one added between steps keep the ledger adding up.
+     */
+    @Test
+    void findingTheBodiesStartsCostsOneLookPerBody() {
+        int bodies = 1000;
+        int steps = 3;
+        World world = new World();
+        ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+        Body[] made = new Body[bodies];
+        for (int i = 0; i < bodies; ++i) {
+            made[i] = world.addBody(gravity, new Vector3f(i, 10f, 0f), new Vector3f(1f, 2f, 0f),
+                    1f, 0.2f);
+        }
+        WorldEnergy energy = new WorldEnergy(world);
+        for (int s = 0; s < steps; ++s) {
+            world.step(H);
+        }
+        assertEquals(steps * bodies, energy.countSearchSteps(), "one look per body and step");
+
+        // destroyed in a step's epilogue, every seventh: the rest still one look each, and the
+        // columns still add up (the start moves by what left)
+        world.addStepListener(new StepListener() {
+            private boolean done;
+
+            @Override
+            public void beforeStep(World stepping, float stepSeconds) {
+                if (!done) {
+                    for (int i = 0; i < bodies; i += 7) {
+                        stepping.destroy(made[i]);
+                    }
+                    done = true;
+                }
+            }
+        });
+        long before = energy.countSearchSteps();
+        world.step(H);
+        world.addBody(gravity, new Vector3f(0f, 5f, 0f), new Vector3f(), 1f, 0.2f);
+        world.step(H);
+        long looks = energy.countSearchSteps() - before;
+        assertTrue(looks <= 2L * 2 * bodies, looks + " looks for two steps of " + bodies);
+        EnergyLedger ledger = energy.getLedger();
+        double state = ledger.getColumn(0) + ledger.getColumn(1);
+        double flows = ledger.getStartJoules() + ledger.getNumericalJoules();
+        // double sums of about 1e5 J: 1e-9 relative is far above their rounding
+        assertEquals(state, flows, 1e-9 * Math.abs(state));
+    }
 }

@@ -1,0 +1,191 @@
+package particlelab.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import com.jme3.math.Vector3f;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import particlelab.app.DemoCatalog;
+import particlelab.app.HeadlessHarness;
+import particlelab.app.ParticleLabApp;
+import particlelab.view.EnergyBars;
+import particlelab.view.HudLayout;
+import particlelab.view.ScreenRect;
+
+/**
+ * Issue 32's bar graph in a real headless application: with {@code --set energy=on} the
+ * drag, bounce and spring demos draw the ledger's bars in the HUD's ledger strip at every
+ * window from 200x150 to 3840x2160, presenting and not: the strip inside the window, of no
+ * negative size, clear of the HUD's texts, the side panel and the graph, the scene left of
+ * it, every GUI spatial placed by finite numbers; its labels at least 14 px at 1280x720;
+ * its scale the same from frame to frame while the energy stays under it; its last bar the
+ * ledger's numerical column. Presenting, bounce shows the bars without being switched on
+ * (its slide is about energy) and drag does not.
+ */
+class EnergyBarsHeadlessTest {
+
+    private static final float H = 1f / 60f;
+    private static final int[][] WINDOWS = {{200, 150}, {640, 360}, {1280, 720},
+        {3840, 2160}};
+    /** Frames after each change: the strip is asked for, then laid out and drawn. */
+    private static final int FRAMES = 4;
+    /** Frames watched for a steady scale: a second of the bounce's fall and rebound. */
+    private static final int STEADY_FRAMES = 60;
+    /** The least label size a back row reads at 1280x720 (pixels), issue 32. */
+    private static final float BACK_ROW_PIXELS = 14f;
+    private static final List<String> SHOWN = List.of("drag", "bounce", "spring");
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+
+    @Test
+    void theBarsKeepToTheirStripAtEveryWindowPresentingAndNot() throws Exception {
+        List<String> problems = new ArrayList<>();
+        ParticleLabApp app = harness.app();
+        for (String name : SHOWN) {
+            int index = DemoCatalog.names().indexOf(name);
+            DemoState demo = app.getSwitcher().getDemos().get(index);
+            harness.call(() -> {
+                app.getSwitcher().select(index);
+                demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 1);
+                frames(app, FRAMES);
+                return true;
+            });
+            for (boolean presenting : new boolean[] {false, true}) {
+                for (int[] window : WINDOWS) {
+                    problems.add(harness.call(() -> {
+                        app.getWindowControls().setPresenting(presenting);
+                        app.reshape(window[0], window[1]);
+                        frames(app, FRAMES);
+                        return check(demo, window, presenting);
+                    }));
+                }
+            }
+            harness.call(() -> {
+                demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
+                app.getWindowControls().setPresenting(false);
+                app.reshape(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+                frames(app, FRAMES);
+                return true;
+            });
+        }
+        problems.removeIf(String::isEmpty);
+        assertEquals(List.of(), problems.subList(0, Math.min(8, problems.size())),
+                problems.size() + " problems");
+    }
+
+    @Test
+    void presentingShowsTheBarsWhereTheSlideIsAboutEnergy() throws Exception {
+        ParticleLabApp app = harness.app();
+        assertEquals("bounce true, drag false", harness.call(() -> {
+            StringBuilder shown = new StringBuilder();
+            for (String name : new String[] {"bounce", "drag"}) {
+                int index = DemoCatalog.names().indexOf(name);
+                DemoState demo = app.getSwitcher().getDemos().get(index);
+                app.getSwitcher().select(index);
+                app.getWindowControls().setPresenting(true);
+                frames(app, FRAMES);
+                EnergyBars bars = demo.getEnergyPart().getBars();
+                shown.append(shown.length() == 0 ? "" : ", ").append(name).append(' ')
+                        .append(bars.isVisible()
+                                && !demo.getHud().getLayout().getLedger().isEmpty());
+                app.getWindowControls().setPresenting(false);
+                frames(app, FRAMES);
+            }
+            return shown.toString();
+        }));
+    }
+
+    @Test
+    void theScaleHoldsStillWhileTheBallBounces() throws Exception {
+        ParticleLabApp app = harness.app();
+        int index = DemoCatalog.names().indexOf("bounce");
+        DemoState demo = app.getSwitcher().getDemos().get(index);
+        String changes = harness.call(() -> {
+            app.getSwitcher().select(index);
+            demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 1);
+            frames(app, FRAMES);
+            EnergyBars bars = demo.getEnergyPart().getBars();
+            double first = bars.getFullScale();
+            StringBuilder found = new StringBuilder();
+            for (int frame = 0; frame < STEADY_FRAMES; ++frame) {
+                frames(app, 1);
+                if (bars.getFullScale() != first) {
+                    found.append(frame).append(": ").append(bars.getFullScale()).append(' ');
+                }
+            }
+            // the bounce only loses energy: the start's scale is the scale throughout
+            double start = demo.getEnergyPart().getEnergy().getLedger().getStartJoules();
+            if (first != EnergyBars.roundUp(start)) {
+                found.append("scale ").append(first).append(" for a start of ").append(start);
+            }
+            demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
+            frames(app, FRAMES);
+            return found.toString();
+        });
+        assertEquals("", changes);
+    }
+
+    /** @return "" or what is wrong with the bars of a demo on screen */
+    private static String check(DemoState demo, int[] window, boolean presenting) {
+        String where = demo.getTitle() + " at " + window[0] + "x" + window[1]
+                + (presenting ? " presenting" : "");
+        List<String> found = new ArrayList<>();
+        HudLayout layout = demo.getHud().getLayout();
+        ScreenRect strip = layout.getLedger();
+        EnergyBars bars = demo.getEnergyPart().getBars();
+        if (!(strip.getWidth() >= 0f && strip.getHeight() >= 0f)) {
+            found.add("strip " + strip);
+        }
+        if (!strip.isEmpty()) {
+            if (!layout.getWindow().contains(strip)) {
+                found.add("strip " + strip + " leaves the window");
+            }
+            for (ScreenRect other : new ScreenRect[] {layout.getTitle(), layout.getBody(),
+                layout.getWarning(), layout.getFooter(), layout.getReadout(),
+                layout.getSidePanel(), layout.getGraph()}) {
+                if (other.intersects(strip)) {
+                    found.add(other + " over the strip " + strip);
+                }
+            }
+            if (layout.getScene().getRight() > strip.getX()) {
+                found.add("the scene " + layout.getScene() + " runs under " + strip);
+            }
+            if (!bars.isVisible()) {
+                found.add("a strip but no bars");
+            }
+            int rows = bars.countRowsShown();
+            double numerical = demo.getEnergyPart().getEnergy().getLedger()
+                    .getNumericalJoules();
+            int last = bars.getRowCount() - 1;
+            if (rows == 0) {
+                found.add("no row shown");
+            } else if (bars.getValue(last) != numerical
+                    || !bars.getName(last).equals("numerical")) {
+                // the bar of the numerical column is last, with the ledger's value exactly
+                found.add("last bar " + bars.getName(last) + " " + bars.getValue(last)
+                        + ", numerical " + numerical);
+            }
+        } else if (window[0] >= 640) {
+            found.add("no strip");
+        }
+        if (window[0] == 1280 && !presenting && bars.getTextSize() < BACK_ROW_PIXELS) {
+            found.add("labels of " + bars.getTextSize() + " px");
+        }
+        demo.getApplication().getGuiViewPort().getScenes().get(0).depthFirstTraversal(s -> {
+            Vector3f at = s.getWorldTranslation();
+            Vector3f scale = s.getWorldScale();
+            if (!Float.isFinite(at.x + at.y + at.z + scale.x + scale.y + scale.z)) {
+                found.add(s.getName() + " at " + at + " scaled " + scale);
+            }
+        });
+        return found.isEmpty() ? "" : where + ": " + found;
+    }
+
+    private static void frames(ParticleLabApp app, int count) {
+        for (int i = 0; i < count; ++i) {
+            SmallPanelHeadlessTest.frame(app);
+        }
+    }
+}
