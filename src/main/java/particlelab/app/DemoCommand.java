@@ -218,11 +218,13 @@ public final class DemoCommand {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
         }
         ((FountainDemo) demos.get(DemoCatalog.indexOf(FOUNTAIN))).setParticleCount(particles);
-        int status = exportFolder != null && screenshot == null
+        boolean printCommand = options.has(StateShare.PRINT_COMMAND);
+        // an export or a printed command after N frames needs no window (unless a PNG is asked)
+        int status = (exportFolder != null || printCommand && frames > 0) && screenshot == null
                 ? ExportRun.runHeadless(demos, index, frames, fixedTpf, exportFolder, force,
-                        out, err)
+                        printCommand, out, err)
                 : openWindow(demos, index, TourGuide.NOT_TOURING, frames, screenshot, fixedTpf,
-                        uiScale, present, exportFolder, force, out, err);
+                        uiScale, present, exportFolder, force, printCommand, out, err);
         if (status != OK) {
             // A run that failed (no display, say) leaves no empty folder it made.
             SafeFiles.removeCreated(exportFolder, createdForExport);
@@ -451,6 +453,13 @@ public final class DemoCommand {
                         + " no PNG). A DIR holding .csv files is refused (they are replaced"
                         + " with " + SafeFiles.FORCE + "), and a symbolic link named .csv in"
                         + " it always is")
+                .flag(StateShare.PRINT_COMMAND, "at the end, print the command line that"
+                        + " reproduces the state shown: particle-lab demo NAME --frames K"
+                        + " --fixed-tpf H --set ..., K steps of h with the parameters that"
+                        + " differ from the defaults; the next line gives the state's hash and"
+                        + " whether the command, re-run, gives the same bits (the C key does"
+                        + " the same in the window); with --frames and no --screenshot it runs"
+                        + " without a window")
                 .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + ExportRun.EXPORT
                         + " replace existing regular files; a symbolic link is never written"
                         + " through, not even with it")
@@ -548,6 +557,33 @@ public final class DemoCommand {
     static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
             File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
             boolean replace, PrintStream out, PrintStream err) {
+        return openWindow(demos, index, tourStop, frames, screenshot, fixedTpf, uiScale,
+                present, exportFolder, replace, false, out, err);
+    }
+
+    /**
+     * Open the window, as above, and when it closes print the command line of the state the
+     * demo on screen shows ({@value StateShare#PRINT_COMMAND}).
+     *
+     * @param demos the demos, in {@link DemoCatalog} order for a tour (not null, not empty)
+     * @param index the demo to open on (a tour stop's demo)
+     * @param tourStop the tour stop to open on (from 0), or
+     *     {@link TourGuide#NOT_TOURING}
+     * @param frames the frame limit, 0 for none
+     * @param screenshot the PNG to write, or null
+     * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param present true to open in presentation mode ({@code --present})
+     * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
+     * @param printCommand true to print the state's command line when the window closes
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
+            File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
+            boolean replace, boolean printCommand, PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println("particle-lab: cannot open the window: " + noDisplay);
@@ -598,8 +634,14 @@ public final class DemoCommand {
             out.println(writtenLine(screenshot.toString(), capture.getStatistics()));
         }
         if (exportFolder != null) {
-            return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace, out,
-                    err);
+            int status = ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace,
+                    out, err);
+            if (status != OK) {
+                return status;
+            }
+        }
+        if (printCommand) {
+            ExportRun.printCommand(app.getSwitcher().getSelected(), out);
         }
         return OK;
     }

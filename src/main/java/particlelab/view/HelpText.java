@@ -60,7 +60,7 @@ public final class HelpText {
         section("jME's keys and the camera");
         key("Esc", "quit the app");
         key("F5", "show / hide jME's frame statistics");
-        key("C / M", "print the camera's position / memory use (console)");
+        key("M", "print the memory use (console)");
         key("right drag / wheel", "turn / zoom the camera;  W A S D Q Z  fly;  R  reframes");
         return this;
     }
