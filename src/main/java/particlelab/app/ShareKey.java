@@ -59,7 +59,7 @@ final class ShareKey extends BaseAppState {
                 + StateHash.hex(share.hash).substring(0, 8) + "...; "
                 + (share.reproduces() ? "re-run: same bits)"
                         : share.checked ? "not this state: it came from a drag or a key)"
-                                : "not re-run: too many steps)"));
+                                : "not re-run to check)"));
         return share;
     }
 

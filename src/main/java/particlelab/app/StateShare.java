@@ -1,5 +1,6 @@
 package particlelab.app;
 
+import com.jme3.system.JmeContext;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -26,8 +27,8 @@ import particlelab.world.Fountain;
  * has no {@code --frames}.
  * </ul>
  * The command is checked before it is given: a new demo of the same kind takes the settings
- * as {@code --set} does and K frames of h ({@link DemoState#advancePhysics}, no window), and
- * its {@link StateHash} is compared with the state's. A state reached with inputs no command
+ * as {@code --set} does and runs K frames of h in jME's headless context, as the command
+ * does without a window, and its {@link StateHash} is compared with the state's. A state reached with inputs no command
  * line carries (a drag of a body's position, a key that fired or relaunched mid-run, raw or
  * varying frame times) differs, and the second line says so rather than claim the command
  * reproduces it.
@@ -37,8 +38,8 @@ final class StateShare {
     /** The option that prints the command at the end of a run. */
     static final String PRINT_COMMAND = "--print-command";
     /**
-     * The most steps re-simulated to check a command: ten minutes at 60 Hz, which the lecture's
-     * demos re-run in well under a second; past it the line says the check was not made.
+     * The most steps re-run to check a command: ten minutes at 60 Hz (the window waits for
+     * the re-run); past it the line says the check was not made.
      */
     static final long MAX_CHECKED_STEPS = 36_000L;
 
@@ -102,8 +103,10 @@ final class StateShare {
             command.append(" --set ").append(setting);
         }
         long hash = StateHash.of(demo);
-        boolean checked = steps <= MAX_CHECKED_STEPS;
-        long commandHash = checked ? rerun(index, particles, settings, steps, stepSeconds) : 0L;
+        Long rerunHash = steps <= MAX_CHECKED_STEPS
+                ? rerun(index, particles, settings, steps, stepSeconds) : null;
+        boolean checked = rerunHash != null;
+        long commandHash = checked ? rerunHash : 0L;
         return new StateShare(command.toString(), steps, demo.getWorld().getTimeSeconds(), hash,
                 checked, commandHash);
     }
@@ -124,8 +127,9 @@ final class StateShare {
                 .append(String.format(Locale.ROOT, "%.4f", seconds)).append(" s, hash ")
                 .append(StateHash.hex(hash));
         if (!checked) {
-            return line.append("; not re-run to check (more than ").append(MAX_CHECKED_STEPS)
-                    .append(" steps)").toString();
+            return line.append(steps > MAX_CHECKED_STEPS ? "; not re-run to check (more than "
+                    + MAX_CHECKED_STEPS + " steps)" : "; the re-run to check it failed")
+                    .toString();
         }
         if (reproduces()) {
             return line.append("; the command re-run gives the same bits").toString();
@@ -136,20 +140,34 @@ final class StateShare {
                 .toString();
     }
 
-    /** Re-run a command's settings and steps in a new demo, without a window: its hash. */
-    private static long rerun(int index, int particles, List<String> settings, long steps,
+    /**
+     * Re-run a command's settings and frames in a new demo as the command does: in jME's
+     * headless context (no window, nothing drawn), so what a demo does once a frame besides
+     * its steps (the targets demo's new round) happens too. Its hash, or null if it failed.
+     */
+    private static Long rerun(int index, int particles, List<String> settings, long steps,
             float stepSeconds) {
         DemoState fresh = DemoCatalog.entries().get(index).create();
         if (fresh instanceof FountainDemo) {
             ((FountainDemo) fresh).setParticleCount(particles);
         }
         DemoCommand.applySettings(fresh, settings);
-        // the scene declared and started, no step taken (a frame of 0 s takes none)
-        fresh.advancePhysics(0f);
-        for (long k = 0L; k < steps; ++k) {
-            fresh.advancePhysics(stepSeconds);
+        if (steps == 0L) {
+            // the scene declared and started, no step taken (a frame of 0 s takes none)
+            fresh.advancePhysics(0f);
+            return StateHash.of(fresh);
         }
-        return StateHash.of(fresh);
+        ParticleLabApp app = new ParticleLabApp(List.of(fresh), 0, (int) steps, null,
+                stepSeconds, false);
+        app.start(JmeContext.Type.Headless);
+        try {
+            app.awaitFinished(Long.MAX_VALUE);
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            app.stop();
+            return null;
+        }
+        return app.getFailure() == null ? StateHash.of(fresh) : null;
     }
 
     /** The demo's place in the catalogue, by its class. */
