@@ -28,10 +28,10 @@ import particlelab.world.Fountain;
  * </ul>
  * The command is checked before it is given: a new demo of the same kind takes the settings
  * as {@code --set} does and runs K frames of h in jME's headless context, as the command
- * does without a window, and its {@link StateHash} is compared with the state's. A state reached with inputs no command
- * line carries (a drag of a body's position, a key that fired or relaunched mid-run, raw or
- * varying frame times) differs, and the second line says so rather than claim the command
- * reproduces it.
+ * does without a window, and its {@link StateHash} is compared with the state's. A state
+ * reached with inputs no command line carries (a drag of a body's position, a key that fired
+ * or relaunched mid-run, raw or varying frame times) differs, and the second line says so
+ * rather than claim the command reproduces it.
  */
 final class StateShare {
 
