@@ -20,8 +20,7 @@ import particlelab.demo.StateHash;
 final class ShareKey extends BaseAppState {
 
     /** The key's description, for the help and the pages. */
-    static final String DESCRIPTION = "print the command line that reproduces this state"
-            + " (parameters, steps of h) to the terminal";
+    static final String DESCRIPTION = "print this state as a command line (terminal)";
 
     private final DemoSwitcher switcher;
     private final PrintStream out;
