@@ -144,12 +144,14 @@ public final class DemoCommand {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY,
                     request.window[0] + "x" + request.window[1]);
         }
-        int status = exportFolder != null && request.screenshot == null
+        // an export or a printed command after N frames needs no window (unless a PNG is asked)
+        int status = (exportFolder != null || request.printCommand && request.frames > 0)
+                && request.screenshot == null
                 ? ExportRun.runHeadless(demos, index, request.frames, request.fixedTpf,
-                        exportFolder, request.force, out, err)
+                        exportFolder, request.force, request.printCommand, out, err)
                 : openWindow(demos, index, TourGuide.NOT_TOURING, request.frames,
                         request.screenshot, request.fixedTpf, request.uiScale, request.present,
-                        exportFolder, request.force, out, err);
+                        exportFolder, request.force, request.printCommand, out, err);
         if (status != Program.OK) {
             // A run that failed (no display, say) leaves no empty folder it made.
             SafeFiles.removeCreated(exportFolder, createdForExport);
@@ -177,6 +179,7 @@ public final class DemoCommand {
         List<String> settings;
         int particles;
         boolean profile;
+        boolean printCommand;
 
         /**
          * Read and check the options, the demo first (its options mean nothing without it).
@@ -245,6 +248,7 @@ public final class DemoCommand {
                         + PARTICLES + " N");
             }
             request.profile = options.has(PROFILE);
+            request.printCommand = options.has(StateShare.PRINT_COMMAND);
             return request;
         }
     }
@@ -458,11 +462,19 @@ public final class DemoCommand {
                 .value(ExportRun.EXPORT, "DIR", "after the last frame (needs --frames), write"
                         + " every particle's trajectory since its launch as DIR/<particle>.csv"
                         + " (the header and numbers of particle-lab trajectory), or the demo's"
-                        + " own table (rotation, fountain, iterate), and list the files;"
+                        + " own table (rotation, fountain, iterate), the settings beside"
+                        + " them as DIR/parameters.csv (name,value,unit), and list the files;"
                         + " without --screenshot it runs without a window (no display needed,"
                         + " no PNG). A DIR holding .csv files is refused (they are replaced"
                         + " with " + SafeFiles.FORCE + "), and a symbolic link named .csv in"
                         + " it always is")
+                .flag(StateShare.PRINT_COMMAND, "at the end, print the command line that"
+                        + " reproduces the state shown: particle-lab demo NAME --frames K"
+                        + " --fixed-tpf H --set ..., K steps of h with the parameters that"
+                        + " differ from the defaults; the next line gives the state's hash and"
+                        + " whether the command, re-run, gives the same bits (the C key does"
+                        + " the same in the window); with --frames and no --screenshot it runs"
+                        + " without a window")
                 .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + ExportRun.EXPORT
                         + " replace existing regular files; a symbolic link is never written"
                         + " through, not even with it")
@@ -560,6 +572,33 @@ public final class DemoCommand {
     static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
             File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
             boolean replace, PrintStream out, PrintStream err) {
+        return openWindow(demos, index, tourStop, frames, screenshot, fixedTpf, uiScale,
+                present, exportFolder, replace, false, out, err);
+    }
+
+    /**
+     * Open the window, as above, and when it closes print the command line of the state the
+     * demo on screen shows ({@value StateShare#PRINT_COMMAND}).
+     *
+     * @param demos the demos, in {@link DemoCatalog} order for a tour (not null, not empty)
+     * @param index the demo to open on (a tour stop's demo)
+     * @param tourStop the tour stop to open on (from 0), or
+     *     {@link TourGuide#NOT_TOURING}
+     * @param frames the frame limit, 0 for none
+     * @param screenshot the PNG to write, or null
+     * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param present true to open in presentation mode ({@code --present})
+     * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
+     * @param printCommand true to print the state's command line when the window closes
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
+            File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
+            boolean replace, boolean printCommand, PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println(Program.NAME + ": cannot open the window: " + noDisplay);
@@ -610,8 +649,14 @@ public final class DemoCommand {
             out.println(writtenLine(screenshot.toString(), capture.getStatistics()));
         }
         if (exportFolder != null) {
-            return ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace, out,
-                    err);
+            int status = ExportRun.write(app.getSwitcher().getSelected(), exportFolder, replace,
+                    out, err);
+            if (status != Program.OK) {
+                return status;
+            }
+        }
+        if (printCommand) {
+            ExportRun.printCommand(app.getSwitcher().getSelected(), out);
         }
         return Program.OK;
     }

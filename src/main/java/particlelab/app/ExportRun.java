@@ -16,7 +16,9 @@ import particlelab.demo.TrajectoryExport;
 import particlelab.files.SafeFiles;
 
 /**
- * {@code particle-lab demo NAME --frames N [--fixed-tpf H] --export DIR}: run a demo for N
+ * {@code particle-lab demo NAME --frames N [--fixed-tpf H] --export DIR}, and
+ * {@code --print-command} (the command line of the end state, {@link StateShare}): run a demo
+ * for N
  * frames and write every particle's trajectory to {@code DIR/<particle>.csv}, listing the
  * files on stdout, one line each ({@code csv FILE: ROWS rows}).
  *
@@ -97,14 +99,18 @@ final class ExportRun {
      * @param index the demo to run
      * @param frames how many frames (&gt;0)
      * @param fixedTpf the fixed frame time (in seconds), or NaN for the real clock
-     * @param folder where to write (checked by {@link #checkFolder}, created)
+     * @param folder where to write (checked by {@link #checkFolder}, created), or null for
+     *     no export ({@value StateShare#PRINT_COMMAND} alone)
      * @param replace true if existing regular files may be replaced
+     * @param printCommand true to print the command line of the end state
+     *     ({@value StateShare#PRINT_COMMAND}) after the export
      * @param out where the listing goes (not null)
      * @param err where errors go (not null)
      * @return the exit status
      */
     static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
-            Path folder, boolean replace, PrintStream out, PrintStream err) {
+            Path folder, boolean replace, boolean printCommand, PrintStream out,
+            PrintStream err) {
         DemoCommand.quietLogs();
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, null, fixedTpf, false);
         app.start(JmeContext.Type.Headless);
@@ -120,7 +126,25 @@ final class ExportRun {
             err.println(Program.NAME + ": the demo failed: " + app.getFailure());
             return Program.FAILED;
         }
-        return write(app.getSwitcher().getSelected(), folder, replace, out, err);
+        DemoState demo = app.getSwitcher().getSelected();
+        int status = folder == null ? Program.OK : write(demo, folder, replace, out, err);
+        if (status == Program.OK && printCommand) {
+            printCommand(demo, out);
+        }
+        return status;
+    }
+
+    /**
+     * Print the command line that reproduces a demo's state, and the line on its state
+     * ({@link StateShare}).
+     *
+     * @param demo the demo, its application stopped (not null)
+     * @param out where the lines go (not null)
+     */
+    static void printCommand(DemoState demo, PrintStream out) {
+        StateShare share = StateShare.of(demo);
+        out.println(share.command);
+        out.println(share.stateLine());
     }
 
     /**

@@ -49,6 +49,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private final WindowControls windowControls;
     private final TourGuide tour;
     private final ExportState export;
+    /** The C key: the command line of the state shown (issue 33). */
+    private final ShareKey shareKey;
     /** The left mouse button on the bodies; it moves the camera's turning to the right. */
     private final PickInput pickInput;
     private final int frameLimit;
@@ -105,6 +107,8 @@ public final class ParticleLabApp extends SimpleApplication {
         this.export = new ExportState(switcher, ExportState.BASE_FOLDER);
         List<KeyBinding> windowKeys = new ArrayList<>(windowControls.getBindings());
         windowKeys.add(export.getBinding());
+        this.shareKey = new ShareKey(switcher, System.out);
+        windowKeys.add(shareKey.getBinding());
         this.pickInput = new PickInput(switcher);
         this.tour = new TourGuide(switcher);
         windowKeys.addAll(tour.getBindings());
@@ -196,6 +200,15 @@ public final class ParticleLabApp extends SimpleApplication {
     }
 
     /**
+     * Access the C key's share of the state shown.
+     *
+     * @return the live key (not null)
+     */
+    ShareKey getShareKey() {
+        return shareKey;
+    }
+
+    /**
      * Wait until the application has stopped (or failed to start).
      *
      * @param timeoutSeconds the longest wait (in seconds, &gt;0)
@@ -263,6 +276,7 @@ public final class ParticleLabApp extends SimpleApplication {
         stateManager.attach(switcher);
         stateManager.attach(windowControls);
         stateManager.attach(export);
+        stateManager.attach(shareKey);
         stateManager.attach(pickInput);
     }
 

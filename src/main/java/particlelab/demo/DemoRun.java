@@ -327,6 +327,21 @@ public final class DemoRun {
     }
 
     /**
+     * Count the ints at the end of a ring entry that hold what the views show of the state
+     * (the exact ghosts, the kept shots), not the simulation: a run without views has fewer,
+     * so a comparison of two runs' simulations leaves them out ({@link StateHash}).
+     *
+     * @return the count (&ge;0)
+     */
+    public int countViewStateInts() {
+        int ints = 0;
+        for (int i = 0; i < viewRecords.size(); ++i) {
+            ints += viewRecords.get(i).countStateInts();
+        }
+        return ints;
+    }
+
+    /**
      * Access the ring of recorded states (steps back, the timeline, the span export).
      *
      * @return the live ring (not null)

@@ -18,7 +18,9 @@ import particlelab.world.StateRing;
  * gets its one launch row. A demo's own tables ({@link DemoState#collectExportTables}, e.g.
  * the rotation boxes per step) follow, one {@code FOLDER/<table>.csv} each with its header,
  * then the energy ledger's {@code FOLDER/energy.csv} ({@link EnergyPart#getTable}; at the
- * live end only).
+ * live end only). Last, beside any file written, the settings that made the run:
+ * {@code FOLDER/parameters.csv} ({@link ParametersTable}: name, value, unit), a name no
+ * particle or table takes.
  * While the demo shows a recorded step (stepped back with Home, or scrubbed on the timeline),
  * each particle's states over the ring's whole recorded span follow its own file, as
  * {@code FOLDER/<particle>-recorded.csv}, same header and format.
@@ -87,13 +89,16 @@ public final class TrajectoryExport {
      * @param demo the demo (not null, initialised or not)
      * @param folder where to write (not null, an existing folder)
      * @param replace true if the user allowed existing regular files to be replaced
-     * @return the files written, in the particles' order (not null)
+     * @return the files written, in the particles' order, parameters.csv last when anything
+     *     else was written (not null)
      * @throws IOException if a file cannot be written or is refused (the message says why)
      */
     public static List<Written> write(DemoState demo, Path folder, boolean replace)
             throws IOException {
         List<Written> written = new ArrayList<>();
         Set<String> taken = new HashSet<>();
+        // parameters.csv is the settings' name in every export (issue 33): no table takes it
+        taken.add(ParametersTable.NAME);
         List<DemoParticle> particles = demo.getParticles();
         TrajectoryRecord launchOnly = new TrajectoryRecord();
         for (int i = 0; i < particles.size(); ++i) {
@@ -145,6 +150,15 @@ public final class TrajectoryExport {
             }
             written.add(new Written(file, table.size(), table.countDropped(),
                     table.capacity()));
+        }
+        if (!written.isEmpty()) {
+            // the settings travel with the tables they made (issue 33)
+            Path file = folder.resolve(ParametersTable.NAME + ".csv");
+            int rows;
+            try (Writer out = SafeFiles.newWriter(file, replace)) {
+                rows = ParametersTable.writeCsv(demo.getParameters(), out);
+            }
+            written.add(new Written(file, rows, 0L, rows));
         }
         return written;
     }

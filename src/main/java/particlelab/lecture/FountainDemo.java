@@ -102,6 +102,15 @@ public final class FountainDemo extends DemoState {
     }
 
     /**
+     * Return the pool size ({@code --particles}), for a command line that reproduces a run.
+     *
+     * @return how many particles (from 1 to {@link Fountain#MAX_PARTICLES})
+     */
+    public int getParticleCount() {
+        return particleCount;
+    }
+
+    /**
      * Access the fountain.
      *
      * @return the live fountain (null before initialisation)

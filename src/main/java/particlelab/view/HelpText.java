@@ -59,8 +59,7 @@ public final class HelpText {
     public HelpText jmeKeys() {
         section("jME's keys and the camera");
         key("Esc", "quit the app");
-        key("F5", "show / hide jME's frame statistics");
-        key("C / M", "print the camera's position / memory use (console)");
+        key("F5 / M", "jME's frame statistics / memory use (console)");
         key("right drag / wheel", "turn / zoom the camera;  W A S D Q Z  fly;  R  reframes");
         return this;
     }

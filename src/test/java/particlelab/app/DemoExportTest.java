@@ -1,6 +1,7 @@
 package particlelab.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -12,6 +13,8 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.demo.DemoParameters;
+import particlelab.demo.ParametersTable;
 import particlelab.demo.TrajectoryRecord;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.FountainDemo;
@@ -43,9 +46,11 @@ class DemoExportTest {
                 FRAME, "--export", folder.toString());
         assertEquals(0, demo.code, demo.toString());
         Path csv = folder.resolve("ball.csv");
-        // the ball's table and the energy ledger's (issue 32), a row for each of its rows
+        // the ball's table and the energy ledger's (issue 32), a row for each of its rows,
+        // then the settings (issue 33)
         assertEquals(List.of("csv " + csv + ": 123 rows",
-                "csv " + folder.resolve("energy.csv") + ": 123 rows"), demo.outLines());
+                "csv " + folder.resolve("energy.csv") + ": 123 rows",
+                parametersLine(folder, "pull")), demo.outLines());
         assertEquals("", demo.err);
         // The pull demo's launch: P0 = 0, V0 = (10, 10, 0) m/s, m = 1 kg, gravity only; its
         // last row is the step that came down through y = 0.
@@ -80,10 +85,11 @@ class DemoExportTest {
     private static void assertDragFilesMatchTrajectory(CommandRun demo, Path folder,
             String step, String linearB, String quadraticC) throws IOException {
         assertEquals(0, demo.code, demo.toString());
-        // three balls' tables, then the energy ledger's (issue 32)
-        assertEquals(4, demo.outLines().size(), demo.out);
+        // three balls' tables, then the energy ledger's (issue 32), then the settings (33)
+        assertEquals(5, demo.outLines().size(), demo.out);
         assertTrue(demo.outLines().get(3).startsWith("csv " + folder.resolve("energy.csv")),
                 demo.out);
+        assertEquals(parametersLine(folder, "drag"), demo.outLines().get(4));
         String[][] files = {
             {"gravity-only.csv"},
             {"linear-drag-f-b-v.csv", "--linear-drag", linearB},
@@ -119,10 +125,13 @@ class DemoExportTest {
                     FRAME, "--export", folder.toString());
             assertEquals(0, run.code, run.toString());
             // each table named, and the energy ledger's where the demo's world has bodies
-            // (rotation's plates, iterate's shots; the fountain's points are no bodies)
+            // (rotation's plates, iterate's shots; the fountain's points are no bodies),
+            // then the settings (issue 33)
             boolean energy = !c[0].equals("fountain");
-            assertEquals(c.length - 2 + (energy ? 1 : 0), run.outLines().size(),
+            assertEquals(c.length - 2 + (energy ? 1 : 0) + 1, run.outLines().size(),
                     run.toString());
+            assertEquals(parametersLine(folder, c[0]),
+                    run.outLines().get(run.outLines().size() - 1));
             assertEquals(energy, Files.exists(folder.resolve("energy.csv")), run.toString());
             for (int i = 2; i < c.length; ++i) {
                 List<String> lines = Files.readAllLines(folder.resolve(c[i]));
@@ -139,18 +148,81 @@ class DemoExportTest {
             }
         }
         // The racket records no table of its own: its plates' energy ledger (issue 32) is
-        // all it writes, one row per step and the start's.
+        // all it writes, one row per step and the start's, with its settings (issue 33).
         CommandRun racket = CommandRun.of("demo", "racket", "--frames", "3", "--export",
                 temp.resolve("racket").toString());
         assertEquals(0, racket.code, racket.toString());
-        assertEquals(1, racket.outLines().size(), racket.toString());
+        assertEquals(2, racket.outLines().size(), racket.toString());
+        assertEquals(parametersLine(temp.resolve("racket"), "racket"),
+                racket.outLines().get(1));
         assertTrue(racket.outLines().get(0).startsWith("csv "
                 + temp.resolve("racket").resolve("energy.csv")), racket.toString());
-        // Before its first step (h = 1/5 s, one frame of 1/60 s) it has nothing: it says so.
+        // Before its first step (h = 1/5 s, one frame of 1/60 s) it has nothing: it says so,
+        // and writes no parameters.csv either (settings of no table).
         CommandRun early = CommandRun.of("demo", "racket", "--set", "h=1/5", "--frames", "1",
                 "--fixed-tpf", FRAME, "--export", temp.resolve("early").toString());
         assertEquals(0, early.code, early.toString());
         assertEquals(List.of("csv: none; " + ExportRun.NOTHING_TO_EXPORT), early.outLines());
+        assertFalse(Files.exists(temp.resolve("early").resolve("parameters.csv")));
+    }
+
+    /**
+     * Issue 33: an export carries the settings that made it, parameters.csv (name, value,
+     * unit), one row per parameter in the panel's order; each value, given back to --set,
+     * is the same float (a choice by its name), so the table re-makes the run.
+     */
+    @Test
+    void parametersCsvHoldsEachSettingAsSetReadsItBack(@TempDir Path folder)
+            throws IOException {
+        CommandRun demo = CommandRun.of("demo", "drag", "--set", "b=0.3", "--set", "h=1/30",
+                "--set", "angle=33.3", "--set", "lane=rk4", "--frames", "20", "--fixed-tpf",
+                FRAME, "--export", folder.toString());
+        assertEquals(0, demo.code, demo.toString());
+        List<String> lines = Files.readAllLines(folder.resolve("parameters.csv"),
+                StandardCharsets.UTF_8);
+        assertEquals(ParametersTable.HEADER, lines.get(0));
+        DemoParameters declared = new DragDemo().getParameters();
+        assertEquals(declared.size() + 1, lines.size(), lines.toString());
+        assertTrue(lines.contains("b,0.3,N s/m"), lines.toString());
+        // 1/30 as a float, written so that it reads back as that float
+        assertTrue(lines.contains("h," + (float) (1.0 / 30.0) + ",s"), lines.toString());
+        assertTrue(lines.contains("angle,33.3,deg"), lines.toString());
+        assertTrue(lines.contains("lane,rk4,"), lines.toString());
+        // Every row back through --set: a fresh demo takes each value, to the bit.
+        DragDemo fresh = new DragDemo();
+        List<String> settings = new ArrayList<>();
+        for (String line : lines.subList(1, lines.size())) {
+            String[] fields = line.split(",", -1);
+            assertEquals(3, fields.length, line);
+            assertEquals(declared.get(settings.size()).getName(), fields[0]);
+            assertEquals(declared.get(settings.size()).getUnit(), fields[2]);
+            settings.add(fields[0] + "=" + fields[1]);
+        }
+        DemoCommand.applySettings(fresh, settings);
+        DemoParameters expected = new DragDemo().getParameters();
+        for (int i = 0; i < expected.size(); ++i) {
+            float wanted = expected.getValue(i);
+            String name = expected.get(i).getName();
+            if (name.equals("b")) {
+                wanted = 0.3f;
+            } else if (name.equals("h")) {
+                wanted = (float) (1.0 / 30.0);
+            } else if (name.equals("angle")) {
+                wanted = 33.3f;
+            } else if (name.equals("lane")) {
+                wanted = expected.get(i).indexOfChoice("rk4");
+            }
+            assertEquals(Float.floatToRawIntBits(wanted),
+                    Float.floatToRawIntBits(fresh.getParameters().getValue(i)), name);
+        }
+    }
+
+    /** The listing's line for an export's parameters.csv: one row per declared parameter. */
+    private static String parametersLine(Path folder, String demo) {
+        int rows = DemoCatalog.entries().get(DemoCatalog.indexOf(demo)).create()
+                .getParameters().size();
+        return "csv " + folder.resolve("parameters.csv") + ": " + rows
+                + (rows == 1 ? " row" : " rows");
     }
 
     @Test

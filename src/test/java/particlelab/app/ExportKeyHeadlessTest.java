@@ -53,6 +53,9 @@ class ExportKeyHeadlessTest {
                 assertEquals(base, folder.getParent());
                 assertTrue(Files.isRegularFile(folder.resolve("gravity-only.csv")),
                         "no CSV in " + folder);
+                // the E key's export carries its settings too (issue 33)
+                assertTrue(Files.isRegularFile(folder.resolve("parameters.csv")),
+                        "no parameters.csv in " + folder);
             }
             assertNotEquals(first, second, "two exports shared a folder");
         }

@@ -1,0 +1,183 @@
+package particlelab.app;
+
+import com.jme3.system.JmeContext;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import particlelab.demo.DemoParameter;
+import particlelab.demo.DemoParameters;
+import particlelab.demo.DemoState;
+import particlelab.demo.ParametersTable;
+import particlelab.demo.StateHash;
+import particlelab.lecture.FountainDemo;
+import particlelab.world.Fountain;
+
+/**
+ * A demo's state as a command line to hand to a student (issue 33): {@code particle-lab demo
+ * NAME --frames K --fixed-tpf H --set NAME=VALUE ...} opens the window on the same demo with
+ * the same settings and runs it K steps of h, to the same bits. What it holds:
+ * <ul>
+ * <li>the parameters whose value in the scene differs from the declared default, each written
+ * as {@code --set} reads it back to the same float ({@link ParametersTable#valueText}); a
+ * launch dragged by its arrow is the speed and angle parameters, so it is among them;
+ * <li>the time, as steps: K = the world's steps since the scene's last start (its launch or a
+ * reset), and {@code --fixed-tpf H} with H = h, the clock's step, so each frame takes exactly
+ * one step of h (the fixed-step clock's leftover stays zero). Decision: time is given as
+ * frames of h, not as seconds, so the count is exact; a state at its launch (no step yet)
+ * has no {@code --frames}.
+ * </ul>
+ * The command is checked before it is given: a new demo of the same kind takes the settings
+ * as {@code --set} does and runs K frames of h in jME's headless context, as the command
+ * does without a window, and its {@link StateHash} is compared with the state's. A state
+ * reached with inputs no command line carries (a drag of a body's position, a key that fired
+ * or relaunched mid-run, raw or varying frame times) differs, and the second line says so
+ * rather than claim the command reproduces it.
+ */
+final class StateShare {
+
+    /** The option that prints the command at the end of a run. */
+    static final String PRINT_COMMAND = "--print-command";
+    /**
+     * The most steps re-run to check a command: ten minutes at 60 Hz (the window waits for
+     * the re-run); past it the line says the check was not made.
+     */
+    static final long MAX_CHECKED_STEPS = 36_000L;
+
+    /** The command line that reproduces the state (not null). */
+    final String command;
+    /** The world's steps since the scene's start (&ge;0). */
+    final long steps;
+    /** The simulated time of the state (in seconds). */
+    final double seconds;
+    /** The state's hash ({@link StateHash}). */
+    final long hash;
+    /** Whether the command was re-run to check it. */
+    final boolean checked;
+    /** The hash the command's run gives (meaningful when {@link #checked}). */
+    final long commandHash;
+
+    private StateShare(String command, long steps, double seconds, long hash, boolean checked,
+            long commandHash) {
+        this.command = command;
+        this.steps = steps;
+        this.seconds = seconds;
+        this.hash = hash;
+        this.checked = checked;
+        this.commandHash = commandHash;
+    }
+
+    /**
+     * Write the command line of the state a demo shows, and check it by re-running it.
+     *
+     * @param demo the demo (not null, one of the catalogue's kinds, initialised or stepped)
+     * @return the share (not null)
+     */
+    static StateShare of(DemoState demo) {
+        int index = catalogIndex(demo);
+        String name = DemoCatalog.names().get(index);
+        List<String> settings = new ArrayList<>();
+        DemoParameters parameters = demo.getParameters();
+        for (int i = 0; i < parameters.size(); ++i) {
+            DemoParameter parameter = parameters.get(i);
+            float value = parameters.getValueInScene(i);
+            if (Float.floatToRawIntBits(value)
+                    != Float.floatToRawIntBits(parameter.getDefault())) {
+                settings.add(parameter.getName() + "="
+                        + ParametersTable.valueText(parameter, value));
+            }
+        }
+        long steps = demo.getWorld().getStepCount();
+        float stepSeconds = demo.getClock().getStepSeconds();
+        int particles = demo instanceof FountainDemo
+                ? ((FountainDemo) demo).getParticleCount() : Fountain.DEFAULT_PARTICLES;
+        StringBuilder command = new StringBuilder(Program.NAME).append(' ')
+                .append(DemoCommand.NAME).append(' ').append(name);
+        if (steps > 0L) {
+            command.append(" --frames ").append(steps).append(" --fixed-tpf ")
+                    .append(Float.toString(stepSeconds));
+        }
+        if (particles != Fountain.DEFAULT_PARTICLES) {
+            command.append(" --particles ").append(particles);
+        }
+        for (String setting : settings) {
+            command.append(" --set ").append(setting);
+        }
+        long hash = StateHash.of(demo);
+        Long rerunHash = steps <= MAX_CHECKED_STEPS
+                ? rerun(index, particles, settings, steps, stepSeconds) : null;
+        boolean checked = rerunHash != null;
+        long commandHash = checked ? rerunHash : 0L;
+        return new StateShare(command.toString(), steps, demo.getWorld().getTimeSeconds(), hash,
+                checked, commandHash);
+    }
+
+    /** @return true if the command was re-run and gave the same state, bit for bit */
+    boolean reproduces() {
+        return checked && commandHash == hash;
+    }
+
+    /**
+     * Write the line under the command: the state's step, time and hash, and whether the
+     * command gives it.
+     *
+     * @return the line (not null)
+     */
+    String stateLine() {
+        StringBuilder line = new StringBuilder("state: step ").append(steps).append(", t = ")
+                .append(String.format(Locale.ROOT, "%.4f", seconds)).append(" s, hash ")
+                .append(StateHash.hex(hash));
+        if (!checked) {
+            return line.append(steps > MAX_CHECKED_STEPS ? "; not re-run to check (more than "
+                    + MAX_CHECKED_STEPS + " steps)" : "; the re-run to check it failed")
+                    .toString();
+        }
+        if (reproduces()) {
+            return line.append("; the command re-run gives the same bits").toString();
+        }
+        return line.append("; the command gives hash ").append(StateHash.hex(commandHash))
+                .append(": this state came from inputs a command line does not carry (a drag"
+                        + " of a body, a key mid-run, raw or varying frame times)")
+                .toString();
+    }
+
+    /**
+     * Re-run a command's settings and frames in a new demo as the command does: in jME's
+     * headless context (no window, nothing drawn), so what a demo does once a frame besides
+     * its steps (the targets demo's new round) happens too. Its hash, or null if it failed.
+     */
+    private static Long rerun(int index, int particles, List<String> settings, long steps,
+            float stepSeconds) {
+        DemoState fresh = DemoCatalog.entries().get(index).create();
+        if (fresh instanceof FountainDemo) {
+            ((FountainDemo) fresh).setParticleCount(particles);
+        }
+        DemoCommand.applySettings(fresh, settings);
+        if (steps == 0L) {
+            // the scene declared and started, no step taken (a frame of 0 s takes none)
+            fresh.advancePhysics(0f);
+            return StateHash.of(fresh);
+        }
+        ParticleLabApp app = new ParticleLabApp(List.of(fresh), 0, (int) steps, null,
+                stepSeconds, false);
+        app.start(JmeContext.Type.Headless);
+        try {
+            app.awaitFinished(Long.MAX_VALUE);
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            app.stop();
+            return null;
+        }
+        return app.getFailure() == null ? StateHash.of(fresh) : null;
+    }
+
+    /** The demo's place in the catalogue, by its class. */
+    private static int catalogIndex(DemoState demo) {
+        List<DemoCatalog.Entry> entries = DemoCatalog.entries();
+        for (int i = 0; i < entries.size(); ++i) {
+            if (entries.get(i).create().getClass() == demo.getClass()) {
+                return i;
+            }
+        }
+        throw new IllegalArgumentException("not a demo of the catalogue: " + demo.getTitle());
+    }
+}
