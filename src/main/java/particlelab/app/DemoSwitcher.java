@@ -9,6 +9,7 @@ import com.jme3.input.controls.KeyTrigger;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.IntPredicate;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.demo.KeyMappings;
@@ -65,6 +66,8 @@ public final class DemoSwitcher extends BaseAppState {
     private DemoState showingEntry;
     /** The note the entry's demo had before (a tour stop's), put back when the entry ends. */
     private String noteBeforeEntry;
+    /** Takes a digit before it chooses a demo (a tour question's vote), or null. */
+    private IntPredicate digitFilter;
 
     /**
      * Create a switcher.
@@ -224,10 +227,23 @@ public final class DemoSwitcher extends BaseAppState {
     }
 
     /**
+     * Let something take the digit keys first: while it returns true for a digit, that digit
+     * chooses no demo (a tour question's vote, issue 34).
+     *
+     * @param filter the filter, or null for none
+     */
+    void setDigitFilter(IntPredicate filter) {
+        digitFilter = filter;
+    }
+
+    /**
      * A digit key: complete a pending entry, start one if some two-digit demo begins with
      * this digit, or choose the demo of that number.
      */
     private void typeDigit(int digit) {
+        if (digitFilter != null && digitFilter.test(digit)) {
+            return;
+        }
         if (pendingDigit >= 0) {
             choose(10 * endEntry() + digit);
         } else if (startsTwoDigitNumber(digit)) {

@@ -40,6 +40,10 @@ public final class ParticleLabApp extends SimpleApplication {
     public static final int HEIGHT = 720;
     /** A system property "WIDTHxHEIGHT" that overrides the window's size (set by --window). */
     public static final String WINDOW_SIZE_PROPERTY = "particlelab.window";
+    /** The system property naming the tour's votes CSV ({@code tour --votes FILE}). */
+    public static final String VOTES_PROPERTY = "particlelab.votes";
+    /** The system property "true" when the votes CSV may replace a regular file. */
+    public static final String VOTES_FORCE_PROPERTY = "particlelab.votes.force";
     /** The window's title. */
     public static final String TITLE = "Particle Lab - game particle physics, lecture demos";
     private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
@@ -48,6 +52,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private final DemoSwitcher switcher;
     private final WindowControls windowControls;
     private final TourGuide tour;
+    /** The tour question's large text (F4). */
+    private final QuestionOverlay questionOverlay;
     private final ExportState export;
     /** The C key: the command line of the state shown (issue 33). */
     private final ShareKey shareKey;
@@ -112,6 +118,12 @@ public final class ParticleLabApp extends SimpleApplication {
         this.pickInput = new PickInput(switcher);
         this.tour = new TourGuide(switcher);
         windowKeys.addAll(tour.getBindings());
+        this.questionOverlay = new QuestionOverlay(tour);
+        String votes = System.getProperty(VOTES_PROPERTY);
+        if (votes != null) {
+            tour.setVotesFile(new VotesFile(java.nio.file.Paths.get(votes),
+                    Boolean.getBoolean(VOTES_FORCE_PROPERTY)));
+        }
         switcher.addBindings(windowKeys);
         this.frameLimit = frameLimit;
         this.capture = screenshot == null ? null : new ScreenshotCapture(screenshot);
@@ -179,6 +191,15 @@ public final class ParticleLabApp extends SimpleApplication {
      */
     TourGuide getTour() {
         return tour;
+    }
+
+    /**
+     * Access the tour question's large text.
+     *
+     * @return the overlay (not null)
+     */
+    QuestionOverlay getQuestionOverlay() {
+        return questionOverlay;
     }
 
     /**
@@ -278,6 +299,7 @@ public final class ParticleLabApp extends SimpleApplication {
         stateManager.attach(export);
         stateManager.attach(shareKey);
         stateManager.attach(pickInput);
+        stateManager.attach(questionOverlay);
     }
 
     @Override

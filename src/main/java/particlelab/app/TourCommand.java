@@ -2,7 +2,11 @@ package particlelab.app;
 
 import java.io.File;
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.Paths;
 import java.util.List;
 import particlelab.demo.DemoState;
 import particlelab.files.SafeFiles;
@@ -39,6 +43,7 @@ public final class TourCommand {
     private static final String WINDOW = "--window";
     private static final String UI_SCALE = "--ui-scale";
     private static final String PRESENT = DemoCommand.PRESENT;
+    private static final String VOTES = "--votes";
 
     private TourCommand() {
     }
@@ -73,8 +78,12 @@ public final class TourCommand {
                 .flag(PRESENT, "run the tour in presentation mode: the scene large, the HUD"
                         + " reduced to the demo's title, its formula lines and readout in large"
                         + " type; it stays on from stop to stop, F8 gives the full HUD back")
-                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " replace an existing regular"
-                        + " file")
+                .value(VOTES, "FILE", "write the room's votes (F4 at a stop) to FILE, a CSV"
+                        + " with one row per revealed question: " + TourVote.CSV_HEADER
+                        + "; its folder must exist; an existing FILE is refused (replaced with "
+                        + SafeFiles.FORCE + ")")
+                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + VOTES + " replace an"
+                        + " existing regular file")
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
                         + " no OpenGL), 2 on a bad command line.");
     }
@@ -128,18 +137,26 @@ public final class TourCommand {
                     + " knows which frame to save");
         }
         boolean force = options.has(SafeFiles.FORCE);
-        if (force && screenshot == null) {
+        String votes = options.string(VOTES, null);
+        if (force && screenshot == null && votes == null) {
             throw new UsageException(SafeFiles.FORCE + ": replaces the file of "
-                    + SCREENSHOT + "; give it");
+                    + SCREENSHOT + " or " + VOTES + "; give one");
         }
         if (screenshot != null) {
             DemoCommand.checkScreenshotPath(file, force);
+        }
+        if (votes != null) {
+            checkVotesPath(votes, force);
         }
         Path shotFolder = screenshot == null ? null
                 : screenshot.toPath().toAbsolutePath().getParent();
         Path created = shotFolder == null ? null : OutputFolders.create(SCREENSHOT, shotFolder);
         if (window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY, window[0] + "x" + window[1]);
+        }
+        if (votes != null) {
+            System.setProperty(ParticleLabApp.VOTES_PROPERTY, votes);
+            System.setProperty(ParticleLabApp.VOTES_FORCE_PROPERTY, Boolean.toString(force));
         }
         List<DemoState> demos = DemoCatalog.createAll();
         int demoIndex = DemoCatalog.indexOf(stops.get(stop).getDemo());
@@ -149,6 +166,37 @@ public final class TourCommand {
             SafeFiles.removeCreated(shotFolder, created);
         }
         return status;
+    }
+
+    /**
+     * Check the votes file before the window opens, creating nothing: its folder must exist,
+     * the file must not be a link or a folder, and an existing file needs --force.
+     *
+     * @param text the option's value (not null)
+     * @param replace true with --force
+     * @throws UsageException naming the value and what is allowed
+     */
+    static void checkVotesPath(String text, boolean replace) {
+        String shown = Options.show(text);
+        Path path;
+        try {
+            path = Paths.get(text).toAbsolutePath();
+        } catch (InvalidPathException bad) {
+            throw new UsageException(VOTES + ": not a valid path, but was " + shown);
+        }
+        if (Files.isDirectory(path, LinkOption.NOFOLLOW_LINKS)) {
+            throw new UsageException(VOTES + ": " + shown + " is a folder; give a file name"
+                    + " such as " + Options.show(path.resolve("votes.csv").toString()));
+        }
+        String refused = SafeFiles.refusal(Paths.get(text), replace, "choose another name");
+        if (refused != null) {
+            throw new UsageException(VOTES + ": " + refused);
+        }
+        Path folder = path.getParent();
+        if (folder == null || !Files.isDirectory(folder)) {
+            throw new UsageException(VOTES + ": the folder of " + shown + " must exist (no"
+                    + " folder is created for it)");
+        }
     }
 
     /**

@@ -1,6 +1,7 @@
 package particlelab.app;
 
 import com.jme3.input.KeyInput;
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -16,6 +17,13 @@ import particlelab.demo.KeyBinding;
  * after the demo's title ("1/22 Collision Response", in presentation mode too). PageDown and
  * PageUp go forward and back; F7 starts the tour at its first stop, or leaves it. The keys are
  * the application's, listed in every demo's help.
+ *
+ * <p>F4 asks the stop's question (issue 34, predict then reveal): the demo starts again and
+ * freezes, the question is shown in large type ({@link QuestionOverlay}) and the digit keys 1
+ * to 4 count the room's votes instead of choosing a demo; F4 again runs the scene until its
+ * own numbers show the answer, then pauses and reveals it with the stop's watch lines and the
+ * vote's split, and writes the votes CSV if {@code tour --votes} named one; F4 once more
+ * closes it.
  */
 final class TourGuide {
 
@@ -27,6 +35,18 @@ final class TourGuide {
     private final List<HudNote> notes = new ArrayList<>();
     private final List<KeyBinding> bindings = new ArrayList<>();
     private int stop = NOT_TOURING;
+    /** The question asked at this stop, or null. */
+    private TourVote vote;
+    /** True once F4 ran the scene of the question asked. */
+    private boolean voteRunning;
+    /** The answer the scene showed (from 0), once revealed. */
+    private int observed = TourQuestion.UNDECIDED;
+    /** Changes whenever the question's text does, for the overlay. */
+    private int voteVersion;
+    /** The reveal: the answer, the stop's watch lines then, the split (built once). */
+    private final StringBuilder revealText = new StringBuilder();
+    /** Where the votes go, or null for nowhere. */
+    private VotesFile votesFile;
 
     /**
      * Create the guide.
@@ -59,6 +79,10 @@ final class TourGuide {
                         leave();
                     }
                 }));
+        bindings.add(new KeyBinding(KeyInput.KEY_F4, "F4",
+                "tour question: ask it (scene frozen, 1-4 vote) -> run the scene and reveal"
+                        + " the answer -> close", this::advanceQuestion));
+        switcher.setDigitFilter(this::takeDigit);
     }
 
     /**
@@ -113,8 +137,159 @@ final class TourGuide {
         stop = index;
     }
 
+    /**
+     * Write the lecture's votes to a file (a row at each reveal).
+     *
+     * @param file the file, or null for none
+     */
+    void setVotesFile(VotesFile file) {
+        votesFile = file;
+    }
+
+    /** @return the question asked at this stop, or null */
+    TourVote getVote() {
+        return vote;
+    }
+
+    /** @return true once the asked question's scene runs (or ran) */
+    boolean isVoteRunning() {
+        return voteRunning;
+    }
+
+    /** @return a number that changes whenever the question's text changes */
+    int getVoteVersion() {
+        return voteVersion;
+    }
+
+    /**
+     * Write the question's large text: while the room votes, the question and the counts;
+     * once revealed, the answer, the stop's watch lines as the scene showed them, the split.
+     *
+     * @param text where to append (not null, modified)
+     * @return text
+     */
+    StringBuilder appendVote(StringBuilder text) {
+        if (vote == null) {
+            return text;
+        }
+        if (vote.isRevealed()) {
+            return text.append(revealText).append("F4 closes; Space runs the scene on");
+        }
+        vote.appendAsked(text);
+        int answers = vote.getQuestion().getAnswers().size();
+        if (voteRunning) {
+            return text.append("the scene runs until it shows the answer...");
+        }
+        return text.append("keys 1-").append(answers).append(" count the votes (")
+                .append(vote.countVotes()).append(" so far);  F4 runs the scene and reveals");
+    }
+
+    /**
+     * F4: ask this stop's question, run its scene, or close the answer.
+     */
+    void advanceQuestion() {
+        DemoState demo = switcher.getSelected();
+        if (stop < 0) {
+            demo.showNotice("F4 asks a tour stop's question: start the tour with F7");
+            return;
+        }
+        TourQuestion question = TourQuestions.forStop(stop);
+        if (question == null) {
+            demo.showNotice("stop " + (stop + 1) + " has no question yet");
+            return;
+        }
+        if (vote == null) {
+            // Start the scene again and hold it at its start: nothing shown gives it away.
+            demo.restart();
+            demo.getClock().setPaused(true);
+            vote = new TourVote(stop, question, question.answer(demo));
+            voteRunning = false;
+            observed = TourQuestion.UNDECIDED;
+        } else if (!voteRunning) {
+            voteRunning = true;
+            demo.getClock().setPaused(false);
+        } else if (vote.isRevealed()) {
+            vote = null;
+        } else {
+            demo.showNotice("the scene has not shown the answer yet");
+            return;
+        }
+        ++voteVersion;
+    }
+
+    /**
+     * Each frame: once the running scene shows the answer, pause it there, reveal, and write
+     * the votes. Allocates nothing until the reveal.
+     */
+    void updateVote() {
+        if (vote == null) {
+            return;
+        }
+        DemoState demo = switcher.getSelected();
+        if (demo != switcher.getDemos().get(DemoCatalog.indexOf(
+                LectureTour.stops().get(stop).getDemo()))) {
+            // Another demo was chosen (Tab): the question is dropped.
+            vote = null;
+            ++voteVersion;
+            return;
+        }
+        if (!voteRunning || vote.isRevealed()) {
+            return;
+        }
+        observed = vote.getQuestion().observe(demo);
+        if (observed == TourQuestion.UNDECIDED) {
+            return;
+        }
+        demo.getClock().setPaused(true);
+        vote.reveal();
+        TourQuestion question = vote.getQuestion();
+        int right = vote.getRight();
+        revealText.setLength(0);
+        revealText.append("Stop ").append(stop + 1).append(": ").append(question.getText())
+                .append("\nAnswer: ").append(right + 1).append(' ')
+                .append(question.getAnswers().get(right));
+        if (observed != right) {
+            revealText.append("  (the scene showed ").append(observed + 1).append(' ')
+                    .append(question.getAnswers().get(observed)).append(')');
+        }
+        revealText.append('\n');
+        LectureTour.stops().get(stop).getWatch().append(demo, revealText);
+        vote.appendSplit(revealText);
+        if (votesFile != null) {
+            try {
+                votesFile.record(vote);
+            } catch (IOException e) {
+                demo.showNotice("votes not written: " + e.getMessage());
+            }
+        }
+        ++voteVersion;
+    }
+
+    /**
+     * A digit key while a question waits for votes: 1 to the answers' count votes, any other
+     * digit does nothing (the demo keys wait until the answer is revealed).
+     *
+     * @return true if the digit was taken
+     */
+    private boolean takeDigit(int digit) {
+        if (vote == null || vote.isRevealed() || voteRunning) {
+            return vote != null && !vote.isRevealed();
+        }
+        if (!vote.vote(digit - 1)) {
+            switcher.getSelected().showNotice("keys 1-" + vote.getQuestion().getAnswers()
+                    .size() + " vote while the question is open; F4 runs the scene");
+            return true;
+        }
+        ++voteVersion;
+        return true;
+    }
+
     /** Leave the tour: the stop's lines go from its demo's HUD; the demo stays as it is. */
     void leave() {
+        if (vote != null) {
+            vote = null;
+            ++voteVersion;
+        }
         if (stop >= 0) {
             int demoIndex = DemoCatalog.indexOf(LectureTour.stops().get(stop).getDemo());
             switcher.getDemos().get(demoIndex).setNote(null);

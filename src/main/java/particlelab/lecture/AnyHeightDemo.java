@@ -148,6 +148,16 @@ public final class AnyHeightDemo extends DemoState {
         fire();
     }
 
+    /** @return the target's horizontal distance from the gun (in metres) */
+    public float getTargetDistance() {
+        return targetDistance;
+    }
+
+    /** @return the target's height above the gun (in metres) */
+    public float getTargetHeight() {
+        return targetHeight;
+    }
+
     /**
      * Return the launch angles for the current target.
      *

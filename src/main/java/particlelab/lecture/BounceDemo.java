@@ -363,6 +363,15 @@ public final class BounceDemo extends DemoState {
     }
 
     /**
+     * Return when the ball of the lane in the apex table came to rest, as its HUD line says.
+     *
+     * @return the time (in seconds of world time), NaN while it bounces
+     */
+    public double getRestSeconds() {
+        return getRecorder().getRestSeconds();
+    }
+
+    /**
      * Access the measurements of one lane's ball.
      *
      * @param test the lane's detection test (not null)

@@ -48,7 +48,8 @@ public final class SpringDemo extends DemoState {
     public static final float PULL_METRES = 3f;
     /** The anchors' height (m). */
     public static final float ANCHOR_Y = 6.5f;
-    private static final float MASS_KG = 1f;
+    /** Each mass (kg): ω² = k/m. */
+    public static final float MASS_KG = 1f;
     /** Where the masses start, at rest (m). */
     private static final float START_Y = ANCHOR_Y - PULL_METRES;
     /** Where the two springs hang (m). */

@@ -97,7 +97,8 @@ public final class WindDemo extends DemoState {
     private static final float WIND_STEP = 2f;
     /** The strongest wind offered, either way (m/s). */
     private static final float MAX_WIND = 20f;
-    private static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
+    /** Both balls' launch velocity (m/s; the tour's question flies it too: not modified). */
+    public static final Vector3f LAUNCH_VELOCITY = new Vector3f(10f, 10f, 0f);
 
     // Step 1: the forces this demo shows, as fields so keys can change them.
     private final Wind wind = new Wind(DEFAULT_WIND, WIND_B);

@@ -9,9 +9,15 @@ import java.util.HashSet;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.aiming.Hitscan;
+import particlelab.aiming.LaunchAngles;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
+import particlelab.lecture.AnyHeightDemo;
+import particlelab.lecture.BounceDemo;
 import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.IterativeAimingDemo;
+import particlelab.lecture.SpinThrowDemo;
+import particlelab.lecture.SpringDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.SimulationClock;
@@ -176,6 +182,195 @@ class TourQuestionsTest {
         assertTrue(off < TourQuestions.ON_LINE_METRES / 16, "off the line by " + off + " m");
         assertEquals(1, TourQuestions.forStop(stop).answer(TourCommand.stateOf(stop)));
         assertEquals(1, TourQuestions.forStop(stop).observe(demo));
+    }
+
+    /**
+     * The wind stop's balls, stepped without a window: the headwind (−6 m/s) pulls the wind's
+     * ball metres short of the still-air one, far more than the step's own error.
+     */
+    @Test
+    void theWindStopsFartherLandingIsMetresClearOfTheOther() {
+        double[] landings = landings("Which ball lands farther", 2);
+        assertTrue(Math.abs(landings[1] - landings[0]) > 1.0, Arrays.toString(landings));
+        assertEquals(landings[0] > landings[1] ? 0 : 1, answerTo("Which ball lands farther"));
+    }
+
+    /**
+     * The undamped spring's step is stable while {@code h < 2/ω}: at the stop's h = 1/60 s and
+     * ω = 12 /s that limit is ten times h, so "bounded" is no near thing; at h = 1/5 s it is
+     * passed and the rule says the swing grows.
+     */
+    @Test
+    void theSpringStopsStepIsFarInsideTheLimitAndAStepPastItGrows() {
+        int stop = stopOf("At this step, does the undamped");
+        DemoState demo = TourCommand.stateOf(stop);
+        double omega = Math.sqrt(demo.getParameters().getValue("k") / SpringDemo.MASS_KG);
+        double h = demo.getParameters().getValue("h");
+        assertTrue(h < 0.2 * 2 / omega, "h " + h + ", 2/ω " + 2 / omega);
+        assertEquals(0, TourQuestions.forStop(stop).answer(demo));
+        DemoCommand.applySettings(demo, List.of("h=1/5"));
+        assertEquals(1, TourQuestions.forStop(stop).answer(demo));
+    }
+
+    /**
+     * Both arcs keep {@code vx = v·cos θ}: the direct arc's flight {@code S/(v·cos θ)} is the
+     * shorter by more than a second at the height stop's target, so "direct" is no near thing.
+     */
+    @Test
+    void theHeightStopsDirectArcArrivesSecondsFirst() {
+        int stop = stopOf("Which arc reaches");
+        AnyHeightDemo height = (AnyHeightDemo) TourCommand.stateOf(stop);
+        LaunchAngles angles = LaunchAngles.solve(AnyHeightDemo.LAUNCH_SPEED,
+                height.getTargetDistance(), height.getTargetHeight(), Gravity.STANDARD_G);
+        double speed = AnyHeightDemo.LAUNCH_SPEED;
+        double direct = height.getTargetDistance() / (speed * Math.cos(angles.getLowRadians()));
+        double lob = height.getTargetDistance() / (speed * Math.cos(angles.getHighRadians()));
+        assertTrue(lob - direct > 1.0, "direct " + direct + " s, lob " + lob + " s");
+        assertEquals(0, TourQuestions.forStop(stop).answer(height));
+    }
+
+    /**
+     * HelloAiming at vx = 21 m/s: the lecture's continuous formula lands about {@code vx·h}
+     * (0.35 m) short, the discrete correction within a few centimetres (S/(vx·h) is not
+     * whole, so its last step is interpolated): their misses differ by far more than
+     * "the same"'s centimetre.
+     */
+    @Test
+    void theAimingStopsCorrectionLandsFarNearer() {
+        int stop = stopOf("Which aim lands nearer");
+        DemoParameters parameters = TourCommand.stateOf(stop).getParameters();
+        double shortfall = parameters.getValue("vx") * parameters.getValue("h");
+        assertTrue(shortfall > 10 * TourQuestions.SAME_MISS_METRES, "vx·h " + shortfall);
+        assertEquals(1, answerTo("Which aim lands nearer"));
+    }
+
+    /**
+     * The iterate stop's search (bisection, quadratic drag), as the aim command runs it: the
+     * count of shots, its answer, and the scene's own count once its round is over.
+     */
+    @Test
+    void theIterateStopsSearchCountIsTheScenesCount() {
+        int stop = stopOf("How many shots does the search");
+        DemoState demo = TourCommand.stateOf(stop);
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        // A minute of frames: a search of a few shots of a few seconds each is over by then.
+        for (int frame = 0; frame < 3600 && !((IterativeAimingDemo) demo).isRoundOver();
+                ++frame) {
+            demo.advancePhysics(1f / 60f);
+        }
+        IterativeAimingDemo iterate = (IterativeAimingDemo) demo;
+        assertTrue(iterate.isRoundOver());
+        assertEquals(iterate.getResult().getShots(), iterate.countLanded());
+        assertEquals(TourQuestions.forStop(stop).answer(TourCommand.stateOf(stop)),
+                TourQuestions.forStop(stop).observe(demo), "shots " + iterate.countLanded());
+    }
+
+    /**
+     * The bounce stop (e = 0.9, the Box2D/Jolt threshold): the ball drops 4 m, hits at
+     * {@code v0 = √(2·g·4)} = 8.85 m/s, each rebound e times the last, and rests at the first
+     * impact slower than the threshold; the hops before it last {@code Σ 2·e^k·v0/g}. The
+     * closed form's rest time, 15.2 s, is seconds clear of both 10 s and 30 s (the step moves
+     * each impact by at most h, 21 impacts by 0.35 s), so "10 to 30 s" is no near thing.
+     */
+    @Test
+    void theBounceStopsBallRestsSecondsClearOfBothBounds() {
+        int stop = stopOf("With this e and threshold");
+        BounceDemo bounce = (BounceDemo) TourCommand.stateOf(stop);
+        double e = bounce.getRestitution();
+        double g = Gravity.STANDARD_G;
+        double v = Math.sqrt(2 * g * BounceDemo.DROP_HEIGHT);
+        double rest = v / g;
+        while (v >= bounce.getThresholdSpeed()) {
+            v *= e;
+            rest += 2 * v / g;
+        }
+        // The last hop added is the one the threshold stops: it is not flown.
+        rest -= 2 * v / g;
+        assertTrue(rest > TourQuestions.REST_SECONDS_BY[0] + 2
+                && rest < TourQuestions.REST_SECONDS_BY[1] - 2, "rest at " + rest + " s");
+        assertEquals(1, TourQuestions.forStop(stop).answer(bounce));
+    }
+
+    /**
+     * The clip stop: at 12 m/s, e = 0.5, 1 kg on 2 kg, the head-on impulse leaves
+     * {@code ½·1·144 − ½·(2/3)·0.75·144} = 36 J; the topple clip's first slopes, (−2, 1.2) and
+     * (3, 0.5) m/s, carry {@code ½·1·5.44 + ½·2·9.25} = 11.97 J: three times apart.
+     */
+    @Test
+    void theClipStopsPhysicsLaneKeepsThreeTimesTheClipsEnergy() {
+        double physics = 0.5 * 144 - 0.5 * (2.0 / 3.0) * 0.75 * 144;
+        double clip = 0.5 * 1 * (4 + 1.44) + 0.5 * 2 * (9 + 0.25);
+        assertEquals(36.0, physics, 1e-12);
+        assertTrue(physics > 2 * clip, physics + " J and " + clip + " J");
+        assertEquals(0, answerTo("Which lane's pair"));
+    }
+
+    /**
+     * The paddle stop: a ball at rest leaves an infinite-mass paddle at {@code (1+e)·u_n},
+     * so the balls gain energy at e = 1 and even at e = 0.
+     */
+    @Test
+    void thePaddleStopsBallsGainEnergyAtAnyE() {
+        int stop = stopOf("In the paddle's hits");
+        DemoState demo = TourCommand.stateOf(stop);
+        assertEquals(2, TourQuestions.forStop(stop).answer(demo));
+        DemoCommand.applySettings(demo, List.of("e=0"));
+        assertEquals(2, TourQuestions.forStop(stop).answer(demo));
+    }
+
+    /**
+     * The throw stop has no torque: ω stays ω0 and the exact rotation step turns by ω0·h
+     * each step, θ = ω0·t to float round-off (1e-5 rad), "as far" within its 1e-3 rad. With
+     * the key's torque the step runs {@code ½·(τ/I)·h·t} ahead, 0.019 rad after 1 s, nineteen
+     * times the tolerance: "farther".
+     */
+    @Test
+    void theThrowStopsBoxTurnsAsFarWithoutTorqueAndFartherWithIt() {
+        int stop = stopOf("After " + TourQuestions.SPIN_SECONDS + " s, has the stepped box");
+        SpinThrowDemo spin = (SpinThrowDemo) TourCommand.stateOf(stop);
+        assertEquals(0f, spin.getTorque());
+        assertEquals(1, TourQuestions.forStop(stop).answer(spin));
+        spin.setTorqueChoice(1);
+        double inertia = SpinThrowDemo.MASS_KG * (SpinThrowDemo.SIDES.x * SpinThrowDemo.SIDES.x
+                + SpinThrowDemo.SIDES.y * SpinThrowDemo.SIDES.y) / 12.0;
+        double gap = 0.5 * SpinThrowDemo.TORQUE / inertia
+                * spin.getParameters().getValue("h") * TourQuestions.SPIN_SECONDS;
+        assertTrue(gap > 10 * TourQuestions.SAME_ANGLE_RADIANS, "gap " + gap);
+        assertEquals(2, TourQuestions.forStop(stop).answer(spin));
+    }
+
+    /**
+     * The racket stop: both methods' bodies flip within a few seconds (steps 140 and 142 at
+     * h = 1/60 s), far inside the question's 20 s, and with the gyroscopic term off neither
+     * ever does.
+     */
+    @Test
+    void theRacketStopsBodiesFlipEarlyAndNeverWithoutTheGyroscopicTerm() {
+        int stop = stopOf("Spun near its middle axis");
+        DemoState demo = TourCommand.stateOf(stop);
+        float h = demo.getParameters().getValue("h");
+        int limit = Math.round(TourQuestions.FLIP_SECONDS / h);
+        assertTrue(TourQuestions.firstFlipStep(0, true, h) < limit / 4);
+        assertTrue(TourQuestions.firstFlipStep(1, true, h) < limit / 4);
+        assertEquals(0, TourQuestions.forStop(stop).answer(demo));
+        assertEquals(Integer.MAX_VALUE, TourQuestions.firstFlipStep(0, false, h));
+        assertEquals(Integer.MAX_VALUE, TourQuestions.firstFlipStep(1, false, h));
+        DemoCommand.applySettings(demo, List.of("gyro=off"));
+        assertEquals(1, TourQuestions.forStop(stop).answer(demo));
+    }
+
+    /**
+     * The fountain stop: after 10 s the pool's live count has levelled off (what lands and
+     * rests is reused as fast as it is emitted) near 89 % of it, far from both half and all.
+     */
+    @Test
+    void theFountainStopsLiveShareIsFarFromHalfAndAll() {
+        int stop = stopOf("After " + TourQuestions.FOUNTAIN_SECONDS + " s, how many");
+        DemoState demo = TourCommand.stateOf(stop);
+        int pool = demo.countSimulatedParticles();
+        int live = TourQuestions.liveAfter(demo.getParameters().getValue("h"), pool);
+        assertTrue(live > 0.6 * pool && live < 0.95 * pool, live + " of " + pool);
+        assertEquals(1, TourQuestions.forStop(stop).answer(demo));
     }
 
     /**

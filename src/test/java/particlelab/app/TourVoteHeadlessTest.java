@@ -1,0 +1,156 @@
+package particlelab.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+import particlelab.demo.DemoState;
+import particlelab.demo.KeyBinding;
+import particlelab.physics.SimulationClock;
+
+/**
+ * Issue 34 §1 in the window: at the pull's stop F4 freezes the scene on its question, the
+ * digit keys vote instead of choosing a demo, F4 runs the scene until its own numbers show
+ * the answer, which is then revealed with the vote's split and written to the votes CSV, and
+ * F4 closes it. Keys are pressed through their bindings, as jME's input would.
+ */
+class TourVoteHeadlessTest {
+
+    /** Stop 8, the pull at h = 1/60 s. */
+    private static final int PULL_STOP = 7;
+    /** Calls to wait for the reveal: the ball lands after 2 s, 120 frames at 60 Hz. */
+    private static final int MAX_WAITS = 60;
+    private static final int FRAMES_PER_WAIT = 10;
+    private static final float TPF = 1f / 60f;
+
+    @RegisterExtension
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+
+    @TempDir
+    Path temp;
+
+    @Test
+    void votesAreCountedTheSceneRevealsTheAnswerAndTheCsvHoldsTheRow() throws Exception {
+        ParticleLabApp app = harness.app();
+        TourGuide tour = app.getTour();
+        Path file = temp.resolve("votes.csv");
+        harness.call(() -> {
+            tour.setVotesFile(new VotesFile(file, false));
+            tour.go(PULL_STOP);
+            return true;
+        });
+        harness.awaitFrames(3);
+        KeyBinding f4 = binding(tour, "F4");
+        DemoState pull = harness.call(() -> app.getSwitcher().getSelected());
+        harness.call(() -> {
+            HeadlessHarness.fly(pull, 30, 1f / 60f);
+            f4.press(0);
+            return true;
+        });
+        harness.awaitFrames(3);
+        // Asked: the scene starts again and holds at t = 0, the question is shown.
+        assertTrue(harness.call(() -> pull.getClock().isPaused()));
+        assertEquals(0.0, harness.call(() -> pull.getClock().getSimulatedSeconds()));
+        String asked = harness.call(() -> app.getQuestionOverlay().getShownText());
+        assertTrue(asked.startsWith("Stop 8: Euler lands short, on, or long of the exact"
+                + " landing?\n"), asked);
+        // Digits 1, 1, 3 vote; 9 neither votes nor opens demo 9.
+        KeyBinding digits = app.getSwitcher().getBindings().get(0);
+        harness.call(() -> {
+            digits.press(0);
+            digits.press(0);
+            digits.press(2);
+            digits.press(8);
+            return true;
+        });
+        harness.awaitFrames(3);
+        assertEquals(pull, harness.call(() -> app.getSwitcher().getSelected()));
+        TourVote vote = harness.call(tour::getVote);
+        assertEquals(2, vote.getCount(0));
+        assertEquals(0, vote.getCount(1));
+        assertEquals(1, vote.getCount(2));
+        assertTrue(harness.call(() -> app.getQuestionOverlay().getShownText())
+                .contains("1  short:  2     2  on:  0     3  long:  1"));
+        assertFalse(Files.exists(file), "nothing is written before the reveal");
+        // F4 runs the scene; its own numbers reveal the answer. The harness's frames feed no
+        // time (tpf 0), so the test feeds the demo 1/60 s frames, as the window's would be.
+        harness.call(() -> {
+            pull.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            f4.press(0);
+            return true;
+        });
+        int waits = 0;
+        while (!harness.call(vote::isRevealed) && waits < MAX_WAITS) {
+            harness.call(() -> {
+                for (int frame = 0; frame < FRAMES_PER_WAIT && !vote.isRevealed(); ++frame) {
+                    pull.update(TPF);
+                    tour.updateVote();
+                }
+                return true;
+            });
+            ++waits;
+        }
+        assertTrue(harness.call(vote::isRevealed), "revealed within " + waits + " waits");
+        assertTrue(harness.call(() -> pull.getClock().isPaused()), "held at the reveal");
+        // The overlay writes the reveal in its next frame.
+        harness.awaitFrames(2);
+        String revealed = harness.call(() -> app.getQuestionOverlay().getShownText());
+        assertTrue(revealed.contains("\nAnswer: 1 short\n"), revealed);
+        assertTrue(revealed.contains("landed at x = "), revealed);
+        assertTrue(revealed.contains("the room (3 votes):  [1 short] 2 (67 %)   2 on 0 (0 %)"
+                + "   3 long 1 (33 %)"), revealed);
+        assertEquals("stop,question,answers,counts,correct\n"
+                + "8,\"Euler lands short, on, or long of the exact landing?\",short|on|long,"
+                + "2|0|1,short\n", new String(Files.readAllBytes(file),
+                StandardCharsets.UTF_8));
+        // Voting is over: a digit chooses a demo again once F4 closes the answer.
+        harness.call(() -> {
+            f4.press(0);
+            return true;
+        });
+        harness.awaitFrames(3);
+        // jME's task returns no null (it counts as not done): ask whether it is null.
+        assertTrue(harness.call(() -> tour.getVote() == null));
+        assertFalse(harness.call(() -> app.getQuestionOverlay().isShowing()));
+        harness.call(() -> {
+            tour.leave();
+            tour.setVotesFile(null);
+            return true;
+        });
+    }
+
+    @Test
+    void aStopWithoutAQuestionOrNoTourAsksNothing() throws Exception {
+        ParticleLabApp app = harness.app();
+        TourGuide tour = app.getTour();
+        KeyBinding f4 = binding(tour, "F4");
+        // One call on the jME thread: F4 outside the tour, then at stop 1 (no question yet).
+        boolean[] asked = harness.call(() -> {
+            tour.leave();
+            f4.press(0);
+            boolean outside = tour.getVote() != null;
+            tour.go(0);
+            f4.press(0);
+            boolean atStopOne = tour.getVote() != null;
+            tour.leave();
+            return new boolean[] {outside, atStopOne};
+        });
+        assertFalse(asked[0], "F4 outside the tour asks nothing");
+        assertFalse(asked[1], "stop 1 has no question yet");
+    }
+
+    private static KeyBinding binding(TourGuide tour, String label) {
+        for (KeyBinding binding : tour.getBindings()) {
+            if (binding.getKeyLabel().equals(label)) {
+                return binding;
+            }
+        }
+        throw new AssertionError("no " + label);
+    }
+}
