@@ -36,6 +36,15 @@ public final class ParticleView {
      */
     private static final float PLATE_Z = 0.01f;
     private static final float LABEL_Z = 2f * PLATE_Z;
+    /**
+     * Two spheres whose centres lie closer than this on the screen (in radii) coincide for a
+     * viewer: they get one joined label naming both ("ball = slide code"), not two stacked.
+     */
+    public static final float JOIN_RADII = 0.5f;
+    /** The separator between the names of a joined label. */
+    public static final String JOIN_SEPARATOR = " = ";
+    /** A joined label's colour: neutral, as it names spheres of several colours. */
+    private static final ColorRGBA JOINED_COLOR = new ColorRGBA(0.92f, 0.92f, 0.92f, 1f);
 
     private final Node node;
     private final Geometry sphere;
@@ -49,6 +58,10 @@ public final class ParticleView {
     private final ScreenRect labelRect = new ScreenRect();
     private int labelSlot = -1;
     private boolean labelPlated;
+    /** The particle's own colour, its label's unless joined. */
+    private final ColorRGBA ownColor;
+    /** True while the label names this sphere and those coinciding with it. */
+    private boolean labelJoined;
 
     /**
      * Create the views of one particle.
@@ -64,6 +77,7 @@ public final class ParticleView {
     public ParticleView(AssetManager assetManager, BitmapFont font, String name,
             ColorRGBA color, float radiusMetres, int trailPoints) {
         this.radius = radiusMetres;
+        this.ownColor = color.clone();
         this.node = new Node(name);
         Material lit = new Material(assetManager, "Common/MatDefs/Light/Lighting.j3md");
         lit.setBoolean("UseMaterialColors", true);
@@ -240,6 +254,29 @@ public final class ParticleView {
         } else {
             plate.setCullHint(Spatial.CullHint.Always);
         }
+    }
+
+    /**
+     * Show the label as a joined one (naming this sphere and those coinciding with it on the
+     * screen, {@link #JOIN_RADII}) in a neutral colour, or as this sphere's own in its colour.
+     * Allocates nothing; recolours only on a change.
+     *
+     * @param joined true for a joined label
+     */
+    public void setLabelJoined(boolean joined) {
+        if (joined != labelJoined) {
+            labelJoined = joined;
+            label.setColor(joined ? JOINED_COLOR : ownColor);
+        }
+    }
+
+    /**
+     * Test whether the label is a joined one ({@link #setLabelJoined}).
+     *
+     * @return true if joined
+     */
+    public boolean isLabelJoined() {
+        return labelJoined;
     }
 
     /**
