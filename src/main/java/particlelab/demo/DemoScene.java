@@ -7,6 +7,7 @@ import com.jme3.light.DirectionalLight;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.Camera;
+import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
@@ -76,6 +77,8 @@ final class DemoScene {
     private static final int EDGE_DECIMALS = 1;
     /** How many label heights an edge label moves up, at most, to leave a text free. */
     private static final int EDGE_TRIES = 6;
+    /** A post name's plate's name, before the post's index (tests find it by it). */
+    static final String POST_PLATE = "post name plate ";
     /** The least ground shown below y = 0, in scene label heights. */
     private static final float GROUND_LABEL_ROOM = 1.8f;
     /** Points sampled along each velocity arrow, which a label avoids like a trail. */
@@ -92,6 +95,11 @@ final class DemoScene {
     /** Each particle's view, in the particles' order (empty until {@link #build}). */
     private final List<ParticleView> views = new ArrayList<>();
     private final List<Marker> markers = new ArrayList<>();
+    /**
+     * Per post: the plate laid under its name while a trail runs under it ("gun" on its
+     * shots' trails, "target S = 60 m" under them), named {@link #POST_PLATE} and its index.
+     */
+    private final List<Geometry> postPlates = new ArrayList<>();
     private float xMin = -2f;
     private float xMax = 22f;
     private float yMin = -1.5f;
@@ -357,6 +365,9 @@ final class DemoScene {
                             marker.height, SceneLabel.Anchor.ABOVE);
             fixedLabels.add(name);
             sceneNode.attachChild(name.getText());
+            Geometry plate = ParticleView.createPlate(assets, POST_PLATE + i);
+            postPlates.add(plate);
+            sceneNode.attachChild(plate);
         }
         markerLabels = fixedLabels.size();
         buildGrid();
@@ -1071,7 +1082,35 @@ final class DemoScene {
                         && sphereY[p] - radius < place.getTop();
             }
             label.setCovered(covered);
+            if (i < markerLabels) {
+                // A post's name over a trail as drawn lies on a plate that hides the trail
+                // under it, as a particle's label with no free slot does.
+                ParticleView.placePlate(postPlates.get(i), plane, place,
+                        label.isVisible() && coversTrail(place));
+            }
         }
+    }
+
+    /** Test whether a rectangle covers a trail as drawn (ribbon and step dots). */
+    private boolean coversTrail(ScreenRect place) {
+        for (int i = 0; i < particles.size(); ++i) {
+            ParticleView view = viewOf(particles.get(i));
+            if (isHidden(view)) {
+                continue;
+            }
+            Trail trail = view.getTrail();
+            for (int age = 0; age < trail.size(); ++age) {
+                trail.copyPoint(age, trailPoint);
+                float x = plane.screenX(trailPoint.x);
+                float y = plane.screenY(trailPoint.y);
+                if (x >= place.getX() - trailHalfWidth && x <= place.getRight() + trailHalfWidth
+                        && y >= place.getY() - trailHalfWidth
+                        && y <= place.getTop() + trailHalfWidth) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Test whether the demo hid a particle's view (sphere, trail, label) by culling it. */

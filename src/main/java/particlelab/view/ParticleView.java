@@ -35,7 +35,8 @@ public final class ParticleView {
      * camera's distance (tens of metres) the shift on the screen is far below a pixel.
      */
     private static final float PLATE_Z = 0.01f;
-    private static final float LABEL_Z = 2f * PLATE_Z;
+    /** A label's depth in front of the particles' plane, over its plate (in metres). */
+    public static final float LABEL_Z = 2f * PLATE_Z;
     /**
      * Two spheres whose centres lie closer than this on the screen (in radii) coincide for a
      * viewer: they get one joined label naming both ("ball = slide code"), not two stacked.
@@ -170,6 +171,47 @@ public final class ParticleView {
         bar.setMaterial(material);
         bar.setLocalTranslation(x - widthMetres / 2f, 0f, -0.02f);
         return bar;
+    }
+
+    /**
+     * Create a label's plate: a unit square of the scene's background colour, nearly opaque,
+     * hidden until placed ({@link #placePlate}), to lay under a text over a trail.
+     *
+     * @param assetManager loads the material (not null)
+     * @param name the geometry's name (not null)
+     * @return a new plate (hidden)
+     */
+    public static Geometry createPlate(AssetManager assetManager, String name) {
+        Material material = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
+        material.setColor("Color", PLATE_COLOR);
+        material.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        Geometry plate = new Geometry(name, new Quad(1f, 1f));
+        plate.setMaterial(material);
+        plate.setQueueBucket(RenderQueue.Bucket.Transparent);
+        plate.setCullHint(Spatial.CullHint.Always);
+        return plate;
+    }
+
+    /**
+     * Lay a plate ({@link #createPlate}) under a rectangle of the screen, or hide it.
+     * Allocates nothing.
+     *
+     * @param plate the plate (not null, modified)
+     * @param view the plane's mapping (not null, not modified)
+     * @param where the rectangle (in pixels, not null, not modified)
+     * @param shown false to hide the plate
+     */
+    public static void placePlate(Geometry plate, PlaneView view, ScreenRect where,
+            boolean shown) {
+        if (!shown) {
+            plate.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
+        plate.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getY()),
+                PLATE_Z);
+        plate.setLocalScale(where.getWidth() / view.getPixelsPerMetre(),
+                where.getHeight() / view.getPixelsPerMetre(), 1f);
+        plate.setCullHint(Spatial.CullHint.Inherit);
     }
 
     /**

@@ -44,6 +44,8 @@ class OverlapMatrixHeadlessTest {
     private static final int LANDED_FRAMES = 200;
     /** Frames of aiming's landing ({@code demo aiming --frames 400}): all shots down. */
     private static final int AIMING_LANDED_FRAMES = 400;
+    /** Frames of iterate's screenshot ({@code demo iterate --frames 300}): rounds flown. */
+    private static final int ITERATE_FRAMES = 300;
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
@@ -103,6 +105,9 @@ class OverlapMatrixHeadlessTest {
             // "lecture" and "discrete" landed on one spot
             {"aiming", -1, 1280, 720, false, AIMING_LANDED_FRAMES},
             {"aiming", -1, 640, 360, false, AIMING_LANDED_FRAMES},
+            // "gun" on its shots' trails, the targets' names over or under them
+            {"iterate", -1, 1280, 720, false, ITERATE_FRAMES},
+            {"iterate", -1, 640, 360, false, ITERATE_FRAMES},
             // the physics lane's target has rolled to x = 21 m, beyond the framed 9.5 m
             {"clip", -1, 1280, 720, false, LANDED_FRAMES},
             {"drag", -1, 640, 360, false, LANDED_FRAMES},

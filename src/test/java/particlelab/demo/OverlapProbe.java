@@ -1,6 +1,7 @@
 package particlelab.demo;
 
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
@@ -97,6 +98,7 @@ public final class OverlapProbe {
             }
         }
         problems.addAll(coincidingSpheresShareOneLabel(demo, sphereParticles, where));
+        problems.addAll(postNamesClearOfTrails(demo, texts, where));
         for (int t = 0; t < texts.size(); ++t) {
             for (int s = 0; s < spheres.size(); ++s) {
                 if (texts.get(t).intersects(spheres.get(s))) {
@@ -186,6 +188,64 @@ public final class OverlapProbe {
             }
         }
         return problems;
+    }
+
+    /**
+     * No post's name shown ("gun", "target  S = 60 m") lies over a trail as drawn, unless on
+     * its plate, which hides the trail under it.
+     */
+    private static List<String> postNamesClearOfTrails(DemoState demo, List<ScreenRect> texts,
+            String where) {
+        List<String> problems = new ArrayList<>();
+        List<DemoParticle> particles = demo.getParticles();
+        if (particles.isEmpty()) {
+            return problems;
+        }
+        Node sceneNode = demo.getView(particles.get(0)).getNode().getParent();
+        List<ScreenRect> names = demo.copyPostLabelRects(new ArrayList<>());
+        PlaneView plane = demo.getPlaneView();
+        Vector3f point = new Vector3f();
+        for (int n = 0; n < names.size(); ++n) {
+            ScreenRect name = names.get(n);
+            Spatial plate = sceneNode.getChild(DemoScene.POST_PLATE + n);
+            if (!isShown(name, texts) || (plate != null
+                    && plate.getCullHint() != Spatial.CullHint.Always)) {
+                continue;
+            }
+            for (DemoParticle other : particles) {
+                if (demo.getView(other).getNode().getCullHint() == Spatial.CullHint.Always) {
+                    continue;
+                }
+                Trail trail = demo.getView(other).getTrail();
+                float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    float x = plane.screenX(point.x);
+                    float y = plane.screenY(point.y);
+                    if (x > name.getX() - half + PIXEL && x < name.getRight() + half - PIXEL
+                            && y > name.getY() - half + PIXEL
+                            && y < name.getTop() + half - PIXEL) {
+                        problems.add(where + ": post name " + n + " " + name
+                                + " covers the trail of '" + other.getLabel() + "' at (" + x
+                                + ", " + y + ") with no plate");
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
+    /** Test whether a rectangle is among the texts shown (the same place). */
+    private static boolean isShown(ScreenRect rect, List<ScreenRect> texts) {
+        for (ScreenRect text : texts) {
+            if (text.getX() == rect.getX() && text.getY() == rect.getY()
+                    && text.getWidth() == rect.getWidth()
+                    && text.getHeight() == rect.getHeight()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Test whether a shown joined label names the particle among its names. */
