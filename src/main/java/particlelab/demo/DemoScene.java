@@ -998,6 +998,12 @@ final class DemoScene {
             }
             return false;
         }
+        if (particle.getLabel().isEmpty()) {
+            // A nameless body parked out of sight (iterate's shots not yet fired, at
+            // x = -1000 m) has no label to keep: no "\u2190 at x = -1000.0 m" at the edge.
+            view.hideLabel();
+            return true;
+        }
         StringBuilder text = edgeTexts[i];
         text.setLength(0);
         if (beyondLeft) {

@@ -90,7 +90,8 @@ public final class OverlapProbe {
                 }
             } else if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
                     && (x + radius < scene.getX() || x - radius > scene.getRight())
-                    && demo.getView(particle).getLabelRect().isEmpty()) {
+                    && demo.getView(particle).getLabelRect().isEmpty()
+                    && !particle.getLabel().isEmpty()) {
                 // Beyond the scene's side (rolled out of the framed view): its label stands
                 // at that side and says where it is.
                 problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
@@ -116,6 +117,10 @@ public final class OverlapProbe {
                 continue;
             }
             String name = where + ": label '" + particle.getLabel() + "' " + label;
+            if (particle.getLabel().isEmpty() && !label.isEmpty()) {
+                // A nameless body parked out of sight has nothing to say.
+                problems.add(name + ": a nameless body has a label");
+            }
             for (int p = 0; p < posts.size(); ++p) {
                 if (label.intersects(posts.get(p))) {
                     problems.add(name + " covers post " + p + " " + posts.get(p));
