@@ -7,6 +7,7 @@ import com.jme3.light.DirectionalLight;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.Camera;
+import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
@@ -69,10 +70,15 @@ final class DemoScene {
     /** An edge label's arrows: its sphere is beyond the scene's right or left edge. */
     private static final String RIGHT_ARROW = " \u2192";
     private static final String LEFT_ARROW = "\u2190 ";
+    /** A stacked joined label's separator: " =" ends a line, the next name starts one. */
+    private static final String STACKED_SEPARATOR = " =\n";
+    private static final String STACKED_LINE_END = " =";
     /** An edge label's position's decimals (metres). */
     private static final int EDGE_DECIMALS = 1;
     /** How many label heights an edge label moves up, at most, to leave a text free. */
     private static final int EDGE_TRIES = 6;
+    /** A post name's plate's name, before the post's index (tests find it by it). */
+    static final String POST_PLATE = "post name plate ";
     /** The least ground shown below y = 0, in scene label heights. */
     private static final float GROUND_LABEL_ROOM = 1.8f;
     /** Points sampled along each velocity arrow, which a label avoids like a trail. */
@@ -89,6 +95,11 @@ final class DemoScene {
     /** Each particle's view, in the particles' order (empty until {@link #build}). */
     private final List<ParticleView> views = new ArrayList<>();
     private final List<Marker> markers = new ArrayList<>();
+    /**
+     * Per post: the plate laid under its name while a trail runs under it ("gun" on its
+     * shots' trails, "target S = 60 m" under them), named {@link #POST_PLATE} and its index.
+     */
+    private final List<Geometry> postPlates = new ArrayList<>();
     private float xMin = -2f;
     private float xMax = 22f;
     private float yMin = -1.5f;
@@ -156,6 +167,13 @@ final class DemoScene {
      */
     private boolean[] atEdge = new boolean[0];
     private StringBuilder[] edgeTexts = new StringBuilder[0];
+    /**
+     * Per particle: the particle whose label names it too (itself unless its sphere coincides
+     * on the screen with one before it, {@link ParticleView#JOIN_RADII}), and a leader's
+     * joined text ("ball = slide code").
+     */
+    private int[] labelLeader = new int[0];
+    private StringBuilder[] joinedTexts = new StringBuilder[0];
     /** The HUD's scene rectangle (live): a sphere beyond its sides gets an edge label. */
     private ScreenRect sceneArea = new ScreenRect();
     /** Scratch: the trail points near the label being placed, on the screen (px). */
@@ -347,6 +365,9 @@ final class DemoScene {
                             marker.height, SceneLabel.Anchor.ABOVE);
             fixedLabels.add(name);
             sceneNode.attachChild(name.getText());
+            Geometry plate = ParticleView.createPlate(assets, POST_PLATE + i);
+            postPlates.add(plate);
+            sceneNode.attachChild(plate);
         }
         markerLabels = fixedLabels.size();
         buildGrid();
@@ -372,8 +393,11 @@ final class DemoScene {
         sphereY = new float[count];
         atEdge = new boolean[count];
         edgeTexts = new StringBuilder[count];
+        labelLeader = new int[count];
+        joinedTexts = new StringBuilder[count];
         for (int i = 0; i < count; ++i) {
             edgeTexts[i] = new StringBuilder(64);
+            joinedTexts[i] = new StringBuilder(128);
         }
         nearX = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
         nearY = new float[count * (TRAIL_POINTS + ARROW_SAMPLES)];
@@ -806,49 +830,154 @@ final class DemoScene {
             sphereY[i] = hidden ? Float.NaN : plane.screenY(position.y);
         }
         float radius = sphereRadius * plane.getPixelsPerMetre();
+        findLabelLeaders(radius);
         for (int i = 0; i < count; ++i) {
             ParticleView view = viewOf(particles.get(i));
-            if (isHidden(view)) {
+            if (isHidden(view) || labelLeader[i] != i) {
+                // Hidden, or named by the joined label of a sphere it coincides with.
                 view.hideLabel();
                 continue;
             }
             if (placeEdgeLabel(i, view, radius)) {
                 continue;
             }
-            float width = labelWidths[i];
-            gatherTrailPoints(sphereX[i], sphereY[i], radius, width);
-            int current = fresh ? -1 : view.getLabelSlot();
-            int best = -1;
-            int bestScore = Integer.MAX_VALUE;
-            int currentScore = Integer.MAX_VALUE;
-            for (int slot = 0; slot < LabelSlots.COUNT; ++slot) {
-                LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight,
-                        candidate);
-                int score = score(candidate, i, radius);
-                if (slot == current) {
-                    currentScore = score;
-                }
-                if (score < bestScore) {
-                    bestScore = score;
-                    best = slot;
-                }
+            boolean joined = writeJoinedText(i, false) > 0f;
+            if (!joined && view.isLabelJoined()) {
+                view.setLabelText(particles.get(i).getLabel());
             }
-            boolean keep = current >= 0 && currentScore == 0
-                    && LabelSlots.ring(best) >= LabelSlots.ring(current);
-            int slot = keep ? current : best;
-            LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, labelHeight, chosen);
-            if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
-                    || (keep ? currentScore : bestScore) >= SPHERE_PENALTY) {
-                // The sphere is under the panel or the graph, or every slot beside it covers
-                // text, a sphere or a post, or leaves the window (large text on a crowded
-                // scene): the label waits for a free slot.
-                view.hideLabel();
-            } else {
-                // The least bad slot: over a trail only where every slot is, then on a plate
-                // that hides the trail under it, so the name stays readable.
-                view.placeLabel(plane, labelSize, slot, chosen, coversNearPoint(chosen));
+            view.setLabelJoined(joined);
+            // A joined label tries one line first, then its names stacked one per line (the
+            // launch of three lanes from one spot) where one line finds no free slot.
+            for (int form = 0; form < (joined ? 2 : 1); ++form) {
+                float width = labelWidths[i];
+                float height = labelHeight;
+                if (joined) {
+                    width = writeJoinedText(i, form == 1);
+                    height = form == 1 ? joinedLines(i) * labelHeight : labelHeight;
+                    view.setLabelText(joinedTexts[i]);
+                }
+                if (placeLabelBeside(i, view, radius, width, height, fresh || form == 1)) {
+                    break;
+                }
             }
         }
+    }
+
+    /**
+     * Put particle i's label of this size in the best slot beside its sphere: keep the slot
+     * it has while that stays free (unless a nearer one is free), else take the slot that
+     * covers least; hide it where every slot covers text, a sphere or a post.
+     *
+     * @return true if placed, false if hidden
+     */
+    private boolean placeLabelBeside(int i, ParticleView view, float radius, float width,
+            float height, boolean fresh) {
+        gatherTrailPoints(sphereX[i], sphereY[i], radius, width, height);
+        int current = fresh ? -1 : view.getLabelSlot();
+        int best = -1;
+        int bestScore = Integer.MAX_VALUE;
+        int currentScore = Integer.MAX_VALUE;
+        for (int slot = 0; slot < LabelSlots.COUNT; ++slot) {
+            LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, candidate);
+            int score = score(candidate, i, radius);
+            if (slot == current) {
+                currentScore = score;
+            }
+            if (score < bestScore) {
+                bestScore = score;
+                best = slot;
+            }
+        }
+        boolean keep = current >= 0 && currentScore == 0
+                && LabelSlots.ring(best) >= LabelSlots.ring(current);
+        int slot = keep ? current : best;
+        LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, chosen);
+        if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
+                || (keep ? currentScore : bestScore) >= SPHERE_PENALTY) {
+            // The sphere is under the panel or the graph, or every slot beside it covers
+            // text, a sphere or a post, or leaves the window (large text on a crowded
+            // scene): the label waits for a free slot.
+            view.hideLabel();
+            return false;
+        }
+        // The least bad slot: over a trail only where every slot is, then on a plate
+        // that hides the trail under it, so the name stays readable.
+        view.placeLabel(plane, labelSize, slot, chosen, coversNearPoint(chosen));
+        return true;
+    }
+
+    /**
+     * Find each particle's label leader: the first particle before it, itself a leader, whose
+     * sphere coincides with its own on the screen (centres closer than
+     * {@link ParticleView#JOIN_RADII} radii), both shown and inside the scene's sides; else
+     * itself. Allocates nothing.
+     */
+    private void findLabelLeaders(float radius) {
+        float join = ParticleView.JOIN_RADII * radius;
+        for (int i = 0; i < labelLeader.length; ++i) {
+            labelLeader[i] = i;
+            if (!isJoinable(i, radius)) {
+                continue;
+            }
+            for (int j = 0; j < i; ++j) {
+                float dx = sphereX[j] - sphereX[i];
+                float dy = sphereY[j] - sphereY[i];
+                if (labelLeader[j] == j && isJoinable(j, radius)
+                        && dx * dx + dy * dy < join * join) {
+                    labelLeader[i] = j;
+                    break;
+                }
+            }
+        }
+    }
+
+    /** Test whether a particle's sphere is shown and not beyond the scene's sides. */
+    private boolean isJoinable(int i, float radius) {
+        // sphereX is NaN for a culled particle: the comparisons fail.
+        return sphereX[i] - radius <= sceneArea.getRight()
+                && sphereX[i] + radius >= sceneArea.getX();
+    }
+
+    /**
+     * Write a leader's joined label into {@link #joinedTexts}: its name, then the names of the
+     * particles it leads, in order ("ball = slide code"). Allocates nothing once the text has
+     * been this long.
+     *
+     * @param stacked true for one name per line, each but the last ending in " ="
+     * @return the text's width (in pixels; 0 if it leads no other, no text written)
+     */
+    private float writeJoinedText(int leader, boolean stacked) {
+        StringBuilder text = joinedTexts[leader];
+        text.setLength(0);
+        float widest = 0f;
+        for (int i = leader + 1; i < labelLeader.length; ++i) {
+            if (labelLeader[i] == leader) {
+                if (text.length() == 0) {
+                    text.append(particles.get(leader).getLabel());
+                    widest = labelWidths[leader];
+                }
+                text.append(stacked ? STACKED_SEPARATOR : ParticleView.JOIN_SEPARATOR)
+                        .append(particles.get(i).getLabel());
+                widest = Math.max(widest, labelWidths[i]);
+            }
+        }
+        if (text.length() == 0) {
+            return 0f;
+        }
+        // Stacked: the widest name and its " =" bound every line.
+        return stacked ? widest + measure.width(STACKED_LINE_END, labelSize)
+                : measure.width(text, labelSize);
+    }
+
+    /** How many names a leader's joined label holds (itself and those it leads). */
+    private int joinedLines(int leader) {
+        int lines = 1;
+        for (int i = leader + 1; i < labelLeader.length; ++i) {
+            if (labelLeader[i] == leader) {
+                ++lines;
+            }
+        }
+        return lines;
     }
 
     /**
@@ -871,6 +1000,12 @@ final class DemoScene {
             }
             return false;
         }
+        if (particle.getLabel().isEmpty()) {
+            // A nameless body parked out of sight (iterate's shots not yet fired, at
+            // x = -1000 m) has no label to keep: no "\u2190 at x = -1000.0 m" at the edge.
+            view.hideLabel();
+            return true;
+        }
         StringBuilder text = edgeTexts[i];
         text.setLength(0);
         if (beyondLeft) {
@@ -883,6 +1018,7 @@ final class DemoScene {
             text.append(RIGHT_ARROW);
         }
         atEdge[i] = true;
+        view.setLabelJoined(false);
         view.setLabelText(text);
         float width = measure.width(text, labelSize);
         float x = beyondRight ? fixedArea.getRight() - width : fixedArea.getX();
@@ -954,7 +1090,35 @@ final class DemoScene {
                         && sphereY[p] - radius < place.getTop();
             }
             label.setCovered(covered);
+            if (i < markerLabels) {
+                // A post's name over a trail as drawn lies on a plate that hides the trail
+                // under it, as a particle's label with no free slot does.
+                ParticleView.placePlate(postPlates.get(i), plane, place,
+                        label.isVisible() && coversTrail(place));
+            }
         }
+    }
+
+    /** Test whether a rectangle covers a trail as drawn (ribbon and step dots). */
+    private boolean coversTrail(ScreenRect place) {
+        for (int i = 0; i < particles.size(); ++i) {
+            ParticleView view = viewOf(particles.get(i));
+            if (isHidden(view)) {
+                continue;
+            }
+            Trail trail = view.getTrail();
+            for (int age = 0; age < trail.size(); ++age) {
+                trail.copyPoint(age, trailPoint);
+                float x = plane.screenX(trailPoint.x);
+                float y = plane.screenY(trailPoint.y);
+                if (x >= place.getX() - trailHalfWidth && x <= place.getRight() + trailHalfWidth
+                        && y >= place.getY() - trailHalfWidth
+                        && y <= place.getTop() + trailHalfWidth) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Test whether the demo hid a particle's view (sphere, trail, label) by culling it. */
@@ -976,8 +1140,9 @@ final class DemoScene {
     }
 
     /** Collect the trail and arrow points within reach of any slot of a label, on screen. */
-    private void gatherTrailPoints(float centreX, float centreY, float radius, float width) {
-        float far = LabelSlots.extent(radius, width, labelHeight);
+    private void gatherTrailPoints(float centreX, float centreY, float radius, float width,
+            float height) {
+        float far = LabelSlots.extent(radius, width, height);
         reach.set(centreX - far - trailClearance, centreY - far - trailClearance,
                 2f * (far + trailClearance), 2f * (far + trailClearance));
         nearCount = 0;

@@ -35,7 +35,17 @@ public final class ParticleView {
      * camera's distance (tens of metres) the shift on the screen is far below a pixel.
      */
     private static final float PLATE_Z = 0.01f;
-    private static final float LABEL_Z = 2f * PLATE_Z;
+    /** A label's depth in front of the particles' plane, over its plate (in metres). */
+    public static final float LABEL_Z = 2f * PLATE_Z;
+    /**
+     * Two spheres whose centres lie closer than this on the screen (in radii) coincide for a
+     * viewer: they get one joined label naming both ("ball = slide code"), not two stacked.
+     */
+    public static final float JOIN_RADII = 0.5f;
+    /** The separator between the names of a joined label. */
+    public static final String JOIN_SEPARATOR = " = ";
+    /** A joined label's colour: neutral, as it names spheres of several colours. */
+    private static final ColorRGBA JOINED_COLOR = new ColorRGBA(0.92f, 0.92f, 0.92f, 1f);
 
     private final Node node;
     private final Geometry sphere;
@@ -49,6 +59,10 @@ public final class ParticleView {
     private final ScreenRect labelRect = new ScreenRect();
     private int labelSlot = -1;
     private boolean labelPlated;
+    /** The particle's own colour, its label's unless joined. */
+    private final ColorRGBA ownColor;
+    /** True while the label names this sphere and those coinciding with it. */
+    private boolean labelJoined;
 
     /**
      * Create the views of one particle.
@@ -64,6 +78,7 @@ public final class ParticleView {
     public ParticleView(AssetManager assetManager, BitmapFont font, String name,
             ColorRGBA color, float radiusMetres, int trailPoints) {
         this.radius = radiusMetres;
+        this.ownColor = color.clone();
         this.node = new Node(name);
         Material lit = new Material(assetManager, "Common/MatDefs/Light/Lighting.j3md");
         lit.setBoolean("UseMaterialColors", true);
@@ -159,6 +174,47 @@ public final class ParticleView {
     }
 
     /**
+     * Create a label's plate: a unit square of the scene's background colour, nearly opaque,
+     * hidden until placed ({@link #placePlate}), to lay under a text over a trail.
+     *
+     * @param assetManager loads the material (not null)
+     * @param name the geometry's name (not null)
+     * @return a new plate (hidden)
+     */
+    public static Geometry createPlate(AssetManager assetManager, String name) {
+        Material material = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
+        material.setColor("Color", PLATE_COLOR);
+        material.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
+        Geometry plate = new Geometry(name, new Quad(1f, 1f));
+        plate.setMaterial(material);
+        plate.setQueueBucket(RenderQueue.Bucket.Transparent);
+        plate.setCullHint(Spatial.CullHint.Always);
+        return plate;
+    }
+
+    /**
+     * Lay a plate ({@link #createPlate}) under a rectangle of the screen, or hide it.
+     * Allocates nothing.
+     *
+     * @param plate the plate (not null, modified)
+     * @param view the plane's mapping (not null, not modified)
+     * @param where the rectangle (in pixels, not null, not modified)
+     * @param shown false to hide the plate
+     */
+    public static void placePlate(Geometry plate, PlaneView view, ScreenRect where,
+            boolean shown) {
+        if (!shown) {
+            plate.setCullHint(Spatial.CullHint.Always);
+            return;
+        }
+        plate.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getY()),
+                PLATE_Z);
+        plate.setLocalScale(where.getWidth() / view.getPixelsPerMetre(),
+                where.getHeight() / view.getPixelsPerMetre(), 1f);
+        plate.setCullHint(Spatial.CullHint.Inherit);
+    }
+
+    /**
      * Return the sphere's radius.
      *
      * @return the radius (in metres)
@@ -240,6 +296,29 @@ public final class ParticleView {
         } else {
             plate.setCullHint(Spatial.CullHint.Always);
         }
+    }
+
+    /**
+     * Show the label as a joined one (naming this sphere and those coinciding with it on the
+     * screen, {@link #JOIN_RADII}) in a neutral colour, or as this sphere's own in its colour.
+     * Allocates nothing; recolours only on a change.
+     *
+     * @param joined true for a joined label
+     */
+    public void setLabelJoined(boolean joined) {
+        if (joined != labelJoined) {
+            labelJoined = joined;
+            label.setColor(joined ? JOINED_COLOR : ownColor);
+        }
+    }
+
+    /**
+     * Test whether the label is a joined one ({@link #setLabelJoined}).
+     *
+     * @return true if joined
+     */
+    public boolean isLabelJoined() {
+        return labelJoined;
     }
 
     /**

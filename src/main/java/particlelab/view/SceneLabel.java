@@ -114,7 +114,9 @@ public final class SceneLabel {
         rect.set(where);
         visible = show;
         text.setSize(size / view.getPixelsPerMetre());
-        text.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()), 0f);
+        // Over a plate, if its layout lays one under it (a post's name over a trail).
+        text.setLocalTranslation(view.planeX(where.getX()), view.planeY(where.getTop()),
+                ParticleView.LABEL_Z);
         showIfFree();
     }
 

@@ -42,6 +42,10 @@ class OverlapMatrixHeadlessTest {
     private static final int CI_CONFIGURATIONS = 1;
     /** Frames of the issue's screenshots ({@code --frames 200}): the shots have landed. */
     private static final int LANDED_FRAMES = 200;
+    /** Frames of aiming's landing ({@code demo aiming --frames 400}): all shots down. */
+    private static final int AIMING_LANDED_FRAMES = 400;
+    /** Frames of iterate's screenshot ({@code demo iterate --frames 300}): rounds flown. */
+    private static final int ITERATE_FRAMES = 300;
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
@@ -89,17 +93,25 @@ class OverlapMatrixHeadlessTest {
     void theIssuesScenesKeepEveryLabelClearOrPlatedAfterTheLanding() throws Exception {
         ParticleLabApp app = harness.app();
         List<String> problems = new ArrayList<>();
-        // demo, lane (-1: the default), window, presenting
+        // demo, lane (-1: the default), window, presenting, frames
         Object[][] cases = {
-            {"drag", -1, 1280, 720, false},
-            {"drag", ComparisonLane.Kind.RK4.ordinal(), 1280, 720, false},
-            {"pull", ComparisonLane.Kind.SLIDE.ordinal(), 1280, 720, false},
-            {"spring", -1, 1920, 1080, true},
-            {"aiming", -1, 1280, 720, false},
+            {"drag", -1, 1280, 720, false, LANDED_FRAMES},
+            {"drag", ComparisonLane.Kind.RK4.ordinal(), 1280, 720, false, LANDED_FRAMES},
+            // "slide code" and "ball" on one sphere: one joined label names both
+            {"pull", ComparisonLane.Kind.SLIDE.ordinal(), 1280, 720, false, LANDED_FRAMES},
+            {"pull", ComparisonLane.Kind.SLIDE.ordinal(), 640, 360, false, LANDED_FRAMES},
+            {"spring", -1, 1920, 1080, true, LANDED_FRAMES},
+            {"aiming", -1, 1280, 720, false, LANDED_FRAMES},
+            // "lecture" and "discrete" landed on one spot
+            {"aiming", -1, 1280, 720, false, AIMING_LANDED_FRAMES},
+            {"aiming", -1, 640, 360, false, AIMING_LANDED_FRAMES},
+            // "gun" on its shots' trails, the targets' names over or under them
+            {"iterate", -1, 1280, 720, false, ITERATE_FRAMES},
+            {"iterate", -1, 640, 360, false, ITERATE_FRAMES},
             // the physics lane's target has rolled to x = 21 m, beyond the framed 9.5 m
-            {"clip", -1, 1280, 720, false},
-            {"drag", -1, 640, 360, false},
-            {"drag", -1, 3840, 2160, true},
+            {"clip", -1, 1280, 720, false, LANDED_FRAMES},
+            {"drag", -1, 640, 360, false, LANDED_FRAMES},
+            {"drag", -1, 3840, 2160, true, LANDED_FRAMES},
         };
         for (Object[] c : cases) {
             DemoState demo = app.getSwitcher().getDemos().get(
@@ -108,9 +120,10 @@ class OverlapMatrixHeadlessTest {
             int width = (Integer) c[2];
             int height = (Integer) c[3];
             boolean presenting = (Boolean) c[4];
+            int frames = (Integer) c[5];
             String where = c[0] + (lane >= 0 ? " lane " + ComparisonLane.Kind.values()[lane]
                     : "") + " " + width + "x" + height + (presenting ? " presenting" : "")
-                    + " frame " + LANDED_FRAMES;
+                    + " frame " + frames;
             problems.addAll(harness.call(() -> {
                 demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
                 demo.getClock().setPaused(false);
@@ -122,7 +135,7 @@ class OverlapMatrixHeadlessTest {
                 demo.restart();
                 demo.setPresenting(presenting);
                 demo.layOut(width, height);
-                for (int f = 0; f < LANDED_FRAMES; ++f) {
+                for (int f = 0; f < frames; ++f) {
                     demo.update(H);
                 }
                 demo.update(0f);

@@ -1,10 +1,12 @@
 package particlelab.demo;
 
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.lecture.CollisionsDemo;
+import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.Trail;
@@ -14,7 +16,9 @@ import particlelab.view.Trail;
  * texts cover each other, no text leaves the window, no text covers a sphere shown in the
  * scene, no particle's label covers a post or (unless on its plate) a trail as drawn, and no
  * sphere a viewer sees goes without its label (nor one beyond the scene's side without its
- * label at that side); from the rectangles the
+ * label at that side), and two spheres that coincide on the screen (centres closer than
+ * {@link ParticleView#JOIN_RADII} radii) share one joined label naming both; from the
+ * rectangles the
  * layout itself placed ({@link DemoState#copyTextRects}, the particles' label slots, the
  * posts, the collisions demo's impulse labels).
  */
@@ -63,6 +67,7 @@ public final class OverlapProbe {
         ScreenRect scene = demo.copySceneRect(new ScreenRect());
         List<ScreenRect> spheres = new ArrayList<>();
         List<String> sphereNames = new ArrayList<>();
+        List<DemoParticle> sphereParticles = new ArrayList<>();
         ScreenRect panel = demo.getHud().getLayout().getSidePanel();
         ScreenRect graph = demo.getHud().getLayout().getGraph();
         for (DemoParticle particle : particles) {
@@ -74,22 +79,27 @@ public final class OverlapProbe {
                     && scene.contains(x, y)) {
                 spheres.add(new ScreenRect(x - radius, y - radius, 2f * radius, 2f * radius));
                 sphereNames.add(particle.getLabel());
+                sphereParticles.add(particle);
                 // A label is never dropped silently: only a sphere under the panel or the
-                // graph, which hide it anyway, may go without one.
+                // graph, which hide it anyway, or one named by a joined label, may go
+                // without one.
                 if (demo.getView(particle).getLabelRect().isEmpty() && !panel.contains(x, y)
-                        && !graph.contains(x, y)) {
+                        && !graph.contains(x, y) && !namedByJoinedLabel(demo, particle)) {
                     problems.add(where + ": the sphere of '" + particle.getLabel() + "' at ("
                             + x + ", " + y + ") has no label");
                 }
             } else if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
                     && (x + radius < scene.getX() || x - radius > scene.getRight())
-                    && demo.getView(particle).getLabelRect().isEmpty()) {
+                    && demo.getView(particle).getLabelRect().isEmpty()
+                    && !particle.getLabel().isEmpty()) {
                 // Beyond the scene's side (rolled out of the framed view): its label stands
                 // at that side and says where it is.
                 problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
                         + " the scene's side at x = " + x + " px has no label at the edge");
             }
         }
+        problems.addAll(coincidingSpheresShareOneLabel(demo, sphereParticles, where));
+        problems.addAll(postNamesClearOfTrails(demo, texts, where));
         for (int t = 0; t < texts.size(); ++t) {
             for (int s = 0; s < spheres.size(); ++s) {
                 if (texts.get(t).intersects(spheres.get(s))) {
@@ -107,6 +117,10 @@ public final class OverlapProbe {
                 continue;
             }
             String name = where + ": label '" + particle.getLabel() + "' " + label;
+            if (particle.getLabel().isEmpty() && !label.isEmpty()) {
+                // A nameless body parked out of sight has nothing to say.
+                problems.add(name + ": a nameless body has a label");
+            }
             for (int p = 0; p < posts.size(); ++p) {
                 if (label.intersects(posts.get(p))) {
                     problems.add(name + " covers post " + p + " " + posts.get(p));
@@ -134,5 +148,123 @@ public final class OverlapProbe {
             }
         }
         return problems;
+    }
+
+    /**
+     * Two spheres shown that coincide on the screen (centres closer than
+     * {@link ParticleView#JOIN_RADII} radii: "slide code" and "ball" in pull's slide lane)
+     * have one label between them, and it names both ("ball = slide code").
+     */
+    private static List<String> coincidingSpheresShareOneLabel(DemoState demo,
+            List<DemoParticle> shown, String where) {
+        List<String> problems = new ArrayList<>();
+        PlaneView plane = demo.getPlaneView();
+        ScreenRect panel = demo.getHud().getLayout().getSidePanel();
+        ScreenRect graph = demo.getHud().getLayout().getGraph();
+        for (int a = 0; a < shown.size(); ++a) {
+            for (int b = a + 1; b < shown.size(); ++b) {
+                DemoParticle first = shown.get(a);
+                DemoParticle second = shown.get(b);
+                float radius = demo.getView(first).getRadius() * plane.getPixelsPerMetre();
+                float ax = plane.screenX(first.getParticle().position.x);
+                float ay = plane.screenY(first.getParticle().position.y);
+                float dx = plane.screenX(second.getParticle().position.x) - ax;
+                float dy = plane.screenY(second.getParticle().position.y) - ay;
+                float join = ParticleView.JOIN_RADII * radius;
+                if (dx * dx + dy * dy >= join * join || panel.contains(ax, ay)
+                        || graph.contains(ax, ay)) {
+                    continue;
+                }
+                ParticleView firstView = demo.getView(first);
+                ParticleView secondView = demo.getView(second);
+                String pair = where + ": '" + first.getLabel() + "' and '" + second.getLabel()
+                        + "' coincide on the screen";
+                if (!firstView.getLabelRect().isEmpty()
+                        && !secondView.getLabelRect().isEmpty()) {
+                    problems.add(pair + " but have two labels, '"
+                            + firstView.getLabel().getText() + "' "
+                            + firstView.getLabelRect() + " and '"
+                            + secondView.getLabel().getText() + "' "
+                            + secondView.getLabelRect());
+                } else if (!namedByJoinedLabel(demo, first)
+                        || !namedByJoinedLabel(demo, second)) {
+                    problems.add(pair + " but no joined label names both");
+                }
+            }
+        }
+        return problems;
+    }
+
+    /**
+     * No post's name shown ("gun", "target  S = 60 m") lies over a trail as drawn, unless on
+     * its plate, which hides the trail under it.
+     */
+    private static List<String> postNamesClearOfTrails(DemoState demo, List<ScreenRect> texts,
+            String where) {
+        List<String> problems = new ArrayList<>();
+        List<DemoParticle> particles = demo.getParticles();
+        if (particles.isEmpty()) {
+            return problems;
+        }
+        Node sceneNode = demo.getView(particles.get(0)).getNode().getParent();
+        List<ScreenRect> names = demo.copyPostLabelRects(new ArrayList<>());
+        PlaneView plane = demo.getPlaneView();
+        Vector3f point = new Vector3f();
+        for (int n = 0; n < names.size(); ++n) {
+            ScreenRect name = names.get(n);
+            Spatial plate = sceneNode.getChild(DemoScene.POST_PLATE + n);
+            if (!isShown(name, texts) || (plate != null
+                    && plate.getCullHint() != Spatial.CullHint.Always)) {
+                continue;
+            }
+            for (DemoParticle other : particles) {
+                if (demo.getView(other).getNode().getCullHint() == Spatial.CullHint.Always) {
+                    continue;
+                }
+                Trail trail = demo.getView(other).getTrail();
+                float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    float x = plane.screenX(point.x);
+                    float y = plane.screenY(point.y);
+                    if (x > name.getX() - half + PIXEL && x < name.getRight() + half - PIXEL
+                            && y > name.getY() - half + PIXEL
+                            && y < name.getTop() + half - PIXEL) {
+                        problems.add(where + ": post name " + n + " " + name
+                                + " covers the trail of '" + other.getLabel() + "' at (" + x
+                                + ", " + y + ") with no plate");
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
+    /** Test whether a rectangle is among the texts shown (the same place). */
+    private static boolean isShown(ScreenRect rect, List<ScreenRect> texts) {
+        for (ScreenRect text : texts) {
+            if (text.getX() == rect.getX() && text.getY() == rect.getY()
+                    && text.getWidth() == rect.getWidth()
+                    && text.getHeight() == rect.getHeight()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Test whether a shown joined label names the particle among its names. */
+    private static boolean namedByJoinedLabel(DemoState demo, DemoParticle particle) {
+        for (DemoParticle other : demo.getParticles()) {
+            ParticleView view = demo.getView(other);
+            if (view.isLabelJoined() && !view.getLabelRect().isEmpty()) {
+                // Names hold " = " themselves ("linear drag  F = -b V"): a name is found in the
+                // text, not split out of it.
+                if (view.getLabel().getText().contains(particle.getLabel())) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 }
