@@ -17,6 +17,7 @@ import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.EnergyPart;
+import particlelab.demo.LensPart;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.physics.SimulationClock;
@@ -75,6 +76,8 @@ class FrameAllocationHeadlessTest {
      * under a second, then rests {@link FastBulletsDemo#REFIRE_SECONDS}).
      */
     private static final int CHEAT_WINDOWS = 120;
+    /** The demos with the derivative lens. */
+    private static final List<String> LENS_DEMOS = List.of("uniform", "pull", "drag", "thrust");
 
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
@@ -85,6 +88,8 @@ class FrameAllocationHeadlessTest {
     private static boolean presenting;
     /** True while the demos are measured with the energy ledger's bars on. */
     private static boolean energyOn;
+    /** True while the free-flight demos are measured with the derivative lens on. */
+    private static boolean lensOn;
 
     @BeforeAll
     static void startApp() throws Exception {
@@ -167,6 +172,27 @@ class FrameAllocationHeadlessTest {
             assertEquals(List.of(), problems);
         } finally {
             energyOn = false;
+        }
+    }
+
+    /**
+     * The derivative lens on ({@code --set lens=on}, key O) in the free-flight demos: each
+     * frame retakes the shown step, runs the exact path for h/2, points four arrows and
+     * rewrites four HUD lines, refreshed every frame; none of it allocates.
+     */
+    @Test
+    void theDerivativeLensFrameAllocatesNothing() throws Exception {
+        lensOn = true;
+        try {
+            List<String> problems = new ArrayList<>();
+            for (int i = 0; i < demos.size(); ++i) {
+                if (LENS_DEMOS.contains(DemoCatalog.names().get(i))) {
+                    problems.addAll(measureOne(i, 0f, 0, 0));
+                }
+            }
+            assertEquals(List.of(), problems);
+        } finally {
+            lensOn = false;
         }
     }
 
@@ -347,6 +373,10 @@ class FrameAllocationHeadlessTest {
         if (energyOn) {
             demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 1);
         }
+        int lens = demo.getParameters().indexOf(LensPart.PARAMETER);
+        if (lensOn && lens >= 0) {
+            demo.getParameters().set(lens, 1);
+        }
         frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.getClock().setPaused(false);
@@ -366,6 +396,10 @@ class FrameAllocationHeadlessTest {
     private static Boolean end(DemoState demo) {
         demo.getDragControl().clearPick();
         demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
+        int lens = demo.getParameters().indexOf(LensPart.PARAMETER);
+        if (lens >= 0) {
+            demo.getParameters().set(lens, 0);
+        }
         demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
         resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
         harness.app().getWindowControls().setUiFactor(1f);
