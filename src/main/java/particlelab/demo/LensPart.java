@@ -31,7 +31,8 @@ import particlelab.view.VelocityArrow;
  *
  * <p>Under gravity the chord is {@code V_{i+1}} bit for bit, and the tangents are
  * {@code g·h} and {@code g·h/2} away from it: the arrows nearly coincide at the lecture's h,
- * the HUD's numbers tell them apart. Its frame hook and HUD lines allocate nothing.
+ * the HUD's numbers tell them apart. Presenting, one formula line gives their y components.
+ * Its frame hook, HUD lines and slide line allocate nothing.
  */
 public final class LensPart implements DemoPart {
 
@@ -170,6 +171,23 @@ public final class LensPart implements DemoPart {
         appendLine(text, STEP, "V_i+1, the step's velocity", lens.stepVelocity);
         appendLine(text, EXACT_START, "exact dP/dt at t_i", lens.exactAtStart);
         appendLine(text, EXACT_MIDDLE, "exact dP/dt at t_i + h/2", lens.exactAtMiddle);
+    }
+
+    /**
+     * Presenting, one formula line when the slide has room for it: the four values' y
+     * components (the arrows' differences under gravity are in y).
+     */
+    @Override
+    public void writePresentation(Presentation slide) {
+        if (slide.countFormulaLines() >= Presentation.MAX_FORMULA_LINES || !look()) {
+            return;
+        }
+        // short enough for one line of the slide's type at 1280x720
+        StringBuilder line = slide.formula().append("V_y: chord ");
+        TextFormat.appendFixed(line, lens.chord.y, DECIMALS).append(", V_i+1 ");
+        TextFormat.appendFixed(line, lens.stepVelocity.y, DECIMALS).append(", dP/dt ");
+        TextFormat.appendFixed(line, lens.exactAtStart.y, DECIMALS).append(" (t_i) ");
+        TextFormat.appendFixed(line, lens.exactAtMiddle.y, DECIMALS).append(" (mid)");
     }
 
     /** @return true if the lens is switched on */
