@@ -6,6 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Paths;
 import java.util.function.Supplier;
 import org.junit.jupiter.api.Test;
 import particlelab.lecture.DragDemo;
@@ -15,6 +18,7 @@ import particlelab.lecture.UniformMotionDemo;
 import particlelab.physics.DerivativeLens;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
+import particlelab.physics.SimulationClock;
 import particlelab.reference.ExactPath;
 import particlelab.view.TextFormat;
 
@@ -37,7 +41,7 @@ class LensPartTest {
     }
 
     private static void advance(DemoState demo, int steps) {
-        demo.getClock().setMode(particlelab.physics.SimulationClock.Mode.RAW_TPF);
+        demo.getClock().setMode(SimulationClock.Mode.RAW_TPF);
         for (int i = 0; i < steps; ++i) {
             // raw tpf: one frame is one step of H
             demo.advancePhysics(H);
@@ -177,6 +181,22 @@ class LensPartTest {
         // the step the lens takes again is the one the world took from there, bit for bit
         assertEquals(positions[k + 1], lens.endPosition);
         assertEquals(velocities[k + 1], lens.stepVelocity);
+    }
+
+    /**
+     * The HUD lines docs/energy.md quotes (the pull demo at its default launch, step 60)
+     * are what the lens writes there.
+     */
+    @Test
+    void theEnergyPagesLensLinesAreThePullDemosAtStep60() throws IOException {
+        String page = Files.readString(Paths.get("docs", "energy.md"));
+        int start = page.indexOf("derivative lens (O) at step 60,");
+        assertTrue(start >= 0, "docs/energy.md quotes the lens at step 60");
+        String quoted = page.substring(start, page.indexOf("```", start));
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        advance(demo, 60);
+        String hud = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(hud.contains(quoted), "the page quotes\n" + quoted + "the HUD has\n" + hud);
     }
 
     @Test
