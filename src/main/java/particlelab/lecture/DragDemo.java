@@ -99,6 +99,15 @@ public final class DragDemo extends DemoState {
     }
 
     /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
+    /**
      * Return the closed-form terminal speed of a sphere's drag under the scene's g and mass:
      * {@code m·g/b} (linear), {@code √(m·g/c)} (physical quadratic) or {@code (m·g/c)^(1/3)} (the
      * slide's form, when chosen).

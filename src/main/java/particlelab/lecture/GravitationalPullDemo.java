@@ -76,6 +76,15 @@ public final class GravitationalPullDemo extends DemoState {
         return lane;
     }
 
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
     @Override
     protected void createScene() {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,

@@ -72,6 +72,15 @@ public final class ThrustDemo extends DemoState {
         return lane;
     }
 
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
     @Override
     protected void createScene() {
         launch.add(addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
