@@ -8,6 +8,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.LensPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -72,6 +73,8 @@ public final class DragDemo extends DemoState {
     /** The comparison lane beside the linear-drag sphere (the report's closed-form case). */
     private final ComparisonLane lane = addPart(new ComparisonLane(
             () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS));
+    /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
+    private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -93,6 +96,15 @@ public final class DragDemo extends DemoState {
      */
     public ComparisonLane getLane() {
         return lane;
+    }
+
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
     }
 
     /**
@@ -143,6 +155,7 @@ public final class DragDemo extends DemoState {
                 new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag, slideDrag)));
         quadraticSphere.stopAtGround();
         lane.follow(launch, linearSphere);
+        lens.follow(linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }

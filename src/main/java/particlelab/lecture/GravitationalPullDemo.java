@@ -8,6 +8,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.LensPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -57,6 +58,8 @@ public final class GravitationalPullDemo extends DemoState {
     /** The comparison lane beside the ball: off, the slide's code, a report stepper. */
     private final ComparisonLane lane = addPart(new ComparisonLane(
             () -> SlideCode.pull(gravity), SPHERE_RADIUS));
+    /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
+    private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -73,12 +76,22 @@ public final class GravitationalPullDemo extends DemoState {
         return lane;
     }
 
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
     @Override
     protected void createScene() {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
         lane.follow(launch, ball);
+        lens.follow(ball);
         setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }

@@ -9,6 +9,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.LensPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -54,6 +55,8 @@ public final class ThrustDemo extends DemoState {
     /** The comparison lane beside the thruster. */
     private final ComparisonLane lane = addPart(new ComparisonLane(
             () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS));
+    /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
+    private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
 
     /** Create the demo. */
     public ThrustDemo() {
@@ -69,6 +72,15 @@ public final class ThrustDemo extends DemoState {
         return lane;
     }
 
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
     @Override
     protected void createScene() {
         launch.add(addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
@@ -79,6 +91,7 @@ public final class ThrustDemo extends DemoState {
                 new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust)));
         thruster.stopAtGround();
         lane.follow(launch, thruster);
+        lens.follow(thruster);
         setView(-1f, 14f, 4.5f, 0.5f, 4, SPHERE_RADIUS);
         showExactGhosts();
     }

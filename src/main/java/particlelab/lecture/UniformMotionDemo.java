@@ -8,6 +8,7 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
+import particlelab.demo.LensPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -44,6 +45,8 @@ public final class UniformMotionDemo extends DemoState {
     /** The comparison lane beside the sphere: off, the slide's code, a report stepper. */
     private final ComparisonLane lane = addPart(new ComparisonLane(SlideCode::uniform,
             SPHERE_RADIUS));
+    /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
+    private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     private DemoParticle sphere;
 
     /** Create the demo. */
@@ -60,12 +63,22 @@ public final class UniformMotionDemo extends DemoState {
         return lane;
     }
 
+    /**
+     * Access the derivative lens ({@code --set lens=on}, key O).
+     *
+     * @return the live lens part (not null)
+     */
+    public LensPart getLens() {
+        return lens;
+    }
+
     @Override
     protected void createScene() {
         // An integrator with no forces: the lecture's "no force, straight line".
         sphere = launch.add(addParticle("sphere", ColorRGBA.Cyan, START, VELOCITY, 1f,
                 new ParticleIntegrator()));
         lane.follow(launch, sphere);
+        lens.follow(sphere);
         // Tall enough for the default launch: y = 1 + 1.2·30/4 = 10 m at the right edge.
         setView(-2f, 32f, 10.5f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();

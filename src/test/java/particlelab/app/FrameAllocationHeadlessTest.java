@@ -17,6 +17,7 @@ import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.EnergyPart;
+import particlelab.demo.LensPart;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.physics.SimulationClock;
@@ -75,6 +76,8 @@ class FrameAllocationHeadlessTest {
      * under a second, then rests {@link FastBulletsDemo#REFIRE_SECONDS}).
      */
     private static final int CHEAT_WINDOWS = 120;
+    /** The demos with the derivative lens. */
+    private static final List<String> LENS_DEMOS = List.of("uniform", "pull", "drag", "thrust");
 
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
@@ -168,6 +171,30 @@ class FrameAllocationHeadlessTest {
         } finally {
             energyOn = false;
         }
+    }
+
+    /**
+     * The derivative lens on ({@code --set lens=on}, key O) in the free-flight demos: each
+     * frame retakes the shown step, runs the exact path for h/2, points four arrows and
+     * rewrites four HUD lines, refreshed every frame; none of it allocates.
+     */
+    @Test
+    void theDerivativeLensFrameAllocatesNothing() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (int i = 0; i < demos.size(); ++i) {
+            if (!LENS_DEMOS.contains(DemoCatalog.names().get(i))) {
+                continue;
+            }
+            DemoState demo = demos.get(i);
+            // A live parameter: it stays on through begin's reset.
+            harness.call(() -> setLens(demo, 1f));
+            try {
+                problems.addAll(measureOne(i, 0f, 0, 0));
+            } finally {
+                harness.call(() -> setLens(demo, 0f));
+            }
+        }
+        assertEquals(List.of(), problems);
     }
 
     /**
@@ -371,6 +398,12 @@ class FrameAllocationHeadlessTest {
         harness.app().getWindowControls().setUiFactor(1f);
         harness.app().getWindowControls().setPresenting(false);
         frame();
+        return true;
+    }
+
+    /** Switch the derivative lens ({@code --set lens=...}): 1 on, 0 off. */
+    private static Boolean setLens(DemoState demo, float value) {
+        demo.getParameters().set(LensPart.PARAMETER, value);
         return true;
     }
 

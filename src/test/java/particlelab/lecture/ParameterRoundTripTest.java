@@ -17,6 +17,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 import particlelab.app.DemoCatalog;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
+import particlelab.demo.LensPart;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -81,6 +82,8 @@ class ParameterRoundTripTest {
         for (String name : new String[] {"uniform", "pull", "drag", "thrust"}) {
             exact(name + "/lane", demo -> (float) demo.getParameters().get(
                     demo.getParameters().indexOf("lane")).indexOfChoice(lane(demo)));
+            // The derivative lens's switch.
+            exact(name + "/lens", demo -> lens(demo).isOn() ? 1f : 0f);
             // LaunchControl: the launched sphere's velocity and mass, every gravity's g.
             READERS.put(name + "/speed", new Reader(demo -> (float) Math.hypot(
                     launched(demo).x, launched(demo).y), RELATIVE_LAUNCH_TOLERANCE, true));
@@ -244,6 +247,17 @@ class ParameterRoundTripTest {
             return ((DragDemo) demo).getLane().getKind().id();
         }
         return ((ThrustDemo) demo).getLane().getKind().id();
+    }
+
+    private static LensPart lens(DemoState demo) {
+        if (demo instanceof UniformMotionDemo) {
+            return ((UniformMotionDemo) demo).getLens();
+        } else if (demo instanceof GravitationalPullDemo) {
+            return ((GravitationalPullDemo) demo).getLens();
+        } else if (demo instanceof DragDemo) {
+            return ((DragDemo) demo).getLens();
+        }
+        return ((ThrustDemo) demo).getLens();
     }
 
     /** The first particle's velocity: the launch velocity right after a reset (m/s). */

@@ -1,0 +1,246 @@
+package particlelab.demo;
+
+import com.jme3.app.Application;
+import com.jme3.input.KeyInput;
+import com.jme3.material.Material;
+import com.jme3.math.ColorRGBA;
+import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
+import particlelab.physics.DerivativeLens;
+import particlelab.physics.Particle;
+import particlelab.reference.ExactPath;
+import particlelab.view.TextFormat;
+import particlelab.view.VelocityArrow;
+
+/**
+ * The derivative lens on screen (issue 32 §2), a part of the free-flight demos: key O (or
+ * {@code --set lens=on}) looks closely at one step of the followed sphere and draws, as
+ * arrows from {@code P_i}, the chord {@code (P_{i+1} − P_i)/h}, the velocity the step used
+ * ({@code V_{i+1}} for the lecture's step), and the exact tangents {@code dP/dt} at
+ * {@code t_i} and at the step's middle {@code t_i + h/2}; one HUD line each gives its value,
+ * named by its arrow's colour. The values are {@link DerivativeLens}'s.
+ *
+ * <p>Which step: the one that starts where the sphere is shown. Replaying (the ring's Home
+ * and End) that is the shown entry's step to the next entry; at the live end, the step the
+ * sphere is about to take from where it is now, of the clock's h (in raw-tpf mode the last
+ * step's length). The step is taken again
+ * on a copy with the sphere's own integrator (the same float operations, so the same bits as
+ * the world's step in free flight); the exact tangents come from the sphere's
+ * {@link ExactPath} started at {@code (P_i, V_i)}: at {@code t_i} that is {@code V_i}
+ * itself, at the middle the path's velocity after h/2.
+ *
+ * <p>Under gravity the chord is {@code V_{i+1}} bit for bit, and the tangents are
+ * {@code g·h} and {@code g·h/2} away from it: the arrows nearly coincide at the lecture's h,
+ * the HUD's numbers tell them apart. Presenting, one formula line gives their y components.
+ * Its frame hook, HUD lines and slide line allocate nothing.
+ */
+public final class LensPart implements DemoPart {
+
+    /** The parameter's name ({@code --set lens=on}). */
+    public static final String PARAMETER = "lens";
+    /** The key that switches the lens on and off. */
+    public static final int KEY = KeyInput.KEY_O;
+    /**
+     * How many seconds of travel an arrow's length stands for: longer than the sphere's own
+     * velocity arrow (0.4 s), so the lens's arrows reach past it.
+     */
+    private static final float ARROW_SECONDS = 1f;
+    /** Decimals of the values: 3, so that g·h/2 = 0.082 m/s at h = 1/60 s shows. */
+    private static final int DECIMALS = 3;
+    /** The arrows' colours, in {@link #CHORD}, {@link #STEP}, ... order. */
+    private static final ColorRGBA[] COLORS = {ColorRGBA.Yellow, ColorRGBA.White,
+        new ColorRGBA(1f, 0.55f, 0.1f, 1f), ColorRGBA.Green};
+    /** The colours' names as the HUD lines give them. */
+    private static final String[] COLOR_NAMES = {"yellow", "white", "orange", "green"};
+    /**
+     * The arrows' shaft widths, as fractions of the sphere's radius: widest first, so that
+     * arrows that coincide (the chord and V_{i+1}) still show each other's edges.
+     */
+    private static final float[] WIDTHS = {0.9f, 0.5f, 0.3f, 0.15f};
+    private static final int CHORD = 0;
+    private static final int STEP = 1;
+    private static final int EXACT_START = 2;
+    private static final int EXACT_MIDDLE = 3;
+    /** The arrows' depth apart (m), so that the narrower ones draw over the wider. */
+    private static final float DEPTH_STEP = 0.01f;
+
+    private DemoState demo;
+    private DemoParticle followed;
+    /** The sphere's exact path, for the tangent at the middle (null until followed). */
+    private ExactPath exact;
+    private final DerivativeLens lens = new DerivativeLens();
+    private boolean on;
+    /** The arrows (null without a window). */
+    private VelocityArrow[] arrows;
+    /** Scratch: the exact tangent at the middle (m/s) and an arrow's start (m). */
+    private final Vector3f middleTangent = new Vector3f();
+    private final Vector3f arrowStart = new Vector3f();
+    /** The sphere's radius, which sizes the arrows (m). */
+    private final float radiusMetres;
+
+    /**
+     * Create the part.
+     *
+     * @param sphereRadiusMetres the followed sphere's drawn radius (in metres, &gt;0)
+     */
+    public LensPart(float sphereRadiusMetres) {
+        if (!(sphereRadiusMetres > 0f) || Float.isInfinite(sphereRadiusMetres)) {
+            throw new IllegalArgumentException("sphere radius " + sphereRadiusMetres
+                    + " m: allowed a finite radius > 0");
+        }
+        radiusMetres = sphereRadiusMetres;
+    }
+
+    /**
+     * Look at the steps of this sphere. Call in the demo's {@code createScene()}.
+     *
+     * @param sphere the followed sphere (not null)
+     */
+    public void follow(DemoParticle sphere) {
+        followed = sphere;
+        exact = new ExactPath(sphere.getPathIntegrator());
+    }
+
+    @Override
+    public void attach(DemoState newDemo) {
+        demo = newDemo;
+    }
+
+    @Override
+    public void declareParameters(DemoParameters parameters) {
+        parameters.add(DemoParameter.choice(PARAMETER, "derivative lens",
+                new String[] {"off", "on"}, 0, DemoParameter.Applies.LIVE,
+                value -> on = Math.round(value) == 1));
+    }
+
+    /** Bind O: the lens on and off, through the parameter so the panel shows it. */
+    @Override
+    public void declareKeys() {
+        demo.bindKey(KEY, "O", "derivative lens: chord, V_i+1 and exact dP/dt at one step",
+                () -> demo.getParameters().set(PARAMETER, on ? 0f : 1f));
+    }
+
+    @Override
+    public void buildViews(Application app) {
+        Material unshaded = new Material(app.getAssetManager(),
+                "Common/MatDefs/Misc/Unshaded.j3md");
+        arrows = new VelocityArrow[COLORS.length];
+        Node scene = demo.getSceneNode();
+        for (int i = 0; i < arrows.length; ++i) {
+            arrows[i] = new VelocityArrow("lens " + COLOR_NAMES[i], WIDTHS[i] * radiusMetres,
+                    ARROW_SECONDS, COLORS[i], unshaded);
+            arrows[i].setVisible(false);
+            scene.attachChild(arrows[i].getGeometry());
+        }
+    }
+
+    /** Once a frame: look at the shown step and point the arrows. Allocates nothing. */
+    @Override
+    public void afterFrame() {
+        boolean looking = look();
+        if (arrows == null) {
+            return;
+        }
+        for (int i = 0; i < arrows.length; ++i) {
+            arrows[i].setVisible(looking);
+        }
+        if (!looking) {
+            return;
+        }
+        pointArrow(CHORD, lens.chord);
+        pointArrow(STEP, lens.stepVelocity);
+        pointArrow(EXACT_START, lens.exactAtStart);
+        pointArrow(EXACT_MIDDLE, lens.exactAtMiddle);
+    }
+
+    @Override
+    public void writeHudLines(StringBuilder text) {
+        if (!on) {
+            return;
+        }
+        if (!look()) {
+            text.append("derivative lens (O): the sphere is not flying\n");
+            return;
+        }
+        text.append("derivative lens (O) at step ").append(demo.getShownStep())
+                .append(", t_i = ");
+        TextFormat.appendFixed(text, demo.getWorld().getTimeSeconds(), 3).append(" s, h = ");
+        TextFormat.appendFixed(text, lens.getStepSeconds(), 4)
+                .append(" s; arrows from P_i, in m/s:\n");
+        appendLine(text, CHORD, "chord (P_i+1 - P_i)/h", lens.chord);
+        appendLine(text, STEP, "V_i+1, the step's velocity", lens.stepVelocity);
+        appendLine(text, EXACT_START, "exact dP/dt at t_i", lens.exactAtStart);
+        appendLine(text, EXACT_MIDDLE, "exact dP/dt at t_i + h/2", lens.exactAtMiddle);
+    }
+
+    /**
+     * Presenting, one formula line when the slide has room for it: the four values' y
+     * components (the arrows' differences under gravity are in y).
+     */
+    @Override
+    public void writePresentation(Presentation slide) {
+        if (slide.countFormulaLines() >= Presentation.MAX_FORMULA_LINES || !look()) {
+            return;
+        }
+        // short enough for one line of the slide's type at 1280x720
+        StringBuilder line = slide.formula().append("V_y: chord ");
+        TextFormat.appendFixed(line, lens.chord.y, DECIMALS).append(", V_i+1 ");
+        TextFormat.appendFixed(line, lens.stepVelocity.y, DECIMALS).append(", dP/dt ");
+        TextFormat.appendFixed(line, lens.exactAtStart.y, DECIMALS).append(" (t_i) ");
+        TextFormat.appendFixed(line, lens.exactAtMiddle.y, DECIMALS).append(" (mid)");
+    }
+
+    /** @return true if the lens is switched on */
+    public boolean isOn() {
+        return on;
+    }
+
+    /**
+     * Access the lens, for tests: its fields hold the step last looked at.
+     *
+     * @return the live lens (not null)
+     */
+    public DerivativeLens getLens() {
+        return lens;
+    }
+
+    /**
+     * Look at the step from the followed sphere's shown state, if on and the sphere flies.
+     * Allocates nothing.
+     *
+     * @return true if the lens holds that step
+     */
+    private boolean look() {
+        if (!on || followed == null || followed.hasLanded() || followed.isParked()) {
+            return false;
+        }
+        Particle particle = followed.getParticle();
+        if (!Vector3f.isValidVector(particle.position)
+                || !Vector3f.isValidVector(particle.velocity)) {
+            return false;
+        }
+        float h = demo.getClock().getCurrentStepSeconds();
+        lens.look(followed.getIntegrator(), particle.getMass(), particle.position,
+                particle.velocity, h);
+        exact.start(particle.position, particle.velocity, particle.getMass(), false);
+        exact.advance(0.5 * h);
+        middleTangent.set((float) exact.getVelocity(0), (float) exact.getVelocity(1),
+                (float) exact.getVelocity(2));
+        // The true motion through (P_i, V_i) has the tangent V_i at t_i.
+        lens.setExactTangents(particle.velocity, middleTangent);
+        return true;
+    }
+
+    private void pointArrow(int which, Vector3f velocity) {
+        arrowStart.set(lens.startPosition);
+        arrowStart.z += DEPTH_STEP * which;
+        arrows[which].update(arrowStart, velocity);
+    }
+
+    private static void appendLine(StringBuilder text, int which, String name,
+            Vector3f value) {
+        text.append("  ").append(COLOR_NAMES[which]).append(": ").append(name).append(" = (");
+        TextFormat.appendFixed(text, value.x, DECIMALS).append(", ");
+        TextFormat.appendFixed(text, value.y, DECIMALS).append(")\n");
+    }
+}
