@@ -223,10 +223,14 @@ final class DemoHud {
         }
     }
 
-    /** After a slot came or went: the same window, at the user's factor in use. */
+    /**
+     * After a slot came or went: the same window, at the user's factor in use. The window is
+     * the one last laid out for, not the camera's: a layout for another size (a test's, or
+     * one asked for before the camera follows) is kept, and the window controls lay the
+     * camera's size out at the next frame when it differs.
+     */
     void layOutAgain() {
-        layOut(demo.getApplication().getCamera().getWidth(),
-                demo.getApplication().getCamera().getHeight(), uiScale);
+        layOut(laidOutWidth, laidOutHeight, uiScale);
     }
 
     /**

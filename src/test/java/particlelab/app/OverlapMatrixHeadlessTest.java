@@ -65,11 +65,15 @@ class OverlapMatrixHeadlessTest {
                 name = "demo " + DemoCatalog.names().get(c);
             } else {
                 int stop = c - demos.size();
-                harness.call(() -> {
+                demo = harness.call(() -> {
                     app.getTour().go(stop);
-                    return true;
+                    // The switch happens at the switcher's next update: without it the stop
+                    // could be checked on the demo shown before (a race with the app's frames).
+                    app.getSwitcher().update(0f);
+                    return app.getSwitcher().getSelected();
                 });
-                demo = harness.call(() -> app.getSwitcher().getSelected());
+                assertEquals(DemoCatalog.indexOf(LectureTour.stops().get(stop).getDemo()),
+                        demos.indexOf(demo), "tour stop " + (stop + 1) + "'s demo");
                 name = "tour stop " + (stop + 1);
             }
             problems.addAll(runCase(demo, name, index, full));

@@ -97,6 +97,36 @@ class EnergyBarsHeadlessTest {
         }));
     }
 
+    /**
+     * The strip coming lays the HUD out again for the window the demo was laid out for, not
+     * the camera's (1280x720 here): a demo laid out at 1920x1080 with the factor 1.25, as the
+     * tour's scene-share test and the overlap matrix do, kept a scene laid out for 1280x720
+     * (832 px wide, 18 % of the window) once presenting brought the bounce's bars.
+     */
+    @Test
+    void theStripComingKeepsTheWindowTheDemoWasLaidOutFor() throws Exception {
+        ParticleLabApp app = harness.app();
+        int index = DemoCatalog.names().indexOf("bounce");
+        DemoState demo = app.getSwitcher().getDemos().get(index);
+        String laidOut = harness.call(() -> {
+            app.getSwitcher().select(index);
+            frames(app, FRAMES);
+            demo.setPresenting(true);
+            demo.layOut(1920, 1080, 1.25f);
+            HeadlessHarness.fly(demo, FRAMES, H);
+            HudLayout layout = demo.getHud().getLayout();
+            String found = layout.getWindow() + ", strip " + !layout.getLedger().isEmpty()
+                    + ", scene right of the strip " + (layout.getScene().getRight()
+                    > layout.getLedger().getX());
+            demo.setPresenting(false);
+            demo.layOut(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+            frames(app, FRAMES);
+            return found;
+        });
+        assertEquals("[x 0.0..1920.0, y 0.0..1080.0], strip true, scene right of the strip false",
+                laidOut);
+    }
+
     @Test
     void theScaleHoldsStillWhileTheBallBounces() throws Exception {
         ParticleLabApp app = harness.app();
