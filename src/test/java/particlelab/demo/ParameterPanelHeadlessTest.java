@@ -80,14 +80,15 @@ class ParameterPanelHeadlessTest {
     @Test
     void firstDemosDeclareTheirLaunchMassGravityAndCoefficients() throws Exception {
         // Each demo's own, then its parts': the energy ledger's switch (every demo's first
-        // part, issue 32), and the free-flight demos' comparison lane last.
-        assertNames(UniformMotionDemo.class, "h", "speed", "angle", "energy", "lane");
+        // part, issue 32), and the free-flight demos' comparison lane, then their derivative
+        // lens (issue 32 §2), last.
+        assertNames(UniformMotionDemo.class, "h", "speed", "angle", "energy", "lane", "lens");
         assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "energy",
-                "lane");
+                "lane", "lens");
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
-                "energy", "lane");
+                "energy", "lane", "lens");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "energy",
-                "lane");
+                "lane", "lens");
         assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code", "energy");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection", "energy");
         assertNames(CollisionsDemo.class, "h", "e", "preset", "energy");
