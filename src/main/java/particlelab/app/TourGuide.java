@@ -37,6 +37,12 @@ final class TourGuide {
     private int stop = NOT_TOURING;
     /** The question asked at this stop, or null. */
     private TourVote vote;
+    /**
+     * The stop's demo while its question is asked, found by name once, when asked: {@link
+     * DemoCatalog#indexOf} makes a string per demo it passes, too much for {@link
+     * #updateVote} to call every frame.
+     */
+    private DemoState voteDemo;
     /** True once F4 ran the scene of the question asked. */
     private boolean voteRunning;
     /** The answer the scene showed (from 0), once revealed. */
@@ -203,6 +209,8 @@ final class TourGuide {
             demo.restart();
             demo.getClock().setPaused(true);
             vote = new TourVote(stop, question, question.answer(demo));
+            voteDemo = switcher.getDemos().get(DemoCatalog.indexOf(
+                    LectureTour.stops().get(stop).getDemo()));
             voteRunning = false;
             observed = TourQuestion.UNDECIDED;
         } else if (!voteRunning) {
@@ -226,8 +234,7 @@ final class TourGuide {
             return;
         }
         DemoState demo = switcher.getSelected();
-        if (demo != switcher.getDemos().get(DemoCatalog.indexOf(
-                LectureTour.stops().get(stop).getDemo()))) {
+        if (demo != voteDemo) {
             // Another demo was chosen (Tab): the question is dropped.
             vote = null;
             ++voteVersion;
