@@ -92,8 +92,8 @@ final class ParameterControls {
                 new String[] {"[", "]"}, "parameter panel: select the line above / below",
                 null, key -> parameters.moveSelection(key == 0 ? -1 : 1)));
         keys.addShared(new KeyBinding(new int[] {KeyInput.KEY_COMMA, KeyInput.KEY_PERIOD},
-                new String[] {",", "."}, "parameter panel: selected value down / up (a"
-                        + " launch value applies at the next reset or launch)",
+                new String[] {",", "."}, "parameter panel: value down / up (launch values:"
+                        + " from the next launch)",
                 null, key -> parameters.nudgeSelected(key == 0 ? -1 : 1)));
         keys.addShared(new KeyBinding(KeyInput.KEY_F2, "F2",
                 "show / hide the parameter panel (mouse: sliders and buttons)", () -> {

@@ -597,8 +597,8 @@ public final class HelloAimingDemo extends DemoState {
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
                 () -> changeVx(-VX_STEP));
         aimKey = bindKey(KeyInput.KEY_L, "L",
-                "next shot fires: both aims -> lecture formula -> discrete correction"
-                        + " -> both and the student's aim",
+                // One help line: wrapped, it pushed the help below 16 px at 1280x720.
+                "next shot fires: both aims -> lecture's -> correction -> both + student's",
                 () -> getParameters().set("aim", NEXT_FIRING[firing]));
         codeKey = bindKey(KeyInput.KEY_J, "J",
                 "next shot's code: shared recipe -> slide's listing -> both",
