@@ -134,13 +134,35 @@ public final class DemoCatalog {
      * @return the index (&ge;0), or -1 if there is no such demo
      */
     public static int indexOf(String name) {
+        int number = numberOf(name);
         for (int i = 0; i < ENTRIES.size(); ++i) {
-            if (ENTRIES.get(i).getName().equalsIgnoreCase(name)
-                    || Integer.toString(i + 1).equals(name)) {
+            if (number == i + 1 || ENTRIES.get(i).getName().equalsIgnoreCase(name)) {
                 return i;
             }
         }
         return -1;
+    }
+
+    /**
+     * Read a demo's number as written in its canonical form ("7", not "07" or "+7"), without
+     * allocating: a lookup may run every frame (a tour question finds its stop's demo).
+     *
+     * @param name the text (may be null)
+     * @return the number, or -1 if the text is not one
+     */
+    private static int numberOf(String name) {
+        if (name == null || name.isEmpty() || name.length() > 4 || name.charAt(0) == '0') {
+            return -1;
+        }
+        int number = 0;
+        for (int i = 0; i < name.length(); ++i) {
+            char c = name.charAt(i);
+            if (c < '0' || c > '9') {
+                return -1;
+            }
+            number = 10 * number + (c - '0');
+        }
+        return number;
     }
 
     /**

@@ -78,6 +78,12 @@ class DemoCatalogTest {
         }
         assertEquals(-1, DemoCatalog.indexOf(Integer.toString(names.size() + 1)));
         assertEquals(-1, DemoCatalog.indexOf("0"));
+        // Only the number's plain form names a demo, as the digit keys and --demo write it.
+        assertEquals(-1, DemoCatalog.indexOf("01"));
+        assertEquals(-1, DemoCatalog.indexOf("+1"));
+        assertEquals(-1, DemoCatalog.indexOf(" 1"));
+        assertEquals(-1, DemoCatalog.indexOf(""));
+        assertEquals(-1, DemoCatalog.indexOf(null));
         assertEquals(-1, DemoCatalog.indexOf("no such demo"));
     }
 
