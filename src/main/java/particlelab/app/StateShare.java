@@ -147,10 +147,7 @@ final class StateShare {
      */
     private static Long rerun(int index, int particles, List<String> settings, long steps,
             float stepSeconds) {
-        DemoState fresh = DemoCatalog.entries().get(index).create();
-        if (fresh instanceof FountainDemo) {
-            ((FountainDemo) fresh).setParticleCount(particles);
-        }
+        DemoState fresh = DemoCatalog.entries().get(index).create(particles);
         DemoCommand.applySettings(fresh, settings);
         if (steps == 0L) {
             // the scene declared and started, no step taken (a frame of 0 s takes none)
