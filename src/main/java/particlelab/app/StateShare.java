@@ -38,8 +38,9 @@ final class StateShare {
     /** The option that prints the command at the end of a run. */
     static final String PRINT_COMMAND = "--print-command";
     /**
-     * The most steps re-run to check a command: ten minutes at 60 Hz (the window waits for
-     * the re-run); past it the line says the check was not made.
+     * The most steps re-run to check a command: ten minutes at 60 Hz (the re-run takes about
+     * as long as the state's steps take headless); past it the line says the check was not
+     * made.
      */
     static final long MAX_CHECKED_STEPS = 36_000L;
 
@@ -67,12 +68,25 @@ final class StateShare {
     }
 
     /**
-     * Write the command line of the state a demo shows, and check it by re-running it.
+     * Write the command line of the state a demo shows, and check it by re-running it (both
+     * on the calling thread).
      *
      * @param demo the demo (not null, one of the catalogue's kinds, initialised or stepped)
      * @return the share (not null)
      */
     static StateShare of(DemoState demo) {
+        return capture(demo).check();
+    }
+
+    /**
+     * Write the command line of the state a demo shows, without re-running it: what the
+     * check needs is copied, so {@link Capture#check} may run on another thread while the
+     * demo goes on (the window's C key does, so the window never waits for the re-run).
+     *
+     * @param demo the demo (not null, one of the catalogue's kinds, initialised or stepped)
+     * @return the command and the state's hash, not yet checked (not null)
+     */
+    static Capture capture(DemoState demo) {
         int index = catalogIndex(demo);
         String name = DemoCatalog.names().get(index);
         List<String> settings = new ArrayList<>();
@@ -102,13 +116,59 @@ final class StateShare {
         for (String setting : settings) {
             command.append(" --set ").append(setting);
         }
-        long hash = StateHash.of(demo);
-        Long rerunHash = steps <= MAX_CHECKED_STEPS
-                ? rerun(index, particles, settings, steps, stepSeconds) : null;
-        boolean checked = rerunHash != null;
-        long commandHash = checked ? rerunHash : 0L;
-        return new StateShare(command.toString(), steps, demo.getWorld().getTimeSeconds(), hash,
-                checked, commandHash);
+        return new Capture(command.toString(), steps, demo.getWorld().getTimeSeconds(),
+                StateHash.of(demo), index, particles, settings, stepSeconds);
+    }
+
+    /**
+     * A state's command line and hash, taken on the demo's thread, and what re-running the
+     * command needs; nothing of the live demo.
+     */
+    static final class Capture {
+
+        /** The command line that reproduces the state (not null). */
+        final String command;
+        /** The world's steps since the scene's start (&ge;0). */
+        final long steps;
+        /** The hash of the state ({@link StateHash}). */
+        final long hash;
+        private final double seconds;
+        private final int index;
+        private final int particles;
+        private final List<String> settings;
+        private final float stepSeconds;
+
+        private Capture(String command, long steps, double seconds, long hash, int index,
+                int particles, List<String> settings, float stepSeconds) {
+            this.command = command;
+            this.steps = steps;
+            this.seconds = seconds;
+            this.hash = hash;
+            this.index = index;
+            this.particles = particles;
+            this.settings = List.copyOf(settings);
+            this.stepSeconds = stepSeconds;
+        }
+
+        /**
+         * Re-run the command (in a new demo and, past step 0, a headless jME application of
+         * its own) and compare the hashes. Any thread may call it.
+         *
+         * @return the share, checked unless the command has more than
+         *     {@link #MAX_CHECKED_STEPS} steps or its run failed (not null)
+         */
+        StateShare check() {
+            Long rerunHash = steps <= MAX_CHECKED_STEPS
+                    ? rerun(index, particles, settings, steps, stepSeconds) : null;
+            boolean checked = rerunHash != null;
+            return new StateShare(command, steps, seconds, hash, checked,
+                    checked ? rerunHash : 0L);
+        }
+
+        /** @return the share as when its re-run failed: not checked (not null) */
+        StateShare unchecked() {
+            return new StateShare(command, steps, seconds, hash, false, 0L);
+        }
     }
 
     /** @return true if the command was re-run and gave the same state, bit for bit */

@@ -8,12 +8,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
@@ -79,13 +81,54 @@ class StateShareTest {
                     bounce.stepBack();
                 }
                 return harness.app().getShareKey().share();
-            });
+            }).get(CHILD_SECONDS, TimeUnit.SECONDS);
             assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,
                     share.command);
             assertTrue(share.reproduces(), share.stateLine());
             String notice = harness.call(bounce::getNotice);
             assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
                     + StateHash.hex(share.hash).substring(0, 8)), notice);
+            assertTrue(notice.endsWith("re-run: same bits)"), notice);
+        }
+    }
+
+    /**
+     * The C key prints the command at once and checks it aside: until the re-run ends the
+     * window goes on (the key returned), the HUD says the check is running and only the
+     * command is printed; the verdict comes to the terminal and the HUD when the check ends.
+     * The checks are held back here, so "not yet" is no matter of timing.
+     */
+    @Test
+    void theKeyCChecksAsideAndTheWindowGoesOn() throws Exception {
+        DemoState uniform = DemoCatalog.entries().get(DemoCatalog.indexOf("uniform"))
+                .create();
+        List<Runnable> held = new ArrayList<>();
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
+        try (HeadlessHarness harness = HeadlessHarness.start(List.of(uniform))) {
+            ShareKey key = harness.call(() -> {
+                ShareKey shareKey = new ShareKey(harness.app().getSwitcher(), out,
+                        held::add);
+                harness.app().getStateManager().attach(shareKey);
+                uniform.restart();
+                HeadlessHarness.fly(uniform, 40, 1f / 60f);
+                uniform.getClock().setPaused(true);
+                return shareKey;
+            });
+            CompletableFuture<StateShare> pending = harness.call(key::share);
+            assertFalse(pending.isDone());
+            assertEquals(1, held.size());
+            String waiting = harness.call(uniform::getNotice);
+            assertTrue(waiting.endsWith("re-running it to check...)"), waiting);
+            assertEquals(List.of("particle-lab demo uniform --frames 40 --fixed-tpf " + FRAME),
+                    Arrays.asList(printed.toString(StandardCharsets.UTF_8).split("\\R")));
+            held.get(0).run();
+            StateShare share = pending.get(CHILD_SECONDS, TimeUnit.SECONDS);
+            assertTrue(share.reproduces(), share.stateLine());
+            String[] lines = printed.toString(StandardCharsets.UTF_8).split("\\R");
+            assertEquals(2, lines.length);
+            assertEquals(share.stateLine(), lines[1]);
+            String notice = harness.call(uniform::getNotice);
             assertTrue(notice.endsWith("re-run: same bits)"), notice);
         }
     }
