@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Paths;
@@ -18,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 import particlelab.demo.StateHash;
+import particlelab.physics.SimulationClock;
 
 /**
  * Issue 33, part 2: a state as a command line. {@code --print-command} and the C key print
@@ -65,29 +67,35 @@ class StateShareTest {
     /**
      * The window's C key shares the state shown: stepped back ten steps from the live end,
      * the command gives the step shown, and re-run it gives the shown state's bits. Fixed
-     * steps of h make a state a count of steps whatever the frame times were.
+     * steps of h make a state a count of steps whatever the frame times were. The key's
+     * code and the demo run without jME (plain JUnit): the key reads the switcher's demo.
      */
     @Test
-    void theKeyCSharesTheRecordedStepShown() throws Exception {
+    void theKeyCSharesTheRecordedStepShown() {
         DemoState bounce = DemoCatalog.entries().get(DemoCatalog.indexOf("bounce")).create();
-        try (HeadlessHarness harness = HeadlessHarness.start(List.of(bounce))) {
-            StateShare share = harness.call(() -> {
-                bounce.restart();
-                HeadlessHarness.fly(bounce, 300, 1f / 60f);
-                bounce.getClock().setPaused(true);
-                for (int i = 0; i < 10; ++i) {
-                    bounce.stepBack();
-                }
-                return harness.app().getShareKey().share();
-            });
-            assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,
-                    share.command);
-            assertTrue(share.reproduces(), share.stateLine());
-            String notice = harness.call(bounce::getNotice);
-            assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
-                    + StateHash.hex(share.hash).substring(0, 8)), notice);
-            assertTrue(notice.endsWith("re-run: same bits)"), notice);
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        ShareKey key = new ShareKey(new DemoSwitcher(List.of(bounce), 0),
+                new PrintStream(printed, true, StandardCharsets.UTF_8));
+        bounce.restart();
+        bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        bounce.getClock().setPaused(false);
+        for (int frame = 0; frame < 300; ++frame) {
+            bounce.advancePhysics(1f / 60f);
         }
+        bounce.getClock().setPaused(true);
+        for (int i = 0; i < 10; ++i) {
+            bounce.stepBack();
+        }
+        StateShare share = key.share();
+        assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,
+                share.command);
+        assertTrue(share.reproduces(), share.stateLine());
+        assertEquals(share.command + "\n" + share.stateLine() + "\n",
+                printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
+        String notice = bounce.getNotice();
+        assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
+                + StateHash.hex(share.hash).substring(0, 8)), notice);
+        assertTrue(notice.endsWith("re-run: same bits)"), notice);
     }
 
     /**
