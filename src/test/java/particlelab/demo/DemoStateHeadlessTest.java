@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
@@ -20,6 +21,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.app.ParticleLabApp;
+import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.SpinThrowDemo;
 import particlelab.lecture.TennisRacketDemo;
@@ -30,12 +32,15 @@ import particlelab.rigid.RigidBody;
 import particlelab.rigid.RotationCheck;
 import particlelab.view.BoxView;
 import particlelab.view.OrientationBlend;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.view.Trail;
 
 /**
  * Every catalogue demo attached to a real headless jME application and driven with a fixed
  * tpf on the jME thread; the rotating boxes drawn between their last two states in slow
- * motion.
+ * motion; the clip demo's post names never drawn over.
  */
 class DemoStateHeadlessTest {
 
@@ -48,11 +53,30 @@ class DemoStateHeadlessTest {
     private static final RotationDemo slowRotation = new RotationDemo();
     private static final SpinThrowDemo slowThrow = new SpinThrowDemo();
     private static final TennisRacketDemo slowRacket = new TennisRacketDemo();
-    /** The catalogue, the rigid-body demos for slow motion and a demo too stiff for its step. */
+    /** The clip demo's post names: the window sizes the lecture is shown at. */
+    private static final int[][] CLIP_WINDOWS = {{640, 360}, {1280, 720}, {3840, 2160}};
+    /** The shot runs this long, checked every frame: impact, fall, bounces and rest. */
+    private static final int CLIP_FRAMES = 300;
+    /** The shots checked: speed (m/s), climb (deg), clip index. */
+    private static final float[][] CLIP_SHOTS = {{12f, 0f, 0f}, {4f, 0f, 0f}, {40f, 0f, 1f},
+        {12f, 30f, 0f}, {4f, 30f, 1f}, {40f, 30f, 0f}};
+    /**
+     * A sphere slower than this (in m/s) stays over what it covers: the target resting on its
+     * ledge, a body come to rest on the ground. A faster one passes in a few frames (the
+     * slowest shot's target grazes the name's corner as it lands, in a 640x360 window in
+     * presentation mode).
+     */
+    private static final float RESTING_SPEED = 0.5f;
+    /** The clip demo, of its own, for its post names. */
+    private static final ClipResponseDemo clip = new ClipResponseDemo();
+    /**
+     * The catalogue, the rigid-body demos for slow motion, the clip demo and a demo too stiff
+     * for its step.
+     */
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
         List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
-        demos.addAll(List.of(slowRotation, slowThrow, slowRacket));
+        demos.addAll(List.of(slowRotation, slowThrow, slowRacket, clip));
         demos.add(new StiffDemo());
         return demos;
     });
@@ -549,6 +573,39 @@ class DemoStateHeadlessTest {
         assertTrue(problems.isEmpty(), what + ": " + problems);
     }
 
+    /**
+     * A post's name stays readable while the shot flies: in the clip demo, at the three window
+     * sizes the lecture is shown at and in presentation mode, neither ledge's name is hidden, no
+     * trail (its ribbon's width included) is drawn over it at any frame of the shots the keys
+     * allow (slow and fast, level and at the steepest climb, both clips) while it is shown, unless
+     * it lies on its plate, which hides the trail under it (the scene's rule for a post's name
+     * since the plates, as {@link OverlapProbe} checks), no sphere rests on it, and it touches no
+     * post. A sphere passing over a name hides it until it has moved on.
+     * The "ledge" name stood on the post's top, where the target rests and its trail starts.
+     */
+    @Test
+    void nothingIsDrawnOverTheLedgesNames() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (boolean presenting : new boolean[] {false, true}) {
+            for (int[] window : CLIP_WINDOWS) {
+                for (float[] shot : CLIP_SHOTS) {
+                    problems.addAll(harness.call(() -> runClipShot(window[0], window[1], presenting,
+                            shot)));
+                }
+            }
+        }
+        harness.call(() -> {
+            clip.setPresenting(false);
+            clip.getParameters().set("speed", 12f);
+            clip.getParameters().set("angle", 0f);
+            clip.getParameters().set("clip", 0f);
+            clip.layOut(1280, 720);
+            return true;
+        });
+        assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
+                problems.size() + " problems");
+    }
+
     private static List<DemoState> demos() {
         return harness.app().getSwitcher().getDemos();
     }
@@ -604,5 +661,108 @@ class DemoStateHeadlessTest {
         q.setColumn(1, c1);
         q.setColumn(2, c2);
         return q;
+    }
+
+    /** Fire one shot at a window size and check the posts' names every frame. */
+    private static List<String> runClipShot(int width, int height, boolean presenting, float[] shot) {
+        clip.setPresenting(presenting);
+        clip.layOut(width, height);
+        clip.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        clip.getClock().setPaused(false);
+        clip.getParameters().set("speed", shot[0]);
+        clip.getParameters().set("angle", shot[1]);
+        clip.getParameters().set("clip", shot[2]);
+        clip.restart();
+        String where = width + "x" + height + (presenting ? " presenting" : "") + ", "
+                + shot[0] + " m/s at " + shot[1] + " deg, clip " + shot[2] + ", frame ";
+        List<String> problems = new ArrayList<>();
+        for (int frame = 0; frame < CLIP_FRAMES; ++frame) {
+            clip.update(H);
+            // One problem per shot is enough to see it; the rest would repeat it.
+            if (problems.isEmpty()) {
+                problems.addAll(checkPostNames(where + frame));
+            }
+        }
+        return problems;
+    }
+
+    /** Each post's name is shown, and covers no post, no resting sphere and no trail. */
+    private static List<String> checkPostNames(String when) {
+        List<String> problems = new ArrayList<>();
+        PlaneView plane = clip.getPlaneView();
+        List<ScreenRect> names = ((DemoState) clip).copyPostLabelRects(new ArrayList<>());
+        List<ScreenRect> posts = ((DemoState) clip).copyPostRects(new ArrayList<>());
+        List<DemoParticle> particles = clip.getParticles();
+        Node sceneNode = clip.getView(particles.get(0)).getNode().getParent();
+        List<ScreenRect> shown = clip.copyTextRects(new ArrayList<>());
+        Vector3f point = new Vector3f();
+        for (int n = 0; n < names.size(); ++n) {
+            ScreenRect name = names.get(n);
+            if (name.isEmpty()) {
+                problems.add(when + ": post name " + n + " hidden");
+                continue;
+            }
+            for (int p = 0; p < posts.size(); ++p) {
+                if (name.intersects(posts.get(p))) {
+                    problems.add(when + ": post name " + n + " " + name + " on post " + p + " "
+                            + posts.get(p));
+                }
+            }
+            for (int j = 0; j < particles.size(); ++j) {
+                DemoParticle particle = particles.get(j);
+                if (particle.isParked()) {
+                    continue;
+                }
+                float radius = clip.getView(particle).getRadius() * plane.getPixelsPerMetre();
+                Vector3f centre = particle.getParticle().position;
+                // The sphere is drawn as a disc: the rectangle's point nearest its centre.
+                float x = plane.screenX(centre.x);
+                float y = plane.screenY(centre.y);
+                float dx = x - Math.max(name.getX(), Math.min(x, name.getRight()));
+                float dy = y - Math.max(name.getY(), Math.min(y, name.getTop()));
+                // A ball passing over a sign is not the sign hidden; one resting there is.
+                boolean resting = particle.getParticle().velocity.length() < RESTING_SPEED;
+                if (resting && dx * dx + dy * dy < radius * radius) {
+                    problems.add(when + ": post name " + n + " " + name + " under the sphere of "
+                            + particle.getLabel());
+                }
+                // A name hidden while a sphere passes over it (the scene shows it again when
+                // the sphere has moved on) is not drawn, so nothing is drawn over it; on its
+                // plate it is drawn over the trail, which the plate hides (OverlapProbe's rule).
+                Spatial plate = sceneNode.getChild(DemoScene.POST_PLATE + n);
+                if (!isPostNameShown(name, shown)
+                        || plate != null && plate.getCullHint() != Spatial.CullHint.Always) {
+                    continue;
+                }
+                // The ribbon is a quarter of the radius wide on each side of its points
+                // (ParticleView): a point that near the name draws over it.
+                float halfWidth = 0.25f * radius;
+                ScreenRect reach = new ScreenRect(name.getX() - halfWidth,
+                        name.getY() - halfWidth, name.getWidth() + 2f * halfWidth,
+                        name.getHeight() + 2f * halfWidth);
+                Trail trail = clip.getView(particle).getTrail();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    if (reach.contains(plane.screenX(point.x), plane.screenY(point.y))) {
+                        problems.add(when + ": post name " + n + " " + name
+                                + " under the trail of " + particle.getLabel());
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
+    /** Test whether a rectangle is one of the scene's texts shown (the same place and size). */
+    private static boolean isPostNameShown(ScreenRect rect, List<ScreenRect> shown) {
+        for (ScreenRect text : shown) {
+            if (text.getX() == rect.getX() && text.getY() == rect.getY()
+                    && text.getWidth() == rect.getWidth()
+                    && text.getHeight() == rect.getHeight()) {
+                return true;
+            }
+        }
+        return false;
     }
 }
