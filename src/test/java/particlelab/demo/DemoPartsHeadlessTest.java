@@ -19,8 +19,8 @@ import particlelab.view.ScreenRect;
 
 /**
  * The parts of demos in a real headless application: the hooks a window calls, the student
- * lane's recipe that fails, and issue 32's bar graph. The bar graph: with {@code --set energy=on} the
- * drag, bounce and spring demos draw the ledger's bars in the HUD's ledger strip at every
+ * lane's recipe that fails, and issue 32's bar graph. The bar graph: with
+ * {@code --set energy=on} the drag, bounce and spring demos draw the ledger's bars in the HUD's ledger strip at every
  * window from 200x150 to 3840x2160, presenting and not: the strip inside the window, of no
  * negative size, clear of the HUD's texts, the side panel and the graph, the scene left of
  * it, every GUI spatial placed by finite numbers; its labels at least 14 px at 1280x720;

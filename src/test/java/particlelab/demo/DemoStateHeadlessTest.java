@@ -664,7 +664,8 @@ class DemoStateHeadlessTest {
     }
 
     /** Fire one shot at a window size and check the posts' names every frame. */
-    private static List<String> runClipShot(int width, int height, boolean presenting, float[] shot) {
+    private static List<String> runClipShot(int width, int height, boolean presenting,
+            float[] shot) {
         clip.setPresenting(presenting);
         clip.layOut(width, height);
         clip.getClock().setMode(SimulationClock.Mode.FIXED_STEP);

@@ -34,7 +34,8 @@ import particlelab.world.World;
  * The lecture demos' checks that need whole frames with views, in one real headless jME
  * application: what is drawn (bullets shown or hidden, boxes, trails, Bounce's height graph,
  * the fountain's points), the layout (framing, labels, the HUD at 1280x720), frames that
- * allocate nothing with their views, and Targets' fragments, which expire in a frame. The
+ * allocate nothing with their views, and what a frame makes: Targets' fragments expire,
+ * Bounce's sound line. The
  * demos' physics and HUD text are checked in plain JUnit, one class each
  * ({@link BounceDemoTest}, {@link AimingDemosTest}, ...).
  */
