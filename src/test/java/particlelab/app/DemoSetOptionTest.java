@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.jme3.math.Vector3f;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoRun;
 import particlelab.demo.DemoState;
 import particlelab.lecture.BounceDemo;
 import particlelab.lecture.CollisionsDemo;
@@ -94,24 +95,25 @@ class DemoSetOptionTest {
                 () -> DemoCommand.applySettings(drag, List.of("angle=90")));
     }
 
+    /**
+     * The values a window's scene starts with: the settings are applied before the scene is
+     * declared, as the demo command does; the scene, declared without jME (plain JUnit) as a
+     * window's start declares it, takes them.
+     */
     @Test
     void setValuesAreWhatTheSceneStartsWith() throws Exception {
         List<DemoState> demos = DemoCatalog.createAll();
         DemoState drag = demos.get(DemoCatalog.indexOf("drag"));
         DemoCommand.applySettings(drag, List.of("b=0.3", "h=1/10", "speed=20", "angle=30"));
-        try (HeadlessHarness harness = HeadlessHarness.start(demos)) {
-            Object[] seen = harness.call(() -> new Object[] {
-                drag.getClock().getStepSeconds(),
-                drag.getParticles().get(1).getIntegrator().describe(),
-                drag.getParticles().get(0).copyLaunchVelocity(new Vector3f()),
-                drag.getParticles().get(0).getParticle().velocity.clone()});
-            assertEquals(0.1f, (float) seen[0]);
-            assertTrue(((String) seen[1]).contains("0.3"), (String) seen[1]);
-            // 20·(cos 30°, sin 30°), computed in double and rounded to float once.
-            Vector3f expected = new Vector3f((float) (20.0 * Math.cos(Math.toRadians(30f))),
-                    (float) (20.0 * Math.sin(Math.toRadians(30f))), 0f);
-            assertEquals(expected, seen[2]);
-            assertEquals(expected, seen[3]);
-        }
+        // The scene declared, as a window's start does first.
+        DemoRun run = drag.getRun();
+        assertEquals(0.1f, run.getClock().getStepSeconds());
+        String integrator = run.getParticles().get(1).getIntegrator().describe();
+        assertTrue(integrator.contains("0.3"), integrator);
+        // 20·(cos 30°, sin 30°), computed in double and rounded to float once.
+        Vector3f expected = new Vector3f((float) (20.0 * Math.cos(Math.toRadians(30f))),
+                (float) (20.0 * Math.sin(Math.toRadians(30f))), 0f);
+        assertEquals(expected, run.getParticles().get(0).copyLaunchVelocity(new Vector3f()));
+        assertEquals(expected, run.getParticles().get(0).getParticle().velocity);
     }
 }

@@ -18,7 +18,7 @@ import particlelab.demo.KeyBinding;
  * The switcher's keys, generated from the number of demos, and the digit entry's rule; no jME
  * application needed (the switch happens in {@link DemoSwitcher#update}, called here with a
  * fixed frame time). Shift+Tab, which needs jME's key events, is in
- * {@code DemoSwitcherHeadlessTest}.
+ * {@code WindowControlsHeadlessTest}.
  */
 class DemoSwitcherTest {
 

@@ -20,6 +20,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 import particlelab.demo.StateHash;
+import particlelab.physics.SimulationClock;
 
 /**
  * Issue 33, part 2: a state as a command line. {@code --print-command} and the C key print
@@ -67,29 +68,36 @@ class StateShareTest {
     /**
      * The window's C key shares the state shown: stepped back ten steps from the live end,
      * the command gives the step shown, and re-run it gives the shown state's bits. Fixed
-     * steps of h make a state a count of steps whatever the frame times were.
+     * steps of h make a state a count of steps whatever the frame times were. The key's
+     * code and the demo run without jME (plain JUnit): the key reads the switcher's demo.
      */
     @Test
     void theKeyCSharesTheRecordedStepShown() throws Exception {
         DemoState bounce = DemoCatalog.entries().get(DemoCatalog.indexOf("bounce")).create();
-        try (HeadlessHarness harness = HeadlessHarness.start(List.of(bounce))) {
-            StateShare share = harness.call(() -> {
-                bounce.restart();
-                HeadlessHarness.fly(bounce, 300, 1f / 60f);
-                bounce.getClock().setPaused(true);
-                for (int i = 0; i < 10; ++i) {
-                    bounce.stepBack();
-                }
-                return harness.app().getShareKey().share();
-            }).get(CHILD_SECONDS, TimeUnit.SECONDS);
-            assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,
-                    share.command);
-            assertTrue(share.reproduces(), share.stateLine());
-            String notice = harness.call(bounce::getNotice);
-            assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
-                    + StateHash.hex(share.hash).substring(0, 8)), notice);
-            assertTrue(notice.endsWith("re-run: same bits)"), notice);
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        // the check runs at once, on this thread: no application to hand the verdict to
+        ShareKey key = new ShareKey(new DemoSwitcher(List.of(bounce), 0),
+                new PrintStream(printed, true, StandardCharsets.UTF_8), Runnable::run);
+        bounce.restart();
+        bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        bounce.getClock().setPaused(false);
+        for (int frame = 0; frame < 300; ++frame) {
+            bounce.advancePhysics(1f / 60f);
         }
+        bounce.getClock().setPaused(true);
+        for (int i = 0; i < 10; ++i) {
+            bounce.stepBack();
+        }
+        StateShare share = key.share().get(CHILD_SECONDS, TimeUnit.SECONDS);
+        assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,
+                share.command);
+        assertTrue(share.reproduces(), share.stateLine());
+        assertEquals(share.command + "\n" + share.stateLine() + "\n",
+                printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
+        String notice = bounce.getNotice();
+        assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
+                + StateHash.hex(share.hash).substring(0, 8)), notice);
+        assertTrue(notice.endsWith("re-run: same bits)"), notice);
     }
 
     /**
@@ -104,33 +112,29 @@ class StateShareTest {
                 .create();
         List<Runnable> held = new ArrayList<>();
         ByteArrayOutputStream printed = new ByteArrayOutputStream();
-        PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
-        try (HeadlessHarness harness = HeadlessHarness.start(List.of(uniform))) {
-            ShareKey key = harness.call(() -> {
-                ShareKey shareKey = new ShareKey(harness.app().getSwitcher(), out,
-                        held::add);
-                harness.app().getStateManager().attach(shareKey);
-                uniform.restart();
-                HeadlessHarness.fly(uniform, 40, 1f / 60f);
-                uniform.getClock().setPaused(true);
-                return shareKey;
-            });
-            CompletableFuture<StateShare> pending = harness.call(key::share);
-            assertFalse(pending.isDone());
-            assertEquals(1, held.size());
-            String waiting = harness.call(uniform::getNotice);
-            assertTrue(waiting.endsWith("re-running it to check...)"), waiting);
-            assertEquals(List.of("particle-lab demo uniform --frames 40 --fixed-tpf " + FRAME),
-                    Arrays.asList(printed.toString(StandardCharsets.UTF_8).split("\\R")));
-            held.get(0).run();
-            StateShare share = pending.get(CHILD_SECONDS, TimeUnit.SECONDS);
-            assertTrue(share.reproduces(), share.stateLine());
-            String[] lines = printed.toString(StandardCharsets.UTF_8).split("\\R");
-            assertEquals(2, lines.length);
-            assertEquals(share.stateLine(), lines[1]);
-            String notice = harness.call(uniform::getNotice);
-            assertTrue(notice.endsWith("re-run: same bits)"), notice);
+        ShareKey key = new ShareKey(new DemoSwitcher(List.of(uniform), 0),
+                new PrintStream(printed, true, StandardCharsets.UTF_8), held::add);
+        uniform.restart();
+        uniform.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        uniform.getClock().setPaused(false);
+        for (int frame = 0; frame < 40; ++frame) {
+            uniform.advancePhysics(1f / 60f);
         }
+        uniform.getClock().setPaused(true);
+        CompletableFuture<StateShare> pending = key.share();
+        // the key returned with the check still held: the window's frame goes on
+        assertFalse(pending.isDone());
+        assertEquals(1, held.size());
+        assertTrue(uniform.getNotice().endsWith("re-running it to check...)"),
+                uniform.getNotice());
+        assertEquals("particle-lab demo uniform --frames 40 --fixed-tpf " + FRAME + "\n",
+                printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
+        held.get(0).run();
+        StateShare share = pending.get(CHILD_SECONDS, TimeUnit.SECONDS);
+        assertTrue(share.reproduces(), share.stateLine());
+        assertEquals(share.command + "\n" + share.stateLine() + "\n",
+                printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
+        assertTrue(uniform.getNotice().endsWith("re-run: same bits)"), uniform.getNotice());
     }
 
     /**

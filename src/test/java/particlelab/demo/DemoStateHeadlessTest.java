@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.ColorRGBA;
+import com.jme3.math.Matrix3f;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
@@ -19,22 +21,62 @@ import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.app.ParticleLabApp;
+import particlelab.lecture.ClipResponseDemo;
+import particlelab.lecture.RotationDemo;
+import particlelab.lecture.SpinThrowDemo;
+import particlelab.lecture.TennisRacketDemo;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
+import particlelab.rigid.RigidBody;
+import particlelab.rigid.RotationCheck;
+import particlelab.view.BoxView;
+import particlelab.view.OrientationBlend;
+import particlelab.view.PlaneView;
+import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
+import particlelab.view.Trail;
 
 /**
  * Every catalogue demo attached to a real headless jME application and driven with a fixed
- * tpf on the jME thread.
+ * tpf on the jME thread; the rotating boxes drawn between their last two states in slow
+ * motion; the clip demo's post names never drawn over.
  */
 class DemoStateHeadlessTest {
 
     private static final float H = 1f / 60f;
-    /** The catalogue and a demo too stiff for its step. */
+    /** x1/64: a step every 64 frames of h. */
+    private static final float SLOW = 1f / 64f;
+    /** Frames of slow motion: three steps and more, at every leftover. */
+    private static final int FRAMES = 220;
+    /** The rigid-body demos again, of their own, for slow motion. */
+    private static final RotationDemo slowRotation = new RotationDemo();
+    private static final SpinThrowDemo slowThrow = new SpinThrowDemo();
+    private static final TennisRacketDemo slowRacket = new TennisRacketDemo();
+    /** The clip demo's post names: the window sizes the lecture is shown at. */
+    private static final int[][] CLIP_WINDOWS = {{640, 360}, {1280, 720}, {3840, 2160}};
+    /** The shot runs this long, checked every frame: impact, fall, bounces and rest. */
+    private static final int CLIP_FRAMES = 300;
+    /** The shots checked: speed (m/s), climb (deg), clip index. */
+    private static final float[][] CLIP_SHOTS = {{12f, 0f, 0f}, {4f, 0f, 0f}, {40f, 0f, 1f},
+        {12f, 30f, 0f}, {4f, 30f, 1f}, {40f, 30f, 0f}};
+    /**
+     * A sphere slower than this (in m/s) stays over what it covers: the target resting on its
+     * ledge, a body come to rest on the ground. A faster one passes in a few frames (the
+     * slowest shot's target grazes the name's corner as it lands, in a 640x360 window in
+     * presentation mode).
+     */
+    private static final float RESTING_SPEED = 0.5f;
+    /** The clip demo, of its own, for its post names. */
+    private static final ClipResponseDemo clip = new ClipResponseDemo();
+    /**
+     * The catalogue, the rigid-body demos for slow motion, the clip demo and a demo too stiff
+     * for its step.
+     */
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
         List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
+        demos.addAll(List.of(slowRotation, slowThrow, slowRacket, clip));
         demos.add(new StiffDemo());
         return demos;
     });
@@ -416,6 +458,154 @@ class DemoStateHeadlessTest {
         return zeros;
     }
 
+    /**
+     * Slow motion is smooth in the demos that draw rotating boxes (rotation, throw, racket),
+     * at x1/64: every frame the box's mesh is the blend of the body's last two states at the
+     * frame's {@code α = leftover / h}: its centre {@code P_prev + α·(P − P_prev)}, its
+     * orientation between R_prev and R (at an angle from each no more than the step's, in
+     * proportion to α), R_prev at α = 0 and R at α = 1; with F6 off, the raw step. And the
+     * stepping line no longer says these demos draw raw steps.
+     */
+    @Test
+    void rotationBoxesAreDrawnBetweenTheirLastTwoStates() throws Exception {
+        for (int box = 0; box < 3; ++box) {
+            int index = box;
+            check(slowRotation, () -> slowRotation.getWorld().getBody(index).getRigidBody(),
+                    () -> slowRotation.getView(index), "rotation box " + box);
+        }
+    }
+
+    @Test
+    void theThrownBoxIsDrawnBetweenItsLastTwoStates() throws Exception {
+        check(slowThrow, slowThrow::getBody, slowThrow::getBoxView, "throw");
+    }
+
+    @Test
+    void theRacketsAreDrawnBetweenTheirLastTwoStates() throws Exception {
+        for (int method = 0; method < 2; ++method) {
+            int index = method;
+            check(slowRacket, () -> slowRacket.getBody(index), () -> slowRacket.getView(index),
+                    "racket " + method);
+        }
+    }
+
+    /** Run a demo at x1/64 and check each frame's drawn box against the blend. */
+    private static void check(DemoState demo, java.util.function.Supplier<RigidBody> body,
+            java.util.function.Supplier<BoxView> view, String what) throws Exception {
+        List<String> problems = harness.call(() -> {
+            List<String> found = new ArrayList<>();
+            SimulationClock clock = demo.getClock();
+            clock.setMode(SimulationClock.Mode.FIXED_STEP);
+            demo.restart();
+            clock.setPaused(false);
+            clock.setTimeScale(SLOW);
+            demo.setInterpolating(true);
+            RigidBody rigid = body.get();
+            Matrix3f before = new Matrix3f();
+            Vector3f beforeCentre = new Vector3f();
+            Matrix3f previous = new Matrix3f(rigid.orientation);
+            Vector3f previousCentre = new Vector3f(rigid.getParticle().position);
+            OrientationBlend blend = new OrientationBlend();
+            Matrix3f drawn = new Matrix3f();
+            Vector3f centre = new Vector3f();
+            RotationCheck check = new RotationCheck();
+            int between = 0;
+            for (int frame = 0; frame < FRAMES; ++frame) {
+                before.set(rigid.orientation);
+                beforeCentre.set(rigid.getParticle().position);
+                long steps = demo.getWorld().getStepCount();
+                demo.advance(H);
+                if (demo.getWorld().getStepCount() != steps) {
+                    previous.set(before);
+                    previousCentre.set(beforeCentre);
+                }
+                float alpha = demo.getReplay().getFrameBlend();
+                blend.blend(previous, rigid.orientation, alpha, drawn);
+                centre.set(previousCentre).interpolateLocal(rigid.getParticle().position,
+                        alpha);
+                String mesh = compareMesh(view.get(), drawn, centre);
+                if (mesh != null) {
+                    found.add("frame " + frame + " α " + alpha + ": " + mesh);
+                }
+                // The angles between the matrices' rotations, each taken the same way (the
+                // columns made orthonormal), so a drifted matrix (the plain box) compares too.
+                Matrix3f rotationBefore = rotationOf(previous);
+                Matrix3f rotationNow = rotationOf(rigid.orientation);
+                Matrix3f rotationDrawn = rotationOf(drawn);
+                double step = check.angleError(rotationNow, rotationBefore);
+                double fromPrevious = check.angleError(rotationDrawn, rotationBefore);
+                double fromCurrent = check.angleError(rotationDrawn, rotationNow);
+                // Float round-off of the matrices' entries: a few ulps of 1, in radians.
+                double tolerance = 1e-5;
+                if (fromPrevious > step + tolerance || fromCurrent > step + tolerance) {
+                    found.add("frame " + frame + " α " + alpha + ": " + fromPrevious + ", "
+                            + fromCurrent + " rad from the states, the step turns " + step);
+                }
+                if (Math.abs(fromPrevious - alpha * step) > 1e-3 * step + tolerance) {
+                    found.add("frame " + frame + " α " + alpha + ": " + fromPrevious
+                            + " rad from R_prev, not α of the step's " + step);
+                }
+                if (alpha > 0f && alpha < 1f && step > 0.0) {
+                    ++between;
+                }
+                if (found.size() > 3) {
+                    break;
+                }
+            }
+            if (between < FRAMES / 2) {
+                found.add("only " + between + " frames drawn between two steps");
+            }
+            // F6 off: the raw step, R itself.
+            demo.setInterpolating(false);
+            demo.advance(H);
+            String raw = compareMesh(view.get(), rigid.orientation, rigid.getParticle().position);
+            if (raw != null) {
+                found.add("F6 off: " + raw);
+            }
+            demo.setInterpolating(true);
+            String hud = demo.formatHud(new StringBuilder()).toString();
+            if (hud.contains("raw steps (this demo's views)")) {
+                found.add("the HUD still says raw steps: " + hud);
+            }
+            clock.setTimeScale(1f);
+            return found;
+        });
+        assertTrue(problems.isEmpty(), what + ": " + problems);
+    }
+
+    /**
+     * A post's name stays readable while the shot flies: in the clip demo, at the three window
+     * sizes the lecture is shown at and in presentation mode, neither ledge's name is hidden, no
+     * trail (its ribbon's width included) is drawn over it at any frame of the shots the keys
+     * allow (slow and fast, level and at the steepest climb, both clips) while it is shown, unless
+     * it lies on its plate, which hides the trail under it (the scene's rule for a post's name
+     * since the plates, as {@link OverlapProbe} checks), no sphere rests on it, and it touches no
+     * post. A sphere passing over a name hides it until it has moved on.
+     * The "ledge" name stood on the post's top, where the target rests and its trail starts.
+     */
+    @Test
+    void nothingIsDrawnOverTheLedgesNames() throws Exception {
+        List<String> problems = new ArrayList<>();
+        for (boolean presenting : new boolean[] {false, true}) {
+            for (int[] window : CLIP_WINDOWS) {
+                for (float[] shot : CLIP_SHOTS) {
+                    problems.addAll(harness.call(() -> runClipShot(window[0], window[1], presenting,
+                            shot)));
+                }
+            }
+        }
+        harness.call(() -> {
+            clip.setPresenting(false);
+            clip.getParameters().set("speed", 12f);
+            clip.getParameters().set("angle", 0f);
+            clip.getParameters().set("clip", 0f);
+            clip.layOut(1280, 720);
+            return true;
+        });
+        assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
+                problems.size() + " problems");
+    }
+
     private static List<DemoState> demos() {
         return harness.app().getSwitcher().getDemos();
     }
@@ -432,5 +622,148 @@ class DemoStateHeadlessTest {
                     new Vector3f(10f, 0f, 0f), 1f,
                     new ParticleIntegrator(new LinearDrag(10f)));
         }
+    }
+
+    private static void assertMatrixEquals(Matrix3f expected, Matrix3f actual, float tol) {
+        for (int row = 0; row < 3; ++row) {
+            for (int column = 0; column < 3; ++column) {
+                assertEquals(expected.get(row, column), actual.get(row, column), tol,
+                        "entry " + row + "," + column + " of " + actual);
+            }
+        }
+    }
+
+    /** The mesh's vertices against P + R·b; null if they agree. */
+    private static String compareMesh(BoxView view, Matrix3f r, Vector3f centre) {
+        Vector3f body = new Vector3f();
+        Vector3f expected = new Vector3f();
+        Vector3f actual = new Vector3f();
+        for (int vertex = 0; vertex < 24; ++vertex) {
+            view.copyBodyVertex(vertex, body);
+            r.mult(body, expected).addLocal(centre);
+            view.copyVertex(vertex, actual);
+            // The same float operations in another order: a few ulps of metres-sized values.
+            if (expected.distance(actual) > 1e-5f) {
+                return "vertex " + vertex + " drawn at " + actual + ", expected " + expected;
+            }
+        }
+        return null;
+    }
+
+    /** The nearest rotation's stand-in: the columns made orthonormal (for the angles). */
+    private static Matrix3f rotationOf(Matrix3f m) {
+        Vector3f c0 = m.getColumn(0).normalizeLocal();
+        Vector3f c1 = m.getColumn(1);
+        c1.subtractLocal(c0.mult(c0.dot(c1))).normalizeLocal();
+        Vector3f c2 = c0.cross(c1);
+        Matrix3f q = new Matrix3f();
+        q.setColumn(0, c0);
+        q.setColumn(1, c1);
+        q.setColumn(2, c2);
+        return q;
+    }
+
+    /** Fire one shot at a window size and check the posts' names every frame. */
+    private static List<String> runClipShot(int width, int height, boolean presenting,
+            float[] shot) {
+        clip.setPresenting(presenting);
+        clip.layOut(width, height);
+        clip.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        clip.getClock().setPaused(false);
+        clip.getParameters().set("speed", shot[0]);
+        clip.getParameters().set("angle", shot[1]);
+        clip.getParameters().set("clip", shot[2]);
+        clip.restart();
+        String where = width + "x" + height + (presenting ? " presenting" : "") + ", "
+                + shot[0] + " m/s at " + shot[1] + " deg, clip " + shot[2] + ", frame ";
+        List<String> problems = new ArrayList<>();
+        for (int frame = 0; frame < CLIP_FRAMES; ++frame) {
+            clip.update(H);
+            // One problem per shot is enough to see it; the rest would repeat it.
+            if (problems.isEmpty()) {
+                problems.addAll(checkPostNames(where + frame));
+            }
+        }
+        return problems;
+    }
+
+    /** Each post's name is shown, and covers no post, no resting sphere and no trail. */
+    private static List<String> checkPostNames(String when) {
+        List<String> problems = new ArrayList<>();
+        PlaneView plane = clip.getPlaneView();
+        List<ScreenRect> names = ((DemoState) clip).copyPostLabelRects(new ArrayList<>());
+        List<ScreenRect> posts = ((DemoState) clip).copyPostRects(new ArrayList<>());
+        List<DemoParticle> particles = clip.getParticles();
+        Node sceneNode = clip.getView(particles.get(0)).getNode().getParent();
+        List<ScreenRect> shown = clip.copyTextRects(new ArrayList<>());
+        Vector3f point = new Vector3f();
+        for (int n = 0; n < names.size(); ++n) {
+            ScreenRect name = names.get(n);
+            if (name.isEmpty()) {
+                problems.add(when + ": post name " + n + " hidden");
+                continue;
+            }
+            for (int p = 0; p < posts.size(); ++p) {
+                if (name.intersects(posts.get(p))) {
+                    problems.add(when + ": post name " + n + " " + name + " on post " + p + " "
+                            + posts.get(p));
+                }
+            }
+            for (int j = 0; j < particles.size(); ++j) {
+                DemoParticle particle = particles.get(j);
+                if (particle.isParked()) {
+                    continue;
+                }
+                float radius = clip.getView(particle).getRadius() * plane.getPixelsPerMetre();
+                Vector3f centre = particle.getParticle().position;
+                // The sphere is drawn as a disc: the rectangle's point nearest its centre.
+                float x = plane.screenX(centre.x);
+                float y = plane.screenY(centre.y);
+                float dx = x - Math.max(name.getX(), Math.min(x, name.getRight()));
+                float dy = y - Math.max(name.getY(), Math.min(y, name.getTop()));
+                // A ball passing over a sign is not the sign hidden; one resting there is.
+                boolean resting = particle.getParticle().velocity.length() < RESTING_SPEED;
+                if (resting && dx * dx + dy * dy < radius * radius) {
+                    problems.add(when + ": post name " + n + " " + name + " under the sphere of "
+                            + particle.getLabel());
+                }
+                // A name hidden while a sphere passes over it (the scene shows it again when
+                // the sphere has moved on) is not drawn, so nothing is drawn over it; on its
+                // plate it is drawn over the trail, which the plate hides (OverlapProbe's rule).
+                Spatial plate = sceneNode.getChild(DemoScene.POST_PLATE + n);
+                if (!isPostNameShown(name, shown)
+                        || plate != null && plate.getCullHint() != Spatial.CullHint.Always) {
+                    continue;
+                }
+                // The ribbon is a quarter of the radius wide on each side of its points
+                // (ParticleView): a point that near the name draws over it.
+                float halfWidth = 0.25f * radius;
+                ScreenRect reach = new ScreenRect(name.getX() - halfWidth,
+                        name.getY() - halfWidth, name.getWidth() + 2f * halfWidth,
+                        name.getHeight() + 2f * halfWidth);
+                Trail trail = clip.getView(particle).getTrail();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    if (reach.contains(plane.screenX(point.x), plane.screenY(point.y))) {
+                        problems.add(when + ": post name " + n + " " + name
+                                + " under the trail of " + particle.getLabel());
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
+    /** Test whether a rectangle is one of the scene's texts shown (the same place and size). */
+    private static boolean isPostNameShown(ScreenRect rect, List<ScreenRect> shown) {
+        for (ScreenRect text : shown) {
+            if (text.getX() == rect.getX() && text.getY() == rect.getY()
+                    && text.getWidth() == rect.getWidth()
+                    && text.getHeight() == rect.getHeight()) {
+                return true;
+            }
+        }
+        return false;
     }
 }

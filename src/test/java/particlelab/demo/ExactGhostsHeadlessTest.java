@@ -20,6 +20,10 @@ import particlelab.reference.RungeKutta4;
 import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.lecture.GravitationalPullDemo;
+import particlelab.lecture.HelloAimingDemo;
+import particlelab.lecture.ThrustDemo;
+import particlelab.lecture.UniformMotionDemo;
+import particlelab.lecture.WindDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -28,13 +32,15 @@ import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.world.Detection;
 import particlelab.world.ImpulseResponse;
+import particlelab.world.StateRing;
 import particlelab.world.SurfaceRule;
 
 /**
  * The exact ghosts, readouts and live graph of demos 2 and 3 in a real headless jME
  * application, stepped at a fixed h: the live error is the closed-form difference, the
  * readouts are the closed forms and within O(h) of them for the Euler particle, and the
- * per-frame path allocates nothing.
+ * per-frame path allocates nothing. After a step back, the ghosts, the graph and the kept
+ * shots of every demo with ghosts show the step shown.
  */
 class ExactGhostsHeadlessTest {
 
@@ -46,9 +52,18 @@ class ExactGhostsHeadlessTest {
     private static final GravitationalPullDemo pull = new GravitationalPullDemo();
     private static final DragDemo drag = new DragDemo();
     private static final BouncingGhostDemo bounce = new BouncingGhostDemo();
+    /** Steps of a run stepped back: the launch, the apex, and in most demos the landing. */
+    private static final int REPLAY_STEPS = 200;
+    /** Every demo with exact ghosts, each its own, for the steps back. */
+    private static final List<DemoState> GHOST_DEMOS = List.of(new UniformMotionDemo(),
+            new GravitationalPullDemo(), new DragDemo(), new ThrustDemo(), new WindDemo(),
+            new HelloAimingDemo());
     @RegisterExtension
-    static final HeadlessHarness harness = HeadlessHarness.perClass(
-            () -> List.of(pull, drag, bounce));
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
+        List<DemoState> demos = new ArrayList<>(List.of(pull, drag, bounce));
+        demos.addAll(GHOST_DEMOS);
+        return demos;
+    });
 
     @Test
     void liveErrorEqualsTheClosedFormDifference() throws Exception {
@@ -310,6 +325,74 @@ class ExactGhostsHeadlessTest {
                 (String) r[4]);
     }
 
+    /**
+     * After a step back (Home's code path) the demos' own views show the step shown, not
+     * the live one (the ghosts and the graph exist only with views): in every demo with exact
+     * ghosts, the HUD's ghost lines (|P − P_exact|, the readouts Euler against exact) and the
+     * live graph's last sample are, at each step shown, those the original run had at that
+     * step, compared bit for bit (the text as written, the graph's floats by their bits: the
+     * state read back is the state recorded, so no tolerance).
+     */
+    @Test
+    void ghostLinesAndTheGraphEndAreThoseOfTheStepShown() throws Exception {
+        for (DemoState demo : GHOST_DEMOS) {
+            List<String> problems = harness.call(() -> checkStepsBack(demo));
+            assertTrue(problems.isEmpty(), demo.getTitle() + ": " + problems);
+        }
+    }
+
+    /** A shot kept after the step shown is neither drawn nor listed while behind. */
+    @Test
+    void aShotKeptAfterTheStepShownIsHiddenWhileBehind() throws Exception {
+        HelloAimingDemo aiming = (HelloAimingDemo) GHOST_DEMOS.get(5);
+        int[] seen = harness.call(() -> {
+            aiming.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            aiming.restart();
+            aiming.getClock().setPaused(false);
+            KeptShots shots = ((DemoState) aiming).getParameterControls().getKeptShots();
+            shots.clear();
+            aiming.fire();
+            for (int i = 0; i < 40; ++i) {
+                aiming.advance(H);
+            }
+            // The second launch keeps the first shot's path.
+            aiming.fire();
+            int keptLive = shots.size();
+            int drawnLive = shots.countDrawnPaths();
+            String legendLive = shots.formatLegend(new StringBuilder(),
+                    aiming.getParameters()).toString();
+            for (int i = 0; i < 20; ++i) {
+                aiming.advance(H);
+            }
+            // Back past the launch: 20 steps, the launch's entry, one more.
+            for (int i = 0; i < 22; ++i) {
+                aiming.stepBack();
+            }
+            int keptBehind = shots.size();
+            String legendBehind = shots.formatLegend(new StringBuilder(),
+                    aiming.getParameters()).toString();
+            int drawnBehind = shots.countDrawnPaths();
+            for (int i = 0; i < 22; ++i) {
+                aiming.stepForward();
+            }
+            int keptAgain = shots.size();
+            return new int[] {keptLive, legendLive.isEmpty() ? 0 : 1, keptBehind,
+                legendBehind.isEmpty() ? 0 : 1, drawnLive, drawnBehind, keptAgain,
+                aiming.isReplaying() ? 1 : 0, shots.countDrawnPaths()};
+        });
+        // HelloAiming launches its two bullets one by one, and each launch keeps what moved:
+        // the first shot is kept once or twice; what matters is that it is kept.
+        assertTrue(seen[0] >= 1, "the first shot is kept at the second launch");
+        assertEquals(1, seen[1], "and listed");
+        assertEquals(0, seen[2], "before the launch that kept it, no shot is kept");
+        assertEquals(0, seen[3], "nor listed");
+        assertTrue(seen[4] > 0, "its paths are drawn at the live end");
+        assertEquals(0, seen[5], "and not drawn before the launch that kept it");
+        assertEquals(0, seen[7], "End came back to the live end");
+        assertEquals(seen[0], seen[6], "back at the live end it is listed again");
+        assertEquals(seen[4], seen[8], "and drawn again");
+    }
+
     /** A ball dropped 2 m onto a bouncy ground, with exact ghosts. */
     static final class BouncingGhostDemo extends DemoState {
         BouncingGhostDemo() {
@@ -335,5 +418,80 @@ class ExactGhostsHeadlessTest {
             }
         }
         throw new AssertionError(demo.getTitle() + " has no key " + key);
+    }
+
+    /** Run, remember each step's view lines and graph end, step back, compare. */
+    private static List<String> checkStepsBack(DemoState demo) {
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        demo.restart();
+        demo.getClock().setPaused(false);
+        StateRing ring = demo.getStateRing();
+        String[] lines = new String[REPLAY_STEPS + 2];
+        String[] graphEnds = new String[REPLAY_STEPS + 2];
+        for (int i = 0; i < REPLAY_STEPS && !demo.isSceneOver(); ++i) {
+            demo.advance(H);
+            lines[(int) ring.getLastIndex()] = ghostLines(demo);
+            graphEnds[(int) ring.getLastIndex()] = graphEnd(demo);
+        }
+        List<String> problems = new ArrayList<>();
+        long last = ring.getLastIndex();
+        for (int k = 1; k <= last - ring.getFirstIndex(); ++k) {
+            demo.stepBack();
+            demo.advance(0f);
+            long shown = demo.getShownStep();
+            if (lines[(int) shown] == null) {
+                continue;
+            }
+            if (!lines[(int) shown].equals(ghostLines(demo))) {
+                problems.add("step " + shown + " HUD: was\n" + lines[(int) shown] + "now\n"
+                        + ghostLines(demo));
+            }
+            if (!graphEnds[(int) shown].equals(graphEnd(demo))) {
+                problems.add("step " + shown + " graph end: was " + graphEnds[(int) shown]
+                        + ", now " + graphEnd(demo));
+            }
+            LiveGraph graph = demo.getExactGhosts().getGraph();
+            for (int s = 0; s < graph.countDrawn() - 1; ++s) {
+                if (graph.getTime(s) >= graph.getEndTime()) {
+                    problems.add("step " + shown + ": a sample after the step shown is drawn");
+                }
+            }
+            if (problems.size() > 3) {
+                break;
+            }
+        }
+        if (problems.isEmpty() && !demo.isReplaying()) {
+            problems.add("never behind the live end");
+        }
+        return problems;
+    }
+
+    /** The HUD's lines about the ghosts: the live distances and the readouts. */
+    private static String ghostLines(DemoState demo) {
+        StringBuilder kept = new StringBuilder();
+        for (String line : demo.formatHud(new StringBuilder()).toString().split("\n")) {
+            if (line.contains("P_exact") || line.contains("Euler | exact")) {
+                kept.append(line).append('\n');
+            }
+        }
+        return kept.toString();
+    }
+
+    /** The ghosts' graph's last sample: its time and every value, as bits. */
+    private static String graphEnd(DemoState demo) {
+        return graphEnd(demo.getExactGhosts().getGraph(), demo.getParticles().size());
+    }
+
+    /** A graph's last sample: its time and every value, as bits. */
+    private static String graphEnd(LiveGraph graph, int series) {
+        StringBuilder text = new StringBuilder().append(Float.floatToIntBits(
+                graph.getEndTime()));
+        for (int p = 0; p < series; ++p) {
+            for (int v = 0; v < 4; ++v) {
+                text.append(' ').append(Float.floatToIntBits(graph.getEndValue(p, v >= 2,
+                        (v & 1) == 1)));
+            }
+        }
+        return text.toString();
     }
 }

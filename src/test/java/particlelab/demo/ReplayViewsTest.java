@@ -16,7 +16,7 @@ import particlelab.world.StateRing;
  * shot results, readouts) are those the run had at that step, character for character. The
  * time line, the stepping line and the time-scale keys line are left out: they say paused
  * and replaying. The views that exist only with a window (ghosts, graph, kept shots) are in
- * {@code ReplayViewsHeadlessTest}.
+ * {@code ExactGhostsHeadlessTest}.
  */
 class ReplayViewsTest {
 

@@ -5,26 +5,25 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
-import java.util.List;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.extension.RegisterExtension;
-import particlelab.Allocations;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.AimStrategy;
 import particlelab.aiming.Hitscan;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.ShotLog;
 import particlelab.aiming.ShotSimulator;
-import particlelab.app.HeadlessHarness;
+import particlelab.demo.DemoState;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
-import particlelab.view.Trail;
 
 /**
- * Issue 10's three demos attached to a headless app: the iterative aimer's visible shots, the
- * straight-line cheat against the stepped projectile, and the two angles at a fixed speed.
+ * Issue 10's three demos in plain JUnit (their physics and HUD text run without jME): the
+ * iterative aimer's visible shots, the straight-line cheat against the stepped projectile,
+ * and the two angles at a fixed speed. Their frames with views (allocation, the bullet's
+ * trail) are checked in {@link LectureFramesHeadlessTest}.
  */
 class AimingDemosTest {
 
@@ -32,12 +31,9 @@ class AimingDemosTest {
     private static final float G = Gravity.STANDARD_G;
     /** Longer than any round of visible shots (40 shots of at most 6 s each). */
     private static final int MAX_FRAMES = 40 * 6 * 60;
-    private static final IterativeAimingDemo iterate = new IterativeAimingDemo();
-    private static final FastBulletsDemo cheat = new FastBulletsDemo();
-    private static final AnyHeightDemo height = new AnyHeightDemo();
-    @RegisterExtension
-    static final HeadlessHarness harness = HeadlessHarness.perClass(
-            () -> List.of(iterate, cheat, height));
+    private final IterativeAimingDemo iterate = declared(new IterativeAimingDemo());
+    private final FastBulletsDemo cheat = declared(new FastBulletsDemo());
+    private final AnyHeightDemo height = declared(new AnyHeightDemo());
 
     // ----------------------------------------------------------------- iterative aiming ----
 
@@ -50,7 +46,7 @@ class AimingDemosTest {
                 String what = drag + " " + strategy;
                 ShotLog expected = new ShotLog(IterativeAimingDemo.MAX_SHOTS);
                 AimResult reference = referenceAim(drag, strategy, H, expected);
-                Object[] run = harness.call(() -> {
+                Object[] run = measure(() -> {
                     iterate.setMismatch(false);
                     iterate.setInstant(false);
                     iterate.setDrag(drag);
@@ -93,7 +89,7 @@ class AimingDemosTest {
     @Test
     void theInstantModeFliesOnlyTheFinalShotAndSaysHowManyThePlayerWouldWatch()
             throws Exception {
-        Object[] run = harness.call(() -> {
+        Object[] run = measure(() -> {
             iterate.setMismatch(false);
             iterate.setDrag(IterativeAimingDemo.Drag.LINEAR);
             iterate.setStrategy(AimStrategy.LECTURE);
@@ -137,7 +133,7 @@ class AimingDemosTest {
     @Test
     void theMismatchedPredictorMissesByAboutVxTimesTheStepDifference() throws Exception {
         for (IterativeAimingDemo.Drag drag : IterativeAimingDemo.Drag.values()) {
-            Object[] run = harness.call(() -> {
+            Object[] run = measure(() -> {
                 iterate.setInstant(true);
                 iterate.setDrag(drag);
                 iterate.setStrategy(AimStrategy.SECANT);
@@ -170,77 +166,19 @@ class AimingDemosTest {
         }
     }
 
-    @Test
-    void iterativeAimingFramesAllocateNothingBetweenShots() throws Exception {
-        // Measured on the jME thread, asserted here: a failed assertion must not end it.
-        long[] bytes = harness.call(() -> {
-            iterate.setDrag(IterativeAimingDemo.Drag.LINEAR);
-            iterate.setStrategy(AimStrategy.LECTURE);
-            StringBuilder hud = new StringBuilder(4096);
-            // The first shot flies about 2.9 s: the 70 frames run stay inside its flight.
-            long frames = Allocations.warmBytesAllocatedBy(() -> {
-                for (int frame = 0; frame < 10; ++frame) {
-                    iterate.advance(H);
-                }
-            });
-            long text = Allocations.warmBytesAllocatedBy(() -> iterate.formatHud(hud));
-            return new long[] {frames, text};
-        });
-        assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
-        assertEquals(0L, bytes[1], "bytes allocated by the HUD text");
-    }
-
     // ---------------------------------------------------------------------- the cheat ----
 
     @Test
-    void aFastBulletStopsAtTheFirstPointOfTheDiscInsteadOfTunnelling() throws Exception {
-        Object[] run = harness.call(() -> {
-            cheat.getClock().setMode(particlelab.physics.SimulationClock.Mode.FIXED_STEP);
-            cheat.setSpeedIndex(FastBulletsDemo.SPEEDS.length - 1);
-            int frames = 0;
-            while (!cheat.isReached() && frames < 600) {
-                cheat.advance(H);
-                ++frames;
-            }
-            Trail trail = cheat.getView(cheat.getBullet()).getTrail();
-            Vector3f newest = trail.copyPoint(trail.size() - 1, new Vector3f());
-            return new Object[] {cheat.isHit(), cheat.copyImpact(new Vector3f()),
-                cheat.getBullet().getParticle().position.clone(), newest,
-                cheat.getSteppedDrop(), cheat.getArrivalSeconds(),
-                cheat.formatHud(new StringBuilder()).toString()};
-        });
-        float v = FastBulletsDemo.SPEEDS[FastBulletsDemo.SPEEDS.length - 1];
-        // One step is 15 m, fifty times the disc's 0.3 m: no step ends inside it.
-        assertTrue(v * H > 10f * 0.3f);
-        assertTrue((Boolean) run[0], "the 900 m/s bullet must hit");
-        Vector3f impact = (Vector3f) run[1];
-        // The impact is where the segment meets x = d: exact to float round-off at 50 m.
-        assertEquals(FastBulletsDemo.DISTANCE, impact.x, 1e-4f);
-        assertEquals(impact, run[2], "the bullet stays at the impact");
-        assertTrue(((Vector3f) run[3]).x <= FastBulletsDemo.DISTANCE + 1e-4f,
-                "the trail goes behind the target: " + run[3]);
-        // The drop on the chord of the stepped path, Hitscan.steppedDrop; y is near 12 m,
-        // where a float's ulp is 1e-6 m, over 4 steps.
-        assertEquals(Hitscan.steppedDrop(G, FastBulletsDemo.DISTANCE, v, H), (Double) run[4],
-                1e-5);
-        assertEquals(FastBulletsDemo.DISTANCE / v, (Double) run[5], 1e-6);
-        String hud = (String) run[6];
-        assertTrue(hud.contains(":  projectile HIT, "), hud);
-        assertTrue(hud.contains("So the cheat is good enough here: it is for d < v·√(2r/g) = "
-                + "287.5 m"), hud);
-    }
-
-    @Test
     void aSlowBulletFallsTheFormulasDropPlusHalfAStepAndMisses() throws Exception {
-        Object[] run = harness.call(() -> {
+        Object[] run = measure(() -> {
             cheat.setSpeedIndex(0);
             int frames = 0;
             while (!cheat.isReached() && frames < 600) {
-                cheat.advance(H);
+                cheat.advancePhysics(H);
                 ++frames;
             }
             for (int frame = 0; frame < 30; ++frame) {
-                cheat.advance(H);
+                cheat.advancePhysics(H);
             }
             return new Object[] {cheat.isHit(), cheat.getSteppedDrop(),
                 cheat.getArrivalSeconds(), cheat.getBullet().getParticle().position.clone(),
@@ -264,36 +202,17 @@ class AimingDemosTest {
                 hud);
     }
 
-    @Test
-    void fastBulletFramesAllocateNothingInFlight() throws Exception {
-        // Measured on the jME thread, asserted here: a failed assertion must not end it.
-        long[] bytes = harness.call(() -> {
-            cheat.setSpeedIndex(0);
-            StringBuilder hud = new StringBuilder(4096);
-            // The 35 m/s bullet flies 1.4 s to the disc: the 70 frames run stay in flight.
-            long frames = Allocations.warmBytesAllocatedBy(() -> {
-                for (int frame = 0; frame < 10; ++frame) {
-                    cheat.advance(H);
-                }
-            });
-            long text = Allocations.warmBytesAllocatedBy(() -> cheat.formatHud(hud));
-            return new long[] {frames, text};
-        });
-        assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
-        assertEquals(0L, bytes[1], "bytes allocated by the HUD text");
-    }
-
     // --------------------------------------------------------------- aim at any height ----
 
     @Test
     void bothArcsArriveAtTheTargetLowByHalfAStepOfGravity() throws Exception {
         float[][] targets = {{30f, 4f}, {20f, -5f}, {12f, 10f}, {40f, 0f}};
         for (float[] target : targets) {
-            Object[] run = harness.call(() -> {
+            Object[] run = measure(() -> {
                 height.setTarget(target[0], target[1]);
                 int frames = 0;
                 while (!(height.hasArrived(false) && height.hasArrived(true)) && frames < 900) {
-                    height.advance(H);
+                    height.advancePhysics(H);
                     ++frames;
                 }
                 return new Object[] {height.getAngles().isReachable(),
@@ -324,7 +243,7 @@ class AimingDemosTest {
 
     @Test
     void aTargetAboveTheEnvelopeIsOutOfReachAndNothingIsFired() throws Exception {
-        Object[] run = harness.call(() -> {
+        Object[] run = measure(() -> {
             height.setTarget(AnyHeightDemo.MAX_DISTANCE, 10f);
             Object[] result = {height.getAngles().isReachable(), height.isFired(false),
                 height.isFired(true), height.formatHud(new StringBuilder()).toString()};
@@ -341,32 +260,13 @@ class AimingDemosTest {
         assertTrue(hud.contains("Envelope (safety parabola) at this x: y = -10.22 m"), hud);
     }
 
-    @Test
-    void anyHeightFramesAllocateNothingInFlight() throws Exception {
-        // Measured on the jME thread, asserted here: a failed assertion must not end it.
-        long[] bytes = harness.call(() -> {
-            height.setTarget(30f, 4f);
-            StringBuilder hud = new StringBuilder(4096);
-            // The low arc flies 1.8 s: the 70 frames run stay in flight.
-            long frames = Allocations.warmBytesAllocatedBy(() -> {
-                for (int frame = 0; frame < 10; ++frame) {
-                    height.advance(H);
-                }
-            });
-            long text = Allocations.warmBytesAllocatedBy(() -> height.formatHud(hud));
-            return new long[] {frames, text};
-        });
-        assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
-        assertEquals(0L, bytes[1], "bytes allocated by the HUD text");
-    }
-
     // ---------------------------------------------------------------- private helpers ----
 
     /** Advance a round until every shot has landed; return the frames taken. */
     private static int runRound(IterativeAimingDemo demo) {
         int frames = 0;
         while (!demo.isRoundOver() && frames < MAX_FRAMES) {
-            demo.advance(H);
+            demo.advancePhysics(H);
             ++frames;
         }
         return frames;
@@ -385,5 +285,19 @@ class AimingDemosTest {
                 IterativeAimingDemo.MAX_SHOTS, strategy, IterativeAimingDemo.DEFAULT_SEED)
                 .aim(IterativeAimingDemo.TARGET_DISTANCE, IterativeAimingDemo.HORIZONTAL_SPEED,
                         storeShots);
+    }
+
+    /** Run one block of a test and hand back what it measured. */
+    private static <T> T measure(Callable<T> block) throws Exception {
+        return block.call();
+    }
+
+    /**
+     * Declare a demo's scene, as a window's start does before anything else: its setters
+     * act on the particles the scene created.
+     */
+    private static <D extends DemoState> D declared(D demo) {
+        demo.getRun();
+        return demo;
     }
 }

@@ -3,20 +3,16 @@ package particlelab.lecture;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.jme3.renderer.Camera;
-import java.util.List;
+import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.extension.RegisterExtension;
-import particlelab.Allocations;
-import particlelab.app.HeadlessHarness;
 import particlelab.physics.SimulationClock;
 import particlelab.world.Fountain;
 
 /**
- * The fountain in a real headless jME application: the clock drives its packed steps, a frame
- * (steps, mesh buffers, HUD text) allocates nothing once running, and the HUD's numbers are
- * the fountain's own.
+ * The fountain's physics and HUD text, in plain JUnit (no jME application): the clock drives
+ * its packed steps, and the HUD's numbers are the fountain's own. Its points' size and a
+ * frame with its mesh buffers are checked in {@link LectureFramesHeadlessTest}.
  */
 class FountainDemoTest {
 
@@ -26,26 +22,25 @@ class FountainDemoTest {
     private static final Pattern SHARE_LINE = Pattern.compile("physics \\d+\\.\\d\\d ms/frame"
             + " = \\d+% of a 16\\.7 ms frame;  mesh \\d+\\.\\d\\d \\+ render \\d+\\.\\d\\d ms;"
             + "  frame \\d+\\.\\d ms \\(\\d+ fps\\)\n");
-    private static final FountainDemo demo = new FountainDemo();
-    @RegisterExtension
-    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
+    private final FountainDemo demo = new FountainDemo();
+
+    FountainDemoTest() {
         demo.setParticleCount(PARTICLES);
-        return List.of(demo);
-    });
+    }
 
     @Test
     void theClockDrivesTheFountainsSteps() throws Exception {
-        double[] times = harness.call(() -> {
+        double[] times = measure(() -> {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.getClock().setPaused(false);
             demo.restart();
             for (int frame = 0; frame < 90; ++frame) {
-                demo.advance(H);
+                demo.advancePhysics(H);
             }
             double running = demo.getFountain().getTimeSeconds();
             demo.getClock().setPaused(true);
             for (int frame = 0; frame < 30; ++frame) {
-                demo.advance(H);
+                demo.advancePhysics(H);
             }
             double paused = demo.getFountain().getTimeSeconds();
             demo.getClock().setPaused(false);
@@ -57,60 +52,13 @@ class FountainDemoTest {
         assertEquals(times[2], times[1], 1e-6);
     }
 
-    /** Points keep their share of the picture in a larger window: 2 px up to 720p, 6 at 4K. */
-    @Test
-    void pointsGrowWithTheWindowBeyond720p() throws Exception {
-        assertEquals(FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(360), 0f);
-        assertEquals(FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(720), 0f);
-        assertEquals(3f * FountainDemo.POINT_SIZE_PIXELS, FountainDemo.pointSizeFor(2160), 0f);
-        float[] drawn = harness.call(() -> {
-            Camera camera = demo.getApplication().getCamera();
-            int width = camera.getWidth();
-            int height = camera.getHeight();
-            camera.resize(3840, 2160, true);
-            demo.advance(H);
-            float large = demo.drawnPointSize();
-            camera.resize(width, height, true);
-            demo.advance(H);
-            return new float[] {large, demo.drawnPointSize(), height};
-        });
-        assertEquals(FountainDemo.pointSizeFor(2160), drawn[0], 0f, "at 3840x2160");
-        assertEquals(FountainDemo.pointSizeFor((int) drawn[2]), drawn[1], 0f,
-                "back at " + drawn[2] + " px high");
-    }
-
-    /**
-     * The fountain's own part of a frame: its steps, mesh buffers and HUD text. The whole
-     * frame, with the text handed to the screen, the scene graph and the render pass, is
-     * measured for every demo by {@code particlelab.app.FrameAllocationHeadlessTest}.
-     */
-    @Test
-    void aRunningFrameAllocatesNothing() throws Exception {
-        StringBuilder hud = new StringBuilder(4096);
-        Runnable frames = () -> {
-            for (int frame = 0; frame < 30; ++frame) {
-                demo.advance(H);
-                demo.formatHud(hud);
-            }
-        };
-        long bytes = harness.call(() -> {
-            demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-            demo.restart();
-            for (int frame = 0; frame < 600; ++frame) {
-                demo.advance(H); // the pool fills, shells burst
-            }
-            return Allocations.warmBytesAllocatedBy(frames);
-        });
-        assertEquals(0L, bytes, "30 fountain frames with the HUD text allocated");
-    }
-
     @Test
     void theHudCountsWhatTheFountainHolds() throws Exception {
-        String[] texts = harness.call(() -> {
+        String[] texts = measure(() -> {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < 300; ++frame) {
-                demo.advance(H);
+                demo.advancePhysics(H);
             }
             Fountain fountain = demo.getFountain();
             String expected = "particles: " + fountain.countLive() + " in flight (stepped) of "
@@ -137,5 +85,10 @@ class FountainDemoTest {
         FountainDemo.appendShareLine(text, 4.2, 0.0, 0.0, 0.0);
         assertEquals("physics 4.20 ms/frame = 25% of a 16.7 ms frame;  mesh 0.00 + render 0.00"
                 + " ms;  frame 0.0 ms (0 fps)\n", text.toString());
+    }
+
+    /** Run one block of a test and hand back what it measured. */
+    private static <T> T measure(Callable<T> block) throws Exception {
+        return block.call();
     }
 }

@@ -1,6 +1,8 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
@@ -10,13 +12,15 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.app.DemoCatalog;
 import particlelab.app.HeadlessHarness;
 import particlelab.app.ParticleLabApp;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.view.EnergyBars;
 import particlelab.view.HudLayout;
 import particlelab.view.ScreenRect;
 
 /**
- * Issue 32's bar graph in a real headless application: with {@code --set energy=on} the
- * drag, bounce and spring demos draw the ledger's bars in the HUD's ledger strip at every
+ * The parts of demos in a real headless application: the hooks a window calls, the student
+ * lane's recipe that fails, and issue 32's bar graph. The bar graph: with
+ * {@code --set energy=on} the drag, bounce and spring demos draw the ledger's bars in the HUD's ledger strip at every
  * window from 200x150 to 3840x2160, presenting and not: the strip inside the window, of no
  * negative size, clear of the HUD's texts, the side panel and the graph, the scene left of
  * it, every GUI spatial placed by finite numbers; its labels at least 14 px at 1280x720;
@@ -24,7 +28,7 @@ import particlelab.view.ScreenRect;
  * ledger's numerical column. Presenting, bounce shows the bars without being switched on
  * (its slide is about energy) and drag does not.
  */
-class EnergyBarsHeadlessTest {
+class DemoPartsHeadlessTest {
 
     private static final float H = 1f / 60f;
     private static final int[][] WINDOWS = {{200, 150}, {640, 360}, {1280, 720},
@@ -36,8 +40,21 @@ class EnergyBarsHeadlessTest {
     /** The least label size a back row reads at 1280x720 (pixels), issue 32. */
     private static final float BACK_ROW_PIXELS = 14f;
     private static final List<String> SHOWN = List.of("drag", "bounce", "spring");
+    /** Whole frames after the student lane stopped: a second of flight. */
+    private static final int LANE_FRAMES = 60;
+    /** What the recording demo's parts log (live, appended to on the jME thread). */
+    private static final List<String> partsLog = new ArrayList<>();
+    private static final DemoPartTest.RecordingDemo recording =
+            new DemoPartTest.RecordingDemo(partsLog);
+    private static final GravitationalPullDemo studentPull = new GravitationalPullDemo();
+    /** The catalogue, then a demo with recording parts and a pull for the student lane. */
     @RegisterExtension
-    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
+    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
+        List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
+        demos.add(recording);
+        demos.add(studentPull);
+        return demos;
+    });
 
     @Test
     void theBarsKeepToTheirStripAtEveryWindowPresentingAndNot() throws Exception {
@@ -157,6 +174,53 @@ class EnergyBarsHeadlessTest {
         assertEquals("", changes);
     }
 
+    /**
+     * The window's hooks reach every part once, right after the demo's own: its views built
+     * once, laid out with the first layout and again at every new one, a frame's afterFrame.
+     */
+    @Test
+    void theWindowsHooksReachEveryPartOnceAfterTheDemosOwn() throws Exception {
+        List<String> log = partsLog;
+        DemoPartTest.RecordingDemo demo = recording;
+        List<String> built = harness.call(() -> {
+            List<String> seen = new ArrayList<>();
+            for (String entry : log) {
+                if (entry.endsWith("buildViews")) {
+                    seen.add(entry);
+                }
+            }
+            return seen;
+        });
+        assertEquals(List.of("demo.buildViews", "a.buildViews", "b.buildViews"), built);
+        assertTrue(harness.call(() -> log.contains("a.layOut") && log.contains("b.layOut")),
+                "the parts were laid out with the first layout: " + log);
+        List<String> frame = harness.call(() -> {
+            log.clear();
+            demo.advance(H);
+            List<String> seen = new ArrayList<>();
+            for (String entry : log) {
+                if (entry.endsWith("afterFrame")) {
+                    seen.add(entry);
+                }
+            }
+            return seen;
+        });
+        assertEquals(List.of("demo.afterFrame", "a.afterFrame", "b.afterFrame"), frame);
+        List<String> laidOut = harness.call(() -> {
+            log.clear();
+            demo.layOut(640, 360);
+            List<String> seen = new ArrayList<>();
+            for (String entry : log) {
+                if (entry.endsWith("layOut")) {
+                    seen.add(entry);
+                }
+            }
+            return seen;
+        });
+        // a new layout: the scene's area follows the HUD, then each part lays out once
+        assertEquals(List.of("a.layOut", "b.layOut"), laidOut);
+    }
+
     /** @return "" or what is wrong with the bars of a demo on screen */
     private static String check(DemoState demo, int[] window, boolean presenting) {
         String where = demo.getTitle() + " at " + window[0] + "x" + window[1]
@@ -216,6 +280,68 @@ class EnergyBarsHeadlessTest {
     private static void frames(ParticleLabApp app, int count) {
         for (int i = 0; i < count; ++i) {
             SmallPanelHeadlessTest.frame(app);
+        }
+    }
+
+    /** Choose the student lane with a class and a limit, launch, and run whole frames. */
+    private static String[] runFrames(String className, long limitNanos) throws Exception {
+        ParticleLabApp app = harness.app();
+        harness.call(() -> {
+            app.getSwitcher().select(app.getSwitcher().getDemos().indexOf(studentPull));
+            return true;
+        });
+        harness.awaitFrames(3);
+        return harness.call(() -> {
+            studentPull.getLane().useStudentClass(className, limitNanos);
+            studentPull.getParameters().set(ComparisonLane.PARAMETER,
+                    ComparisonLane.Kind.STUDENT.ordinal());
+            studentPull.restart();
+            studentPull.getClock().setPaused(false);
+            double before = studentPull.getClock().getSimulatedSeconds();
+            for (int frame = 0; frame < LANE_FRAMES; ++frame) {
+                SmallPanelHeadlessTest.frame(app);
+            }
+            return new String[] {studentPull.getHud().getBodyText(),
+                String.valueOf(studentPull.getClock().getSimulatedSeconds() - before),
+                String.valueOf(app.getRecovered()), String.valueOf(app.getFailure())};
+        });
+    }
+
+    /**
+     * The student lane (issue 31 §3's acceptance): a student's recipe that throws, or never
+     * returns, leaves the window running, whole frames and all, with one line on the HUD;
+     * nothing is thrown on the render thread and the window recovers from nothing.
+     */
+    @Test
+    void aThrowingRecipeLeavesTheWindowRunningWithOneLine() throws Exception {
+        String[] result = runFrames(StudentLaneTest.ThrowingRecipe.class.getName(),
+                10_000_000_000L);
+        String hud = result[0];
+        assertTrue(hud.matches("(?s).*\nLane student's recipe \\(L\\):  step 3: threw"
+                + " IllegalStateException: boom at call 3 \\(StudentLaneTest\\.java:\\d+\\)"
+                + "\n.*"), hud);
+        // 60 frames of h: the clock ran on (float sums: round-off ~1e-5 s)
+        assertEquals(LANE_FRAMES * H, Double.parseDouble(result[1]), 1e-3);
+        assertEquals("null", result[2], "the window recovered from");
+        assertEquals("null", result[3], "the window failed");
+        // and jME's own loop goes on
+        harness.awaitFrames(3);
+        assertNull(harness.app().getRecovered());
+    }
+
+    @Test
+    void aRecipeThatNeverReturnsLeavesTheWindowRunningWithOneLine() throws Exception {
+        StudentLaneTest.EndlessRecipe.released = false;
+        try {
+            String[] result = runFrames(StudentLaneTest.EndlessRecipe.class.getName(),
+                    200_000_000L);
+            assertTrue(result[0].contains("\nLane student's recipe (L):  step 1: did not"
+                    + " return within 0.2 s: an endless loop? (no more calls)\n"), result[0]);
+            assertEquals(LANE_FRAMES * H, Double.parseDouble(result[1]), 1e-3);
+            assertEquals("null", result[2], "the window recovered from");
+            harness.awaitFrames(3);
+        } finally {
+            StudentLaneTest.EndlessRecipe.released = true;
         }
     }
 }

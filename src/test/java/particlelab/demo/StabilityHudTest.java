@@ -5,10 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import java.util.List;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.extension.RegisterExtension;
-import particlelab.app.HeadlessHarness;
 import particlelab.lecture.DragDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
@@ -16,24 +14,23 @@ import particlelab.physics.SimulationClock;
 import particlelab.physics.Spring;
 
 /**
- * The HUD's stability line and warning in a real headless application: one statement, naming
- * the particle it is about, with the limits of drag and of springs (docs/numerics.md,
- * "Stability").
+ * The HUD's stability line and warning: one statement, naming the particle it is about, with
+ * the limits of drag and of springs (docs/numerics.md, "Stability"). Plain JUnit: the demo's
+ * run steps without jME, and the warning is the text its run's {@link StepWarnings} hands
+ * the HUD's warning line.
  */
-class StabilityHudHeadlessTest {
+class StabilityHudTest {
 
     private static final float H = 1f / 60f;
     /** The sprung ball: k = 16 N/m on 1 kg, so omega = 4 /s and the limit 2/omega = 0.5 s. */
     private static final float SPRING_K = 16f;
 
-    private static final DragDemo drag = new DragDemo();
-    private static final SprungDemo sprung = new SprungDemo();
-    @RegisterExtension
-    static final HeadlessHarness harness = HeadlessHarness.perClass(() -> List.of(drag, sprung));
+    private final DragDemo drag = declared(new DragDemo());
+    private final SprungDemo sprung = declared(new SprungDemo());
 
     @Test
     void dragDemoLineNamesTheSphereWithTheSmallestLimit() throws Exception {
-        String body = harness.call(() -> {
+        String body = measure(() -> {
             drag.restart();
             return drag.formatHud(new StringBuilder()).toString();
         });
@@ -47,13 +44,13 @@ class StabilityHudHeadlessTest {
 
     @Test
     void dragDemoWarningNamesTheSameSphereAndSaysWhatTheStepDoes() throws Exception {
-        String[] texts = harness.call(() -> {
+        String[] texts = measure(() -> {
             drag.restart();
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             // 1.2 s: beyond the quadratic sphere's 1.105 s, within the linear one's 2.222 s.
             drag.getClock().setStepSeconds(1.2f);
             takeOneStep(drag);
-            String warning = drag.getHud().getWarningText();
+            String warning = warningOf(drag);
             drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
             drag.restart();
             return new String[] {warning, drag.formatHud(new StringBuilder()).toString()};
@@ -67,13 +64,13 @@ class StabilityHudHeadlessTest {
 
     @Test
     void springShowsItsLimitTwoOverOmegaAndWarnsBeyondIt() throws Exception {
-        String[] texts = harness.call(() -> {
+        String[] texts = measure(() -> {
             sprung.restart();
             String body = sprung.formatHud(new StringBuilder()).toString();
             sprung.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             sprung.getClock().setStepSeconds(0.55f);
             takeOneStep(sprung);
-            String warning = sprung.getHud().getWarningText();
+            String warning = warningOf(sprung);
             sprung.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
             sprung.restart();
             return new String[] {body, warning};
@@ -88,10 +85,10 @@ class StabilityHudHeadlessTest {
 
     @Test
     void landedParticlesAreLeftOutOfTheLine() throws Exception {
-        String body = harness.call(() -> {
+        String body = measure(() -> {
             drag.restart();
             for (int frame = 0; frame < 600; ++frame) {
-                drag.advance(H);
+                drag.advancePhysics(H);
             }
             return drag.formatHud(new StringBuilder()).toString();
         });
@@ -104,7 +101,7 @@ class StabilityHudHeadlessTest {
 
     @Test
     void whileTheWarningIsUpTheLineGivesTheLimitItIsAboutNotAnyHIsStable() throws Exception {
-        String[] texts = harness.call(() -> {
+        String[] texts = measure(() -> {
             drag.getParameters().set("c", 0.5f);
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.getClock().setStepSeconds(0.2f);
@@ -113,9 +110,9 @@ class StabilityHudHeadlessTest {
             // step and landed, the linear one has landed too, only "gravity only" flies; the
             // warning stays up for 4 s of real time.
             for (int frame = 0; frame < 102; ++frame) {
-                drag.update(H);
+                drag.advancePhysics(H);
             }
-            String[] result = {drag.getHud().getWarningText(),
+            String[] result = {warningOf(drag),
                 drag.formatHud(new StringBuilder()).toString()};
             drag.getParameters().set("c", DragDemo.QUADRATIC_C);
             drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
@@ -132,19 +129,38 @@ class StabilityHudHeadlessTest {
         assertTrue(!body.contains("any h") && !stabilityLine(body).contains("2.222"), body);
     }
 
-    /** Feed frames of H until the clock has taken its first (long) step from the launch. */
     /** The HUD body's "Stability:" line. */
     private static String stabilityLine(String body) {
         int start = body.indexOf("Stability:");
         return start < 0 ? "" : body.substring(start, body.indexOf('\n', start));
     }
 
+    /** Feed frames of H until the clock has taken its first (long) step from the launch. */
     private static void takeOneStep(DemoState demo) {
         for (int frame = 0; frame < 1000 && demo.getClock().getSimulatedSeconds() == 0.0;
                 ++frame) {
-            demo.update(H);
+            demo.advancePhysics(H);
         }
         assertTrue(demo.getClock().getSimulatedSeconds() > 0.0, "no step taken");
+    }
+
+    /** The warning line the HUD shows now: the run's warnings, as the HUD asks for them. */
+    private static String warningOf(DemoState demo) {
+        return demo.getRun().getWarnings().format(new StringBuilder()).toString();
+    }
+
+    /**
+     * Declare a demo's scene, as a window's start does before anything else: its setters
+     * act on the particles the scene created.
+     */
+    private static <D extends DemoState> D declared(D demo) {
+        demo.getRun();
+        return demo;
+    }
+
+    /** Run one block of a test and hand back what it measured. */
+    private static <T> T measure(Callable<T> block) throws Exception {
+        return block.call();
     }
 
     /** A test-only demo: a ball on an undamped spring under gravity. */
