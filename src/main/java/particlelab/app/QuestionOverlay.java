@@ -233,8 +233,9 @@ final class QuestionOverlay extends BaseAppState {
         float top = height - margin;
         label.setBox(new Rectangle(0f, 0f, boxWidth, textHeight));
         label.setLocalTranslation(left, top, 1f);
-        backdrop.setLocalScale(boxWidth + 2f * margin, textHeight + 2f * margin, 1f);
-        backdrop.setLocalTranslation(left - margin, top - textHeight - margin, 0f);
+        // The window's whole width: no end of the HUD line under it peeks out beside it.
+        backdrop.setLocalScale(width, textHeight + 2f * margin, 1f);
+        backdrop.setLocalTranslation(0f, top - textHeight - margin, 0f);
     }
 
     /** @return the widest line of the text at the font's rendered size (px) */
