@@ -15,14 +15,20 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.shape.Quad;
 import particlelab.view.HudFont;
+import particlelab.view.ScreenRect;
 
 /**
  * The tour question's large text (issue 34, predict then reveal), over the frozen scene in
  * both HUD modes: the question and the room's counts while it votes, then the answer with the
  * stop's watch lines and the split ({@link TourGuide#appendVote}). Its type is a fixed share
  * of the window's height, so it reads the same from the back of the hall at 640x360 and at
- * 3840x2160; a text too tall for the window is set smaller until it fits. Rebuilt only when
- * the text or the window's size changes: a frame allocates nothing.
+ * 3840x2160; a text too tall for the window is set smaller until it fits. The answer, once
+ * revealed, is set smaller ({@link #REVEAL_TYPE_SHARE}) in a compact box at the window's
+ * top, over the HUD's band rather than the scene: each line unwrapped where the window is
+ * wide enough (the vote's split on one line from 1280x720 up) and the box at most
+ * {@link #REVEAL_SCENE_SHARE} of the scene's height, so the bodies that show the answer stay
+ * in view. Rebuilt only when the text or the window's size changes: a frame allocates
+ * nothing.
  */
 final class QuestionOverlay extends BaseAppState {
 
@@ -34,6 +40,13 @@ final class QuestionOverlay extends BaseAppState {
     static final float WIDTH_SHARE = 0.9f;
     /** The most of the window's height the box may take. */
     static final float HEIGHT_SHARE = 0.9f;
+    /**
+     * The revealed answer's type as a share of the window's height (1/40: 18 px at 720 px,
+     * 27 px at 1080 px), before it is set smaller to fit.
+     */
+    static final float REVEAL_TYPE_SHARE = 1f / 40f;
+    /** The most of the scene's height the revealed answer's box may take. */
+    static final float REVEAL_SCENE_SHARE = 0.25f;
     /** How much smaller each try at fitting sets the type. */
     private static final float SHRINK = 0.9f;
     private static final ColorRGBA BACKDROP = new ColorRGBA(0.02f, 0.02f, 0.04f, 1f);
@@ -47,6 +60,9 @@ final class QuestionOverlay extends BaseAppState {
     private BitmapText label;
     private Geometry backdrop;
     private Node guiNode;
+    private BitmapFont font;
+    private final ScreenRect sceneRect = new ScreenRect();
+    private boolean shownRevealed;
     private int shownVersion = -1;
     private int shownWidth;
     private int shownHeight;
@@ -90,7 +106,7 @@ final class QuestionOverlay extends BaseAppState {
     @Override
     protected void initialize(Application app) {
         guiNode = ((SimpleApplication) app).getGuiNode();
-        BitmapFont font = HudFont.load(app.getAssetManager());
+        font = HudFont.load(app.getAssetManager());
         label = new BitmapText(font);
         label.setColor(TEXT_COLOR);
         label.setLineWrapMode(LineWrapMode.Word);
@@ -140,7 +156,12 @@ final class QuestionOverlay extends BaseAppState {
             text.setLength(0);
             tour.appendVote(text);
             label.setText(text);
-            layout(width, height);
+            shownRevealed = tour.getVote().isRevealed();
+            if (shownRevealed) {
+                layoutReveal(width, height, tour.getSceneRect(sceneRect));
+            } else {
+                layout(width, height);
+            }
         }
         if (!isShowing()) {
             guiNode.attachChild(node);
@@ -172,5 +193,66 @@ final class QuestionOverlay extends BaseAppState {
         label.setLocalTranslation(left, top, 1f);
         backdrop.setLocalScale(boxWidth + 2f * margin, textHeight + 2f * margin, 1f);
         backdrop.setLocalTranslation(left - margin, top - textHeight - margin, 0f);
+    }
+
+    /**
+     * Lay the revealed answer out: at the window's top, its type the share of the height,
+     * set smaller (down to {@link #MIN_TYPE_PX}) while a line would wrap or the box would be
+     * taller than {@link #REVEAL_SCENE_SHARE} of the scene.
+     *
+     * @param scene the scene's rectangle on the screen (empty if unknown)
+     */
+    private void layoutReveal(int width, int height, ScreenRect scene) {
+        float boxWidth = WIDTH_SHARE * width;
+        float sceneHeight = scene.isEmpty() ? height : scene.getHeight();
+        int lines = 1;
+        for (int i = 0; i < text.length(); ++i) {
+            if (text.charAt(i) == '\n') {
+                ++lines;
+            }
+        }
+        float size = Math.max(MIN_TYPE_PX, REVEAL_TYPE_SHARE * height);
+        float lineHeight;
+        while (true) {
+            float scale = size / font.getCharSet().getRenderedSize();
+            lineHeight = font.getCharSet().getLineHeight() * scale;
+            boolean fits = widestLine() * scale <= boxWidth
+                    && lines * lineHeight + size <= REVEAL_SCENE_SHARE * sceneHeight;
+            if (fits || size <= MIN_TYPE_PX) {
+                break;
+            }
+            size = Math.max(MIN_TYPE_PX, size * SHRINK);
+        }
+        typePx = size;
+        label.setSize(size);
+        label.setBox(new Rectangle(0f, 0f, boxWidth, 0f));
+        label.setAlignment(BitmapFont.Align.Center);
+        float textHeight = label.getHeight();
+        float margin = 0.5f * size;
+        float left = 0.5f * (width - boxWidth);
+        float top = height - margin;
+        label.setBox(new Rectangle(0f, 0f, boxWidth, textHeight));
+        label.setLocalTranslation(left, top, 1f);
+        // The window's whole width: no end of the HUD line under it peeks out beside it.
+        backdrop.setLocalScale(width, textHeight + 2f * margin, 1f);
+        backdrop.setLocalTranslation(0f, top - textHeight - margin, 0f);
+    }
+
+    /** @return the widest line of the text at the font's rendered size (px) */
+    private float widestLine() {
+        float widest = 0f;
+        int start = 0;
+        for (int i = 0; i <= text.length(); ++i) {
+            if (i == text.length() || text.charAt(i) == '\n') {
+                widest = Math.max(widest, font.getLineWidth(text.subSequence(start, i)));
+                start = i + 1;
+            }
+        }
+        return widest;
+    }
+
+    /** @return true if the answer shown is the revealed one (laid out compact) */
+    boolean isShowingReveal() {
+        return isShowing() && shownRevealed;
     }
 }

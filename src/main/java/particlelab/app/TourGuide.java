@@ -9,6 +9,7 @@ import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
 import particlelab.demo.HudNote;
 import particlelab.demo.KeyBinding;
+import particlelab.view.ScreenRect;
 
 /**
  * Walks the {@link LectureTour} in the window: a stop selects its demo, puts every parameter
@@ -162,6 +163,16 @@ final class TourGuide {
         return voteRunning;
     }
 
+    /**
+     * Copy where the shown demo's scene is on the screen, for the reveal's layout.
+     *
+     * @param storeResult storage (not null, modified)
+     * @return storeResult
+     */
+    ScreenRect getSceneRect(ScreenRect storeResult) {
+        return switcher.getSelected().copySceneRect(storeResult);
+    }
+
     /** @return a number that changes whenever the question's text changes */
     int getVoteVersion() {
         return voteVersion;
@@ -179,7 +190,7 @@ final class TourGuide {
             return text;
         }
         if (vote.isRevealed()) {
-            return text.append(revealText).append("F4 closes; Space runs the scene on");
+            return text.append(revealText);
         }
         vote.appendAsked(text);
         int answers = vote.getQuestion().getAnswers().size();
@@ -204,13 +215,19 @@ final class TourGuide {
             demo.showNotice("stop " + (stop + 1) + " has no question yet");
             return;
         }
+        DemoState stopDemo = switcher.getDemos().get(DemoCatalog.indexOf(
+                LectureTour.stops().get(stop).getDemo()));
+        if (vote == null && demo != stopDemo) {
+            // PageDown and F4 in one frame: the stop's demo is shown from the next frame on.
+            demo.showNotice("the stop is still opening: press F4 again");
+            return;
+        }
         if (vote == null) {
             // Start the scene again and hold it at its start: nothing shown gives it away.
             demo.restart();
             demo.getClock().setPaused(true);
             vote = new TourVote(stop, question, question.answer(demo));
-            voteDemo = switcher.getDemos().get(DemoCatalog.indexOf(
-                    LectureTour.stops().get(stop).getDemo()));
+            voteDemo = stopDemo;
             voteRunning = false;
             observed = TourQuestion.UNDECIDED;
         } else if (!voteRunning) {
@@ -253,7 +270,7 @@ final class TourGuide {
         int right = vote.getRight();
         revealText.setLength(0);
         revealText.append("Stop ").append(stop + 1).append(": ").append(question.getText())
-                .append("\nAnswer: ").append(right + 1).append(' ')
+                .append("   Answer: ").append(right + 1).append(' ')
                 .append(question.getAnswers().get(right));
         if (observed != right) {
             revealText.append("  (the scene showed ").append(observed + 1).append(' ')
@@ -262,6 +279,9 @@ final class TourGuide {
         revealText.append('\n');
         LectureTour.stops().get(stop).getWatch().append(demo, revealText);
         vote.appendSplit(revealText);
+        // The split's line ends with the keys: one line less over the window.
+        revealText.setLength(revealText.length() - 1);
+        revealText.append("    F4 closes, Space runs on");
         if (votesFile != null) {
             try {
                 votesFile.record(vote);

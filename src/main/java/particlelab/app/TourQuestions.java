@@ -13,6 +13,9 @@ import particlelab.aiming.LaunchAngles;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
 import particlelab.aiming.TargetImpact;
+import particlelab.collision.Plane;
+import particlelab.collision.SphereTests;
+import particlelab.collision.Surface;
 import particlelab.collision.ThinWall;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParameters;
@@ -29,6 +32,7 @@ import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
 import particlelab.lecture.SpinThrowDemo;
 import particlelab.lecture.SpringDemo;
+import particlelab.lecture.TargetsDemo;
 import particlelab.lecture.TennisRacketDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.lecture.WindDemo;
@@ -55,8 +59,9 @@ import particlelab.world.TunnelShots;
  * stay one list. Each right answer is worked out from the stop's state with the code the
  * command-line tools use ({@code trajectory}/{@code aim}: {@link ShotSimulator};
  * {@code rotate}: {@link RotationIntegrator}; {@code tunnel}: {@link TunnelShots};
- * {@code hitscan}: {@link Hitscan}), never a copied constant. A stop without a question yet
- * has null here, and {@code tour --questions} says so.
+ * {@code hitscan}: {@link Hitscan}; the targets' first hit: the world's swept tests,
+ * {@link SphereTests} and the surfaces), never a copied constant. A stop without a question
+ * has null here, and {@code tour --questions} says so (every stop has one now).
  */
 public final class TourQuestions {
 
@@ -128,11 +133,17 @@ public final class TourQuestions {
     public static final int FLIP_SECONDS = 20;
     /** How near the two aims' misses count as "the same" (m). */
     public static final double SAME_MISS_METRES = ON_METRES;
+    /** The targets question's answers: each target, then a surface first. */
+    private static final String[] FIRST_HITS = {"target 1", "target 2", "target 3",
+        "none: a surface first"};
+    /** How long the targets rule follows the shot (s): it is down within two. */
+    public static final int TARGETS_SECONDS = 10;
 
     /** Per stop, in the tour's order: its question, or null. */
     private static final List<TourQuestion> QUESTIONS = Collections.unmodifiableList(
             Arrays.asList(
-            null,
+            new TourQuestion("Which target does the shot hit before anything else?",
+                    TourQuestions::firstHitRule, TourQuestions::firstHitOutcome, FIRST_HITS),
             energyQuestion(),
             new TourQuestion("With this e and threshold, when does the ball come to rest?",
                     TourQuestions::restRule, TourQuestions::restOutcome,
@@ -222,6 +233,69 @@ public final class TourQuestions {
             return 1;
         }
         return value > reference ? 2 : 0;
+    }
+
+    // --------------------------------------- targets: what the shot hits first ----
+
+    /**
+     * The shot stepped by the shared Euler step from the gun at the stop's aim, each step's
+     * segment swept against the three targets and the surfaces the prologue accepts (the
+     * ground, the walls, the ceiling, the pane only when solid: the gun's platform and the
+     * ghost pane are ignored), as the world's swept rules test it: the earliest touch wins.
+     */
+    private static int firstHitRule(DemoState demo) {
+        float h = demo.getParameters().getValue("h");
+        boolean paneSolid = demo.getParameters().getValue("pane") == 1f;
+        List<Surface> surfaces = new java.util.ArrayList<>(List.of(Plane.ground(),
+                new Plane(new Vector3f(-1f, 0f, 0f), -TargetsDemo.WALL_X),
+                new Plane(Vector3f.UNIT_X, TargetsDemo.X_MIN),
+                new Plane(new Vector3f(0f, -1f, 0f), -TargetsDemo.Y_MAX)));
+        if (paneSolid) {
+            surfaces.add(new ThinWall(Vector3f.UNIT_X, TargetsDemo.PANE_X,
+                    TargetsDemo.PANE_THICKNESS));
+        }
+        Vector3f[] centres = new Vector3f[TargetsDemo.TARGETS];
+        for (int i = 0; i < centres.length; ++i) {
+            centres[i] = TargetsDemo.copyTargetCentre(i, new Vector3f());
+        }
+        Particle shot = new Particle(new Vector3f(0f, TargetsDemo.GUN_Y, 0f),
+                TargetsDemo.launchVelocity(demo.getParameters().getValue("angle"),
+                        new Vector3f()), 1f);
+        ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
+        Vector3f start = new Vector3f();
+        Vector3f normal = new Vector3f();
+        int steps = Math.round(TARGETS_SECONDS / h);
+        for (int n = 0; n < steps; ++n) {
+            start.set(shot.position);
+            falling.step(shot, h);
+            int first = TourQuestion.UNDECIDED;
+            double earliest = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < centres.length; ++i) {
+                double u = SphereTests.sweep(start, shot.position, centres[i], centres[i],
+                        TargetsDemo.SHOT_RADIUS + TargetsDemo.TARGET_RADIUS);
+                if (u != Surface.NO_HIT && u < earliest) {
+                    earliest = u;
+                    first = i;
+                }
+            }
+            for (int i = 0; i < surfaces.size(); ++i) {
+                double u = surfaces.get(i).sweep(start, shot.position,
+                        TargetsDemo.SHOT_RADIUS, normal);
+                if (u != Surface.NO_HIT && u < earliest) {
+                    earliest = u;
+                    first = TargetsDemo.TARGETS;
+                }
+            }
+            if (first != TourQuestion.UNDECIDED) {
+                return first;
+            }
+        }
+        return TargetsDemo.TARGETS;
+    }
+
+    private static int firstHitOutcome(DemoState demo) {
+        int first = ((TargetsDemo) demo).getFirstContact();
+        return first < 0 ? TourQuestion.UNDECIDED : first;
     }
 
     // ---------------------------------------------- the pull: where Euler lands ----

@@ -6,6 +6,7 @@ import com.jme3.math.Vector3f;
 import java.util.List;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.AimStrategy;
+import particlelab.aiming.Duel;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.PredictorMismatch;
@@ -60,6 +61,13 @@ import particlelab.world.World;
  * ms while the shots fly at the demo's h; a shot it believes lands at S flies about
  * {@code vx·|h_predict − h_fly|} further (the Worms "CPU shot misprediction").</li>
  * </ul>
+ *
+ * <p>The duel ({@code --set duel=on}, issue 34 §3): a student aims at the same target against
+ * the believable player, with an angle (Up/Down) and a speed (Left/Right) of their own, F
+ * firing their shot (cyan, "you"); the HUD keeps both players' shots to a hit, worst miss and
+ * time ({@link Duel}). Once the student hits, Y or B answers "felt fair?" (yes / no), which
+ * closes the round and starts the next with the next seed; every closed round is a row of
+ * {@value #DUEL_TABLE}.csv in the export (E).
  */
 public final class IterativeAimingDemo extends DemoState {
 
@@ -88,6 +96,18 @@ public final class IterativeAimingDemo extends DemoState {
             + "predicted_flight_s,predicted_miss_m,flown_landing_x_m";
     /** The believable player's seed at the start. */
     public static final long DEFAULT_SEED = 1L;
+    /** The export's table of the duel's closed rounds (file name without .csv). */
+    public static final String DUEL_TABLE = "duel";
+    /** The human's aim at the start of a duel (in degrees above the horizontal). */
+    public static final float DUEL_START_DEGREES = 45f;
+    /** The human's launch speed at the start of a duel (in m/s). */
+    public static final float DUEL_START_SPEED = 25f;
+    /** How much Up and Down change the human's aim (in degrees). */
+    public static final float DUEL_ANGLE_STEP = 0.5f;
+    /** How much Right and Left change the human's launch speed (in m/s). */
+    public static final float DUEL_SPEED_STEP = 0.1f;
+    /** The human's sphere: a cyan none of the computer's shots has. */
+    private static final ColorRGBA HUMAN_COLOR = new ColorRGBA(0.3f, 0.9f, 1f, 1f);
     /** The names of a switch's two states, off first. */
     private static final String[] OFF_ON = {"off", "on"};
     /** The strategies the G key cycles through, in order. */
@@ -176,6 +196,27 @@ public final class IterativeAimingDemo extends DemoState {
     private KeyBinding mismatchKey;
     private KeyBinding seedKey;
     private KeyBinding roundKey;
+    /**
+     * The duel: the human's shots against the believable player's ({@link Duel}); its
+     * simulator is the flight's own from the first round on (this one steps no shot).
+     */
+    private final Duel duel = new Duel(new ShotSimulator(aimerIntegrator, MASS_KG,
+            SimulationClock.DEFAULT_STEP_SECONDS, MAX_FLIGHT_SECONDS), GRAVITY,
+            TARGET_DISTANCE, HORIZONTAL_SPEED, TOLERANCE_METRES, MAX_SHOTS);
+    private boolean duelOn;
+    private float duelDegrees = DUEL_START_DEGREES;
+    private float duelSpeed = DUEL_START_SPEED;
+    /** The human's sphere (parked while the duel is off). */
+    private DemoParticle human;
+    /** The human's shot is flying in the scene. */
+    private boolean humanInAir;
+    /** The human's shot came down in this step. */
+    private boolean humanLandedPending;
+    /** The human's shots whose landing the scene has shown. */
+    private int humanShown;
+    private boolean humanLabelChanged;
+    /** The simulated time the round started at (in seconds). */
+    private double roundStartSeconds;
 
     /** Create the demo. */
     public IterativeAimingDemo() {
@@ -382,6 +423,150 @@ public final class IterativeAimingDemo extends DemoState {
         return slots[slot];
     }
 
+    /**
+     * Test whether the duel is on: the human aims against the believable player.
+     *
+     * @return true while it is
+     */
+    public boolean isDuelOn() {
+        return duelOn;
+    }
+
+    /**
+     * Start or end the duel. On, the round is the believable player's with the flight's own
+     * predictor and every shot visible (another strategy, instant or the mismatch ends the
+     * duel again); a new round starts either way.
+     *
+     * @param on true to duel
+     */
+    public void setDuel(boolean on) {
+        duelOn = on;
+        getParameters().set("duel", on ? 1 : 0);
+        if (on) {
+            strategy = AimStrategy.BELIEVABLE;
+            getParameters().set("strategy", indexOfStrategy(strategy));
+            instant = false;
+            getParameters().set("instant", 0);
+            mismatch = false;
+            getParameters().set("predictor", 0);
+        }
+        restart();
+    }
+
+    /**
+     * Access the duel: the human's shots and the closed rounds.
+     *
+     * @return the live duel (not null, do not modify)
+     */
+    public Duel getDuel() {
+        return duel;
+    }
+
+    /**
+     * Access the human's sphere in the scene.
+     *
+     * @return the demo particle (null before the scene is declared)
+     */
+    public DemoParticle getHumanSphere() {
+        return human;
+    }
+
+    /** @return true while the human's shot flies in the scene */
+    public boolean isHumanInAir() {
+        return humanInAir;
+    }
+
+    /** @return the human's aim (in degrees above the horizontal) */
+    public float getDuelDegrees() {
+        return duelDegrees;
+    }
+
+    /** @return the human's launch speed (in m/s) */
+    public float getDuelSpeed() {
+        return duelSpeed;
+    }
+
+    /**
+     * Change the human's aim, as the arrow keys do, within {@link Duel}'s limits.
+     *
+     * @param degrees added to the aim (in degrees)
+     * @param speed added to the launch speed (in m/s)
+     */
+    public void aimBy(float degrees, float speed) {
+        if (!duelOn) {
+            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            return;
+        }
+        // Whole tenths: a key pressed a hundred times leaves no float drift in the aim.
+        duelDegrees = Math.round(10f * Math.max(Duel.MIN_ANGLE_DEGREES,
+                Math.min(Duel.MAX_ANGLE_DEGREES, duelDegrees + degrees))) / 10f;
+        duelSpeed = Math.round(10f * Math.max(Duel.MIN_SPEED,
+                Math.min(Duel.MAX_SPEED, duelSpeed + speed))) / 10f;
+    }
+
+    /**
+     * Fire the human's shot with their aim (F in the duel): refused with a notice while the
+     * last one flies or once the round is over.
+     *
+     * @return true if it was fired
+     */
+    public boolean fireHuman() {
+        if (!duelOn) {
+            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            return false;
+        }
+        if (duel.isRoundOver()) {
+            showNotice("round over: felt fair? Y yes, B no");
+            return false;
+        }
+        if (humanInAir) {
+            showNotice("your shot is still in the air");
+            return false;
+        }
+        if (duel.fire(duelDegrees, duelSpeed, getClock().getSimulatedSeconds()
+                - roundStartSeconds) < 0) {
+            return false;
+        }
+        launchVelocity.set(Duel.launchX(duelDegrees, duelSpeed),
+                Duel.launchY(duelDegrees, duelSpeed), 0f);
+        human.setLaunch(gun, launchVelocity);
+        launch(human, launchVelocity);
+        human.setHeld(false);
+        humanInAir = true;
+        humanLabelChanged = true;
+        // Room for the human's apex too: without drag it is vy²/(2g), with drag lower.
+        float top = launchVelocity.y * launchVelocity.y / (2f * GRAVITY);
+        for (int i = firstFlown; i < plan.size(); ++i) {
+            top = Math.max(top, plan.getVerticalSpeed(i) * plan.getVerticalSpeed(i)
+                    / (2f * GRAVITY));
+        }
+        setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * top)));
+        return true;
+    }
+
+    /**
+     * Answer "felt fair?" (Y or B in the duel): once the human hit (or ran out of shots), the
+     * round is closed, logged, and the next starts with the next seed.
+     *
+     * @param fair true if it felt fair
+     * @return true if the round was closed
+     */
+    public boolean poll(boolean fair) {
+        if (!duelOn) {
+            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            return false;
+        }
+        if (!duel.isRoundOver() || humanInAir) {
+            showNotice("the round is not over: hit the target first (F fires)");
+            return false;
+        }
+        duel.closeRound(fair);
+        showNotice("round " + duel.countClosedRounds() + " logged (felt fair: "
+                + (fair ? "yes" : "no") + "); E exports " + DUEL_TABLE + ".csv");
+        setSeed(seed + 1L);
+        return true;
+    }
+
     // ------------------------------------------------------------- framework overrides ----
 
     /**
@@ -401,6 +586,18 @@ public final class IterativeAimingDemo extends DemoState {
                     .put(plan.getFlightSeconds(i)).put(plan.getMiss(i)).put(flownLanding[i]);
         }
         storeResult.add(shots);
+        if (duelOn || duel.countClosedRounds() > 0) {
+            StepTable rounds = new StepTable(DUEL_TABLE, Duel.CSV_HEADER,
+                    Math.max(1, duel.countClosedRounds()));
+            for (int i = 0; i < duel.countClosedRounds(); ++i) {
+                rounds.startRow();
+                double[] row = duel.copyClosedRound(i);
+                for (double value : row) {
+                    rounds.put(value);
+                }
+            }
+            storeResult.add(rounds);
+        }
     }
 
     @Override
@@ -409,6 +606,8 @@ public final class IterativeAimingDemo extends DemoState {
             slots[i] = addParticle("", SHOT_COLOR, park, Vector3f.ZERO, MASS_KG, integrator);
             slots[i].setParked(true);
         }
+        human = addParticle("", HUMAN_COLOR, park, Vector3f.ZERO, MASS_KG, integrator);
+        human.setParked(true);
         // The ground stops a shot where its step's segment crosses y = 0 and holds it there.
         groundRule = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
         getWorld().addRule(groundRule);
@@ -416,6 +615,10 @@ public final class IterativeAimingDemo extends DemoState {
             @Override
             public void resolved(Contact contact, World stepping) {
                 landed(contact);
+                if (contact.getRule() == groundRule && contact.getBodyA() == human.getBody()
+                        && humanInAir) {
+                    humanLandedPending = true;
+                }
             }
         });
         addMarker("gun", 0f, 2f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
@@ -461,6 +664,12 @@ public final class IterativeAimingDemo extends DemoState {
                         setMismatch(Math.round(value) == 1);
                     }
                 }));
+        declareParameter(DemoParameter.choice("duel", "you against the believable player",
+                OFF_ON, duelOn ? 1 : 0, DemoParameter.Applies.LIVE, value -> {
+                    if ((Math.round(value) == 1) != duelOn) {
+                        setDuel(Math.round(value) == 1);
+                    }
+                }));
     }
 
     @Override
@@ -479,9 +688,28 @@ public final class IterativeAimingDemo extends DemoState {
                 () -> setInstant(!instant));
         mismatchKey = bindKey(KeyInput.KEY_P, "P", "predictor: the flight's own h <-> "
                 + PREDICT_STEP_MS + " ms (mismatch)", () -> setMismatch(!mismatch));
-        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round", this::restart);
+        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round (in the duel: fire your"
+                + " shot)", () -> {
+                    if (duelOn) {
+                        fireHuman();
+                    } else {
+                        restart();
+                    }
+                });
         seedKey = bindKey(KeyInput.KEY_J, "J", "believable player: next random seed",
                 () -> setSeed(seed + 1L));
+        StringBuilder angle = new StringBuilder("duel: your aim ");
+        TextFormat.appendFixed(angle, DUEL_ANGLE_STEP, 1).append(" deg ");
+        bindKey(KeyInput.KEY_UP, "Up", angle + "higher", () -> aimBy(DUEL_ANGLE_STEP, 0f));
+        bindKey(KeyInput.KEY_DOWN, "Down", angle + "lower", () -> aimBy(-DUEL_ANGLE_STEP, 0f));
+        StringBuilder speed = new StringBuilder("duel: your speed ");
+        TextFormat.appendFixed(speed, DUEL_SPEED_STEP, 1).append(" m/s ");
+        bindKey(KeyInput.KEY_RIGHT, "Right", speed + "faster", () -> aimBy(0f, DUEL_SPEED_STEP));
+        bindKey(KeyInput.KEY_LEFT, "Left", speed + "slower", () -> aimBy(0f, -DUEL_SPEED_STEP));
+        bindKey(KeyInput.KEY_Y, "Y", "duel: felt fair? yes (closes the round, next seed)",
+                () -> poll(true));
+        bindKey(KeyInput.KEY_B, "B", "duel: felt fair? no (closes the round, next seed)",
+                () -> poll(false));
     }
 
     @Override
@@ -503,6 +731,12 @@ public final class IterativeAimingDemo extends DemoState {
 
     @Override
     protected void afterStep(float stepSeconds) {
+        if (humanLandedPending) {
+            humanLandedPending = false;
+            humanInAir = false;
+            humanShown = duel.countHumanShots();
+            humanLabelChanged = true;
+        }
         if (Float.isNaN(pendingLandingX)) {
             return;
         }
@@ -528,6 +762,10 @@ public final class IterativeAimingDemo extends DemoState {
      */
     @Override
     public void update(float tpf) {
+        if (humanLabelChanged) {
+            humanLabelChanged = false;
+            relabel(human, humanLabel());
+        }
         for (int i = 0; i < VISIBLE_SHOTS; ++i) {
             if (labelChanged[i]) {
                 labelChanged[i] = false;
@@ -588,8 +826,15 @@ public final class IterativeAimingDemo extends DemoState {
         TextFormat.appendFixed(text, predictStep * 1000f, 1).append(" ms, flight h ");
         TextFormat.appendFixed(text, flyStep * 1000f, 1).append(" ms (")
                 .append(mismatchKey.getKeyLabel()).append(")\n");
-        appendTable(text);
-        appendSummary(text);
+        if (duelOn) {
+            // The duel's lines say what the summary would, for both players; before the
+            // table, which a small window hides first.
+            appendDuel(text);
+            appendTable(text);
+        } else {
+            appendTable(text);
+            appendSummary(text);
+        }
     }
 
     // ---------------------------------------------------------------- private helpers ----
@@ -615,6 +860,7 @@ public final class IterativeAimingDemo extends DemoState {
             predictSimulator = new ShotSimulator(aimerIntegrator, MASS_KG, PREDICT_STEP,
                     MAX_FLIGHT_SECONDS);
         }
+        startDuelRound();
         IterativeAim aimer = new IterativeAim(mismatch ? predictSimulator : flySimulator,
                 GRAVITY, TOLERANCE_METRES, MAX_SHOTS, strategy, seed);
         // The whole search, within this frame: the instant mode shows only its last shot.
@@ -793,6 +1039,93 @@ public final class IterativeAimingDemo extends DemoState {
         }
     }
 
+    /**
+     * The duel's part of a new round: the human's sphere parked, the duel's computer worked
+     * out for this seed and step; the duel ends if the round is not the believable player's.
+     */
+    private void startDuelRound() {
+        human.setLaunch(park, Vector3f.ZERO);
+        launch(human, Vector3f.ZERO);
+        human.setHeld(true);
+        humanInAir = false;
+        humanLandedPending = false;
+        humanShown = 0;
+        humanLabelChanged = true;
+        roundStartSeconds = getClock().getSimulatedSeconds();
+        if (duelOn && (strategy != AimStrategy.BELIEVABLE || instant || mismatch)) {
+            duelOn = false;
+            getParameters().set("duel", 0);
+            showNotice("the duel is off: it plays the believable player, every shot visible,"
+                    + " with the flight's own predictor");
+        }
+        if (duelOn) {
+            duel.setSimulator(flySimulator);
+            duel.startRound(seed);
+        }
+    }
+
+    /** The human's label: their shot's number and aim, once landed its miss. */
+    private String humanLabel() {
+        int shots = duel.countHumanShots();
+        if (!duelOn || shots == 0) {
+            return "";
+        }
+        StringBuilder label = new StringBuilder(40).append("you ").append(shots);
+        if (humanShown < shots) {
+            TextFormat.appendFixed(label.append(": "), duelDegrees, 1).append("°, ");
+            TextFormat.appendFixed(label, duelSpeed, 1).append(" m/s");
+        } else {
+            TextFormat.appendFixed(label.append(": miss "), duel.getHumanMiss(shots - 1), 1);
+        }
+        return label.toString();
+    }
+
+    /**
+     * The duel's lines: the human's aim and shots, the computer's once its round is over, and
+     * the poll once the human's is.
+     */
+    private void appendDuel(StringBuilder text) {
+        text.append("Duel, round ").append(duel.getRound()).append(" (seed ").append(seed)
+                .append("): your aim ");
+        TextFormat.appendFixed(text, duelDegrees, 1).append("° (Up/Down) at ");
+        TextFormat.appendFixed(text, duelSpeed, 1).append(" m/s (Left/Right), F fires\n");
+        appendHumanShots(text);
+        if (duel.isRoundOver() && !humanInAir) {
+            text.append(";  felt fair? Y yes, B no");
+        }
+        appendComputerShots(text.append("\nthe believable player: ")).append('\n');
+    }
+
+    /** The computer's round: its shot in the air, or once over its shots, worst and time. */
+    private StringBuilder appendComputerShots(StringBuilder text) {
+        if (!isRoundOver()) {
+            return text.append("shot ").append(fired).append(" in the air");
+        }
+        appendShots(text, plan.size(), "").append(" to the hit, worst miss ");
+        TextFormat.appendFixed(text, duel.worstComputerMiss(), 2).append(" m, ");
+        return TextFormat.appendFixed(text, duel.computerSeconds(), 1).append(" s");
+    }
+
+    /** The human's shots so far: count, last miss once shown, worst, the hit's time. */
+    private void appendHumanShots(StringBuilder text) {
+        // A step back may show fewer shots landed than fired, never more.
+        int shown = Math.min(humanShown, duel.countHumanShots());
+        appendShots(text.append("you: "), duel.countHumanShots(), "");
+        if (shown == 0) {
+            return;
+        }
+        double worst = 0.0;
+        for (int i = 0; i < shown; ++i) {
+            worst = Math.max(worst, Math.abs(duel.getHumanMiss(i)));
+        }
+        TextFormat.appendFixed(text.append(", last miss "), duel.getHumanMiss(shown - 1), 2);
+        TextFormat.appendFixed(text.append(" m, worst "), worst, 2).append(" m");
+        if (duel.hasHumanHit() && shown == duel.countHumanShots()) {
+            TextFormat.appendFixed(text.append(", hit at "),
+                    duel.getHumanLandingSeconds(shown - 1), 1).append(" s");
+        }
+    }
+
     private static int indexOfStrategy(AimStrategy wanted) {
         for (int i = 0; i < STRATEGIES.length; ++i) {
             if (STRATEGIES[i] == wanted) {
@@ -811,7 +1144,7 @@ public final class IterativeAimingDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return 1 + 1 + 1 + 1 + 2 * MAX_SHOTS + VISIBLE_SHOTS;
+                return 1 + 1 + 1 + 1 + 2 * MAX_SHOTS + VISIBLE_SHOTS + 3;
             }
 
             @Override
@@ -826,6 +1159,9 @@ public final class IterativeAimingDemo extends DemoState {
                 for (int i = 0; i < VISIBLE_SHOTS; ++i) {
                     slab.putInt(slotShot[i]);
                 }
+                slab.putBoolean(humanInAir);
+                slab.putBoolean(humanLandedPending);
+                slab.putInt(humanShown);
             }
 
             @Override
@@ -841,6 +1177,10 @@ public final class IterativeAimingDemo extends DemoState {
                     slotShot[i] = slab.getInt();
                     labelChanged[i] = true;
                 }
+                humanInAir = slab.getBoolean();
+                humanLandedPending = slab.getBoolean();
+                humanShown = slab.getInt();
+                humanLabelChanged = true;
                 tintsChanged = true;
             }
         };
@@ -857,10 +1197,38 @@ public final class IterativeAimingDemo extends DemoState {
             TextFormat.appendFixed(formula.append("V += h·(g − (c/m)·|V|·V),   c/m = "),
                     QUADRATIC_DRAG / MASS_KG, 2).append(" /m");
         }
-        TextFormat.appendFixed(slide.formula().append("first guess g·S/(2·vx) = "),
-                LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, HORIZONTAL_SPEED), 2)
-                .append(" m/s, then the aimer's search");
+        if (duelOn) {
+            // One formula line: each call of slide.formula() starts another.
+            StringBuilder aimLine = slide.formula().append("your aim ");
+            TextFormat.appendFixed(aimLine, duelDegrees, 1).append("° (Up/Down) at ");
+            TextFormat.appendFixed(aimLine, duelSpeed, 1).append(" m/s (Left/Right), F fires");
+        } else {
+            TextFormat.appendFixed(slide.formula().append("first guess g·S/(2·vx) = "),
+                    LevelAim.lectureVy(GRAVITY, TARGET_DISTANCE, HORIZONTAL_SPEED), 2)
+                    .append(" m/s, then the aimer's search");
+        }
         StringBuilder readout = slide.readout();
+        if (duelOn) {
+            // The duel's score, short: the slide's type is large.
+            int shown = Math.min(humanShown, duel.countHumanShots());
+            appendShots(readout.append("you: "), duel.countHumanShots(), "");
+            if (shown > 0) {
+                TextFormat.appendFixed(readout.append(", last "),
+                        duel.getHumanMiss(shown - 1), 2).append(" m");
+            }
+            readout.append(";  computer: ");
+            if (isRoundOver()) {
+                appendShots(readout, plan.size(), "");
+                TextFormat.appendFixed(readout.append(", worst "), duel.worstComputerMiss(), 1)
+                        .append(" m");
+            } else {
+                readout.append("shot ").append(fired);
+            }
+            if (duel.isRoundOver() && !humanInAir) {
+                readout.append(";  fair? Y / B");
+            }
+            return;
+        }
         if (landed == 0) {
             readout.append("shot 1 in the air");
             return;

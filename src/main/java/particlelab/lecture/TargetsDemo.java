@@ -72,14 +72,22 @@ public final class TargetsDemo extends DemoState {
     public static final float RESTITUTION = 0.6f;
     private static final float[] TARGET_X = {14f, 20f, 26f};
     private static final float[] TARGET_Y = {3f, 5.5f, 2f};
-    private static final int TARGETS = TARGET_X.length;
+    /** The number of targets. */
+    public static final int TARGETS = TARGET_X.length;
     private static final int MAX_FRAGMENTS = 4 * FRAGMENTS_PER_TARGET;
-    private static final float GUN_Y = 1.2f;
+    /** The gun's height: the shot leaves from {@code (0, GUN_Y)} (in metres). */
+    public static final float GUN_Y = 1.2f;
     private static final float PLATFORM_RADIUS = 0.5f;
-    private static final float PANE_X = 8f;
-    private static final float WALL_X = 30f;
-    private static final float X_MIN = -2f;
-    private static final float Y_MAX = 8f;
+    /** The pane's centre x (in metres). */
+    public static final float PANE_X = 8f;
+    /** The pane's thickness (in metres). */
+    public static final float PANE_THICKNESS = 0.1f;
+    /** The far wall's x (in metres). */
+    public static final float WALL_X = 30f;
+    /** The near wall's x (in metres). */
+    public static final float X_MIN = -2f;
+    /** The ceiling's height (in metres). */
+    public static final float Y_MAX = 8f;
     private static final float ANGLE_STEP_DEGREES = 2.5f;
     /** The lowest aim the keys give (in degrees above the horizontal). */
     private static final float MIN_AIM_DEGREES = 5f;
@@ -125,6 +133,8 @@ public final class TargetsDemo extends DemoState {
     private float resolutionImpulse;
     private String epilogue = "none yet";
     private int epilogueTarget = -1;
+    /** What the shot's first resolved contact since its launch was, or -1 (not yet). */
+    private int firstContact = -1;
 
     /** Create the demo. */
     public TargetsDemo() {
@@ -148,7 +158,8 @@ public final class TargetsDemo extends DemoState {
                 Detection.SWEPT));
         world.addRule(new SurfaceRule("ceiling", new Plane(new Vector3f(0f, -1f, 0f), -Y_MAX),
                 bounce, Detection.SWEPT));
-        paneRule = new SurfaceRule("pane", new ThinWall(Vector3f.UNIT_X, PANE_X, 0.1f), bounce,
+        paneRule = new SurfaceRule("pane", new ThinWall(Vector3f.UNIT_X, PANE_X, PANE_THICKNESS),
+                bounce,
                 Detection.SWEPT);
         world.addRule(paneRule);
         world.addContactListener(new ContactListener() {
@@ -286,6 +297,7 @@ public final class TargetsDemo extends DemoState {
         resolutionImpulse = 0f;
         epilogue = "none yet";
         epilogueTarget = -1;
+        firstContact = -1;
     }
 
     @Override
@@ -331,6 +343,7 @@ public final class TargetsDemo extends DemoState {
         aim.set(scratch).divideLocal(seconds);
         aim.y += 0.5f * Gravity.STANDARD_G * seconds;
         launch(shot, aim);
+        firstContact = -1;
         return true;
     }
 
@@ -441,6 +454,9 @@ public final class TargetsDemo extends DemoState {
                 : "impulse off the target";
         resolutionImpulse = contact.getImpulse();
         int index = targetIndex(a == shot.getBody() ? b : a);
+        if (firstContact < 0) {
+            firstContact = index >= 0 ? index : TARGETS;
+        }
         if (index < 0) {
             return;
         }
@@ -477,7 +493,7 @@ public final class TargetsDemo extends DemoState {
     private void spawnTargets() {
         for (int i = 0; i < TARGETS; ++i) {
             if (targets[i] == null) {
-                scratch.set(TARGET_X[i], TARGET_Y[i], 0f);
+                copyTargetCentre(i, scratch);
                 targets[i] = getWorld().addBody(still, scratch, Vector3f.ZERO, 1f,
                         TARGET_RADIUS);
                 targets[i].setKinematic(true);
@@ -505,13 +521,47 @@ public final class TargetsDemo extends DemoState {
     }
 
     private Vector3f launchVelocity(Vector3f storeResult) {
-        float radians = angleDegrees * FastMath.DEG_TO_RAD;
+        return launchVelocity(angleDegrees, storeResult);
+    }
+
+    /**
+     * The shot's launch velocity at an aim, as F fires it.
+     *
+     * @param degrees the aim above the horizontal (in degrees)
+     * @param storeResult storage for the velocity (in m/s, not null, modified)
+     * @return storeResult
+     */
+    public static Vector3f launchVelocity(float degrees, Vector3f storeResult) {
+        float radians = degrees * FastMath.DEG_TO_RAD;
         return storeResult.set(SHOT_SPEED * FastMath.cos(radians),
                 SHOT_SPEED * FastMath.sin(radians), 0f);
     }
 
+    /**
+     * Copy a target's centre, where it stands at the start and after a reset.
+     *
+     * @param index the target (0 to {@link #TARGETS} − 1)
+     * @param storeResult storage for the centre (in metres, not null, modified)
+     * @return storeResult
+     */
+    public static Vector3f copyTargetCentre(int index, Vector3f storeResult) {
+        return storeResult.set(TARGET_X[index], TARGET_Y[index], 0f);
+    }
+
+    /**
+     * Return what the shot's first resolved contact since its launch was: the collision
+     * phase's first impulse on it (contacts the prologue ignored do not count).
+     *
+     * @return the target it hit (0 to {@link #TARGETS} − 1), {@link #TARGETS} for a surface
+     *     (the ground, a wall, the ceiling, the solid pane), or -1 while it has hit nothing
+     */
+    public int getFirstContact() {
+        return firstContact;
+    }
+
     private void fire() {
         launch(shot, launchVelocity(aim));
+        firstContact = -1;
     }
 
     private void aimBy(float degrees) {
@@ -539,7 +589,7 @@ public final class TargetsDemo extends DemoState {
         return new StateRecord() {
             @Override
             public int countStateInts() {
-                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2 + 6;
+                return TARGETS + 3 * MAX_FRAGMENTS + 1 + 2 + 2 + 2 + 6 + 1;
             }
 
             @Override
@@ -562,6 +612,7 @@ public final class TargetsDemo extends DemoState {
                 slab.putFloat(resolutionImpulse);
                 slab.putInt(indexOfText(epilogue));
                 slab.putInt(epilogueTarget);
+                slab.putInt(firstContact);
             }
 
             @Override
@@ -584,6 +635,7 @@ public final class TargetsDemo extends DemoState {
                 resolutionImpulse = slab.getFloat();
                 epilogue = STEP_TEXTS[slab.getInt()];
                 epilogueTarget = slab.getInt();
+                firstContact = slab.getInt();
             }
         };
     }

@@ -18,6 +18,7 @@ import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.SpinThrowDemo;
 import particlelab.lecture.SpringDemo;
+import particlelab.lecture.TargetsDemo;
 import particlelab.lecture.TunnellingDemo;
 import particlelab.physics.Gravity;
 import particlelab.physics.SimulationClock;
@@ -371,6 +372,45 @@ class TourQuestionsTest {
         int live = TourQuestions.liveAfter(demo.getParameters().getValue("h"), pool);
         assertTrue(live > 0.6 * pool && live < 0.95 * pool, live + " of " + pool);
         assertEquals(1, TourQuestions.forStop(stop).answer(demo));
+    }
+
+    /**
+     * The targets stop (aim 35° at 18 m/s from 1.2 m, the pane a ghost): the stepped shot's
+     * samples lie exactly on the parabola launched with {@code vy − g·h/2} (NUMERICS.md),
+     * its chords within {@code g·h²/8} (0.3 mm) of it. That path passes target 2's centre
+     * 0.1 m and more inside the touching distance {@code r_shot + r_target} = 0.75 m, and
+     * targets 1 and 3 more than a metre outside it, so "target 2" is no near thing; with the
+     * pane solid the shot meets the pane first: "none".
+     */
+    @Test
+    void theTargetsStopsShotHitsTargetTwoClearlyAndThePaneStopsIt() {
+        int stop = stopOf("Which target does the shot hit");
+        DemoState demo = TourCommand.stateOf(stop);
+        DemoParameters parameters = demo.getParameters();
+        double h = parameters.getValue("h");
+        double g = Gravity.STANDARD_G;
+        double radians = Math.toRadians(parameters.getValue("angle"));
+        double vx = TargetsDemo.SHOT_SPEED * Math.cos(radians);
+        double vy = TargetsDemo.SHOT_SPEED * Math.sin(radians) - 0.5 * g * h;
+        double touch = TargetsDemo.SHOT_RADIUS + TargetsDemo.TARGET_RADIUS;
+        double[] nearest = new double[TargetsDemo.TARGETS];
+        Arrays.fill(nearest, Double.POSITIVE_INFINITY);
+        com.jme3.math.Vector3f centre = new com.jme3.math.Vector3f();
+        // Until it comes down to the ground: 1e-4 s apart, 1.5 mm of path.
+        for (double t = 0; TargetsDemo.GUN_Y + vy * t - 0.5 * g * t * t > 0; t += 1e-4) {
+            double x = vx * t;
+            double y = TargetsDemo.GUN_Y + vy * t - 0.5 * g * t * t;
+            for (int i = 0; i < nearest.length; ++i) {
+                TargetsDemo.copyTargetCentre(i, centre);
+                nearest[i] = Math.min(nearest[i], Math.hypot(x - centre.x, y - centre.y));
+            }
+        }
+        assertTrue(nearest[1] < touch - 0.1, Arrays.toString(nearest));
+        assertTrue(nearest[0] > touch + 1.0 && nearest[2] > touch + 1.0,
+                Arrays.toString(nearest));
+        assertEquals(1, TourQuestions.forStop(stop).answer(demo));
+        DemoCommand.applySettings(demo, List.of("pane=solid"));
+        assertEquals(3, TourQuestions.forStop(stop).answer(demo));
     }
 
     /**

@@ -4,15 +4,20 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.math.Vector3f;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
+import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
 import particlelab.physics.SimulationClock;
+import particlelab.view.ScreenRect;
 
 /**
  * Issue 34 §1 in the window: at the pull's stop F4 freezes the scene on its question, the
@@ -101,10 +106,12 @@ class TourVoteHeadlessTest {
         // The overlay writes the reveal in its next frame.
         harness.awaitFrames(2);
         String revealed = harness.call(() -> app.getQuestionOverlay().getShownText());
-        assertTrue(revealed.contains("\nAnswer: 1 short\n"), revealed);
+        assertTrue(revealed.startsWith("Stop 8: Euler lands short, on, or long of the exact"
+                + " landing?   Answer: 1 short\n"), revealed);
         assertTrue(revealed.contains("landed at x = "), revealed);
         assertTrue(revealed.contains("the room (3 votes):  [1 short] 2 (67 %)   2 on 0 (0 %)"
-                + "   3 long 1 (33 %)"), revealed);
+                + "   3 long 1 (33 %)    F4 closes, Space runs on"), revealed);
+        assertRevealIsCompactAndClearOfTheBodies(app, pull, revealed);
         assertEquals("stop,question,answers,counts,correct\n"
                 + "8,\"Euler lands short, on, or long of the exact landing?\",short|on|long,"
                 + "2|0|1,short\n", new String(Files.readAllBytes(file),
@@ -126,23 +133,68 @@ class TourVoteHeadlessTest {
     }
 
     @Test
-    void aStopWithoutAQuestionOrNoTourAsksNothing() throws Exception {
+    void noTourAsksNothingAndStopOneAsksWhichTargetTheShotHits() throws Exception {
         ParticleLabApp app = harness.app();
         TourGuide tour = app.getTour();
         KeyBinding f4 = binding(tour, "F4");
-        // One call on the jME thread: F4 outside the tour, then at stop 1 (no question yet).
-        boolean[] asked = harness.call(() -> {
+        // F4 outside the tour; then at stop 1 (targets) in the frame that opens it, which
+        // waits for the stop's demo; then once it is shown. The pull is shown first.
+        harness.call(() -> {
+            tour.leave();
+            app.getSwitcher().select(DemoCatalog.indexOf("pull"));
+            return true;
+        });
+        harness.awaitFrames(2);
+        String[] early = harness.call(() -> {
             tour.leave();
             f4.press(0);
-            boolean outside = tour.getVote() != null;
+            String outside = tour.getVote() == null ? "none" : "asked";
             tour.go(0);
             f4.press(0);
-            boolean atStopOne = tour.getVote() != null;
-            tour.leave();
-            return new boolean[] {outside, atStopOne};
+            return new String[] {outside, tour.getVote() == null ? "none" : "asked"};
         });
-        assertFalse(asked[0], "F4 outside the tour asks nothing");
-        assertFalse(asked[1], "stop 1 has no question yet");
+        assertEquals("none", early[0], "F4 outside the tour asks nothing");
+        assertEquals("none", early[1], "F4 in the frame PageDown opens a stop waits");
+        harness.awaitFrames(2);
+        String atStopOne = harness.call(() -> {
+            f4.press(0);
+            String text = tour.getVote() == null ? "none"
+                    : tour.getVote().getQuestion().getText();
+            tour.leave();
+            return text;
+        });
+        assertEquals("Which target does the shot hit before anything else?", atStopOne);
+    }
+
+    /**
+     * The reveal at 1280x720 (issue 34, the reveal box covered the top half and its split
+     * wrapped): no line wraps, so the vote's split is one line; the box takes at most a
+     * quarter of the scene's height; and no sphere of the scene is under it.
+     */
+    private static void assertRevealIsCompactAndClearOfTheBodies(ParticleLabApp app,
+            DemoState demo, String revealed) throws Exception {
+        QuestionOverlay overlay = app.getQuestionOverlay();
+        assertTrue(harness.call(overlay::isShowingReveal));
+        int lines = revealed.split("\n", -1).length;
+        assertEquals(lines, (int) harness.call(() -> overlay.getLabel().getLineCount()),
+                "a line wrapped: " + revealed);
+        float boxHeight = harness.call(() -> overlay.getBackdrop().getLocalScale().y);
+        float boxBottom = harness.call(() -> overlay.getBackdrop().getLocalTranslation().y);
+        ScreenRect scene = harness.call(() -> demo.copySceneRect(new ScreenRect()));
+        assertTrue(boxHeight <= QuestionOverlay.REVEAL_SCENE_SHARE * scene.getHeight(),
+                "box " + boxHeight + " px, scene " + scene.getHeight() + " px");
+        List<String> covered = harness.call(() -> {
+            List<String> under = new ArrayList<>();
+            for (DemoParticle particle : demo.getParticles()) {
+                Vector3f screen = app.getCamera().getScreenCoordinates(
+                        particle.getParticle().position);
+                if (!particle.isParked() && screen.y >= boxBottom) {
+                    under.add(particle.getLabel() + " at " + screen);
+                }
+            }
+            return under;
+        });
+        assertEquals(List.of(), covered, "spheres under the reveal's box");
     }
 
     private static KeyBinding binding(TourGuide tour, String label) {

@@ -156,6 +156,7 @@ class ParameterRoundTripTest {
         exact("iterate/instant", demo -> ((IterativeAimingDemo) demo).isInstant() ? 1f : 0f);
         exact("iterate/predictor", demo -> ((IterativeAimingDemo) demo).isMismatch() ? 1f
                 : 0f);
+        exact("iterate/duel", demo -> ((IterativeAimingDemo) demo).isDuelOn() ? 1f : 0f);
         exact("cheat/speed", demo -> (float) indexOfSpeed((FastBulletsDemo) demo));
         exact("cheat/shot", demo -> (float) ((FastBulletsDemo) demo).getShown());
     }
