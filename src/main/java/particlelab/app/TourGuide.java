@@ -136,9 +136,9 @@ final class TourGuide {
             // A launch value waits for the next launch: the stop starts from the launch.
             demo.restart();
         }
-        demo.setNote(notes.get(index));
+        demo.getDemoHud().setNote(notes.get(index));
         // The title names the stop in both modes: presentation mode shows no heading line.
-        demo.setTitleNote(LectureTour.titleNote(index));
+        demo.getDemoHud().setTitleNote(LectureTour.titleNote(index));
         switcher.select(demoIndex);
         stop = index;
     }
@@ -299,8 +299,8 @@ final class TourGuide {
         }
         if (stop >= 0) {
             int demoIndex = DemoCatalog.indexOf(LectureTour.stops().get(stop).getDemo());
-            switcher.getDemos().get(demoIndex).setNote(null);
-            switcher.getDemos().get(demoIndex).setTitleNote(null);
+            switcher.getDemos().get(demoIndex).getDemoHud().setNote(null);
+            switcher.getDemos().get(demoIndex).getDemoHud().setTitleNote(null);
         }
         stop = NOT_TOURING;
     }

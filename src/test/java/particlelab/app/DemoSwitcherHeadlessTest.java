@@ -76,7 +76,7 @@ class DemoSwitcherHeadlessTest {
     @Test
     void theHelpAndFooterSayHowToChooseADemo() throws Exception {
         DemoState demo = harness.call(() -> harness.app().getSwitcher().getSelected());
-        String help = demo.getHelpText();
+        String help = demo.getKeys().getHelpText();
 
         assertTrue(help.contains("\nChoosing a demo\n   0-9  -  type a demo's number (1-19):"),
                 help);

@@ -76,7 +76,7 @@ class StateShareTest {
                 HeadlessHarness.fly(bounce, 300, 1f / 60f);
                 bounce.getClock().setPaused(true);
                 for (int i = 0; i < 10; ++i) {
-                    bounce.stepBack();
+                    bounce.getReplayControls().stepBack();
                 }
                 return harness.app().getShareKey().share();
             });

@@ -31,7 +31,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 1f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 1f)));
         assertEquals(1920f, harness.call(() -> demo.getHud().getLayout().getWindow()
                 .getWidth()));
         assertEquals(HudLayout.scaleFor(1920, 1080),
@@ -42,7 +42,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 0.5f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 0.5f)));
         assertEquals(0.5f * HudLayout.scaleFor(1920, 1080),
                 harness.call(() -> demo.getHud().getLayout().getScale()));
 
@@ -52,7 +52,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1280, 720, 1f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1280, 720, 1f)));
     }
 
     @Test
@@ -72,7 +72,7 @@ class WindowControlsHeadlessTest {
             for (int press = 0; press < 2; ++press) {
                 assertTrue(harness.call(() -> {
                     HeadlessHarness.press(demo, "F2");
-                    return demo.isLaidOutFor(width, height, 1.5f);
+                    return demo.getDemoHud().isLaidOutFor(width, height, 1.5f);
                 }), "press " + press);
             }
         } finally {
@@ -87,7 +87,7 @@ class WindowControlsHeadlessTest {
     @Test
     void theWindowAndExportKeysAreInEveryDemosHelp() throws Exception {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
-            String help = demo.getHelpText();
+            String help = demo.getKeys().getHelpText();
             for (String line : new String[] {"F11  -  fullscreen", "F10  -  larger HUD text",
                 "F9  -  smaller HUD text", "F8  -  presentation mode", "E  -  export"}) {
                 assertTrue(help.contains(line), demo.getTitle() + " lacks " + line);
@@ -125,7 +125,7 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(2);
-            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             assertTrue(harness.call(() -> switcher.getSelected().getHud().getLayout()
                     .isPresenting()));
             // Tab, a digit (select) and a tour stop: each demo shown opens presenting.
@@ -137,7 +137,7 @@ class WindowControlsHeadlessTest {
                 harness.awaitFrames(3);
                 assertEquals(next, (int) harness.call(() -> switcher.getDemos()
                         .indexOf(switcher.getSelected())));
-                assertTrue(harness.call(() -> switcher.getSelected().isPresenting()),
+                assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()),
                         "demo " + (next + 1));
             }
             harness.call(() -> {
@@ -145,7 +145,7 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(3);
-            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             assertTrue(harness.call(() -> switcher.getSelected().getHud().getFooterText()
                     .contains("PageDown  next stop")));
             // F8 again: the full HUD, for the demo shown and the next one.
@@ -154,14 +154,14 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(2);
-            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertFalse(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             harness.call(() -> {
                 app.getTour().leave();
                 switcher.select(0);
                 return true;
             });
             harness.awaitFrames(3);
-            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertFalse(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
         } finally {
             harness.call(() -> {
                 app.getTour().leave();

@@ -49,7 +49,8 @@ class WindowResizeHeadlessTest {
                 });
                 harness.awaitFrames(FRAMES_BETWEEN);
                 String where = demo.getTitle() + " at " + size[0] + "x" + size[1];
-                assertTrue(harness.call(() -> demo.isLaidOutFor(size[0], size[1], 1f)), where);
+                assertTrue(harness.call(
+                        () -> demo.getDemoHud().isLaidOutFor(size[0], size[1], 1f)), where);
                 ScreenRect scene = harness.call(() -> demo.getHud().getLayout().getScene());
                 assertTrue(!scene.isEmpty() && new ScreenRect(0f, 0f, size[0], size[1])
                         .contains(scene), where + ": scene " + scene);

@@ -74,7 +74,7 @@ class BoxInterpolationHeadlessTest {
             demo.restart();
             clock.setPaused(false);
             clock.setTimeScale(SLOW);
-            demo.setInterpolating(true);
+            demo.getReplayControls().setInterpolating(true);
             RigidBody rigid = body.get();
             Matrix3f before = new Matrix3f();
             Vector3f beforeCentre = new Vector3f();
@@ -94,7 +94,7 @@ class BoxInterpolationHeadlessTest {
                     previous.set(before);
                     previousCentre.set(beforeCentre);
                 }
-                float alpha = demo.getReplay().getFrameBlend();
+                float alpha = demo.getRun().getReplay().getFrameBlend();
                 blend.blend(previous, rigid.orientation, alpha, drawn);
                 centre.set(previousCentre).interpolateLocal(rigid.getParticle().position,
                         alpha);
@@ -131,13 +131,13 @@ class BoxInterpolationHeadlessTest {
                 found.add("only " + between + " frames drawn between two steps");
             }
             // F6 off: the raw step, R itself.
-            demo.setInterpolating(false);
+            demo.getReplayControls().setInterpolating(false);
             demo.advance(H);
             String raw = compareMesh(view.get(), rigid.orientation, rigid.getParticle().position);
             if (raw != null) {
                 found.add("F6 off: " + raw);
             }
-            demo.setInterpolating(true);
+            demo.getReplayControls().setInterpolating(true);
             String hud = demo.formatHud(new StringBuilder()).toString();
             if (hud.contains("raw steps (this demo's views)")) {
                 found.add("the HUD still says raw steps: " + hud);

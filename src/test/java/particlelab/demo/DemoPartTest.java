@@ -104,10 +104,10 @@ class DemoPartTest {
             demo.advancePhysics(H);
         }
         assertEquals(5, demo.first.steps);
-        assertTrue(demo.stepBack(), "the ring holds the earlier steps");
+        assertTrue(demo.getReplayControls().stepBack(), "the ring holds the earlier steps");
         // the part's count is read back from the ring with the world's state: exact ints
         assertEquals(4, demo.first.steps);
-        demo.stepForward();
+        demo.getReplayControls().stepForward();
         assertEquals(5, demo.first.steps);
     }
 
@@ -144,7 +144,7 @@ class DemoPartTest {
             assertEquals(List.of("demo.afterFrame", "a.afterFrame", "b.afterFrame"), frame);
             List<String> laidOut = harness.call(() -> {
                 log.clear();
-                demo.layOut(640, 360);
+                demo.getDemoHud().layOut(640, 360);
                 List<String> seen = new ArrayList<>();
                 for (String entry : log) {
                     if (entry.endsWith("layOut")) {

@@ -71,7 +71,7 @@ class DemoStateHeadlessTest {
     void theHudsPositionIsWhereTheBallIsDrawnAfterEveryFrame() throws Exception {
         DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
         String mismatch = harness.call(() -> {
-            tunnelling.setInterpolating(false);
+            tunnelling.getReplayControls().setInterpolating(false);
             tunnelling.restart();
             StringBuilder expected = new StringBuilder();
             for (int frame = 1; frame <= 1200; ++frame) {
@@ -88,7 +88,7 @@ class DemoStateHeadlessTest {
                     }
                 }
             }
-            tunnelling.setInterpolating(true);
+            tunnelling.getReplayControls().setInterpolating(true);
             return "";
         });
         assertEquals("", mismatch);
@@ -103,7 +103,7 @@ class DemoStateHeadlessTest {
     void theInterpolatedBallIsDrawnBetweenItsLastTwoStates() throws Exception {
         DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
         String mismatch = harness.call(() -> {
-            tunnelling.setInterpolating(true);
+            tunnelling.getReplayControls().setInterpolating(true);
             tunnelling.restart();
             StringBuilder expected = new StringBuilder();
             Vector3f drawn = new Vector3f();
@@ -185,7 +185,7 @@ class DemoStateHeadlessTest {
     void helpOverlayListsEveryDeclaredBinding() throws Exception {
         List<KeyBinding> appKeys = harness.app().getSwitcher().getBindings();
         for (DemoState demo : demos()) {
-            String help = demo.getHelpText();
+            String help = demo.getKeys().getHelpText();
             List<KeyBinding> keys = demo.getBindings();
             keys.addAll(appKeys);
             assertTrue(keys.size() > 10, demo.getTitle());
@@ -248,7 +248,7 @@ class DemoStateHeadlessTest {
     void atTheSlowRefreshTheHudHandsTextToJmeAtMostTenTimesASecond() throws Exception {
         DemoState demo = demos().get(DemoCatalog.indexOf("aiming"));
         int changes = harness.call(() -> {
-            demo.setHudRefreshSeconds(DemoState.SLOW_HUD_REFRESH_SECONDS);
+            demo.getDemoHud().setRefreshSeconds(DemoState.SLOW_HUD_REFRESH_SECONDS);
             try {
                 demo.restart(); // a shot in the air: the HUD has something to follow
                 int before = demo.getHud().countTextChanges();
@@ -257,7 +257,7 @@ class DemoStateHeadlessTest {
                 }
                 return demo.getHud().countTextChanges() - before;
             } finally {
-                demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+                demo.getDemoHud().setRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
             }
         });
         // 10 s at 60 frames per second: at most 101 refreshes, each setting body and warning.
@@ -273,7 +273,7 @@ class DemoStateHeadlessTest {
             stiff.getClock().setMode(SimulationClock.Mode.RAW_TPF);
             // h = 32/60 s with b/m = 10 per second: each step multiplies V by 1 − 5.3.
             stiff.getClock().setTimeScale(32f);
-            for (int frame = 0; frame < 200 && stiff.countBlowUps() == 0; ++frame) {
+            for (int frame = 0; frame < 200 && stiff.getRun().countBlowUps() == 0; ++frame) {
                 stiff.update(H);
             }
             stiff.getClock().setTimeScale(1f);
@@ -281,7 +281,7 @@ class DemoStateHeadlessTest {
             stiff.update(H);
             return stiff.getHud().getWarningText();
         });
-        assertEquals(1, stiff.countBlowUps());
+        assertEquals(1, stiff.getRun().countBlowUps());
         assertTrue(warning.contains("blew up"), warning);
         for (DemoParticle particle : stiff.getParticles()) {
             assertTrue(particle.getParticle().isFinite(), particle.getLabel());
@@ -363,8 +363,9 @@ class DemoStateHeadlessTest {
             for (DemoParticle particle : drag.getParticles()) {
                 latest = Math.max(latest, particle.getLandingSeconds());
             }
-            return new Object[] {drag.isSceneOver(), t, drag.getClock().getSimulatedSeconds(),
-                latest, drag.formatHud(new StringBuilder()).toString()};
+            return new Object[] {drag.getRun().isSceneOver(), t,
+                drag.getClock().getSimulatedSeconds(), latest,
+                drag.formatHud(new StringBuilder()).toString()};
         });
         assertTrue((Boolean) result[0]);
         assertEquals((Double) result[1], (Double) result[2], 0.0);

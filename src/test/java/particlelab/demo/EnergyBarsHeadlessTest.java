@@ -111,15 +111,15 @@ class EnergyBarsHeadlessTest {
         String laidOut = harness.call(() -> {
             app.getSwitcher().select(index);
             frames(app, FRAMES);
-            demo.setPresenting(true);
-            demo.layOut(1920, 1080, 1.25f);
+            demo.getDemoHud().setPresenting(true);
+            demo.getDemoHud().layOut(1920, 1080, 1.25f);
             HeadlessHarness.fly(demo, FRAMES, H);
             HudLayout layout = demo.getHud().getLayout();
             String found = layout.getWindow() + ", strip " + !layout.getLedger().isEmpty()
                     + ", scene right of the strip " + (layout.getScene().getRight()
                     > layout.getLedger().getX());
-            demo.setPresenting(false);
-            demo.layOut(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+            demo.getDemoHud().setPresenting(false);
+            demo.getDemoHud().layOut(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
             frames(app, FRAMES);
             return found;
         });

@@ -121,13 +121,13 @@ class ExactGhostsHeadlessTest {
         double[] r = harness.call(() -> {
             pull.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             pull.restart();
-            for (int frame = 0; frame < 200 && !pull.isSceneOver(); ++frame) {
+            for (int frame = 0; frame < 200 && !pull.getRun().isSceneOver(); ++frame) {
                 pull.advance(H);
             }
             ExactGhosts ghosts = ((DemoState) pull).getExactGhosts();
             ExactPath path = ghosts.getPath(0);
             DemoParticle ball = pull.getParticles().get(0);
-            return new double[] {pull.isSceneOver() ? 1 : 0, path.hasLanded() ? 1 : 0,
+            return new double[] {pull.getRun().isSceneOver() ? 1 : 0, path.hasLanded() ? 1 : 0,
                 path.getApexHeight(), path.getApexSeconds(), path.getLandingX(),
                 path.getLandingSeconds(), ghosts.getEulerApexHeight(0),
                 ghosts.getEulerApexSeconds(0), ball.getLandingX(), ball.getLandingSeconds(),
@@ -186,14 +186,14 @@ class ExactGhostsHeadlessTest {
             }
             int[][] windows = {{1024, 768}, {1280, 720}, {1920, 1080}, {3840, 2160}};
             for (int[] window : windows) {
-                drag.layOut(window[0], window[1]);
+                drag.getDemoHud().layOut(window[0], window[1]);
                 drag.restart();
                 for (int frame = 0; frame < 150; ++frame) {
                     drag.update(H);
                     if (frame % 10 != 0) {
                         continue;
                     }
-                    List<ScreenRect> rects = drag.copyTextRects(new ArrayList<>());
+                    List<ScreenRect> rects = drag.getWindow().copyTextRects(new ArrayList<>());
                     List<ScreenRect> labels = ghosts.copyTextRects(new ArrayList<>());
                     if (labels.size() != 4) {
                         found.add("graph labels: " + labels);
@@ -216,7 +216,7 @@ class ExactGhostsHeadlessTest {
                 }
             }
             press(drag, "Y");
-            drag.layOut(1280, 720);
+            drag.getDemoHud().layOut(1280, 720);
             return found;
         });
         assertEquals(List.of(), problems.subList(0, Math.min(8, problems.size())),
@@ -258,7 +258,7 @@ class ExactGhostsHeadlessTest {
                 bytes[1][window] = graph.countLabelChanges() - labels;
             }
             bytes[2][0] = graph.size();
-            bytes[2][1] = drag.isSceneOver() ? 1 : 0;
+            bytes[2][1] = drag.getRun().isSceneOver() ? 1 : 0;
             press(drag, "Y");
             return bytes;
         });

@@ -69,11 +69,11 @@ class PostLabelsHeadlessTest {
             }
         }
         harness.call(() -> {
-            clip.setPresenting(false);
+            clip.getDemoHud().setPresenting(false);
             clip.getParameters().set("speed", 12f);
             clip.getParameters().set("angle", 0f);
             clip.getParameters().set("clip", 0f);
-            clip.layOut(1280, 720);
+            clip.getDemoHud().layOut(1280, 720);
             return true;
         });
         assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
@@ -82,8 +82,8 @@ class PostLabelsHeadlessTest {
 
     /** Fire one shot at a window size and check the posts' names every frame. */
     private static List<String> run(int width, int height, boolean presenting, float[] shot) {
-        clip.setPresenting(presenting);
-        clip.layOut(width, height);
+        clip.getDemoHud().setPresenting(presenting);
+        clip.getDemoHud().layOut(width, height);
         clip.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         clip.getClock().setPaused(false);
         clip.getParameters().set("speed", shot[0]);
@@ -107,11 +107,11 @@ class PostLabelsHeadlessTest {
     private static List<String> check(String when) {
         List<String> problems = new ArrayList<>();
         PlaneView plane = clip.getPlaneView();
-        List<ScreenRect> names = ((DemoState) clip).copyPostLabelRects(new ArrayList<>());
-        List<ScreenRect> posts = ((DemoState) clip).copyPostRects(new ArrayList<>());
+        List<ScreenRect> names = clip.getWindow().copyPostLabelRects(new ArrayList<>());
+        List<ScreenRect> posts = clip.getWindow().copyPostRects(new ArrayList<>());
         List<DemoParticle> particles = clip.getParticles();
         Node sceneNode = clip.getView(particles.get(0)).getNode().getParent();
-        List<ScreenRect> shown = clip.copyTextRects(new ArrayList<>());
+        List<ScreenRect> shown = clip.getWindow().copyTextRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int n = 0; n < names.size(); ++n) {
             ScreenRect name = names.get(n);

@@ -70,19 +70,19 @@ class ReplayViewsHeadlessTest {
             }
             // Back past the launch: 20 steps, the launch's entry, one more.
             for (int i = 0; i < 22; ++i) {
-                aiming.stepBack();
+                aiming.getReplayControls().stepBack();
             }
             int keptBehind = shots.size();
             String legendBehind = shots.formatLegend(new StringBuilder(),
                     aiming.getParameters()).toString();
             int drawnBehind = shots.countDrawnPaths();
             for (int i = 0; i < 22; ++i) {
-                aiming.stepForward();
+                aiming.getReplayControls().stepForward();
             }
             int keptAgain = shots.size();
             return new int[] {keptLive, legendLive.isEmpty() ? 0 : 1, keptBehind,
                 legendBehind.isEmpty() ? 0 : 1, drawnLive, drawnBehind, keptAgain,
-                aiming.isReplaying() ? 1 : 0, shots.countDrawnPaths()};
+                aiming.getRun().isReplaying() ? 1 : 0, shots.countDrawnPaths()};
         });
         // HelloAiming launches its two bullets one by one, and each launch keeps what moved:
         // the first shot is kept once or twice; what matters is that it is kept.
@@ -102,10 +102,10 @@ class ReplayViewsHeadlessTest {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.restart();
         demo.getClock().setPaused(false);
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[STEPS + 2];
         String[] graphEnds = new String[STEPS + 2];
-        for (int i = 0; i < STEPS && !demo.isSceneOver(); ++i) {
+        for (int i = 0; i < STEPS && !demo.getRun().isSceneOver(); ++i) {
             demo.advance(H);
             lines[(int) ring.getLastIndex()] = ghostLines(demo);
             graphEnds[(int) ring.getLastIndex()] = graphEnd(demo);
@@ -113,9 +113,9 @@ class ReplayViewsHeadlessTest {
         List<String> problems = new ArrayList<>();
         long last = ring.getLastIndex();
         for (int k = 1; k <= last - ring.getFirstIndex(); ++k) {
-            demo.stepBack();
+            demo.getReplayControls().stepBack();
             demo.advance(0f);
-            long shown = demo.getShownStep();
+            long shown = demo.getRun().getShownStep();
             if (lines[(int) shown] == null) {
                 continue;
             }
@@ -137,7 +137,7 @@ class ReplayViewsHeadlessTest {
                 break;
             }
         }
-        if (problems.isEmpty() && !demo.isReplaying()) {
+        if (problems.isEmpty() && !demo.getRun().isReplaying()) {
             problems.add("never behind the live end");
         }
         return problems;

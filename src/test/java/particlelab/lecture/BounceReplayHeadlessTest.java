@@ -32,7 +32,7 @@ class BounceReplayHeadlessTest {
             bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             bounce.restart();
             bounce.getClock().setPaused(false);
-            StateRing ring = bounce.getStateRing();
+            StateRing ring = bounce.getRun().getStateRing();
             String[] ends = new String[STEPS + 2];
             for (int i = 0; i < STEPS; ++i) {
                 bounce.advance(H);
@@ -40,9 +40,9 @@ class BounceReplayHeadlessTest {
             }
             List<String> found = new ArrayList<>();
             for (int k = 0; k < BACK; ++k) {
-                bounce.stepBack();
+                bounce.getReplayControls().stepBack();
                 bounce.advance(0f);
-                long shown = bounce.getShownStep();
+                long shown = bounce.getRun().getShownStep();
                 String now = graphEnd(bounce.getGraph());
                 if (ends[(int) shown] != null && !ends[(int) shown].equals(now)) {
                     found.add("step " + shown + ": was " + ends[(int) shown] + ", now " + now);
@@ -50,7 +50,7 @@ class BounceReplayHeadlessTest {
             }
             // Going on from the step shown: the graph's clock is that step's.
             bounce.getClock().setPaused(false);
-            long from = bounce.getShownStep();
+            long from = bounce.getRun().getShownStep();
             bounce.advance(H);
             long index = ring.getLastIndex();
             String now = graphEnd(bounce.getGraph());

@@ -141,7 +141,7 @@ class CollisionsDemoTest {
                 problems.addAll(harness.call(() -> {
                     List<String> found = new ArrayList<>();
                     String where = preset + (panel ? " panel open" : "");
-                    collisions.layOut(1280, 720);
+                    collisions.getDemoHud().layOut(1280, 720);
                     collisions.choose(preset);
                     if (panel) {
                         HeadlessHarness.press(collisions, "F2");
@@ -203,7 +203,7 @@ class CollisionsDemoTest {
                 found.add(where + ": idle " + particle.getLabel() + " has a label");
             }
         }
-        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
         PlaneView plane = collisions.getPlaneView();
         // The walls are drawn 0.05 m thick outside their planes; a ball's diameter of room
         // (2·RADIUS) beyond them shows the wall as a wall, not as the window's frame.
@@ -228,8 +228,8 @@ class CollisionsDemoTest {
             String where = preset + " " + width + "x" + height + (presenting ? " F8" : "")
                     + " frame ";
             try {
-                collisions.setPresenting(presenting);
-                collisions.layOut(width, height);
+                collisions.getDemoHud().setPresenting(presenting);
+                collisions.getDemoHud().layOut(width, height);
                 collisions.setMasses(0, 0);
                 collisions.setRestitutionTenths(10);
                 collisions.choose(preset);
@@ -238,18 +238,18 @@ class CollisionsDemoTest {
                     check(found, where + frame, frame % 10 == 0);
                 }
             } finally {
-                collisions.setPresenting(false);
-                collisions.layOut(1280, 720);
+                collisions.getDemoHud().setPresenting(false);
+                collisions.getDemoHud().layOut(1280, 720);
             }
             return found;
         });
     }
 
     private static void check(List<String> found, String where, boolean labels) {
-        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
         PlaneView plane = collisions.getPlaneView();
         float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
-        List<ScreenRect> texts = collisions.copyTextRects(new ArrayList<>());
+        List<ScreenRect> texts = collisions.getWindow().copyTextRects(new ArrayList<>());
         List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
         checkImpulses(found, where, plane, radius, hud);
         for (DemoParticle particle : collisions.getParticles()) {

@@ -63,7 +63,7 @@ class HelloAimingDemoTest {
             }
             double landedAt = aiming.getClock().getSimulatedSeconds();
             aiming.fire(); // shot 2
-            aiming.layOut(1280, 720);
+            aiming.getDemoHud().layOut(1280, 720);
             for (int frame = 0; frame < 60; ++frame) {
                 aiming.update(H);
             }

@@ -76,11 +76,11 @@ class RigidDemosTest {
         double gap = harness.call(() -> {
             rotation.restart();
             // The raw steps (F6 off): the box drawn at R, not between two steps.
-            rotation.setInterpolating(false);
+            rotation.getReplayControls().setInterpolating(false);
             for (int i = 0; i < 300; ++i) {
                 rotation.advance(H);
             }
-            rotation.setInterpolating(true);
+            rotation.getReplayControls().setInterpolating(true);
             BoxView view = rotation.getView(0);
             Matrix3f r = rotation.getOrientation(0);
             // The body vertices are symmetric about the centre: their mean is P.
