@@ -19,7 +19,7 @@ import particlelab.view.Trail;
  * label at that side), and two spheres that coincide on the screen (centres closer than
  * {@link ParticleView#JOIN_RADII} radii) share one joined label naming both; from the
  * rectangles the
- * layout itself placed ({@link DemoState#copyTextRects}, the particles' label slots, the
+ * layout itself placed ({@link DemoWindow#copyTextRects}, the particles' label slots, the
  * posts, the collisions demo's impulse labels).
  */
 public final class OverlapProbe {
