@@ -345,7 +345,7 @@ public final class DemoCommand {
     static String profileLine(DemoState demo) {
         FrameTimes mesh = demo instanceof FountainDemo ? ((FountainDemo) demo).getMeshTimes()
                 : null;
-        return profileLine(demo.getPhysicsTimes(), mesh, demo.countSimulatedParticles());
+        return profileLine(demo.getRun().getPhysicsTimes(), mesh, demo.countSimulatedParticles());
     }
 
     /**

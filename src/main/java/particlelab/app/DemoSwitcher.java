@@ -171,9 +171,9 @@ public final class DemoSwitcher extends BaseAppState {
         }
         for (int i = 0; i < demos.size(); ++i) {
             DemoState demo = demos.get(i);
-            demo.setCatalogNumber(i + 1);
+            demo.getDemoHud().setCatalogNumber(i + 1);
             demo.setApplicationBindings(bindings);
-            demo.setDemoTitles(titles);
+            demo.getKeys().setDemoTitles(titles);
             demo.setEnabled(i == selected);
             app.getStateManager().attach(demo);
         }
@@ -252,9 +252,9 @@ public final class DemoSwitcher extends BaseAppState {
             int first = 10 * digit;
             int last = Math.min(demos.size(), first + 9);
             showingEntry = getSelected();
-            noteBeforeEntry = showingEntry.getTitleNote();
-            showingEntry.setTitleNote("typed " + digit + "_  (a second digit for " + first
-                    + "-" + last + ")");
+            noteBeforeEntry = showingEntry.getDemoHud().getTitleNote();
+            showingEntry.getDemoHud().setTitleNote("typed " + digit + "_  (a second digit for "
+                    + first + "-" + last + ")");
         } else {
             choose(digit);
         }
@@ -279,7 +279,7 @@ public final class DemoSwitcher extends BaseAppState {
         int digit = pendingDigit;
         pendingDigit = -1;
         if (showingEntry != null) {
-            showingEntry.setTitleNote(noteBeforeEntry);
+            showingEntry.getDemoHud().setTitleNote(noteBeforeEntry);
             showingEntry = null;
             noteBeforeEntry = null;
         }

@@ -1,6 +1,5 @@
 package particlelab.app;
 
-import com.jme3.system.JmeContext;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.DirectoryStream;
@@ -11,6 +10,7 @@ import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import particlelab.demo.DemoState;
 import particlelab.demo.TrajectoryExport;
 import particlelab.files.SafeFiles;
@@ -22,11 +22,12 @@ import particlelab.files.SafeFiles;
  * frames and write every particle's trajectory to {@code DIR/<particle>.csv}, listing the
  * files on stdout, one line each ({@code csv FILE: ROWS rows}).
  *
- * <p>Decision: an export with no {@code --screenshot} needs no window. The demo runs in jME's
- * headless context (the same demo, clock and steps as in the window, only nothing is drawn),
- * so it works on a machine without a display, and there is no PNG: a headless context has no
- * frame to read back. With {@code --screenshot FILE} the window opens as usual (a display is
- * needed) and the PNG is written there; the CSV files are written when the window closes.
+ * <p>Decision: an export with no {@code --screenshot} needs no window, and no jME application
+ * at all: the demo runs its N frames here ({@link #runFrames}), each the demo's own update with
+ * the frame time (its steps and what it does once a frame), with no view built, so it works on
+ * a machine without a display and writes the files the window would. There is no PNG: nothing
+ * is drawn. With {@code --screenshot FILE} the window opens as usual (a display is needed) and
+ * the PNG is written there; the CSV files are written when the window closes.
  *
  * <p>Existing files: a folder holding {@code .csv} files is refused before the demo runs
  * unless {@value SafeFiles#FORCE} is given, and every file is created new by the rules of
@@ -38,6 +39,7 @@ final class ExportRun {
     static final String EXPORT = "--export";
     /** Why an export wrote no file, on stdout and on the HUD. */
     static final String NOTHING_TO_EXPORT = "this demo records no trajectory or table";
+    private static final long NANOS_PER_SECOND = 1_000_000_000L;
 
     private ExportRun() {
     }
@@ -93,7 +95,7 @@ final class ExportRun {
     }
 
     /**
-     * Run a demo without a window for a number of frames, then export it.
+     * Run a demo without a window for a number of frames ({@link #runFrames}), then export it.
      *
      * @param demos the demos (not null, not empty)
      * @param index the demo to run
@@ -111,27 +113,60 @@ final class ExportRun {
     static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
             Path folder, boolean replace, boolean printCommand, PrintStream out,
             PrintStream err) {
-        DemoCommand.quietLogs();
-        ParticleLabApp app = new ParticleLabApp(demos, index, frames, null, fixedTpf, false);
-        app.start(JmeContext.Type.Headless);
+        DemoState demo = demos.get(index);
         try {
-            app.awaitFinished(Long.MAX_VALUE);
+            runFrames(demo, frames, fixedTpf);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            app.stop();
             err.println(Program.NAME + ": interrupted");
             return Program.FAILED;
-        }
-        if (app.getFailure() != null) {
-            err.println(Program.NAME + ": the demo failed: " + app.getFailure());
+        } catch (RuntimeException failure) {
+            Path log = CrashLog.write("the demo failed, exporting " + demo.getTitle(), failure);
+            err.println(Program.NAME + ": the demo failed: " + CrashLog.describe(failure)
+                    + (log == null ? "" : "; the full stack is in " + log));
             return Program.FAILED;
         }
-        DemoState demo = app.getSwitcher().getSelected();
         int status = folder == null ? Program.OK : write(demo, folder, replace, out, err);
         if (status == Program.OK && printCommand) {
             printCommand(demo, out);
         }
         return status;
+    }
+
+    /**
+     * Run a demo's frames as the window runs them, without a jME application: each frame is
+     * the demo's {@link DemoState#update} with the frame time (the clock's steps, what the
+     * demo and its parts do once a frame); no view, HUD or panel is built, so none is drawn.
+     * With a fixed frame time every frame gets it; with the real clock the frames are paced at
+     * the window's {@value ParticleLabApp#REAL_CLOCK_FRAME_RATE} a second, each given the time
+     * since the one before.
+     *
+     * @param demo the demo, never attached to an application (not null)
+     * @param frames how many frames (&ge;0)
+     * @param fixedTpf the fixed frame time (in seconds, finite, &gt;0), or NaN for the real clock
+     * @throws InterruptedException if interrupted while pacing the real clock
+     */
+    static void runFrames(DemoState demo, int frames, float fixedTpf)
+            throws InterruptedException {
+        // The scene declared first, as the window's initialisation does: a demo's update may
+        // read its particles before its physics runs (height's labels).
+        demo.getRun();
+        long previous = System.nanoTime();
+        for (int frame = 0; frame < frames; ++frame) {
+            float tpf = fixedTpf;
+            if (Float.isNaN(fixedTpf)) {
+                long due = previous + NANOS_PER_SECOND
+                        / ParticleLabApp.REAL_CLOCK_FRAME_RATE;
+                for (long wait = due - System.nanoTime(); wait > 0L;
+                        wait = due - System.nanoTime()) {
+                    TimeUnit.NANOSECONDS.sleep(wait);
+                }
+                long now = System.nanoTime();
+                tpf = (float) ((now - previous) / (double) NANOS_PER_SECOND);
+                previous = now;
+            }
+            demo.update(tpf);
+        }
     }
 
     /**

@@ -17,8 +17,8 @@ import particlelab.demo.KeyBinding;
 import particlelab.demo.TrajectoryExport;
 
 /**
- * Carries out the export a demo asks for ({@link DemoState#requestExport()}: the E key, or a
- * panel's button): the current trajectories, one CSV per particle
+ * Carries out the export a demo asks for ({@link particlelab.demo.DemoKeys#requestExport()}:
+ * the E key, or a panel's button): the current trajectories, one CSV per particle
  * ({@link TrajectoryExport}), and a PNG screenshot of the frame, into a new folder
  * {@code particle-lab-export/<demo>-<yyyyMMdd-HHmmss>/} under the working folder. The
  * CSV files are written at once; the screenshot is the frame that finishes rendering next;
@@ -54,7 +54,7 @@ public final class ExportState extends BaseAppState {
         this.baseFolder = baseFolder;
         this.binding = new KeyBinding(KeyInput.KEY_E, "E", "export: trajectories (CSV)"
                 + " and a screenshot into " + baseFolder + "/<demo>-<date-time>/",
-                () -> switcher.getSelected().requestExport());
+                () -> switcher.getSelected().getKeys().requestExport());
     }
 
     /**
@@ -118,7 +118,7 @@ public final class ExportState extends BaseAppState {
             removeCapture();
         }
         DemoState demo = switcher.getSelected();
-        if (demo.isInitialized() && demo.takeExportRequest()) {
+        if (demo.isInitialized() && demo.getKeys().takeExportRequest()) {
             try {
                 exportNow();
             } catch (IOException | RuntimeException failure) {

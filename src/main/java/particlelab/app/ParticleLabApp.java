@@ -44,6 +44,8 @@ public final class ParticleLabApp extends SimpleApplication {
     public static final String VOTES_PROPERTY = "particlelab.votes";
     /** The system property "true" when the votes CSV may replace a regular file. */
     public static final String VOTES_FORCE_PROPERTY = "particlelab.votes.force";
+    /** The frame rate the window keeps to with the real clock (frames per second). */
+    public static final int REAL_CLOCK_FRAME_RATE = 60;
     /** The window's title. */
     public static final String TITLE = "Particle Lab - game particle physics, lecture demos";
     private static final ColorRGBA BACKGROUND = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
@@ -159,7 +161,7 @@ public final class ParticleLabApp extends SimpleApplication {
         settings.setResizable(true);
         settings.setAudioRenderer(null);
         settings.setVSync(false);
-        settings.setFrameRate(Float.isNaN(fixedFrameSeconds) ? 60 : -1);
+        settings.setFrameRate(Float.isNaN(fixedFrameSeconds) ? REAL_CLOCK_FRAME_RATE : -1);
         settings.setSamples(4);
         // Colours as written (a dark background, bright particles): no sRGB conversion.
         settings.setGammaCorrection(false);

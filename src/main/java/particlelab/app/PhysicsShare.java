@@ -274,7 +274,7 @@ public final class PhysicsShare {
     }
 
     private static void restartIfOver(DemoState demo) {
-        if (demo.isSceneOver()) {
+        if (demo.getRun().isSceneOver()) {
             demo.restart();
         }
     }

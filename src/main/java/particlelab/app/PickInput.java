@@ -53,7 +53,7 @@ final class PickInput extends BaseAppState implements RawInputListener {
     boolean press(float screenX, float screenY) {
         DemoState demo = switcher.getSelected();
         pressed = null;
-        if (!demo.isInitialized() || demo.isHudAt(screenX, screenY)) {
+        if (!demo.isInitialized() || demo.getWindow().isHudAt(screenX, screenY)) {
             return false;
         }
         demo.getDragControl().press(getApplication().getCamera(), screenX, screenY);

@@ -137,9 +137,9 @@ final class TourGuide {
             // A launch value waits for the next launch: the stop starts from the launch.
             demo.restart();
         }
-        demo.setNote(notes.get(index));
+        demo.getDemoHud().setNote(notes.get(index));
         // The title names the stop in both modes: presentation mode shows no heading line.
-        demo.setTitleNote(LectureTour.titleNote(index));
+        demo.getDemoHud().setTitleNote(LectureTour.titleNote(index));
         switcher.select(demoIndex);
         stop = index;
     }
@@ -170,7 +170,7 @@ final class TourGuide {
      * @return storeResult
      */
     ScreenRect getSceneRect(ScreenRect storeResult) {
-        return switcher.getSelected().copySceneRect(storeResult);
+        return switcher.getSelected().getWindow().copySceneRect(storeResult);
     }
 
     /** @return a number that changes whenever the question's text changes */
@@ -319,8 +319,8 @@ final class TourGuide {
         }
         if (stop >= 0) {
             int demoIndex = DemoCatalog.indexOf(LectureTour.stops().get(stop).getDemo());
-            switcher.getDemos().get(demoIndex).setNote(null);
-            switcher.getDemos().get(demoIndex).setTitleNote(null);
+            switcher.getDemos().get(demoIndex).getDemoHud().setNote(null);
+            switcher.getDemos().get(demoIndex).getDemoHud().setTitleNote(null);
         }
         stop = NOT_TOURING;
     }

@@ -60,7 +60,7 @@ public final class WindowControls extends BaseAppState {
                         () -> changeFactor(-1)),
                 new KeyBinding(KeyInput.KEY_F8, "F8", "presentation mode (large slide) <->"
                         + " full HUD",
-                        () -> presenting = !switcher.getSelected().isPresenting()));
+                        () -> presenting = !switcher.getSelected().getDemoHud().isPresenting()));
     }
 
     /**
@@ -143,7 +143,7 @@ public final class WindowControls extends BaseAppState {
         DemoState demo = switcher.getSelected();
         if (demo.isInitialized() && (demo != presentedDemo || presenting != presentedMode)) {
             // A new demo on screen (Tab, digits, a tour stop) or F8: the demo takes the mode.
-            demo.setPresenting(presenting);
+            demo.getDemoHud().setPresenting(presenting);
             presentedDemo = demo;
             presentedMode = presenting;
         }
@@ -151,8 +151,8 @@ public final class WindowControls extends BaseAppState {
         int width = camera.getWidth();
         int height = camera.getHeight();
         if (demo.isInitialized() && width > 0 && height > 0
-                && !demo.isLaidOutFor(width, height, uiFactor)) {
-            demo.layOut(width, height, uiFactor);
+                && !demo.getDemoHud().isLaidOutFor(width, height, uiFactor)) {
+            demo.getDemoHud().layOut(width, height, uiFactor);
         }
     }
 

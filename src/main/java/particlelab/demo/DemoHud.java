@@ -15,9 +15,10 @@ import particlelab.view.HudView;
  * and the scene's area that follows it, the window size and the user's factor it was laid
  * out for, a tour stop's note, and presentation mode (the slide instead of the body, its
  * footer). The demo writes the lines ({@link DemoState#formatHud},
- * {@link DemoState#formatPresentation}); this class decides when and lays them out.
+ * {@link DemoState#formatPresentation}); this class decides when and lays them out. The
+ * application reaches it through {@link DemoState#getDemoHud()}.
  */
-final class DemoHud {
+public final class DemoHud {
 
     /** Between the title and its note. */
     private static final String TITLE_NOTE_GAP = "      ";
@@ -122,13 +123,13 @@ final class DemoHud {
     }
 
     /** @param number the demo's place in the catalogue (&ge;1) */
-    void setCatalogNumber(int number) {
+    public void setCatalogNumber(int number) {
         catalogNumber = number;
         showTitle();
     }
 
     /** @param newNote one short line after the title, or null (else refused) */
-    void setTitleNote(String newNote) {
+    public void setTitleNote(String newNote) {
         if (newNote != null && (newNote.isEmpty() || newNote.indexOf('\n') >= 0)) {
             throw new IllegalArgumentException("a title note must be null or one non-empty"
                     + " line, but was \"" + newNote + "\"");
@@ -138,12 +139,12 @@ final class DemoHud {
     }
 
     /** @return the note after the title, or null */
-    String getTitleNote() {
+    public String getTitleNote() {
         return titleNote;
     }
 
     /** @param seconds how often the text is rebuilt (s, finite, &ge;0; else refused) */
-    void setRefreshSeconds(float seconds) {
+    public void setRefreshSeconds(float seconds) {
         if (!(seconds >= 0f) || Float.isInfinite(seconds)) {
             throw new IllegalArgumentException("HUD refresh interval (s) must be finite and"
                     + " >= 0, but was " + seconds);
@@ -156,7 +157,7 @@ final class DemoHud {
      *
      * @param newNote writes the lines, or null
      */
-    void setNote(HudNote newNote) {
+    public void setNote(HudNote newNote) {
         note = newNote;
         dirty = true;
         // Another stop's lines: the band is sized for them, not for the lines before.
@@ -168,7 +169,7 @@ final class DemoHud {
     }
 
     /** @return the lines after the demo's own, or null */
-    HudNote getNote() {
+    public HudNote getNote() {
         return note;
     }
 
@@ -182,7 +183,7 @@ final class DemoHud {
      *
      * @param on true for presentation mode
      */
-    void setPresenting(boolean on) {
+    public void setPresenting(boolean on) {
         if (on == presenting) {
             return;
         }
@@ -193,8 +194,18 @@ final class DemoHud {
     }
 
     /** @return true in presentation mode */
-    boolean isPresenting() {
+    public boolean isPresenting() {
         return presenting;
+    }
+
+    /**
+     * Lay the HUD and the scene's texts out for a window, at the HUD scale that suits it.
+     *
+     * @param width the window's width (in pixels, &gt;0)
+     * @param height the window's height (in pixels, &gt;0)
+     */
+    public void layOut(int width, int height) {
+        layOut(width, height, 1f);
     }
 
     /**
@@ -205,7 +216,7 @@ final class DemoHud {
      * @param height the window's height (in pixels, &gt;0)
      * @param userScale the user's factor on the HUD scale
      */
-    void layOut(int width, int height, float userScale) {
+    public void layOut(int width, int height, float userScale) {
         // A new size or factor sizes the body's band afresh: the lines the old width or text
         // size needed mean nothing now (a band grown on a small window would stay grown).
         boolean fresh = userScale != uiScale || width != laidOutWidth
@@ -241,7 +252,7 @@ final class DemoHud {
      * @param userScale the user's factor on the HUD scale
      * @return true if a layout with these would change nothing
      */
-    boolean isLaidOutFor(int width, int height, float userScale) {
+    public boolean isLaidOutFor(int width, int height, float userScale) {
         return width == laidOutWidth && height == laidOutHeight && userScale == uiScale;
     }
 

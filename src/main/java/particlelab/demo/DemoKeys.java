@@ -10,9 +10,10 @@ import particlelab.view.HelpText;
  * the application's (choosing a demo), which the application maps and the help only lists.
  * Refuses a key that jME or the application uses, or one already bound, with a message naming
  * both; and writes the help overlay and the footer from the bindings, so that neither drifts
- * from them.
+ * from them; and holds the export the E key or the panel's button asked for, until the
+ * application takes it. The application reaches it through {@link DemoState#getKeys()}.
  */
-final class DemoKeys {
+public final class DemoKeys {
 
     /** Keys jME itself uses (quit, stats, camera, memory, flying), which a demo may not bind. */
     private static final int[] RESERVED_KEYS = {KeyInput.KEY_ESCAPE, KeyInput.KEY_F5,
@@ -30,6 +31,10 @@ final class DemoKeys {
     private List<Draggable> draggables = new ArrayList<>();
     /** The demo's key that fires or launches, for the panel's Fire button, or null. */
     private KeyBinding fireKey;
+    /** The help overlay's text, as last built (empty before the window). */
+    private String helpText = "";
+    /** An export asked for (key or button), for the application to carry out. */
+    private boolean exportRequested;
 
     /**
      * Declare a key every demo has.
@@ -82,7 +87,7 @@ final class DemoKeys {
      *
      * @param titles the demos' titles, in catalogue order (not null, copied)
      */
-    void setDemoTitles(List<String> titles) {
+    public void setDemoTitles(List<String> titles) {
         demoTitles.clear();
         demoTitles.addAll(titles);
     }
@@ -174,7 +179,25 @@ final class DemoKeys {
             }
         }
         help.jmeKeys();
-        return help.toString();
+        helpText = help.toString();
+        return helpText;
+    }
+
+    /** @return the help overlay's text, from the bindings (empty before the window) */
+    public String getHelpText() {
+        return helpText;
+    }
+
+    /** Ask for an export of the trajectories (key, panel), carried out by the application. */
+    public void requestExport() {
+        exportRequested = true;
+    }
+
+    /** @return true if an export was asked for since the last call, which forgets it */
+    public boolean takeExportRequest() {
+        boolean requested = exportRequested;
+        exportRequested = false;
+        return requested;
     }
 
     /**

@@ -13,7 +13,7 @@ import particlelab.view.ScreenRect;
  * ({@link DragControl}), the inspector box that shows the picked body's numbers
  * ({@link Inspector}), and whether the HUD takes the mouse at a point instead (the help
  * overlay, the parameter panel), so that a press there picks nothing behind it. The
- * application's pick input asks {@link DemoState#isHudAt} first, then hands the press to the
+ * application's pick input asks {@link DemoWindow#isHudAt} first, then hands the press to the
  * drag control. Once a frame the inspector follows the pick; it allocates nothing.
  */
 final class DemoMouse {

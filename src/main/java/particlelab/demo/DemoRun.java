@@ -350,6 +350,16 @@ public final class DemoRun {
         return replay.getRing();
     }
 
+    /** @return true while a recorded step, not the live end, is shown */
+    public boolean isReplaying() {
+        return replay.isBehind();
+    }
+
+    /** @return the number of the ring entry shown: the newest while live */
+    public long getShownStep() {
+        return replay.getShownIndex();
+    }
+
     /**
      * Access the wall time each frame's simulation steps took, measured with
      * {@link System#nanoTime}.

@@ -148,7 +148,7 @@ public final class EnergyPart implements DemoPart {
         HudLayout layout = demo.getHud().getLayout();
         boolean wanted = isDrawn() && energy != null && demo.getWorld().countBodies() > 0;
         int rows = wanted ? writeBars() : 0;
-        boolean presenting = demo.isPresenting();
+        boolean presenting = demo.getDemoHud().isPresenting();
         if (rows != stripRows || rows > 0 && presenting != stripPresenting) {
             // The strip comes, goes, or fits another number of rows (a reset's new columns)
             // or another mode's text.
@@ -158,7 +158,7 @@ public final class EnergyPart implements DemoPart {
                     : HudLayout.SCENE_LABEL_SIZE;
             layout.setLedgerSize(wanted ? bars.widthFor(WIDEST_NAME, size) : 0f,
                     wanted ? bars.heightFor(rows, size) : 0f);
-            demo.relayOutPanel();
+            demo.getWindow().relayOutPanel();
         }
         boolean visible = wanted && !demo.getHud().isHelpVisible();
         bars.setVisible(visible);
@@ -214,7 +214,7 @@ public final class EnergyPart implements DemoPart {
      * @return true if wanted on screen (in a window, with a ledger)
      */
     public boolean isDrawn() {
-        return shown || onSlide && demo.isPresenting();
+        return shown || onSlide && demo.getDemoHud().isPresenting();
     }
 
     /**

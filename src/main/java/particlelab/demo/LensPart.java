@@ -162,7 +162,7 @@ public final class LensPart implements DemoPart {
             text.append("derivative lens (O): the sphere is not flying\n");
             return;
         }
-        text.append("derivative lens (O) at step ").append(demo.getShownStep())
+        text.append("derivative lens (O) at step ").append(demo.getRun().getShownStep())
                 .append(", t_i = ");
         TextFormat.appendFixed(text, demo.getWorld().getTimeSeconds(), 3).append(" s, h = ");
         TextFormat.appendFixed(text, lens.getStepSeconds(), 4)

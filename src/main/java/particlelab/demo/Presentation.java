@@ -1,5 +1,7 @@
 package particlelab.demo;
 
+import particlelab.view.TextFormat;
+
 /**
  * What a demo shows in presentation mode (F8, {@code --present}), beside its title: one or two
  * key formula lines with their live numbers, and the one readout the slide is about, all in
@@ -84,6 +86,25 @@ public final class Presentation {
     /** @return how many formula lines were written (0 to {@value #MAX_FORMULA_LINES}) */
     public int countFormulaLines() {
         return formulaLines;
+    }
+
+    /**
+     * Append a particle's state as its HUD line shows it on the same frame: its speed while
+     * it flies ("11.84 m/s"), where it landed once it has ("x = 9.81 m", the HUD's landing
+     * x). Allocates nothing.
+     *
+     * @param text where to append, e.g. {@link #readout()} (not null, modified)
+     * @param particle one of the demo's particles (not null)
+     * @return text
+     */
+    public static StringBuilder appendSpeedOrLanding(StringBuilder text,
+            DemoParticle particle) {
+        if (particle.hasLanded()) {
+            return TextFormat.appendFixed(text.append("x = "), particle.getLandingX(), 2)
+                    .append(" m");
+        }
+        return TextFormat.appendFixed(text, particle.getParticle().velocity.length(), 2)
+                .append(" m/s");
     }
 
     /** Empty the slide, for the next frame's writing. Allocates nothing. */

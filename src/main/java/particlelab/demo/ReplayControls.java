@@ -5,11 +5,10 @@ package particlelab.demo;
  * the timeline's scrub and F6's interpolation, each marking the HUD for a rebuild and saying
  * on it why a key did nothing; and the trails walked back and forth with the ring. The
  * {@link Replay} itself (the ring, the step shown, the blend) belongs to the run, without
- * jME; these are what the keys, the panel's timeline and the application call, through the
- * demo's forwarders ({@link DemoState#stepBack}, {@link DemoState#stepForward},
- * {@link DemoState#scrubTo}, {@link DemoState#setInterpolating}). None of them allocates.
+ * jME; these are what the keys, the panel's timeline and the application call
+ * ({@link DemoState#getReplayControls}). None of them allocates.
  */
-final class ReplayControls {
+public final class ReplayControls {
 
     /** Why a step back did nothing. */
     static final String NO_EARLIER_STEP =
@@ -52,7 +51,7 @@ final class ReplayControls {
      *
      * @return false if the ring holds no earlier step
      */
-    boolean stepBack() {
+    public boolean stepBack() {
         boolean done = replay.stepBack();
         if (!done) {
             hudWriter.showNotice(NO_EARLIER_STEP);
@@ -65,7 +64,7 @@ final class ReplayControls {
      * Step forward one step: the ring's next state while behind the live end, else a new
      * step of h like N.
      */
-    void stepForward() {
+    public void stepForward() {
         if (!replay.stepForward()) {
             run.singleStep();
         }
@@ -77,9 +76,14 @@ final class ReplayControls {
      *
      * @param fraction 0 for the oldest step the ring holds, 1 for the newest (clamped)
      */
-    void scrubTo(double fraction) {
+    public void scrubTo(double fraction) {
         replay.scrub(fraction);
         hud.markDirty();
+    }
+
+    /** @return true if the views blend the last two physics states (F6 switches) */
+    public boolean isInterpolating() {
+        return replay.isInterpolating();
     }
 
     /**
@@ -87,7 +91,7 @@ final class ReplayControls {
      *
      * @param newInterpolating true to interpolate
      */
-    void setInterpolating(boolean newInterpolating) {
+    public void setInterpolating(boolean newInterpolating) {
         if (newInterpolating != replay.isInterpolating()) {
             replay.toggleInterpolation();
             hud.markDirty();

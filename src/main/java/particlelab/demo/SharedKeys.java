@@ -42,15 +42,16 @@ final class SharedKeys {
         // the live end), F6 switches the interpolated drawing off and on.
         keys.addShared(new KeyBinding(KeyInput.KEY_HOME, "Home",
                 "step back one recorded step (pauses; Space goes on from there)",
-                demo::stepBack));
+                () -> demo.getReplayControls().stepBack()));
         keys.addShared(new KeyBinding(KeyInput.KEY_END, "End",
                 "step forward one recorded step (at the end: like N)",
-                demo::stepForward));
+                () -> demo.getReplayControls().stepForward()));
         keys.addShared(new KeyBinding(KeyInput.KEY_F6, "F6",
                 "drawn: interpolated <-> raw steps",
-                () -> demo.setInterpolating(!demo.isInterpolating())));
+                () -> demo.getReplayControls().setInterpolating(
+                        !demo.getReplayControls().isInterpolating())));
         KeyBinding reset = keys.addShared(new KeyBinding(KeyInput.KEY_R, "R",
-                "reset: launch again, reframe the camera", demo::restartAndReframe)
+                "reset: launch again, reframe the camera", demo.getWindow()::restartAndReframe)
                 .withSummary("reset"));
         ContactPause contactPause = run.getContactPause();
         KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
@@ -88,9 +89,9 @@ final class SharedKeys {
                     ghosts::toggleGhosts));
             keys.addShared(new KeyBinding(KeyInput.KEY_Y, "Y",
                     "show / hide the live graph: height and speed against time",
-                    demo::toggleGraph));
+                    demo.getWindow()::toggleGraph));
         }
         hudWriter.setTimeKeys(pause, step, reset, faster, slower, realTime);
-        parameterControls.declareKeys(keys, demo::relayOutPanel);
+        parameterControls.declareKeys(keys, demo.getWindow()::relayOutPanel);
     }
 }

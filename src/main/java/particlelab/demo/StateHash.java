@@ -35,8 +35,8 @@ public final class StateHash {
      * @return the hash
      */
     public static long of(DemoState demo) {
-        StateRing ring = demo.getStateRing();
-        long shown = demo.getShownStep();
+        StateRing ring = demo.getRun().getStateRing();
+        long shown = demo.getRun().getShownStep();
         if (ring.size() > 0 && shown >= ring.getFirstIndex() && shown <= ring.getLastIndex()) {
             int[] entry = ring.copyEntry(shown);
             int simulation = Math.max(0, entry.length - demo.getRun().countViewStateInts());

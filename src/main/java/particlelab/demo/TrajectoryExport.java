@@ -125,7 +125,7 @@ public final class TrajectoryExport {
             written.add(new Written(file, record.size(), record.countDropped(),
                     TrajectoryRecord.MAX_ROWS));
         }
-        if (demo.isReplaying()) {
+        if (demo.getRun().isReplaying()) {
             writeRecordedSpan(demo, folder, replace, taken, written);
         }
         List<StepTable> tables = new ArrayList<>();
@@ -135,7 +135,8 @@ public final class TrajectoryExport {
         // not where the world has no bodies (the fountain's points): a table of zeros would
         // say its thousands of particles had no energy
         StepTable energy = demo.getEnergyPart().getTable();
-        if (energy != null && !demo.isReplaying() && demo.getWorld().countBodies() > 0) {
+        if (energy != null && !demo.getRun().isReplaying()
+                && demo.getWorld().countBodies() > 0) {
             tables.add(energy);
         }
         for (int i = 0; i < tables.size(); ++i) {
@@ -171,7 +172,7 @@ public final class TrajectoryExport {
      */
     private static void writeRecordedSpan(DemoState demo, Path folder, boolean replace,
             Set<String> taken, List<Written> written) throws IOException {
-        Replay replay = demo.getReplay();
+        Replay replay = demo.getRun().getReplay();
         StateRing ring = replay.getRing();
         List<DemoParticle> particles = demo.getParticles();
         float[] row = new float[1 + 6 * particles.size()];

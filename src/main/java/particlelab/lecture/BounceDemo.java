@@ -330,7 +330,7 @@ public final class BounceDemo extends DemoState {
         graph = new LiveGraph(app.getAssetManager(), HudFont.load(app.getAssetManager()),
                 LANE_COLORS);
         getHud().getLayout().setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
-        layOut(app.getCamera().getWidth(), app.getCamera().getHeight());
+        getDemoHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight());
         // The graph is a GUI overlay of the demo: it comes and goes with the HUD's node.
         getHud().getNode().attachChild(graph.getNode());
     }

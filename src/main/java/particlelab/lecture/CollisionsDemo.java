@@ -856,7 +856,7 @@ public final class CollisionsDemo extends DemoState {
      * spheres, the balls' names and the HUD's texts.
      */
     private void beginCallouts(PlaneView plane) {
-        copySceneRect(calloutArea);
+        getWindow().copySceneRect(calloutArea);
         float ground = plane.screenY(0f);
         calloutArea.set(calloutArea.getX(), Math.max(calloutArea.getY(), ground),
                 calloutArea.getWidth(), Math.max(0f, calloutArea.getTop() - ground));

@@ -9,6 +9,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.ParticleIntegrator;
@@ -229,7 +230,7 @@ public final class DragDemo extends DemoState {
 
     /** The slide: the two drag laws with b/m and c/m; the three speeds (or landings). */
     @Override
-    protected void writePresentation(particlelab.demo.Presentation slide) {
+    protected void writePresentation(Presentation slide) {
         java.util.List<particlelab.demo.DemoParticle> balls = getParticles();
         float mass = balls.get(1).getParticle().getMass();
         particlelab.view.TextFormat.appendFixed(slide.formula()
@@ -240,8 +241,8 @@ public final class DragDemo extends DemoState {
                         : "slide form (not physical):  a = g - (c/m)|V|²V,   c/m = "),
                 coefficientC / mass, 3).append(" /m");
         StringBuilder readout = slide.readout().append("gravity only ");
-        appendSpeedOrLanding(readout, balls.get(0)).append(",  linear ");
-        appendSpeedOrLanding(readout, balls.get(1)).append(",  quadratic ");
-        appendSpeedOrLanding(readout, balls.get(2));
+        Presentation.appendSpeedOrLanding(readout, balls.get(0)).append(",  linear ");
+        Presentation.appendSpeedOrLanding(readout, balls.get(1)).append(",  quadratic ");
+        Presentation.appendSpeedOrLanding(readout, balls.get(2));
     }
 }

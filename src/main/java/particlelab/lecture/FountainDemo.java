@@ -241,7 +241,7 @@ public final class FountainDemo extends DemoState {
                 .append(" at rest, ").append(fountain.countRecycledLeaving())
                 .append(" left the region, ").append(fountain.countRecycledBurnt())
                 .append(" fireworks burnt out\n");
-        appendShareLine(text, getPhysicsTimes().recentMeanMillis(),
+        appendShareLine(text, getRun().getPhysicsTimes().recentMeanMillis(),
                 meshTimes.recentMeanMillis(), renderTimes.recentMeanMillis(),
                 frameTimes.recentMeanMillis());
     }

@@ -133,7 +133,7 @@ public final class ThrustDemo extends DemoState {
         DemoParameter.appendShort(formula, thrust.getMagnitude(), 2).append(" N");
         List<DemoParticle> spheres = getParticles();
         StringBuilder readout = slide.readout().append("pull + drag ");
-        appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
-        appendSpeedOrLanding(readout, spheres.get(1));
+        Presentation.appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
+        Presentation.appendSpeedOrLanding(readout, spheres.get(1));
     }
 }

@@ -67,7 +67,8 @@ class DemoSwitcherTest {
         }
         assertTrue(switcher.isEntryPending());
         assertEquals(4, demos.indexOf(switcher.getSelected()));
-        assertEquals("typed 1_  (a second digit for 10-19)", demos.get(4).getTitleNote());
+        assertEquals("typed 1_  (a second digit for 10-19)",
+                demos.get(4).getDemoHud().getTitleNote());
 
         for (int i = 0; i < 4; ++i) {
             switcher.update(FRAME);
@@ -75,7 +76,8 @@ class DemoSwitcherTest {
 
         assertFalse(switcher.isEntryPending());
         assertEquals(0, demos.indexOf(switcher.getSelected()));
-        assertNull(demos.get(4).getTitleNote(), "the note leaves the title with the entry");
+        assertNull(demos.get(4).getDemoHud().getTitleNote(),
+                "the note leaves the title with the entry");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -119,7 +121,7 @@ class DemoSwitcherTest {
         type(switcher, "1 Tab");
 
         assertFalse(switcher.isEntryPending());
-        assertNull(demos.get(0).getTitleNote());
+        assertNull(demos.get(0).getDemoHud().getTitleNote());
         assertEquals(1, demos.indexOf(switcher.getSelected()));
     }
 

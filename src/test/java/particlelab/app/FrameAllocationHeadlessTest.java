@@ -421,7 +421,7 @@ class FrameAllocationHeadlessTest {
         frame();
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.getClock().setPaused(false);
-        demo.setHudRefreshSeconds(hudRefreshSeconds);
+        demo.getDemoHud().setRefreshSeconds(hudRefreshSeconds);
         // The inspector open on the first body shown: its numbers change every frame too.
         for (DemoParticle particle : demo.getParticles()) {
             if (!particle.isParked()) {
@@ -437,7 +437,7 @@ class FrameAllocationHeadlessTest {
     private static Boolean end(DemoState demo) {
         demo.getDragControl().clearPick();
         demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
-        demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+        demo.getDemoHud().setRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
         resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
         harness.app().getWindowControls().setUiFactor(1f);
         harness.app().getWindowControls().setPresenting(false);
@@ -487,7 +487,7 @@ class FrameAllocationHeadlessTest {
         int textChanges = demo.getHud().countTextChanges();
         int allocating = 0;
         for (int w = 0; w < WINDOWS; ++w) {
-            if (demo.isSceneOver()) {
+            if (demo.getRun().isSceneOver()) {
                 restart(demo);
             }
             double before = demo.getClock().getSimulatedSeconds();
@@ -510,8 +510,9 @@ class FrameAllocationHeadlessTest {
                         + Arrays.toString(simulated);
             }
         }
-        if (presenting != demo.isPresenting()) {
-            return name + ": presentation mode " + demo.isPresenting() + ", asked " + presenting;
+        if (presenting != demo.getDemoHud().isPresenting()) {
+            return name + ": presentation mode " + demo.getDemoHud().isPresenting() + ", asked "
+                    + presenting;
         }
         // A slide's one readout may rightly stand still (no impact yet): checked in the HUD.
         if (!presenting && textChanges < WINDOWS / 2) {
@@ -526,7 +527,7 @@ class FrameAllocationHeadlessTest {
      * (every particle landed) is restarted first, outside the window.
      */
     private static long window(DemoState demo) {
-        if (demo.isSceneOver()) {
+        if (demo.getRun().isSceneOver()) {
             restart(demo);
         }
         long bytes = 0L;

@@ -137,8 +137,8 @@ class OverlapMatrixHeadlessTest {
                     demo.getParameters().set(ComparisonLane.PARAMETER, lane);
                 }
                 demo.restart();
-                demo.setPresenting(presenting);
-                demo.layOut(width, height);
+                demo.getDemoHud().setPresenting(presenting);
+                demo.getDemoHud().layOut(width, height);
                 for (int f = 0; f < frames; ++f) {
                     demo.update(H);
                 }
@@ -148,8 +148,8 @@ class OverlapMatrixHeadlessTest {
                     demo.getParameters().set(ComparisonLane.PARAMETER, laneBefore);
                     demo.restart();
                 }
-                demo.setPresenting(false);
-                demo.layOut(1280, 720);
+                demo.getDemoHud().setPresenting(false);
+                demo.getDemoHud().layOut(1280, 720);
                 return found;
             }));
         }
@@ -190,18 +190,18 @@ class OverlapMatrixHeadlessTest {
                         + (presenting ? " presenting" : "") + (panel ? " panel" : "")
                         + " frame " + sample;
                 problems.addAll(harness.call(() -> {
-                    demo.setPresenting(presenting);
+                    demo.getDemoHud().setPresenting(presenting);
                     OverlapProbe.setPanel(demo, panel);
-                    demo.layOut(window[0], window[1]);
+                    demo.getDemoHud().layOut(window[0], window[1]);
                     demo.update(0f);
                     return OverlapProbe.check(demo, window[0], window[1], where);
                 }));
             }
         }
         harness.call(() -> {
-            demo.setPresenting(false);
+            demo.getDemoHud().setPresenting(false);
             OverlapProbe.setPanel(demo, false);
-            demo.layOut(1280, 720);
+            demo.getDemoHud().layOut(1280, 720);
             return true;
         });
         return problems;

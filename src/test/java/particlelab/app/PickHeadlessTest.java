@@ -113,7 +113,7 @@ class PickHeadlessTest {
 
     @Test
     void theHelpAndTheFooterNameTheMouse() throws Exception {
-        String[] texts = harness.call(() -> new String[] {drag.getHelpText(),
+        String[] texts = harness.call(() -> new String[] {drag.getKeys().getHelpText(),
             drag.getHud().getLayout().getFooterText()});
         // The sphere and its arrow tip share a row.
         assertTrue(texts[0].contains("Mouse\n   drag a sphere / its arrow tip  -  launch P0 of"

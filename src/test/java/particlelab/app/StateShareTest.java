@@ -86,7 +86,7 @@ class StateShareTest {
         }
         bounce.getClock().setPaused(true);
         for (int i = 0; i < 10; ++i) {
-            bounce.stepBack();
+            bounce.getReplayControls().stepBack();
         }
         StateShare share = key.share().get(CHILD_SECONDS, TimeUnit.SECONDS);
         assertEquals("particle-lab demo bounce --frames 290 --fixed-tpf " + FRAME,

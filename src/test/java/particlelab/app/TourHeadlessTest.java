@@ -49,8 +49,9 @@ class TourHeadlessTest {
         harness.awaitFrames(2);
         assertEquals(TourGuide.NOT_TOURING, (int) harness.call(() -> app.getTour().getStop()));
         for (DemoState demo : app.getSwitcher().getDemos()) {
-            assertNull(demo.getNote(), demo.getTitle() + " kept a tour note");
-            assertNull(demo.getTitleNote(), demo.getTitle() + " kept the stop in its title");
+            assertNull(demo.getDemoHud().getNote(), demo.getTitle() + " kept a tour note");
+            assertNull(demo.getDemoHud().getTitleNote(),
+                    demo.getTitle() + " kept the stop in its title");
         }
     }
 
@@ -73,7 +74,7 @@ class TourHeadlessTest {
             });
             for (DemoState demo : app.getSwitcher().getDemos()) {
                 harness.call(() -> {
-                    demo.layOut(window[0], window[1]);
+                    demo.getDemoHud().layOut(window[0], window[1]);
                     return true;
                 });
             }
@@ -160,7 +161,7 @@ class TourHeadlessTest {
     void everyDemosHelpListsTheTourKeys() throws Exception {
         ParticleLabApp app = harness.app();
         for (DemoState demo : app.getSwitcher().getDemos()) {
-            String help = harness.call(demo::getHelpText);
+            String help = harness.call(() -> demo.getKeys().getHelpText());
             for (String key : new String[] {"PageDown", "PageUp", "F7"}) {
                 assertTrue(help.contains(key + " "), demo.getTitle() + ": " + key + " in\n"
                         + help);

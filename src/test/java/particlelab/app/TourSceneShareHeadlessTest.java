@@ -51,13 +51,13 @@ class TourSceneShareHeadlessTest {
                     + ")";
             problems.addAll(harness.call(() -> {
                 List<String> found = new ArrayList<>();
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
                 HeadlessHarness.fly(demo, FRAMES, 1f / 60f);
                 check(demo, 1280, 720, 1f, false, MIN_FULL_HUD_SHARE, name, found);
                 check(demo, 1920, 1080, 1f, false, MIN_FULL_HUD_SHARE, name, found);
                 check(demo, 1920, 1080, HALL_FACTOR, true, MIN_HALL_SHARE, name, found);
-                demo.setPresenting(false);
-                demo.layOut(1280, 720);
+                demo.getDemoHud().setPresenting(false);
+                demo.getDemoHud().layOut(1280, 720);
                 return found;
             }));
         }
@@ -70,10 +70,10 @@ class TourSceneShareHeadlessTest {
 
     private static void check(DemoState demo, int width, int height, float factor,
             boolean presenting, float least, String name, List<String> found) {
-        demo.setPresenting(presenting);
-        demo.layOut(width, height, factor);
+        demo.getDemoHud().setPresenting(presenting);
+        demo.getDemoHud().layOut(width, height, factor);
         demo.update(0f);
-        ScreenRect scene = demo.copySceneRect(new ScreenRect());
+        ScreenRect scene = demo.getWindow().copySceneRect(new ScreenRect());
         // Presenting a slide about energy, the ledger's bars beside the scene are part of the
         // picture (issue 32; PresentationHeadlessTest counts them so): with them the scene
         // reaches the window's right edge.

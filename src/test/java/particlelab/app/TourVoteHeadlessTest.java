@@ -180,7 +180,7 @@ class TourVoteHeadlessTest {
                 "a line wrapped: " + revealed);
         float boxHeight = harness.call(() -> overlay.getBackdrop().getLocalScale().y);
         float boxBottom = harness.call(() -> overlay.getBackdrop().getLocalTranslation().y);
-        ScreenRect scene = harness.call(() -> demo.copySceneRect(new ScreenRect()));
+        ScreenRect scene = harness.call(() -> demo.getWindow().copySceneRect(new ScreenRect()));
         assertTrue(boxHeight <= QuestionOverlay.REVEAL_SCENE_SHARE * scene.getHeight(),
                 "box " + boxHeight + " px, scene " + scene.getHeight() + " px");
         List<String> covered = harness.call(() -> {

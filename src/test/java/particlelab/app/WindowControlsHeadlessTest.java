@@ -75,7 +75,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 1f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 1f)));
         assertEquals(1920f, harness.call(() -> demo.getHud().getLayout().getWindow()
                 .getWidth()));
         assertEquals(HudLayout.scaleFor(1920, 1080),
@@ -86,7 +86,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1920, 1080, 0.5f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 0.5f)));
         assertEquals(0.5f * HudLayout.scaleFor(1920, 1080),
                 harness.call(() -> demo.getHud().getLayout().getScale()));
 
@@ -96,7 +96,7 @@ class WindowControlsHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        assertTrue(harness.call(() -> demo.isLaidOutFor(1280, 720, 1f)));
+        assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1280, 720, 1f)));
     }
 
     @Test
@@ -116,7 +116,7 @@ class WindowControlsHeadlessTest {
             for (int press = 0; press < 2; ++press) {
                 assertTrue(harness.call(() -> {
                     HeadlessHarness.press(demo, "F2");
-                    return demo.isLaidOutFor(width, height, 1.5f);
+                    return demo.getDemoHud().isLaidOutFor(width, height, 1.5f);
                 }), "press " + press);
             }
         } finally {
@@ -131,7 +131,7 @@ class WindowControlsHeadlessTest {
     @Test
     void theWindowAndExportKeysAreInEveryDemosHelp() throws Exception {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
-            String help = demo.getHelpText();
+            String help = demo.getKeys().getHelpText();
             for (String line : new String[] {"F11  -  fullscreen", "F10  -  larger HUD text",
                 "F9  -  smaller HUD text", "F8  -  presentation mode", "E  -  export"}) {
                 assertTrue(help.contains(line), demo.getTitle() + " lacks " + line);
@@ -169,7 +169,7 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(2);
-            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             assertTrue(harness.call(() -> switcher.getSelected().getHud().getLayout()
                     .isPresenting()));
             // Tab, a digit (select) and a tour stop: each demo shown opens presenting.
@@ -181,7 +181,7 @@ class WindowControlsHeadlessTest {
                 harness.awaitFrames(3);
                 assertEquals(next, (int) harness.call(() -> switcher.getDemos()
                         .indexOf(switcher.getSelected())));
-                assertTrue(harness.call(() -> switcher.getSelected().isPresenting()),
+                assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()),
                         "demo " + (next + 1));
             }
             harness.call(() -> {
@@ -189,7 +189,7 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(3);
-            assertTrue(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             assertTrue(harness.call(() -> switcher.getSelected().getHud().getFooterText()
                     .contains("PageDown  next stop")));
             // F8 again: the full HUD, for the demo shown and the next one.
@@ -198,14 +198,14 @@ class WindowControlsHeadlessTest {
                 return true;
             });
             harness.awaitFrames(2);
-            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertFalse(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
             harness.call(() -> {
                 app.getTour().leave();
                 switcher.select(0);
                 return true;
             });
             harness.awaitFrames(3);
-            assertFalse(harness.call(() -> switcher.getSelected().isPresenting()));
+            assertFalse(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
         } finally {
             harness.call(() -> {
                 app.getTour().leave();
@@ -246,7 +246,7 @@ class WindowControlsHeadlessTest {
                 });
                 harness.awaitFrames(FRAMES_BETWEEN);
                 String where = demo.getTitle() + " at " + size[0] + "x" + size[1];
-                assertTrue(harness.call(() -> demo.isLaidOutFor(size[0], size[1], 1f)), where);
+                assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(size[0], size[1], 1f)), where);
                 ScreenRect scene = harness.call(() -> demo.getHud().getLayout().getScene());
                 assertTrue(!scene.isEmpty() && new ScreenRect(0f, 0f, size[0], size[1])
                         .contains(scene), where + ": scene " + scene);
@@ -313,7 +313,7 @@ class WindowControlsHeadlessTest {
     @Test
     void theHelpAndFooterSayHowToChooseADemo() throws Exception {
         DemoState demo = harness.call(() -> harness.app().getSwitcher().getSelected());
-        String help = demo.getHelpText();
+        String help = demo.getKeys().getHelpText();
 
         assertTrue(help.contains("\nChoosing a demo\n   0-9  -  type a demo's number (1-19):"),
                 help);

@@ -81,10 +81,10 @@ class ContactPauseTest {
         press(bounce, "Enter");
         runUntilPaused(bounce, H);
         assertTrue(hud(bounce).contains("PAUSED at contact: "), hud(bounce));
-        assertTrue(bounce.stepBack());
+        assertTrue(bounce.getReplayControls().stepBack());
         assertFalse(hud(bounce).contains("at contact"), hud(bounce));
-        bounce.stepForward();
-        assertFalse(bounce.isReplaying());
+        bounce.getReplayControls().stepForward();
+        assertFalse(bounce.getRun().isReplaying());
         assertTrue(hud(bounce).contains("PAUSED at contact: "), hud(bounce));
     }
 

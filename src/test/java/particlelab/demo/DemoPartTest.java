@@ -104,10 +104,10 @@ class DemoPartTest {
             demo.advancePhysics(H);
         }
         assertEquals(5, demo.first.steps);
-        assertTrue(demo.stepBack(), "the ring holds the earlier steps");
+        assertTrue(demo.getReplayControls().stepBack(), "the ring holds the earlier steps");
         // the part's count is read back from the ring with the world's state: exact ints
         assertEquals(4, demo.first.steps);
-        demo.stepForward();
+        demo.getReplayControls().stepForward();
         assertEquals(5, demo.first.steps);
     }
 

@@ -128,15 +128,15 @@ class DemoPartsHeadlessTest {
         String laidOut = harness.call(() -> {
             app.getSwitcher().select(index);
             frames(app, FRAMES);
-            demo.setPresenting(true);
-            demo.layOut(1920, 1080, 1.25f);
+            demo.getDemoHud().setPresenting(true);
+            demo.getDemoHud().layOut(1920, 1080, 1.25f);
             HeadlessHarness.fly(demo, FRAMES, H);
             HudLayout layout = demo.getHud().getLayout();
             String found = layout.getWindow() + ", strip " + !layout.getLedger().isEmpty()
                     + ", scene right of the strip " + (layout.getScene().getRight()
                     > layout.getLedger().getX());
-            demo.setPresenting(false);
-            demo.layOut(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+            demo.getDemoHud().setPresenting(false);
+            demo.getDemoHud().layOut(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
             frames(app, FRAMES);
             return found;
         });
@@ -208,7 +208,7 @@ class DemoPartsHeadlessTest {
         assertEquals(List.of("demo.afterFrame", "a.afterFrame", "b.afterFrame"), frame);
         List<String> laidOut = harness.call(() -> {
             log.clear();
-            demo.layOut(640, 360);
+            demo.getDemoHud().layOut(640, 360);
             List<String> seen = new ArrayList<>();
             for (String entry : log) {
                 if (entry.endsWith("layOut")) {

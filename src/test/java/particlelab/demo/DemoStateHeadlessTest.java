@@ -113,7 +113,7 @@ class DemoStateHeadlessTest {
     void theHudsPositionIsWhereTheBallIsDrawnAfterEveryFrame() throws Exception {
         DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
         String mismatch = harness.call(() -> {
-            tunnelling.setInterpolating(false);
+            tunnelling.getReplayControls().setInterpolating(false);
             tunnelling.restart();
             StringBuilder expected = new StringBuilder();
             for (int frame = 1; frame <= 1200; ++frame) {
@@ -130,7 +130,7 @@ class DemoStateHeadlessTest {
                     }
                 }
             }
-            tunnelling.setInterpolating(true);
+            tunnelling.getReplayControls().setInterpolating(true);
             return "";
         });
         assertEquals("", mismatch);
@@ -145,7 +145,7 @@ class DemoStateHeadlessTest {
     void theInterpolatedBallIsDrawnBetweenItsLastTwoStates() throws Exception {
         DemoState tunnelling = demos().get(DemoCatalog.indexOf("tunnelling"));
         String mismatch = harness.call(() -> {
-            tunnelling.setInterpolating(true);
+            tunnelling.getReplayControls().setInterpolating(true);
             tunnelling.restart();
             StringBuilder expected = new StringBuilder();
             Vector3f drawn = new Vector3f();
@@ -227,7 +227,7 @@ class DemoStateHeadlessTest {
     void helpOverlayListsEveryDeclaredBinding() throws Exception {
         List<KeyBinding> appKeys = harness.app().getSwitcher().getBindings();
         for (DemoState demo : demos()) {
-            String help = demo.getHelpText();
+            String help = demo.getKeys().getHelpText();
             List<KeyBinding> keys = demo.getBindings();
             keys.addAll(appKeys);
             assertTrue(keys.size() > 10, demo.getTitle());
@@ -290,7 +290,7 @@ class DemoStateHeadlessTest {
     void atTheSlowRefreshTheHudHandsTextToJmeAtMostTenTimesASecond() throws Exception {
         DemoState demo = demos().get(DemoCatalog.indexOf("aiming"));
         int changes = harness.call(() -> {
-            demo.setHudRefreshSeconds(DemoState.SLOW_HUD_REFRESH_SECONDS);
+            demo.getDemoHud().setRefreshSeconds(DemoState.SLOW_HUD_REFRESH_SECONDS);
             try {
                 demo.restart(); // a shot in the air: the HUD has something to follow
                 int before = demo.getHud().countTextChanges();
@@ -299,7 +299,7 @@ class DemoStateHeadlessTest {
                 }
                 return demo.getHud().countTextChanges() - before;
             } finally {
-                demo.setHudRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
+                demo.getDemoHud().setRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
             }
         });
         // 10 s at 60 frames per second: at most 101 refreshes, each setting body and warning.
@@ -315,7 +315,7 @@ class DemoStateHeadlessTest {
             stiff.getClock().setMode(SimulationClock.Mode.RAW_TPF);
             // h = 32/60 s with b/m = 10 per second: each step multiplies V by 1 − 5.3.
             stiff.getClock().setTimeScale(32f);
-            for (int frame = 0; frame < 200 && stiff.countBlowUps() == 0; ++frame) {
+            for (int frame = 0; frame < 200 && stiff.getRun().countBlowUps() == 0; ++frame) {
                 stiff.update(H);
             }
             stiff.getClock().setTimeScale(1f);
@@ -323,7 +323,7 @@ class DemoStateHeadlessTest {
             stiff.update(H);
             return stiff.getHud().getWarningText();
         });
-        assertEquals(1, stiff.countBlowUps());
+        assertEquals(1, stiff.getRun().countBlowUps());
         assertTrue(warning.contains("blew up"), warning);
         for (DemoParticle particle : stiff.getParticles()) {
             assertTrue(particle.getParticle().isFinite(), particle.getLabel());
@@ -405,8 +405,9 @@ class DemoStateHeadlessTest {
             for (DemoParticle particle : drag.getParticles()) {
                 latest = Math.max(latest, particle.getLandingSeconds());
             }
-            return new Object[] {drag.isSceneOver(), t, drag.getClock().getSimulatedSeconds(),
-                latest, drag.formatHud(new StringBuilder()).toString()};
+            return new Object[] {drag.getRun().isSceneOver(), t,
+                drag.getClock().getSimulatedSeconds(), latest,
+                drag.formatHud(new StringBuilder()).toString()};
         });
         assertTrue((Boolean) result[0]);
         assertEquals((Double) result[1], (Double) result[2], 0.0);
@@ -499,7 +500,7 @@ class DemoStateHeadlessTest {
             demo.restart();
             clock.setPaused(false);
             clock.setTimeScale(SLOW);
-            demo.setInterpolating(true);
+            demo.getReplayControls().setInterpolating(true);
             RigidBody rigid = body.get();
             Matrix3f before = new Matrix3f();
             Vector3f beforeCentre = new Vector3f();
@@ -519,7 +520,7 @@ class DemoStateHeadlessTest {
                     previous.set(before);
                     previousCentre.set(beforeCentre);
                 }
-                float alpha = demo.getReplay().getFrameBlend();
+                float alpha = demo.getRun().getReplay().getFrameBlend();
                 blend.blend(previous, rigid.orientation, alpha, drawn);
                 centre.set(previousCentre).interpolateLocal(rigid.getParticle().position,
                         alpha);
@@ -556,13 +557,13 @@ class DemoStateHeadlessTest {
                 found.add("only " + between + " frames drawn between two steps");
             }
             // F6 off: the raw step, R itself.
-            demo.setInterpolating(false);
+            demo.getReplayControls().setInterpolating(false);
             demo.advance(H);
             String raw = compareMesh(view.get(), rigid.orientation, rigid.getParticle().position);
             if (raw != null) {
                 found.add("F6 off: " + raw);
             }
-            demo.setInterpolating(true);
+            demo.getReplayControls().setInterpolating(true);
             String hud = demo.formatHud(new StringBuilder()).toString();
             if (hud.contains("raw steps (this demo's views)")) {
                 found.add("the HUD still says raw steps: " + hud);
@@ -595,11 +596,11 @@ class DemoStateHeadlessTest {
             }
         }
         harness.call(() -> {
-            clip.setPresenting(false);
+            clip.getDemoHud().setPresenting(false);
             clip.getParameters().set("speed", 12f);
             clip.getParameters().set("angle", 0f);
             clip.getParameters().set("clip", 0f);
-            clip.layOut(1280, 720);
+            clip.getDemoHud().layOut(1280, 720);
             return true;
         });
         assertEquals(List.of(), problems.subList(0, Math.min(10, problems.size())),
@@ -666,8 +667,8 @@ class DemoStateHeadlessTest {
     /** Fire one shot at a window size and check the posts' names every frame. */
     private static List<String> runClipShot(int width, int height, boolean presenting,
             float[] shot) {
-        clip.setPresenting(presenting);
-        clip.layOut(width, height);
+        clip.getDemoHud().setPresenting(presenting);
+        clip.getDemoHud().layOut(width, height);
         clip.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         clip.getClock().setPaused(false);
         clip.getParameters().set("speed", shot[0]);
@@ -691,11 +692,11 @@ class DemoStateHeadlessTest {
     private static List<String> checkPostNames(String when) {
         List<String> problems = new ArrayList<>();
         PlaneView plane = clip.getPlaneView();
-        List<ScreenRect> names = ((DemoState) clip).copyPostLabelRects(new ArrayList<>());
-        List<ScreenRect> posts = ((DemoState) clip).copyPostRects(new ArrayList<>());
+        List<ScreenRect> names = ((DemoState) clip).getWindow().copyPostLabelRects(new ArrayList<>());
+        List<ScreenRect> posts = ((DemoState) clip).getWindow().copyPostRects(new ArrayList<>());
         List<DemoParticle> particles = clip.getParticles();
         Node sceneNode = clip.getView(particles.get(0)).getNode().getParent();
-        List<ScreenRect> shown = clip.copyTextRects(new ArrayList<>());
+        List<ScreenRect> shown = clip.getWindow().copyTextRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int n = 0; n < names.size(); ++n) {
             ScreenRect name = names.get(n);

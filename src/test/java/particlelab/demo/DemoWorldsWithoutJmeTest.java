@@ -81,7 +81,7 @@ class DemoWorldsWithoutJmeTest {
         // Each frame of 1/60 s is one step of the default h, each checked by the audit, until
         // a demo whose shots have all landed stops stepping (its scene is over).
         assertTrue(steps[0] > 60, name + ": " + steps[0] + " steps");
-        if (!demo.isSceneOver()) {
+        if (!demo.getRun().isSceneOver()) {
             assertEquals(20 * 60, steps[0], name);
         }
     }

@@ -136,7 +136,8 @@ class DragControlTest {
         assertEquals(seconds, demo.getClock().getSimulatedSeconds());
         assertEquals(Vector3f.ZERO, linear.copyLaunchPosition(new Vector3f()));
 
-        String text = demo.formatInspector(new StringBuilder()).toString();
+        String text = ((DemoState) demo).getMouse().formatInspector(new StringBuilder())
+                .toString();
         Vector3f v = linear.getParticle().velocity;
         StringBuilder drag = new StringBuilder("linear drag -b V  F = (");
         // F = -b·V with b = 0.9 N·s/m, printed to 2 decimals as the box prints it.
@@ -154,7 +155,8 @@ class DragControlTest {
         // A press on empty space closes the inspector.
         assertFalse(drags.press(camera, 5f, HEIGHT - 5f));
         assertNull(drags.getPicked());
-        assertEquals("", demo.formatInspector(new StringBuilder()).toString());
+        assertEquals("", ((DemoState) demo).getMouse().formatInspector(new StringBuilder())
+                .toString());
     }
 
     @Test
@@ -218,7 +220,8 @@ class DragControlTest {
         assertTrue(bare.getDragControl().press(camera, screen.x, screen.y));
         assertNull(bare.getDragControl().getHeld());
         assertEquals("ball\nP = (3.00, 2.00) m\nV = (1.00, 0.00) m/s   |V| = 1.00 m/s\n"
-                + "m = 2.00 kg\nno force", bare.formatInspector(new StringBuilder()).toString());
+                + "m = 2.00 kg\nno force",
+                bare.getMouse().formatInspector(new StringBuilder()).toString());
     }
 
     private static void assertVector(Vector3f expected, Vector3f actual, float tolerance) {

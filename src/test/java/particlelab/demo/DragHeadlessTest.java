@@ -104,8 +104,8 @@ class DragHeadlessTest {
             if (drags.getPicked() != quadratic) {
                 found.add("picked " + drags.getPicked());
             }
-            List<ScreenRect> rects = drag.copyTextRects(new ArrayList<>());
-            ScreenRect box = ((DemoState) drag).getInspectorRect();
+            List<ScreenRect> rects = drag.getWindow().copyTextRects(new ArrayList<>());
+            ScreenRect box = ((DemoState) drag).getMouse().getInspectorRect();
             if (box.isEmpty()) {
                 found.add("the inspector is not shown");
             }
@@ -120,13 +120,14 @@ class DragHeadlessTest {
                 found.add("inspector " + box + " outside the scene "
                         + drag.getHud().getLayout().getScene());
             }
-            String text = drag.formatInspector(new StringBuilder()).toString();
+            String text = ((DemoState) drag).getMouse().formatInspector(new StringBuilder())
+                    .toString();
             if (!text.startsWith(quadratic.getLabel() + "\n")) {
                 found.add("inspector shows " + text);
             }
             drags.clearPick();
             drag.update(H);
-            if (!((DemoState) drag).getInspectorRect().isEmpty()) {
+            if (!((DemoState) drag).getMouse().getInspectorRect().isEmpty()) {
                 found.add("the inspector stayed after the pick was cleared");
             }
             return found;

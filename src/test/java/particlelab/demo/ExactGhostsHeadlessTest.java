@@ -136,13 +136,13 @@ class ExactGhostsHeadlessTest {
         double[] r = harness.call(() -> {
             pull.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             pull.restart();
-            for (int frame = 0; frame < 200 && !pull.isSceneOver(); ++frame) {
+            for (int frame = 0; frame < 200 && !pull.getRun().isSceneOver(); ++frame) {
                 pull.advance(H);
             }
             ExactGhosts ghosts = ((DemoState) pull).getExactGhosts();
             ExactPath path = ghosts.getPath(0);
             DemoParticle ball = pull.getParticles().get(0);
-            return new double[] {pull.isSceneOver() ? 1 : 0, path.hasLanded() ? 1 : 0,
+            return new double[] {pull.getRun().isSceneOver() ? 1 : 0, path.hasLanded() ? 1 : 0,
                 path.getApexHeight(), path.getApexSeconds(), path.getLandingX(),
                 path.getLandingSeconds(), ghosts.getEulerApexHeight(0),
                 ghosts.getEulerApexSeconds(0), ball.getLandingX(), ball.getLandingSeconds(),
@@ -201,14 +201,14 @@ class ExactGhostsHeadlessTest {
             }
             int[][] windows = {{1024, 768}, {1280, 720}, {1920, 1080}, {3840, 2160}};
             for (int[] window : windows) {
-                drag.layOut(window[0], window[1]);
+                drag.getDemoHud().layOut(window[0], window[1]);
                 drag.restart();
                 for (int frame = 0; frame < 150; ++frame) {
                     drag.update(H);
                     if (frame % 10 != 0) {
                         continue;
                     }
-                    List<ScreenRect> rects = drag.copyTextRects(new ArrayList<>());
+                    List<ScreenRect> rects = drag.getWindow().copyTextRects(new ArrayList<>());
                     List<ScreenRect> labels = ghosts.copyTextRects(new ArrayList<>());
                     if (labels.size() != 4) {
                         found.add("graph labels: " + labels);
@@ -231,7 +231,7 @@ class ExactGhostsHeadlessTest {
                 }
             }
             press(drag, "Y");
-            drag.layOut(1280, 720);
+            drag.getDemoHud().layOut(1280, 720);
             return found;
         });
         assertEquals(List.of(), problems.subList(0, Math.min(8, problems.size())),
@@ -273,7 +273,7 @@ class ExactGhostsHeadlessTest {
                 bytes[1][window] = graph.countLabelChanges() - labels;
             }
             bytes[2][0] = graph.size();
-            bytes[2][1] = drag.isSceneOver() ? 1 : 0;
+            bytes[2][1] = drag.getRun().isSceneOver() ? 1 : 0;
             press(drag, "Y");
             return bytes;
         });
@@ -366,19 +366,19 @@ class ExactGhostsHeadlessTest {
             }
             // Back past the launch: 20 steps, the launch's entry, one more.
             for (int i = 0; i < 22; ++i) {
-                aiming.stepBack();
+                aiming.getReplayControls().stepBack();
             }
             int keptBehind = shots.size();
             String legendBehind = shots.formatLegend(new StringBuilder(),
                     aiming.getParameters()).toString();
             int drawnBehind = shots.countDrawnPaths();
             for (int i = 0; i < 22; ++i) {
-                aiming.stepForward();
+                aiming.getReplayControls().stepForward();
             }
             int keptAgain = shots.size();
             return new int[] {keptLive, legendLive.isEmpty() ? 0 : 1, keptBehind,
                 legendBehind.isEmpty() ? 0 : 1, drawnLive, drawnBehind, keptAgain,
-                aiming.isReplaying() ? 1 : 0, shots.countDrawnPaths()};
+                aiming.getRun().isReplaying() ? 1 : 0, shots.countDrawnPaths()};
         });
         // HelloAiming launches its two bullets one by one, and each launch keeps what moved:
         // the first shot is kept once or twice; what matters is that it is kept.
@@ -425,10 +425,10 @@ class ExactGhostsHeadlessTest {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.restart();
         demo.getClock().setPaused(false);
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[REPLAY_STEPS + 2];
         String[] graphEnds = new String[REPLAY_STEPS + 2];
-        for (int i = 0; i < REPLAY_STEPS && !demo.isSceneOver(); ++i) {
+        for (int i = 0; i < REPLAY_STEPS && !demo.getRun().isSceneOver(); ++i) {
             demo.advance(H);
             lines[(int) ring.getLastIndex()] = ghostLines(demo);
             graphEnds[(int) ring.getLastIndex()] = graphEnd(demo);
@@ -436,9 +436,9 @@ class ExactGhostsHeadlessTest {
         List<String> problems = new ArrayList<>();
         long last = ring.getLastIndex();
         for (int k = 1; k <= last - ring.getFirstIndex(); ++k) {
-            demo.stepBack();
+            demo.getReplayControls().stepBack();
             demo.advance(0f);
-            long shown = demo.getShownStep();
+            long shown = demo.getRun().getShownStep();
             if (lines[(int) shown] == null) {
                 continue;
             }
@@ -460,7 +460,7 @@ class ExactGhostsHeadlessTest {
                 break;
             }
         }
-        if (problems.isEmpty() && !demo.isReplaying()) {
+        if (problems.isEmpty() && !demo.getRun().isReplaying()) {
             problems.add("never behind the live end");
         }
         return problems;

@@ -114,7 +114,7 @@ class LensPartTest {
             advance(demo, 20);
             DemoParticle sphere = demo.getParticles().get((Integer) entry[1]);
             String hud = demo.formatHud(new StringBuilder()).toString();
-            assertTrue(hud.contains("derivative lens (O) at step " + demo.getShownStep()
+            assertTrue(hud.contains("derivative lens (O) at step " + demo.getRun().getShownStep()
                     + ", t_i = 0.333 s, h = 0.0167 s"), demo.getTitle() + ":\n" + hud);
             Particle particle = sphere.getParticle();
             DerivativeLens lens = assertLinesFor(hud, sphere, particle.position,
@@ -165,12 +165,12 @@ class LensPartTest {
             positions[n] = ball.getParticle().position.clone();
             velocities[n] = ball.getParticle().velocity.clone();
         }
-        long live = demo.getShownStep();
+        long live = demo.getRun().getShownStep();
         for (int back = 0; back < 3; ++back) {
-            assertTrue(demo.stepBack(), "the ring holds the earlier steps");
+            assertTrue(demo.getReplayControls().stepBack(), "the ring holds the earlier steps");
         }
-        assertTrue(demo.isReplaying());
-        assertEquals(live - 3, demo.getShownStep());
+        assertTrue(demo.getRun().isReplaying());
+        assertEquals(live - 3, demo.getRun().getShownStep());
         int k = steps - 3;
         // the ring gave back step k's state bit for bit
         assertEquals(positions[k], ball.getParticle().position);

@@ -19,7 +19,7 @@ import particlelab.view.Trail;
  * label at that side), and two spheres that coincide on the screen (centres closer than
  * {@link ParticleView#JOIN_RADII} radii) share one joined label naming both; from the
  * rectangles the
- * layout itself placed ({@link DemoState#copyTextRects}, the particles' label slots, the
+ * layout itself placed ({@link DemoWindow#copyTextRects}, the particles' label slots, the
  * posts, the collisions demo's impulse labels).
  */
 public final class OverlapProbe {
@@ -52,7 +52,7 @@ public final class OverlapProbe {
      * @return one line per problem (empty if none)
      */
     public static List<String> check(DemoState demo, int width, int height, String where) {
-        List<ScreenRect> texts = demo.copyTextRects(new ArrayList<>());
+        List<ScreenRect> texts = demo.getWindow().copyTextRects(new ArrayList<>());
         if (demo instanceof CollisionsDemo) {
             // The impulses' labels, placed by their own layout (CalloutLayout).
             ((CollisionsDemo) demo).copyImpulseLabelRects(texts);
@@ -61,10 +61,10 @@ public final class OverlapProbe {
                 height, where));
         PlaneView plane = demo.getPlaneView();
         List<DemoParticle> particles = demo.getParticles();
-        List<ScreenRect> posts = demo.copyPostRects(new ArrayList<>());
+        List<ScreenRect> posts = demo.getWindow().copyPostRects(new ArrayList<>());
         // The spheres a viewer sees: shown, and inside the scene (above it the HUD's backdrop
         // covers them).
-        ScreenRect scene = demo.copySceneRect(new ScreenRect());
+        ScreenRect scene = demo.getWindow().copySceneRect(new ScreenRect());
         List<ScreenRect> spheres = new ArrayList<>();
         List<String> sphereNames = new ArrayList<>();
         List<DemoParticle> sphereParticles = new ArrayList<>();
@@ -207,7 +207,7 @@ public final class OverlapProbe {
             return problems;
         }
         Node sceneNode = demo.getView(particles.get(0)).getNode().getParent();
-        List<ScreenRect> names = demo.copyPostLabelRects(new ArrayList<>());
+        List<ScreenRect> names = demo.getWindow().copyPostLabelRects(new ArrayList<>());
         PlaneView plane = demo.getPlaneView();
         Vector3f point = new Vector3f();
         for (int n = 0; n < names.size(); ++n) {

@@ -68,7 +68,7 @@ class ParameterPanelHeadlessTest {
                 }
                 // Every demo has the shared step h first; the help names the panel's keys.
                 if (!"h".equals(parameters.get(0).getName())
-                        || !demo.getHelpText().contains("parameter panel")) {
+                        || !demo.getKeys().getHelpText().contains("parameter panel")) {
                     found.add(demo.getTitle() + ": no h or no panel keys in the help");
                 }
                 return found;
@@ -211,7 +211,7 @@ class ParameterPanelHeadlessTest {
             // The application's export state takes requests at the end of a frame; on this
             // thread, between frames, the request is still there to be taken.
             demo.getParameterControls().getPanel().click("Export");
-            return demo.takeExportRequest();
+            return demo.getKeys().takeExportRequest();
         });
         assertTrue(asked, "the Export button did not ask for an export");
     }

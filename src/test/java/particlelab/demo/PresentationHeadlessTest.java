@@ -91,17 +91,17 @@ class PresentationHeadlessTest {
     void theFooterNamesTheKeyBackAndTheHudComesBack() throws Exception {
         DemoState demo = harness.app().getSwitcher().getDemos().get(0);
         harness.call(() -> {
-            demo.layOut(1280, 720);
+            demo.getDemoHud().layOut(1280, 720);
             String full = demo.getHud().getFooterText();
-            demo.setPresenting(true);
+            demo.getDemoHud().setPresenting(true);
             assertEquals("F8  full HUD", demo.getHud().getFooterText());
             assertTrue(demo.getHud().getLayout().isPresenting());
             // On a tour stop, the tour's keys too.
-            demo.setNote((shown, text) -> text.append("watch\n"));
+            demo.getDemoHud().setNote((shown, text) -> text.append("watch\n"));
             assertEquals("F8  full HUD     PageDown  next stop     PageUp  previous stop",
                     demo.getHud().getFooterText());
-            demo.setNote(null);
-            demo.setPresenting(false);
+            demo.getDemoHud().setNote(null);
+            demo.getDemoHud().setPresenting(false);
             assertEquals(full, demo.getHud().getFooterText());
             assertFalse(demo.getHud().getLayout().isPresenting());
             assertTrue(demo.getHud().getBodyText().startsWith(
@@ -115,16 +115,16 @@ class PresentationHeadlessTest {
         List<String> problems = new ArrayList<>();
         String where = demo.getTitle() + " " + width + "x" + height + ": ";
         try {
-            demo.layOut(width, height);
+            demo.getDemoHud().layOut(width, height);
             HudLayout layout = demo.getHud().getLayout();
             // The full HUD's body line as drawn: the band's height over its lines.
             float hudLine = layout.getBody().getHeight() / layout.getBodyLines();
             float hudSize = layout.getBodySize();
-            demo.setPresenting(true);
+            demo.getDemoHud().setPresenting(true);
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < FRAMES; frame += SAMPLE_EVERY) {
-                ScreenRect drawn = demo.copySceneRect(new ScreenRect());
+                ScreenRect drawn = demo.getWindow().copySceneRect(new ScreenRect());
                 // The energy ledger's bars beside the scene (issue 32, on an energy slide)
                 // are part of the picture: the scene with them reaches the window's edge.
                 float across = demo.getHud().getLayout().getLedger().isEmpty()
@@ -155,8 +155,8 @@ class PresentationHeadlessTest {
                         + " px (line " + hudLine + " px)");
             }
         } finally {
-            demo.setPresenting(false);
-            demo.layOut(1280, 720);
+            demo.getDemoHud().setPresenting(false);
+            demo.getDemoHud().layOut(1280, 720);
         }
         return problems;
     }
@@ -165,8 +165,8 @@ class PresentationHeadlessTest {
     private static List<String> runAndCheck(DemoState demo, int width, int height) {
         List<String> problems = new ArrayList<>();
         try {
-            demo.layOut(width, height);
-            demo.setPresenting(true);
+            demo.getDemoHud().layOut(width, height);
+            demo.getDemoHud().setPresenting(true);
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < FRAMES; ++frame) {
@@ -176,8 +176,8 @@ class PresentationHeadlessTest {
                 }
             }
         } finally {
-            demo.setPresenting(false);
-            demo.layOut(1280, 720);
+            demo.getDemoHud().setPresenting(false);
+            demo.getDemoHud().layOut(1280, 720);
         }
         return problems;
     }
@@ -226,7 +226,7 @@ class PresentationHeadlessTest {
 
     /** No two texts overlap, and all are inside the window. */
     private static List<String> check(DemoState demo, int width, int height, String when) {
-        return ScreenChecks.textsApartInside(demo.copyTextRects(new ArrayList<>()), width,
-                height, demo.getTitle() + " " + width + "x" + height + " " + when);
+        return ScreenChecks.textsApartInside(demo.getWindow().copyTextRects(new ArrayList<>()),
+                width, height, demo.getTitle() + " " + width + "x" + height + " " + when);
     }
 }

@@ -39,7 +39,7 @@ class ProjectorTextHeadlessTest {
                     List<String> found = new ArrayList<>();
                     float before = 0f;
                     for (float factor : FACTORS) {
-                        demo.layOut(window[0], window[1], factor);
+                        demo.getDemoHud().layOut(window[0], window[1], factor);
                         HudLayout layout = demo.getHud().getLayout();
                         // The body band's real line height on the screen.
                         float line = layout.getBody().getHeight() / layout.getBodyLines();
@@ -50,7 +50,7 @@ class ProjectorTextHeadlessTest {
                         }
                         before = line;
                     }
-                    demo.layOut(1280, 720);
+                    demo.getDemoHud().layOut(1280, 720);
                     return found;
                 }));
             }
@@ -64,7 +64,7 @@ class ProjectorTextHeadlessTest {
         for (DemoState demo : harness.app().getSwitcher().getDemos()) {
             problems.addAll(harness.call(() -> {
                 List<String> found = new ArrayList<>();
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
                 demo.getHud().setHelpVisible(true);
                 HudLayout layout = demo.getHud().getLayout();
                 List<ScreenRect> columns = layout.getHelpColumns();
@@ -91,7 +91,7 @@ class ProjectorTextHeadlessTest {
             }
             problems.addAll(harness.call(() -> {
                 List<String> found = new ArrayList<>();
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
                 HeadlessHarness.press(demo, "F2");
                 demo.update(1f / 60f);
                 ParameterPanel panel = demo.getParameterControls().getPanel();

@@ -602,7 +602,7 @@ class RandomInputHeadlessTest {
     /** The state the input left: what a frame's allocation may depend on. */
     private static String describe(ParticleLabApp app, DemoState demo) {
         return "window " + app.getCamera().getWidth() + "x" + app.getCamera().getHeight()
-                + (demo.isPresenting() ? ", presenting" : "")
+                + (demo.getDemoHud().isPresenting() ? ", presenting" : "")
                 + (demo.getParameterControls().isPanelVisible() ? ", panel open" : "")
                 + ", HUD factor " + app.getWindowControls().getUiFactor()
                 + ", time scale " + demo.getClock().getTimeScale()

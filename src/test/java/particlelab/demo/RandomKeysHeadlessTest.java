@@ -55,7 +55,7 @@ class RandomKeysHeadlessTest {
         Random random = new Random(SEED);
         List<KeyBinding> bindings = demo.getBindings();
         String where = demo.getTitle() + " " + WIDTH + "x" + HEIGHT + " ";
-        demo.layOut(WIDTH, HEIGHT);
+        demo.getDemoHud().layOut(WIDTH, HEIGHT);
         int press = 0;
         try {
             for (; press < KEY_PRESSES; ++press) {

@@ -91,7 +91,7 @@ class ReplayDeterminismTest {
 
     /** Step back and replay a demo, then End; compare every step's bits (class Javadoc). */
     private static void assertReplaysTheSameBits(DemoState demo, String name) {
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         String[] ownLines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
             demo.advancePhysics(H);
@@ -106,10 +106,10 @@ class ReplayDeterminismTest {
         for (int back : BACK) {
             int steps = (int) Math.min(back, last - ring.getFirstIndex());
             for (int i = 0; i < steps; ++i) {
-                assertTrue(demo.stepBack(), name + ": step back " + (i + 1));
+                assertTrue(demo.getReplayControls().stepBack(), name + ": step back " + (i + 1));
             }
-            assertTrue(demo.isReplaying());
-            long from = demo.getShownStep();
+            assertTrue(demo.getRun().isReplaying());
+            long from = demo.getRun().getShownStep();
             assertEquals(last - steps, from);
             assertArrayEquals(first[(int) from], writeNow(demo), name + ": read back");
             // Space: the clock runs again from the step shown, re-simulating.
@@ -125,16 +125,16 @@ class ReplayDeterminismTest {
                         name + ": HUD at step " + index + " re-simulated after " + steps
                                 + " back");
             }
-            assertFalse(demo.isReplaying());
+            assertFalse(demo.getRun().isReplaying());
             assertEquals(last, ring.getLastIndex());
         }
         for (int i = 0; i < BACK[1]; ++i) {
-            demo.stepBack();
+            demo.getReplayControls().stepBack();
         }
         for (int i = 0; i < BACK[1]; ++i) {
-            demo.stepForward();
+            demo.getReplayControls().stepForward();
         }
-        assertFalse(demo.isReplaying(), name + ": End came back to the live end");
+        assertFalse(demo.getRun().isReplaying(), name + ": End came back to the live end");
         assertArrayEquals(first[(int) last], writeNow(demo), name + ": End read back");
     }
 
@@ -160,7 +160,7 @@ class ReplayDeterminismTest {
     /** The demo's state now, as one ring entry. */
     private static int[] writeNow(DemoState demo) {
         StateRing now = new StateRing();
-        now.record(demo.getReplay().getRecord(), 0f);
+        now.record(demo.getRun().getReplay().getRecord(), 0f);
         return now.copyEntry(0);
     }
 }

@@ -30,7 +30,7 @@ class ReplayTest {
     @Test
     void theBlendIsTheLeftoverOverH() {
         DemoState demo = new DragDemo();
-        Replay replay = demo.getReplay();
+        Replay replay = demo.getRun().getReplay();
         demo.advancePhysics(1.37f * H);
         double leftover = demo.getClock().getLeftoverSeconds();
         // One step taken, 0.37 h left over (up to the float round-off of 1.37·h).
@@ -66,7 +66,7 @@ class ReplayTest {
         for (String name : List.of("fountain", "rotation", "throw", "racket", "drag")) {
             DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
             demo.advancePhysics(1.37f * H);
-            demo.getReplay().updateFrameBlend(demo.isSceneOver());
+            demo.getRun().getReplay().updateFrameBlend(demo.getRun().isSceneOver());
             String hud = demo.formatHud(new StringBuilder()).toString();
             boolean raw = name.equals("fountain");
             assertEquals(raw, hud.contains("drawn: raw steps (this demo's views)"),
@@ -78,7 +78,7 @@ class ReplayTest {
     @Test
     void theRingKeepsToItsBudgetInTheFountain() {
         DemoState demo = new FountainDemo();
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         long most = 0L;
         for (int i = 0; i < 60; ++i) {
             demo.advancePhysics(H);
@@ -88,7 +88,7 @@ class ReplayTest {
         assertTrue(ring.getCapacity() >= 2 && ring.getCapacity() < 60, ring.getCapacity()
                 + " steps: the budget, not the minute's cap, sizes the fountain's ring");
         assertEquals(ring.getCapacity(), ring.size());
-        StringBuilder text = demo.getReplay().appendRing(new StringBuilder());
+        StringBuilder text = demo.getRun().getReplay().appendRing(new StringBuilder());
         assertTrue(text.toString().matches("ring: 0\\.\\d s of 60 steps/s, \\d\\d\\.\\d MB"),
                 text.toString());
     }
@@ -96,13 +96,13 @@ class ReplayTest {
     @Test
     void aSmallDemoKeepsAMinuteOverALongRun() {
         DemoState demo = new DragDemo();
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         for (int i = 0; i < 2 * StateRing.DEFAULT_MAX_STEPS; ++i) {
             demo.advancePhysics(H);
             assertTrue(ring.getBytes() <= StateRing.DEFAULT_BUDGET_BYTES);
         }
         assertEquals(StateRing.DEFAULT_MAX_STEPS, ring.getCapacity());
-        StringBuilder text = demo.getReplay().appendRing(new StringBuilder());
+        StringBuilder text = demo.getRun().getReplay().appendRing(new StringBuilder());
         assertTrue(text.toString().startsWith("ring: 60.0 s of 60 steps/s, "), text.toString());
     }
 
@@ -116,10 +116,10 @@ class ReplayTest {
             Allocations.assertAllocatesNothing(name + ": steps recorded, back and forth",
                     () -> {
                         for (int i = 0; i < 30; ++i) {
-                            demo.stepBack();
+                            demo.getReplayControls().stepBack();
                         }
-                        demo.scrubTo(0.5);
-                        demo.stepForward();
+                        demo.getReplayControls().scrubTo(0.5);
+                        demo.getReplayControls().stepForward();
                         demo.getClock().setPaused(false);
                         for (int i = 0; i < 120; ++i) {
                             demo.advancePhysics(H);
@@ -146,9 +146,9 @@ class ReplayTest {
             assertFalse(file.getFile().toString().contains("-recorded"), "live: as before");
         }
         for (int i = 0; i < 10; ++i) {
-            demo.stepBack();
+            demo.getReplayControls().stepBack();
         }
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         Path behind = Files.createDirectory(folder.resolve("behind"));
         List<TrajectoryExport.Written> written = TrajectoryExport.write(demo, behind, false);
         int spans = 0;
@@ -178,7 +178,7 @@ class ReplayTest {
         Path span = behind.resolve(TrajectoryExport.fileSafeName(first.getLabel())
                 + "-recorded.csv");
         List<String> rows = Files.readAllLines(span);
-        String shown = rows.get(1 + (int) (demo.getShownStep() - ring.getFirstIndex()));
+        String shown = rows.get(1 + (int) (demo.getRun().getShownStep() - ring.getFirstIndex()));
         TrajectoryRecord record = first.getRecord();
         String expected = record.appendCsvRow(record.size() - 1, new StringBuilder())
                 .toString();

@@ -31,7 +31,7 @@ class ReplayViewsTest {
     @MethodSource("demoNames")
     void hudBehindEqualsTheOriginalRun(String name) {
         DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
             demo.advancePhysics(H);
@@ -39,8 +39,8 @@ class ReplayViewsTest {
         }
         long last = ring.getLastIndex();
         for (int k = 0; k < 300 && last - k > ring.getFirstIndex(); ++k) {
-            assertTrue(demo.stepBack());
-            long shown = demo.getShownStep();
+            assertTrue(demo.getReplayControls().stepBack());
+            long shown = demo.getRun().getShownStep();
             if (lines[(int) shown] != null) {
                 assertEquals(lines[(int) shown], hud(demo), name + ": step " + shown);
             }

@@ -38,7 +38,7 @@ class SceneShareHeadlessTest {
                 problems.addAll(harness.call(() -> run(demo, window[0], window[1])));
             }
             harness.call(() -> {
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
                 return true;
             });
         }
@@ -48,12 +48,12 @@ class SceneShareHeadlessTest {
 
     private static List<String> run(DemoState demo, int width, int height) {
         List<String> problems = new ArrayList<>();
-        demo.layOut(width, height);
+        demo.getDemoHud().layOut(width, height);
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.restart();
         ScreenRect drawn = new ScreenRect();
         for (int frame = 0; frame < FRAMES; frame += SAMPLE_EVERY) {
-            demo.copySceneRect(drawn);
+            demo.getWindow().copySceneRect(drawn);
             float share = drawn.getWidth() * drawn.getHeight() / (width * (float) height);
             String where = demo.getTitle() + " " + width + "x" + height + " frame " + frame;
             if (share < MIN_SCENE_AREA_SHARE) {

@@ -47,7 +47,7 @@ class ScreenLayoutHeadlessTest {
                 problems.addAll(harness.call(() -> runAndCheck(demo, window[0], window[1])));
             }
             harness.call(() -> {
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
                 return true;
             });
         }
@@ -60,12 +60,12 @@ class ScreenLayoutHeadlessTest {
         for (DemoState demo : demos()) {
             for (int[] window : WINDOWS) {
                 List<String> problems = harness.call(() -> {
-                    demo.layOut(window[0], window[1]);
+                    demo.getDemoHud().layOut(window[0], window[1]);
                     demo.getHud().setHelpVisible(true);
                     List<String> found = check(demo, window[0], window[1], "help");
                     List<String> columns = demo.getHud().getHelpColumnTexts();
                     // The first section is the demo's own keys: it opens the first column.
-                    String help = demo.getHelpText();
+                    String help = demo.getKeys().getHelpText();
                     String ownSection = help.substring(0, help.indexOf("\n\n"));
                     if (!columns.get(0).replaceAll("\\s+", " ")
                             .startsWith(ownSection.replaceAll("\\s+", " "))) {
@@ -74,13 +74,13 @@ class ScreenLayoutHeadlessTest {
                     }
                     // Lines are wrapped to their column: compare with the spaces folded.
                     String all = String.join(" ", columns).replaceAll("\\s+", " ");
-                    for (String line : demo.getHelpText().split("\n")) {
+                    for (String line : demo.getKeys().getHelpText().split("\n")) {
                         if (!all.contains(line.replaceAll("\\s+", " ").strip())) {
                             found.add(demo.getTitle() + ": help column lacks " + line);
                         }
                     }
                     demo.getHud().setHelpVisible(false);
-                    demo.layOut(1280, 720);
+                    demo.getDemoHud().layOut(1280, 720);
                     return found;
                 });
                 assertEquals(List.of(), problems, window[0] + "x" + window[1]);
@@ -94,7 +94,7 @@ class ScreenLayoutHeadlessTest {
         for (int[] window : WINDOWS) {
             List<String> problems = harness.call(() -> {
                 List<String> found = new ArrayList<>();
-                aiming.layOut(window[0], window[1]);
+                aiming.getDemoHud().layOut(window[0], window[1]);
                 for (HelloAimingDemo.Aim aim : HelloAimingDemo.Aim.values()) {
                     aiming.setAim(aim);
                     aiming.setHorizontalSpeed(HelloAimingDemo.MIN_VX);
@@ -122,7 +122,7 @@ class ScreenLayoutHeadlessTest {
                 }
                 aiming.setHorizontalSpeed(HelloAimingDemo.DEFAULT_VX);
                 aiming.setBothAims();
-                aiming.layOut(1280, 720);
+                aiming.getDemoHud().layOut(1280, 720);
                 return found;
             });
             assertEquals(List.of(), problems);
@@ -140,7 +140,7 @@ class ScreenLayoutHeadlessTest {
                 // (warnings), paused; and the help.
                 collectMissing(demo, found);
                 demo.getClock().toggleMode();
-                demo.injectHitch();
+                demo.getRun().injectHitch();
                 for (int frame = 0; frame < 30; ++frame) {
                     demo.update(H);
                     collectMissing(demo, found);
@@ -158,7 +158,7 @@ class ScreenLayoutHeadlessTest {
 
     /** Run a demo for a window size and check its texts every few frames. */
     private static List<String> runAndCheck(DemoState demo, int width, int height) {
-        demo.layOut(width, height);
+        demo.getDemoHud().layOut(width, height);
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         demo.restart();
         List<String> problems = new ArrayList<>();
@@ -174,8 +174,8 @@ class ScreenLayoutHeadlessTest {
 
     /** No two texts overlap, and all are inside the window. */
     private static List<String> check(DemoState demo, int width, int height, String when) {
-        return ScreenChecks.textsApartInside(demo.copyTextRects(new ArrayList<>()), width,
-                height, demo.getTitle() + " " + width + "x" + height + " " + when);
+        return ScreenChecks.textsApartInside(demo.getWindow().copyTextRects(new ArrayList<>()),
+                width, height, demo.getTitle() + " " + width + "x" + height + " " + when);
     }
 
     /** A particle's label covers no other sphere, no point of any trail and no post. */
@@ -184,7 +184,7 @@ class ScreenLayoutHeadlessTest {
         List<String> problems = new ArrayList<>();
         PlaneView plane = demo.getPlaneView();
         List<DemoParticle> particles = demo.getParticles();
-        List<ScreenRect> posts = demo.copyPostRects(new ArrayList<>());
+        List<ScreenRect> posts = demo.getWindow().copyPostRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
             ScreenRect label = demo.getView(particles.get(i)).getLabelRect();

@@ -70,7 +70,7 @@ class SmallWindowHeadlessTest {
                 + (slots ? " with slots" : "") + " ";
         List<String> problems = new ArrayList<>();
         try {
-            demo.layOut(width, height);
+            demo.getDemoHud().layOut(width, height);
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < FRAMES; ++frame) {
@@ -86,7 +86,7 @@ class SmallWindowHeadlessTest {
             demo.getHud().setHelpVisible(false);
             layout.setPanelWidth(0f);
             layout.setGraphSize(0f, 0f);
-            demo.layOut(1280, 720);
+            demo.getDemoHud().layOut(1280, 720);
         }
         return problems;
     }
@@ -99,7 +99,7 @@ class SmallWindowHeadlessTest {
         // area; in a scene a few dozen pixels high (below 640x360) one may stick out of it
         // or touch another, so there only the HUD's texts and slots are checked.
         List<ScreenRect> rects = width >= SCENE_LABELS_WIDTH && height >= SCENE_LABELS_HEIGHT
-                ? demo.copyTextRects(new ArrayList<>())
+                ? demo.getWindow().copyTextRects(new ArrayList<>())
                 : demo.getHud().copyTextRects(new ArrayList<>());
         if (!demo.getHud().isHelpVisible()) {
             rects.add(demo.getHud().getLayout().getSidePanel());

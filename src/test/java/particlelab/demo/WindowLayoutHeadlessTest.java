@@ -61,14 +61,14 @@ class WindowLayoutHeadlessTest {
         DemoState demo = harness.app().getSwitcher().getDemos().get(2);
         String[] shown = harness.call(() -> {
             try {
-                demo.layOut(640, 360, HudScale.MAX_FACTOR);
+                demo.getDemoHud().layOut(640, 360, HudScale.MAX_FACTOR);
                 // The factor the window got: the scale laid out over the one that suits it.
                 float got = demo.getHud().getLayout().getScale() / HudLayout.scaleFor(640, 360);
                 long tenths = Math.round(10.0 * got);
                 return new String[] {demo.getHud().getFooterText().replace("\n    ", " "),
                     tenths / 10 + "." + tenths % 10};
             } finally {
-                demo.layOut(1280, 720);
+                demo.getDemoHud().layOut(1280, 720);
             }
         });
         String footer = shown[0];
@@ -84,7 +84,7 @@ class WindowLayoutHeadlessTest {
         List<String> problems = new ArrayList<>();
         String where = demo.getTitle() + " " + width + "x" + height + " x" + factor + " ";
         try {
-            demo.layOut(width, height, factor);
+            demo.getDemoHud().layOut(width, height, factor);
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             ScreenRect scene = layout.getScene();
@@ -100,7 +100,7 @@ class WindowLayoutHeadlessTest {
         } finally {
             layout.setPanelWidth(0f);
             layout.setGraphSize(0f, 0f);
-            demo.layOut(1280, 720);
+            demo.getDemoHud().layOut(1280, 720);
         }
         return problems;
     }
@@ -108,7 +108,7 @@ class WindowLayoutHeadlessTest {
     /** No two texts (the slots included) intersect, and all are inside the window. */
     private static List<String> check(DemoState demo, int width, int height, String where) {
         List<String> problems = new ArrayList<>();
-        List<ScreenRect> rects = demo.copyTextRects(new ArrayList<>());
+        List<ScreenRect> rects = demo.getWindow().copyTextRects(new ArrayList<>());
         rects.add(demo.getHud().getLayout().getSidePanel());
         rects.add(demo.getHud().getLayout().getGraph());
         problems.addAll(ScreenChecks.textsApartInside(rects, width, height, where));

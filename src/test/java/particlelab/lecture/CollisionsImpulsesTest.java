@@ -136,16 +136,16 @@ class CollisionsImpulsesTest {
         // Home 40 steps from 2.5 s (the paddle's contacts since 1.25 s), then Space: the
         // arrows' contacts and the ΣJ lines belong to the state the ring records.
         CollisionsDemo demo = demo(CollisionsDemo.Preset.PADDLE, 10, 0, 0);
-        StateRing ring = demo.getStateRing();
+        StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[400];
         for (int frame = 0; frame < 150; ++frame) {
             demo.advancePhysics(H);
             lines[(int) ring.getLastIndex()] = ownLines(demo);
         }
         for (int i = 0; i < 40; ++i) {
-            assertTrue(demo.stepBack());
+            assertTrue(demo.getReplayControls().stepBack());
         }
-        long shown = demo.getShownStep();
+        long shown = demo.getRun().getShownStep();
         assertEquals(lines[(int) shown], ownLines(demo), "read back at step " + shown);
         demo.getClock().setPaused(false);
         for (int i = 0; i < 40; ++i) {

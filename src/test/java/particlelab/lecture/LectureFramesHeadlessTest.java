@@ -168,7 +168,7 @@ class LectureFramesHeadlessTest {
             }
             double landedAt = aiming.getClock().getSimulatedSeconds();
             aiming.fire(); // shot 2
-            aiming.layOut(1280, 720);
+            aiming.getDemoHud().layOut(1280, 720);
             for (int frame = 0; frame < 60; ++frame) {
                 aiming.update(H);
             }
@@ -209,7 +209,7 @@ class LectureFramesHeadlessTest {
             bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             bounce.restart();
             bounce.getClock().setPaused(false);
-            StateRing ring = bounce.getStateRing();
+            StateRing ring = bounce.getRun().getStateRing();
             String[] ends = new String[REPLAY_STEPS + 2];
             for (int i = 0; i < REPLAY_STEPS; ++i) {
                 bounce.advance(REPLAY_H);
@@ -217,9 +217,9 @@ class LectureFramesHeadlessTest {
             }
             List<String> found = new ArrayList<>();
             for (int k = 0; k < REPLAY_BACK; ++k) {
-                bounce.stepBack();
+                bounce.getReplayControls().stepBack();
                 bounce.advance(0f);
-                long shown = bounce.getShownStep();
+                long shown = bounce.getRun().getShownStep();
                 String now = graphEnd(bounce.getGraph());
                 if (ends[(int) shown] != null && !ends[(int) shown].equals(now)) {
                     found.add("step " + shown + ": was " + ends[(int) shown] + ", now " + now);
@@ -227,7 +227,7 @@ class LectureFramesHeadlessTest {
             }
             // Going on from the step shown: the graph's clock is that step's.
             bounce.getClock().setPaused(false);
-            long from = bounce.getShownStep();
+            long from = bounce.getRun().getShownStep();
             bounce.advance(REPLAY_H);
             long index = ring.getLastIndex();
             String now = graphEnd(bounce.getGraph());
@@ -464,11 +464,11 @@ class LectureFramesHeadlessTest {
         double gap = harness.call(() -> {
             rotation.restart();
             // The raw steps (F6 off): the box drawn at R, not between two steps.
-            rotation.setInterpolating(false);
+            rotation.getReplayControls().setInterpolating(false);
             for (int i = 0; i < 300; ++i) {
                 rotation.advance(H);
             }
-            rotation.setInterpolating(true);
+            rotation.getReplayControls().setInterpolating(true);
             BoxView view = rotation.getView(0);
             Matrix3f r = rotation.getOrientation(0);
             // The body vertices are symmetric about the centre: their mean is P.
@@ -540,7 +540,7 @@ class LectureFramesHeadlessTest {
                 problems.addAll(harness.call(() -> {
                     List<String> found = new ArrayList<>();
                     String where = preset + (panel ? " panel open" : "");
-                    collisions.layOut(1280, 720);
+                    collisions.getDemoHud().layOut(1280, 720);
                     collisions.choose(preset);
                     if (panel) {
                         HeadlessHarness.press(collisions, "F2");
@@ -602,7 +602,7 @@ class LectureFramesHeadlessTest {
                 found.add(where + ": idle " + particle.getLabel() + " has a label");
             }
         }
-        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
         PlaneView plane = collisions.getPlaneView();
         // The walls are drawn 0.05 m thick outside their planes; a ball's diameter of room
         // (2·RADIUS) beyond them shows the wall as a wall, not as the window's frame.
@@ -627,8 +627,8 @@ class LectureFramesHeadlessTest {
             String where = preset + " " + width + "x" + height + (presenting ? " F8" : "")
                     + " frame ";
             try {
-                collisions.setPresenting(presenting);
-                collisions.layOut(width, height);
+                collisions.getDemoHud().setPresenting(presenting);
+                collisions.getDemoHud().layOut(width, height);
                 collisions.setMasses(0, 0);
                 collisions.setRestitutionTenths(10);
                 collisions.choose(preset);
@@ -637,18 +637,18 @@ class LectureFramesHeadlessTest {
                     check(found, where + frame, frame % 10 == 0);
                 }
             } finally {
-                collisions.setPresenting(false);
-                collisions.layOut(1280, 720);
+                collisions.getDemoHud().setPresenting(false);
+                collisions.getDemoHud().layOut(1280, 720);
             }
             return found;
         });
     }
 
     private static void check(List<String> found, String where, boolean labels) {
-        ScreenRect scene = collisions.copySceneRect(new ScreenRect());
+        ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
         PlaneView plane = collisions.getPlaneView();
         float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
-        List<ScreenRect> texts = collisions.copyTextRects(new ArrayList<>());
+        List<ScreenRect> texts = collisions.getWindow().copyTextRects(new ArrayList<>());
         List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
         checkImpulses(found, where, plane, radius, hud);
         for (DemoParticle particle : collisions.getParticles()) {
