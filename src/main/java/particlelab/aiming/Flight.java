@@ -10,7 +10,10 @@ import particlelab.physics.Validate;
 /**
  * Flies one particle with its scene's integrator, step by step, until it comes down through
  * the ground {@code y = 0}: the lecture's "stop at the ground" for the code that flies shots
- * ahead of time (the aimer's shots, the camera's framing of a launch, the hitch study).
+ * outside a world (the aimer's shots, the camera's framing of a launch, the hitch study,
+ * {@code particle-lab trajectory --until-ground}), or up to its apex ({@link #climb}: the
+ * iterative aimer's framing of a round). A world's particles stop at the ground by the
+ * world's own rule ({@code world.GroundStop}), which the world interpolates.
  *
  * <p>Within a step the particle moves on the straight segment from its old position to its
  * new one (semi-implicit Euler), so where it crossed the ground is found by the same swept
@@ -113,6 +116,25 @@ public final class Flight {
      */
     public double crossingY(double fraction) {
         return previous.y + fraction * ((double) current.y - previous.y);
+    }
+
+    /**
+     * Step the particle while it rises ({@code V.y > 0}), at most maxSteps steps: it stops at
+     * the first state whose velocity no longer points up, the step after the highest state
+     * of the stepped path (lower than it by at most {@code h·|V.y|}). Allocates nothing.
+     *
+     * @param particle the particle (not null, modified: stepped)
+     * @param stepSeconds h (in seconds, finite, &gt;0)
+     * @param maxSteps give up after this many steps (&ge;0)
+     * @return the number of steps taken (0 if it was not rising)
+     */
+    public int climb(Particle particle, float stepSeconds, int maxSteps) {
+        int steps = 0;
+        while (steps < maxSteps && particle.velocity.y > 0f) {
+            integrator.step(particle, stepSeconds);
+            ++steps;
+        }
+        return steps;
     }
 
     /**

@@ -2,6 +2,7 @@ package particlelab.app;
 
 import com.jme3.math.Vector3f;
 import java.io.PrintStream;
+import particlelab.aiming.Flight;
 import particlelab.physics.EnergyLedger;
 import particlelab.physics.Gravity;
 import particlelab.physics.NonFiniteStepException;
@@ -190,7 +191,9 @@ public final class TrajectoryCommand {
     }
 
     /**
-     * Step a copy of the start, printing each state to out if out is not null.
+     * Step a copy of the start with the one flight helper ({@link Flight}), printing each
+     * state to out if out is not null. From a start at {@code y ≥ 0} the first step whose
+     * segment comes down through the ground is the first with {@code y < 0}.
      *
      * @param maxSteps the steps to take, or the most to take until the ground
      * @param untilGround stop after the first step with y &lt; 0
@@ -202,6 +205,7 @@ public final class TrajectoryCommand {
             int maxSteps, boolean untilGround, PrintStream out, boolean energy) {
         Particle particle = new Particle();
         particle.copyFrom(start);
+        Flight flight = new Flight(integrator);
         Particle atStart = new Particle();
         StringBuilder row = new StringBuilder();
         EnergyLedger ledger = new EnergyLedger();
@@ -214,8 +218,9 @@ public final class TrajectoryCommand {
         }
         for (int n = 1; n <= maxSteps; ++n) {
             atStart.copyFrom(particle);
+            double landing;
             try {
-                integrator.step(particle, stepSeconds);
+                landing = flight.step(particle, stepSeconds);
             } catch (NonFiniteStepException nonFinite) {
                 throw CommandSupport.blewUp(stepSeconds, "at step " + n,
                         integrator.maxStableStep(start));
@@ -232,7 +237,7 @@ public final class TrajectoryCommand {
                     return n;
                 }
             }
-            if (untilGround && particle.position.y < 0f) {
+            if (untilGround && landing != Flight.NO_LANDING) {
                 return n;
             }
         }

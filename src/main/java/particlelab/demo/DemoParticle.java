@@ -2,31 +2,29 @@ package particlelab.demo;
 
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
-import java.util.function.Consumer;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.world.Body;
+import particlelab.world.GroundStop;
 import particlelab.world.StateSlab;
 
 /**
  * One particle of a demo with everything the base class needs to run and draw it: the
- * {@link Body} of the demo's world (the particle and the integrator holding the forces that
- * act on it), its launch state (for reset), a label and a colour. Create them with
- * {@link DemoState#addParticle}.
+ * {@link Body} of the demo's world (the particle, the integrator holding the forces that act
+ * on it, its launch state for reset and its flight time), a label, a colour and the record
+ * of its states for the export. Create them with {@link DemoState#addParticle}.
  *
  * <p>A particle can be <em>held</em>: it is not stepped (a bullet still in the gun, or one
  * that has landed). A particle told to {@link #stopAtGround() stop at the ground} is held at
  * the point where it crossed {@code y = 0} inside the step, as in the lecture: by its demo
- * world's ground stop rule (the ground plane, the swept test and the stick response), so the
- * landing is a contact the world's listeners and log see like any other.
+ * world's {@link GroundStop} (the ground plane, the swept test and the stick response), so
+ * the landing is a contact the world's listeners and log see like any other, and the stop
+ * keeps the landing this class reports.
  */
 public final class DemoParticle {
 
-    /**
-     * The ints of {@link #writeState}: 3 flags, x, 2 doubles, the launch state, the record's
-     * counters.
-     */
-    static final int STATE_INTS = 3 + 1 + 2 * 2 + 6 + TrajectoryRecord.STATE_INTS;
+    /** The ints of {@link #writeState}: a flag and the record's counters. */
+    static final int STATE_INTS = 1 + TrajectoryRecord.STATE_INTS;
 
     private String label;
     private final ColorRGBA color;
@@ -35,27 +33,19 @@ public final class DemoParticle {
     private final ParticleIntegrator integrator;
     /** The forces its exact ghost follows: its own integrator's, unless a lane says. */
     private ParticleIntegrator pathIntegrator;
-    private final Vector3f launchPosition = new Vector3f();
-    private final Vector3f launchVelocity = new Vector3f();
     /** Every state since the launch, for the export. */
     private final TrajectoryRecord record = new TrajectoryRecord();
-    private boolean stopsAtGround;
-    /** Registers the particle with its demo's ground stop rule. */
-    private final Consumer<DemoParticle> groundStop;
+    /** The demo world's stop at the ground, which keeps the landing. */
+    private final GroundStop groundStop;
+    /** The particle's place in the ground stop, or -1 if it does not stop there. */
+    private int groundIndex = -1;
     /** Set by the base class before each step: the world steps this particle in it. */
     boolean steppedThisStep;
-    /** The world's ground stop landed the particle in the current step. */
-    boolean landedThisStep;
-    private boolean landed;
     private boolean parked;
-    private float landingX = Float.NaN;
-    private double landingSeconds = Double.NaN;
-    private double flightSeconds;
     /** The particle's place in its demo's list (0 for the first added). */
     final int index;
 
-    DemoParticle(int index, String label, ColorRGBA color, Body body,
-            Consumer<DemoParticle> groundStop) {
+    DemoParticle(int index, String label, ColorRGBA color, Body body, GroundStop groundStop) {
         this.index = index;
         this.label = label;
         this.groundStop = groundStop;
@@ -64,8 +54,6 @@ public final class DemoParticle {
         this.particle = body.getParticle();
         this.integrator = body.getIntegrator();
         this.pathIntegrator = integrator;
-        launchPosition.set(particle.position);
-        launchVelocity.set(particle.velocity);
     }
 
     /**
@@ -74,9 +62,8 @@ public final class DemoParticle {
      * @return this
      */
     public DemoParticle stopAtGround() {
-        if (!stopsAtGround) {
-            stopsAtGround = true;
-            groundStop.accept(this);
+        if (groundIndex < 0) {
+            groundIndex = groundStop.add(body);
         }
         return this;
     }
@@ -87,7 +74,7 @@ public final class DemoParticle {
      * @return true if it does
      */
     public boolean stopsAtGround() {
-        return stopsAtGround;
+        return groundIndex >= 0;
     }
 
     /**
@@ -187,7 +174,7 @@ public final class DemoParticle {
      * @return storeResult
      */
     public Vector3f copyLaunchPosition(Vector3f storeResult) {
-        return storeResult.set(launchPosition);
+        return body.copyLaunchPosition(storeResult);
     }
 
     /**
@@ -197,7 +184,7 @@ public final class DemoParticle {
      * @return storeResult
      */
     public Vector3f copyLaunchVelocity(Vector3f storeResult) {
-        return storeResult.set(launchVelocity);
+        return body.copyLaunchVelocity(storeResult);
     }
 
     /**
@@ -209,8 +196,6 @@ public final class DemoParticle {
     public void setLaunch(Vector3f position, Vector3f velocity) {
         particle.setState(position, velocity);
         body.setLaunch(position, velocity);
-        launchPosition.set(position);
-        launchVelocity.set(velocity);
     }
 
     /**
@@ -266,7 +251,7 @@ public final class DemoParticle {
      * @return true if it landed
      */
     public boolean hasLanded() {
-        return landed;
+        return groundIndex >= 0 && groundStop.hasLanded(groundIndex);
     }
 
     /**
@@ -275,7 +260,7 @@ public final class DemoParticle {
      * @return x (in metres; NaN if it has not landed)
      */
     public float getLandingX() {
-        return landingX;
+        return groundIndex < 0 ? Float.NaN : groundStop.getLandingX(groundIndex);
     }
 
     /**
@@ -284,84 +269,58 @@ public final class DemoParticle {
      * @return the time (in seconds; NaN if it has not landed)
      */
     public double getLandingSeconds() {
-        return landingSeconds;
+        return groundIndex < 0 ? Double.NaN : groundStop.getLandingSeconds(groundIndex);
     }
 
     /**
-     * Return the simulated time this particle has been stepped since its launch.
+     * Return the simulated time this particle has been stepped since its launch: its body's
+     * ({@link Body#getFlightSeconds()}; during a step's contacts, the step's start).
      *
      * @return the time (in seconds, &ge;0)
      */
     public double getFlightSeconds() {
-        return flightSeconds;
+        return body.getFlightSeconds();
     }
 
     /**
-     * Count a step the particle just took. Allocates nothing.
+     * Access the state the step just taken left the particle in, as the Euler step gave it:
+     * on its landing step the state below the ground that the ground stop kept before it
+     * moved the particle to the crossing (what {@code trajectory --until-ground} prints
+     * last), else the particle itself.
      *
-     * @param stepSeconds h of the step (in seconds, &gt;0)
+     * @return the live state (not null, do not modify)
      */
-    void countStep(float stepSeconds) {
-        flightSeconds += stepSeconds;
+    Particle getSteppedState() {
+        if (groundIndex >= 0 && groundStop.hasLandedThisStep(groundIndex)) {
+            return groundStop.getStateBelowGround(groundIndex);
+        }
+        return particle;
     }
 
     /**
-     * Record the landing the world's ground stop just resolved: the stick response left the
-     * particle held at the crossing of {@code y = 0} on the step's straight segment. Called
-     * from the contact's epilogue, before {@link #countStep} counts the step.
-     *
-     * @param fraction when inside the step it crossed (0 to 1)
-     * @param stepSeconds h of the step (in seconds, &gt;0)
-     */
-    void recordLanding(float fraction, float stepSeconds) {
-        landed = true;
-        landedThisStep = true;
-        landingX = particle.position.x;
-        landingSeconds = flightSeconds + (double) fraction * stepSeconds;
-        // On the ground exactly: the segment's point is y = 0 to float round-off.
-        particle.position.y = 0f;
-    }
-
-    /**
-     * Write the particle's own per-step state (landing, flight time, the export record's
-     * counters) into a state slab: {@link #STATE_INTS} ints. Allocates nothing.
+     * Write the particle's own per-step state (whether it was stepped, the export record's
+     * counters) into a state slab: {@link #STATE_INTS} ints. Its launch state and flight time
+     * are its body's, its landing the ground stop's: each is recorded there. Allocates
+     * nothing.
      */
     void writeState(StateSlab slab) {
         slab.putBoolean(steppedThisStep);
-        slab.putBoolean(landedThisStep);
-        slab.putBoolean(landed);
-        slab.putFloat(landingX);
-        slab.putDouble(landingSeconds);
-        slab.putDouble(flightSeconds);
-        slab.putVector(launchPosition);
-        slab.putVector(launchVelocity);
         record.writeState(slab);
     }
 
     /** Read back what {@link #writeState} wrote. */
     void readState(StateSlab slab) {
         steppedThisStep = slab.getBoolean();
-        landedThisStep = slab.getBoolean();
-        landed = slab.getBoolean();
-        landingX = slab.getFloat();
-        landingSeconds = slab.getDouble();
-        flightSeconds = slab.getDouble();
-        slab.getVector(launchPosition);
-        slab.getVector(launchVelocity);
         record.readState(slab);
     }
 
-    /** Put the particle back to its launch state, not held, not landed. */
+    /** Put the particle back to its launch state, not held, not landed, flight time 0. */
     void restart() {
-        particle.position.set(launchPosition);
-        particle.velocity.set(launchVelocity);
-        // A launch is no step: the view draws it where it is, not between two states.
-        body.settle();
-        body.setHeld(false);
-        landed = false;
-        landingX = Float.NaN;
-        landingSeconds = Double.NaN;
-        flightSeconds = 0.0;
+        // A launch is no step: the body stands where it is for the view, not between states.
+        body.restart();
+        if (groundIndex >= 0) {
+            groundStop.restart(groundIndex);
+        }
         record.clear();
     }
 }

@@ -6,19 +6,14 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import particlelab.physics.NonFiniteStepException;
-import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.world.Body;
-import particlelab.world.Contact;
-import particlelab.world.ContactListener;
-import particlelab.world.Detection;
-import particlelab.world.ScriptedResponse;
+import particlelab.world.GroundStop;
 import particlelab.world.StateRecord;
 import particlelab.world.StateRing;
 import particlelab.world.StateSlab;
 import particlelab.world.StepListener;
-import particlelab.world.SurfaceRule;
 import particlelab.world.World;
 
 /**
@@ -34,8 +29,9 @@ import particlelab.world.World;
  * which decides the steps; the {@link World} takes each one: it moves every particle with its
  * own integrator, then detects, resolves and propagates the contacts of its rules. The run
  * hears each step as a {@link StepListener}: the stability warnings look at the particles
- * before it, and after it the export rows, the lecture's stop at the ground and the demo's
- * hooks ({@link Hooks}) run. After every step the ring records the whole state.
+ * before it, and after it the export rows and the demo's hooks ({@link Hooks}) run. The
+ * lecture's stop at the ground is the world's {@link GroundStop}. After every step the ring
+ * records the whole state.
  */
 public final class DemoRun {
 
@@ -80,6 +76,11 @@ public final class DemoRun {
     private final Hooks hooks;
     private final SimulationClock clock = new SimulationClock();
     private final World world = new World();
+    /**
+     * The lecture's stop at the ground, for the particles told to
+     * {@link DemoParticle#stopAtGround}: it joins the world with the first of them.
+     */
+    private final GroundStop groundStop = new GroundStop(world);
     private final List<DemoParticle> particles = new ArrayList<>();
     private final List<DemoParticle> particlesView = Collections.unmodifiableList(particles);
     /** The values of the demo's parameters (their panel is the view's). */
@@ -98,15 +99,16 @@ public final class DemoRun {
     private final List<StateRecord> viewRecords = new ArrayList<>();
     /**
      * The demo's whole state, one ring entry: t and each particle's P and V first (what the
-     * export of the recorded span reads), then the world, each particle's own counters, the
-     * declared records in the order declared, and what the views show of the state (the
-     * exact ghosts, how many shots were kept), so a step back shows them as they were.
+     * export of the recorded span reads), then the world, the ground stop's landings, each
+     * particle's own counters, the declared records in the order declared, and what the views
+     * show of the state (the exact ghosts, how many shots were kept), so a step back shows
+     * them as they were.
      */
     private final StateRecord wholeState = new StateRecord() {
         @Override
         public int countStateInts() {
             int ints = 2 + particles.size() * (6 + DemoParticle.STATE_INTS)
-                    + world.countStateInts();
+                    + world.countStateInts() + groundStop.countStateInts();
             for (int i = 0; i < stateRecords.size(); ++i) {
                 ints += stateRecords.get(i).countStateInts();
             }
@@ -124,6 +126,7 @@ public final class DemoRun {
                 slab.putVector(particles.get(i).getParticle().velocity);
             }
             world.writeState(slab);
+            groundStop.writeState(slab);
             for (int i = 0; i < particles.size(); ++i) {
                 particles.get(i).writeState(slab);
             }
@@ -142,6 +145,7 @@ public final class DemoRun {
                 slab.getFloat();
             }
             world.readState(slab);
+            groundStop.readState(slab);
             for (int i = 0; i < particles.size(); ++i) {
                 particles.get(i).readState(slab);
             }
@@ -168,35 +172,6 @@ public final class DemoRun {
             finishStep(stepSeconds);
         }
     };
-    /**
-     * The lecture's stop at the ground, as a rule of the world: the plane y = 0, the swept
-     * test and the stick response, for the particles told to {@link DemoParticle#stopAtGround}
-     * (created with the first of them).
-     */
-    private SurfaceRule groundStop;
-    /** Tells a particle the ground stop landed it, with when in the step. */
-    private final ContactListener landings = new ContactListener() {
-        @Override
-        public void resolved(Contact contact, World stepping) {
-            if (contact.getRule() != groundStop) {
-                return;
-            }
-            for (int i = 0; i < particles.size(); ++i) {
-                DemoParticle particle = particles.get(i);
-                if (particle.getBody() == contact.getBodyA()) {
-                    particle.recordLanding(contact.getFraction(), currentStepSeconds);
-                }
-            }
-        }
-    };
-    /** h of the step under way (s). */
-    private float currentStepSeconds;
-    /** Scratch: a particle's position before its step (m). */
-    private final Vector3f previousPosition = new Vector3f();
-    /** Scratch: a particle's velocity before its step (m/s). */
-    private final Vector3f previousVelocity = new Vector3f();
-    /** Scratch: a landed particle's step without the ground, for its export row. */
-    private final Particle freeStep = new Particle();
     private float pendingHitchSeconds;
     private int blowUps;
     /** A restart asked for inside a step: done once the frame's steps are over. */
@@ -232,7 +207,7 @@ public final class DemoRun {
             Vector3f velocity, float massKg, ParticleIntegrator integrator) {
         Body body = world.addBody(integrator, position, velocity, massKg, 0f);
         DemoParticle particle = new DemoParticle(particles.size(), label, color, body,
-                this::joinGroundStop);
+                groundStop);
         particles.add(particle);
         return particle;
     }
@@ -291,6 +266,15 @@ public final class DemoRun {
      */
     public World getWorld() {
         return world;
+    }
+
+    /**
+     * Access the lecture's stop at the ground: the landings of the particles that stop there.
+     *
+     * @return the live stop (not null; on the world once a particle stops at the ground)
+     */
+    public GroundStop getGroundStop() {
+        return groundStop;
     }
 
     /**
@@ -499,10 +483,8 @@ public final class DemoRun {
     /** Before the world moves anything: which particles it steps, and what h does to them. */
     private void observeParticles(float stepSeconds) {
         warnings.beginStep(stepSeconds);
-        currentStepSeconds = stepSeconds;
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle demoParticle = particles.get(i);
-            demoParticle.landedThisStep = false;
             demoParticle.steppedThisStep = !demoParticle.isHeld();
             if (demoParticle.steppedThisStep) {
                 demoParticle.getRecord().begin(demoParticle.getParticle());
@@ -513,8 +495,8 @@ public final class DemoRun {
     }
 
     /**
-     * After the world's step: the export's rows, the stop at the ground, the demo's hooks.
-     * The trails are the view's: the scene's own listener writes them.
+     * After the world's step: the export's rows, the demo's hooks. The trails are the view's:
+     * the scene's own listener writes them.
      */
     private void finishStep(float stepSeconds) {
         for (int i = 0; i < particles.size(); ++i) {
@@ -524,38 +506,9 @@ public final class DemoRun {
             }
             // The export's row: the stepped state, the landing step's as the Euler step left
             // it below the ground (what `trajectory --until-ground` prints last).
-            demoParticle.getRecord().add(demoParticle.landedThisStep
-                    ? stepWithoutGround(demoParticle, stepSeconds)
-                    : demoParticle.getParticle(), stepSeconds);
-            demoParticle.countStep(stepSeconds);
+            demoParticle.getRecord().add(demoParticle.getSteppedState(), stepSeconds);
         }
         hooks.afterStep(stepSeconds);
         warnings.endStep();
-    }
-
-    /**
-     * Put a particle under the world's ground stop rule, made with the first particle that
-     * stops at the ground.
-     */
-    private void joinGroundStop(DemoParticle particle) {
-        if (groundStop == null) {
-            groundStop = SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT);
-            world.addRule(groundStop);
-            world.addContactListener(landings);
-        }
-        groundStop.limitTo(particle.getBody());
-    }
-
-    /**
-     * Redo a landed particle's last step without the ground: the same integrator from the same
-     * state, so the same bits the world's integration gave before the stick moved it.
-     */
-    private Particle stepWithoutGround(DemoParticle particle, float stepSeconds) {
-        Body body = particle.getBody();
-        freeStep.setMass(body.getMass());
-        freeStep.setState(body.copyPreviousPosition(previousPosition),
-                body.copyPreviousVelocity(previousVelocity));
-        particle.getIntegrator().step(freeStep, stepSeconds);
-        return freeStep;
     }
 }

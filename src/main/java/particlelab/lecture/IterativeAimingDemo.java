@@ -7,6 +7,7 @@ import java.util.List;
 import particlelab.aiming.AimResult;
 import particlelab.aiming.AimStrategy;
 import particlelab.aiming.Duel;
+import particlelab.aiming.Flight;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.PredictorMismatch;
@@ -170,8 +171,10 @@ public final class IterativeAimingDemo extends DemoState {
     /** The last shot landed and the plan has more: fire the next at the next step's start. */
     private boolean nextShotDue;
     private final Vector3f launchVelocity = new Vector3f();
-    /** Steps a shot up to its apex, to frame it. */
+    /** A shot flown up to its apex, to frame it. */
     private final Particle apexProbe = new Particle();
+    /** Flies the apex probe with the aimer's integrator. */
+    private final Flight apexFlight = new Flight(aimerIntegrator);
     private AimStrategy strategy = AimStrategy.LECTURE;
     private Drag drag = Drag.LINEAR;
     private boolean instant;
@@ -891,9 +894,8 @@ public final class IterativeAimingDemo extends DemoState {
         for (int i = firstFlown; i < plan.size(); ++i) {
             apexProbe.position.zero();
             apexProbe.velocity.set(plan.getHorizontalSpeed(i), plan.getVerticalSpeed(i), 0f);
-            while (apexProbe.velocity.y > 0f) {
-                aimerIntegrator.step(apexProbe, flyStep);
-            }
+            // A shot still climbing after a flight's limit is far above MAX_VIEW_TOP.
+            apexFlight.climb(apexProbe, flyStep, (int) Math.ceil(MAX_FLIGHT_SECONDS / flyStep));
             highest = Math.max(highest, apexProbe.position.y);
         }
         setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest)));

@@ -48,6 +48,8 @@ public final class Body {
     final Vector3f sweepStart = new Vector3f();
     /** Swept detection: when inside the step the current segment starts (0 to 1). */
     float sweepFraction;
+    /** The world integrated this body in the current (or last) step: its flight time grows. */
+    boolean integratedThisStep;
 
     private final Vector3f launchPosition = new Vector3f();
     private final Vector3f launchVelocity = new Vector3f();
@@ -93,13 +95,18 @@ public final class Body {
         group = DEFAULT_GROUP;
         mask = ALL_GROUPS;
         removalPending = false;
+        integratedThisStep = false;
         rigidBody = null;
         rotationIntegrator = null;
         restart();
     }
 
-    /** Put the body back to its launch state, in flight, at the start of a step. */
-    void restart() {
+    /**
+     * Put the body back to its launch state: in flight (not held), flight time 0, no script
+     * running, standing where it is for a view's blend ({@link #settle}). {@link World#restart}
+     * does this for every body; a demo relaunching one shot calls it for that body alone.
+     */
+    public void restart() {
         particle.setState(launchPosition, launchVelocity);
         held = false;
         flightSeconds = 0.0;
@@ -362,7 +369,10 @@ public final class Body {
     }
 
     /**
-     * Return how long the body has been integrated since its launch or restart.
+     * Return how long the body has been integrated since its launch or restart. A step counts
+     * once its contacts are over, as in {@link World#getTimeSeconds()}: during a step's
+     * contacts (a rule, a response, a {@link ContactListener}) this is the time at the step's
+     * start, so a contact's time since the launch is this plus {@code fraction·h}.
      *
      * @return the flight time (in seconds, &ge;0)
      */

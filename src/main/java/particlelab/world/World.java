@@ -36,7 +36,8 @@ import particlelab.rigid.RigidBody;
  * {@link #getMaxResolutionIterations()} resolutions (Cyclone's resolver);</li>
  * <li><b>epilogue</b>: {@link ContactListener#resolved} for every resolved contact of the
  * step, in time order, then every contact goes into the {@link ContactLog}; bodies destroyed
- * during the step leave the world only now;</li>
+ * during the step leave the world only now; then the step counts into the world's time and
+ * the flight time of every body it integrated ({@link Body#getFlightSeconds()});</li>
  * <li>{@link StepListener#afterStep}: listeners observe the step (records, readouts, views);
  * they move nothing. A demo that needs another simulation beside this one steps it beside the
  * world, with the same clock, not inside its step.</li>
@@ -652,6 +653,7 @@ public final class World implements SimulationClock.Stepper, StateRecord {
                 remove(removals.get(i));
             }
             removals.clear();
+            countFlightTime(stepSeconds);
             timeSeconds = startSeconds + stepSeconds;
             ++stepCount;
             if (auditingListeners) {
@@ -720,18 +722,31 @@ public final class World implements SimulationClock.Stepper, StateRecord {
             Body body = bodies.get(i);
             body.previousPosition.set(body.particle.position);
             body.previousVelocity.set(body.particle.velocity);
-            if (!body.isHeld()) {
+            body.integratedThisStep = !body.isHeld();
+            if (body.integratedThisStep) {
                 body.getIntegrator().step(body.particle, stepSeconds);
                 RigidBody rigid = body.getRigidBody();
                 if (rigid != null) {
                     // Translation first, then rotation: the lecture's order (RigidBody.step).
                     body.getRotationIntegrator().step(rigid, stepSeconds);
                 }
-                body.addFlightSeconds(stepSeconds);
             }
             body.gainedVelocity.set(body.particle.velocity).subtractLocal(body.previousVelocity);
             body.sweepStart.set(body.previousPosition);
             body.sweepFraction = 0f;
+        }
+    }
+
+    /**
+     * Count the step into the flight time of every body it integrated, once its contacts are
+     * over, as the world's own time: during the contacts both are the step's start.
+     */
+    private void countFlightTime(float stepSeconds) {
+        for (int i = 0; i < bodies.size(); ++i) {
+            Body body = bodies.get(i);
+            if (body.integratedThisStep) {
+                body.addFlightSeconds(stepSeconds);
+            }
         }
     }
 

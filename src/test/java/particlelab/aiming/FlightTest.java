@@ -95,6 +95,28 @@ class FlightTest {
         throw new AssertionError("300 m/s reaches x = 4 m within the first steps of 1/60 s");
     }
 
+    @Test
+    void climbStopsAtTheFirstStateThatNoLongerRises() {
+        // Gravity from vy = 10 m/s, h = 1/60 s: vy_n = 10 − n·g·h first reaches <= 0 at
+        // n = ceil(10/(9.8/60)) = 62 (61.2 in exact arithmetic: not near a whole step, so
+        // float round-off cannot move it).
+        ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+        Flight flight = new Flight(gravity);
+        Particle climbed = particle(0f, 0f, 5f, 10f);
+        assertEquals(62, flight.climb(climbed, H, 1_000));
+        // The same steps, done directly: bit for bit.
+        Particle reference = particle(0f, 0f, 5f, 10f);
+        for (int n = 0; n < 62; ++n) {
+            gravity.step(reference, H);
+        }
+        assertEquals(reference.position, climbed.position);
+        assertEquals(reference.velocity, climbed.velocity);
+        assertTrue(climbed.velocity.y <= 0f);
+        // The cap stops it early; a particle not rising takes no step.
+        assertEquals(10, flight.climb(particle(0f, 0f, 5f, 10f), H, 10));
+        assertEquals(0, flight.climb(particle(0f, 3f, 5f, 0f), H, 1_000));
+    }
+
     private static Particle particle(float x, float y, float vx, float vy) {
         return new Particle(new Vector3f(x, y, 0f), new Vector3f(vx, vy, 0f), 1f);
     }

@@ -1,14 +1,18 @@
 package particlelab.demo;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.app.DemoCatalog;
+import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
+import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 
 /**
@@ -54,6 +58,64 @@ class DemoPhysicsTest {
     }
 
     @Test
+    void aLandingStepIsIntegratedOnceAndItsExportRowIsTheStateBelowTheGround() {
+        // A force that adds nothing and counts the integrator's calls of it.
+        int[] calls = new int[1];
+        Force counting = new Force() {
+            @Override
+            public void addForce(Particle particle, Vector3f netForce) {
+                ++calls[0];
+            }
+
+            @Override
+            public String describe() {
+                return "nothing, counted";
+            }
+        };
+        DemoRun run = new DemoRun(new NoHooks());
+        DemoParticle shot = run.addParticle("shot", ColorRGBA.White, Vector3f.ZERO,
+                new Vector3f(20f, 30f, 0f), 1f,
+                new ParticleIntegrator(new Gravity(), counting)).stopAtGround();
+        run.advancePhysics(H);
+        // The calls of one step: the integration's, and the stability warning's look at the
+        // forces before it.
+        int callsPerStep = calls[0];
+        int frames = 1;
+        while (!shot.hasLanded()) {
+            assertTrue(frames < 1_000, "never landed");
+            run.advancePhysics(H);
+            ++frames;
+        }
+        // One fixed step per frame of exactly h; the landing step's row is the last.
+        TrajectoryRecord record = shot.getRecord();
+        assertEquals(frames + 1, record.size());
+        assertEquals(frames * callsPerStep, calls[0],
+                "each step integrated once, the landing step too");
+
+        // The same Euler steps, done directly: the last row is the landing step's state below
+        // the ground, as `trajectory --until-ground` prints it, bit for bit.
+        Particle reference = new Particle(Vector3f.ZERO, new Vector3f(20f, 30f, 0f), 1f);
+        ParticleIntegrator gravity = new ParticleIntegrator(new Gravity());
+        for (int i = 0; i < frames; ++i) {
+            gravity.step(reference, H);
+        }
+        int last = frames;
+        assertTrue(record.get(last, 2) < 0f, "below the ground");
+        float[] expected = {reference.position.x, reference.position.y, reference.position.z,
+            reference.velocity.x, reference.velocity.y, reference.velocity.z};
+        for (int column = 1; column <= 6; ++column) {
+            assertEquals(expected[column - 1], record.get(last, column), 0f, "column " + column);
+        }
+        // The particle itself rests at the crossing, and the landing is the ground stop's.
+        assertEquals(0f, shot.getParticle().position.y, 0f);
+        assertEquals(shot.getParticle().position.x, shot.getLandingX(), 0f);
+        assertEquals(run.getGroundStop().getLandingSeconds(0), shot.getLandingSeconds(), 0.0);
+        assertTrue(shot.getLandingSeconds() > (frames - 1) * (double) H
+                && shot.getLandingSeconds() < frames * (double) H);
+        assertEquals(frames * (double) H, shot.getFlightSeconds(), 1e-12);
+    }
+
+    @Test
     void everyDemoIsSteppedByItsWorldOneWorldStepPerClockStep() {
         for (DemoState demo : demos()) {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
@@ -95,5 +157,36 @@ class DemoPhysicsTest {
         List<DemoState> demos = new ArrayList<>(DemoCatalog.createAll());
         demos.add(new DemoStateHeadlessTest.StiffDemo());
         return demos;
+    }
+
+    /** A run's hooks for a run without a demo: nothing to declare, nothing to show. */
+    private static final class NoHooks implements DemoRun.Hooks {
+        @Override
+        public void prepare() {
+        }
+
+        @Override
+        public void beforeStep(float stepSeconds) {
+        }
+
+        @Override
+        public void afterStep(float stepSeconds) {
+        }
+
+        @Override
+        public void beforeRestart() {
+        }
+
+        @Override
+        public void particlesRestarted() {
+        }
+
+        @Override
+        public void restarted() {
+        }
+
+        @Override
+        public void changed() {
+        }
     }
 }

@@ -418,6 +418,46 @@ class WorldTest {
         return null;
     }
 
+    @Test
+    void flightTimeCountsAStepOnceItsContactsAreOverAsTheWorldsTimeDoes() {
+        World world = new World();
+        Body ball = world.addBody(new ParticleIntegrator(new Gravity()),
+                new Vector3f(0f, 0.1f, 0f), Vector3f.ZERO, 1f, 0f);
+        world.addRule(SurfaceRule.ground(ScriptedResponse.stick(), Detection.SWEPT));
+        double[] seen = {Double.NaN, Double.NaN, Double.NaN};
+        world.addContactListener(new ContactListener() {
+            @Override
+            public boolean accept(Contact contact, World w) {
+                seen[0] = contact.getBodyA().getFlightSeconds();
+                return true;
+            }
+
+            @Override
+            public void resolved(Contact contact, World w) {
+                seen[1] = contact.getBodyA().getFlightSeconds();
+                seen[2] = w.getTimeSeconds();
+            }
+        });
+        double start = 0.0;
+        int steps = 0;
+        while (!ball.isHeld()) {
+            assertTrue(steps < 100, "never landed");
+            if (steps > 0) {
+                start += H;
+            }
+            world.step(H);
+            ++steps;
+        }
+        // During the landing step's contacts: the step's start, for time and flight alike,
+        // so a contact's time since the launch is the flight time plus fraction·h.
+        assertEquals(start, seen[0], 0.0);
+        assertEquals(start, seen[1], 0.0);
+        assertEquals(start, seen[2], 0.0);
+        assertEquals(start + H, ball.getFlightSeconds(), 0.0);
+        world.step(H);
+        assertEquals(start + H, ball.getFlightSeconds(), 0.0, "held: no flight");
+    }
+
     private static void assertBitwiseEqual(Particle expected, Particle actual) {
         assertEquals(expected.position.x, actual.position.x);
         assertEquals(expected.position.y, actual.position.y);
