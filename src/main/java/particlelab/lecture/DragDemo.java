@@ -77,6 +77,7 @@ public final class DragDemo extends DemoState {
     static final String SLIDE_DRAG = "slide-drag";
     private static final String[] FAULTS = {SLIDE_DRAG};
     private static final String[] FAULT_TITLES = {"the slide's -c|V|²V as quadratic drag"};
+    private static final String[] FAULT_LABELS = {"slide's |V|²V"};
     /** The longest flight flown ahead for the fault's consequence (steps): 5.5 min at 60 Hz. */
     private static final int MAX_FLIGHT_STEPS = 20_000;
 
@@ -96,7 +97,7 @@ public final class DragDemo extends DemoState {
     /** The quadratic sphere's gravity, which the fault's flights read too. */
     private final Gravity quadraticGravity = new Gravity();
     /** The bug hunt's switch: the slide's form on the third sphere, unannounced. */
-    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES);
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
     /** The consequence: the third sphere's landing x, slide form and physical (m). */
     private double faultyLandingX = Double.NaN;
     private double correctLandingX = Double.NaN;

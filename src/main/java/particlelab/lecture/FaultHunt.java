@@ -35,8 +35,10 @@ final class FaultHunt {
 
     /** The faults' names, as {@code --set fault=} takes them. */
     private final String[] ids;
-    /** What each fault is, for the HUD and the label. */
+    /** What each fault is, for the HUD ... */
     private final String[] titles;
+    /** ... and in two or three words for the sphere's label, which must stay short. */
+    private final String[] labels;
     /** The switch's values: none, the faults, random. */
     private final String[] choices;
     /** The switch as set: 0 none, 1 to n a fault, n + 1 random. */
@@ -49,14 +51,17 @@ final class FaultHunt {
      *
      * @param ids the faults' command-line names, e.g. "p-before-v" (at least 1; copied)
      * @param titles what each one is, in a few words, e.g. "P updated before V" (copied)
+     * @param labels each one in two or three words for the label, e.g. "P before V" (copied)
      */
-    FaultHunt(String[] ids, String[] titles) {
-        if (ids.length < 1 || ids.length != titles.length) {
+    FaultHunt(String[] ids, String[] titles, String[] labels) {
+        if (ids.length < 1 || ids.length != titles.length || ids.length != labels.length) {
             throw new IllegalArgumentException("a bug hunt needs at least one fault and a"
-                    + " title for each, but had " + ids.length + " and " + titles.length);
+                    + " title and a label for each, but had " + ids.length + ", "
+                    + titles.length + " and " + labels.length);
         }
         this.ids = ids.clone();
         this.titles = titles.clone();
+        this.labels = labels.clone();
         choices = new String[ids.length + 2];
         choices[0] = NONE;
         System.arraycopy(ids, 0, choices, 1, ids.length);
@@ -148,7 +153,7 @@ final class FaultHunt {
     }
 
     /**
-     * Write a sphere's label with the fault it runs: as given with none, "[FAULT: title]"
+     * Write a sphere's label with the fault it runs: as given with none, "[FAULT: label]"
      * when one is on and shown, "[FAULT: ?]" while hidden. Called at a launch or a reveal.
      *
      * @param base the sphere's own label (not null)
@@ -159,7 +164,7 @@ final class FaultHunt {
         if (fault == 0) {
             return base;
         }
-        return base + "  [FAULT: " + (isHidden() ? "?" : titles[fault - 1]) + "]";
+        return base + "  [FAULT: " + (isHidden() ? "?" : labels[fault - 1]) + "]";
     }
 
     /**
@@ -178,10 +183,14 @@ final class FaultHunt {
         }
         if (isHidden()) {
             text.append("SPOT THE FAULT (seed ");
-            TextFormat.appendFixed(text, seed, 0).append("): one of ");
-            TextFormat.appendFixed(text, ids.length, 0).append(ids.length == 1
-                    ? " lecture-code fault is on" : " lecture-code faults is on")
-                    .append(". Which? ").append(revealKey).append(" reveals it\n");
+            TextFormat.appendFixed(text, seed, 0).append("): ");
+            if (ids.length == 1) {
+                text.append("this code has a lecture-code fault");
+            } else {
+                TextFormat.appendFixed(text.append("one of "), ids.length, 0)
+                        .append(" lecture-code faults is on");
+            }
+            text.append(". Which? ").append(revealKey).append(" reveals it\n");
             return;
         }
         text.append("FAULT on: ").append(titles[fault - 1]).append(" (fault=")

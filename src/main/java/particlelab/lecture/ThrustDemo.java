@@ -62,6 +62,7 @@ public final class ThrustDemo extends DemoState {
     private static final String[] FAULTS = {OTHER_VELOCITY, UNNORMALISED};
     private static final String[] FAULT_TITLES = {"thrust along the other sphere's velocity",
         "thrust direction not normalised (F = k V)"};
+    private static final String[] FAULT_LABELS = {"other sphere's V", "k V unnormalised"};
     /** The longest flight flown ahead for a fault's consequence (steps): 5.5 min at 60 Hz. */
     private static final int MAX_FLIGHT_STEPS = 20_000;
 
@@ -79,7 +80,7 @@ public final class ThrustDemo extends DemoState {
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     /** The bug hunt's switch; k goes to the thrust the switch names (one of these three). */
-    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES);
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
     /** The faulty thrusts, beside the correct one in the thruster's integrator. */
     private LectureFaults.ThrustAlongAnother alongOther;
     private final LectureFaults.UnnormalisedThrust unnormalised =
@@ -295,7 +296,7 @@ public final class ThrustDemo extends DemoState {
         text.append("drag F = -b V, b = ");
         DemoParameter.appendShort(text, drag.getCoefficient(), 2).append(" N s/m;   thrust"
                 + " F = k V/|V|, k = ");
-        DemoParameter.appendShort(text, thrust.getMagnitude(), 2)
+        DemoParameter.appendShort(text, thrustK, 2)
                 .append(" N along the sphere's OWN velocity\n");
     }
 
@@ -304,7 +305,7 @@ public final class ThrustDemo extends DemoState {
     protected void writePresentation(Presentation slide) {
         StringBuilder formula = slide.formula().append("a = g - (b/m)V + (k/m)V/|V|,   b = ");
         DemoParameter.appendShort(formula, drag.getCoefficient(), 2).append(" N s/m,  k = ");
-        DemoParameter.appendShort(formula, thrust.getMagnitude(), 2).append(" N");
+        DemoParameter.appendShort(formula, thrustK, 2).append(" N");
         List<DemoParticle> spheres = getParticles();
         StringBuilder readout = slide.readout().append("pull + drag ");
         appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
