@@ -238,6 +238,15 @@ public final class DragDemo extends DemoState {
     }
 
     /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
      * Return the fault's consequence: where the third sphere lands with the slide's form,
      * flown ahead from the launch as the world steps it.
      *

@@ -14,8 +14,9 @@ import particlelab.world.SplitMixRandom;
  * ({@link LectureFaults}); this class only chooses and writes.
  *
  * <p>The pick is {@code floor(n·u)} with u the first double of the project's SplitMix64
- * ({@link SplitMixRandom}, the same as {@code new SplittableRandom(seed).nextDouble()}), so a
- * seed names the same fault on every machine and at every reset. ({@code java.util.Random}'s
+ * ({@link SplitMixRandom}, the same as {@code new SplittableRandom(bits).nextDouble()})
+ * seeded with the seed's float bits, the value as given (no parameter has a grid), so a seed
+ * names the same fault on every machine and at every reset. ({@code java.util.Random}'s
  * first {@code nextInt(2)} is 1 for every seed from 1 to 6: its first draw mixes a small seed
  * too little.) Per frame
  * ({@link #appendHudLine}) it allocates nothing.
@@ -43,7 +44,8 @@ final class FaultHunt {
     private final String[] choices;
     /** The switch as set: 0 none, 1 to n a fault, n + 1 random. */
     private int chosen;
-    private int seed = 1;
+    /** The seed as set (a whole number from the keys; any value in the range as given). */
+    private float seed = 1f;
     private boolean revealed;
 
     /**
@@ -95,9 +97,8 @@ final class FaultHunt {
     DemoParameter seedParameter(Runnable changed) {
         return new DemoParameter(SEED_PARAMETER, "spot-the-fault seed", "", 1f, MAX_SEED, 1f,
                 1f, 0, DemoParameter.Applies.NEXT_LAUNCH, value -> {
-                    int wanted = Math.round(value);
-                    if (wanted != seed) {
-                        seed = wanted;
+                    if (value != seed) {
+                        seed = value;
                         revealed = false;
                         changed.run();
                     }
@@ -119,12 +120,18 @@ final class FaultHunt {
     /**
      * Return the fault a seed picks among some.
      *
-     * @param seed the seed (any)
+     * @param seed the seed (any float)
      * @param count how many faults (&ge;1)
      * @return 0 to count − 1
      */
-    static int pick(int seed, int count) {
-        return Math.min(count - 1, (int) (count * new SplitMixRandom(seed).nextDouble()));
+    static int pick(float seed, int count) {
+        double u = new SplitMixRandom(Float.floatToIntBits(seed)).nextDouble();
+        return Math.min(count - 1, (int) (count * u));
+    }
+
+    /** @return the seed of "spot the fault", as set */
+    float getSeed() {
+        return seed;
     }
 
     /** @return true if the fault that runs is hidden: "spot the fault", not yet revealed */
@@ -183,7 +190,7 @@ final class FaultHunt {
         }
         if (isHidden()) {
             text.append("SPOT THE FAULT (seed ");
-            TextFormat.appendFixed(text, seed, 0).append("): ");
+            DemoParameter.appendShort(text, seed, 2).append("): ");
             if (ids.length == 1) {
                 text.append("this code has a lecture-code fault");
             } else {

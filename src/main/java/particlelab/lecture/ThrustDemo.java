@@ -195,6 +195,15 @@ public final class ThrustDemo extends DemoState {
     }
 
     /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
      * Return the fault's consequence: where the thruster lands with the faulty code that
      * runs, flown ahead from the launch exactly as the world steps it.
      *

@@ -183,10 +183,11 @@ class LectureFaultsTest {
 
     @Test
     void spotTheFaultPicksBySeedHidesThenReveals() {
-        // SplitMix64's first double (as new SplittableRandom(s).nextDouble(), computed with the
-        // JDK's): 0.567 for seed 1 picks the second of two faults, 0.113 for seed 3 the first.
-        assertEquals(1, FaultHunt.pick(1, 2));
-        assertEquals(0, FaultHunt.pick(3, 2));
+        // SplitMix64's first double seeded with the seed's float bits (as new SplittableRandom(
+        // Float.floatToIntBits(s)).nextDouble(), computed with the JDK's): 0.990 for seed 1
+        // picks the second of two faults, 0.438 for seed 3 the first.
+        assertEquals(1, FaultHunt.pick(1f, 2));
+        assertEquals(0, FaultHunt.pick(3f, 2));
         ThrustDemo demo = new ThrustDemo();
         demo.getParameters().set("seed", 3f);
         switchFault(demo, FaultHunt.RANDOM);
@@ -228,6 +229,48 @@ class LectureFaultsTest {
         assertEquals(-1, fault.indexOfChoice("p-before-v"));
         assertEquals("fault (lecture-code fault) one of none|other-velocity|unnormalised|random",
                 fault.appendRange(new StringBuilder()).toString());
+    }
+
+    @Test
+    void thePagesShowTheHudLinesTheFaultsWrite() throws java.io.IOException {
+        // Each page's fault lines are what the HUD writes at the lecture's launch and h.
+        String thrustPage = page("docs/demos/thrust.md");
+        for (String fault : new String[] {ThrustDemo.OTHER_VELOCITY, ThrustDemo.UNNORMALISED}) {
+            ThrustDemo demo = new ThrustDemo();
+            switchFault(demo, fault);
+            String line = hudLine(demo);
+            assertTrue(thrustPage.contains(line), line);
+        }
+        DragDemo drag = new DragDemo();
+        switchFault(drag, DragDemo.SLIDE_DRAG);
+        String line = hudLine(drag);
+        assertTrue(page("docs/demos/drag.md").contains(line), line);
+        // the lecture page quotes the hidden line and the revealed consequence
+        String lecturing = page("docs/lecturing.md").replace("\n   ", " ");
+        ThrustDemo spot = new ThrustDemo();
+        spot.getParameters().set("seed", 3f);
+        switchFault(spot, FaultHunt.RANDOM);
+        String hidden = hudLine(spot);
+        assertTrue(lecturing.contains(hidden), hidden);
+        spot.revealFault();
+        String shown = hudLine(spot);
+        String consequence = shown.substring(shown.indexOf("lands at"));
+        assertTrue(lecturing.contains(consequence), consequence);
+    }
+
+    /** The demo's bug-hunt HUD line (its demo lines start with it), without the newline. */
+    private static String hudLine(DemoState demo) {
+        StringBuilder text = new StringBuilder();
+        if (demo instanceof ThrustDemo) {
+            ((ThrustDemo) demo).writeHudLines(text);
+        } else {
+            ((DragDemo) demo).writeHudLines(text);
+        }
+        return text.substring(0, text.indexOf("\n"));
+    }
+
+    private static String page(String path) throws java.io.IOException {
+        return java.nio.file.Files.readString(java.nio.file.Path.of(path));
     }
 
     /** Set the fault switch by name and launch again (it applies at the next launch). */
