@@ -46,6 +46,8 @@ final class FaultHunt {
     private int chosen;
     /** The seed as set (a whole number from the keys; any value in the range as given). */
     private float seed = 1f;
+    /** The fault the seed picks (1 to n), drawn when the seed is set, not every frame. */
+    private int picked;
     private boolean revealed;
 
     /**
@@ -68,6 +70,7 @@ final class FaultHunt {
         choices[0] = NONE;
         System.arraycopy(ids, 0, choices, 1, ids.length);
         choices[ids.length + 1] = RANDOM;
+        picked = 1 + pick(seed, ids.length);
     }
 
     /**
@@ -99,6 +102,7 @@ final class FaultHunt {
                 1f, 0, DemoParameter.Applies.NEXT_LAUNCH, value -> {
                     if (value != seed) {
                         seed = value;
+                        picked = 1 + pick(seed, ids.length);
                         revealed = false;
                         changed.run();
                     }
@@ -107,14 +111,12 @@ final class FaultHunt {
 
     /**
      * Return the fault that runs: the one set, or the seed's pick in "spot the fault".
+     * Allocates nothing.
      *
      * @return 0 for none, else 1 to the number of faults (the order they were declared in)
      */
     int active() {
-        if (chosen <= ids.length) {
-            return chosen;
-        }
-        return 1 + pick(seed, ids.length);
+        return chosen <= ids.length ? chosen : picked;
     }
 
     /**

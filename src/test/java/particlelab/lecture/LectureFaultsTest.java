@@ -273,6 +273,37 @@ class LectureFaultsTest {
         return java.nio.file.Files.readString(java.nio.file.Path.of(path));
     }
 
+    @Test
+    void aFlightWithAFaultAllocatesNothing() {
+        // Per-frame code allocates nothing: the faulty forces, the HUD line, the consequence
+        // flown again at each launch. Each window is a launch and its flight (100 frames, the
+        // HUD line every frame); the JIT may still allocate while it compiles, so, as
+        // app/FrameAllocationHeadlessTest does, the least of five windows after 30 to warm up.
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean)
+                java.lang.management.ManagementFactory.getThreadMXBean();
+        long thread = Thread.currentThread().getId();
+        ThrustDemo demo = new ThrustDemo();
+        demo.getParameters().set("seed", 3f);
+        switchFault(demo, FaultHunt.RANDOM);
+        demo.revealFault();
+        StringBuilder hud = new StringBuilder(4096);
+        long least = Long.MAX_VALUE;
+        for (int window = 0; window < 35; ++window) {
+            long before = threads.getThreadAllocatedBytes(thread);
+            demo.restart();
+            for (int frame = 0; frame < 100; ++frame) {
+                demo.advancePhysics(H);
+                hud.setLength(0);
+                demo.writeHudLines(hud);
+            }
+            long bytes = threads.getThreadAllocatedBytes(thread) - before;
+            if (window >= 30) {
+                least = Math.min(least, bytes);
+            }
+        }
+        assertEquals(0L, least);
+    }
+
     /** Set the fault switch by name and launch again (it applies at the next launch). */
     private static void switchFault(DemoState demo, String name) {
         int index = demo.getParameters().indexOf(FaultHunt.PARAMETER);
