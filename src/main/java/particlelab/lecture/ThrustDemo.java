@@ -273,9 +273,9 @@ public final class ThrustDemo extends DemoState {
         correctLandingX = correctFlight.landingX(0, h);
         if (fault == 2) {
             // F = k·V: at launch its magnitude is k·|V0|, not k
+            float launchSpeed = thruster.copyLaunchVelocity(launchScratch).length();
             TextFormat.appendFixed(consequence.append("pushes k|V| = "),
-                    thrustK * thruster.copyLaunchVelocity(launchScratch).length(), 2).append(" N at launch,"
-                    + " not k = ");
+                    thrustK * launchSpeed, 2).append(" N at launch, not k = ");
             TextFormat.appendFixed(consequence, thrustK, 2).append(" N; ");
         }
         if (Double.isNaN(faultyLandingX)) {
