@@ -1,7 +1,9 @@
 package particlelab.lecture;
 
+import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import particlelab.aiming.Flight;
 import particlelab.reference.SlideCode;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
@@ -12,6 +14,8 @@ import particlelab.demo.LensPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.NonFiniteStepException;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
 import particlelab.physics.SlideFormDrag;
@@ -42,6 +46,11 @@ import particlelab.view.TextFormat;
  * (where {@code c·v³ = m·g}); and the step limits there, {@code 2/λ} with {@code λ = n·g/v_t}
  * for a drag {@code ∝ vⁿ}: {@code 2v_t/g = 2m/b}, {@code v_t/g} and {@code 2v_t/(3g)}. The
  * Euler step's fixed point is where {@code a = 0}, so the stepped speed tends to the same v_t.
+ *
+ * <p>Bug hunt ({@code --set fault=slide-drag}): the third sphere runs the slide's
+ * {@code −c·|V|²·V} while its label, equations and terminal speed still claim the physical
+ * law, as a student who copied the slide would believe; {@code fault=random} hides it
+ * ({@code --set seed=N}) until B reveals it, with where it lands against the physical law.
  */
 public final class DragDemo extends DemoState {
 
@@ -65,6 +74,13 @@ public final class DragDemo extends DemoState {
     /** The third sphere's labels, by law. */
     private static final String[] LAW_LABELS = {"quadratic drag  F = -c |V|V",
         "slide form  F = -c |V|²V (not physical)"};
+    /** The fault of this demo, by {@code --set fault=} name, and what it is. */
+    static final String SLIDE_DRAG = "slide-drag";
+    private static final String[] FAULTS = {SLIDE_DRAG};
+    private static final String[] FAULT_TITLES = {"the slide's -c|V|²V as quadratic drag"};
+    private static final String[] FAULT_LABELS = {"slide's |V|²V"};
+    /** The longest flight flown ahead for the fault's consequence (steps): 5.5 min at 60 Hz. */
+    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -79,7 +95,20 @@ public final class DragDemo extends DemoState {
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
-    /** The law in the scene: 0 physical, 1 the slide's form. */
+    /** The quadratic sphere's gravity, which the fault's flights read too. */
+    private final Gravity quadraticGravity = new Gravity();
+    /** The bug hunt's switch: the slide's form on the third sphere, unannounced. */
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
+    /** The consequence: the third sphere's landing x, slide form and physical (m). */
+    private double faultyLandingX = Double.NaN;
+    private double correctLandingX = Double.NaN;
+    private final StringBuilder consequence = new StringBuilder();
+    /** The launch, c, b, h or the fault changed since the consequence was flown. */
+    private boolean consequenceStale = true;
+    private float consequenceStepSeconds;
+    private QuadraticFlight faultyFlight;
+    private QuadraticFlight correctFlight;
+    /** The law in the scene's label and equations: 0 physical, 1 the slide's form. */
     private int law;
     /** c as the parameter has it, for whichever law (kg/m or kg·s/m²). */
     private float coefficientC = QUADRATIC_C;
@@ -151,10 +180,13 @@ public final class DragDemo extends DemoState {
         linearSphere.stopAtGround();
         // Both quadratic laws act on the third sphere, one of them with c = 0: adding a zero
         // force changes no bit of the physical law's step.
-        quadraticSphere = launch.add(addParticle(LAW_LABELS[law],
+        quadraticSphere = launch.add(addParticle(quadraticLabel(),
                 new ColorRGBA(1f, 0.4f, 0.8f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(launch.add(new Gravity()), quadraticDrag, slideDrag)));
+                new ParticleIntegrator(launch.add(quadraticGravity), quadraticDrag,
+                        slideDrag)));
         quadraticSphere.stopAtGround();
+        faultyFlight = new QuadraticFlight();
+        correctFlight = new QuadraticFlight();
         lane.follow(launch, linearSphere);
         lens.follow(linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
@@ -178,14 +210,63 @@ public final class DragDemo extends DemoState {
                     int wanted = Math.round(value);
                     if (wanted != law) {
                         law = wanted;
-                        applyLaw();
-                        if (quadraticSphere != null) {
-                            relabel(quadraticSphere, LAW_LABELS[law]);
-                        }
+                        lawChanged();
                     }
                 }));
+        declareParameter(faults.switchParameter(this::lawChanged));
+        declareParameter(faults.seedParameter(this::lawChanged));
     }
 
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+                this::revealFault);
+    }
+
+    @Override
+    protected void onRestart() {
+        consequenceStale = true;
+    }
+
+    /**
+     * Return the fault the third sphere runs now.
+     *
+     * @return its {@code --set fault=} name, or "none"
+     */
+    public String getActiveFault() {
+        int fault = faults.active();
+        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+    }
+
+    /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
+     * Return the fault's consequence: where the third sphere lands with the slide's form,
+     * flown ahead from the launch as the world steps it.
+     *
+     * @return the landing x (in metres; NaN without the fault or a landing)
+     */
+    public double getFaultyLandingX() {
+        refreshConsequence();
+        return faultyLandingX;
+    }
+
+    /**
+     * Return where the third sphere lands with the physical law from the same launch.
+     *
+     * @return the landing x (in metres; NaN without the fault or a landing)
+     */
+    public double getCorrectLandingX() {
+        refreshConsequence();
+        return correctLandingX;
+    }
     @Override
     protected void declareDraggables() {
         // The mouse moves the launch (paused): the sphere P0, its arrow's tip V0.
@@ -206,6 +287,8 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
+        refreshConsequence();
+        faults.appendHudLine(text, "B", consequence);
         // v_t from the closed forms (the spheres' lines give the stepped |V|), and the step's
         // limit 2/λ there.
         double g = getParameters().getValueInScene(getParameters().indexOf("g"));
@@ -222,10 +305,102 @@ public final class DragDemo extends DemoState {
         TextFormat.appendFixed(text, 2.0 * slide / (3.0 * g), 3).append(" s)\n");
     }
 
-    /** Put c into the chosen law's force and 0 into the other. */
+    /** Put c into the law that runs (the slide's form for law=slide or the fault) and 0 into
+     * the other. */
     private void applyLaw() {
-        quadraticDrag.setCoefficient(law == 0 ? coefficientC : 0f);
-        slideDrag.setCoefficient(law == 1 ? coefficientC : 0f);
+        boolean slideRuns = law == 1 || faults.active() != 0;
+        quadraticDrag.setCoefficient(slideRuns ? 0f : coefficientC);
+        slideDrag.setCoefficient(slideRuns ? coefficientC : 0f);
+        consequenceStale = true;
+    }
+
+    /** The law, the fault or the seed changed: the coefficients and the label. */
+    private void lawChanged() {
+        applyLaw();
+        if (quadraticSphere != null) {
+            relabel(quadraticSphere, quadraticLabel());
+        }
+    }
+
+    /** @return the third sphere's label: its law, and the fault if one runs */
+    private String quadraticLabel() {
+        return law == 1 ? LAW_LABELS[1] : faults.label(LAW_LABELS[0]);
+    }
+
+    /** Reveal the hidden fault (key B): the label and the HUD name it. */
+    void revealFault() {
+        if (faults.isHidden()) {
+            faults.reveal();
+            relabel(quadraticSphere, quadraticLabel());
+        }
+    }
+
+    /**
+     * Fly the launch ahead with the slide's form and the physical law and write the
+     * consequence, if anything changed since. Allocates nothing.
+     */
+    private void refreshConsequence() {
+        float h = getClock().getStepSeconds();
+        if (!consequenceStale && h == consequenceStepSeconds) {
+            return;
+        }
+        consequenceStale = false;
+        consequenceStepSeconds = h;
+        consequence.setLength(0);
+        if (faults.active() == 0 || faultyFlight == null) {
+            faultyLandingX = Double.NaN;
+            correctLandingX = Double.NaN;
+            return;
+        }
+        faultyLandingX = faultyFlight.landingX(true, h);
+        correctLandingX = correctFlight.landingX(false, h);
+        double difference = faultyLandingX - correctLandingX;
+        consequence.append("lands at x = ");
+        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
+        TextFormat.appendFixed(consequence, Math.abs(difference), 2)
+                .append(difference < 0.0 ? " m short of" : " m beyond")
+                .append(" the physical law's ");
+        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m");
+    }
+
+    /**
+     * The third sphere flown ahead from its launch with the same forces in the same order as
+     * in the scene (so the same floats), c in the slide's form or the physical law. Allocates
+     * nothing once made.
+     */
+    private final class QuadraticFlight {
+
+        private final Particle ball = new Particle();
+        private final QuadraticDrag physical = new QuadraticDrag(0f);
+        private final SlideFormDrag slide = new SlideFormDrag(0f);
+        private final Flight flight = new Flight(new ParticleIntegrator(quadraticGravity,
+                physical, slide));
+
+        /**
+         * Fly the third sphere from its launch.
+         *
+         * @param slideForm true for the slide's {@code −c·|V|²·V}, false for the physical law
+         * @param stepSeconds h (in seconds, &gt;0)
+         * @return its landing x (in metres; NaN if it does not land)
+         */
+        double landingX(boolean slideForm, float stepSeconds) {
+            physical.setCoefficient(slideForm ? 0f : coefficientC);
+            slide.setCoefficient(slideForm ? coefficientC : 0f);
+            ball.copyFrom(quadraticSphere.getParticle());
+            quadraticSphere.copyLaunchPosition(ball.position);
+            quadraticSphere.copyLaunchVelocity(ball.velocity);
+            try {
+                for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+                    double landing = flight.step(ball, stepSeconds);
+                    if (landing != Flight.NO_LANDING) {
+                        return flight.crossingX(landing);
+                    }
+                }
+            } catch (NonFiniteStepException blowUp) {
+                return Double.NaN;
+            }
+            return Double.NaN;
+        }
     }
 
     /** The slide: the two drag laws with b/m and c/m; the three speeds (or landings). */

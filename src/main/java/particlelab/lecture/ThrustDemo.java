@@ -1,8 +1,10 @@
 package particlelab.lecture;
 
+import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
 import java.util.List;
+import particlelab.aiming.Flight;
 import particlelab.reference.SlideCode;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
@@ -13,8 +15,11 @@ import particlelab.demo.LensPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
+import particlelab.physics.NonFiniteStepException;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.Thrust;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 4, thrust: two spheres launched together with {@code V0 = (10, 10, 0)} m/s: pull + drag
@@ -25,6 +30,12 @@ import particlelab.physics.Thrust;
  * motor pushes where its own sphere flies. What to watch for: the thruster keeps its speed
  * longer and flies farther, and its thrust turns with it as gravity bends the path down.
  * Without gravity it would settle at the terminal speed {@code k/b ≈ 2.2} m/s.
+ *
+ * <p>Bug hunt ({@code --set fault=...}, {@link LectureFaults}): {@code other-velocity} pushes
+ * the thruster along the other sphere's velocity, as the original listing did;
+ * {@code unnormalised} pushes with {@code k·V} (the direction never normalised);
+ * {@code random} picks one ({@code --set seed=N}) and hides which until B reveals it, with
+ * where the faulty code lands against the correct one.
  */
 public final class ThrustDemo extends DemoState {
 
@@ -43,6 +54,17 @@ public final class ThrustDemo extends DemoState {
     private static final float MAX_K = 20f;
     /** The spheres' drawn radius (m). */
     private static final float SPHERE_RADIUS = 0.18f;
+    /** The thruster's label, without a fault. */
+    private static final String THRUSTER_LABEL = "pull + drag + thrust k";
+    /** The faults of this demo, by {@code --set fault=} name, and what each one is. */
+    static final String OTHER_VELOCITY = "other-velocity";
+    static final String UNNORMALISED = "unnormalised";
+    private static final String[] FAULTS = {OTHER_VELOCITY, UNNORMALISED};
+    private static final String[] FAULT_TITLES = {"thrust along the other sphere's velocity",
+        "thrust direction not normalised (F = k V)"};
+    private static final String[] FAULT_LABELS = {"other sphere's V", "k V unnormalised"};
+    /** The longest flight flown ahead for a fault's consequence (steps): 5.5 min at 60 Hz. */
+    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -57,6 +79,30 @@ public final class ThrustDemo extends DemoState {
             () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** The bug hunt's switch; k goes to the thrust the switch names (one of these three). */
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
+    /** The faulty thrusts, beside the correct one in the thruster's integrator. */
+    private LectureFaults.ThrustAlongAnother alongOther;
+    private final LectureFaults.UnnormalisedThrust unnormalised =
+            new LectureFaults.UnnormalisedThrust();
+    /** Flies the pair ahead for a fault's consequence, correct and faulty. */
+    private ThrusterFlight faultyFlight;
+    private ThrusterFlight correctFlight;
+    /** k as the parameter has it (N), for whichever thrust runs. */
+    private float thrustK = THRUST_K;
+    /** The fault's consequence: the thruster's landing x, faulty and correct (m; NaN: none). */
+    private double faultyLandingX = Double.NaN;
+    private double correctLandingX = Double.NaN;
+    /** The consequence as the HUD writes it (rebuilt when stale, not every frame). */
+    private final StringBuilder consequence = new StringBuilder();
+    /** The launch, k or the fault changed since the consequence was flown. */
+    private boolean consequenceStale = true;
+    /** The h the consequence was flown with (s). */
+    private float consequenceStepSeconds;
+    /** Scratch: the thruster's launch velocity (m/s). */
+    private final Vector3f launchScratch = new Vector3f();
+    private DemoParticle pullDragSphere;
+    private DemoParticle thruster;
 
     /** Create the demo. */
     public ThrustDemo() {
@@ -86,10 +132,17 @@ public final class ThrustDemo extends DemoState {
         launch.add(addParticle("pull + drag", new ColorRGBA(0.3f, 0.85f, 1f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity()), drag))).stopAtGround();
-        DemoParticle thruster = launch.add(addParticle("pull + drag + thrust k",
+        pullDragSphere = getParticles().get(0);
+        // The faulty thrusts sit beside the correct one, at k = 0 while off: they add nothing.
+        alongOther = new LectureFaults.ThrustAlongAnother(pullDragSphere.getParticle());
+        thruster = launch.add(addParticle(faults.label(THRUSTER_LABEL),
                 new ColorRGBA(1f, 0.75f, 0.2f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
-                new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust)));
+                new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust,
+                        alongOther, unnormalised)));
         thruster.stopAtGround();
+        faultyFlight = new ThrusterFlight();
+        correctFlight = new ThrusterFlight();
+        applyFault();
         lane.follow(launch, thruster);
         lens.follow(thruster);
         setView(-1f, 14f, 4.5f, 0.5f, 4, SPHERE_RADIUS);
@@ -103,9 +156,140 @@ public final class ThrustDemo extends DemoState {
                 0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, value -> {
                     drag.setCoefficient(value);
                     thrusterDrag.setCoefficient(value);
+                    consequenceStale = true;
                 }));
         declareParameter(new DemoParameter("k", "thrust", "N", 0f, MAX_K, 0.25f,
-                THRUST_K, 2, DemoParameter.Applies.LIVE, thrust::setMagnitude));
+                THRUST_K, 2, DemoParameter.Applies.LIVE, value -> {
+                    thrustK = value;
+                    applyFault();
+                }));
+        declareParameter(faults.switchParameter(this::faultChanged));
+        declareParameter(faults.seedParameter(this::faultChanged));
+    }
+
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+                this::revealFault);
+    }
+
+    @Override
+    protected void onRestart() {
+        consequenceStale = true;
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        refreshConsequence();
+        faults.appendHudLine(text, "B", consequence);
+    }
+
+    /**
+     * Return the fault the thruster runs now.
+     *
+     * @return its {@code --set fault=} name, or "none"
+     */
+    public String getActiveFault() {
+        int fault = faults.active();
+        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+    }
+
+    /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
+     * Return the fault's consequence: where the thruster lands with the faulty code that
+     * runs, flown ahead from the launch exactly as the world steps it.
+     *
+     * @return the landing x (in metres; NaN without a fault or a landing)
+     */
+    public double getFaultyLandingX() {
+        refreshConsequence();
+        return faultyLandingX;
+    }
+
+    /**
+     * Return where the thruster lands with the correct code from the same launch.
+     *
+     * @return the landing x (in metres; NaN without a fault or a landing)
+     */
+    public double getCorrectLandingX() {
+        refreshConsequence();
+        return correctLandingX;
+    }
+
+    /** Reveal the hidden fault (key B): the label and the HUD name it. */
+    void revealFault() {
+        if (faults.isHidden()) {
+            faults.reveal();
+            relabel(thruster, faults.label(THRUSTER_LABEL));
+        }
+    }
+
+    /** The switch or the seed changed: the coefficients, the label, the consequence. */
+    private void faultChanged() {
+        applyFault();
+        if (thruster != null) {
+            relabel(thruster, faults.label(THRUSTER_LABEL));
+        }
+    }
+
+    /** Put k into the thrust the switch names and 0 into the other two. */
+    private void applyFault() {
+        int fault = faults.active();
+        thrust.setMagnitude(fault == 0 ? thrustK : 0f);
+        if (alongOther != null) {
+            alongOther.setMagnitude(fault == 1 ? thrustK : 0f);
+        }
+        unnormalised.setMagnitude(fault == 2 ? thrustK : 0f);
+        consequenceStale = true;
+    }
+
+    /**
+     * Fly the launch ahead, faulty and correct, and write the consequence, if the launch, k,
+     * h or the fault changed since. Allocates nothing.
+     */
+    private void refreshConsequence() {
+        float h = getClock().getStepSeconds();
+        if (!consequenceStale && h == consequenceStepSeconds) {
+            return;
+        }
+        consequenceStale = false;
+        consequenceStepSeconds = h;
+        consequence.setLength(0);
+        int fault = faults.active();
+        if (fault == 0 || faultyFlight == null) {
+            faultyLandingX = Double.NaN;
+            correctLandingX = Double.NaN;
+            return;
+        }
+        faultyLandingX = faultyFlight.landingX(fault, h);
+        correctLandingX = correctFlight.landingX(0, h);
+        if (fault == 2) {
+            // F = k·V: at launch its magnitude is k·|V0|, not k
+            float launchSpeed = thruster.copyLaunchVelocity(launchScratch).length();
+            TextFormat.appendFixed(consequence.append("pushes k|V| = "),
+                    thrustK * launchSpeed, 2).append(" N at launch, not k = ");
+            TextFormat.appendFixed(consequence, thrustK, 2).append(" N; ");
+        }
+        if (Double.isNaN(faultyLandingX)) {
+            consequence.append("the thruster never lands (the correct code lands at x = ");
+            TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m)");
+            return;
+        }
+        double difference = faultyLandingX - correctLandingX;
+        consequence.append("lands at x = ");
+        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
+        TextFormat.appendFixed(consequence, Math.abs(difference), 2)
+                .append(difference < 0.0 ? " m short of" : " m beyond")
+                .append(" the correct code's ");
+        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m");
     }
 
     @Override
@@ -121,7 +305,7 @@ public final class ThrustDemo extends DemoState {
         text.append("drag F = -b V, b = ");
         DemoParameter.appendShort(text, drag.getCoefficient(), 2).append(" N s/m;   thrust"
                 + " F = k V/|V|, k = ");
-        DemoParameter.appendShort(text, thrust.getMagnitude(), 2)
+        DemoParameter.appendShort(text, thrustK, 2)
                 .append(" N along the sphere's OWN velocity\n");
     }
 
@@ -130,10 +314,69 @@ public final class ThrustDemo extends DemoState {
     protected void writePresentation(Presentation slide) {
         StringBuilder formula = slide.formula().append("a = g - (b/m)V + (k/m)V/|V|,   b = ");
         DemoParameter.appendShort(formula, drag.getCoefficient(), 2).append(" N s/m,  k = ");
-        DemoParameter.appendShort(formula, thrust.getMagnitude(), 2).append(" N");
+        DemoParameter.appendShort(formula, thrustK, 2).append(" N");
         List<DemoParticle> spheres = getParticles();
         StringBuilder readout = slide.readout().append("pull + drag ");
         Presentation.appendSpeedOrLanding(readout, spheres.get(0)).append(",  with thrust ");
         Presentation.appendSpeedOrLanding(readout, spheres.get(1));
+    }
+
+    /**
+     * The pair flown ahead from the launch, as the world steps it: the pull + drag sphere
+     * first, then the thruster with the same forces in the same order as in the scene (so
+     * the same floats), each stopped where it comes down through the ground (its velocity
+     * then 0, as the world's stick leaves it). Allocates nothing once made.
+     */
+    private final class ThrusterFlight {
+
+        private final Particle other = new Particle();
+        private final Particle ship = new Particle();
+        private final Thrust correct = new Thrust(0f);
+        private final LectureFaults.ThrustAlongAnother faultyAlong =
+                new LectureFaults.ThrustAlongAnother(other);
+        private final LectureFaults.UnnormalisedThrust faultyUnnormalised =
+                new LectureFaults.UnnormalisedThrust();
+        private final Flight otherFlight = new Flight(pullDragSphere.getIntegrator());
+        private final Flight shipFlight = new Flight(new ParticleIntegrator(thrusterGravity,
+                thrusterDrag, correct, faultyAlong, faultyUnnormalised));
+
+        /**
+         * Fly the pair from the thruster's launch.
+         *
+         * @param fault 0 for the correct thrust, else the fault's number
+         * @param stepSeconds h (in seconds, &gt;0)
+         * @return the thruster's landing x (in metres; NaN if it does not land)
+         */
+        double landingX(int fault, float stepSeconds) {
+            correct.setMagnitude(fault == 0 ? thrustK : 0f);
+            faultyAlong.setMagnitude(fault == 1 ? thrustK : 0f);
+            faultyUnnormalised.setMagnitude(fault == 2 ? thrustK : 0f);
+            other.copyFrom(pullDragSphere.getParticle());
+            pullDragSphere.copyLaunchPosition(other.position);
+            pullDragSphere.copyLaunchVelocity(other.velocity);
+            ship.copyFrom(thruster.getParticle());
+            thruster.copyLaunchPosition(ship.position);
+            thruster.copyLaunchVelocity(ship.velocity);
+            boolean otherFlies = true;
+            try {
+                for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+                    double otherLanding = Flight.NO_LANDING;
+                    if (otherFlies) {
+                        otherLanding = otherFlight.step(other, stepSeconds);
+                    }
+                    double shipLanding = shipFlight.step(ship, stepSeconds);
+                    if (shipLanding != Flight.NO_LANDING) {
+                        return shipFlight.crossingX(shipLanding);
+                    }
+                    if (otherLanding != Flight.NO_LANDING) {
+                        otherFlies = false;
+                        other.velocity.zero();
+                    }
+                }
+            } catch (NonFiniteStepException blowUp) {
+                return Double.NaN;
+            }
+            return Double.NaN;
+        }
     }
 }

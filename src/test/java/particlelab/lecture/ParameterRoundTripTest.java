@@ -100,8 +100,17 @@ class ParameterRoundTripTest {
                 : one(demo, QuadraticDrag.class, QuadraticDrag::getCoefficient));
         // The law is which force the quadratic sphere carries.
         exact("drag/law", demo -> count(demo, SlideFormDrag.class) > 0 ? 1f : 0f);
+        // The bug hunt (issue 34): which force carries the coefficient, and the pick's seed.
+        exact("drag/fault", demo -> !((DragDemo) demo).isSlideForm()
+                && one(demo, SlideFormDrag.class, SlideFormDrag::getCoefficient) > 0f ? 1f : 0f);
+        exact("drag/seed", demo -> ((DragDemo) demo).getFaultSeed());
         exact("thrust/b", demo -> one(demo, LinearDrag.class, LinearDrag::getCoefficient));
         exact("thrust/k", demo -> one(demo, Thrust.class, Thrust::getMagnitude));
+        exact("thrust/fault", demo -> one(demo, LectureFaults.ThrustAlongAnother.class,
+                LectureFaults.ThrustAlongAnother::getMagnitude) > 0f ? 1f
+                : one(demo, LectureFaults.UnnormalisedThrust.class,
+                        LectureFaults.UnnormalisedThrust::getMagnitude) > 0f ? 2f : 0f);
+        exact("thrust/seed", demo -> ((ThrustDemo) demo).getFaultSeed());
         exact("spring/k", demo -> one(demo, Spring.class, Spring::getSpringConstant));
         // The damped spring's c; the undamped one keeps 0 (read by its own force).
         exact("spring/c", demo -> {

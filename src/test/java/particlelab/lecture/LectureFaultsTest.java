@@ -1,0 +1,345 @@
+package particlelab.lecture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.jme3.math.Vector3f;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import particlelab.demo.DemoParticle;
+import particlelab.demo.DemoState;
+
+/**
+ * The bug hunt's fault switches ({@code --set fault=...}) in plain JUnit: each fault's motion
+ * against a closed form or a re-simulation of the faulty code written here, "spot the fault"
+ * (seeded, hidden, revealed), and, with every switch off, the very bits the demos stepped
+ * before the switches existed.
+ */
+class LectureFaultsTest {
+
+    private static final int FRAMES = 600;
+    private static final float H = 1f / 60f;
+    private static final double G = 9.8;
+    /**
+     * FNV-1a of every particle's P and V bits after each of 600 frames of 1/60 s, recorded
+     * with {@link #runBits} on the demos as they were before the fault switches (commit
+     * b7a0f72): with every switch off a run must give these bits.
+     */
+    private static final long DRAG_BEFORE = 0xa45dc62ac989ae46L;
+    private static final long THRUST_BEFORE = 0x8758c7d0bdeee5d6L;
+    private static final long PULL_BEFORE = 0x4e81c040b7d3cae6L;
+
+    @Test
+    void everySwitchOffStepsTheSameBitsAsBefore() {
+        assertEquals(DRAG_BEFORE, runBits(new DragDemo()));
+        assertEquals(THRUST_BEFORE, runBits(new ThrustDemo()));
+        assertEquals(PULL_BEFORE, runBits(new GravitationalPullDemo()));
+        // fault=none set explicitly, after a fault ran: the same bits again
+        DragDemo drag = new DragDemo();
+        switchFault(drag, DragDemo.SLIDE_DRAG);
+        switchFault(drag, FaultHunt.NONE);
+        assertEquals(DRAG_BEFORE, runBits(drag));
+        ThrustDemo thrust = new ThrustDemo();
+        switchFault(thrust, ThrustDemo.UNNORMALISED);
+        switchFault(thrust, FaultHunt.NONE);
+        assertEquals(THRUST_BEFORE, runBits(thrust));
+        // and a fault changes them (the hash sees the switch)
+        ThrustDemo faulty = new ThrustDemo();
+        switchFault(faulty, ThrustDemo.OTHER_VELOCITY);
+        assertFalse(THRUST_BEFORE == runBits(faulty));
+    }
+
+    @Test
+    void thrustAlongTheOtherSpheresVelocityMatchesTheFaultyCode() {
+        ThrustDemo demo = new ThrustDemo();
+        switchFault(demo, ThrustDemo.OTHER_VELOCITY);
+        assertEquals(ThrustDemo.OTHER_VELOCITY, demo.getActiveFault());
+        // The faulty listing in double: the pull + drag sphere steps first (the world's
+        // order), then the thruster pushes k along that sphere's new velocity; once the other
+        // sphere has stuck at the ground its velocity is 0 and there is no heading to push.
+        double b = ThrustDemo.LINEAR_B;
+        double k = ThrustDemo.THRUST_K;
+        double[] other = {0, 0, 10, 10};
+        double[] ship = {0, 0, 10, 10};
+        boolean otherFlies = true;
+        DemoParticle thruster = demo.getParticles().get(1);
+        int steps = 0;
+        while (!thruster.hasLanded()) {
+            demo.advancePhysics(H);
+            ++steps;
+            boolean otherLanded = false;
+            if (otherFlies) {
+                other[2] += H * (-b * other[2]);
+                other[3] += H * (-G - b * other[3]);
+                other[0] += H * other[2];
+                double y = other[1];
+                other[1] += H * other[3];
+                otherLanded = y >= 0 && other[1] < 0;
+            }
+            double speed = Math.hypot(other[2], other[3]);
+            double fx = speed > 0 ? k * other[2] / speed : 0;
+            double fy = speed > 0 ? k * other[3] / speed : 0;
+            ship[2] += H * (-b * ship[2] + fx);
+            ship[3] += H * (-G - b * ship[3] + fy);
+            ship[0] += H * ship[2];
+            ship[1] += H * ship[3];
+            if (otherLanded) {
+                otherFlies = false;
+                other[2] = 0;
+                other[3] = 0;
+            }
+            if (!thruster.hasLanded()) {
+                // float32 against double over at most 200 steps of |P| < 30 m: each step
+                // rounds by about |P|·2^-24 = 2e-6 m, so 1e-3 m holds the sum with room and is
+                // still 1/1000 of the fault's effect below
+                Vector3f p = thruster.getParticle().position;
+                assertEquals(ship[0], p.x, 1e-3, "x at step " + steps);
+                assertEquals(ship[1], p.y, 1e-3, "y at step " + steps);
+            }
+            assertTrue(steps < 1000, "the thruster should land");
+        }
+        // The consequence flown ahead is the scene's own landing (the world's swept crossing
+        // in float against the flight's in double: 1e-4 m), and the fault moves it by more
+        // than 50 times the tolerance the path was checked with (measured: 0.11 m short).
+        assertEquals(demo.getFaultyLandingX(), thruster.getLandingX(), 1e-4);
+        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.05,
+                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+        ThrustDemo correct = new ThrustDemo();
+        while (!correct.getParticles().get(1).hasLanded()) {
+            correct.advancePhysics(H);
+        }
+        assertEquals(correct.getParticles().get(1).getLandingX(), demo.getCorrectLandingX(),
+                1e-4);
+    }
+
+    @Test
+    void unnormalisedThrustIsLinearDragWithTheSignTurned() {
+        ThrustDemo demo = new ThrustDemo();
+        switchFault(demo, ThrustDemo.UNNORMALISED);
+        // F = k·V beside −b·V: a = g + r·V with r = (k − b)/m = 1.1 /s. The Euler step's own
+        // solution, q = 1 + r·h: V_n = qⁿ·(V0 + g/r) − g/r, and with P_n = P0 + h·ΣV_i,
+        // P_n = (V0 + g/r)·q·(qⁿ − 1)/r − n·h·g/r (g = (0, −9.8)).
+        double r = (ThrustDemo.THRUST_K - ThrustDemo.LINEAR_B) / 1.0;
+        double q = 1.0 + r * H;
+        double[] shifted = {10.0, 10.0 - G / r};
+        DemoParticle thruster = demo.getParticles().get(1);
+        for (int n = 1; n <= 300; ++n) {
+            demo.advancePhysics(H);
+            double grown = Math.pow(q, n);
+            double x = shifted[0] * q * (grown - 1.0) / r;
+            // g/r has y = −9.8/r, so −n·h·g/r adds n·h·9.8/r to y
+            double y = shifted[1] * q * (grown - 1.0) / r + n * H * G / r;
+            // float32: each step rounds P and V by 2^-24 relative, and the growth carries
+            // the errors along, so after n ≤ 300 steps 300·6e-8 = 2e-5 relative; 1e-4 relative
+            Vector3f p = thruster.getParticle().position;
+            assertEquals(x, p.x, 1e-4 * Math.abs(x) + 1e-6, "x at step " + n);
+            assertEquals(y, p.y, 1e-4 * Math.abs(y) + 1e-6, "y at step " + n);
+        }
+        assertFalse(thruster.hasLanded());
+        // Here V0 + g/r points up (10 − 8.9 > 0): it climbs forever, and the HUD says so.
+        StringBuilder hud = new StringBuilder();
+        demo.writeHudLines(hud);
+        assertTrue(hud.toString().contains("never lands"), hud.toString());
+        // k·|V0| = 2·√200 = 28.28 N at launch
+        assertTrue(hud.toString().contains("pushes k|V| = 28.28 N"), hud.toString());
+    }
+
+    @Test
+    void slidesDragRunsUnderThePhysicalLabel() {
+        DragDemo demo = new DragDemo();
+        switchFault(demo, DragDemo.SLIDE_DRAG);
+        DemoParticle sphere = demo.getParticles().get(2);
+        assertEquals("quadratic drag  F = -c |V|V  [FAULT: slide's |V|²V]", sphere.getLabel());
+        // The slide's listing in double: F = −c·|V|²·V, then V and P.
+        double c = DragDemo.QUADRATIC_C;
+        double[] s = {0, 0, 10, 10};
+        int steps = 0;
+        while (!sphere.hasLanded()) {
+            demo.advancePhysics(H);
+            ++steps;
+            double speedSquared = s[2] * s[2] + s[3] * s[3];
+            s[2] += H * (-c * speedSquared * s[2]);
+            s[3] += H * (-G - c * speedSquared * s[3]);
+            s[0] += H * s[2];
+            s[1] += H * s[3];
+            if (!sphere.hasLanded()) {
+                // as for the thrust: float32 against double over < 200 steps, 1e-3 m
+                assertEquals(s[0], sphere.getParticle().position.x, 1e-3, "x at " + steps);
+                assertEquals(s[1], sphere.getParticle().position.y, 1e-3, "y at " + steps);
+            }
+            assertTrue(steps < 1000, "the sphere should land");
+        }
+        assertEquals(demo.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
+        DragDemo physical = new DragDemo();
+        while (!physical.getParticles().get(2).hasLanded()) {
+            physical.advancePhysics(H);
+        }
+        assertEquals(physical.getParticles().get(2).getLandingX(), demo.getCorrectLandingX(),
+                1e-4);
+        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.5,
+                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+    }
+
+    @Test
+    void spotTheFaultPicksBySeedHidesThenReveals() {
+        // SplitMix64's first double seeded with the seed's float bits (as new SplittableRandom(
+        // Float.floatToIntBits(s)).nextDouble(), computed with the JDK's): 0.990 for seed 1
+        // picks the second of two faults, 0.438 for seed 3 the first.
+        assertEquals(1, FaultHunt.pick(1f, 2));
+        assertEquals(0, FaultHunt.pick(3f, 2));
+        ThrustDemo demo = new ThrustDemo();
+        demo.getParameters().set("seed", 3f);
+        switchFault(demo, FaultHunt.RANDOM);
+        assertEquals(ThrustDemo.OTHER_VELOCITY, demo.getActiveFault());
+        DemoParticle thruster = demo.getParticles().get(1);
+        assertEquals("pull + drag + thrust k  [FAULT: ?]", thruster.getLabel());
+        StringBuilder hud = new StringBuilder();
+        demo.writeHudLines(hud);
+        String hidden = hud.toString();
+        assertTrue(hidden.contains("SPOT THE FAULT (seed 3): one of 2 lecture-code faults is on."
+                + " Which? B reveals it"), hidden);
+        assertFalse(hidden.contains("other sphere") || hidden.contains("lands"), hidden);
+        // the same seed picks the same fault at every reset
+        demo.restart();
+        assertEquals(ThrustDemo.OTHER_VELOCITY, demo.getActiveFault());
+        demo.revealFault();
+        assertEquals("pull + drag + thrust k  [FAULT: other sphere's V]", thruster.getLabel());
+        hud.setLength(0);
+        demo.writeHudLines(hud);
+        String shown = hud.toString();
+        assertTrue(shown.startsWith("FAULT on: thrust along the other sphere's velocity"
+                + " (fault=other-velocity): lands at x = "), shown);
+        // the numbers are the flights': the faulty landing and the correct one
+        StringBuilder landing = new StringBuilder();
+        particlelab.view.TextFormat.appendFixed(landing, demo.getFaultyLandingX(), 2);
+        assertTrue(shown.contains("x = " + landing + " m"), shown);
+        // seed 1 picks the other fault
+        demo.getParameters().set("seed", 1f);
+        demo.restart();
+        assertEquals(ThrustDemo.UNNORMALISED, demo.getActiveFault());
+        assertEquals("pull + drag + thrust k  [FAULT: ?]", thruster.getLabel());
+    }
+
+    @Test
+    void aBadFaultNameIsNotAChoice() {
+        ThrustDemo demo = new ThrustDemo();
+        int index = demo.getParameters().indexOf(FaultHunt.PARAMETER);
+        particlelab.demo.DemoParameter fault = demo.getParameters().get(index);
+        assertEquals(-1, fault.indexOfChoice("p-before-v"));
+        assertEquals("fault (lecture-code fault) one of none|other-velocity|unnormalised|random",
+                fault.appendRange(new StringBuilder()).toString());
+    }
+
+    @Test
+    void thePagesShowTheHudLinesTheFaultsWrite() throws java.io.IOException {
+        // Each page's fault lines are what the HUD writes at the lecture's launch and h.
+        String thrustPage = page("docs/demos/thrust.md");
+        for (String fault : new String[] {ThrustDemo.OTHER_VELOCITY, ThrustDemo.UNNORMALISED}) {
+            ThrustDemo demo = new ThrustDemo();
+            switchFault(demo, fault);
+            String line = hudLine(demo);
+            assertTrue(thrustPage.contains(line), line);
+        }
+        DragDemo drag = new DragDemo();
+        switchFault(drag, DragDemo.SLIDE_DRAG);
+        String line = hudLine(drag);
+        assertTrue(page("docs/demos/drag.md").contains(line), line);
+        // the lecture page quotes the hidden line and the revealed consequence
+        String lecturing = page("docs/lecturing.md").replace("\n   ", " ");
+        ThrustDemo spot = new ThrustDemo();
+        spot.getParameters().set("seed", 3f);
+        switchFault(spot, FaultHunt.RANDOM);
+        String hidden = hudLine(spot);
+        assertTrue(lecturing.contains(hidden), hidden);
+        spot.revealFault();
+        String shown = hudLine(spot);
+        String consequence = shown.substring(shown.indexOf("lands at"));
+        assertTrue(lecturing.contains(consequence), consequence);
+    }
+
+    /** The demo's bug-hunt HUD line (its demo lines start with it), without the newline. */
+    private static String hudLine(DemoState demo) {
+        StringBuilder text = new StringBuilder();
+        if (demo instanceof ThrustDemo) {
+            ((ThrustDemo) demo).writeHudLines(text);
+        } else {
+            ((DragDemo) demo).writeHudLines(text);
+        }
+        return text.substring(0, text.indexOf("\n"));
+    }
+
+    private static String page(String path) throws java.io.IOException {
+        return java.nio.file.Files.readString(java.nio.file.Path.of(path));
+    }
+
+    @Test
+    void aFlightWithAFaultAllocatesNothing() {
+        // Per-frame code allocates nothing: the faulty forces, the HUD line, the consequence
+        // flown again at each launch. Each window is a launch and its flight (100 frames, the
+        // HUD line every frame); the JIT may still allocate while it compiles, so, as
+        // app/FrameAllocationHeadlessTest does, the least of five windows after 30 to warm up.
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean)
+                java.lang.management.ManagementFactory.getThreadMXBean();
+        long thread = Thread.currentThread().getId();
+        ThrustDemo demo = new ThrustDemo();
+        demo.getParameters().set("seed", 3f);
+        switchFault(demo, FaultHunt.RANDOM);
+        demo.revealFault();
+        StringBuilder hud = new StringBuilder(4096);
+        long least = Long.MAX_VALUE;
+        for (int window = 0; window < 35; ++window) {
+            long before = threads.getThreadAllocatedBytes(thread);
+            demo.restart();
+            for (int frame = 0; frame < 100; ++frame) {
+                demo.advancePhysics(H);
+                hud.setLength(0);
+                demo.writeHudLines(hud);
+            }
+            long bytes = threads.getThreadAllocatedBytes(thread) - before;
+            if (window >= 30) {
+                least = Math.min(least, bytes);
+            }
+        }
+        assertEquals(0L, least);
+    }
+
+    /** Set the fault switch by name and launch again (it applies at the next launch). */
+    private static void switchFault(DemoState demo, String name) {
+        int index = demo.getParameters().indexOf(FaultHunt.PARAMETER);
+        int choice = demo.getParameters().get(index).indexOfChoice(name);
+        assertTrue(choice >= 0, name);
+        demo.getParameters().set(FaultHunt.PARAMETER, choice);
+        demo.restart();
+    }
+
+    /** Hash every particle's P and V bits after each of 600 frames of 1/60 s (FNV-1a). */
+    static long runBits(DemoState demo) {
+        long hash = 0xcbf29ce484222325L;
+        for (int frame = 0; frame < FRAMES; ++frame) {
+            demo.advancePhysics(H);
+            List<DemoParticle> particles = demo.getParticles();
+            for (int i = 0; i < particles.size(); ++i) {
+                hash = mix(hash, particles.get(i).getParticle().position);
+                hash = mix(hash, particles.get(i).getParticle().velocity);
+            }
+        }
+        return hash;
+    }
+
+    private static long mix(long hash, Vector3f v) {
+        long result = mix(hash, Float.floatToRawIntBits(v.x));
+        result = mix(result, Float.floatToRawIntBits(v.y));
+        return mix(result, Float.floatToRawIntBits(v.z));
+    }
+
+    /** Feed an int's four bytes, lowest first, to FNV-1a 64. */
+    private static long mix(long hash, int value) {
+        long result = hash;
+        for (int b = 0; b < Integer.BYTES; ++b) {
+            result ^= (value >>> (Byte.SIZE * b)) & 0xff;
+            result *= 0x100000001b3L;
+        }
+        return result;
+    }
+}
