@@ -203,7 +203,8 @@ public final class LensPart implements DemoPart {
             return;
         }
         if (!look()) {
-            text.append("derivative lens (O): the sphere is not flying\n");
+            text.append("derivative lens (O): the sphere is not flying;"
+                    + " click a step dot of its flight\n");
             return;
         }
         text.append("derivative lens (O; click a step dot) at step ")

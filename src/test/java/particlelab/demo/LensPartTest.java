@@ -286,6 +286,23 @@ class LensPartTest {
     }
 
     @Test
+    void onceTheSphereLandedAClickOnADotOfItsFlightLooksThereAgain() {
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        // the launch at (10, 10) m/s lands after 2.04 s: 150 steps are past it
+        advance(demo, 150);
+        String landed = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(landed.contains("derivative lens (O): the sphere is not flying;"
+                + " click a step dot of its flight\n"), landed);
+        Camera camera = faceOnCamera();
+        Vector3f dot = positionAt(demo.getStateRing(), 60, 0);
+        Vector3f screen = camera.getScreenCoordinates(dot);
+        assertTrue(demo.getLens().clickStepDot(camera, screen.x, screen.y));
+        assertEquals(60, demo.getShownStep());
+        String hud = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(hud.contains("derivative lens (O; click a step dot) at step 60,"), hud);
+    }
+
+    @Test
     void theGraphsSlopeOfVyIsMinusGToFloatRoundingUnderGravityAlone() {
         GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
         advance(demo, 90);
