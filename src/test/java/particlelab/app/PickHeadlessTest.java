@@ -26,8 +26,8 @@ import particlelab.world.StateSlab;
  * where the mouse is (the new launch is drawn under the mouse) and the scene waits at t = 0;
  * a press on the parameter panel or with the help up picks nothing; the help and the footer
  * name the mouse's gestures; with the derivative lens on, a click on a step dot shows that
- * step and the lens's graph stands beside the scene. The drag's physics (ghosts, kept shots, inspector) is
- * {@code particlelab.demo.DragHeadlessTest}'s.
+ * step and the lens's graph stands beside the scene. The drag's physics (ghosts, kept shots,
+ * inspector) is {@code particlelab.demo.DragHeadlessTest}'s.
  */
 class PickHeadlessTest {
 

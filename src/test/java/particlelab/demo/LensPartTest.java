@@ -119,8 +119,9 @@ class LensPartTest {
             advance(demo, 20);
             DemoParticle sphere = demo.getParticles().get((Integer) entry[1]);
             String hud = demo.formatHud(new StringBuilder()).toString();
-            assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + demo.getShownStep()
-                    + ", t_i = 0.333 s, h = 0.0167 s"), demo.getTitle() + ":\n" + hud);
+            assertTrue(hud.contains("derivative lens (O; click a step dot) at step "
+                    + demo.getShownStep() + ", t_i = 0.333 s, h = 0.0167 s"),
+                    demo.getTitle() + ":\n" + hud);
             Particle particle = sphere.getParticle();
             DerivativeLens lens = assertLinesFor(hud, sphere, particle.position,
                     particle.velocity);
@@ -180,8 +181,8 @@ class LensPartTest {
         // the ring gave back step k's state bit for bit
         assertEquals(positions[k], ball.getParticle().position);
         String hud = demo.formatHud(new StringBuilder()).toString();
-        assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + (live - 3) + ", t_i = "),
-                hud);
+        assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + (live - 3)
+                + ", t_i = "), hud);
         DerivativeLens lens = assertLinesFor(hud, ball, positions[k], velocities[k]);
         // the step the lens takes again is the one the world took from there, bit for bit
         assertEquals(positions[k + 1], lens.endPosition);
