@@ -48,7 +48,8 @@ final class PickInput extends BaseAppState implements RawInputListener {
      *
      * @param screenX the point's x (in pixels from the window's left edge)
      * @param screenY the point's y (in pixels from the window's bottom edge)
-     * @return true if a grip was taken hold of (the event is then consumed)
+     * @return true if a grip was taken hold of or a click target took the press (the event
+     *     is then consumed)
      */
     boolean press(float screenX, float screenY) {
         DemoState demo = switcher.getSelected();
@@ -57,6 +58,10 @@ final class PickInput extends BaseAppState implements RawInputListener {
             return false;
         }
         demo.getDragControl().press(getApplication().getCamera(), screenX, screenY);
+        if (demo.getDragControl().wasClickTaken()) {
+            // a step dot chose the lens's step: nothing to drag, nothing behind to react
+            return true;
+        }
         if (demo.getDragControl().getHeld() == null) {
             return false;
         }

@@ -36,7 +36,25 @@ public final class DragControl {
     /** What a click does, for the help. */
     public static final String CLICK_DESCRIPTION = "inspect P, V, m, forces";
 
+    /**
+     * What a press on nothing else may choose (the derivative lens's step dots): asked in
+     * the order added, after the grips and the spheres, until one takes the press.
+     */
+    @FunctionalInterface
+    public interface ClickTarget {
+        /**
+         * Take a press at a screen point, if it is on this target.
+         *
+         * @param camera the camera the scene is drawn with (not null, not modified)
+         * @param screenX the point's x (in pixels from the window's left edge)
+         * @param screenY the point's y (in pixels from the window's bottom edge)
+         * @return true if the press chose something here (no later target is asked)
+         */
+        boolean click(Camera camera, float screenX, float screenY);
+    }
+
     private final List<Draggable> draggables = new ArrayList<>();
+    private final List<ClickTarget> clickTargets = new ArrayList<>();
     private final List<Draggable> draggablesView = Collections.unmodifiableList(draggables);
     private final List<DemoParticle> particles;
     private final SimulationClock clock;
@@ -52,6 +70,8 @@ public final class DragControl {
     private DemoParticle picked;
     /** The grip held down, or null. */
     private Draggable held;
+    /** Whether the last press was taken by a click target. */
+    private boolean clickTaken;
     /** Whether the held grip has started to drag. */
     private boolean dragging;
     private float pressX;
@@ -146,6 +166,18 @@ public final class DragControl {
         return rows;
     }
 
+    /**
+     * Add a target a press on no grip and no sphere may choose (a part's step dots).
+     *
+     * @param target the target (not null)
+     */
+    public void addClickTarget(ClickTarget target) {
+        if (target == null) {
+            throw new IllegalArgumentException("click target must not be null");
+        }
+        clickTargets.add(target);
+    }
+
     /** @return the declarations, in declaration order (unmodifiable, live, not null) */
     public List<Draggable> getDraggables() {
         return draggablesView;
@@ -153,15 +185,17 @@ public final class DragControl {
 
     /**
      * Press the button at a screen point: pick the grip there (the nearest within its pick
-     * radius), or, where there is none, the nearest sphere to inspect; a press on empty space
-     * picks nothing (the inspector closes).
+     * radius), or, where there is none, the nearest sphere to inspect, or else hand the press
+     * to the click targets (a step dot); a press on empty space picks nothing (the inspector
+     * closes).
      *
      * @param camera the camera the scene is drawn with (not null, not modified)
      * @param screenX the point's x (in pixels from the window's left edge)
      * @param screenY the point's y (in pixels from the window's bottom edge)
-     * @return true if a body or grip was picked
+     * @return true if a body or grip was picked, or a click target took the press
      */
     public boolean press(Camera camera, float screenX, float screenY) {
+        clickTaken = false;
         held = null;
         dragging = false;
         picked = null;
@@ -206,7 +240,21 @@ public final class DragControl {
                 picked = particle;
             }
         }
-        return picked != null;
+        if (picked != null) {
+            return true;
+        }
+        for (int i = 0; i < clickTargets.size(); ++i) {
+            if (clickTargets.get(i).click(camera, screenX, screenY)) {
+                clickTaken = true;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** @return true if the last press was taken by a click target (a step dot) */
+    public boolean wasClickTaken() {
+        return clickTaken;
     }
 
     /**

@@ -85,6 +85,14 @@ public final class EnergyPart implements DemoPart {
     /** The bars' scale (J per half-bar; 0: choose afresh), kept until it is exceeded. */
     private double barsScale;
     private final StringBuilder barsTitle = new StringBuilder(48);
+    /** What the bars ask of the strip (pixels at HUD scale 1; 0: nothing). */
+    private float barsWidth;
+    private float barsHeight;
+    /** What a view below the bars asks of the strip (the lens's graph; 0: nothing). */
+    private float belowWidth;
+    private float belowHeight;
+    /** Scratch: the bars' part of the strip (pixels). */
+    private final ScreenRect barsSlot = new ScreenRect();
 
     @Override
     public void attach(DemoState newDemo) {
@@ -156,16 +164,16 @@ public final class EnergyPart implements DemoPart {
             stripPresenting = presenting;
             float size = presenting ? PRESENT_TEXT_FRACTION * HudLayout.PRESENT_SIZE
                     : HudLayout.SCENE_LABEL_SIZE;
-            layout.setLedgerSize(wanted ? bars.widthFor(WIDEST_NAME, size) : 0f,
-                    wanted ? bars.heightFor(rows, size) : 0f);
-            demo.getWindow().relayOutPanel();
+            barsWidth = wanted ? bars.widthFor(WIDEST_NAME, size) : 0f;
+            barsHeight = wanted ? bars.heightFor(rows, size) : 0f;
+            askStrip();
         }
         boolean visible = wanted && !demo.getHud().isHelpVisible();
         bars.setVisible(visible);
         if (!visible) {
             return;
         }
-        ScreenRect slot = layout.getLedger();
+        ScreenRect slot = splitStrip(layout, true, barsSlot);
         float textSize = layout.isPresenting()
                 ? PRESENT_TEXT_FRACTION * layout.getBodySize() : layout.getSceneLabelSize();
         if (rows != barsRows || !sameRect(slot, barsRect) || textSize != barsTextSize) {
@@ -197,6 +205,39 @@ public final class EnergyPart implements DemoPart {
                 + " + numerical;  start ");
         TextFormat.appendFixed(text, ledger.getStartJoules(), 2).append(", numerical ");
         TextFormat.appendFixed(text, ledger.getNumericalJoules(), 4).append('\n');
+    }
+
+    /**
+     * Ask for room in the strip down the scene's right edge below the bars (or the whole
+     * strip while the bars are not drawn): the derivative lens's graph. The strip is as wide
+     * as the wider of the two and as high as both with a margin between, at most what the
+     * layout allows; each then gets its share of the height. Lays the HUD out again when the
+     * request changes. Allocates nothing otherwise.
+     *
+     * @param widthAtScaleOne the view's width at HUD scale 1 (in pixels, &ge;0; 0: none)
+     * @param heightAtScaleOne its height at HUD scale 1 (in pixels, &ge;0; 0: none)
+     */
+    void askBelowBars(float widthAtScaleOne, float heightAtScaleOne) {
+        if (widthAtScaleOne == belowWidth && heightAtScaleOne == belowHeight) {
+            return;
+        }
+        belowWidth = widthAtScaleOne;
+        belowHeight = heightAtScaleOne;
+        askStrip();
+    }
+
+    /**
+     * Copy the part of the strip below the bars, as last laid out.
+     *
+     * @param storeResult storage for the rectangle (in pixels, not null, modified; empty
+     *     when nothing was asked for or no window)
+     * @return storeResult
+     */
+    ScreenRect copyBelowBars(ScreenRect storeResult) {
+        if (demo.getHud() == null) {
+            return storeResult.set(0f, 0f, 0f, 0f);
+        }
+        return splitStrip(demo.getHud().getLayout(), false, storeResult);
     }
 
     /**
@@ -302,6 +343,43 @@ public final class EnergyPart implements DemoPart {
             bars.setTitle(barsTitle);
         }
         return rows;
+    }
+
+    /** Ask the layout for a strip that holds the bars and the view below them, if any. */
+    private void askStrip() {
+        if (demo.getHud() == null) {
+            return;
+        }
+        boolean both = barsHeight > 0f && belowHeight > 0f;
+        float width = Math.max(barsHeight > 0f ? barsWidth : 0f,
+                belowHeight > 0f ? belowWidth : 0f);
+        float height = barsHeight + belowHeight + (both ? HudLayout.MARGIN : 0f);
+        demo.getHud().getLayout().setLedgerSize(width, width > 0f ? height : 0f);
+        demo.getWindow().relayOutPanel();
+    }
+
+    /**
+     * The bars' part of the strip (its top) or the part below them (its bottom): the bars
+     * get the height they asked for, as far as the strip holds it, and the view below the
+     * rest after a margin (it gives the room up from its plot). Allocates nothing.
+     */
+    private ScreenRect splitStrip(HudLayout layout, boolean barsPart, ScreenRect storeResult) {
+        ScreenRect strip = layout.getLedger();
+        float share = barsPart ? barsHeight : belowHeight;
+        if (strip.isEmpty() || !(share > 0f)) {
+            return storeResult.set(0f, 0f, 0f, 0f);
+        }
+        if (!(barsHeight > 0f && belowHeight > 0f)) {
+            return storeResult.set(strip);
+        }
+        float barsPixels = Math.min(strip.getHeight(), barsHeight * layout.getScale());
+        if (barsPart) {
+            return storeResult.set(strip.getX(), strip.getTop() - barsPixels,
+                    strip.getWidth(), barsPixels);
+        }
+        float below = Math.max(0f, strip.getHeight() - barsPixels
+                - HudLayout.MARGIN * layout.getScale());
+        return storeResult.set(strip.getX(), strip.getY(), strip.getWidth(), below);
     }
 
     private static boolean sameRect(ScreenRect a, ScreenRect b) {

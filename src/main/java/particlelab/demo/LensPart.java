@@ -5,12 +5,19 @@ import com.jme3.input.KeyInput;
 import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
 import com.jme3.scene.Node;
 import particlelab.physics.DerivativeLens;
 import particlelab.physics.Particle;
 import particlelab.reference.ExactPath;
+import particlelab.view.HudFont;
+import particlelab.view.HudLayout;
+import particlelab.view.LensGraph;
+import particlelab.view.ScreenRect;
+import particlelab.view.StepDotPick;
 import particlelab.view.TextFormat;
 import particlelab.view.VelocityArrow;
+import particlelab.world.StateRing;
 
 /**
  * The derivative lens on screen (issue 32 §2), a part of the free-flight demos: key O (or
@@ -28,6 +35,18 @@ import particlelab.view.VelocityArrow;
  * the world's step in free flight); the exact tangents come from the sphere's
  * {@link ExactPath} started at {@code (P_i, V_i)}: at {@code t_i} that is {@code V_i}
  * itself, at the middle the path's velocity after h/2.
+ *
+ * <p>Clicking a step dot of the sphere's trail chooses that step: the demo shows it, as Home
+ * and End would (paused, the later steps kept for End until Space or N go on), and the lens
+ * looks at it. The nearest dot within {@link DragControl#MIN_PICK_PIXELS} of the press, of
+ * the steps the replay ring holds, is taken ({@link StepDotPick}); a press on a grip or a
+ * sphere is theirs first.
+ *
+ * <p>Beside the scene, in the strip down its right edge (below the energy bars when they are
+ * shown, so no body flies under it), a {@link LensGraph} plots V_x and V_y of the steps up to
+ * the chosen one and of the step looked at against t, the chosen step marked, with the slope
+ * of each curve there computed from those two plotted points ({@link LensSteps}): the
+ * acceleration the step applied, {@code −g} for V_y under gravity alone.
  *
  * <p>Under gravity the chord is {@code V_{i+1}} bit for bit, and the tangents are
  * {@code g·h} and {@code g·h/2} away from it: the arrows nearly coincide at the lecture's h,
@@ -63,6 +82,11 @@ public final class LensPart implements DemoPart {
     private static final int EXACT_MIDDLE = 3;
     /** The arrows' depth apart (m), so that the narrower ones draw over the wider. */
     private static final float DEPTH_STEP = 0.01f;
+    /**
+     * The graph's text when presenting, as a fraction of the slide's text: the energy bars'
+     * fraction, so the strip's two views read alike.
+     */
+    private static final float PRESENT_TEXT_FRACTION = 0.6f;
 
     private DemoState demo;
     private DemoParticle followed;
@@ -77,6 +101,19 @@ public final class LensPart implements DemoPart {
     private final Vector3f arrowStart = new Vector3f();
     /** The sphere's radius, which sizes the arrows (m). */
     private final float radiusMetres;
+    /** The steps plotted and picked from. */
+    private final LensSteps steps = new LensSteps();
+    private final StepDotPick dotPick = new StepDotPick();
+    /** The followed sphere's place among the demo's particles (-1 until known). */
+    private int particleIndex = -1;
+    /** The graph (null without a window). */
+    private LensGraph graph;
+    /** The strip's part the graph was last laid out in, and at which text size. */
+    private final ScreenRect graphSlot = new ScreenRect();
+    private final ScreenRect graphRect = new ScreenRect();
+    private float graphTextSize = Float.NaN;
+    /** Whether the graph's room was asked for presenting (its text is larger then). */
+    private boolean graphPresenting;
 
     /**
      * Create the part.
@@ -132,9 +169,15 @@ public final class LensPart implements DemoPart {
             arrows[i].setVisible(false);
             scene.attachChild(arrows[i].getGeometry());
         }
+        graph = new LensGraph(app.getAssetManager(), HudFont.load(app.getAssetManager()));
+        graph.setVisible(false);
+        demo.getDragControl().addClickTarget(this::clickStepDot);
     }
 
-    /** Once a frame: look at the shown step and point the arrows. Allocates nothing. */
+    /**
+     * Once a frame: look at the shown step, point the arrows and draw the graph. Allocates
+     * nothing but when the graph's room in the strip comes or goes.
+     */
     @Override
     public void afterFrame() {
         boolean looking = look();
@@ -144,6 +187,7 @@ public final class LensPart implements DemoPart {
         for (int i = 0; i < arrows.length; ++i) {
             arrows[i].setVisible(looking);
         }
+        drawGraph(looking);
         if (!looking) {
             return;
         }
@@ -159,10 +203,12 @@ public final class LensPart implements DemoPart {
             return;
         }
         if (!look()) {
-            text.append("derivative lens (O): the sphere is not flying\n");
+            text.append("derivative lens (O): the sphere is not flying;"
+                    + " click a step dot of its flight\n");
             return;
         }
-        text.append("derivative lens (O) at step ").append(demo.getRun().getShownStep())
+        text.append("derivative lens (O; click a step dot) at step ")
+                .append(demo.getRun().getShownStep())
                 .append(", t_i = ");
         TextFormat.appendFixed(text, demo.getWorld().getTimeSeconds(), 3).append(" s, h = ");
         TextFormat.appendFixed(text, lens.getStepSeconds(), 4)
@@ -188,6 +234,54 @@ public final class LensPart implements DemoPart {
         TextFormat.appendFixed(line, lens.stepVelocity.y, DECIMALS).append(", dP/dt ");
         TextFormat.appendFixed(line, lens.exactAtStart.y, DECIMALS).append(" (t_i) ");
         TextFormat.appendFixed(line, lens.exactAtMiddle.y, DECIMALS).append(" (mid)");
+    }
+
+    /**
+     * A press on the scene that no grip or sphere took: if it is on a step dot of the
+     * followed sphere's trail, of a step the replay ring holds, show that step (paused), as
+     * the timeline would, so the lens looks at it.
+     *
+     * @param camera the camera the scene is drawn with (not null, not modified)
+     * @param screenX the press's x (in pixels from the window's left edge)
+     * @param screenY the press's y (in pixels from the window's bottom edge)
+     * @return true if a step dot was chosen
+     */
+    boolean clickStepDot(Camera camera, float screenX, float screenY) {
+        if (!on || !readSteps()) {
+            return false;
+        }
+        int dot = dotPick.nearest(camera, steps.getPositions(), steps.countDots(), screenX,
+                screenY, DragControl.MIN_PICK_PIXELS);
+        if (dot < 0) {
+            return false;
+        }
+        StateRing ring = demo.getRun().getStateRing();
+        long entry = steps.getEntry(dot);
+        if (ring.size() < 2) {
+            demo.getClock().setPaused(true);
+            return true;
+        }
+        // the timeline's place of the entry: scrubTo rounds it back to the same entry
+        demo.getReplayControls().scrubTo((double) (entry - ring.getFirstIndex()) / (ring.size() - 1));
+        return true;
+    }
+
+    /**
+     * Access the steps the graph plots and a click picks from, as last read.
+     *
+     * @return the live steps (not null)
+     */
+    LensSteps getSteps() {
+        return steps;
+    }
+
+    /**
+     * Access the graph, for tests.
+     *
+     * @return the graph, or null without a window
+     */
+    public LensGraph getGraph() {
+        return graph;
     }
 
     /** @return true if the lens is switched on */
@@ -229,6 +323,76 @@ public final class LensPart implements DemoPart {
         // The true motion through (P_i, V_i) has the tangent V_i at t_i.
         lens.setExactTangents(particle.velocity, middleTangent);
         return true;
+    }
+
+    /**
+     * Read the followed sphere's steps from the ring, up to the one shown, and the step
+     * looked at (or, when the lens does not look, the sphere's velocity now). Allocates
+     * nothing.
+     *
+     * @return false if there is nothing to read (no sphere, no step recorded)
+     */
+    boolean readSteps() {
+        StateRing ring = demo.getRun().getStateRing();
+        if (followed == null || ring.size() == 0) {
+            steps.clear();
+            return false;
+        }
+        if (particleIndex < 0) {
+            particleIndex = demo.getParticles().indexOf(followed);
+        }
+        if (look()) {
+            steps.read(ring, demo.getRun().getShownStep(), particleIndex,
+                    demo.getWorld().getTimeSeconds() + lens.getStepSeconds(), lens.stepVelocity);
+        } else {
+            steps.read(ring, demo.getRun().getShownStep(), particleIndex,
+                    demo.getWorld().getTimeSeconds(), followed.getParticle().velocity);
+        }
+        return true;
+    }
+
+    /**
+     * Ask for the graph's room in the strip (or give it back), and plot the steps in it.
+     * Allocates nothing but when the room comes or goes.
+     */
+    private void drawGraph(boolean looking) {
+        EnergyPart strip = demo.getEnergyPart();
+        if (demo.getHud() == null || strip == null) {
+            return;
+        }
+        if (graph.getNode().getParent() == null) {
+            // The HUD's node comes and goes with the demo: the graph with it.
+            demo.getHud().getNode().attachChild(graph.getNode());
+        }
+        boolean wanted = looking && readSteps();
+        boolean presenting = demo.getDemoHud().isPresenting();
+        float size = presenting ? PRESENT_TEXT_FRACTION * HudLayout.PRESENT_SIZE
+                : HudLayout.SCENE_LABEL_SIZE;
+        if (presenting != graphPresenting) {
+            graphPresenting = presenting;
+            graphTextSize = Float.NaN;
+        }
+        strip.askBelowBars(wanted ? graph.widthFor(size) : 0f,
+                wanted ? graph.heightFor(size) : 0f);
+        boolean visible = wanted && !demo.getHud().isHelpVisible();
+        graph.setVisible(visible);
+        if (!visible) {
+            return;
+        }
+        HudLayout layout = demo.getHud().getLayout();
+        strip.copyBelowBars(graphSlot);
+        float textSize = layout.isPresenting()
+                ? PRESENT_TEXT_FRACTION * layout.getBodySize() : layout.getSceneLabelSize();
+        if (graphSlot.getX() != graphRect.getX() || graphSlot.getY() != graphRect.getY()
+                || graphSlot.getWidth() != graphRect.getWidth()
+                || graphSlot.getHeight() != graphRect.getHeight()
+                || textSize != graphTextSize) {
+            graphRect.set(graphSlot);
+            graphTextSize = textSize;
+            graph.layOut(graphRect, textSize);
+        }
+        graph.plot(steps.getTimes(), steps.getVelocityX(), steps.getVelocityY(), steps.size(),
+                steps.getChosen(), demo.getRun().getShownStep(), steps.slopeX(), steps.slopeY());
     }
 
     private void pointArrow(int which, Vector3f velocity) {

@@ -14,16 +14,20 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.KeyBinding;
+import particlelab.demo.LensPart;
 import particlelab.lecture.DragDemo;
+import particlelab.view.LensGraph;
 import particlelab.view.ScreenRect;
+import particlelab.world.StateSlab;
 
 /**
  * The window's mouse on DragDemo in a real headless application, through the application's
  * pick input and its framed camera: a press on a sphere, a move, a release move the launch to
  * where the mouse is (the new launch is drawn under the mouse) and the scene waits at t = 0;
  * a press on the parameter panel or with the help up picks nothing; the help and the footer
- * name the mouse's gestures. The drag's physics (ghosts, kept shots, inspector) is
- * {@code particlelab.demo.DragHeadlessTest}'s.
+ * name the mouse's gestures; with the derivative lens on, a click on a step dot shows that
+ * step and the lens's graph stands beside the scene. The drag's physics (ghosts, kept shots,
+ * inspector) is {@code particlelab.demo.DragHeadlessTest}'s.
  */
 class PickHeadlessTest {
 
@@ -109,6 +113,72 @@ class PickHeadlessTest {
         assertFalse((Boolean) result.get(2));
         assertNull(result.get(3));
         assertTrue((Boolean) result.get(4));
+    }
+
+    @Test
+    void withTheLensOnAClickOnAStepDotShowsThatStepAndTheGraphStandsBesideTheScene()
+            throws Exception {
+        Object[] result = harness.call(() -> {
+            drag.restart();
+            drag.getDragControl().clearPick();
+            drag.getParameters().set(LensPart.PARAMETER, 1f);
+            HeadlessHarness.fly(drag, 40, H);
+            // the lens follows the linear-drag sphere, the second particle: its position at
+            // the ring's 15th entry, as the run wrote it (t, then each particle's P and V)
+            long chosen = drag.getRun().getStateRing().getFirstIndex() + 15;
+            StateSlab slab = drag.getRun().getStateRing().read(chosen);
+            slab.getDouble();
+            for (int skip = 0; skip < 6; ++skip) {
+                slab.getFloat();
+            }
+            Vector3f dot = new Vector3f(slab.getFloat(), slab.getFloat(), slab.getFloat());
+            Vector3f screen = harness.app().getCamera().getScreenCoordinates(dot);
+            PickInput input = harness.app().getPickInput();
+            boolean taken = input.press(screen.x, screen.y);
+            input.release();
+            drag.update(H);
+            LensGraph graph = drag.getLens().getGraph();
+            ScreenRect area = new ScreenRect().set(graph.getArea());
+            ScreenRect strip = new ScreenRect().set(drag.getHud().getLayout().getLedger());
+            ScreenRect scene = drag.getWindow().copySceneRect(new ScreenRect());
+            List<ScreenRect> graphTexts = graph.copyTextRects(new java.util.ArrayList<>());
+            List<ScreenRect> hudTexts = drag.getWindow().copyTextRects(new java.util.ArrayList<>());
+            Object[] found = {taken, drag.getRun().isReplaying(), drag.getRun().getShownStep() - chosen,
+                dot.equals(drag.getLens().getLens().startPosition), graph.isVisible(), area,
+                strip, scene, graphTexts, hudTexts, graph.getTextSize(),
+                graph.getSlopeYText(), harness.app().getCamera().getWidth()};
+            drag.getParameters().set(LensPart.PARAMETER, 0f);
+            drag.restart();
+            drag.update(H);
+            return found;
+        });
+        assertTrue((Boolean) result[0], "the press on the dot was taken");
+        assertTrue((Boolean) result[1], "the click shows a recorded step");
+        assertEquals(0L, result[2], "the step of the dot clicked");
+        assertTrue((Boolean) result[3], "the lens looks from the dot, bit for bit");
+        assertTrue((Boolean) result[4], "the graph is shown");
+        ScreenRect area = (ScreenRect) result[5];
+        ScreenRect strip = (ScreenRect) result[6];
+        ScreenRect scene = (ScreenRect) result[7];
+        // in the strip down the scene's right edge, which the scene stays left of
+        assertTrue(strip.contains(area), area + " in " + strip);
+        assertTrue(area.getX() >= scene.getRight(), area + " right of the scene " + scene);
+        @SuppressWarnings("unchecked")
+        List<ScreenRect> graphTexts = (List<ScreenRect>) result[8];
+        @SuppressWarnings("unchecked")
+        List<ScreenRect> hudTexts = (List<ScreenRect>) result[9];
+        for (ScreenRect text : graphTexts) {
+            // a pixel's rounding at the edges (HudText's measured widths)
+            assertTrue(new ScreenRect(area.getX() - 1f, area.getY() - 1f, area.getWidth() + 2f,
+                    area.getHeight() + 2f).contains(text), text + " in the graph " + area);
+            for (ScreenRect other : hudTexts) {
+                assertFalse(text.intersects(other), text + " covers " + other);
+            }
+        }
+        // readable from the back row: the window's scene labels' size, at least 14 px
+        assertTrue((Float) result[10] >= 14f, "graph text " + result[10] + " px at "
+                + result[12] + " px wide");
+        assertTrue(((String) result[11]).startsWith("slope of V_y: -"), (String) result[11]);
     }
 
     @Test

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Paths;
@@ -21,12 +22,16 @@ import particlelab.physics.Particle;
 import particlelab.physics.SimulationClock;
 import particlelab.reference.ExactPath;
 import particlelab.view.TextFormat;
+import particlelab.world.StateRing;
+import particlelab.world.StateSlab;
 
 /**
  * The derivative lens on the free-flight demos' HUD ({@link LensPart}), in plain JUnit: its
  * four lines give the values {@link DerivativeLens} computes for the shown step (the live
  * end's, and a replayed one's after steps back), the chord is {@code V_{i+1}}, and the exact
- * tangents are the closed form's under gravity.
+ * tangents are the closed form's under gravity; a click on a step dot shows that step and
+ * the lens looks there; the graph's slope of V_y at the chosen step is −g to float rounding
+ * under gravity alone and the step's own acceleration under linear drag.
  */
 class LensPartTest {
 
@@ -114,8 +119,9 @@ class LensPartTest {
             advance(demo, 20);
             DemoParticle sphere = demo.getParticles().get((Integer) entry[1]);
             String hud = demo.formatHud(new StringBuilder()).toString();
-            assertTrue(hud.contains("derivative lens (O) at step " + demo.getRun().getShownStep()
-                    + ", t_i = 0.333 s, h = 0.0167 s"), demo.getTitle() + ":\n" + hud);
+            assertTrue(hud.contains("derivative lens (O; click a step dot) at step "
+                    + demo.getRun().getShownStep() + ", t_i = 0.333 s, h = 0.0167 s"),
+                    demo.getTitle() + ":\n" + hud);
             Particle particle = sphere.getParticle();
             DerivativeLens lens = assertLinesFor(hud, sphere, particle.position,
                     particle.velocity);
@@ -175,8 +181,8 @@ class LensPartTest {
         // the ring gave back step k's state bit for bit
         assertEquals(positions[k], ball.getParticle().position);
         String hud = demo.formatHud(new StringBuilder()).toString();
-        assertTrue(hud.contains("derivative lens (O) at step " + (live - 3) + ", t_i = "),
-                hud);
+        assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + (live - 3)
+                + ", t_i = "), hud);
         DerivativeLens lens = assertLinesFor(hud, ball, positions[k], velocities[k]);
         // the step the lens takes again is the one the world took from there, bit for bit
         assertEquals(positions[k + 1], lens.endPosition);
@@ -190,7 +196,7 @@ class LensPartTest {
     @Test
     void theEnergyPagesLensLinesAreThePullDemosAtStep60() throws IOException {
         String page = Files.readString(Paths.get("docs", "energy.md"));
-        int start = page.indexOf("derivative lens (O) at step 60,");
+        int start = page.indexOf("derivative lens (O; click a step dot) at step 60,");
         assertTrue(start >= 0, "docs/energy.md quotes the lens at step 60");
         String quoted = page.substring(start, page.indexOf("```", start));
         GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
@@ -215,5 +221,138 @@ class LensPartTest {
         assertTrue(demo.formatHud(new StringBuilder()).toString().contains("derivative lens"));
         lensKey.press(0);
         assertFalse(demo.formatHud(new StringBuilder()).toString().contains("derivative lens"));
+    }
+
+    /** A camera facing the plane z = 0 from 30 m, centred on pull's flight (29 px/m). */
+    private static Camera faceOnCamera() {
+        Camera camera = new Camera(1280, 720);
+        camera.setFrustumPerspective(45f, 1280f / 720f, 1f, 1000f);
+        camera.setLocation(new Vector3f(10f, 3f, 30f));
+        camera.lookAt(new Vector3f(10f, 3f, 0f), Vector3f.UNIT_Y);
+        return camera;
+    }
+
+    /** The position of a particle in a ring entry, as the run writes it (t, then P, V). */
+    private static Vector3f positionAt(StateRing ring, long entry, int particle) {
+        StateSlab slab = ring.read(entry);
+        slab.getDouble();
+        for (int skip = 0; skip < 6 * particle; ++skip) {
+            slab.getFloat();
+        }
+        return new Vector3f(slab.getFloat(), slab.getFloat(), slab.getFloat());
+    }
+
+    @Test
+    void aClickOnAStepDotShowsThatStepAndTheLensLooksThere() {
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        advance(demo, 60);
+        LensPart part = demo.getLens();
+        Camera camera = faceOnCamera();
+        long chosen = demo.getRun().getStateRing().getFirstIndex() + 20;
+        Vector3f dot = positionAt(demo.getRun().getStateRing(), chosen, 0);
+        Vector3f screen = camera.getScreenCoordinates(dot);
+        // a press a pixel off the dot: the dots are 6 to 11 px apart here (|V|·h from 0.17
+        // to 0.24 m at 29 px/m), so the nearest is still step 20's
+        assertTrue(part.clickStepDot(camera, screen.x + 1f, screen.y));
+        assertTrue(demo.getRun().isReplaying(), "the click shows a recorded step");
+        assertTrue(demo.getClock().isPaused());
+        assertEquals(chosen, demo.getRun().getShownStep());
+        // the sphere is at that dot, bit for bit, and the lens looks at the step from there
+        assertEquals(dot, demo.getParticles().get(0).getParticle().position);
+        String hud = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + chosen
+                + ", t_i = 0.333 s"), hud);
+        assertEquals(dot, part.getLens().startPosition);
+        // the steps plotted end at the chosen one and the step looked at
+        assertTrue(part.readSteps());
+        LensSteps steps = part.getSteps();
+        assertEquals(chosen, steps.getEntry(steps.getChosen()));
+        assertEquals(steps.getChosen() + 2, steps.size());
+    }
+
+    @Test
+    void aClickAwayFromTheDotsOrWithTheLensOffChoosesNothing() {
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        advance(demo, 60);
+        Camera camera = faceOnCamera();
+        long live = demo.getRun().getShownStep();
+        // 10 m above the flight's apex (5.1 m): 290 px from any dot
+        Vector3f sky = camera.getScreenCoordinates(new Vector3f(10f, 15f, 0f));
+        assertFalse(demo.getLens().clickStepDot(camera, sky.x, sky.y));
+        Vector3f dot = camera.getScreenCoordinates(positionAt(demo.getRun().getStateRing(), 20, 0));
+        demo.getParameters().set(LensPart.PARAMETER, 0f);
+        assertFalse(demo.getLens().clickStepDot(camera, dot.x, dot.y));
+        assertFalse(demo.getRun().isReplaying());
+        assertEquals(live, demo.getRun().getShownStep());
+    }
+
+    @Test
+    void onceTheSphereLandedAClickOnADotOfItsFlightLooksThereAgain() {
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        // the launch at (10, 10) m/s lands after 2.04 s: 150 steps are past it
+        advance(demo, 150);
+        String landed = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(landed.contains("derivative lens (O): the sphere is not flying;"
+                + " click a step dot of its flight\n"), landed);
+        Camera camera = faceOnCamera();
+        Vector3f dot = positionAt(demo.getRun().getStateRing(), 60, 0);
+        Vector3f screen = camera.getScreenCoordinates(dot);
+        assertTrue(demo.getLens().clickStepDot(camera, screen.x, screen.y));
+        assertEquals(60, demo.getRun().getShownStep());
+        String hud = demo.formatHud(new StringBuilder()).toString();
+        assertTrue(hud.contains("derivative lens (O; click a step dot) at step 60,"), hud);
+    }
+
+    @Test
+    void theGraphsSlopeOfVyIsMinusGToFloatRoundingUnderGravityAlone() {
+        GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
+        advance(demo, 90);
+        LensPart part = demo.getLens();
+        float g = Gravity.STANDARD_G;
+        for (int back = 0; back <= 40; back += 20) {
+            for (int i = 0; i < 20 && back > 0; ++i) {
+                demo.getReplayControls().stepBack();
+            }
+            assertTrue(part.readSteps());
+            LensSteps steps = part.getSteps();
+            int chosen = steps.getChosen();
+            float vy = steps.getVelocityY()[chosen];
+            // V_y,i+1 = V_y,i + fl(h·(−g)) rounded once to float: the difference the graph
+            // divides by h is h·g off by at most half an ulp of V_y, so the slope is −g
+            // within ulp(V_y)/(2h) (6e-5 m/s² at |V_y| < 8 m/s), plus fl(h·g)'s 6e-8 relative
+            double tolerance = Math.ulp(Math.abs(vy)) / (2.0 * H) + 1e-7 * g;
+            assertEquals(-g, steps.slopeY(), tolerance, "at step " + demo.getRun().getShownStep());
+            // no force along x: V_x is the same float, the slope exactly 0
+            assertEquals(0.0, steps.slopeX());
+            // the two plotted points are the chosen step and the one the lens looks at
+            assertEquals(part.getLens().stepVelocity.y, steps.getVelocityY()[chosen + 1]);
+            assertEquals(part.getLens().startVelocity.y, vy);
+        }
+    }
+
+    @Test
+    void underLinearDragTheGraphsSlopeIsTheStepsAccelerationAtTheChosenStep() {
+        DragDemo demo = withLens(new DragDemo());
+        // early in the flight, V_y still large: the drag's k·V_y is far from 0
+        advance(demo, 10);
+        demo.getReplayControls().stepBack();
+        demo.getReplayControls().stepBack();
+        LensPart part = demo.getLens();
+        assertTrue(part.readSteps());
+        LensSteps steps = part.getSteps();
+        int chosen = steps.getChosen();
+        double vx = steps.getVelocityX()[chosen];
+        double vy = steps.getVelocityY()[chosen];
+        // linear drag: a = g − (b/m)·V, and b/m = g/v_t with the demo's terminal speed m·g/b
+        double g = Gravity.STANDARD_G;
+        double k = g / demo.terminalSpeed(1);
+        // the step adds fl(h·a) to V and rounds once: off by half an ulp of |V| over h, and
+        // a's float evaluation by a few ulps of its terms (1e-6 relative of g + k·|V|)
+        double tolerance = Math.ulp((float) Math.hypot(vx, vy)) / (2.0 * H)
+                + 1e-6 * (g + k * Math.hypot(vx, vy));
+        assertEquals(-g - k * vy, steps.slopeY(), tolerance);
+        assertEquals(-k * vx, steps.slopeX(), tolerance);
+        // and the drag shows: the slope is not −g
+        assertTrue(Math.abs(steps.slopeY() + g) > 1.0, "slope " + steps.slopeY());
     }
 }
