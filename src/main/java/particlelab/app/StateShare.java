@@ -1,6 +1,5 @@
 package particlelab.app;
 
-import com.jme3.system.JmeContext;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -27,8 +26,8 @@ import particlelab.world.Fountain;
  * has no {@code --frames}.
  * </ul>
  * The command is checked before it is given: a new demo of the same kind takes the settings
- * as {@code --set} does and runs K frames of h in jME's headless context, as the command
- * does without a window, and its {@link StateHash} is compared with the state's. A state
+ * as {@code --set} does and runs K frames of h without a window and without a jME
+ * application, as the command does, and its {@link StateHash} is compared with the state's. A state
  * reached with inputs no command line carries (a drag of a body's position, a key that fired
  * or relaunched mid-run, raw or varying frame times) differs, and the second line says so
  * rather than claim the command reproduces it.
@@ -151,8 +150,8 @@ final class StateShare {
         }
 
         /**
-         * Re-run the command (in a new demo and, past step 0, a headless jME application of
-         * its own) and compare the hashes. Any thread may call it.
+         * Re-run the command (in a new demo, its frames as the window runs them, without a
+         * jME application) and compare the hashes. Any thread may call it.
          *
          * @return the share, checked unless the command has more than
          *     {@link #MAX_CHECKED_STEPS} steps or its run failed (not null)
@@ -201,9 +200,10 @@ final class StateShare {
     }
 
     /**
-     * Re-run a command's settings and frames in a new demo as the command does: in jME's
-     * headless context (no window, nothing drawn), so what a demo does once a frame besides
-     * its steps (the targets demo's new round) happens too. Its hash, or null if it failed.
+     * Re-run a command's settings and frames in a new demo as the command does: its frames
+     * as the window runs them ({@link ExportRun#runFrames}: the demo's own update, so what a
+     * demo does once a frame besides its steps, the targets demo's new round, happens too),
+     * without a jME application. Its hash, or null if it failed.
      */
     private static Long rerun(int index, int particles, List<String> settings, long steps,
             float stepSeconds) {
@@ -214,17 +214,15 @@ final class StateShare {
             fresh.advancePhysics(0f);
             return StateHash.of(fresh);
         }
-        ParticleLabApp app = new ParticleLabApp(List.of(fresh), 0, (int) steps, null,
-                stepSeconds, false);
-        app.start(JmeContext.Type.Headless);
         try {
-            app.awaitFinished(Long.MAX_VALUE);
+            ExportRun.runFrames(fresh, (int) steps, stepSeconds);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
-            app.stop();
+            return null;
+        } catch (RuntimeException failure) {
             return null;
         }
-        return app.getFailure() == null ? StateHash.of(fresh) : null;
+        return StateHash.of(fresh);
     }
 
     /** The demo's place in the catalogue, by its class. */

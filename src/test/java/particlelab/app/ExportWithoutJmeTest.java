@@ -45,12 +45,17 @@ class ExportWithoutJmeTest {
             ByteArrayOutputStream out = new ByteArrayOutputStream();
             ByteArrayOutputStream err = new ByteArrayOutputStream();
             Object code = run.invoke(null, new String[] {"demo", demo, "--frames", "120",
-                "--fixed-tpf", "0.016666668", "--export", into.toString()},
+                "--fixed-tpf", "0.016666668", "--export", into.toString(), "--print-command"},
                     new PrintStream(out, true, StandardCharsets.UTF_8),
                     new PrintStream(err, true, StandardCharsets.UTF_8));
             assertEquals(0, code, demo + ": " + out + err);
             assertTrue(out.toString(StandardCharsets.UTF_8).startsWith("csv "), out.toString());
             assertTrue(Files.list(into).count() >= 2, demo + ": a table and parameters.csv");
+            // --print-command's check re-ran the 120 frames, without an application either
+            assertTrue(out.toString(StandardCharsets.UTF_8).contains(
+                    "state: step 120, t = 2.0000 s"), out.toString());
+            assertTrue(out.toString(StandardCharsets.UTF_8).contains(
+                    "the command re-run gives the same bits"), out.toString());
             // The demo's own classes were loaded here, so the check below means something.
             assertTrue(loader.hasLoaded("particlelab.demo.DemoState"), demo);
             assertTrue(loader.hasLoaded("com.jme3.math.Vector3f"), demo);
