@@ -204,6 +204,15 @@ final class TourGuide {
             demo.showNotice("stop " + (stop + 1) + " has no question yet");
             return;
         }
+        DemoState stopDemo = switcher.getDemos().get(DemoCatalog.indexOf(
+                LectureTour.stops().get(stop).getDemo()));
+        if (demo != stopDemo) {
+            // The question is about the stop's scene: a demo Tab or a digit switched to has
+            // none of its parameters ("no parameter named e" closed the window, issue 36).
+            demo.showNotice("F4 asks stop " + (stop + 1) + "'s question in "
+                    + stopDemo.getTitle() + ": go back to it first");
+            return;
+        }
         if (vote == null) {
             // Start the scene again and hold it at its start: nothing shown gives it away.
             demo.restart();
