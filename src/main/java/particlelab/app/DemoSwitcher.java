@@ -155,6 +155,15 @@ public final class DemoSwitcher extends BaseAppState {
     }
 
     /**
+     * Test whether a demo was asked for and is not shown yet (it is from the next update).
+     *
+     * @return true between {@link #select} of another demo and the switch
+     */
+    public boolean isSwitchPending() {
+        return requested != selected;
+    }
+
+    /**
      * Test whether a digit is waiting for a second one.
      *
      * @return true while an entry such as "1_" is pending

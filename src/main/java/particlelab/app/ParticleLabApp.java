@@ -59,6 +59,8 @@ public final class ParticleLabApp extends SimpleApplication {
     private final ExportState export;
     /** The C key: the command line of the state shown (issue 33). */
     private final ShareKey shareKey;
+    /** Gives Lemur's globals back to an application running before this one started. */
+    private Runnable lemurRelease = () -> { };
     /** The left mouse button on the bodies; it moves the camera's turning to the right. */
     private final PickInput pickInput;
     private final int frameLimit;
@@ -294,8 +296,9 @@ public final class ParticleLabApp extends SimpleApplication {
         if (capture != null) {
             guiViewPort.addProcessor(capture);
         }
-        // Lemur (the parameter panel's buttons and sliders) is set up once per application.
-        ParameterPanel.initializeLemur(this);
+        // Lemur (the parameter panel's buttons and sliders) is set up once per application;
+        // an application run inside another gives it its Lemur back when it ends (destroy).
+        lemurRelease = ParameterPanel.initializeLemur(this);
         stateManager.attach(switcher);
         stateManager.attach(windowControls);
         stateManager.attach(export);
@@ -356,6 +359,7 @@ public final class ParticleLabApp extends SimpleApplication {
         }
         failure = errorMessage + reason;
         stop();
+        lemurRelease.run();
         finished.countDown();
     }
 
@@ -387,6 +391,8 @@ public final class ParticleLabApp extends SimpleApplication {
             // prints "thrown from the UncaughtExceptionHandler") and hide the first reason.
             LOGGER.log(Level.FINE, "tidying up after a failure failed too", tidyFailure);
         } finally {
+            // Before the latch: a window waiting for this run finds its own Lemur again.
+            lemurRelease.run();
             finished.countDown();
         }
     }

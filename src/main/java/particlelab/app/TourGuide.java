@@ -217,9 +217,15 @@ final class TourGuide {
         }
         DemoState stopDemo = switcher.getDemos().get(DemoCatalog.indexOf(
                 LectureTour.stops().get(stop).getDemo()));
-        if (vote == null && demo != stopDemo) {
+        if (demo != stopDemo) {
             // PageDown and F4 in one frame: the stop's demo is shown from the next frame on.
-            demo.showNotice("the stop is still opening: press F4 again");
+            // Otherwise Tab or a digit switched away: the question is about the stop's scene,
+            // and this demo has none of its parameters ("no parameter named e" closed the
+            // window, issue 36).
+            demo.showNotice(switcher.isSwitchPending()
+                    ? "the stop is still opening: press F4 again"
+                    : "F4 asks stop " + (stop + 1) + "'s question in " + stopDemo.getTitle()
+                            + ": go back to it first");
             return;
         }
         if (vote == null) {

@@ -782,16 +782,20 @@ final class DemoScene {
         CameraFraming.frame(camera, plane);
     }
 
-    /** Build the grid over the region, in place of the one before (and its marks). */
+    /**
+     * Build the grid over the region, in place of the one before (and its marks). The new
+     * grid is made first: one that cannot be made leaves the old one whole, marks and all.
+     */
     private void buildGrid() {
+        DistanceGrid built = new DistanceGrid(assets, font, gridLeft, gridRight, yMin,
+                Math.max(yMax, gridTop), gridSpacing, gridLabelEvery);
         if (grid != null) {
             grid.getNode().removeFromParent();
             for (int i = fixedLabels.size() - 1; i >= markerLabels; --i) {
                 fixedLabels.remove(i);
             }
         }
-        grid = new DistanceGrid(assets, font, gridLeft, gridRight, yMin,
-                Math.max(yMax, gridTop), gridSpacing, gridLabelEvery);
+        grid = built;
         sceneNode.attachChild(grid.getNode());
         fixedLabels.addAll(grid.getLabels());
     }

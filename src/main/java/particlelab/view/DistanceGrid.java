@@ -29,6 +29,17 @@ public final class DistanceGrid {
     private static final ColorRGBA LABEL_COLOR = new ColorRGBA(0.85f, 0.88f, 0.95f, 1f);
     /** The backdrop sits this far behind the particles' plane (in metres). */
     private static final float BACK_Z = -0.05f;
+    /**
+     * The most grid lines across the grid, and the most up it: past it the spacing grows
+     * tenfold until the lines fit, so the line meshes and the marks stay bounded whatever
+     * region a frame asks for. A window whose scene was left a pixel high (a small window,
+     * the panel open, a large HUD factor) framed a region 3·10^9 spacings wide: the lines
+     * overflowed their count and the buffer it sized (issue 36). A frame of any window
+     * the HUD leaves room in holds a few hundred at most.
+     */
+    public static final int MAX_LINES = 1000;
+    /** How much the spacing grows at a time when the lines would not fit: 1, 2, 5 stay so. */
+    private static final float SPACING_GROWTH = 10f;
 
     private final Node node = new Node("distance grid");
     private final List<SceneLabel> labels = new ArrayList<>();
@@ -38,6 +49,8 @@ public final class DistanceGrid {
     private final int[] groundMarkIndices;
     /** The distance between two neighbouring ground marks (in metres). */
     private final float markSpacing;
+    /** The distance between two neighbouring lines (in metres). */
+    private final float spacing;
 
     /**
      * Build a grid.
@@ -48,17 +61,26 @@ public final class DistanceGrid {
      * @param xMax the right edge (in metres, &gt;xMin)
      * @param yMin the bottom of the ground band (in metres, &lt;0)
      * @param yMax the top edge (in metres, &gt;0)
-     * @param spacing the distance between lines (in metres, &gt;0)
+     * @param asked the distance between lines (in metres, &gt;0; grown tenfold until at
+     *     most {@link #MAX_LINES} lines go across and up)
      * @param labelEvery label every this many lines (&ge;1)
      */
     public DistanceGrid(AssetManager assetManager, BitmapFont font, float xMin, float xMax,
-            float yMin, float yMax, float spacing, int labelEvery) {
-        if (!(xMax > xMin && yMax > 0f && yMin < 0f && spacing > 0f && labelEvery >= 1)) {
-            throw new IllegalArgumentException("grid needs xMin < xMax, yMin < 0 < yMax,"
+            float yMin, float yMax, float asked, int labelEvery) {
+        if (!(xMax > xMin && yMax > 0f && yMin < 0f && asked > 0f && labelEvery >= 1)
+                || Float.isInfinite(xMax - xMin) || Float.isInfinite(yMin)
+                || Float.isInfinite(yMax) || Float.isInfinite(asked)) {
+            throw new IllegalArgumentException("grid needs finite xMin < xMax, yMin < 0 < yMax,"
                     + " spacing > 0 and labelEvery >= 1, but got x " + xMin + ".." + xMax
-                    + ", y " + yMin + ".." + yMax + ", spacing " + spacing
+                    + ", y " + yMin + ".." + yMax + ", spacing " + asked
                     + ", labelEvery " + labelEvery);
         }
+        float spacing = asked;
+        while (countColumns(xMin, xMax, spacing) > MAX_LINES
+                || Math.floor((double) yMax / spacing) > MAX_LINES) {
+            spacing *= SPACING_GROWTH;
+        }
+        this.spacing = spacing;
         Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
         int firstColumn = (int) Math.ceil(xMin / spacing);
         int lastColumn = (int) Math.floor(xMax / spacing);
@@ -146,6 +168,16 @@ public final class DistanceGrid {
     }
 
     /**
+     * Return the distance between two neighbouring lines: the spacing asked, or ten, a
+     * hundred, ... times it where the region would hold more than {@link #MAX_LINES}.
+     *
+     * @return the spacing (in metres, &gt;0)
+     */
+    public float getSpacing() {
+        return spacing;
+    }
+
+    /**
      * Access the node holding the grid.
      *
      * @return the live node (not null)
@@ -155,7 +187,12 @@ public final class DistanceGrid {
     }
 
     private static String metres(float value) {
-        return Math.round(value) + " m";
+        return Math.round((double) value) + " m";
+    }
+
+    /** The lines from xMin to xMax at a spacing, in double: no int overflows (&ge;0). */
+    private static double countColumns(float xMin, float xMax, float spacing) {
+        return Math.floor((double) xMax / spacing) - Math.ceil((double) xMin / spacing) + 1.0;
     }
 
     private void addLabel(BitmapFont font, float x, float y, SceneLabel.Anchor anchor) {

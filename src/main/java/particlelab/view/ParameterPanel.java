@@ -175,20 +175,33 @@ public final class ParameterPanel {
     }
 
     /**
-     * Make Lemur ready for an application: once per application, before any panel is built
-     * (Lemur keeps one set of globals, which a new application replaces).
+     * Make Lemur ready for an application: once per application, before any panel is built.
+     * Lemur keeps one set of globals per JVM, which a new application replaces; an
+     * application started while another runs (the C key's headless re-run inside the
+     * window) must give the other its globals back when it ends, with the action returned:
+     * the window's panel would otherwise find no input or focus in them and throw on its
+     * next click (issue 36).
      *
      * @param app the application (not null)
+     * @return what puts the globals there before back, if this application's are still
+     *     there: run it when the application ends (not null)
      */
-    public static void initializeLemur(Application app) {
+    public static Runnable initializeLemur(Application app) {
+        GuiGlobals before = GuiGlobals.getInstance();
         GuiGlobals.initialize(app);
+        GuiGlobals own = GuiGlobals.getInstance();
         // Lemur's keyboard focus navigation would take Tab and the arrow keys, which the
         // demos use; the panel's keys are the app's own (see the help). A headless
         // application has no such state.
-        FocusNavigationState navigation = GuiGlobals.getInstance().getFocusNavigationState();
+        FocusNavigationState navigation = own.getFocusNavigationState();
         if (navigation != null) {
             navigation.setEnabled(false);
         }
+        return () -> {
+            if (before != null && GuiGlobals.getInstance() == own) {
+                GuiGlobals.setInstance(before);
+            }
+        };
     }
 
     /**

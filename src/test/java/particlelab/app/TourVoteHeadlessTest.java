@@ -29,6 +29,8 @@ class TourVoteHeadlessTest {
 
     /** Stop 8, the pull at h = 1/60 s. */
     private static final int PULL_STOP = 7;
+    /** Stop 2, the collisions' head-on impact: is kinetic energy kept? (it reads e). */
+    private static final int ENERGY_STOP = 1;
     /** Calls to wait for the reveal: the ball lands after 2 s, 120 frames at 60 Hz. */
     private static final int MAX_WAITS = 60;
     private static final int FRAMES_PER_WAIT = 10;
@@ -195,6 +197,46 @@ class TourVoteHeadlessTest {
             return under;
         });
         assertEquals(List.of(), covered, "spheres under the reveal's box");
+    }
+
+    /**
+     * Issue 36: F4 at a stop answered its question from the demo on screen, which Tab or a
+     * digit may have changed: at the collisions' stop (its energy question), from uniform
+     * motion, it asked for a restitution uniform motion has not ("no parameter named e") on
+     * the render thread, and a second F4 closed the window. It now asks nothing and says why.
+     */
+    @Test
+    void f4AwayFromTheStopsDemoAsksNothingAndSaysWhy() throws Exception {
+        ParticleLabApp app = harness.app();
+        TourGuide tour = app.getTour();
+        KeyBinding f4 = binding(tour, "F4");
+        harness.call(() -> {
+            tour.go(ENERGY_STOP);
+            return true;
+        });
+        harness.awaitFrames(3);
+        harness.call(() -> {
+            app.getSwitcher().select(DemoCatalog.indexOf("uniform"));
+            return true;
+        });
+        harness.awaitFrames(3);
+        String[] result = harness.call(() -> {
+            DemoState shown = app.getSwitcher().getSelected();
+            String thrown = "";
+            try {
+                f4.press(0);
+            } catch (RuntimeException e) {
+                thrown = e.toString();
+            }
+            String notice = shown.getNotice();
+            boolean asked = tour.getVote() != null;
+            tour.leave();
+            return new String[] {thrown, String.valueOf(asked), notice};
+        });
+        assertEquals("", result[0]);
+        assertEquals("false", result[1]);
+        assertTrue(result[2].startsWith("F4 asks stop " + (ENERGY_STOP + 1)
+                + "'s question in "), result[2]);
     }
 
     private static KeyBinding binding(TourGuide tour, String label) {

@@ -88,6 +88,50 @@ class SmallPanelHeadlessTest {
     }
 
     /**
+     * Issue 36's BufferOverflowException: at 200x150 with the HUD factor 2 (F10), presenting
+     * and the panel open, the HUD leaves the scene about a pixel high, and the frame
+     * stretched to that shape asked for a distance grid of 10^9 lines or more: its line
+     * count overflowed (the buffer it sized overflowed in the window) or its loop never
+     * ended (this test timed out in the first demo). Every demo lays out and runs its
+     * frames there, and nothing is recovered from.
+     */
+    @Test
+    void everyDemoLaysOutItsGridWhenTheHudLeavesTheSceneAPixelHigh() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<String> problems = new ArrayList<>();
+        int count = app.getSwitcher().getDemos().size();
+        for (int index = 0; index < count; ++index) {
+            int chosen = index;
+            DemoState demo = app.getSwitcher().getDemos().get(index);
+            problems.add(harness.call(() -> {
+                app.getSwitcher().select(chosen);
+                frame(app);
+                HeadlessHarness.press(demo, "F2");
+                try {
+                    app.getWindowControls().setUiFactor(2f);
+                    app.getWindowControls().setPresenting(true);
+                    app.reshape(200, 150);
+                    for (int frame = 0; frame < FRAMES; ++frame) {
+                        frame(app);
+                    }
+                    return app.getRecovered() == null ? check(demo, new int[] {200, 150}, true)
+                            : demo.getTitle() + ": " + app.getRecovered();
+                } catch (RuntimeException e) {
+                    return demo.getTitle() + ": " + e;
+                } finally {
+                    HeadlessHarness.press(demo, "F2");
+                    app.getWindowControls().setPresenting(false);
+                    app.getWindowControls().setUiFactor(1f);
+                    app.reshape(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
+                    frame(app);
+                }
+            }));
+        }
+        problems.removeIf(String::isEmpty);
+        assertEquals(List.of(), problems);
+    }
+
+    /**
      * The panel put into slots from a pixel wide up, at the HUD scales from the smallest to
      * the largest, and laid out by Lemur as a frame does: nothing is handed a negative size.
      */

@@ -1,6 +1,7 @@
 package particlelab.view;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.asset.AssetManager;
@@ -210,6 +211,69 @@ class BufferBoundsTest {
         }
     }
 
+    /**
+     * Issue 36's BufferOverflowException, as a window recorded it (DistanceGrid.lines, at a
+     * layout): a small window with the panel open and a large HUD factor left the scene a
+     * pixel high, and the frame stretched to that shape asked for a grid about 3·10^9
+     * spacings wide. Counted in an int, its lines wrapped to a negative count, the buffer
+     * was sized for one line and the second overflowed it. The grid now grows its spacing
+     * tenfold until at most {@link DistanceGrid#MAX_LINES} lines go each way.
+     */
+    @Test
+    void aGridOverAVastRegionGrowsItsSpacingAndHoldsItsLines() {
+        DistanceGrid grid = new DistanceGrid(ASSETS, FONT, -1.5e9f, 1.5e9f, -4.4e6f, 20f,
+                1f, 5);
+        // 3·10^9 m at 10^6 m would be 3001 lines, at 10^7 m 301 (from -150 to 150).
+        assertEquals(1e7f, grid.getSpacing());
+        assertEquals(5e7f, grid.getMarkSpacing());
+        assertEquals(301, countLines(grid));
+        // The ground marks every 5th line, -150 to 150 in steps of 5; nothing up (20 m).
+        assertEquals(61, grid.countGroundMarks());
+        assertEquals(61, grid.getLabels().size());
+        assertEquals("-1500000000 m", grid.getLabels().get(0).getText().getText());
+        assertEquals("1500000000 m", grid.getLabels().get(60).getText().getText());
+    }
+
+    /**
+     * At its boundary: {@link DistanceGrid#MAX_LINES} lines across (or up) keep the spacing
+     * asked; one more grows it tenfold. Each line mesh holds its lines, two vertices each.
+     */
+    @Test
+    void aGridKeepsItsSpacingUpToItsMostLinesAndGrowsItOnePast() {
+        int most = DistanceGrid.MAX_LINES;
+        // Lines at x = 1 to most, and none up (y up to 0.5).
+        DistanceGrid across = new DistanceGrid(ASSETS, FONT, 0.5f, most + 0.5f, -1f, 0.5f,
+                1f, 5);
+        assertEquals(1f, across.getSpacing());
+        assertEquals(most, countLines(across));
+        // One more across: every 10 m, x = 10 to 1000.
+        DistanceGrid pastAcross = new DistanceGrid(ASSETS, FONT, 0.5f, most + 1.5f, -1f,
+                0.5f, 1f, 5);
+        assertEquals(10f, pastAcross.getSpacing());
+        assertEquals(most / 10, countLines(pastAcross));
+        // Up: lines at y = 1 to most (and x = 1 across).
+        DistanceGrid up = new DistanceGrid(ASSETS, FONT, 0.5f, 1.5f, -1f, most, 1f, 5);
+        assertEquals(1f, up.getSpacing());
+        assertEquals(most + 1, countLines(up));
+        DistanceGrid pastUp = new DistanceGrid(ASSETS, FONT, 0.5f, 1.5f, -1f, most + 1f, 1f,
+                5);
+        assertEquals(10f, pastUp.getSpacing());
+        // y = 10 to 1000, and no column at 10 m steps between 0.5 and 1.5.
+        assertEquals(most / 10, countLines(pastUp));
+    }
+
+    /** A region no grid can cover is refused where it enters, naming it. */
+    @Test
+    void aGridRefusesARegionWithNoFiniteSize() {
+        IllegalArgumentException refused = assertThrows(IllegalArgumentException.class,
+                () -> new DistanceGrid(ASSETS, FONT, -3e38f, 3e38f, -1f, 20f, 1f, 5));
+        assertTrue(refused.getMessage().contains("x -3.0E38..3.0E38"), refused.getMessage());
+        refused = assertThrows(IllegalArgumentException.class,
+                () -> new DistanceGrid(ASSETS, FONT, 0f, 10f, -1f, Float.POSITIVE_INFINITY,
+                        1f, 5));
+        assertTrue(refused.getMessage().contains("y -1.0..Infinity"), refused.getMessage());
+    }
+
     /** jME's own text (scene labels, the panel's labels) grows its buffers as text grows. */
     @Test
     void jmeBitmapTextGrowsWithItsText() {
@@ -221,6 +285,31 @@ class BufferBoundsTest {
             assertBuffersHold(glyphs.getMesh(), glyphs.getMesh().getVertexCount(),
                     length + " characters");
         }
+    }
+
+    /**
+     * Count a grid's lines, checking that each line mesh holds two vertices a line within
+     * its buffers (a mesh with no line holds one of zero length).
+     */
+    private static int countLines(DistanceGrid grid) {
+        int lines = 0;
+        for (Spatial child : grid.getNode().getChildren()) {
+            // The two line meshes, by their names (the marks' texts have none).
+            if (!"grid lines".equals(child.getName())
+                    && !"grid major lines".equals(child.getName())) {
+                continue;
+            }
+            Mesh mesh = ((Geometry) child).getMesh();
+            assertEquals(Mesh.Mode.Lines, mesh.getMode());
+            assertBuffersHold(mesh, mesh.getVertexCount(), child.getName());
+            float[] positions = floats(mesh);
+            boolean none = true;
+            for (float value : positions) {
+                none &= value == 0f;
+            }
+            lines += none ? 0 : mesh.getVertexCount() / 2;
+        }
+        return lines;
     }
 
     /** A text of printable characters and a line break every 40. */
