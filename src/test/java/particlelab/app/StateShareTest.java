@@ -3,10 +3,8 @@ package particlelab.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
-import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.simsilica.lemur.GuiGlobals;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -137,28 +135,6 @@ class StateShareTest {
         assertEquals(share.command + "\n" + share.stateLine() + "\n",
                 printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
         assertTrue(uniform.getNotice().endsWith("re-run: same bits)"), uniform.getNotice());
-    }
-
-    /**
-     * Issue 36: C re-runs the command in a second, headless application, which set Lemur up
-     * for itself: Lemur keeps one set of globals per JVM, so the window's were replaced by
-     * a headless set without input or focus, and the window's next click on the panel threw
-     * on the render thread (the second click closed it). The window keeps its own.
-     */
-    @Test
-    void theKeyCsReRunLeavesTheWindowItsLemurGlobals() throws Exception {
-        DemoState uniform = DemoCatalog.entries().get(DemoCatalog.indexOf("uniform"))
-                .create();
-        try (HeadlessHarness harness = HeadlessHarness.start(List.of(uniform))) {
-            GuiGlobals window = harness.call(GuiGlobals::getInstance);
-            StateShare share = harness.call(() -> {
-                HeadlessHarness.fly(uniform, 10, 1f / 60f);
-                return harness.app().getShareKey().share();
-            });
-            // The re-run did run (in its own application), and left the globals as they were.
-            assertTrue(share.reproduces(), share.stateLine());
-            assertSame(window, harness.call(GuiGlobals::getInstance));
-        }
     }
 
     /**

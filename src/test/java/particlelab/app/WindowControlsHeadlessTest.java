@@ -13,6 +13,8 @@ import com.jme3.input.InputManager;
 import com.jme3.input.KeyInput;
 import com.jme3.input.event.KeyInputEvent;
 import com.jme3.math.Vector3f;
+import com.jme3.system.JmeContext;
+import com.simsilica.lemur.GuiGlobals;
 import java.lang.reflect.Field;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -20,6 +22,7 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -515,5 +518,34 @@ class WindowControlsHeadlessTest {
             parts.add(line.contains(" ms/frame") ? "(measured line)" : line);
         }
         return String.join("\n", parts);
+    }
+
+    /**
+     * Issue 36: a second application in this JVM (the C key's check once started one) set
+     * Lemur up for itself; Lemur keeps one set of globals per JVM, so the window's were
+     * replaced by a headless set without input or focus, and the window's next click on the
+     * panel threw on the render thread (the second click closed it). An application now gives
+     * back the globals it found when it ends, and the C key's check makes no application.
+     */
+    @Test
+    void aSecondApplicationAndTheKeyCLeaveTheWindowItsLemurGlobals() throws Exception {
+        DemoState uniform = DemoCatalog.entries().get(DemoCatalog.indexOf("uniform"))
+                .create();
+        try (HeadlessHarness harness = HeadlessHarness.start(List.of(uniform))) {
+            GuiGlobals window = harness.call(GuiGlobals::getInstance);
+            StateShare share = harness.call(() -> {
+                HeadlessHarness.fly(uniform, 10, 1f / 60f);
+                return harness.app().getShareKey().share();
+            }).get(60L, TimeUnit.SECONDS);
+            assertTrue(share.reproduces(), share.stateLine());
+            assertSame(window, harness.call(GuiGlobals::getInstance));
+            DemoState other = DemoCatalog.entries().get(DemoCatalog.indexOf("drag")).create();
+            ParticleLabApp second = new ParticleLabApp(List.of(other), 0, 5, null, 1f / 60f,
+                    false);
+            second.start(JmeContext.Type.Headless);
+            assertTrue(second.awaitFinished(60L), "the second application ran too long");
+            assertNull(second.getFailure());
+            assertSame(window, harness.call(GuiGlobals::getInstance));
+        }
     }
 }
