@@ -144,6 +144,7 @@ class OverlapMatrixHeadlessTest {
                 }
                 demo.update(0f);
                 List<String> found = OverlapProbe.check(demo, width, height, where);
+                found.addAll(OverlapProbe.labelsAboveTheGround(demo, where));
                 if (lane >= 0) {
                     demo.getParameters().set(ComparisonLane.PARAMETER, laneBefore);
                     demo.restart();
