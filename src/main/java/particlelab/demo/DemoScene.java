@@ -57,8 +57,13 @@ final class DemoScene {
     /** Slot scores: covering text or leaving the window, covering a sphere, a trail point. */
     private static final int TEXT_PENALTY = 1_000_000;
     private static final int SPHERE_PENALTY = 1_000;
-    /** Slot score: reaching below the ground line (kept only where nothing above is free). */
-    private static final int GROUND_PENALTY = 500;
+    /**
+     * Slot score: reaching below the ground line, into the band of the distance marks and
+     * the footer. Worse than a trail under a plate ({@link #TRAIL_PENALTY} with every near
+     * point), better than a sphere or a post: aiming's joined label "lecture = discrete"
+     * fell beside the footer at 1280x720 when every slot above covered a trail (issue 29 §3).
+     */
+    private static final int GROUND_PENALTY = 800;
     /**
      * Slot score: lying over a trail as drawn. Taken, on a plate, only where every slot
      * covers a trail or worse: a label over a trail beats no label (issue 29 §3: the
@@ -1189,7 +1194,8 @@ final class DemoScene {
         }
         // A sphere above the ground keeps its label above the ground line where it can: the
         // band below holds the distance marks and the footer ("slide code" lay across the
-        // ground line by the "20 m" mark). Where nothing above is free, below beats no label.
+        // ground line by the "20 m" mark). Where nothing above is free, a plate over a trail
+        // comes first, then below, which still beats no label.
         float ground = plane.screenY(0f);
         if (sphereY[self] >= ground && place.getY() < ground) {
             score += GROUND_PENALTY;
@@ -1237,7 +1243,7 @@ final class DemoScene {
             }
         }
         score += Math.min(near, MAX_NEAR_POINTS);
-        // Over a trail as drawn: worse than below the ground line, better than no label.
+        // Over a trail as drawn: better than below the ground line and than no label.
         if (coversNearPoint(place)) {
             score += TRAIL_PENALTY;
         }

@@ -24,6 +24,7 @@ import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 import particlelab.view.TextMeasure;
+import particlelab.view.Trail;
 import particlelab.view.WallView;
 import particlelab.world.StateRecord;
 import particlelab.world.StateSlab;
@@ -199,6 +200,11 @@ public final class CollisionsDemo extends DemoState {
     private final CalloutLayout callouts = new CalloutLayout(CALLOUT_OBSTACLES);
     /** Scratch: the scene above the ground band (in pixels). */
     private final ScreenRect calloutArea = new ScreenRect();
+    /** The trails' points on the screen, which the labels keep off (pixels; grown once). */
+    private float[] trailScreenX = new float[0];
+    private float[] trailScreenY = new float[0];
+    /** Scratch: one trail point (m). */
+    private final Vector3f trailPoint = new Vector3f();
     /** Where each arrow's label was put this frame (in pixels; empty: hidden). */
     private final ScreenRect[] impulseLabelRects = new ScreenRect[2 * ContactImpulses.CAPACITY];
     /** The lowest tip of the arrows drawn this frame (in metres; +∞: none drawn). */
@@ -794,7 +800,7 @@ public final class CollisionsDemo extends DemoState {
      * the contact point, {@code j·n} on A and {@code −j·n} on B (Newton's third law), each
      * shortened only to keep its tip above the ground band; with the magnitude, or a
      * kinematic side's arrow grey and marked not applied. The labels, newest contact first,
-     * go where they cover no other label, sphere, ball's name or HUD text
+     * go where they cover no other label, sphere, ball's name, trail or HUD text
      * ({@link CalloutLayout}), without their unit or note when the full text has no room, or
      * not at all. Allocates nothing.
      */
@@ -853,7 +859,8 @@ public final class CollisionsDemo extends DemoState {
 
     /**
      * Start the frame's callouts: inside the scene above the ground band, clear of the
-     * spheres, the balls' names and the HUD's texts.
+     * spheres, the balls' names, the trails as drawn (issue 29 §3: a label lay over the
+     * path its ball came along) and the HUD's texts.
      */
     private void beginCallouts(PlaneView plane) {
         getWindow().copySceneRect(calloutArea);
@@ -877,6 +884,41 @@ public final class CollisionsDemo extends DemoState {
                     plane.screenY(position.y) - radius, 2f * radius, 2f * radius);
             callouts.addObstacle(getView(shown.get(p)).getLabelRect());
         }
+        addTrailPoints(plane, shown);
+    }
+
+    /**
+     * Give the callouts every shown ball's trail points on the screen, kept off by the
+     * trails' drawn half width (ribbon and step dots). The arrays grow at the first frame
+     * that needs them, then are reused.
+     */
+    private void addTrailPoints(PlaneView plane, List<DemoParticle> shown) {
+        int capacity = 0;
+        for (int p = 0; p < shown.size(); ++p) {
+            capacity += getView(shown.get(p)).getTrail().getCapacity();
+        }
+        if (trailScreenX.length < capacity) {
+            trailScreenX = new float[capacity];
+            trailScreenY = new float[capacity];
+        }
+        int count = 0;
+        float halfWidth = 0f;
+        for (int p = 0; p < shown.size(); ++p) {
+            ParticleView view = getView(shown.get(p));
+            if (view.getNode().getCullHint() == Spatial.CullHint.Always) {
+                continue;
+            }
+            Trail trail = view.getTrail();
+            halfWidth = Math.max(halfWidth, trail.getDrawnHalfWidth());
+            for (int age = 0; age < trail.size(); ++age) {
+                trail.copyPoint(age, trailPoint);
+                trailScreenX[count] = plane.screenX(trailPoint.x);
+                trailScreenY[count] = plane.screenY(trailPoint.y);
+                ++count;
+            }
+        }
+        callouts.setTrailPoints(trailScreenX, trailScreenY, count,
+                halfWidth * plane.getPixelsPerMetre());
     }
 
     /**

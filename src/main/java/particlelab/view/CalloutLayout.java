@@ -2,7 +2,7 @@ package particlelab.view;
 
 /**
  * Places the labels of arrows (the collisions demo's impulses) so that none covers another,
- * a sphere, a scene text or the HUD, in screen pixels. Each label goes along its arrow
+ * a sphere, a scene text, the HUD or a trail as drawn, in screen pixels. Each label goes along its arrow
  * beyond the tip, away from where the arrow starts: first right at the tip, then beside the
  * arrow's line there (either side), then slid further out along the arrow, a line height at
  * a time; in its full form first, then in its
@@ -31,6 +31,13 @@ public final class CalloutLayout {
     private final ScreenRect bounds = new ScreenRect();
     /** Scratch: the place being tried (in pixels). */
     private final ScreenRect trial = new ScreenRect();
+    /** The trail points labels keep off (pixels; the caller's arrays, not copied). */
+    private float[] pointsX = new float[0];
+    private float[] pointsY = new float[0];
+    /** How many of the points' arrays hold points, the first ones. */
+    private int pointCount;
+    /** How close to a label a point counts as covered (pixels: the trail's half width). */
+    private float pointClearance;
 
     /**
      * Create a layout with room for a number of obstacles (spheres, texts, labels placed).
@@ -56,6 +63,32 @@ public final class CalloutLayout {
     public void begin(ScreenRect inside) {
         bounds.set(inside);
         obstacleCount = 0;
+        pointCount = 0;
+    }
+
+    /**
+     * Give the frame's trail points, which labels keep off as they keep off the obstacles: a
+     * place is taken only if no point lies within the clearance of it (a trail's ribbon and
+     * step dots reach that far from their points). Call after {@link #begin}, which forgets
+     * them. The arrays are not copied: leave them unchanged until the frame's labels are
+     * placed.
+     *
+     * @param xs the points' x (in pixels, not null)
+     * @param ys the points' y (in pixels, not null)
+     * @param count how many points, the first of each array (&ge;0, within both arrays)
+     * @param clearance how close to a label a point counts as covered (in pixels, &ge;0)
+     */
+    public void setTrailPoints(float[] xs, float[] ys, int count, float clearance) {
+        if (count < 0 || count > xs.length || count > ys.length || !(clearance >= 0f)
+                || clearance == Float.POSITIVE_INFINITY) {
+            throw new IllegalArgumentException("trail points: count " + count + " must be"
+                    + " within the arrays (" + xs.length + ", " + ys.length + ") and the"
+                    + " clearance " + clearance + " px finite and >= 0");
+        }
+        pointsX = xs;
+        pointsY = ys;
+        pointCount = count;
+        pointClearance = clearance;
     }
 
     /**
@@ -160,6 +193,16 @@ public final class CalloutLayout {
         }
         for (int i = 0; i < obstacleCount; ++i) {
             if (obstacles[i].intersects(place)) {
+                return false;
+            }
+        }
+        float left = place.getX() - pointClearance;
+        float right = place.getRight() + pointClearance;
+        float bottom = place.getY() - pointClearance;
+        float top = place.getTop() + pointClearance;
+        for (int i = 0; i < pointCount; ++i) {
+            if (pointsX[i] >= left && pointsX[i] <= right && pointsY[i] >= bottom
+                    && pointsY[i] <= top) {
                 return false;
             }
         }

@@ -74,6 +74,22 @@ public final class HudLayout {
     public static final float MAX_SCALE = 4f;
     /** The least share of the window's height the scene gets, at any size. */
     public static final float MIN_SCENE_SHARE = 0.4f;
+    /**
+     * The least share of the window's height a slide leaves the scene (presentation mode):
+     * where the title and every formula row would take more, the formula rows beyond are
+     * hidden, the second formula line's first, at least one row kept, and the footer says so
+     * (issue 29 §3: the hall command, {@code --ui-scale 1.25} at 1920x1080, left the scene
+     * 62-70 % of the window with two or three formula rows of 79 px type).
+     */
+    public static final float PRESENT_SCENE_SHARE = 0.75f;
+    /**
+     * The least a slide's title shrinks to, to stay on one row (a fraction of {@link
+     * #PRESENT_SIZE}): a tour stop's title, the demo's and the stop's names, took two or three
+     * rows of the hall command's 79 px type.
+     */
+    public static final float MIN_PRESENT_TITLE_FRACTION = 0.7f;
+    /** The footer's note on a slide whose formula rows were cut to leave the scene its share. */
+    public static final String FORMULAS_CUT_NOTE = "     formulas cut to fit (F8: all)";
     /** The smallest window laid out with no text over another (in pixels). */
     public static final int MIN_WIDTH = 200;
     public static final int MIN_HEIGHT = 150;
@@ -159,6 +175,8 @@ public final class HudLayout {
     private float sceneFloor;
     /** True when laid out for presentation mode ({@link #layOutPresentation}). */
     private boolean presenting;
+    /** The slide's title size (pixels): the presentation size, less where it is too wide. */
+    private float presentTitleSize;
     /** Presentation mode: the readout, wrapped, and the most lines it has needed so far. */
     private String readoutText = "";
     private int readoutLinesNeeded = 1;
@@ -339,6 +357,13 @@ public final class HudLayout {
         float lineHeight = measure.lineHeight(size);
         float footerLineHeight = measure.lineHeight(getFooterSize());
 
+        // The title on one row where a smaller size down to the least fraction does it.
+        presentTitleSize = PRESENT_SIZE * scale;
+        float titleWidth = measure.width(titleLine, presentTitleSize);
+        if (titleWidth > textWidth) {
+            presentTitleSize = Math.max(MIN_PRESENT_TITLE_FRACTION * presentTitleSize,
+                    presentTitleSize * textWidth / titleWidth);
+        }
         titleText = wrap(titleLine, getTitleSize(), textWidth);
         float titleHeight = countLines(titleText) * measure.lineHeight(getTitleSize());
         bodyLinesNeeded = Math.max(bodyLinesNeeded,
@@ -364,6 +389,17 @@ public final class HudLayout {
             footerText = keys;
             readoutLines = readoutLinesNeeded;
             bodyLines = bodyLinesNeeded;
+        }
+        // The scene's share: the title and the formula rows above it take at most the rest
+        // of the height; rows beyond are hidden from the end, one always kept.
+        float top = margin + titleHeight + 2f * PRESENT_BAND_SPACE * lineHeight;
+        float most = (1f - PRESENT_SCENE_SHARE) * height;
+        int shown = bodyLines;
+        while (bodyLines > 1 && top + bodyLines * lineHeight > most) {
+            --bodyLines;
+        }
+        if (!tooSmall && bodyLines < shown) {
+            footerText = wrap(keys + FORMULAS_CUT_NOTE, getFooterSize(), textWidth);
         }
         warningLines = 0;
 
@@ -632,9 +668,12 @@ public final class HudLayout {
         return MARGIN * scale;
     }
 
-    /** @return the title's text size (in pixels; the presentation size when presenting) */
+    /**
+     * @return the title's text size (in pixels; when presenting the presentation size, or
+     *     down to {@value #MIN_PRESENT_TITLE_FRACTION} of it where that keeps it on one row)
+     */
     public float getTitleSize() {
-        return (presenting ? PRESENT_SIZE : TITLE_SIZE) * scale;
+        return presenting ? presentTitleSize : TITLE_SIZE * scale;
     }
 
     /**

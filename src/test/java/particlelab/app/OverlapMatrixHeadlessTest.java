@@ -9,6 +9,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoState;
 import particlelab.demo.OverlapProbe;
+import particlelab.lecture.CollisionsDemo;
 import particlelab.physics.SimulationClock;
 
 /**
@@ -46,6 +47,9 @@ class OverlapMatrixHeadlessTest {
     private static final int AIMING_LANDED_FRAMES = 400;
     /** Frames of iterate's screenshot ({@code demo iterate --frames 300}): rounds flown. */
     private static final int ITERATE_FRAMES = 300;
+    /** Frames the impulse labels are followed for, and the gap between samples. */
+    private static final int IMPULSE_FRAMES = 360;
+    private static final int IMPULSE_SAMPLE = 6;
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> DemoCatalog.createAll());
 
@@ -144,6 +148,7 @@ class OverlapMatrixHeadlessTest {
                 }
                 demo.update(0f);
                 List<String> found = OverlapProbe.check(demo, width, height, where);
+                found.addAll(OverlapProbe.labelsAboveTheGround(demo, where));
                 if (lane >= 0) {
                     demo.getParameters().set(ComparisonLane.PARAMETER, laneBefore);
                     demo.restart();
@@ -154,6 +159,54 @@ class OverlapMatrixHeadlessTest {
             }));
         }
         assertEquals(List.of(), problems);
+    }
+
+    /**
+     * The collisions demo's impulse labels keep off the trails as drawn, in every preset
+     * (issue 29 §3: "impulse labels over trails"), sampled every {@value #IMPULSE_SAMPLE}
+     * frames through the contacts of the first {@value #IMPULSE_FRAMES} frames (a label is
+     * held {@code ContactImpulses.HOLD_SECONDS}, longer than a sample's gap), at the default
+     * window and the smallest.
+     */
+    @Test
+    void impulseLabelsKeepOffTheTrailsInEveryPreset() throws Exception {
+        ParticleLabApp app = harness.app();
+        CollisionsDemo demo = (CollisionsDemo) app.getSwitcher().getDemos().get(
+                DemoCatalog.names().indexOf("collisions"));
+        List<String> problems = new ArrayList<>();
+        int presets = CollisionsDemo.PRESET_NAMES.length;
+        for (int preset = 0; preset < presets; ++preset) {
+            for (int[] window : new int[][] {{1280, 720}, {640, 360}}) {
+                int chosen = preset;
+                String name = "collisions " + CollisionsDemo.PRESET_NAMES[preset] + " "
+                        + window[0] + "x" + window[1];
+                problems.addAll(harness.call(() -> {
+                    List<String> found = new ArrayList<>();
+                    demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+                    demo.getClock().setPaused(false);
+                    demo.getParameters().set("preset", chosen);
+                    demo.restart();
+                    demo.getDemoHud().layOut(window[0], window[1]);
+                    for (int f = 0; f < IMPULSE_FRAMES; f += IMPULSE_SAMPLE) {
+                        for (int i = 0; i < IMPULSE_SAMPLE; ++i) {
+                            demo.update(H);
+                        }
+                        demo.update(0f);
+                        found.addAll(OverlapProbe.impulseLabelsClearOfTrails(demo,
+                                name + " frame " + (f + IMPULSE_SAMPLE)));
+                    }
+                    return found;
+                }));
+            }
+        }
+        harness.call(() -> {
+            demo.getParameters().set("preset", 0);
+            demo.restart();
+            demo.getDemoHud().layOut(1280, 720);
+            return true;
+        });
+        assertEquals(List.of(), problems.subList(0, Math.min(20, problems.size())),
+                problems.size() + " problems");
     }
 
     /**

@@ -25,7 +25,7 @@ class TourSceneShareHeadlessTest {
     /** The least share of the window with the full HUD at 16:9 on a tour stop. */
     static final float MIN_FULL_HUD_SHARE = 0.5f;
     /** The least share presenting at 1920x1080 with the HUD factor 1.25. */
-    static final float MIN_HALL_SHARE = 0.6f;
+    static final float MIN_HALL_SHARE = 0.75f;
     private static final float HALL_FACTOR = 1.25f;
     /** Frames flown before measuring: the launch framed and the body's lines grown. */
     private static final int FRAMES = 60;
@@ -36,6 +36,8 @@ class TourSceneShareHeadlessTest {
     void everyStopLeavesTheSceneTheShareTheDocsState() throws Exception {
         ParticleLabApp app = harness.app();
         List<String> problems = new ArrayList<>();
+        // The least and the most share seen: full HUD at 16:9, then the hall command.
+        float[] range = {1f, 0f, 1f, 0f};
         for (int stop = 0; stop < LectureTour.stops().size(); ++stop) {
             int index = stop;
             DemoState demo = harness.call(() -> {
@@ -53,9 +55,10 @@ class TourSceneShareHeadlessTest {
                 List<String> found = new ArrayList<>();
                 demo.getDemoHud().layOut(1280, 720);
                 HeadlessHarness.fly(demo, FRAMES, 1f / 60f);
-                check(demo, 1280, 720, 1f, false, MIN_FULL_HUD_SHARE, name, found);
-                check(demo, 1920, 1080, 1f, false, MIN_FULL_HUD_SHARE, name, found);
-                check(demo, 1920, 1080, HALL_FACTOR, true, MIN_HALL_SHARE, name, found);
+                check(demo, 1280, 720, 1f, false, MIN_FULL_HUD_SHARE, name, found, range, 0);
+                check(demo, 1920, 1080, 1f, false, MIN_FULL_HUD_SHARE, name, found, range, 0);
+                check(demo, 1920, 1080, HALL_FACTOR, true, MIN_HALL_SHARE, name, found, range,
+                        2);
                 demo.getDemoHud().setPresenting(false);
                 demo.getDemoHud().layOut(1280, 720);
                 return found;
@@ -65,11 +68,20 @@ class TourSceneShareHeadlessTest {
             app.getTour().leave();
             return true;
         });
+        // The figures docs/window.md states, printed for the one who updates it.
+        System.out.println("scene share over the tour's stops: full HUD at 16:9 "
+                + percent(range[0]) + " to " + percent(range[1]) + " %, hall command "
+                + percent(range[2]) + " to " + percent(range[3]) + " %");
         assertEquals(List.of(), problems);
     }
 
+    private static float percent(float share) {
+        return Math.round(1000f * share) / 10f;
+    }
+
     private static void check(DemoState demo, int width, int height, float factor,
-            boolean presenting, float least, String name, List<String> found) {
+            boolean presenting, float least, String name, List<String> found, float[] range,
+            int slot) {
         demo.getDemoHud().setPresenting(presenting);
         demo.getDemoHud().layOut(width, height, factor);
         demo.update(0f);
@@ -80,6 +92,8 @@ class TourSceneShareHeadlessTest {
         float across = presenting && !demo.getHud().getLayout().getLedger().isEmpty()
                 ? width - scene.getX() : scene.getWidth();
         float share = across * scene.getHeight() / (width * (float) height);
+        range[slot] = Math.min(range[slot], share);
+        range[slot + 1] = Math.max(range[slot + 1], share);
         if (share < least) {
             found.add(name + " " + width + "x" + height + " x" + factor
                     + (presenting ? " presenting" : "") + ": the scene " + scene

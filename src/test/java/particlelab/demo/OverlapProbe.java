@@ -241,6 +241,71 @@ public final class OverlapProbe {
         return problems;
     }
 
+    /**
+     * No label of a sphere above the ground reaches into the ground band (below the ground
+     * line, where the distance marks and the footer are): where every slot above covers a
+     * trail or a post, the label lies on its plate over the trail instead (issue 29 §3:
+     * aiming's joined label "lecture = discrete" fell beside the footer at 1280x720 after the
+     * landing).
+     *
+     * @param demo the demo (laid out and updated, not null)
+     * @param where what was laid out, for the messages (not null)
+     * @return one line per problem (empty if none)
+     */
+    public static List<String> labelsAboveTheGround(DemoState demo, String where) {
+        List<String> problems = new ArrayList<>();
+        PlaneView plane = demo.getPlaneView();
+        float ground = plane.screenY(0f);
+        for (DemoParticle particle : demo.getParticles()) {
+            ParticleView view = demo.getView(particle);
+            ScreenRect label = view.getLabelRect();
+            float y = plane.screenY(particle.getParticle().position.y);
+            if (!label.isEmpty() && y >= ground && label.getY() < ground - PIXEL) {
+                problems.add(where + ": label '" + view.getLabel().getText() + "' " + label
+                        + " reaches into the ground band (ground line at y = " + ground
+                        + " px)");
+            }
+        }
+        return problems;
+    }
+
+    /**
+     * No impulse label of the collisions demo lies over a trail as drawn (ribbon and step
+     * dots): the callouts treat the trails as obstacles, as they do the other labels.
+     *
+     * @param demo the collisions demo (laid out and updated, not null)
+     * @param where what was laid out, for the messages (not null)
+     * @return one line per problem (empty if none)
+     */
+    public static List<String> impulseLabelsClearOfTrails(CollisionsDemo demo, String where) {
+        List<String> problems = new ArrayList<>();
+        List<ScreenRect> labels = demo.copyImpulseLabelRects(new ArrayList<>());
+        PlaneView plane = demo.getPlaneView();
+        Vector3f point = new Vector3f();
+        for (ScreenRect label : labels) {
+            for (DemoParticle other : demo.getParticles()) {
+                if (demo.getView(other).getNode().getCullHint() == Spatial.CullHint.Always) {
+                    continue;
+                }
+                Trail trail = demo.getView(other).getTrail();
+                float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
+                for (int age = 0; age < trail.size(); ++age) {
+                    trail.copyPoint(age, point);
+                    float x = plane.screenX(point.x);
+                    float y = plane.screenY(point.y);
+                    if (x > label.getX() - half + PIXEL && x < label.getRight() + half - PIXEL
+                            && y > label.getY() - half + PIXEL
+                            && y < label.getTop() + half - PIXEL) {
+                        problems.add(where + ": impulse label " + label + " covers the trail"
+                                + " of '" + other.getLabel() + "' at (" + x + ", " + y + ")");
+                        break;
+                    }
+                }
+            }
+        }
+        return problems;
+    }
+
     /** Test whether a rectangle is among the texts shown (the same place). */
     private static boolean isShown(ScreenRect rect, List<ScreenRect> texts) {
         for (ScreenRect text : texts) {

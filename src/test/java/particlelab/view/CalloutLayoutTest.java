@@ -64,6 +64,48 @@ class CalloutLayoutTest {
     }
 
     /**
+     * A trail along the arrow's line (a head-on ball's path): the label does not go beyond
+     * the tip on the line, where it lay over the trail (issue 29 §3), but beside it, clear of
+     * every point by the trail's drawn half width; a trail hemming in every place hides it.
+     */
+    @Test
+    void aLabelKeepsOffTheTrailPointsByTheirHalfWidth() {
+        CalloutLayout layout = new CalloutLayout(8);
+        ScreenRect place = new ScreenRect();
+        float[] xs = new float[200];
+        float[] ys = new float[200];
+        for (int i = 0; i < 100; ++i) {
+            // A horizontal trail through the tip's height, a point every 5 px.
+            xs[i] = 300f + 5f * i;
+            ys[i] = 300f;
+        }
+        float half = 3f;
+        layout.begin(AREA);
+        layout.setTrailPoints(xs, ys, 100, half);
+        assertEquals(CalloutLayout.FULL, layout.place(500f, 300f, 1f, 0f, 80f, 30f, 20f, 4f,
+                place));
+        assertTrue(place.getY() > 300f + half || place.getTop() < 300f - half,
+                place + " lies over the trail at y = 300 (half width " + half + " px)");
+        // Without the points the same label sat on the line (x 504, y 290..310).
+        layout.begin(AREA);
+        layout.place(500f, 300f, 1f, 0f, 80f, 30f, 20f, 4f, place);
+        assertEquals(290f, place.getY(), 0f, "begin forgot the points");
+        // A second trail across every place within reach: the label is hidden.
+        for (int i = 0; i < 100; ++i) {
+            xs[100 + i] = 500f;
+            ys[100 + i] = 200f + 2f * i;
+        }
+        layout.begin(AREA);
+        layout.setTrailPoints(xs, ys, 200, 200f);
+        assertEquals(CalloutLayout.HIDDEN, layout.place(500f, 300f, 1f, 0f, 80f, 30f, 20f, 4f,
+                place));
+        assertThrows(IllegalArgumentException.class,
+                () -> layout.setTrailPoints(xs, ys, 201, half));
+        assertThrows(IllegalArgumentException.class,
+                () -> layout.setTrailPoints(xs, ys, 10, Float.NaN));
+    }
+
+    /**
      * An arrow pointing right with room: its label beyond the tip, the gap away, centred on
      * the arrow's line. A sphere there: the label beside the line instead. Room only for the
      * short form: short. No room at all: hidden.

@@ -194,6 +194,39 @@ class HudLayoutTest {
         assertEquals(60, layout.getBodyLinesNeeded());
     }
 
+    /**
+     * Issue 29 §3: the hall command's slide (1920x1080, the scale that suits it, 1.5, times
+     * 1.25) leaves the scene at least {@link HudLayout#PRESENT_SCENE_SHARE} of the height:
+     * the second formula row is hidden and the footer says so; a title wider than the window
+     * is set smaller to stay on one row. At 1280x720 and scale 1 both rows fit, no note.
+     */
+    @Test
+    void aSlideLeavesTheSceneItsShareByCuttingFormulaRowsNotTheType() {
+        HudLayout hall = new HudLayout(MONO);
+        float scale = 1.5f * 1.25f;
+        String title = "10.  Collisions      4/22 Collision Resolution: the three phases";
+        hall.layOutPresentation(1920, 1080, scale, title, SLIDE, READOUT, "F8  full HUD", "");
+        assertEquals(1, hall.getBodyLines(), "the second formula row hidden");
+        assertEquals(2, hall.getBodyLinesNeeded());
+        assertEquals(HudLayout.PRESENT_SIZE * scale, hall.getBodySize(), 1e-3f,
+                "the formulas keep the size asked for");
+        // The scene reaches up to the formulas' band: its height is the window's less the
+        // margin, the title, one row and the band's spaces, within a pixel's rounding.
+        assertTrue(hall.getScene().getHeight() >= HudLayout.PRESENT_SCENE_SHARE * 1080f - 1f,
+                hall.getScene().toString());
+        assertEquals("F8  full HUD" + HudLayout.FORMULAS_CUT_NOTE, hall.getFooterText());
+        assertEquals(1, HudLayout.countLines(hall.getTitleText()), hall.getTitleText());
+        assertTrue(hall.getTitleSize() >= HudLayout.MIN_PRESENT_TITLE_FRACTION
+                * HudLayout.PRESENT_SIZE * scale - 1e-3f);
+        assertTrue(hall.getTitleSize() < HudLayout.PRESENT_SIZE * scale, "set smaller");
+
+        HudLayout desk = new HudLayout(MONO);
+        desk.layOutPresentation(1280, 720, 1f, "3.  Drag", SLIDE, READOUT, "F8  full HUD", "");
+        assertEquals(2, desk.getBodyLines());
+        assertEquals("F8  full HUD", desk.getFooterText());
+        assertEquals(HudLayout.PRESENT_SIZE, desk.getTitleSize(), 1e-3f);
+    }
+
     @ParameterizedTest
     @CsvSource({"1, 1", "30, 20", "120, 90", "199, 149"})
     void belowTheSmallestWindowTheSceneStillGetsAPlaceInsideIt(int width, int height) {
