@@ -111,7 +111,7 @@ final class ShareKey extends BaseAppState {
 
     /** Run a check on a daemon thread of its own, so it never holds the window open. */
     private static void checkAside(Runnable check) {
-        Thread thread = new Thread(check, "particle-lab C-key check");
+        Thread thread = new Thread(check, Program.NAME + " C-key check");
         thread.setDaemon(true);
         thread.start();
     }

@@ -57,7 +57,16 @@ public final class DemoKeys {
      * @return the new binding (not null)
      */
     KeyBinding addOwn(int keyCode, String keyLabel, String description, Runnable action) {
-        KeyBinding binding = new KeyBinding(keyCode, keyLabel, description, action);
+        return addOwn(new KeyBinding(keyCode, keyLabel, description, action));
+    }
+
+    /**
+     * Declare keys of the demo's own that share one action and one help row.
+     *
+     * @param binding the keys, none reserved nor bound yet (not null)
+     * @return binding
+     */
+    KeyBinding addOwn(KeyBinding binding) {
         add(own, binding);
         return binding;
     }

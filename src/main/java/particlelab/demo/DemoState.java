@@ -387,6 +387,11 @@ public abstract class DemoState extends BaseAppState {
         return keys.addOwn(keyCode, keyLabel, description, action);
     }
 
+    /** @param binding a key pair or group of one action, one help row (not null, not bound) */
+    protected KeyBinding bindKeys(KeyBinding binding) {
+        return keys.addOwn(binding);
+    }
+
     /** @param binding the demo's key that fires or launches: the panel's Fire (not null) */
     protected void setFireKey(KeyBinding binding) {
         keys.setFireKey(binding);

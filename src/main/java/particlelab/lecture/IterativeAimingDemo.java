@@ -701,18 +701,19 @@ public final class IterativeAimingDemo extends DemoState {
                 });
         seedKey = bindKey(KeyInput.KEY_J, "J", "believable player: next random seed",
                 () -> setSeed(seed + 1L));
-        StringBuilder angle = new StringBuilder("duel: your aim ");
-        TextFormat.appendFixed(angle, DUEL_ANGLE_STEP, 1).append(" deg ");
-        bindKey(KeyInput.KEY_UP, "Up", angle + "higher", () -> aimBy(DUEL_ANGLE_STEP, 0f));
-        bindKey(KeyInput.KEY_DOWN, "Down", angle + "lower", () -> aimBy(-DUEL_ANGLE_STEP, 0f));
-        StringBuilder speed = new StringBuilder("duel: your speed ");
-        TextFormat.appendFixed(speed, DUEL_SPEED_STEP, 1).append(" m/s ");
-        bindKey(KeyInput.KEY_RIGHT, "Right", speed + "faster", () -> aimBy(0f, DUEL_SPEED_STEP));
-        bindKey(KeyInput.KEY_LEFT, "Left", speed + "slower", () -> aimBy(0f, -DUEL_SPEED_STEP));
-        bindKey(KeyInput.KEY_Y, "Y", "duel: felt fair? yes (closes the round, next seed)",
-                () -> poll(true));
-        bindKey(KeyInput.KEY_B, "B", "duel: felt fair? no (closes the round, next seed)",
-                () -> poll(false));
+        StringBuilder angle = new StringBuilder("duel: your aim up/down ");
+        TextFormat.appendFixed(angle, DUEL_ANGLE_STEP, 1).append(" deg");
+        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_UP, KeyInput.KEY_DOWN},
+                new String[] {"Up", "Down"}, angle.toString(), null,
+                key -> aimBy(key == 0 ? DUEL_ANGLE_STEP : -DUEL_ANGLE_STEP, 0f)));
+        StringBuilder speed = new StringBuilder("duel: your speed up/down ");
+        TextFormat.appendFixed(speed, DUEL_SPEED_STEP, 1).append(" m/s");
+        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_RIGHT, KeyInput.KEY_LEFT},
+                new String[] {"Right", "Left"}, speed.toString(), null,
+                key -> aimBy(0f, key == 0 ? DUEL_SPEED_STEP : -DUEL_SPEED_STEP)));
+        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_Y, KeyInput.KEY_B},
+                new String[] {"Y", "B"}, "duel: felt fair? yes/no (closes the round)", null,
+                key -> poll(key == 0)));
     }
 
     @Override

@@ -49,8 +49,12 @@ public final class ParameterPanel {
     private static final int BUTTONS_PER_ROW = 4;
     /** A panel taller than its slot is laid out again at this share of its scale... */
     private static final float SHRINK = 0.9f;
-    /** ...down to this share of the scale asked for: past it, it reaches below its slot. */
-    private static final float SHRINK_FLOOR = 0.7f;
+    /**
+     * ...down to this share of the scale asked for: past it, it reaches below its slot. Drag's
+     * 13 rows (with the fault switch and its seed) reached 7.5 px past a 640x360 window at
+     * 0.7; a window that small is no lecture hall, and 1280x720 needs no shrinking.
+     */
+    private static final float SHRINK_FLOOR = 0.6f;
     /** The slider's thumb's width at HUD scale 1 (in pixels). */
     private static final float THUMB_WIDTH = 12f;
     /** A slider's height at HUD scale 1 (in pixels). */

@@ -43,7 +43,10 @@ class GroundCrossingSourceTest {
     private static final Map<String, String> MAY_SWEEP_THE_GROUND = Map.of(
             "world/SurfaceRule.java", "the world's ground rule, interpolated by the world",
             "aiming/Flight.java", "the one flight helper",
-            "lecture/CollisionsDemo.java", "its box's floor is a world SurfaceRule");
+            "lecture/CollisionsDemo.java", "its box's floor is a world SurfaceRule",
+            "app/TourQuestions.java", "stop 1's rule sweeps a shot against the targets"
+                    + " scene's surfaces (the ground one of five) to name what it touches"
+                    + " first; it finds no landing");
     /** The classes that may test a height against zero, and why. */
     private static final Map<String, String> MAY_TEST_THE_HEIGHT = Map.of(
             "reference/ExactPath.java", "the exact path's crossing, found by bisection on the"
