@@ -36,6 +36,8 @@ final class SpeedSpreads {
     static final String TOO_NOISY = "too noisy: no verdict";
     /** Verdict of a peer row from a sweep too short to warm its scenes to a steady state. */
     static final String NOT_WARMED = "not warmed: no verdict";
+    /** Verdict of a peer row timed with no full collection before it (heap layout unknown). */
+    static final String NO_FULL_GC = "no full GC before timing: no verdict";
     /** The peer rows' particle counts (the quick sweep leaves out the last). */
     static final int[] PEER_COUNTS = {10_000, 100_000, 1_000_000};
     /** Row: one particle through the integrator against the one-particle loop, linear drag. */
@@ -118,20 +120,27 @@ final class SpeedSpreads {
         private final double emitterDirect;
         private final double fountainHeap;
         private final boolean warmed;
+        /**
+         * Whether a full collection ran between building the scenes and timing them; null
+         * for a row of a run that did not record it (pasted before the report ran one).
+         */
+        private final Boolean afterFullGc;
 
+        /** A warmed row of a run that did not record a full collection (a pasted older run). */
         PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
                 CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
                 CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
                 double fountainHeap) {
             this(count, emitter, fountain, packed, emitterOverPacked, emitterOverFountain,
-                    emitterHeap, emitterDirect, fountainHeap, true);
+                    emitterHeap, emitterDirect, fountainHeap, true, null);
         }
 
         PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
                 CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
                 CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
-                double fountainHeap, boolean warmed) {
+                double fountainHeap, boolean warmed, Boolean afterFullGc) {
             this.warmed = warmed;
+            this.afterFullGc = afterFullGc;
             this.count = count;
             this.emitter = emitter;
             this.fountain = fountain;
@@ -152,7 +161,8 @@ final class SpeedSpreads {
                     + spread(emitterOverFountain, 1) + "× | " + fix(emitterHeap, 0) + " + "
                     + fix(emitterDirect, 0) + " | " + fix(fountainHeap, 0) + " | "
                     + fix(PeerScenes.packedBytes(), 0) + " | "
-                    + (!warmed ? NOT_WARMED : noisy ? TOO_NOISY : "judged") + " |";
+                    + (!warmed ? NOT_WARMED : Boolean.FALSE.equals(afterFullGc) ? NO_FULL_GC
+                    : noisy ? TOO_NOISY : "judged") + " |";
         }
     }
 
@@ -188,9 +198,11 @@ final class SpeedSpreads {
         }
         List<PeerRow> peers = new ArrayList<>();
         for (int count : peerCounts(config)) {
-            System.gc();
-            peers.add(peer(new PeerScenes(count), meter,
-                    config.size() == ReportConfig.Size.FULL));
+            PeerScenes scenes = new PeerScenes(count);
+            // the emitter's objects, compacted: issue 35 read its 10^5 row at 9.0 or 25.4 ns
+            // per particle in otherwise identical JVMs, before or after one full collection
+            boolean collected = fullCollection();
+            peers.add(peer(scenes, meter, config.size() == ReportConfig.Size.FULL, collected));
         }
         appendTables(md, lines, peers, meter.rounds(), config);
     }
@@ -277,6 +289,14 @@ final class SpeedSpreads {
                 + "was built and filled, plus its mesh buffers' capacities (direct memory); "
                 + "the fountain's heap likewise (its point mesh belongs to the view and is "
                 + "not counted); the packed state is its two arrays, 6 floats.");
+        if (peers.stream().anyMatch(peer -> peer.afterFullGc != null)) {
+            md.append(" Each N's scenes are built and filled, then one full collection runs "
+                    + "(`System.gc()`) before the rounds start, so the emitter's objects are "
+                    + "timed in a compacted heap: without it its N = 100000 row depended on "
+                    + "what the heap held before. A row where the JVM ran no full collection "
+                    + "(e.g. `-XX:+DisableExplicitGC`) says \"").append(NO_FULL_GC)
+                    .append("\".");
+        }
         if (config.size() != ReportConfig.Size.FULL) {
             md.append(" This sweep leaves out the larger N (the full report has ")
                     .append(PEER_COUNTS[PEER_COUNTS.length - 1]).append(") and its rounds are "
@@ -427,7 +447,35 @@ final class SpeedSpreads {
         return meter.measureSideBySide(workloads, units);
     }
 
-    private static PeerRow peer(PeerScenes scenes, CostMeter meter, boolean warmed) {
+    /**
+     * Run one full collection ({@code System.gc()}), so the peer scenes just built are timed
+     * in a compacted heap whatever garbage came before them.
+     *
+     * @return true if a collector that collects the whole heap (the old generation's bean)
+     *     counted a collection, false if the JVM ran none (e.g.
+     *     {@code -XX:+DisableExplicitGC}) or only a concurrent one
+     */
+    static boolean fullCollection() {
+        long before = fullCollections();
+        System.gc();
+        return fullCollections() > before;
+    }
+
+    /** The collections counted by the beans that collect the old generation or whole heap. */
+    private static long fullCollections() {
+        long count = 0;
+        for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
+            String name = bean.getName();
+            if (name.contains("Old") || name.contains("MarkSweep") || name.equals("ZGC")
+                    || name.contains("Cycles") || name.contains("Major")) {
+                count += Math.max(0L, bean.getCollectionCount());
+            }
+        }
+        return count;
+    }
+
+    private static PeerRow peer(PeerScenes scenes, CostMeter meter, boolean warmed,
+            boolean afterFullGc) {
         int n = scenes.count();
         CostMeter.SideBySide timed = meter.measureSideBySide(new CostMeter.Workload[] {
             units -> scenes.emitterFrame(), units -> scenes.fountainStep(),
@@ -435,7 +483,7 @@ final class SpeedSpreads {
         return new PeerRow(n, timed.nanosPerUnit(0), timed.nanosPerUnit(1),
                 timed.nanosPerUnit(2), timed.ratio(0, 2), timed.ratio(0, 1),
                 scenes.emitterHeapBytes(), scenes.emitterDirectBytes(),
-                scenes.fountainHeapBytes(), warmed);
+                scenes.fountainHeapBytes(), warmed, afterFullGc);
     }
 
     /** The lecture row under the Parallel collector, from the child JVM. */

@@ -120,13 +120,32 @@ class SpeedSpreadsTest {
         StringBuilder md = new StringBuilder();
         CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
         SpeedSpreads.PeerRow quick = new SpeedSpreads.PeerRow(10_000, one, one, one, one, one,
-                132.4, 36.0, 60.0, false);
+                132.4, 36.0, 60.0, false, true);
         SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(quick), 7,
                 ReportConfig.of(ReportConfig.Size.QUICK));
         String text = md.toString();
         assertTrue(text.contains("| 24 | not warmed: no verdict |"), text);
         assertTrue(!text.contains("| judged |"), text);
         assertTrue(text.contains("run the full report to judge them"), text);
+    }
+
+    @Test
+    void thePeerRowsAreTimedAfterAFullCollectionAndSaySo() {
+        // Issue 35: the emitter's 10^5 row read 9.0 or 25.4 ns per particle before or after
+        // one full collection, so the rows are timed after one, and a row without one is
+        // not judged.
+        assertTrue(SpeedSpreads.fullCollection(), "System.gc() ran no full collection here");
+        StringBuilder md = new StringBuilder();
+        CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
+        SpeedSpreads.PeerRow uncollected = new SpeedSpreads.PeerRow(10_000, one, one, one, one,
+                one, 132.4, 36.0, 60.0, true, false);
+        SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(uncollected), 7,
+                FULL);
+        String text = md.toString();
+        assertTrue(text.contains("then one full collection runs (`System.gc()`) before the "
+                + "rounds start"), text);
+        assertTrue(text.contains("| 24 | no full GC before timing: no verdict |"), text);
+        assertTrue(!text.contains("| judged |"), text);
     }
 
     private static SpeedSpreads.Line line(CostMeter.Spread spread, double target,

@@ -168,6 +168,9 @@ class SpeedVsErrorReportTest {
         Matcher peer = Pattern.compile("\n\\| 10000 \\| [0-9.]+ / \\*\\*[0-9.]+\\*\\* / "
                 + "[0-9.]+ \\|").matcher(section);
         assertTrue(peer.find(), "no peer row at N = 10000 in " + section);
+        // the emitter timed after one full collection (issue 35), and the section says so
+        assertTrue(section.contains("then one full collection runs (`System.gc()`) before "
+                + "the rounds start"), section);
         assertTrue(section.contains("What the batch form gains a jME user"), section);
     }
 
