@@ -691,8 +691,7 @@ public final class IterativeAimingDemo extends DemoState {
                 () -> setInstant(!instant));
         mismatchKey = bindKey(KeyInput.KEY_P, "P", "predictor: the flight's own h <-> "
                 + PREDICT_STEP_MS + " ms (mismatch)", () -> setMismatch(!mismatch));
-        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round (in the duel: fire your"
-                + " shot)", () -> {
+        roundKey = bindKey(KeyInput.KEY_F, "F", "fire a new round (duel: your shot)", () -> {
                     if (duelOn) {
                         fireHuman();
                     } else {
@@ -701,18 +700,18 @@ public final class IterativeAimingDemo extends DemoState {
                 });
         seedKey = bindKey(KeyInput.KEY_J, "J", "believable player: next random seed",
                 () -> setSeed(seed + 1L));
-        StringBuilder angle = new StringBuilder("duel: your aim up/down ");
-        TextFormat.appendFixed(angle, DUEL_ANGLE_STEP, 1).append(" deg");
-        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_UP, KeyInput.KEY_DOWN},
-                new String[] {"Up", "Down"}, angle.toString(), null,
-                key -> aimBy(key == 0 ? DUEL_ANGLE_STEP : -DUEL_ANGLE_STEP, 0f)));
-        StringBuilder speed = new StringBuilder("duel: your speed up/down ");
-        TextFormat.appendFixed(speed, DUEL_SPEED_STEP, 1).append(" m/s");
-        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_RIGHT, KeyInput.KEY_LEFT},
-                new String[] {"Right", "Left"}, speed.toString(), null,
-                key -> aimBy(0f, key == 0 ? DUEL_SPEED_STEP : -DUEL_SPEED_STEP)));
+        // One help row for the four arrows: the help stays legible at 1280x720.
+        StringBuilder arrows = new StringBuilder("duel: aim (Up/Down) ");
+        TextFormat.appendFixed(arrows, DUEL_ANGLE_STEP, 1).append(" deg, speed (Right/Left) ");
+        TextFormat.appendFixed(arrows, DUEL_SPEED_STEP, 1).append(" m/s");
+        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_UP, KeyInput.KEY_DOWN,
+            KeyInput.KEY_RIGHT, KeyInput.KEY_LEFT}, new String[] {"Up", "Down", "Right", "Left"},
+                arrows.toString(), null, key -> aimBy(
+                        key == 0 ? DUEL_ANGLE_STEP : key == 1 ? -DUEL_ANGLE_STEP : 0f,
+                        key == 2 ? DUEL_SPEED_STEP : key == 3 ? -DUEL_SPEED_STEP : 0f))
+                .withKeyLabel("arrows"));
         bindKeys(new KeyBinding(new int[] {KeyInput.KEY_Y, KeyInput.KEY_B},
-                new String[] {"Y", "B"}, "duel: felt fair? yes/no (closes the round)", null,
+                new String[] {"Y", "B"}, "duel: felt fair? yes/no (ends the round)", null,
                 key -> poll(key == 0)));
     }
 
