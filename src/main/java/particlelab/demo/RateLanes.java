@@ -122,6 +122,24 @@ public final class RateLanes implements DemoPart {
     }
 
     /**
+     * Return the jitter the histogram draws frames from.
+     *
+     * @return the distribution, or null for {@code jitter=none}
+     */
+    public FrameJitter.Distribution getJitter() {
+        return jitterIndex == 0 ? null : distribution();
+    }
+
+    /**
+     * Return the jitter's width.
+     *
+     * @return w (in ms, 0 to 8)
+     */
+    public float getJitterWidthMs() {
+        return jitterMs;
+    }
+
+    /**
      * Access one lane's run.
      *
      * @param lane the lane (0 to 3: 30, 60, 144, 240 Hz)
