@@ -10,6 +10,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.app.TrajectoryCommand;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
@@ -152,6 +153,20 @@ class FrameRateRunTest {
             // jitter spreads the landings: more than one bar
             assertTrue(max - min > 0.01, distribution + ": spread " + (max - min));
         }
+    }
+
+    @Test
+    void runsAndTheHistogramAllocateNothing() {
+        JitterHistogram histogram = new JitterHistogram(gravity(), 100);
+        FrameRateRun run = new FrameRateRun(gravity());
+        Particle launch = launch();
+        Allocations.assertAllocatesNothing("a raw-tpf run at 144 Hz to its landing", () -> {
+            run.start(launch, 144f, SimulationClock.Mode.RAW_TPF, FIXED_STEP);
+            run.flyToLanding();
+        });
+        Allocations.assertAllocatesNothing("a histogram of 100 normal-jitter runs",
+                () -> histogram.compute(launch, 60f, FrameJitter.Distribution.NORMAL, 0.003f,
+                        7L, 100, FIXED_STEP));
     }
 
     /**
