@@ -12,6 +12,7 @@ import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
 import particlelab.demo.Presentation;
+import particlelab.demo.RateLanes;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.NonFiniteStepException;
@@ -92,6 +93,8 @@ public final class DragDemo extends DemoState {
             () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
+    private final RateLanes rates = addPart(new RateLanes());
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -135,6 +138,15 @@ public final class DragDemo extends DemoState {
      */
     public LensPart getLens() {
         return lens;
+    }
+
+    /**
+     * Access the rate lanes ({@code --set rates=on}).
+     *
+     * @return the live part (not null)
+     */
+    public RateLanes getRates() {
+        return rates;
     }
 
     /**
@@ -188,6 +200,7 @@ public final class DragDemo extends DemoState {
         faultyFlight = new QuadraticFlight();
         correctFlight = new QuadraticFlight();
         lane.follow(launch, linearSphere);
+        rates.follow(linearSphere);
         lens.follow(linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();

@@ -9,6 +9,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.RateLanes;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -60,6 +61,8 @@ public final class GravitationalPullDemo extends DemoState {
             () -> SlideCode.pull(gravity), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
+    private final RateLanes rates = addPart(new RateLanes());
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -85,12 +88,22 @@ public final class GravitationalPullDemo extends DemoState {
         return lens;
     }
 
+    /**
+     * Access the rate lanes ({@code --set rates=on}).
+     *
+     * @return the live part (not null)
+     */
+    public RateLanes getRates() {
+        return rates;
+    }
+
     @Override
     protected void createScene() {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
         lane.follow(launch, ball);
+        rates.follow(ball);
         lens.follow(ball);
         setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
