@@ -11,6 +11,7 @@ import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.Consumer;
 import particlelab.demo.DemoState;
 import particlelab.demo.TrajectoryExport;
 import particlelab.files.SafeFiles;
@@ -111,8 +112,34 @@ final class ExportRun {
     static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
             Path folder, boolean replace, boolean printCommand, PrintStream out,
             PrintStream err) {
+        return runHeadless(demos, index, frames, fixedTpf, folder, replace, printCommand, null,
+                out, err);
+    }
+
+    /**
+     * Run a demo without a window, as above, with something set up on the application
+     * before it starts (a recording's state).
+     *
+     * @param demos the demos (not null, not empty)
+     * @param index the demo to run
+     * @param frames how many frames (&gt;0)
+     * @param fixedTpf the fixed frame time (in seconds), or NaN for the real clock
+     * @param folder where to write, or null for no export
+     * @param replace true if existing regular files may be replaced
+     * @param printCommand true to print the command line of the end state
+     * @param beforeStart run on the application before it starts, or null
+     * @param out where the listing goes (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
+            Path folder, boolean replace, boolean printCommand,
+            Consumer<ParticleLabApp> beforeStart, PrintStream out, PrintStream err) {
         DemoCommand.quietLogs();
         ParticleLabApp app = new ParticleLabApp(demos, index, frames, null, fixedTpf, false);
+        if (beforeStart != null) {
+            beforeStart.accept(app);
+        }
         app.start(JmeContext.Type.Headless);
         try {
             app.awaitFinished(Long.MAX_VALUE);
