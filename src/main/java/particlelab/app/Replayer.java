@@ -133,7 +133,7 @@ final class Replayer extends BaseAppState implements StepListener {
      * @throws UsageException if the file cannot be read or is refused
      */
     static int run(String named, String file, PrintStream out, PrintStream err) {
-        String shown = REPLAY + " " + Options.show(file);
+        String shown = REPLAY + " " + Options.showWhole(file);
         List<String> lines;
         try {
             lines = Files.readAllLines(Paths.get(file), StandardCharsets.UTF_8);
@@ -142,7 +142,7 @@ final class Replayer extends BaseAppState implements StepListener {
                     instanceof IOException ? UsageException.reason((IOException) failure)
                             : "not a valid path"));
         }
-        Recording recording = Recording.parse(Options.show(file), lines);
+        Recording recording = Recording.parse(Options.showWhole(file), lines);
         int index = DemoCatalog.indexOf(recording.demo);
         if (index < 0) {
             throw new UsageException(shown + " is a recording of demo "
@@ -154,7 +154,7 @@ final class Replayer extends BaseAppState implements StepListener {
             throw new UsageException(shown + " is a recording of demo " + recording.demo
                     + ", not " + Options.show(named) + "; replay it with: " + Program.NAME
                     + " " + DemoCommand.NAME + " " + recording.demo + " " + REPLAY + " "
-                    + Options.show(file));
+                    + Options.showWhole(file));
         }
         long frames = recording.countFrames();
         if (frames > Integer.MAX_VALUE) {
