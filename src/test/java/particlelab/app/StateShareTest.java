@@ -29,6 +29,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragControl;
@@ -46,6 +47,8 @@ class StateShareTest {
 
     /** The demos' default step h = 1/60 s as a float, as --fixed-tpf prints it. */
     private static final String FRAME = "0.016666668";
+    /** Where the JDK 25 is installed on the lab's machines. */
+    private static final String JDK_25 = "/usr/lib/jvm/temurin-25-jdk-amd64";
     /** A guard against a hung child JVM, not a timing: on a loaded machine it took 75 s. */
     private static final long CHILD_SECONDS = 600L;
 
@@ -180,14 +183,18 @@ class StateShareTest {
      * Issue 33, part 3: a run of the pull demo with the window's inputs, each through the path
      * the window takes (keys queued in jME's input manager: Space pauses and resumes, "-"
      * slows time; the panel's row and slider; the launch dragged with the mouse through the
-     * drag control and the app's camera), over real, varying frame times, is recorded; the
-     * replay of the recording gives every hash again, to the bit.
+     * drag control and the app's camera; Space again to fly the new launch), over real,
+     * varying frame times, is recorded; the replay of the recording gives every hash again,
+     * to the bit.
      */
     @Test
     void aRecordedRunWithKeysAPanelChangeAndADragReplaysIdentically() throws Exception {
         String recording = recordPullWithInputs();
         assertTrue(recording.startsWith(Recording.VERSION_LINE + "\ndemo pull\nsetting g=2.0\n"),
                 recording);
+        assertTrue(firstHashStepAfter(Arrays.asList(recording.split("\n")),
+                recording.substring(0, recording.indexOf("drag release")).split("\n").length)
+                > 0L, "no hash after the drag:\n" + recording);
         for (String expected : new String[] {"\nkey Space\n", "\nkey -\n", "\nselect g\n",
             "\nset g ", "\ndrag start 0 0\n", "\ndrag move 0 0 ", "\ndrag release\n"}) {
             assertTrue(recording.contains(expected), expected + " in\n" + recording);
@@ -197,6 +204,20 @@ class StateShareTest {
         long steps = lastHashStep(recording);
         assertEquals("replayed " + steps + " steps: identical (" + countHashes(recording)
                 + " hashes compared)", replay.out.strip(), replay.toString());
+        // The same recording replayed by JDK 25 in a new JVM: the same hashes (Java's float
+        // arithmetic is IEEE 754 strict since Java 17, so any JVM gives the same bits).
+        Path jdk25 = Paths.get(JDK_25, "bin", "java");
+        Assumptions.assumeTrue(Files.isExecutable(jdk25), "no JDK 25 at " + JDK_25);
+        Path file = Files.createTempFile("particlelab-recording", ".txt");
+        try {
+            Files.writeString(file, recording, StandardCharsets.UTF_8);
+            Child child = runInNewJvm(jdk25.toString(), List.of("demo", "pull",
+                    Replayer.REPLAY, file.toString()));
+            assertEquals(0, child.code, child.err);
+            assertEquals(replay.out.strip(), child.out.strip(), child.err);
+        } finally {
+            Files.deleteIfExists(file);
+        }
     }
 
     /**
@@ -218,7 +239,7 @@ class StateShareTest {
         words[4] = Float.toString(Float.parseFloat(words[4]) + 0.01f);
         lines.set(move, String.join(" ", words));
         Replay moved = replay(String.join("\n", lines) + "\n");
-        assertEquals(Program.FAILED, moved.code, moved.toString());
+        assertEquals(Program.FAILED, moved.code, moved + "\n" + recording);
         long expected = firstHashStepAfter(lines, move);
         assertTrue(moved.out.startsWith("DIVERGED at step " + expected + ": hash "),
                 expected + " expected: " + moved);
@@ -226,12 +247,15 @@ class StateShareTest {
         List<String> timed = new ArrayList<>(Arrays.asList(recording.split("\n")));
         int frames = -1;
         for (int i = 0; i < timed.size() && frames < 0; ++i) {
-            if (timed.get(i).startsWith("frames ")) {
+            if (timed.get(i).startsWith("frames ")
+                    && Float.parseFloat(timed.get(i).split(" ")[3]) < 0.05f) {
                 frames = i;
             }
         }
-        // the first frame is the first to take steps: at 0.02 s it takes one more, so the
-        // step counts part at once, and the first hash already differs
+        // a frame of the first second, before the pause, made 0.02 s longer (more than h =
+        // 1/60 s, less than any cap on a frame's time; the first frame's own time, a long
+        // start, is capped): the fixed step's clock takes one more step in that or the
+        // next frame, so the step counts part and the next hash differs
         String[] frameWords = timed.get(frames).split(" ");
         frameWords[3] = Float.toString(Float.parseFloat(frameWords[3]) + 0.02f);
         timed.set(frames, String.join(" ", frameWords));
@@ -379,6 +403,10 @@ class StateShareTest {
                 case 123:
                     assertTrue(drags.release());
                     break;
+                case 126:
+                    // the drag paused the clock: the new launch flies
+                    key(KeyInput.KEY_SPACE);
+                    break;
                 default:
                     break;
             }
@@ -439,8 +467,15 @@ class StateShareTest {
     /** Run {@code particle-lab ARGS} in a new JVM with this one's classpath and modules. */
     private static Child runInNewJvm(List<String> args) throws IOException,
             InterruptedException {
+        return runInNewJvm(Paths.get(System.getProperty("java.home"), "bin", "java").toString(),
+                args);
+    }
+
+    /** Run {@code particle-lab ARGS} in a new JVM of the given java launcher. */
+    private static Child runInNewJvm(String java, List<String> args) throws IOException,
+            InterruptedException {
         List<String> command = new ArrayList<>();
-        command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
+        command.add(java);
         for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
             // the Vector API module the build adds; nothing of the test runner's agents
             if (option.startsWith("--add-modules")) {
