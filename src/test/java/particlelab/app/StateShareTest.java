@@ -266,6 +266,66 @@ class StateShareTest {
                 first + " expected: " + retimed);
     }
 
+    /**
+     * Choosing another demo while recording ends the recording: its last line says so, the
+     * new demo's HUD says so, and the frames up to the switch replay identically.
+     */
+    @Test
+    void switchingDemosEndsTheRecording() throws Exception {
+        List<DemoState> demos = DemoCatalog.createAll();
+        int index = DemoCatalog.indexOf("pull");
+        int other = DemoCatalog.indexOf("drag");
+        DemoState demo = demos.get(index);
+        ParticleLabApp app = new ParticleLabApp(demos, index, 120, null,
+                Float.parseFloat(FRAME), false);
+        StringWriter text = new StringWriter();
+        Recorder recorder = new Recorder(app.getSwitcher(), demo, "pull", 0, text);
+        app.getStateManager().attach(new BaseAppState() {
+            private int frames;
+
+            @Override
+            public void update(float tpf) {
+                if (demo.isInitialized() && ++frames == 80) {
+                    app.getSwitcher().select(other);
+                }
+            }
+
+            @Override
+            protected void initialize(Application application) {
+                // nothing to build
+            }
+
+            @Override
+            protected void cleanup(Application application) {
+                // nothing to tidy
+            }
+
+            @Override
+            protected void onEnable() {
+                // the switch comes from update
+            }
+
+            @Override
+            protected void onDisable() {
+                // the switch comes from update
+            }
+        });
+        app.getStateManager().attach(recorder);
+        app.start(JmeContext.Type.Headless);
+        assertTrue(app.awaitFinished(CHILD_SECONDS), "the run did not end");
+        assertEquals(null, app.getFailure());
+        String recording = text.toString();
+        assertTrue(recording.endsWith("\nend switched to another demo\n"), recording);
+        // the switch is asked in frame 80 and made by the switcher in that frame, before the
+        // demo's update: pull ran 79 frames of one step each
+        assertTrue(recording.contains("\nframes 19 tpf " + FRAME + "\nhash 79 "), recording);
+        assertEquals("the recording of pull ended: another demo was chosen",
+                demos.get(other).getNotice());
+        Replay replay = replay(recording);
+        assertEquals("replayed 79 steps: identical (2 hashes compared)", replay.out.strip(),
+                replay.toString());
+    }
+
     /** A replay's exit status and output. */
     private static final class Replay {
         final int code;
