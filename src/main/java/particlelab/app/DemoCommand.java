@@ -157,6 +157,7 @@ public final class DemoCommand {
             throw e;
         }
         Recorder[] recorder = new Recorder[1];
+        Writer[] recordWriter = new Writer[1];
         Consumer<ParticleLabApp> beforeStart = null;
         if (request.record != null) {
             Writer writer;
@@ -167,6 +168,7 @@ public final class DemoCommand {
                         + Options.show(request.record) + ": " + UsageException.reason(failure));
                 return Program.FAILED;
             }
+            recordWriter[0] = writer;
             String name = DemoCatalog.names().get(index);
             int particles = request.particles == Fountain.DEFAULT_PARTICLES ? 0
                     : request.particles;
@@ -191,6 +193,18 @@ public final class DemoCommand {
                         request.screenshot, request.fixedTpf, request.uiScale, request.present,
                         exportFolder, request.force, request.printCommand, beforeStart, out,
                         err);
+        if (request.record != null && (recorder[0] == null || !recorder[0].hasStarted())) {
+            // the run never started (no display, say): no empty recording is left behind
+            try {
+                recordWriter[0].close();
+                Files.deleteIfExists(Paths.get(request.record));
+            } catch (IOException leftBehind) {
+                err.println(Program.NAME + ": " + RECORD + ": could not remove the empty "
+                        + Options.showWhole(request.record) + ": "
+                        + UsageException.reason(leftBehind));
+            }
+            recorder[0] = null;
+        }
         if (recorder[0] != null) {
             recorder[0].finish("the run ended");
             if (recorder[0].getFailure() != null) {

@@ -59,6 +59,8 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
     private double seconds;
     private double nextHashSeconds = HASH_SECONDS;
     private boolean ended;
+    /** True once the header was written (the run started). */
+    private boolean started;
     private IOException failure;
     /** The drag on: its declaration and particle, for its moves' lines. */
     private int dragDeclaration;
@@ -85,6 +87,11 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
     /** @return the write's failure, or null if every line was written */
     IOException getFailure() {
         return failure;
+    }
+
+    /** @return true once the run started and the header was written */
+    boolean hasStarted() {
+        return started;
     }
 
     /** @return true once the recording ended (its end line written) */
@@ -146,6 +153,7 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
         Recording.writeHeader(demoName, particles, StateShare.settingsOf(demo),
                 demo.getClock().getStepSeconds(), header);
         writeLine(header.deleteCharAt(header.length() - 1));
+        started = true;
         InputManager input = app.getInputManager();
         for (int i = 0; i < bindings.size(); ++i) {
             KeyBinding binding = bindings.get(i);

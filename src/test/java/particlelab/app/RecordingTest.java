@@ -9,7 +9,12 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -32,6 +37,9 @@ class RecordingTest {
             + "key Space\n"
             + "frames 3 tpf 0.016666668\n"
             + "end the run ended\n";
+
+    /** The longest a child JVM may take before the test gives up on it (in seconds). */
+    private static final long CHILD_SECONDS = 300L;
 
     @TempDir
     Path folder;
@@ -102,6 +110,32 @@ class RecordingTest {
         Run both = run("pull", "--frames", "10", Replayer.REPLAY, existing.toString());
         assertEquals(Program.USAGE, both.code, both.toString());
         assertTrue(both.err.contains("--frames cannot be given with it"), both.toString());
+    }
+
+    /**
+     * A run that never starts (no display, in a new JVM without DISPLAY) leaves no empty
+     * recording behind: the file created for it is removed, and the exit status says why.
+     */
+    @Test
+    void aRunThatCannotOpenItsWindowLeavesNoRecording() throws Exception {
+        Path recording = folder.resolve("never.txt");
+        List<String> command = new ArrayList<>();
+        command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add(Main.class.getName());
+        command.addAll(List.of("demo", "pull", "--record", recording.toString()));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        builder.environment().remove("DISPLAY");
+        builder.environment().remove("WAYLAND_DISPLAY");
+        Process process = builder.start();
+        String output = new String(process.getInputStream().readAllBytes(),
+                StandardCharsets.UTF_8);
+        // a guard against a hung child, not a timing: it stops at the display check
+        assertTrue(process.waitFor(CHILD_SECONDS, TimeUnit.SECONDS), output);
+        assertEquals(Program.FAILED, process.exitValue(), output);
+        assertTrue(output.contains("cannot open the window: no display"), output);
+        assertFalse(Files.exists(recording, LinkOption.NOFOLLOW_LINKS), output);
     }
 
     private Path file() {
