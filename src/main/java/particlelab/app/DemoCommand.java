@@ -1,7 +1,9 @@
 package particlelab.app;
 
 import java.io.File;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.LinkOption;
@@ -10,6 +12,7 @@ import java.nio.file.Paths;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Consumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.lwjgl.glfw.GLFW;
@@ -59,6 +62,7 @@ public final class DemoCommand {
     private static final String PARTICLES = "--particles";
     private static final double MILLIS_PER_SECOND = 1000.0;
     private static final String PROFILE = "--profile";
+    private static final String RECORD = "--record";
     /**
      * The window sizes --window accepts (in pixels): from the smallest the HUD is laid out
      * for without overlaps (lines hidden, "window too small" said in the window) to 8K.
@@ -120,6 +124,9 @@ public final class DemoCommand {
      * @throws UsageException for a bad setting or a folder that cannot be made
      */
     private static int open(Request request, PrintStream out, PrintStream err) {
+        if (request.replay != null) {
+            return Replayer.run(request.name, request.replay, out, err);
+        }
         int index = request.name == null ? 0 : DemoCatalog.indexOf(request.name);
         List<DemoState> demos = DemoCatalog.createAll(request.particles);
         applySettings(demos.get(index), request.settings);
@@ -127,8 +134,11 @@ public final class DemoCommand {
         Path exportFolder = request.exportFolder;
         Path shotFolder = request.screenshot == null ? null
                 : request.screenshot.toPath().toAbsolutePath().getParent();
+        Path recordFolder = request.record == null ? null
+                : Paths.get(request.record).toAbsolutePath().getParent();
         Path createdForExport = null;
         Path createdForShot = null;
+        Path createdForRecord = null;
         try {
             if (exportFolder != null) {
                 createdForExport = OutputFolders.create(ExportRun.EXPORT, exportFolder);
@@ -136,27 +146,85 @@ public final class DemoCommand {
             if (shotFolder != null) {
                 createdForShot = OutputFolders.create(SCREENSHOT, shotFolder);
             }
+            if (recordFolder != null) {
+                createdForRecord = OutputFolders.create(RECORD, recordFolder);
+            }
         } catch (UsageException e) {
             SafeFiles.removeCreated(exportFolder, createdForExport);
+            if (shotFolder != null) {
+                SafeFiles.removeCreated(shotFolder, createdForShot);
+            }
             throw e;
+        }
+        Recorder[] recorder = new Recorder[1];
+        Writer[] recordWriter = new Writer[1];
+        Consumer<ParticleLabApp> beforeStart = null;
+        if (request.record != null) {
+            Writer writer;
+            try {
+                writer = SafeFiles.newWriter(Paths.get(request.record), request.force);
+            } catch (IOException failure) {
+                err.println(Program.NAME + ": " + RECORD + ": cannot write "
+                        + Options.show(request.record) + ": " + UsageException.reason(failure));
+                return Program.FAILED;
+            }
+            recordWriter[0] = writer;
+            String name = DemoCatalog.names().get(index);
+            int particles = request.particles == Fountain.DEFAULT_PARTICLES ? 0
+                    : request.particles;
+            beforeStart = app -> {
+                recorder[0] = new Recorder(app.getSwitcher(), demos.get(index), name,
+                        particles, writer);
+                app.getStateManager().attach(recorder[0]);
+            };
         }
         if (request.window != null) {
             System.setProperty(ParticleLabApp.WINDOW_SIZE_PROPERTY,
                     request.window[0] + "x" + request.window[1]);
         }
         // an export or a printed command after N frames needs no window (unless a PNG is asked)
-        int status = (exportFolder != null || request.printCommand && request.frames > 0)
-                && request.screenshot == null
+        // a recording of N frames needs no window either
+        int status = (exportFolder != null || (request.printCommand || request.record != null)
+                && request.frames > 0) && request.screenshot == null
                 ? ExportRun.runHeadless(demos, index, request.frames, request.fixedTpf,
-                        exportFolder, request.force, request.printCommand, out, err)
+                        exportFolder, request.force, request.printCommand, beforeStart, out,
+                        err)
                 : openWindow(demos, index, TourGuide.NOT_TOURING, request.frames,
                         request.screenshot, request.fixedTpf, request.uiScale, request.present,
-                        exportFolder, request.force, request.printCommand, out, err);
+                        exportFolder, request.force, request.printCommand, beforeStart, out,
+                        err);
+        if (request.record != null && (recorder[0] == null || !recorder[0].hasStarted())) {
+            // the run never started (no display, say): no empty recording is left behind
+            try {
+                recordWriter[0].close();
+                Files.deleteIfExists(Paths.get(request.record));
+            } catch (IOException leftBehind) {
+                err.println(Program.NAME + ": " + RECORD + ": could not remove the empty "
+                        + Options.showWhole(request.record) + ": "
+                        + UsageException.reason(leftBehind));
+            }
+            recorder[0] = null;
+        }
+        if (recorder[0] != null) {
+            recorder[0].finish("the run ended");
+            if (recorder[0].getFailure() != null) {
+                err.println(Program.NAME + ": " + RECORD + ": writing "
+                        + Options.show(request.record) + " failed: "
+                        + UsageException.reason(recorder[0].getFailure()));
+                status = status == Program.OK ? Program.FAILED : status;
+            } else if (status == Program.OK) {
+                out.println("recorded " + recorder[0].countSteps() + " steps to "
+                        + Options.showWhole(request.record));
+            }
+        }
         if (status != Program.OK) {
             // A run that failed (no display, say) leaves no empty folder it made.
             SafeFiles.removeCreated(exportFolder, createdForExport);
             if (shotFolder != null) {
                 SafeFiles.removeCreated(shotFolder, createdForShot);
+            }
+            if (recordFolder != null) {
+                SafeFiles.removeCreated(recordFolder, createdForRecord);
             }
         }
         if (status == Program.OK && request.profile) {
@@ -180,6 +248,8 @@ public final class DemoCommand {
         int particles;
         boolean profile;
         boolean printCommand;
+        String record;
+        String replay;
 
         /**
          * Read and check the options, the demo first (its options mean nothing without it).
@@ -198,6 +268,19 @@ public final class DemoCommand {
             request.name = options.string(DEMO, first);
             if (request.name != null && DemoCatalog.indexOf(request.name) < 0) {
                 throw new UsageException(unknownDemo(request.name));
+            }
+            request.replay = options.string(Replayer.REPLAY, null);
+            if (request.replay != null) {
+                for (String other : new String[] {RECORD, FRAMES, FIXED_TPF, SET, PARTICLES,
+                    SCREENSHOT, ExportRun.EXPORT, StateShare.PRINT_COMMAND, SafeFiles.FORCE,
+                    PRESENT, WINDOW, UI_SCALE, PROFILE}) {
+                    if (options.has(other)) {
+                        throw new UsageException(Replayer.REPLAY + ": the recording holds the"
+                                + " demo's settings, frames and inputs, and the replay runs"
+                                + " without a window; " + other + " cannot be given with it");
+                    }
+                }
+                return request;
             }
             request.frames = options.intInRange(FRAMES, 0, 1, Integer.MAX_VALUE);
             String file = options.string(SCREENSHOT, null);
@@ -227,12 +310,17 @@ public final class DemoCommand {
                         + " knows which frame to save");
             }
             request.force = options.has(SafeFiles.FORCE);
-            if (request.force && file == null && !export) {
+            request.record = options.string(RECORD, null);
+            if (request.force && file == null && !export && request.record == null) {
                 throw new UsageException(SafeFiles.FORCE + ": replaces the files of "
-                        + SCREENSHOT + " or " + ExportRun.EXPORT + "; give one of them");
+                        + SCREENSHOT + ", " + ExportRun.EXPORT + " or " + RECORD
+                        + "; give one of them");
             }
             if (file != null) {
                 checkScreenshotPath(file, request.force);
+            }
+            if (request.record != null) {
+                checkOutputFile(RECORD, "run.txt", request.record, request.force);
             }
             if (export) {
                 request.exportFolder = ExportRun.checkFolder(
@@ -379,25 +467,39 @@ public final class DemoCommand {
      * @throws UsageException if the PNG may not be written there
      */
     static void checkScreenshotPath(String text, boolean replace) {
+        checkOutputFile(SCREENSHOT, "shot.png", text, replace);
+    }
+
+    /**
+     * Check, as {@link #checkScreenshotPath} does, that a file an option names may be
+     * written there.
+     *
+     * @param option the option, for messages (not null)
+     * @param example a file name to suggest when a folder was given (not null)
+     * @param text the path as given (not null)
+     * @param replace true if {@value SafeFiles#FORCE} was given
+     * @throws UsageException if the file may not be written there
+     */
+    static void checkOutputFile(String option, String example, String text, boolean replace) {
         String shown = Options.show(text);
         Path path;
         try {
             path = Paths.get(text).toAbsolutePath();
         } catch (InvalidPathException bad) {
-            throw new UsageException(SCREENSHOT + ": not a valid path, but was " + shown);
+            throw new UsageException(option + ": not a valid path, but was " + shown);
         }
         if (Files.isDirectory(path, LinkOption.NOFOLLOW_LINKS)) {
-            throw new UsageException(SCREENSHOT + ": " + shown + " is a folder; give a file"
-                    + " name such as " + Options.show(path.resolve("shot.png").toString()));
+            throw new UsageException(option + ": " + shown + " is a folder; give a file"
+                    + " name such as " + Options.show(path.resolve(example).toString()));
         }
         String refused = SafeFiles.refusal(Paths.get(text), replace, "choose another name");
         if (refused != null) {
-            throw new UsageException(SCREENSHOT + ": " + refused);
+            throw new UsageException(option + ": " + refused);
         }
         String blocked = path.getParent() == null ? null
                 : SafeFiles.folderRefusal(path.getParent());
         if (blocked != null) {
-            throw new UsageException(SCREENSHOT + ": cannot write " + shown + ": "
+            throw new UsageException(option + ": cannot write " + shown + ": "
                     + blocked);
         }
     }
@@ -475,9 +577,19 @@ public final class DemoCommand {
                         + " whether the command, re-run, gives the same bits (the C key does"
                         + " the same in the window); with --frames and no --screenshot it runs"
                         + " without a window")
-                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + " and " + ExportRun.EXPORT
-                        + " replace existing regular files; a symbolic link is never written"
-                        + " through, not even with it")
+                .value(RECORD, "FILE", "write a recording of the run: the settings, each"
+                        + " frame's time, the demo's keys, the panel's sliders and the drags,"
+                        + " and the state's hash once a simulated second (plain text); an"
+                        + " existing FILE is refused (replaced with " + SafeFiles.FORCE
+                        + "), a symbolic link always is; with --frames and no --screenshot it"
+                        + " runs without a window; switching demos ends it")
+                .value(Replayer.REPLAY, "FILE", "replay a recording without a window and"
+                        + " print 'replayed N steps: identical', or 'DIVERGED at step K: ...'"
+                        + " with exit status 1 at the first hash that differs; a damaged"
+                        + " line, another version or another demo is refused (exit status 2)")
+                .flag(SafeFiles.FORCE, "let " + SCREENSHOT + ", " + ExportRun.EXPORT
+                        + " and " + RECORD + " replace existing regular files; a symbolic"
+                        + " link is never written through, not even with it")
                 .repeatable(SET, "NAME=VALUE", "set one of the demo's parameters before it"
                         + " starts, e.g. b=0.3 or h=1/10, or a named state such as"
                         + " preset=glancing (repeatable); the panel (F2) lists them, a wrong"
@@ -492,7 +604,7 @@ public final class DemoCommand {
                         + " mesh_ms_max=K)")
                 .note(describeChoices())
                 .note("Exit status: 0 when the window ran, 1 when it could not (no display,"
-                        + " no OpenGL), 2 on a bad command line.");
+                        + " no OpenGL) or a replay diverged, 2 on a bad command line.");
     }
 
     /**
@@ -599,6 +711,35 @@ public final class DemoCommand {
     static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
             File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
             boolean replace, boolean printCommand, PrintStream out, PrintStream err) {
+        return openWindow(demos, index, tourStop, frames, screenshot, fixedTpf, uiScale,
+                present, exportFolder, replace, printCommand, null, out, err);
+    }
+
+    /**
+     * Open the window, as above, with something set up on the application before it starts
+     * (a recording's state).
+     *
+     * @param demos the demos, in {@link DemoCatalog} order for a tour (not null, not empty)
+     * @param index the demo to open on (a tour stop's demo)
+     * @param tourStop the tour stop to open on (from 0), or
+     *     {@link TourGuide#NOT_TOURING}
+     * @param frames the frame limit, 0 for none
+     * @param screenshot the PNG to write, or null
+     * @param fixedTpf the fixed frame time, or NaN
+     * @param uiScale the user's factor on the HUD scale
+     * @param present true to open in presentation mode ({@code --present})
+     * @param exportFolder where to export the trajectories when the window closes, or null
+     * @param replace true if the screenshot and the export may replace existing files
+     * @param printCommand true to print the state's command line when the window closes
+     * @param beforeStart run on the application before it starts, or null
+     * @param out where results go (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int openWindow(List<DemoState> demos, int index, int tourStop, int frames,
+            File screenshot, float fixedTpf, float uiScale, boolean present, Path exportFolder,
+            boolean replace, boolean printCommand, Consumer<ParticleLabApp> beforeStart,
+            PrintStream out, PrintStream err) {
         String noDisplay = checkDisplay();
         if (noDisplay != null) {
             err.println(Program.NAME + ": cannot open the window: " + noDisplay);
@@ -623,6 +764,9 @@ public final class DemoCommand {
         }
         if (app.getCapture() != null) {
             app.getCapture().setReplace(replace);
+        }
+        if (beforeStart != null) {
+            beforeStart.accept(app);
         }
         app.start();
         try {

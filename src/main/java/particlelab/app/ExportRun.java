@@ -1,5 +1,6 @@
 package particlelab.app;
 
+import com.jme3.system.JmeContext;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.DirectoryStream;
@@ -11,6 +12,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import particlelab.demo.DemoState;
 import particlelab.demo.TrajectoryExport;
 import particlelab.files.SafeFiles;
@@ -113,6 +115,35 @@ final class ExportRun {
     static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
             Path folder, boolean replace, boolean printCommand, PrintStream out,
             PrintStream err) {
+        return runHeadless(demos, index, frames, fixedTpf, folder, replace, printCommand, null,
+                out, err);
+    }
+
+    /**
+     * Run a demo without a window, as above; with something to set up on an application
+     * before it starts (a recording's state, which hears the application's input and frames),
+     * in jME's headless context instead.
+     *
+     * @param demos the demos (not null, not empty)
+     * @param index the demo to run
+     * @param frames how many frames (&gt;0)
+     * @param fixedTpf the fixed frame time (in seconds), or NaN for the real clock
+     * @param folder where to write, or null for no export
+     * @param replace true if existing regular files may be replaced
+     * @param printCommand true to print the command line of the end state
+     * @param beforeStart run on the application before it starts, or null for none (and no
+     *     application)
+     * @param out where the listing goes (not null)
+     * @param err where errors go (not null)
+     * @return the exit status
+     */
+    static int runHeadless(List<DemoState> demos, int index, int frames, float fixedTpf,
+            Path folder, boolean replace, boolean printCommand,
+            Consumer<ParticleLabApp> beforeStart, PrintStream out, PrintStream err) {
+        if (beforeStart != null) {
+            return runInHeadlessApp(demos, index, frames, fixedTpf, folder, replace,
+                    printCommand, beforeStart, out, err);
+        }
         DemoState demo = demos.get(index);
         try {
             runFrames(demo, frames, fixedTpf);
@@ -126,6 +157,34 @@ final class ExportRun {
                     + (log == null ? "" : "; the full stack is in " + log));
             return Program.FAILED;
         }
+        int status = folder == null ? Program.OK : write(demo, folder, replace, out, err);
+        if (status == Program.OK && printCommand) {
+            printCommand(demo, out);
+        }
+        return status;
+    }
+
+    /** {@link #runHeadless} in jME's headless context, with the set-up before it starts. */
+    private static int runInHeadlessApp(List<DemoState> demos, int index, int frames,
+            float fixedTpf, Path folder, boolean replace, boolean printCommand,
+            Consumer<ParticleLabApp> beforeStart, PrintStream out, PrintStream err) {
+        DemoCommand.quietLogs();
+        ParticleLabApp app = new ParticleLabApp(demos, index, frames, null, fixedTpf, false);
+        beforeStart.accept(app);
+        app.start(JmeContext.Type.Headless);
+        try {
+            app.awaitFinished(Long.MAX_VALUE);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            app.stop();
+            err.println(Program.NAME + ": interrupted");
+            return Program.FAILED;
+        }
+        if (app.getFailure() != null) {
+            err.println(Program.NAME + ": the demo failed: " + app.getFailure());
+            return Program.FAILED;
+        }
+        DemoState demo = app.getSwitcher().getSelected();
         int status = folder == null ? Program.OK : write(demo, folder, replace, out, err);
         if (status == Program.OK && printCommand) {
             printCommand(demo, out);

@@ -13,7 +13,8 @@ public final class Program {
     /**
      * Exit status: the run could not finish: the window could not run (no display, no OpenGL,
      * a crash), the output could not be written (stdout closed or full), the report's
-     * headless part failed, or a bug (reported in one line).
+     * headless part failed, a replayed recording diverged ({@code demo --replay}), or a bug
+     * (reported in one line).
      */
     public static final int FAILED = 1;
     /** Exit status: a bad command line, reported in one line on stderr; nothing is created. */

@@ -88,17 +88,7 @@ final class StateShare {
     static Capture capture(DemoState demo) {
         int index = catalogIndex(demo);
         String name = DemoCatalog.names().get(index);
-        List<String> settings = new ArrayList<>();
-        DemoParameters parameters = demo.getParameters();
-        for (int i = 0; i < parameters.size(); ++i) {
-            DemoParameter parameter = parameters.get(i);
-            float value = parameters.getValueInScene(i);
-            if (Float.floatToRawIntBits(value)
-                    != Float.floatToRawIntBits(parameter.getDefault())) {
-                settings.add(parameter.getName() + "="
-                        + ParametersTable.valueText(parameter, value));
-            }
-        }
+        List<String> settings = settingsOf(demo);
         long steps = demo.getWorld().getStepCount();
         float stepSeconds = demo.getClock().getStepSeconds();
         int particles = demo instanceof FountainDemo
@@ -117,6 +107,28 @@ final class StateShare {
         }
         return new Capture(command.toString(), steps, demo.getWorld().getTimeSeconds(),
                 StateHash.of(demo), index, particles, settings, stepSeconds);
+    }
+
+    /**
+     * Write the settings of a demo's scene that differ from the declared defaults, each as
+     * {@code --set} reads it back to the same float.
+     *
+     * @param demo the demo (not null)
+     * @return new NAME=VALUE texts, in the panel's order (not null)
+     */
+    static List<String> settingsOf(DemoState demo) {
+        List<String> settings = new ArrayList<>();
+        DemoParameters parameters = demo.getParameters();
+        for (int i = 0; i < parameters.size(); ++i) {
+            DemoParameter parameter = parameters.get(i);
+            float value = parameters.getValueInScene(i);
+            if (Float.floatToRawIntBits(value)
+                    != Float.floatToRawIntBits(parameter.getDefault())) {
+                settings.add(parameter.getName() + "="
+                        + ParametersTable.valueText(parameter, value));
+            }
+        }
+        return settings;
     }
 
     /**

@@ -20,6 +20,21 @@ import particlelab.view.ParameterPanelModel;
  */
 public final class DemoParameters implements ParameterPanelModel {
 
+    /**
+     * Told of what the panel's user does to the values (a recording, issue 33): a row clicked
+     * or a slider moved; not of keys, of {@code --set} or of a demo's own changes.
+     */
+    public interface PanelListener {
+        /** @param row the row the panel selected (&ge;0) */
+        void panelSelected(int row);
+
+        /**
+         * @param row the row whose slider moved (&ge;0)
+         * @param value the value asked for, as {@link #set(int, float)} gets it
+         */
+        void panelSet(int row, float value);
+    }
+
     /** What marks the selected line of the panel. */
     public static final String SELECTED_MARK = "> ";
     /** What marks the other lines. */
@@ -34,6 +49,8 @@ public final class DemoParameters implements ParameterPanelModel {
     private int selected;
     /** Counts changes of any value or the selection, so a view knows when to redraw. */
     private int version;
+    /** Told of the panel's changes, or null. */
+    private PanelListener panelListener;
 
     /**
      * Declare a parameter; its value starts at the default.
@@ -272,13 +289,22 @@ public final class DemoParameters implements ParameterPanelModel {
         return selected;
     }
 
+    /**
+     * Tell a listener of the panel's changes from now on (one at a time).
+     *
+     * @param listener the listener, or null for none
+     */
+    public void setPanelListener(PanelListener listener) {
+        panelListener = listener;
+    }
+
     @Override
     public void select(int row) {
         checkIndex(row);
-        if (selected != row) {
-            selected = row;
-            ++version;
+        if (panelListener != null) {
+            panelListener.panelSelected(row);
         }
+        selectRow(row);
     }
 
     /**
@@ -291,7 +317,7 @@ public final class DemoParameters implements ParameterPanelModel {
             return;
         }
         int count = declared.size();
-        select(((selected + direction) % count + count) % count);
+        selectRow(((selected + direction) % count + count) % count);
     }
 
     /**
@@ -315,7 +341,11 @@ public final class DemoParameters implements ParameterPanelModel {
     @Override
     public void setSliderFraction(int row, float fraction) {
         checkIndex(row);
-        set(row, declared.get(row).valueAtFraction(fraction));
+        float value = declared.get(row).valueAtFraction(fraction);
+        if (panelListener != null) {
+            panelListener.panelSet(row, value);
+        }
+        set(row, value);
     }
 
     @Override
@@ -354,6 +384,13 @@ public final class DemoParameters implements ParameterPanelModel {
             formatRow(i, text).append('\n');
         }
         return text;
+    }
+
+    private void selectRow(int row) {
+        if (selected != row) {
+            selected = row;
+            ++version;
+        }
     }
 
     private void applyAt(int index) {

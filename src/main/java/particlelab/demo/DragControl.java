@@ -25,6 +25,25 @@ import particlelab.view.PlanePick;
  */
 public final class DragControl {
 
+    /**
+     * Told of every drag (a recording, issue 33): its start, each value handed to
+     * {@link Draggable#moveTo}, its end; {@link #startDrag}, {@link #dragTo} and
+     * {@link #release} do the same again from what it was told.
+     */
+    public interface Listener {
+        /**
+         * @param draggable the grip's declaration, its index in {@link #getDraggables()}
+         * @param particle the particle, its index in the declaration's particles
+         */
+        void dragStarted(int draggable, int particle);
+
+        /** @param value the value handed to moveTo (not null, not to be kept) */
+        void draggedTo(Vector3f value);
+
+        /** The drag ended. */
+        void dragEnded();
+    }
+
     /** How far the mouse moves from the press before a drag starts (in pixels). */
     public static final float DRAG_START_PIXELS = 3f;
     /** The least pick radius around a sphere's centre or an arrow's tip (in pixels). */
@@ -80,6 +99,8 @@ public final class DragControl {
     private float planeZ;
     /** How many moves changed something since the demo was created. */
     private int moves;
+    /** Told of every drag, or null. */
+    private Listener listener;
     /** Scratch: the plane point under the mouse (m), a grip's point (m), a value. */
     private final Vector3f point = new Vector3f();
     private final Vector3f gripPoint = new Vector3f();
@@ -274,13 +295,7 @@ public final class DragControl {
             if (Math.hypot(screenX - pressX, screenY - pressY) < DRAG_START_PIXELS) {
                 return false;
             }
-            dragging = true;
-            if (!held.isDraggableWhileRunning()) {
-                clock.setPaused(true);
-            }
-            if (held.getEffect() == Draggable.Effect.LAUNCH) {
-                restart.run();
-            }
+            beginDrag();
         }
         if (!pick.screenToPlane(camera, screenX, screenY, planeZ, point)) {
             return false;
@@ -293,12 +308,54 @@ public final class DragControl {
                     .divideLocal(ParticleView.ARROW_SECONDS);
             value.z = 0f;
         }
+        dragTo(value);
+        return true;
+    }
+
+    /**
+     * Start a drag as a mouse's does, without a mouse: what a recording's replay does.
+     *
+     * @param draggable the declaration's index in {@link #getDraggables()}
+     * @param particle the particle's index in the declaration's particles
+     */
+    public void startDrag(int draggable, int particle) {
+        held = draggables.get(draggable);
+        picked = held.getParticles().get(particle);
+        planeZ = picked.getParticle().position.z;
+        beginDrag();
+    }
+
+    /**
+     * Hand a value to the grip being dragged, as a move of the mouse does after its pick.
+     *
+     * @param newValue the position or velocity to move to (in m or m/s, not null, not
+     *     modified)
+     * @throws IllegalStateException if no drag is on
+     */
+    public void dragTo(Vector3f newValue) {
+        if (held == null || !dragging) {
+            throw new IllegalStateException("no drag is on");
+        }
+        if (newValue != value) {
+            value.set(newValue);
+        }
         held.moveTo(picked, value);
         if (held.getEffect() == Draggable.Effect.LAUNCH) {
             restart.run();
         }
         ++moves;
-        return true;
+        if (listener != null) {
+            listener.draggedTo(value);
+        }
+    }
+
+    /**
+     * Tell a listener of every drag from now on (one at a time).
+     *
+     * @param newListener the listener, or null for none
+     */
+    public void setListener(Listener newListener) {
+        listener = newListener;
     }
 
     /**
@@ -313,6 +370,9 @@ public final class DragControl {
         dragging = false;
         if (ended) {
             dragEnded.run();
+            if (listener != null) {
+                listener.dragEnded();
+            }
         }
         return ended;
     }
@@ -374,6 +434,20 @@ public final class DragControl {
             storeResult.y += particle.getParticle().velocity.y * ParticleView.ARROW_SECONDS;
         }
         return storeResult;
+    }
+
+    /** The drag of the held grip starts: the clock pauses, a launch starts again. */
+    private void beginDrag() {
+        dragging = true;
+        if (listener != null) {
+            listener.dragStarted(draggables.indexOf(held), held.getParticles().indexOf(picked));
+        }
+        if (!held.isDraggableWhileRunning()) {
+            clock.setPaused(true);
+        }
+        if (held.getEffect() == Draggable.Effect.LAUNCH) {
+            restart.run();
+        }
     }
 
     /** How near a press must be to a grip at a point (pixels): the sphere as drawn, or more. */

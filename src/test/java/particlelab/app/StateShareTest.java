@@ -5,20 +5,35 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.jme3.app.Application;
+import com.jme3.app.state.BaseAppState;
+import com.jme3.input.InputManager;
+import com.jme3.input.KeyInput;
+import com.jme3.input.event.KeyInputEvent;
+import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
+import com.jme3.system.JmeContext;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintStream;
+import java.io.StringWriter;
+import java.lang.reflect.Field;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoState;
+import particlelab.demo.DragControl;
+import particlelab.demo.Draggable;
 import particlelab.demo.StateHash;
 import particlelab.physics.SimulationClock;
 
@@ -32,6 +47,8 @@ class StateShareTest {
 
     /** The demos' default step h = 1/60 s as a float, as --fixed-tpf prints it. */
     private static final String FRAME = "0.016666668";
+    /** Where the JDK 25 is installed on the lab's machines. */
+    private static final String JDK_25 = "/usr/lib/jvm/temurin-25-jdk-amd64";
     /** A guard against a hung child JVM, not a timing: on a loaded machine it took 75 s. */
     private static final long CHILD_SECONDS = 600L;
 
@@ -162,6 +179,338 @@ class StateShareTest {
                 + " command line does not carry"), changed.stateLine());
     }
 
+    /**
+     * Issue 33, part 3: a run of the pull demo with the window's inputs, each through the path
+     * the window takes (keys queued in jME's input manager: Space pauses and resumes, "-"
+     * slows time; the panel's row and slider; the launch dragged with the mouse through the
+     * drag control and the app's camera; Space again to fly the new launch), over real,
+     * varying frame times, is recorded; the replay of the recording gives every hash again,
+     * to the bit.
+     */
+    @Test
+    void aRecordedRunWithKeysAPanelChangeAndADragReplaysIdentically() throws Exception {
+        String recording = recordPullWithInputs();
+        assertTrue(recording.startsWith(Recording.VERSION_LINE + "\ndemo pull\nsetting g=2.0\n"),
+                recording);
+        assertTrue(firstHashStepAfter(Arrays.asList(recording.split("\n")),
+                recording.substring(0, recording.indexOf("drag release")).split("\n").length)
+                > 0L, "no hash after the drag:\n" + recording);
+        for (String expected : new String[] {"\nkey Space\n", "\nkey -\n", "\nselect g\n",
+            "\nset g ", "\ndrag start 0 0\n", "\ndrag move 0 0 ", "\ndrag release\n"}) {
+            assertTrue(recording.contains(expected), expected + " in\n" + recording);
+        }
+        Replay replay = replay(recording);
+        assertEquals(0, replay.code, replay.toString());
+        long steps = lastHashStep(recording);
+        assertEquals("replayed " + steps + " steps: identical (" + countHashes(recording)
+                + " hashes compared)", replay.out.strip(), replay.toString());
+        // The same recording replayed by JDK 25 in a new JVM: the same hashes (Java's float
+        // arithmetic is IEEE 754 strict since Java 17, so any JVM gives the same bits).
+        Path jdk25 = Paths.get(JDK_25, "bin", "java");
+        Assumptions.assumeTrue(Files.isExecutable(jdk25), "no JDK 25 at " + JDK_25);
+        Path file = Files.createTempFile("particlelab-recording", ".txt");
+        try {
+            Files.writeString(file, recording, StandardCharsets.UTF_8);
+            Child child = runInNewJvm(jdk25.toString(), List.of("demo", "pull",
+                    Replayer.REPLAY, file.toString()));
+            assertEquals(0, child.code, child.err);
+            assertEquals(replay.out.strip(), child.out.strip(), child.err);
+        } finally {
+            Files.deleteIfExists(file);
+        }
+    }
+
+    /**
+     * One event changed in a recording (the drag's last value moved by 1 cm), or one frame
+     * time (the first second's frames given 0.02 s): the replay stops at the first hash
+     * after the change with "DIVERGED at step K" and exit status 1.
+     */
+    @Test
+    void aChangedEventOrFrameTimeDivergesAtTheNextHash() throws Exception {
+        String recording = recordPullWithInputs();
+        List<String> lines = new ArrayList<>(Arrays.asList(recording.split("\n")));
+        int move = -1;
+        for (int i = 0; i < lines.size(); ++i) {
+            if (lines.get(i).startsWith("drag move ")) {
+                move = i;
+            }
+        }
+        String[] words = lines.get(move).split(" ");
+        words[4] = Float.toString(Float.parseFloat(words[4]) + 0.01f);
+        lines.set(move, String.join(" ", words));
+        Replay moved = replay(String.join("\n", lines) + "\n");
+        assertEquals(Program.FAILED, moved.code, moved + "\n" + recording);
+        long expected = firstHashStepAfter(lines, move);
+        assertTrue(moved.out.startsWith("DIVERGED at step " + expected + ": hash "),
+                expected + " expected: " + moved);
+
+        List<String> timed = new ArrayList<>(Arrays.asList(recording.split("\n")));
+        int frames = -1;
+        for (int i = 0; i < timed.size() && frames < 0; ++i) {
+            if (timed.get(i).startsWith("frames ")
+                    && Float.parseFloat(timed.get(i).split(" ")[3]) < 0.05f) {
+                frames = i;
+            }
+        }
+        // a frame of the first second, before the pause, made 0.02 s longer (more than h =
+        // 1/60 s, less than any cap on a frame's time; the first frame's own time, a long
+        // start, is capped): the fixed step's clock takes one more step in that or the
+        // next frame, so the step counts part and the next hash differs
+        String[] frameWords = timed.get(frames).split(" ");
+        frameWords[3] = Float.toString(Float.parseFloat(frameWords[3]) + 0.02f);
+        timed.set(frames, String.join(" ", frameWords));
+        Replay retimed = replay(String.join("\n", timed) + "\n");
+        assertEquals(Program.FAILED, retimed.code, retimed.toString());
+        long first = firstHashStepAfter(timed, frames);
+        assertTrue(retimed.out.startsWith("DIVERGED at step " + first + ": hash "),
+                first + " expected: " + retimed);
+    }
+
+    /**
+     * Choosing another demo while recording ends the recording: its last line says so, the
+     * new demo's HUD says so, and the frames up to the switch replay identically.
+     */
+    @Test
+    void switchingDemosEndsTheRecording() throws Exception {
+        List<DemoState> demos = DemoCatalog.createAll();
+        int index = DemoCatalog.indexOf("pull");
+        int other = DemoCatalog.indexOf("drag");
+        DemoState demo = demos.get(index);
+        ParticleLabApp app = new ParticleLabApp(demos, index, 120, null,
+                Float.parseFloat(FRAME), false);
+        StringWriter text = new StringWriter();
+        Recorder recorder = new Recorder(app.getSwitcher(), demo, "pull", 0, text);
+        app.getStateManager().attach(new BaseAppState() {
+            private int frames;
+
+            @Override
+            public void update(float tpf) {
+                if (demo.isInitialized() && ++frames == 80) {
+                    app.getSwitcher().select(other);
+                }
+            }
+
+            @Override
+            protected void initialize(Application application) {
+                // nothing to build
+            }
+
+            @Override
+            protected void cleanup(Application application) {
+                // nothing to tidy
+            }
+
+            @Override
+            protected void onEnable() {
+                // the switch comes from update
+            }
+
+            @Override
+            protected void onDisable() {
+                // the switch comes from update
+            }
+        });
+        app.getStateManager().attach(recorder);
+        app.start(JmeContext.Type.Headless);
+        assertTrue(app.awaitFinished(CHILD_SECONDS), "the run did not end");
+        assertEquals(null, app.getFailure());
+        String recording = text.toString();
+        assertTrue(recording.endsWith("\nend switched to another demo\n"), recording);
+        // the switch is asked in frame 80 and made by the switcher in that frame, before the
+        // demo's update: pull ran 79 frames of one step each
+        assertTrue(recording.contains("\nframes 19 tpf " + FRAME + "\nhash 79 "), recording);
+        assertEquals("the recording of pull ended: another demo was chosen",
+                demos.get(other).getNotice());
+        Replay replay = replay(recording);
+        assertEquals("replayed 79 steps: identical (2 hashes compared)", replay.out.strip(),
+                replay.toString());
+    }
+
+    /** A replay's exit status and output. */
+    private static final class Replay {
+        final int code;
+        final String out;
+        final String err;
+
+        Replay(int code, String out, String err) {
+            this.code = code;
+            this.out = out;
+            this.err = err;
+        }
+
+        @Override
+        public String toString() {
+            return "exit " + code + ", out: " + out + ", err: " + err;
+        }
+    }
+
+    /** Replay a recording's text with {@code demo --replay FILE}, in this JVM. */
+    private static Replay replay(String recording) throws IOException {
+        Path file = Files.createTempFile("particlelab-recording", ".txt");
+        try {
+            Files.writeString(file, recording, StandardCharsets.UTF_8);
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            int code = DemoCommand.run(new String[] {"pull", Replayer.REPLAY, file.toString()},
+                    new PrintStream(out, true, StandardCharsets.UTF_8),
+                    new PrintStream(err, true, StandardCharsets.UTF_8));
+            return new Replay(code, out.toString(StandardCharsets.UTF_8),
+                    err.toString(StandardCharsets.UTF_8));
+        } finally {
+            Files.deleteIfExists(file);
+        }
+    }
+
+    /**
+     * Record 300 frames of the pull demo (g = 2) in jME's headless app with the real clock,
+     * pressing keys, moving the panel's slider and dragging the launch on the way.
+     */
+    private static String recordPullWithInputs() throws Exception {
+        List<DemoState> demos = DemoCatalog.createAll();
+        int index = DemoCatalog.indexOf("pull");
+        DemoState demo = demos.get(index);
+        DemoCommand.applySettings(demo, List.of("g=2"));
+        ParticleLabApp app = new ParticleLabApp(demos, index, 300, null, Float.NaN, false);
+        app.getStateManager().attach(new Inputs(demo));
+        StringWriter text = new StringWriter();
+        Recorder recorder = new Recorder(app.getSwitcher(), demo, "pull", 0, text);
+        app.getStateManager().attach(recorder);
+        app.start(JmeContext.Type.Headless);
+        assertTrue(app.awaitFinished(CHILD_SECONDS), "the run did not end");
+        assertEquals(null, app.getFailure());
+        assertEquals(null, recorder.getFailure());
+        return text.toString();
+    }
+
+    private static long lastHashStep(String recording) {
+        long step = -1L;
+        for (String line : recording.split("\n")) {
+            if (line.startsWith("hash ")) {
+                step = Long.parseLong(line.split(" ")[1]);
+            }
+        }
+        return step;
+    }
+
+    private static int countHashes(String recording) {
+        int count = 0;
+        for (String line : recording.split("\n")) {
+            count += line.startsWith("hash ") ? 1 : 0;
+        }
+        return count;
+    }
+
+    private static long firstHashStepAfter(List<String> lines, int from) {
+        for (int i = from + 1; i < lines.size(); ++i) {
+            if (lines.get(i).startsWith("hash ")) {
+                return Long.parseLong(lines.get(i).split(" ")[1]);
+            }
+        }
+        throw new AssertionError("no hash after line " + (from + 1));
+    }
+
+    /**
+     * The window's inputs, given at fixed frames of the demo as a person would: attached
+     * before the recorder, so what it does in a frame comes before that frame's demo update
+     * (keys are queued and heard in the next frame's input, as a keyboard's are).
+     */
+    private static final class Inputs extends BaseAppState {
+        private final DemoState demo;
+        private final Vector3f grip = new Vector3f();
+        private int frame;
+        private float pressX;
+        private float pressY;
+
+        Inputs(DemoState demo) {
+            this.demo = demo;
+        }
+
+        @Override
+        public void update(float tpf) {
+            if (!demo.isInitialized()) {
+                return;
+            }
+            ++frame;
+            Camera camera = getApplication().getCamera();
+            DragControl drags = demo.getDragControl();
+            switch (frame) {
+                case 20:
+                case 50:
+                    key(KeyInput.KEY_SPACE);
+                    break;
+                case 70:
+                    key(KeyInput.KEY_MINUS);
+                    break;
+                case 90:
+                    int g = demo.getParameters().indexOf("g");
+                    demo.getParameters().select(g);
+                    demo.getParameters().setSliderFraction(g, 0.25f);
+                    break;
+                case 120:
+                    Draggable ball = drags.getDraggables().get(0);
+                    DragControl.copyGripPoint(ball.getGrip(), ball.getParticles().get(0), grip);
+                    Vector3f screen = camera.getScreenCoordinates(grip);
+                    pressX = screen.x;
+                    pressY = screen.y;
+                    assertTrue(drags.press(camera, pressX, pressY), "the ball was not picked");
+                    break;
+                case 121:
+                    assertTrue(drags.move(camera, pressX + 30f, pressY + 12f));
+                    break;
+                case 122:
+                    assertTrue(drags.move(camera, pressX + 45f, pressY + 20f));
+                    break;
+                case 123:
+                    assertTrue(drags.release());
+                    break;
+                case 126:
+                    // the drag paused the clock: the new launch flies
+                    key(KeyInput.KEY_SPACE);
+                    break;
+                default:
+                    break;
+            }
+        }
+
+        /** Queue a key's press and release, as a keyboard does (see WindowControls' test). */
+        private void key(int keyCode) {
+            InputManager input = getApplication().getInputManager();
+            try {
+                Field permitted = InputManager.class.getDeclaredField("eventsPermitted");
+                permitted.setAccessible(true);
+                permitted.setBoolean(input, true);
+                try {
+                    input.onKeyEvent(new KeyInputEvent(keyCode, '\0', true, false));
+                    input.onKeyEvent(new KeyInputEvent(keyCode, '\0', false, false));
+                } finally {
+                    permitted.setBoolean(input, false);
+                }
+            } catch (ReflectiveOperationException failure) {
+                throw new IllegalStateException(failure);
+            }
+        }
+
+        @Override
+        protected void initialize(Application app) {
+            // nothing to build
+        }
+
+        @Override
+        protected void cleanup(Application app) {
+            // nothing to tidy
+        }
+
+        @Override
+        protected void onEnable() {
+            // inputs come from update
+        }
+
+        @Override
+        protected void onDisable() {
+            // inputs come from update
+        }
+    }
+
     /** A command's run in a new JVM: exit code, stdout, stderr. */
     private static final class Child {
         final int code;
@@ -178,8 +527,15 @@ class StateShareTest {
     /** Run {@code particle-lab ARGS} in a new JVM with this one's classpath and modules. */
     private static Child runInNewJvm(List<String> args) throws IOException,
             InterruptedException {
+        return runInNewJvm(Paths.get(System.getProperty("java.home"), "bin", "java").toString(),
+                args);
+    }
+
+    /** Run {@code particle-lab ARGS} in a new JVM of the given java launcher. */
+    private static Child runInNewJvm(String java, List<String> args) throws IOException,
+            InterruptedException {
         List<String> command = new ArrayList<>();
-        command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
+        command.add(java);
         for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
             // the Vector API module the build adds; nothing of the test runner's agents
             if (option.startsWith("--add-modules")) {
