@@ -9,6 +9,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -60,6 +61,9 @@ public final class GravitationalPullDemo extends DemoState {
             () -> SlideCode.pull(gravity), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, h = 1/10 s. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(GravitationalPullDemo::new,
+            new String[] {null, "h", "h"}, new float[] {0f, 1f / 30f, 1f / 10f}, 0f));
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -83,6 +87,15 @@ public final class GravitationalPullDemo extends DemoState {
      */
     public LensPart getLens() {
         return lens;
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import particlelab.app.DemoCatalog;
+import particlelab.lecture.BounceDemo;
 import particlelab.world.StateRing;
 
 /**
@@ -110,6 +111,46 @@ class WhatIfForkTest {
         assertArrayEquals(twinRing.copyEntry(twinRing.getLastIndex()),
                 ring.copyEntry(ring.getLastIndex()), spec + ": the kept state");
         assertEquals(Float.parseFloat(parts[2]), origin.getParameters().getValue(parts[1]));
+    }
+
+    /**
+     * The part's keys without a window: Insert forks lanes with the changes offered in turn,
+     * the HUD line names them, frames move them on, J keeps the newest (the demo's state is
+     * then the lane's, bit for bit), and a fourth Insert drops three lanes.
+     */
+    @Test
+    void thePartForksKeepsAndDropsLanes() {
+        BounceDemo bounce = new BounceDemo();
+        stepSingly(bounce, FORK_STEP);
+        WhatIfPart whatIf = bounce.getWhatIf();
+        for (int lane = 0; lane < WhatIfPart.MAX_LANES; ++lane) {
+            whatIf.forkOrDrop();
+        }
+        assertEquals(WhatIfPart.MAX_LANES, whatIf.countLanes());
+        StringBuilder hud = new StringBuilder();
+        whatIf.writeHudLines(hud);
+        assertEquals("what if (J keeps the newest, Insert drops them):  pink as recorded,"
+                + "  yellow e = 0.6,  lilac h = 1/30 s;  next: as recorded\n", hud.toString());
+        for (int frame = 0; frame < 60; ++frame) {
+            whatIf.afterFrame();
+        }
+        // 60 frames of 1/60 s of lane time: 60 steps at h = 1/60 s, 30 at 1/30 s (a lane
+        // steps up to the nearest step's end, so a float h a little over 1/60 loses none).
+        assertEquals(60, whatIf.getLane(0).getSteps());
+        assertEquals(60, whatIf.getLane(1).getSteps());
+        assertEquals(30, whatIf.getLane(2).getSteps());
+        WhatIfFork newest = whatIf.getLane(2);
+        whatIf.keepNewest();
+        assertEquals(0, whatIf.countLanes());
+        StateRing ring = bounce.getRun().getStateRing();
+        StateRing twinRing = newest.getRun().getStateRing();
+        assertArrayEquals(twinRing.copyEntry(twinRing.getLastIndex()),
+                ring.copyEntry(ring.getLastIndex()), "the kept lane's state");
+        assertEquals(1f / 30f, bounce.getParameters().getValue("h"));
+        for (int lane = 0; lane <= WhatIfPart.MAX_LANES; ++lane) {
+            whatIf.forkOrDrop();
+        }
+        assertEquals(0, whatIf.countLanes(), "a fourth Insert drops the lanes");
     }
 
     /**
