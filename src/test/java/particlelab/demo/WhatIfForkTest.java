@@ -7,8 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import particlelab.Allocations;
 import particlelab.app.DemoCatalog;
 import particlelab.lecture.BounceDemo;
+import particlelab.lecture.DragDemo;
 import particlelab.world.StateRing;
 
 /**
@@ -151,6 +153,27 @@ class WhatIfForkTest {
             whatIf.forkOrDrop();
         }
         assertEquals(0, whatIf.countLanes(), "a fourth Insert drops the lanes");
+    }
+
+    /** Lanes going on frame by frame, and their HUD line, allocate nothing. */
+    @Test
+    void lanesGoingOnAllocateNothing() {
+        DragDemo drag = new DragDemo();
+        stepSingly(drag, FORK_STEP);
+        WhatIfPart whatIf = drag.getWhatIf();
+        for (int lane = 0; lane < WhatIfPart.MAX_LANES; ++lane) {
+            whatIf.forkOrDrop();
+        }
+        whatIf.afterFrame();
+        StringBuilder hud = new StringBuilder(256);
+        Allocations.assertAllocatesNothing("what-if lanes, 60 frames", () -> {
+            for (int frame = 0; frame < 60; ++frame) {
+                whatIf.afterFrame();
+                hud.setLength(0);
+                whatIf.writeHudLines(hud);
+            }
+        });
+        assertTrue(whatIf.getLane(0).getSteps() > 60, "the lanes moved on");
     }
 
     /**
