@@ -7,6 +7,7 @@ import com.jme3.math.Vector3f;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.CollisionSounds;
@@ -138,6 +139,9 @@ public final class BounceDemo extends DemoState {
     private final float[] graphHeights = new float[LANE_TESTS.length];
     private final float[] graphSpeeds = new float[LANE_TESTS.length];
     private final float[] idealHeights = new float[LANE_TESTS.length];
+    /** What-if forks (Insert, Delete, J): as recorded, e = 0.6, h = 1/30 s; lanes 0.4 m apart. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(BounceDemo::new,
+            new String[] {null, "e", "h"}, new float[] {0f, 0.6f, 1f / 30f}, 0.4f));
     private final float[] idealSpeeds = new float[LANE_TESTS.length];
     /** The graph rectangle and HUD scale the graph was last laid out for. */
     private final ScreenRect graphRect = new ScreenRect();
@@ -148,6 +152,15 @@ public final class BounceDemo extends DemoState {
         super("Bounce");
         // The slide is about energy: presenting shows the ledger's bars.
         getEnergyPart().showOnSlide();
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

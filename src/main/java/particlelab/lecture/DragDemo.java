@@ -11,6 +11,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.WhatIfPart;
 import particlelab.demo.Presentation;
 import particlelab.demo.RateLanes;
 import particlelab.physics.Gravity;
@@ -95,6 +96,9 @@ public final class DragDemo extends DemoState {
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
     private final RateLanes rates = addPart(new RateLanes());
+    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, b = 2 N s/m, c = 0. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(DragDemo::new,
+            new String[] {null, "h", "b", "c"}, new float[] {0f, 1f / 30f, 2f, 0f}, 0f));
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -177,6 +181,15 @@ public final class DragDemo extends DemoState {
      */
     public boolean isSlideForm() {
         return law == 1;
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

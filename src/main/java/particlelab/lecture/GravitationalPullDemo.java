@@ -10,6 +10,7 @@ import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
 import particlelab.demo.RateLanes;
+import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
@@ -63,6 +64,9 @@ public final class GravitationalPullDemo extends DemoState {
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
     /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
     private final RateLanes rates = addPart(new RateLanes());
+    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, h = 1/10 s. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(GravitationalPullDemo::new,
+            new String[] {null, "h", "h"}, new float[] {0f, 1f / 30f, 1f / 10f}, 0f));
     private DemoParticle ball;
 
     /** Create the demo. */
@@ -95,6 +99,15 @@ public final class GravitationalPullDemo extends DemoState {
      */
     public RateLanes getRates() {
         return rates;
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

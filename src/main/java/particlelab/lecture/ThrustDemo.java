@@ -12,6 +12,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.WhatIfPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -79,6 +80,9 @@ public final class ThrustDemo extends DemoState {
             () -> SlideCode.thrust(thrusterGravity, thrusterDrag, thrust), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, b = 2 N s/m. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(ThrustDemo::new,
+            new String[] {null, "h", "b"}, new float[] {0f, 1f / 30f, 2f}, 0f));
     /** The bug hunt's switch; k goes to the thrust the switch names (one of these three). */
     private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
     /** The faulty thrusts, beside the correct one in the thruster's integrator. */
@@ -125,6 +129,15 @@ public final class ThrustDemo extends DemoState {
      */
     public LensPart getLens() {
         return lens;
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

@@ -9,6 +9,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.WhatIfPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
@@ -47,6 +48,9 @@ public final class UniformMotionDemo extends DemoState {
             SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
+    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s. */
+    private final WhatIfPart whatIf = addPart(new WhatIfPart(UniformMotionDemo::new,
+            new String[] {null, "h"}, new float[] {0f, 1f / 30f}, 0f));
     private DemoParticle sphere;
 
     /** Create the demo. */
@@ -70,6 +74,15 @@ public final class UniformMotionDemo extends DemoState {
      */
     public LensPart getLens() {
         return lens;
+    }
+
+    /**
+     * Access the what-if forks (Insert, Delete, J).
+     *
+     * @return the live part (not null)
+     */
+    public WhatIfPart getWhatIf() {
+        return whatIf;
     }
 
     @Override

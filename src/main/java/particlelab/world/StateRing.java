@@ -28,7 +28,7 @@ public final class StateRing {
     private static final int MIN_CAPACITY = 2;
 
     private final long budgetBytes;
-    private final int maxSteps;
+    private int maxSteps;
     private final StateSlab slab = new StateSlab();
     private int[] data = new int[0];
     private int[] lengths = new int[0];
@@ -62,6 +62,25 @@ public final class StateRing {
         }
         this.budgetBytes = budgetBytes;
         this.maxSteps = maxSteps;
+    }
+
+    /**
+     * Cap the entries lower before anything is recorded: a what-if fork's twin keeps only
+     * its newest states, so forks do not cost a ring each.
+     *
+     * @param newMaxSteps the most entries it keeps (&ge;2, &le;{@link #getMaxSteps()})
+     * @throws IllegalStateException once the ring recorded (its arrays are sized)
+     */
+    public void limitSteps(int newMaxSteps) {
+        if (newMaxSteps < MIN_CAPACITY || newMaxSteps > maxSteps) {
+            throw new IllegalArgumentException("ring steps must be from " + MIN_CAPACITY
+                    + " to " + maxSteps + ", but was " + newMaxSteps);
+        }
+        if (capacity != 0) {
+            throw new IllegalStateException("ring steps can be limited only before the first"
+                    + " record");
+        }
+        maxSteps = newMaxSteps;
     }
 
     /**

@@ -124,6 +124,25 @@ class StateRingTest {
         assertTrue(ring.getBytes() <= (long) Integer.BYTES * 100 * (ring.getStrideInts() + 2));
     }
 
+    /** A fork's twin limits its ring before recording: two entries, then refused. */
+    @Test
+    void limitedStepsCapTheRingAndAreRefusedOnceItRecorded() {
+        World world = spawningWorld();
+        StateRing ring = new StateRing();
+        ring.limitSteps(2);
+        for (int i = 0; i < 50; ++i) {
+            world.step(H);
+            world.getImpacts().clear();
+            ring.record(world, H);
+        }
+        assertEquals(2, ring.getCapacity());
+        assertEquals(48, ring.getFirstIndex());
+        assertThrows(IllegalStateException.class, () -> ring.limitSteps(2));
+        assertThrows(IllegalArgumentException.class, () -> new StateRing().limitSteps(1));
+        assertThrows(IllegalArgumentException.class,
+                () -> new StateRing().limitSteps(StateRing.DEFAULT_MAX_STEPS + 1));
+    }
+
     @Test
     void recordingAndRestoringAllocateNothing() {
         World world = spawningWorld();
