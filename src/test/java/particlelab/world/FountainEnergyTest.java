@@ -91,4 +91,64 @@ class FountainEnergyTest {
         assertArrayEquals(plain.getPositions(), kept.getPositions());
         assertArrayEquals(plain.getVelocities(), kept.getVelocities());
     }
+
+    /**
+     * Gravity alone (drag switched off, no fireworks, 1.5 s: no drop is back on the ground
+     * before 2.5 s, so none bounces or leaves and no slot moves), the lecture's step: each
+     * particle's numerical energy is {@code m·g·h·(vy − vy0)/2} (the step keeps
+     * {@code ½(vy − g·h/2)² + g·y}), vy0 its vy when the nozzle made it; the ledger's
+     * numerical column is their sum, to the floats' rounding.
+     */
+    @Test
+    void gravityAloneNumericalIsTheClosedFormSummedOverParticles() {
+        Fountain fountain = new Fountain(10_000);
+        fountain.setFireworks(false);
+        ((LinearDrag) fountain.getIntegrator().getForce(1)).setCoefficient(0f);
+        fountain.setEnergy(new FountainEnergy(fountain));
+        EnergyLedger ledger = fountain.getEnergy().getLedger();
+        int n = fountain.getCapacity();
+        float[] p = fountain.getPositions();
+        float[] v = fountain.getVelocities();
+        float[] bornVy = new float[n];
+        float[] stepVy = new float[n];
+        double m = Fountain.MASS_KG;
+        double g = 9.8f;
+        double bound = 0.0;
+        int live = 0;
+        for (int s = 0; s < 90; ++s) {
+            System.arraycopy(v, n, stepVy, 0, live);
+            fountain.step(H);
+            for (int i = 0; i < live; ++i) {
+                float vy0 = stepVy[i];
+                float vy1 = v[n + i];
+                float y1 = p[n + i];
+                // The step's roundings against the exact identity: vy' = vy − g·h off by up
+                // to ulp(vy')/2 and g·h itself by ulp(g·h)/2, each times the mean of
+                // m·vy and m·vy' (ΔK = ½m·Δvy·(vy + vy')); y' = y + h·vy' off by up to
+                // ulp(h·vy')/2 + ulp(y')/2, times m·g. Twice each, to spare any doubt about
+                // the batch's order of the two roundings.
+                bound += m * (0.5 * (Math.abs(vy0) + Math.abs(vy1))
+                        * (Math.ulp(vy1) + Math.ulp((float) (g * H)))
+                        + g * (Math.ulp(y1) + Math.ulp(H * vy1)));
+            }
+            for (int i = live; i < fountain.countLive(); ++i) {
+                bornVy[i] = v[n + i];
+            }
+            live = fountain.countLive();
+        }
+        assertEquals(live, fountain.countLive(Fountain.WATER), "water alone");
+        assertEquals(0L, fountain.countRecycledResting() + fountain.countRecycledLeaving());
+        double closedForm = 0.0;
+        for (int i = 0; i < live; ++i) {
+            closedForm += 0.5 * m * g * H * ((double) v[n + i] - bornVy[i]);
+        }
+        double error = ledger.getNumericalJoules() - closedForm;
+        System.out.printf("gravity alone, %d drops: numerical %.9f J, closed form %.9f J,"
+                + " difference %.3g J, bound %.3g J%n", live, ledger.getNumericalJoules(),
+                closedForm, error, bound);
+        assertTrue(bound < 0.01 * Math.abs(closedForm), "the bound leaves the test teeth");
+        assertEquals(closedForm, ledger.getNumericalJoules(), bound);
+        assertEquals(0.0, ledger.getDragLossJoules(), 0.0, "b = 0");
+        assertEquals(0.0, ledger.getImpactLossJoules() + ledger.getRemovedJoules(), 0.0);
+    }
 }
