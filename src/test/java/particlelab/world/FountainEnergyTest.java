@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 import particlelab.physics.EnergyLedger;
 import particlelab.physics.LinearDrag;
 
@@ -76,6 +77,21 @@ class FountainEnergyTest {
                 ledger.getEmittedJoules(), ledger.getRemovedJoules(),
                 ledger.getDragLossJoules(), ledger.getImpactLossJoules(),
                 ledger.getNumericalJoules(), worst);
+    }
+
+    @Test
+    void keepingTheLedgerAllocatesNothing() {
+        Fountain fountain = new Fountain(5_000);
+        fountain.setEnergy(new FountainEnergy(fountain));
+        // warm up past the first bounces and bursts, then 300 steps more of all of it
+        for (int s = 0; s < 200; ++s) {
+            fountain.step(H);
+        }
+        Allocations.assertAllocatesNothing("300 fountain steps with the ledger", () -> {
+            for (int s = 0; s < 300; ++s) {
+                fountain.step(H);
+            }
+        });
     }
 
     @Test
