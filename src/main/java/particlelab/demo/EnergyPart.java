@@ -55,7 +55,7 @@ public final class EnergyPart implements DemoPart {
         new ColorRGBA(0.95f, 0.3f, 0.3f, 1f),
         new ColorRGBA(0.85f, 0.4f, 0.85f, 1f),
         new ColorRGBA(0.9f, 0.85f, 0.3f, 1f),
-        new ColorRGBA(0.55f, 0.75f, 1f, 1f),
+        new ColorRGBA(0.75f, 0.95f, 0.35f, 1f),
         new ColorRGBA(0.7f, 0.55f, 0.45f, 1f),
         new ColorRGBA(1f, 1f, 1f, 1f)};
     /** The widest name the strip keeps room for. */
@@ -252,8 +252,8 @@ public final class EnergyPart implements DemoPart {
         // One short line (a line that wraps as its numbers grow lays the HUD out again): the
         // bars beside the scene hold the columns.
         if (own != null) {
-            text.append("energy (J, particles in flight, U = 0 at y = 0): K+U = start + emitted"
-                    + " - removed - losses + numerical;  start ");
+            text.append("energy (J, particles in flight): K+U = start + emitted - removed"
+                    + " - losses + numerical;  start ");
         } else {
             text.append("energy (J, all bodies, U = 0 at y = 0): K+U+spring = start + work"
                     + " - losses + numerical;  start ");
