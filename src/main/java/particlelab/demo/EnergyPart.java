@@ -18,8 +18,9 @@ import particlelab.world.WorldEnergy;
  * {@link EnergyBars} in the HUD's ledger strip down the scene's right edge
  * ({@link HudLayout#getLedger}; the scene stays left of it, so no body flies under it) and
  * writes its equation on one HUD line. A bar per column: kinetic, potential, spring, thrust
- * work, drag loss, impact loss, script work and the numerical column, the energy the steps
- * themselves created or destroyed, in a colour of its own. Energy held or put in goes right
+ * work, drag loss, impact loss, script work, emitted and removed (the fountain's particles
+ * that come and go) and the numerical column, the energy the steps themselves created or
+ * destroyed, in a colour of its own. Energy held or put in goes right
  * of the zero line, energy taken (drag, impacts) left of it; the scale is a round number at
  * or above the largest energy since the last reset (the start's, at first), so the bars do
  * not jitter from frame to frame.
@@ -29,6 +30,10 @@ import particlelab.world.WorldEnergy;
  * ({@link #showOnSlide}: bounce, collisions, clip, spring, racket) or when switched on. A
  * parameter rather than a key: every letter is taken by some demo, and a part's key would
  * sit among each demo's own keys.
+ *
+ * <p>A demo whose particles are no bodies of its world keeps its own ledger
+ * ({@link #useOwnLedger}: the fountain's), kept only while wanted since it costs a pass over
+ * its particles a step.
  *
  * <p>The ledger starts at the demo's first step and again at every reset. Its step hooks,
  * frame hook and HUD line allocate nothing.
