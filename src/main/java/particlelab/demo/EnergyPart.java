@@ -18,8 +18,9 @@ import particlelab.world.WorldEnergy;
  * {@link EnergyBars} in the HUD's ledger strip down the scene's right edge
  * ({@link HudLayout#getLedger}; the scene stays left of it, so no body flies under it) and
  * writes its equation on one HUD line. A bar per column: kinetic, potential, spring, thrust
- * work, drag loss, impact loss, script work and the numerical column, the energy the steps
- * themselves created or destroyed, in a colour of its own. Energy held or put in goes right
+ * work, drag loss, impact loss, script work, emitted and removed (the fountain's particles
+ * that come and go) and the numerical column, the energy the steps themselves created or
+ * destroyed, in a colour of its own. Energy held or put in goes right
  * of the zero line, energy taken (drag, impacts) left of it; the scale is a round number at
  * or above the largest energy since the last reset (the start's, at first), so the bars do
  * not jitter from frame to frame.
@@ -29,6 +30,10 @@ import particlelab.world.WorldEnergy;
  * ({@link #showOnSlide}: bounce, collisions, clip, spring, racket) or when switched on. A
  * parameter rather than a key: every letter is taken by some demo, and a part's key would
  * sit among each demo's own keys.
+ *
+ * <p>A demo whose particles are no bodies of its world keeps its own ledger
+ * ({@link #useOwnLedger}: the fountain's), kept only while wanted since it costs a pass over
+ * its particles a step.
  *
  * <p>The ledger starts at the demo's first step and again at every reset. Its step hooks,
  * frame hook and HUD line allocate nothing.
@@ -44,7 +49,8 @@ public final class EnergyPart implements DemoPart {
     private static final ColorRGBA START_COLOR = new ColorRGBA(0.6f, 0.6f, 0.65f, 1f);
     /** The bars' names of the columns, in {@link EnergyLedger#getColumn}'s order. */
     private static final String[] BAR_NAMES = {"kinetic", "potential", "spring",
-        "thrust work", "drag loss", "impact loss", "script work", "numerical"};
+        "thrust work", "drag loss", "impact loss", "script work", "emitted", "removed",
+        "numerical"};
     /** The bars' colours, likewise: the numerical bar's is like none of the others'. */
     private static final ColorRGBA[] BAR_COLORS = {
         new ColorRGBA(0.35f, 0.65f, 1f, 1f),
@@ -54,6 +60,8 @@ public final class EnergyPart implements DemoPart {
         new ColorRGBA(0.95f, 0.3f, 0.3f, 1f),
         new ColorRGBA(0.85f, 0.4f, 0.85f, 1f),
         new ColorRGBA(0.9f, 0.85f, 0.3f, 1f),
+        new ColorRGBA(0.75f, 0.95f, 0.35f, 1f),
+        new ColorRGBA(0.7f, 0.55f, 0.45f, 1f),
         new ColorRGBA(1f, 1f, 1f, 1f)};
     /** The widest name the strip keeps room for. */
     private static final String WIDEST_NAME = "thrust work";
@@ -67,6 +75,8 @@ public final class EnergyPart implements DemoPart {
 
     private DemoState demo;
     private WorldEnergy energy;
+    /** The demo's own ledger, kept only while wanted (null: the world's, {@link #energy}). */
+    private OwnLedger own;
     private StepTable table;
     /** The columns {@link #table} was made for. */
     private int tableColumns;
@@ -111,19 +121,59 @@ public final class EnergyPart implements DemoPart {
         bars = new EnergyBars(app.getAssetManager(), HudFont.load(app.getAssetManager()), ROWS);
     }
 
+    /**
+     * Keep the demo's own ledger instead of its world's: for particles that are no bodies
+     * of the world (the fountain's packed pool). It is kept only while the ledger is wanted
+     * (switched on, or on the slide), since it costs O(particles) a step; the demo calls
+     * {@link #ownStepped()} after each step of its own simulation. Call in the demo's
+     * constructor.
+     *
+     * @param newOwn the ledger (not null)
+     */
+    public void useOwnLedger(OwnLedger newOwn) {
+        if (newOwn == null) {
+            throw new IllegalArgumentException("own ledger must be a ledger, but was null");
+        }
+        own = newOwn;
+    }
+
+    /**
+     * After a step of the demo's own simulation, which keeps its own ledger
+     * ({@link #useOwnLedger}): the ledger's row for the export, at the world's time.
+     */
+    public void ownStepped() {
+        if (own != null && own.getLedger() != null && table != null) {
+            putRow(demo.getWorld().getTimeSeconds());
+        }
+    }
+
     @Override
     public void beforeStep(float stepSeconds) {
+        if (own != null) {
+            // before the demo's own simulation steps: start (from the state now) or stop
+            boolean wanted = isDrawn();
+            if (wanted != (own.getLedger() != null)) {
+                own.keep(wanted);
+                if (wanted) {
+                    startTable(false);
+                }
+            }
+            if (wanted && table.size() == 0) {
+                putRow(demo.getWorld().getTimeSeconds());
+            }
+            return;
+        }
         World world = demo.getWorld();
         if (energy == null) {
             energy = new WorldEnergy(world, false);
-            startTable();
+            startTable(true);
         }
         energy.beforeStep(world, stepSeconds);
     }
 
     @Override
     public void afterStep(float stepSeconds) {
-        if (energy == null) {
+        if (own != null || energy == null) {
             return;
         }
         World world = demo.getWorld();
@@ -133,9 +183,14 @@ public final class EnergyPart implements DemoPart {
 
     @Override
     public void onRestart() {
-        if (energy != null) {
+        if (own != null && own.getLedger() != null) {
+            // the demo's own reset restarts its ledger, before or after this: the start's
+            // row waits for the first step
+            own.keep(true);
+            startTable(false);
+        } else if (energy != null) {
             energy.restart();
-            startTable();
+            startTable(true);
         }
         barsScale = 0.0;
     }
@@ -154,7 +209,7 @@ public final class EnergyPart implements DemoPart {
             demo.getHud().getNode().attachChild(bars.getNode());
         }
         HudLayout layout = demo.getHud().getLayout();
-        boolean wanted = isDrawn() && energy != null && demo.getWorld().countBodies() > 0;
+        boolean wanted = isDrawn() && hasLedger();
         int rows = wanted ? writeBars() : 0;
         boolean presenting = demo.getDemoHud().isPresenting();
         if (rows != stripRows || rows > 0 && presenting != stripPresenting) {
@@ -190,19 +245,24 @@ public final class EnergyPart implements DemoPart {
         if (!shown) {
             return;
         }
-        if (energy == null) {
+        if (own == null ? energy == null : own.getLedger() == null) {
             text.append("energy ledger: from the first step\n");
             return;
         }
-        if (demo.getWorld().countBodies() == 0) {
+        if (!hasLedger()) {
             text.append("energy ledger: none here: the demo's world has no bodies\n");
             return;
         }
-        EnergyLedger ledger = energy.getLedger();
+        EnergyLedger ledger = ledger();
         // One short line (a line that wraps as its numbers grow lays the HUD out again): the
         // bars beside the scene hold the columns.
-        text.append("energy (J, all bodies, U = 0 at y = 0): K+U+spring = start + work - losses"
-                + " + numerical;  start ");
+        if (own != null) {
+            text.append("energy (J, particles in flight): K+U = start + emitted - removed"
+                    + " - losses + numerical;  start ");
+        } else {
+            text.append("energy (J, all bodies, U = 0 at y = 0): K+U+spring = start + work"
+                    + " - losses + numerical;  start ");
+        }
         TextFormat.appendFixed(text, ledger.getStartJoules(), 2).append(", numerical ");
         TextFormat.appendFixed(text, ledger.getNumericalJoules(), 4).append('\n');
     }
@@ -286,17 +346,30 @@ public final class EnergyPart implements DemoPart {
         return table;
     }
 
+    /**
+     * Tell whether there is a ledger to show and export: the world's, once stepped, if it
+     * has bodies, or the demo's own while kept.
+     *
+     * @return true if so
+     */
+    public boolean hasLedger() {
+        if (own != null) {
+            return own.getLedger() != null && table != null;
+        }
+        return energy != null && demo.getWorld().countBodies() > 0;
+    }
+
     /** @return true if the ledger is on the HUD */
     public boolean isShown() {
         return shown;
     }
 
     /**
-     * A table for the ledger's columns now, with the start's row: a new one only if the
-     * columns changed, so a reset (a demo's refire) allocates nothing.
+     * A table for the ledger's columns now, with the start's row if asked: a new one only if
+     * the columns changed, so a reset (a demo's refire) allocates nothing.
      */
-    private void startTable() {
-        int columns = energy.getColumns();
+    private void startTable(boolean withRow) {
+        int columns = columns();
         if (table == null || columns != tableColumns) {
             table = new StepTable(TABLE_NAME, EnergyLedger.csvHeader(columns, "t"),
                     StepTable.DEFAULT_CAPACITY);
@@ -304,7 +377,19 @@ public final class EnergyPart implements DemoPart {
         } else {
             table.clear();
         }
-        putRow(demo.getWorld().getTimeSeconds());
+        if (withRow) {
+            putRow(demo.getWorld().getTimeSeconds());
+        }
+    }
+
+    /** The ledger shown: the demo's own or its world's. */
+    private EnergyLedger ledger() {
+        return own != null ? own.getLedger() : energy.getLedger();
+    }
+
+    /** Its columns. */
+    private int columns() {
+        return own != null ? own.getColumns() : energy.getColumns();
     }
 
     /**
@@ -315,8 +400,8 @@ public final class EnergyPart implements DemoPart {
      * @return how many rows are set
      */
     private int writeBars() {
-        EnergyLedger ledger = energy.getLedger();
-        int columns = energy.getColumns();
+        EnergyLedger ledger = ledger();
+        int columns = columns();
         double largest = Math.abs(ledger.getStartJoules());
         bars.setRowCount(1);
         bars.setRow(0, START_NAME, ledger.getStartJoules(), START_COLOR);
@@ -329,7 +414,8 @@ public final class EnergyPart implements DemoPart {
             largest = Math.max(largest, Math.abs(value));
             // the losses are taken from the energy: drawn left of zero
             int bit = 1 << i;
-            boolean loss = bit == EnergyLedger.DRAG || bit == EnergyLedger.IMPACT;
+            boolean loss = bit == EnergyLedger.DRAG || bit == EnergyLedger.IMPACT
+                    || bit == EnergyLedger.REMOVED;
             bars.setRowCount(rows + 1);
             bars.setRow(rows, BAR_NAMES[i], loss ? -value : value, BAR_COLORS[i]);
             ++rows;
@@ -388,8 +474,8 @@ public final class EnergyPart implements DemoPart {
     }
 
     private void putRow(double timeSeconds) {
-        EnergyLedger ledger = energy.getLedger();
-        int columns = energy.getColumns();
+        EnergyLedger ledger = ledger();
+        int columns = columns();
         table.startRow().put(timeSeconds);
         for (int i = 0; i < EnergyLedger.NUMERICAL_COLUMN; ++i) {
             if ((columns & (1 << i)) != 0) {
@@ -397,5 +483,32 @@ public final class EnergyPart implements DemoPart {
             }
         }
         table.put(ledger.getNumericalJoules());
+    }
+
+    /**
+     * A ledger a demo keeps itself ({@link #useOwnLedger}), switched on and off by this part.
+     */
+    public interface OwnLedger {
+
+        /**
+         * Keep the ledger, starting again from the state now, or stop keeping it.
+         *
+         * @param keeping true to keep it
+         */
+        void keep(boolean keeping);
+
+        /**
+         * Access the ledger.
+         *
+         * @return the live ledger while kept, else null
+         */
+        EnergyLedger getLedger();
+
+        /**
+         * Tell which columns it has.
+         *
+         * @return the columns, OR-ed ({@link EnergyLedger#KINETIC} ...)
+         */
+        int getColumns();
     }
 }

@@ -132,11 +132,12 @@ public final class TrajectoryExport {
         demo.collectExportTables(tables);
         // the energy ledger's columns per step (issue 32), once the demo has stepped; not
         // while a recorded step is shown: the ledger is the live end's, not the state shown;
-        // not where the world has no bodies (the fountain's points): a table of zeros would
-        // say its thousands of particles had no energy
+        // not where there is no ledger (a world without bodies and no ledger of the demo's
+        // own, or the fountain's own while off): a table of zeros would say its particles had
+        // no energy
         StepTable energy = demo.getEnergyPart().getTable();
         if (energy != null && !demo.getRun().isReplaying()
-                && demo.getWorld().countBodies() > 0) {
+                && demo.getEnergyPart().hasLedger()) {
             tables.add(energy);
         }
         for (int i = 0; i < tables.size(); ++i) {

@@ -6,12 +6,15 @@ import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.RenderManager;
 import java.util.List;
 import particlelab.demo.DemoState;
+import particlelab.demo.EnergyPart;
 import particlelab.demo.FrameTimes;
 import particlelab.demo.Presentation;
 import particlelab.demo.StepTable;
+import particlelab.physics.EnergyLedger;
 import particlelab.view.PointCloudView;
 import particlelab.view.TextFormat;
 import particlelab.world.Fountain;
+import particlelab.world.FountainEnergy;
 import particlelab.world.GroundBounce;
 import particlelab.world.StateRecord;
 import particlelab.world.StateSlab;
@@ -79,10 +82,33 @@ public final class FountainDemo extends DemoState {
             StepTable.DEFAULT_CAPACITY);
     /** The time simulated since the last reset (in seconds). */
     private double simulatedSeconds;
+    /** The particles' energy ledger, made when first wanted (null before). */
+    private FountainEnergy energy;
 
     /** Create the demo with {@link Fountain#DEFAULT_PARTICLES}. */
     public FountainDemo() {
         super("Fountain");
+        // the pool is no body of the world: the ledger is the fountain's, kept while wanted
+        getEnergyPart().useOwnLedger(new EnergyPart.OwnLedger() {
+            @Override
+            public void keep(boolean keeping) {
+                if (keeping && energy == null) {
+                    energy = new FountainEnergy(fountain);
+                }
+                fountain.setEnergy(keeping ? energy : null);
+            }
+
+            @Override
+            public EnergyLedger getLedger() {
+                return fountain == null || fountain.getEnergy() == null ? null
+                        : fountain.getEnergy().getLedger();
+            }
+
+            @Override
+            public int getColumns() {
+                return FountainEnergy.COLUMNS;
+            }
+        });
     }
 
     /**
@@ -260,6 +286,7 @@ public final class FountainDemo extends DemoState {
     /** The fountain's step beside the world, then its counts for the export. */
     private void stepFountain(float stepSeconds) {
         fountain.step(stepSeconds);
+        getEnergyPart().ownStepped();
         simulatedSeconds += stepSeconds;
         counts.startRow().put(simulatedSeconds).put(fountain.countLive())
                 .put(fountain.countLive(Fountain.WATER)).put(fountain.countLive(Fountain.SHELL))

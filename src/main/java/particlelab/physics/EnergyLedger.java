@@ -8,7 +8,8 @@ import com.jme3.math.Vector3f;
  *
  * <pre>
  *   kinetic + potential + spring
- *       = start + thrust work − drag loss − impact loss + script work + numerical
+ *       = start + thrust work − drag loss − impact loss + script work
+ *         + emitted − removed + numerical
  * </pre>
  * <ul>
  * <li><b>kinetic</b> {@code ½m|V|²} (plus a rigid body's {@code ½ωᵀIω}, added by the caller),
@@ -22,6 +23,9 @@ import com.jme3.math.Vector3f;
  * thrust work is W of {@link Thrust} and of any other force (the wind, a student's own);</li>
  * <li><b>impact loss</b>, <b>script work</b>: told by the contacts' responses
  * ({@link #addImpactLoss}, {@link #addScriptWork});</li>
+ * <li><b>emitted</b>, <b>removed</b>: the energy particles bring in when a source makes
+ * them and take out when they are removed, in a scene whose particles come and go (the
+ * fountain: {@link #addEmitted}, {@link #addRemoved});</li>
  * <li><b>numerical</b>: the rest, from its definition: the total now minus the start minus
  * the physics' work. It is the energy the step itself created or destroyed. Gravity alone,
  * semi-implicit Euler: each step changes K + U by exactly {@code −½m·g²h²}, so after n steps
@@ -50,12 +54,17 @@ public final class EnergyLedger {
     public static final int IMPACT = 1 << 5;
     /** Columns: work done by scripts (kinematic bodies). */
     public static final int SCRIPT = 1 << 6;
+    /** Columns: energy brought in by particles a source made (the fountain's). */
+    public static final int EMITTED = 1 << 7;
+    /** Columns: energy taken out by particles removed (the fountain's). */
+    public static final int REMOVED = 1 << 8;
 
     /** The CSV names of the columns, in order: bit i of a column set is name i. */
     private static final String[] COLUMN_NAMES = {"kinetic_J", "potential_J", "spring_J",
-        "thrust_work_J", "drag_loss_J", "impact_loss_J", "script_work_J"};
-    /** The index of the numerical column in {@link #getColumn}: after the seven others. */
-    public static final int NUMERICAL_COLUMN = 7;
+        "thrust_work_J", "drag_loss_J", "impact_loss_J", "script_work_J", "emitted_J",
+        "removed_J"};
+    /** The index of the numerical column in {@link #getColumn}: after the nine others. */
+    public static final int NUMERICAL_COLUMN = 9;
     /** The CSV name of the numerical column, always last. */
     public static final String NUMERICAL_NAME = "numerical_J";
 
@@ -67,6 +76,8 @@ public final class EnergyLedger {
     private double dragLossJoules;
     private double impactLossJoules;
     private double scriptWorkJoules;
+    private double emittedJoules;
+    private double removedJoules;
     private double numericalJoules;
     /** The state's sums while {@link #beginState()} ... {@link #endState()} runs. */
     private double sumKinetic;
@@ -92,6 +103,8 @@ public final class EnergyLedger {
         dragLossJoules = 0.0;
         impactLossJoules = 0.0;
         scriptWorkJoules = 0.0;
+        emittedJoules = 0.0;
+        removedJoules = 0.0;
         numericalJoules = 0.0;
     }
 
@@ -136,6 +149,16 @@ public final class EnergyLedger {
     }
 
     /**
+     * Add gravitational potential energy to the state being measured, summed by the caller
+     * (the fountain's packed particles: {@code −m·g·P} of each).
+     *
+     * @param joules the energy (in J)
+     */
+    public void addPotential(double joules) {
+        sumPotential += joules;
+    }
+
+    /**
      * Finish measuring a state: it becomes the ledger's kinetic, potential and spring columns,
      * and the numerical column follows from its definition.
      */
@@ -144,7 +167,7 @@ public final class EnergyLedger {
         potentialJoules = sumPotential;
         springJoules = sumSpring;
         numericalJoules = total() - startJoules - thrustWorkJoules + dragLossJoules
-                + impactLossJoules - scriptWorkJoules;
+                + impactLossJoules - scriptWorkJoules - emittedJoules + removedJoules;
     }
 
     /**
@@ -208,6 +231,35 @@ public final class EnergyLedger {
     }
 
     /**
+     * Book energy drag took, computed by the caller as the step applied the drag (the
+     * fountain's packed particles: {@code b·h·V·V'} each).
+     *
+     * @param joules the energy taken (in J, &ge;0 for drag that opposes V)
+     */
+    public void addDragLoss(double joules) {
+        dragLossJoules += joules;
+    }
+
+    /**
+     * Book the energy a new particle brings in: its {@code ½m|V|² − m·g·P} as a source made
+     * it (a nozzle's drop, a burst's star).
+     *
+     * @param joules the energy (in J)
+     */
+    public void addEmitted(double joules) {
+        emittedJoules += joules;
+    }
+
+    /**
+     * Book the energy a removed particle takes out: its {@code ½m|V|² − m·g·P} as it goes.
+     *
+     * @param joules the energy (in J)
+     */
+    public void addRemoved(double joules) {
+        removedJoules += joules;
+    }
+
+    /**
      * Move the start by energy put in between steps (a launch, a drag, a changed parameter).
      *
      * @param joules the energy put in (in J; negative: taken out)
@@ -246,7 +298,8 @@ public final class EnergyLedger {
     /**
      * Write the CSV header of a set of columns: {@code t}, the columns in the order
      * {@code kinetic_J, potential_J, spring_J, thrust_work_J, drag_loss_J, impact_loss_J,
-     * script_work_J} (those not in the set left out), then {@code numerical_J}.
+     * script_work_J, emitted_J, removed_J} (those not in the set left out), then
+     * {@code numerical_J}.
      *
      * @param columns the set, OR-ed ({@link #KINETIC} ...)
      * @param prefix what comes before the energy columns, e.g. {@code "t"} (not null)
@@ -275,8 +328,8 @@ public final class EnergyLedger {
     /**
      * Return the value of a column.
      *
-     * @param index which: 0 to 6 the columns in {@link #csvHeader}'s order as bits
-     *     ({@code 1 << index}), 7 the numerical column
+     * @param index which: 0 to 8 the columns in {@link #csvHeader}'s order as bits
+     *     ({@code 1 << index}), 9 the numerical column
      * @return the value (in J)
      */
     public double getColumn(int index) {
@@ -295,11 +348,15 @@ public final class EnergyLedger {
                 return impactLossJoules;
             case 6:
                 return scriptWorkJoules;
+            case 7:
+                return emittedJoules;
+            case 8:
+                return removedJoules;
             case NUMERICAL_COLUMN:
                 return numericalJoules;
             default:
-                throw new IllegalArgumentException("column index must be from 0 to 7, but was "
-                        + index);
+                throw new IllegalArgumentException("column index must be from 0 to "
+                        + NUMERICAL_COLUMN + ", but was " + index);
         }
     }
 
@@ -370,6 +427,16 @@ public final class EnergyLedger {
     /** @return the work scripts did since the start (J) */
     public double getScriptWorkJoules() {
         return scriptWorkJoules;
+    }
+
+    /** @return the energy new particles brought in since the start (J) */
+    public double getEmittedJoules() {
+        return emittedJoules;
+    }
+
+    /** @return the energy removed particles took out since the start (J) */
+    public double getRemovedJoules() {
+        return removedJoules;
     }
 
     /** @return the energy the steps themselves created (positive) or destroyed (J) */

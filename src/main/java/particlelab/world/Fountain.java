@@ -1,5 +1,6 @@
 package particlelab.world;
 
+import com.jme3.math.Vector3f;
 import java.util.Arrays;
 import particlelab.physics.FloorContacts;
 import particlelab.physics.Gravity;
@@ -205,6 +206,8 @@ public final class Fountain implements StateRecord {
     private long recycledLeaving;
     private long recycledBurnt;
     private long bursts;
+    /** The energy ledger, kept only while attached (null: none, the step as ever). */
+    private FountainEnergy energy;
 
     /**
      * Create a fountain with every slot dormant.
@@ -251,6 +254,9 @@ public final class Fountain implements StateRecord {
         recycledLeaving = 0L;
         recycledBurnt = 0L;
         bursts = 0L;
+        if (energy != null) {
+            energy.restart();
+        }
     }
 
     /**
@@ -351,6 +357,10 @@ public final class Fountain implements StateRecord {
         recycledLeaving = slab.getLong();
         recycledBurnt = slab.getLong();
         bursts = slab.getLong();
+        if (energy != null) {
+            // a state put back is energy put in between steps: it moves the start
+            energy.restart();
+        }
     }
 
     /**
@@ -364,10 +374,17 @@ public final class Fountain implements StateRecord {
         timeSeconds += stepSeconds;
         blockOldestBirth = oldestBirth();
         blockLeaving = 0;
+        if (energy != null) {
+            energy.beforeStep(stepSeconds);
+        }
         // the step finds the ground's contacts (y <= r) and hands each block's on to
         // touchGround while the block is in the cache
         integrator.batch().stepPackedFindingFloor(positions, velocities, capacity, live, MASS_KG,
                 stepSeconds, ground.getRadius(), contacts, velocityYBefore, onGround);
+        if (energy != null) {
+            // every slot stepped still holds its particle: none has moved yet
+            energy.afterEulerStep(live);
+        }
         int waterHoles = blockLeaving;
         int leaving = burnFuses(stepSeconds, waterHoles);
         compact(waterHoles, leaving);
@@ -383,6 +400,9 @@ public final class Fountain implements StateRecord {
         }
         emitWater(stepSeconds);
         ++steps;
+        if (energy != null) {
+            energy.afterStep();
+        }
     }
 
     /**
@@ -549,6 +569,48 @@ public final class Fountain implements StateRecord {
     }
 
     /**
+     * Keep an energy ledger of the particles, or stop keeping one: the step books into it
+     * from then on (O(particles in flight) a step more), and without one does what it always
+     * did. Attaching one starts it from the state now.
+     *
+     * @param newEnergy the ledger, made for this fountain (null: none)
+     */
+    public void setEnergy(FountainEnergy newEnergy) {
+        energy = newEnergy;
+        if (newEnergy != null) {
+            newEnergy.restart();
+        }
+    }
+
+    /**
+     * Access the energy ledger.
+     *
+     * @return the ledger kept, or null if none
+     */
+    public FountainEnergy getEnergy() {
+        return energy;
+    }
+
+    /**
+     * Return the particles' linear drag b.
+     *
+     * @return b (in kg/s, &ge;0)
+     */
+    public float getDragCoefficient() {
+        return drag.getCoefficient();
+    }
+
+    /**
+     * Copy the particles' gravity g.
+     *
+     * @param storeResult storage for g (in m/s², not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyGravity(Vector3f storeResult) {
+        return gravity.copyAcceleration(storeResult);
+    }
+
+    /**
      * Test whether shells are launched.
      *
      * @return true if so
@@ -577,7 +639,13 @@ public final class Fountain implements StateRecord {
      * contacts, over entries already handed on ({@link #blockLeaving} of them so far).
      */
     private void touchGround(int[] found, float[] velocityYBefore, int from, int to) {
+        if (energy != null) {
+            energy.beforeContacts(found, from, to);
+        }
         ground.resolveFound(positions, velocities, capacity, found, velocityYBefore, from, to);
+        if (energy != null) {
+            energy.afterContacts(found, from, to);
+        }
         int y = capacity;
         float oldest = blockOldestBirth;
         int leaving = blockLeaving;
@@ -820,6 +888,9 @@ public final class Fountain implements StateRecord {
             fuses[i] = between(child.minFuse, child.maxFuse);
             fusesLeft[i] = fuses[i];
             colours[i] = colour;
+            if (energy != null) {
+                energy.emitted(i);
+            }
         }
     }
 
@@ -862,6 +933,9 @@ public final class Fountain implements StateRecord {
         float phi = between(0f, TWO_PI);
         place(i, x, RADIUS_METRES, 0f, speed * sinTheta * (float) Math.cos(phi),
                 speed * cosTheta, speed * sinTheta * (float) Math.sin(phi));
+        if (energy != null) {
+            energy.emitted(i);
+        }
     }
 
     /**
@@ -892,6 +966,9 @@ public final class Fountain implements StateRecord {
      * @return the slot
      */
     private int retire(int i) {
+        if (energy != null) {
+            energy.removed(i);
+        }
         --liveByKind[kinds[i]];
         kinds[i] = DORMANT;
         return i;
@@ -899,6 +976,9 @@ public final class Fountain implements StateRecord {
 
     /** {@link #retire} of a slot known to hold water, without reading its kind. */
     private int retireWater(int i) {
+        if (energy != null) {
+            energy.removed(i);
+        }
         --liveByKind[WATER];
         kinds[i] = DORMANT;
         return i;
