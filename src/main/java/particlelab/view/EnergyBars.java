@@ -219,6 +219,11 @@ public final class EnergyBars {
      * @param color the bar's colour (not null, kept: pass a constant)
      */
     public void setRow(int row, CharSequence name, double value, ColorRGBA color) {
+        if (row < 0 || row >= rows) {
+            throw new IllegalArgumentException("row must be from 0 to " + (rows - 1)
+                    + " (the row count is " + rows + ", at most " + maxRows + "), but was "
+                    + row);
+        }
         names[row].setText(name);
         joules[row] = value;
         rowColors[row] = color;

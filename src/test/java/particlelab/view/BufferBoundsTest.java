@@ -361,4 +361,26 @@ class BufferBoundsTest {
             }
         }
     }
+
+    /**
+     * The energy strip's rows: every row up to its most is written; a row past the count is
+     * refused by name, not written into an array past its end (an index error on the render
+     * thread before).
+     */
+    @Test
+    void theEnergyBarsTakeEveryRowUpToTheirMostAndRefuseOnePast() {
+        EnergyBars bars = new EnergyBars(ASSETS, FONT, 3);
+        bars.setRowCount(3);
+        for (int row = 0; row < 3; ++row) {
+            bars.setRow(row, "row " + row, 10.0 * row - 5.0, ColorRGBA.White);
+        }
+        IllegalArgumentException past = assertThrows(IllegalArgumentException.class,
+                () -> bars.setRow(3, "past", 1.0, ColorRGBA.White));
+        assertEquals("row must be from 0 to 2 (the row count is 3, at most 3), but was 3",
+                past.getMessage());
+        bars.setRowCount(1);
+        assertThrows(IllegalArgumentException.class,
+                () -> bars.setRow(1, "hidden", 1.0, ColorRGBA.White));
+        assertThrows(IllegalArgumentException.class, () -> bars.setRowCount(4));
+    }
 }
