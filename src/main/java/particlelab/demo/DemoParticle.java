@@ -151,7 +151,7 @@ public final class DemoParticle {
      *
      * @param forces the integrator holding the forces the motion models (not null)
      */
-    void setPathIntegrator(ParticleIntegrator forces) {
+    public void setPathIntegrator(ParticleIntegrator forces) {
         if (forces == null) {
             throw new IllegalArgumentException("path integrator must not be null");
         }
