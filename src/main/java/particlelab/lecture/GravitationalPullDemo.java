@@ -128,7 +128,7 @@ public final class GravitationalPullDemo extends DemoState {
         ball.stopAtGround();
         // The bug hunt's twin: no forces in its integrator, so the world's step is just
         // P += h·V with the V it had (the fault's first half); afterStep adds h·g (its second).
-        twin = launch.add(addParticle(TWIN_LABEL, new ColorRGBA(1f, 0.3f, 0.3f, 1f),
+        twin = launch.add(addParticle(faults.label(TWIN_LABEL), new ColorRGBA(1f, 0.3f, 0.3f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator()));
         twin.stopAtGround();
         // its exact ghost follows the ball's forces, not its forceless integrator
@@ -165,6 +165,15 @@ public final class GravitationalPullDemo extends DemoState {
     public String getActiveFault() {
         int fault = faults.active();
         return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+    }
+
+    /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
     }
 
     /**
@@ -280,15 +289,18 @@ public final class GravitationalPullDemo extends DemoState {
         consequenceStale = true;
         if (twin != null) {
             applyFault();
+            relabel(twin, faults.label(TWIN_LABEL));
         }
     }
 
-    /** Let the twin fly with the fault on; hold it at its launch, out of the HUD, if off. */
+    /**
+     * Let the twin fly with the fault on; hold it at its launch, out of the HUD, if off. At
+     * every launch: allocates nothing.
+     */
     private void applyFault() {
         boolean on = faults.active() != 0;
         twin.setHeld(!on);
         twin.setParked(!on);
-        relabel(twin, faults.label(TWIN_LABEL));
         consequenceStale = true;
     }
 

@@ -111,6 +111,10 @@ class ParameterRoundTripTest {
                 : one(demo, LectureFaults.UnnormalisedThrust.class,
                         LectureFaults.UnnormalisedThrust::getMagnitude) > 0f ? 2f : 0f);
         exact("thrust/seed", demo -> ((ThrustDemo) demo).getFaultSeed());
+        // pull's fault is whether the twin flies (held at its launch while off)
+        exact("pull/fault", demo -> ((GravitationalPullDemo) demo).getFaultTwin().isHeld()
+                ? 0f : 1f);
+        exact("pull/seed", demo -> ((GravitationalPullDemo) demo).getFaultSeed());
         exact("spring/k", demo -> one(demo, Spring.class, Spring::getSpringConstant));
         // The damped spring's c; the undamped one keeps 0 (read by its own force).
         exact("spring/c", demo -> {
