@@ -29,6 +29,8 @@ class LectureFaultsTest {
     private static final long DRAG_BEFORE = 0xa45dc62ac989ae46L;
     private static final long THRUST_BEFORE = 0x8758c7d0bdeee5d6L;
     private static final long PULL_BEFORE = 0x4e81c040b7d3cae6L;
+    /** The same for HelloAiming, recorded at fdfab7b, before its y >= 0 loop's switch. */
+    private static final long AIMING_BEFORE = 0xa2776bd0e1f710b2L;
 
     @Test
     void everySwitchOffStepsTheSameBitsAsBefore() {
@@ -42,6 +44,12 @@ class LectureFaultsTest {
         switchFault(pull, GravitationalPullDemo.P_BEFORE_V);
         switchFault(pull, FaultHunt.NONE);
         assertEquals(PULL_BEFORE, runBits(pull, pull.getFaultTwin()));
+        assertEquals(AIMING_BEFORE, runBits(new HelloAimingDemo()));
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        switchFault(aiming, HelloAimingDemo.Y_LOOP);
+        switchFault(aiming, FaultHunt.NONE);
+        assertEquals(AIMING_BEFORE, runBits(aiming));
+        assertFalse(aiming.isSlideInShot(), "fault=none flies the recipe alone again");
         // the fault moves the twin alone: the ball's bits are the same with it on
         pull = new GravitationalPullDemo();
         switchFault(pull, GravitationalPullDemo.P_BEFORE_V);
@@ -251,6 +259,60 @@ class LectureFaultsTest {
     }
 
     @Test
+    void theYLoopStopsAtTheStepTheListingGives() {
+        // vx = 20: S/(vx·h) = 300 is whole. The lecture's vy = g·S/(2·vx) puts the samples
+        // y_n = n·h·vy − g·h²·n(n+1)/2 on the ground at n = S/(vx·h) − 1 = 299, so the
+        // sample ends ON the crossing, and float rounding decides whether y >= 0 takes one
+        // more step (to x = 300·h·vx = S) or stops there: float32 puts sample 299 a hair
+        // below 0, so the loop stops at step 299, x = 299·h·20 = 99.67 m, with no overrun.
+        assertYLoop(20f, 299, 299 * H * 20.0);
+        // vx = 21: S/(vx·h) = 285.71, the parabola meets the ground between samples 284 and
+        // 285: the loop stops at the first sample below, step 285, x = 285·h·21 = 99.75 m.
+        assertYLoop(21f, 285, 285 * H * 21.0);
+        // and the HUD says so in numbers, the crossing interpolated by the recipe's flight
+        HelloAimingDemo demo = new HelloAimingDemo();
+        switchFault(demo, HelloAimingDemo.Y_LOOP);
+        demo.setHorizontalSpeed(21f);
+        String line = hudLine(demo);
+        assertTrue(line.startsWith("FAULT on: the slide's if (y >= 0) loop (fault=y-loop):"
+                + " stops after step 285 at x = 99.75 m, "), line);
+    }
+
+    /** Fly a shot at vx with the fault on; the slide's bullet stops where the listing does. */
+    private static void assertYLoop(float vx, int stopStep, double stopX) {
+        HelloAimingDemo demo = new HelloAimingDemo();
+        switchFault(demo, HelloAimingDemo.Y_LOOP);
+        demo.setHorizontalSpeed(vx);
+        assertEquals(HelloAimingDemo.Y_LOOP, demo.getActiveFault());
+        assertTrue(demo.isSlideInShot(), "the fault flies the slide's bullet");
+        particlelab.aiming.SlideCodeBullet bullet = demo.getSlideBullet();
+        float vy = demo.getParticles().get(0).copyLaunchVelocity(new Vector3f()).y;
+        // The listing re-simulated in float32 in Java's order: the test first, then
+        // V = V + g·tpf, P = P + V·tpf.
+        float x = 0f;
+        float y = 0f;
+        float vyNow = vy;
+        int steps = 0;
+        while (y >= 0f) {
+            vyNow = vyNow + -9.8f * H;
+            x = x + vx * H;
+            y = y + vyNow * H;
+            ++steps;
+        }
+        assertEquals(stopStep, steps, "the listing's own stop at vx = " + vx);
+        for (int frame = 0; frame < 2 * stopStep; ++frame) {
+            demo.advancePhysics(H);
+        }
+        assertTrue(bullet.isStopped());
+        assertEquals(stopStep, bullet.getSteps(), "the slide bullet's steps at vx = " + vx);
+        assertEquals(x, bullet.position.x, 0f);
+        assertEquals(stopStep, demo.getFaultStopStep());
+        // float32 sums of 300 steps of vx·h: each rounds by 2^-24 of x < 100 m, 2e-3 m in all
+        // at most; the closed form's x is exact
+        assertEquals(stopX, bullet.position.x, 2e-3, "stop x at vx = " + vx);
+    }
+
+    @Test
     void spotTheFaultPicksBySeedHidesThenReveals() {
         // SplitMix64's first double seeded with the seed's float bits (as new SplittableRandom(
         // Float.floatToIntBits(s)).nextDouble(), computed with the JDK's): 0.990 for seed 1
@@ -336,6 +398,8 @@ class LectureFaultsTest {
         StringBuilder text = new StringBuilder();
         if (demo instanceof ThrustDemo) {
             ((ThrustDemo) demo).writeHudLines(text);
+        } else if (demo instanceof HelloAimingDemo) {
+            ((HelloAimingDemo) demo).writeHudLines(text);
         } else if (demo instanceof GravitationalPullDemo) {
             ((GravitationalPullDemo) demo).writeHudLines(text);
         } else {
@@ -367,6 +431,25 @@ class LectureFaultsTest {
         switchFault(pull, FaultHunt.RANDOM);
         pull.revealFault();
         assertEquals(0L, leastBytes(threads, thread, pull, pull::writeHudLines));
+        // aiming's y >= 0 loop: its HUD line, with the flight ahead flown again for each new
+        // vx (the listing's own bullet allocates by design, so only the HUD is measured)
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        switchFault(aiming, HelloAimingDemo.Y_LOOP);
+        StringBuilder hud = new StringBuilder(4096);
+        long least = Long.MAX_VALUE;
+        for (int window = 0; window < 35; ++window) {
+            aiming.setHorizontalSpeed(window % 2 == 0 ? 21f : 20f);
+            long before = threads.getThreadAllocatedBytes(thread);
+            for (int frame = 0; frame < 100; ++frame) {
+                hud.setLength(0);
+                aiming.writeHudLines(hud);
+            }
+            long bytes = threads.getThreadAllocatedBytes(thread) - before;
+            if (window >= 30) {
+                least = Math.min(least, bytes);
+            }
+        }
+        assertEquals(0L, least);
     }
 
     /** The least bytes of five launch-and-flight windows after 30 to warm up. */
