@@ -97,6 +97,7 @@ public final class GravitationalPullDemo extends DemoState {
     /** Scratch for the flights ahead: a particle and a flight with the ball's forces. */
     private final Particle flown = new Particle();
     private final Flight correctFlight = new Flight(new ParticleIntegrator(gravity));
+    private final Flight twinFlight = new Flight(new ParticleIntegrator());
 
     /** Create the demo. */
     public GravitationalPullDemo() {
@@ -346,14 +347,13 @@ public final class GravitationalPullDemo extends DemoState {
         twin.copyLaunchPosition(flown.position);
         twin.copyLaunchVelocity(flown.velocity);
         for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
-            float x = flown.position.x;
-            float y = flown.position.y;
-            pBeforeV.step(flown, h);
-            if (y >= 0f && flown.position.y < 0f) {
-                // the straight segment of the step, as the world's ground rule interpolates it
-                double fraction = y / ((double) y - flown.position.y);
-                return x + fraction * ((double) flown.position.x - x);
+            // as in the scene: a forceless step moves P with the old V, swept against the
+            // ground; then the fault's V += h·g
+            double landing = twinFlight.step(flown, h);
+            if (landing != Flight.NO_LANDING) {
+                return twinFlight.crossingX(landing);
             }
+            pBeforeV.updateVelocity(flown, h);
         }
         return Double.NaN;
     }

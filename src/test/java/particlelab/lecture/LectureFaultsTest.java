@@ -259,7 +259,7 @@ class LectureFaultsTest {
     }
 
     @Test
-    void theYLoopStopsAtTheStepTheListingGives() {
+    void theYLoopStopsAtTheStepTheListingGives() throws java.io.IOException {
         // vx = 20: S/(vx·h) = 300 is whole. The lecture's vy = g·S/(2·vx) puts the samples
         // y_n = n·h·vy − g·h²·n(n+1)/2 on the ground at n = S/(vx·h) − 1 = 299, so the
         // sample ends ON the crossing, and float rounding decides whether y >= 0 takes one
@@ -276,6 +276,7 @@ class LectureFaultsTest {
         String line = hudLine(demo);
         assertTrue(line.startsWith("FAULT on: the slide's if (y >= 0) loop (fault=y-loop):"
                 + " stops after step 285 at x = 99.75 m, "), line);
+        assertTrue(page("docs/demos/aiming.md").contains(line), line);
     }
 
     /** Fly a shot at vx with the fault on; the slide's bullet stops where the listing does. */
