@@ -132,8 +132,10 @@ public final class GravitationalPullDemo extends DemoState {
         twin = launch.add(addParticle(faults.label(TWIN_LABEL), new ColorRGBA(1f, 0.3f, 0.3f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator()));
         twin.stopAtGround();
-        // its exact ghost follows the ball's forces, not its forceless integrator
+        // its exact path is the ball's (its forces, not its forceless integrator's), whose
+        // ghost the ball draws already
         twin.setPathIntegrator(ball.getIntegrator());
+        twin.hideGhost();
         applyFault();
         lane.follow(launch, ball);
         lens.follow(ball);
