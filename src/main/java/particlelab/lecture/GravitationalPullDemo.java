@@ -85,8 +85,13 @@ public final class GravitationalPullDemo extends DemoState {
     /** The fault's stepper: the world moves the twin's P (forceless), this then its V. */
     private final LectureFaults.PositionBeforeVelocity pBeforeV =
             new LectureFaults.PositionBeforeVelocity(gravity);
-    /** The ball's twin, moved by the fault's order; held and hidden while the fault is off. */
+    /**
+     * The ball's twin: with the fault on, moved by the fault's order; off, hidden and out of
+     * the HUD, it flies the lecture's order, the ball's very floats, and lands with it.
+     */
     private DemoParticle twin;
+    /** The twin's V update comes after its P update (the fault) or before it (off). */
+    private boolean positionFirst;
     /** The consequence: the twin's landing x and the ball's, flown ahead (m). */
     private double faultyLandingX = Double.NaN;
     private double correctLandingX = Double.NaN;
@@ -128,7 +133,8 @@ public final class GravitationalPullDemo extends DemoState {
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
         // The bug hunt's twin: no forces in its integrator, so the world's step is just
-        // P += h·V with the V it had (the fault's first half); afterStep adds h·g (its second).
+        // P += h·V with the V it has; V += h·g comes after it (afterStep: the fault) or, with
+        // the fault off, before it (beforeStep: the lecture's order, the ball's floats).
         twin = launch.add(addParticle(faults.label(TWIN_LABEL), new ColorRGBA(1f, 0.3f, 0.3f, 1f),
                 Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator()));
         twin.stopAtGround();
@@ -180,8 +186,17 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     /**
-     * Access the bug hunt's twin: the ball's launch stepped P before V while the fault is on,
-     * held at the launch and hidden while it is off.
+     * Tell the order the twin steps in now.
+     *
+     * @return true for the fault's (P before V), false for the lecture's (V first)
+     */
+    public boolean isTwinPositionFirst() {
+        return positionFirst;
+    }
+
+    /**
+     * Access the bug hunt's twin: the ball's launch stepped P before V while the fault is on;
+     * while it is off, hidden, it steps the lecture's order with the ball.
      *
      * @return the twin (not null: asking makes the scene)
      */
@@ -218,9 +233,17 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     @Override
+    protected void beforeStep(float stepSeconds) {
+        // Fault off: V += h·g before the world's P += h·V, the lecture's order.
+        if (!positionFirst && !twin.isHeld()) {
+            pBeforeV.updateVelocity(twin.getParticle(), stepSeconds);
+        }
+    }
+
+    @Override
     protected void afterStep(float stepSeconds) {
         // The fault's second half, V += h·g after P moved with the old V (it did not land).
-        if (twin.wasSteppedThisStep() && !twin.hasLanded()) {
+        if (positionFirst && twin.wasSteppedThisStep() && !twin.hasLanded()) {
             pBeforeV.updateVelocity(twin.getParticle(), stepSeconds);
         }
         // No gravity, no landing: start over past the view's edge, as uniform motion does.
@@ -297,12 +320,12 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     /**
-     * Let the twin fly with the fault on; hold it at its launch, out of the HUD, if off. At
-     * every launch: allocates nothing.
+     * Let the twin fly the fault's order in sight with the fault on, the lecture's hidden and
+     * out of the HUD if off. At every launch: allocates nothing.
      */
     private void applyFault() {
         boolean on = faults.active() != 0;
-        twin.setHeld(!on);
+        positionFirst = on;
         twin.setParked(!on);
         consequenceStale = true;
     }

@@ -111,9 +111,9 @@ class ParameterRoundTripTest {
                 : one(demo, LectureFaults.UnnormalisedThrust.class,
                         LectureFaults.UnnormalisedThrust::getMagnitude) > 0f ? 2f : 0f);
         exact("thrust/seed", demo -> ((ThrustDemo) demo).getFaultSeed());
-        // pull's fault is whether the twin flies (held at its launch while off)
-        exact("pull/fault", demo -> ((GravitationalPullDemo) demo).getFaultTwin().isHeld()
-                ? 0f : 1f);
+        // pull's fault is the order the twin steps in
+        exact("pull/fault", demo -> ((GravitationalPullDemo) demo).isTwinPositionFirst()
+                ? 1f : 0f);
         exact("pull/seed", demo -> ((GravitationalPullDemo) demo).getFaultSeed());
         // aiming's fault is the listing's loop flying in the shot (code stays as set)
         exact("aiming/fault", demo -> ((HelloAimingDemo) demo).isSlideInShot()
