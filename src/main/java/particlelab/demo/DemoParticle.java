@@ -42,6 +42,8 @@ public final class DemoParticle {
     /** Set by the base class before each step: the world steps this particle in it. */
     boolean steppedThisStep;
     private boolean parked;
+    /** Its exact ghost is never drawn (a twin whose ghost would repeat another's). */
+    private boolean ghostHidden;
     /** The particle's place in its demo's list (0 for the first added). */
     final int index;
 
@@ -151,7 +153,7 @@ public final class DemoParticle {
      *
      * @param forces the integrator holding the forces the motion models (not null)
      */
-    void setPathIntegrator(ParticleIntegrator forces) {
+    public void setPathIntegrator(ParticleIntegrator forces) {
         if (forces == null) {
             throw new IllegalArgumentException("path integrator must not be null");
         }
@@ -214,6 +216,20 @@ public final class DemoParticle {
      */
     public void setHeld(boolean newHeld) {
         body.setHeld(newHeld);
+    }
+
+    /**
+     * Never draw this particle's exact ghost: for a twin launched like another sphere under
+     * the same forces, whose ghost would be drawn over that sphere's (or wait at the launch
+     * while the twin is held). Call before the views are built.
+     */
+    public void hideGhost() {
+        ghostHidden = true;
+    }
+
+    /** @return true if its exact ghost is never drawn ({@link #hideGhost}) */
+    public boolean isGhostHidden() {
+        return ghostHidden;
     }
 
     /**

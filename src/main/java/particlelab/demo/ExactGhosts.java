@@ -160,7 +160,9 @@ final class ExactGhosts implements StateRecord {
         paths = new ExactPath[count];
         views = new GhostView[count];
         ghostShown = new boolean[count];
-        java.util.Arrays.fill(ghostShown, true);
+        for (int i = 0; i < count; ++i) {
+            ghostShown[i] = !particles.get(i).isGhostHidden();
+        }
         eulerApexHeight = new float[count];
         eulerApexSeconds = new double[count];
         eulerPastApex = new boolean[count];
@@ -182,6 +184,7 @@ final class ExactGhosts implements StateRecord {
                     scene.viewOf(particle).getRadius(),
                     scene.viewOf(particle).getTrail().getCapacity());
             sceneNode.attachChild(views[i].getNode());
+            views[i].setVisible(ghostShown[i]);
             colors[i] = particle.getColor();
         }
         graph = new LiveGraph(assets, font, colors);

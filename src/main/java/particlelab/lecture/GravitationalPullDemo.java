@@ -1,8 +1,11 @@
 package particlelab.lecture;
 
+import com.jme3.input.KeyInput;
 import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import com.jme3.scene.Spatial;
 import particlelab.reference.SlideCode;
+import particlelab.aiming.Flight;
 import particlelab.demo.ComparisonLane;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParticle;
@@ -12,6 +15,7 @@ import particlelab.demo.LensPart;
 import particlelab.demo.RateLanes;
 import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
+import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.view.TextFormat;
 
@@ -31,6 +35,12 @@ import particlelab.view.TextFormat;
  * as launched and the path is the straight line {@code P = P0 + V0·t}, stepped exactly as
  * uniform motion is. With nothing to bring it down the ball starts over when it leaves the
  * view.
+ *
+ * <p>Bug hunt ({@code --set fault=p-before-v}): a twin of the ball, launched with it, runs
+ * another book's order, P updated before V ({@link LectureFaults.PositionBeforeVelocity},
+ * forward Euler): it lands about {@code Vx·h} <em>beyond</em> the continuous parabola's
+ * landing where the ball lands {@code Vx·h} short of it, a whole {@code 2·Vx·h} past the
+ * ball; {@code fault=random} hides it ({@code --set seed=N}) until B reveals it.
  */
 public final class GravitationalPullDemo extends DemoState {
 
@@ -45,6 +55,15 @@ public final class GravitationalPullDemo extends DemoState {
     private static final float TOP_EDGE = 7f;
     /** The spheres' drawn radius (m). */
     private static final float SPHERE_RADIUS = 0.35f;
+    /** The fault of this demo, by {@code --set fault=} name, and what it is. */
+    static final String P_BEFORE_V = "p-before-v";
+    private static final String[] FAULTS = {P_BEFORE_V};
+    private static final String[] FAULT_TITLES = {"P updated before V (forward Euler)"};
+    private static final String[] FAULT_LABELS = {"P before V"};
+    /** The twin's own label, before its fault's. */
+    private static final String TWIN_LABEL = "twin";
+    /** The longest flight flown ahead for the fault's consequence (steps): 5.5 min at 60 Hz. */
+    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -68,6 +87,29 @@ public final class GravitationalPullDemo extends DemoState {
     private final WhatIfPart whatIf = addPart(new WhatIfPart(GravitationalPullDemo::new,
             new String[] {null, "h", "h"}, new float[] {0f, 1f / 30f, 1f / 10f}, 0f));
     private DemoParticle ball;
+    /** The bug hunt's switch: the twin runs P before V. */
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
+    /** The fault's stepper: the world moves the twin's P (forceless), this then its V. */
+    private final LectureFaults.PositionBeforeVelocity pBeforeV =
+            new LectureFaults.PositionBeforeVelocity(gravity);
+    /**
+     * The ball's twin: with the fault on, moved by the fault's order; off, hidden and out of
+     * the HUD, it flies the lecture's order, the ball's very floats, and lands with it.
+     */
+    private DemoParticle twin;
+    /** The twin's V update comes after its P update (the fault) or before it (off). */
+    private boolean positionFirst;
+    /** The consequence: the twin's landing x and the ball's, flown ahead (m). */
+    private double faultyLandingX = Double.NaN;
+    private double correctLandingX = Double.NaN;
+    private final StringBuilder consequence = new StringBuilder();
+    /** The launch, g, h or the fault changed since the consequence was flown. */
+    private boolean consequenceStale = true;
+    private float consequenceStepSeconds;
+    /** Scratch for the flights ahead: a particle and a flight with the ball's forces. */
+    private final Particle flown = new Particle();
+    private final Flight correctFlight = new Flight(new ParticleIntegrator(gravity));
+    private final Flight twinFlight = new Flight(new ParticleIntegrator());
 
     /** Create the demo. */
     public GravitationalPullDemo() {
@@ -115,6 +157,17 @@ public final class GravitationalPullDemo extends DemoState {
         ball = launch.add(addParticle("ball", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator(launch.add(gravity))));
         ball.stopAtGround();
+        // The bug hunt's twin: no forces in its integrator, so the world's step is just
+        // P += h·V with the V it has; V += h·g comes after it (afterStep: the fault) or, with
+        // the fault off, before it (beforeStep: the lecture's order, the ball's floats).
+        twin = launch.add(addParticle(faults.label(TWIN_LABEL), new ColorRGBA(1f, 0.3f, 0.3f, 1f),
+                Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG, new ParticleIntegrator()));
+        twin.stopAtGround();
+        // its exact path is the ball's (its forces, not its forceless integrator's), whose
+        // ghost the ball draws already
+        twin.setPathIntegrator(ball.getIntegrator());
+        twin.hideGhost();
+        applyFault();
         lane.follow(launch, ball);
         rates.follow(ball);
         lens.follow(ball);
@@ -129,10 +182,96 @@ public final class GravitationalPullDemo extends DemoState {
         declareParameter(launch.angleParameter());
         declareParameter(launch.massParameter(MASS_KG));
         declareParameter(launch.gravityParameter(0f));
+        declareParameter(faults.switchParameter(this::faultChanged));
+        declareParameter(faults.seedParameter(this::faultChanged));
+    }
+
+    @Override
+    protected void declareKeys() {
+        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+                this::revealFault);
+    }
+
+    /**
+     * Return the fault that runs now.
+     *
+     * @return its {@code --set fault=} name, or "none"
+     */
+    public String getActiveFault() {
+        int fault = faults.active();
+        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+    }
+
+    /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
+     * Tell the order the twin steps in now.
+     *
+     * @return true for the fault's (P before V), false for the lecture's (V first)
+     */
+    public boolean isTwinPositionFirst() {
+        return positionFirst;
+    }
+
+    /**
+     * Access the bug hunt's twin: the ball's launch stepped P before V while the fault is on;
+     * while it is off, hidden, it steps the lecture's order with the ball.
+     *
+     * @return the twin (not null: asking makes the scene)
+     */
+    public DemoParticle getFaultTwin() {
+        getParticles();
+        return twin;
+    }
+
+    /**
+     * Return the fault's consequence: where the twin lands, flown ahead from the launch with
+     * the fault's order.
+     *
+     * @return the landing x (in metres; NaN without the fault or a landing)
+     */
+    public double getFaultyLandingX() {
+        refreshConsequence();
+        return faultyLandingX;
+    }
+
+    /**
+     * Return where the ball lands from the same launch, flown ahead with the lecture's recipe.
+     *
+     * @return the landing x (in metres; NaN without the fault or a landing)
+     */
+    public double getCorrectLandingX() {
+        refreshConsequence();
+        return correctLandingX;
+    }
+
+    @Override
+    protected void writeHudLines(StringBuilder text) {
+        refreshConsequence();
+        faults.appendHudLine(text, "B", consequence);
+    }
+
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        // Fault off: V += h·g before the world's P += h·V, the lecture's order.
+        if (!positionFirst && !twin.isHeld()) {
+            pBeforeV.updateVelocity(twin.getParticle(), stepSeconds);
+        }
     }
 
     @Override
     protected void afterStep(float stepSeconds) {
+        // The fault's second half, V += h·g after P moved with the old V (it did not land).
+        if (positionFirst && twin.wasSteppedThisStep() && !twin.hasLanded()) {
+            pBeforeV.updateVelocity(twin.getParticle(), stepSeconds);
+        }
         // No gravity, no landing: start over past the view's edge, as uniform motion does.
         Vector3f position = ball.getParticle().position;
         if (gravity.copyAcceleration(gravityNow).y == 0f
@@ -181,9 +320,107 @@ public final class GravitationalPullDemo extends DemoState {
     /** A reset after a drag of the launch point: the landing line follows the new y0. */
     @Override
     protected void onRestart() {
+        applyFault();
         if (!ball.copyLaunchPosition(scratchPosition).equals(shownPosition)) {
             refreshEquations();
         }
+    }
+
+    /** Hide the twin while the fault is off. Allocates nothing. */
+    @Override
+    protected void afterFrame() {
+        particlelab.view.ParticleView view = getView(twin);
+        if (view != null) {
+            view.getNode().setCullHint(faults.active() == 0 ? Spatial.CullHint.Always
+                    : Spatial.CullHint.Inherit);
+        }
+    }
+
+    /** The fault or the seed changed: the twin's label, and whether it flies. */
+    private void faultChanged() {
+        consequenceStale = true;
+        if (twin != null) {
+            applyFault();
+            relabel(twin, faults.label(TWIN_LABEL));
+        }
+    }
+
+    /**
+     * Let the twin fly the fault's order in sight with the fault on, the lecture's hidden and
+     * out of the HUD if off. At every launch: allocates nothing.
+     */
+    private void applyFault() {
+        boolean on = faults.active() != 0;
+        positionFirst = on;
+        twin.setParked(!on);
+        consequenceStale = true;
+    }
+
+    /** Reveal the hidden fault (key B): the label and the HUD name it. */
+    void revealFault() {
+        if (faults.isHidden()) {
+            faults.reveal();
+            relabel(twin, faults.label(TWIN_LABEL));
+        }
+    }
+
+    /**
+     * Fly the launch ahead with the fault's order and the lecture's and write the
+     * consequence, if anything changed since. Allocates nothing.
+     */
+    private void refreshConsequence() {
+        float h = getClock().getStepSeconds();
+        if (!consequenceStale && h == consequenceStepSeconds) {
+            return;
+        }
+        consequenceStale = false;
+        consequenceStepSeconds = h;
+        consequence.setLength(0);
+        faultyLandingX = Double.NaN;
+        correctLandingX = Double.NaN;
+        if (faults.active() == 0 || twin == null) {
+            return;
+        }
+        faultyLandingX = faultyLandingX(h);
+        correctLandingX = correctLandingX(h);
+        double vxh = twin.copyLaunchVelocity(scratchPosition).x * (double) h;
+        consequence.append("lands at x = ");
+        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
+        TextFormat.appendFixed(consequence, faultyLandingX - correctLandingX, 2)
+                .append(" m beyond the lecture order's ");
+        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m (2·Vx·h = ");
+        TextFormat.appendFixed(consequence, 2.0 * vxh, 2).append(" m)");
+    }
+
+    /** The twin flown from its launch with the fault's order; NaN if it does not land. */
+    private double faultyLandingX(float h) {
+        flown.copyFrom(twin.getParticle());
+        twin.copyLaunchPosition(flown.position);
+        twin.copyLaunchVelocity(flown.velocity);
+        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+            // as in the scene: a forceless step moves P with the old V, swept against the
+            // ground; then the fault's V += h·g
+            double landing = twinFlight.step(flown, h);
+            if (landing != Flight.NO_LANDING) {
+                return twinFlight.crossingX(landing);
+            }
+            pBeforeV.updateVelocity(flown, h);
+        }
+        return Double.NaN;
+    }
+
+    /** The ball flown from its launch with the lecture's recipe; NaN if it does not land. */
+    private double correctLandingX(float h) {
+        flown.copyFrom(ball.getParticle());
+        ball.copyLaunchPosition(flown.position);
+        ball.copyLaunchVelocity(flown.velocity);
+        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+            double landing = correctFlight.step(flown, h);
+            if (landing != Flight.NO_LANDING) {
+                return correctFlight.crossingX(landing);
+            }
+        }
+        return Double.NaN;
     }
 
     /** The slide: g alone changes V, only its y; the ball's V now, or where it landed. */

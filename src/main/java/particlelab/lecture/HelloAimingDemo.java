@@ -9,6 +9,7 @@ import com.jme3.scene.Spatial;
 import particlelab.aiming.Landing;
 import particlelab.aiming.LevelAim;
 import particlelab.aiming.ShotSimulator;
+import particlelab.aiming.Flight;
 import particlelab.aiming.SlideCodeBullet;
 import particlelab.coursework.StudentRunner;
 import particlelab.demo.DemoParameter;
@@ -142,6 +143,13 @@ public final class HelloAimingDemo extends DemoState {
      */
     private static final double WHOLE_TOLERANCE = 1e-3;
     /** The slide bullet's square's side (m): larger than the spheres, so it shows around them. */
+    /** The fault of this demo, by {@code --set fault=} name, and what it is. */
+    static final String Y_LOOP = "y-loop";
+    private static final String[] FAULTS = {Y_LOOP};
+    private static final String[] FAULT_TITLES = {"the slide's if (y >= 0) loop"};
+    private static final String[] FAULT_LABELS = {"y >= 0 loop"};
+    /** The longest flight flown ahead for the fault's consequence (steps). */
+    private static final int MAX_FLIGHT_STEPS = 20_000;
     private static final float SLIDE_MARK_SIZE = 1.6f;
 
     private final Gravity gravity = new Gravity();
@@ -197,6 +205,25 @@ public final class HelloAimingDemo extends DemoState {
     /** The slide bullet's square in the scene (null without a window). */
     private Geometry slideMark;
     private KeyBinding codeKey;
+    /**
+     * The bug hunt's switch: {@code fault=y-loop} flies the slide's bullet, its
+     * {@code if (y >= 0)} loop, in every shot (an alias of {@code code=both} that the HUD
+     * calls a fault); {@code random} hides it until B.
+     */
+    private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
+    private final StringBuilder consequence = new StringBuilder();
+    /** The shot the consequence was flown for: vx, vy, h (NaN: to be flown). */
+    private float consequenceVx = Float.NaN;
+    private float consequenceVy = Float.NaN;
+    private float consequenceStep = Float.NaN;
+    /** Where the listing's loop stops the shot: after how many steps, at which x (m). */
+    private int faultStopStep;
+    private float faultStopX = Float.NaN;
+    /** Where the recipe's bullet crosses the ground, interpolated (m). */
+    private double crossingX = Double.NaN;
+    /** Scratch for the crossing flown ahead. */
+    private final Particle flown = new Particle();
+    private Flight crossingFlight;
     /** The student's bullet: flies in the shots fired {@link #WITH_STUDENT}. */
     private DemoParticle studentBullet;
     /** The student's aim (null until a shot first asks it). */
@@ -586,6 +613,8 @@ public final class HelloAimingDemo extends DemoState {
                 firing, DemoParameter.Applies.LIVE, this::applyFiring));
         declareParameter(DemoParameter.choice("code", "bullets' code (next shot)", CODE_NAMES,
                 code, DemoParameter.Applies.LIVE, this::applyCode));
+        declareParameter(faults.switchParameter(this::reaimUnflown));
+        declareParameter(faults.seedParameter(this::reaimUnflown));
     }
 
     @Override
@@ -603,6 +632,44 @@ public final class HelloAimingDemo extends DemoState {
         codeKey = bindKey(KeyInput.KEY_J, "J",
                 "next shot's code: shared recipe -> slide's listing -> both",
                 () -> getParameters().set("code", (code + 1) % CODE_NAMES.length));
+        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+                faults::reveal);
+    }
+
+    /**
+     * Return the fault that runs now.
+     *
+     * @return its {@code --set fault=} name, or "none"
+     */
+    public String getActiveFault() {
+        int fault = faults.active();
+        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+    }
+
+    /**
+     * Return the seed of "spot the fault" ({@code --set seed=N}), as its pick uses it.
+     *
+     * @return the seed
+     */
+    public float getFaultSeed() {
+        return faults.getSeed();
+    }
+
+    /**
+     * Return after how many steps the listing's {@code if (y >= 0)} loop stops the shot in
+     * the air, flown ahead in float as the listing computes it (its first sample below
+     * {@code y = 0}).
+     *
+     * @return the step count (0 without the fault)
+     */
+    public int getFaultStopStep() {
+        refreshConsequence();
+        return faultStopStep;
+    }
+
+    /** Reveal the hidden fault (key B). */
+    void revealFault() {
+        faults.reveal();
     }
 
     @Override
@@ -660,6 +727,8 @@ public final class HelloAimingDemo extends DemoState {
     protected void writeHudLines(StringBuilder text) {
         float step = getClock().getCurrentStepSeconds();
         updatePrediction(step);
+        refreshConsequence();
+        faults.appendHudLine(text, "B", consequence);
         // Few lines: two aims' numbers share the HUD with two ghost readouts.
         text.append("Next shot (").append(aimKey.getKeyLabel()).append("): ")
                 .append(firing == BOTH ? "both aims" : firing == WITH_STUDENT
@@ -687,7 +756,7 @@ public final class HelloAimingDemo extends DemoState {
         if (firing == WITH_STUDENT || studentInShot || getStudentProblem() != null) {
             writeStudentLine(text);
         }
-        if (code != RECIPE_CODE || isSlideInShot()) {
+        if (code != RECIPE_CODE || isSlideInShot() || faults.active() != 0) {
             writeSlideLines(text, step);
         }
         if (getLandedShotNumber() != shots) {
@@ -785,7 +854,12 @@ public final class HelloAimingDemo extends DemoState {
     private void writeSlideLines(StringBuilder text, float step) {
         String[] listing = SlideCodeBullet.LISTING;
         text.append("Slide code (").append(codeKey.getKeyLabel()).append(": next ")
-                .append(CODE_NAMES[code]).append("), magenta:  ").append(listing[0]);
+                .append(CODE_NAMES[code]).append("), magenta");
+        if (faults.active() != 0) {
+            text.append(" [FAULT: ").append(faults.isHidden() ? "?" : FAULT_LABELS[0])
+                    .append(']');
+        }
+        text.append(":  ").append(listing[0]);
         if (!isSlideInShot()) {
             text.append("   // not in this shot: fires with the next\n");
             return;
@@ -949,7 +1023,8 @@ public final class HelloAimingDemo extends DemoState {
      * (the {@code code} chosen for it).
      */
     private void launchSlide() {
-        shotCode = code;
+        // the fault flies the slide's bullet beside the recipe's, whatever code says
+        shotCode = code == RECIPE_CODE && faults.active() != 0 ? BOTH_CODES : code;
         Particle recipe = bullets[0].getParticle();
         slideBullet.launch(recipe.position, recipe.velocity);
     }
@@ -964,6 +1039,64 @@ public final class HelloAimingDemo extends DemoState {
         if (isSlideInShot()) {
             slideBullet.update(slideGravity, stepSeconds);
         }
+    }
+
+    /**
+     * Fly the shot in the air ahead with the listing's loop and with the recipe, and write
+     * the fault's consequence, if the shot changed since. Allocates nothing once the flight
+     * is made (at the first call).
+     */
+    private void refreshConsequence() {
+        if (faults.active() == 0 || bullets[0] == null) {
+            faultStopStep = 0;
+            faultStopX = Float.NaN;
+            consequence.setLength(0);
+            consequenceVx = Float.NaN;
+            return;
+        }
+        float launchVy = bullets[0].copyLaunchVelocity(flown.velocity).y;
+        if (shotVx == consequenceVx && launchVy == consequenceVy
+                && shotStep == consequenceStep) {
+            return;
+        }
+        consequenceVx = shotVx;
+        consequenceVy = launchVy;
+        consequenceStep = shotStep;
+        // The listing in float, in its order: V = V + g·tpf, then P = P + V·tpf, while y >= 0.
+        float gy = slideGravity.y;
+        float x = 0f;
+        float y = 0f;
+        float vxNow = shotVx;
+        float vy = launchVy;
+        faultStopStep = 0;
+        while (y >= 0f && faultStopStep < MAX_FLIGHT_STEPS) {
+            vy = vy + gy * shotStep;
+            x = x + vxNow * shotStep;
+            y = y + vy * shotStep;
+            ++faultStopStep;
+        }
+        faultStopX = x;
+        if (crossingFlight == null) {
+            crossingFlight = new Flight(integrator);
+        }
+        flown.copyFrom(bullets[0].getParticle());
+        bullets[0].copyLaunchPosition(flown.position);
+        bullets[0].copyLaunchVelocity(flown.velocity);
+        crossingX = Double.NaN;
+        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+            double landing = crossingFlight.step(flown, shotStep);
+            if (landing != Flight.NO_LANDING) {
+                crossingX = crossingFlight.crossingX(landing);
+                break;
+            }
+        }
+        consequence.setLength(0);
+        consequence.append("stops after step ").append(faultStopStep).append(" at x = ");
+        TextFormat.appendFixed(consequence, faultStopX, 2).append(" m, ");
+        TextFormat.appendFixed(consequence, faultStopX - crossingX, 2)
+                .append(" m past the crossing at ");
+        TextFormat.appendFixed(consequence, crossingX, 2).append(" m (vx·h = ");
+        TextFormat.appendFixed(consequence, (double) shotVx * shotStep, 2).append(" m)");
     }
 
     /** Whether two vectors hold the same floats, bit for bit. */

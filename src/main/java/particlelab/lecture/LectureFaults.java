@@ -2,6 +2,7 @@ package particlelab.lecture;
 
 import com.jme3.math.Vector3f;
 import particlelab.physics.Force;
+import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
 import particlelab.physics.Thrust;
 import particlelab.physics.Validate;
@@ -15,6 +16,9 @@ import particlelab.physics.Validate;
  *
  * <p>The slide's drag {@code −c·|V|²·V} is the third such force, {@link
  * particlelab.physics.SlideFormDrag}, which the drag demo already had for {@code law=slide}.
+ * The fourth fault is not a force but the order of the step's two updates: {@link
+ * PositionBeforeVelocity}, a stepper of its own, which moves a twin sphere beside the
+ * lecture's.
  */
 public final class LectureFaults {
 
@@ -114,6 +118,68 @@ public final class LectureFaults {
         @Override
         public String describe() {
             return "F = " + magnitude + "·V (fault: direction not normalised)";
+        }
+    }
+
+    /**
+     * "P updated before V", another book's order: {@code P ← P + h·V} with the <em>old</em>
+     * V, then {@code V ← V + h·a}. This is forward (explicit) Euler, in float in this order
+     * (the report's {@code reference/ForwardEuler} is the same scheme in double); the
+     * lecture's recipe ({@code physics/EulerRecipe}, semi-implicit Euler) updates V first and
+     * moves P with the new V, and stays as it is. Under gravity alone the faulty samples lie
+     * on the parabola launched with {@code Vy + g·h/2} (the lecture's on {@code Vy − g·h/2}),
+     * so a shot lands about {@code Vx·h} long where the lecture's lands {@code Vx·h} short.
+     *
+     * <p>In a demo the world moves the twin with a forceless integrator, whose step is
+     * exactly {@link #movePosition} ({@code V + h·0 = V}, then {@code P + h·V}), and the demo
+     * calls {@link #updateVelocity} after the world's step. Allocates nothing.
+     */
+    public static final class PositionBeforeVelocity {
+
+        private final Gravity gravity;
+        /** Scratch: a = g at the step's start (m/s²). */
+        private final Vector3f acceleration = new Vector3f();
+
+        /**
+         * Create the faulty stepper.
+         *
+         * @param gravity the field it falls in (not null, read at each step)
+         */
+        public PositionBeforeVelocity(Gravity gravity) {
+            this.gravity = Validate.notNull(gravity, "gravity");
+        }
+
+        /**
+         * Take the whole faulty step: {@link #movePosition}, then {@link #updateVelocity}.
+         *
+         * @param particle the particle (not null, modified)
+         * @param stepSeconds h (in seconds, &gt;0)
+         */
+        public void step(Particle particle, float stepSeconds) {
+            movePosition(particle, stepSeconds);
+            updateVelocity(particle, stepSeconds);
+        }
+
+        /**
+         * The fault's first half: {@code P ← P + h·V}, V still the step's old one.
+         *
+         * @param particle the particle (not null, its position modified)
+         * @param stepSeconds h (in seconds, &gt;0)
+         */
+        public void movePosition(Particle particle, float stepSeconds) {
+            particle.position.scaleAdd(stepSeconds, particle.velocity, particle.position);
+        }
+
+        /**
+         * The fault's second half: {@code V ← V + h·g}, after P has moved.
+         *
+         * @param particle the particle (not null, its velocity modified)
+         * @param stepSeconds h (in seconds, &gt;0)
+         */
+        public void updateVelocity(Particle particle, float stepSeconds) {
+            acceleration.zero();
+            gravity.addFieldAcceleration(particle, acceleration);
+            particle.velocity.scaleAdd(stepSeconds, acceleration, particle.velocity);
         }
     }
 }

@@ -81,15 +81,17 @@ class ParameterPanelHeadlessTest {
     void firstDemosDeclareTheirLaunchMassGravityAndCoefficients() throws Exception {
         // Each demo's own, then its parts': the energy ledger's switch (every demo's first
         // part, issue 32), and the free-flight demos' comparison lane, then their derivative
-        // lens (issue 32 §2), last. Drag and thrust: the bug hunt's switch and seed (issue 34).
+        // lens (issue 32 §2), last. Pull, drag, thrust and aiming: the bug hunt's switch and
+        // seed (issue 34).
         assertNames(UniformMotionDemo.class, "h", "speed", "angle", "energy", "lane", "lens");
-        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "energy",
-                "lane", "lens");
+        assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "fault",
+                "seed", "energy", "lane", "lens");
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
                 "fault", "seed", "energy", "lane", "lens");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "fault",
                 "seed", "energy", "lane", "lens");
-        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code", "energy");
+        assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code", "fault", "seed",
+                "energy");
         assertNames(BounceDemo.class, "h", "e", "threshold", "fix", "detection", "energy");
         assertNames(CollisionsDemo.class, "h", "e", "preset", "energy");
         assertNames(WindDemo.class, "h", "w", "energy");

@@ -29,12 +29,31 @@ class LectureFaultsTest {
     private static final long DRAG_BEFORE = 0xa45dc62ac989ae46L;
     private static final long THRUST_BEFORE = 0x8758c7d0bdeee5d6L;
     private static final long PULL_BEFORE = 0x4e81c040b7d3cae6L;
+    /** The same for HelloAiming, recorded at fdfab7b, before its y >= 0 loop's switch. */
+    private static final long AIMING_BEFORE = 0xa2776bd0e1f710b2L;
 
     @Test
     void everySwitchOffStepsTheSameBitsAsBefore() {
         assertEquals(DRAG_BEFORE, runBits(new DragDemo()));
         assertEquals(THRUST_BEFORE, runBits(new ThrustDemo()));
-        assertEquals(PULL_BEFORE, runBits(new GravitationalPullDemo()));
+        // pull's bug-hunt twin flies hidden with the ball while off: the demo's own particles,
+        // the ones there were before it, step the bits they stepped then
+        GravitationalPullDemo pull = new GravitationalPullDemo();
+        assertEquals(PULL_BEFORE, runBits(pull, pull.getFaultTwin()));
+        pull = new GravitationalPullDemo();
+        switchFault(pull, GravitationalPullDemo.P_BEFORE_V);
+        switchFault(pull, FaultHunt.NONE);
+        assertEquals(PULL_BEFORE, runBits(pull, pull.getFaultTwin()));
+        assertEquals(AIMING_BEFORE, runBits(new HelloAimingDemo()));
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        switchFault(aiming, HelloAimingDemo.Y_LOOP);
+        switchFault(aiming, FaultHunt.NONE);
+        assertEquals(AIMING_BEFORE, runBits(aiming));
+        assertFalse(aiming.isSlideInShot(), "fault=none flies the recipe alone again");
+        // the fault moves the twin alone: the ball's bits are the same with it on
+        pull = new GravitationalPullDemo();
+        switchFault(pull, GravitationalPullDemo.P_BEFORE_V);
+        assertEquals(PULL_BEFORE, runBits(pull, pull.getFaultTwin()));
         // fault=none set explicitly, after a fault ran: the same bits again
         DragDemo drag = new DragDemo();
         switchFault(drag, DragDemo.SLIDE_DRAG);
@@ -182,6 +201,124 @@ class LectureFaultsTest {
     }
 
     @Test
+    void positionBeforeVelocityLandsAWholeStepLongInsteadOfShort() {
+        GravitationalPullDemo demo = new GravitationalPullDemo();
+        DemoParticle twin = demo.getFaultTwin();
+        // off, the twin flies the lecture's order hidden: the ball's floats, the same landing
+        assertTrue(twin.isParked(), "the twin is out of the HUD while the fault is off");
+        while (!twin.hasLanded()) {
+            demo.advancePhysics(H);
+        }
+        assertEquals(demo.getParticles().get(0).getLandingX(), twin.getLandingX(), 0f);
+        switchFault(demo, GravitationalPullDemo.P_BEFORE_V);
+        assertEquals(GravitationalPullDemo.P_BEFORE_V, demo.getActiveFault());
+        assertEquals("twin  [FAULT: P before V]", twin.getLabel());
+        DemoParticle ball = demo.getParticles().get(0);
+        // The faulty code re-simulated in float32 in Java's order: P += h·V with the old V,
+        // then V += h·g (g as the force has it, -9.8f). The twin's every state is these bits.
+        float h = H;
+        float px = 0f;
+        float py = 0f;
+        float vx = 10f;
+        float vy = 10f;
+        float gy = -9.8f;
+        int steps = 0;
+        while (!twin.hasLanded()) {
+            demo.advancePhysics(h);
+            ++steps;
+            px = px + h * vx;
+            py = py + h * vy;
+            vx = vx + h * 0f;
+            vy = vy + h * gy;
+            if (!twin.hasLanded()) {
+                assertEquals(px, twin.getParticle().position.x, 0f, "x at step " + steps);
+                assertEquals(py, twin.getParticle().position.y, 0f, "y at step " + steps);
+                assertEquals(vy, twin.getParticle().velocity.y, 0f, "vy at step " + steps);
+            }
+            assertTrue(steps < 1000, "the twin should land");
+        }
+        while (!ball.hasLanded()) {
+            demo.advancePhysics(h);
+        }
+        // Closed forms: forward Euler's y_n = n·h·vy0 − g·h²·n(n−1)/2 lies on the parabola
+        // launched with vy0 + g·h/2, the lecture's y_n = n·h·vy0 − g·h²·n(n+1)/2 on the one
+        // with vy0 − g·h/2: they come down at T ± h, at x = vx·(T ± h), T = 2·vy0/g. The
+        // landings are interpolated on the chord between two samples, which lies below the
+        // parabola by at most g·h²/8 = 3.4e-4 m; at the ground the path falls |vy| ≈ 10 m/s,
+        // so the chord's crossing is within 3.4e-5 s, vx·3.4e-5 = 3.4e-4 m of the parabola's:
+        // 1e-3 m holds that and float32's rounding (2e-6 m a step, 125 steps) with room, and
+        // is 1/170 of the effect vx·h = 0.167 m.
+        double t = 2.0 * 10.0 / G;
+        assertEquals(10.0 * (t + H), twin.getLandingX(), 1e-3);
+        assertEquals(10.0 * (t - H), ball.getLandingX(), 1e-3);
+        assertEquals(2.0 * 10.0 * H, twin.getLandingX() - ball.getLandingX(), 2e-3);
+        // the consequence flown ahead is the scene's own (float crossings against double,
+        // 1e-4 m)
+        assertEquals(twin.getLandingX(), demo.getFaultyLandingX(), 1e-4);
+        assertEquals(ball.getLandingX(), demo.getCorrectLandingX(), 1e-4);
+        StringBuilder hud = new StringBuilder();
+        demo.writeHudLines(hud);
+        assertTrue(hud.toString().startsWith("FAULT on: P updated before V (forward Euler)"
+                + " (fault=p-before-v): lands at x = 20.57 m, 0.33 m beyond the lecture"
+                + " order's 20.24 m (2·Vx·h = 0.33 m)"), hud.toString());
+    }
+
+    @Test
+    void theYLoopStopsAtTheStepTheListingGives() throws java.io.IOException {
+        // vx = 20: S/(vx·h) = 300 is whole. The lecture's vy = g·S/(2·vx) puts the samples
+        // y_n = n·h·vy − g·h²·n(n+1)/2 on the ground at n = S/(vx·h) − 1 = 299, so the
+        // sample ends ON the crossing, and float rounding decides whether y >= 0 takes one
+        // more step (to x = 300·h·vx = S) or stops there: float32 puts sample 299 a hair
+        // below 0, so the loop stops at step 299, x = 299·h·20 = 99.67 m, with no overrun.
+        assertYLoop(20f, 299, 299 * H * 20.0);
+        // vx = 21: S/(vx·h) = 285.71, the parabola meets the ground between samples 284 and
+        // 285: the loop stops at the first sample below, step 285, x = 285·h·21 = 99.75 m.
+        assertYLoop(21f, 285, 285 * H * 21.0);
+        // and the HUD says so in numbers, the crossing interpolated by the recipe's flight
+        HelloAimingDemo demo = new HelloAimingDemo();
+        switchFault(demo, HelloAimingDemo.Y_LOOP);
+        demo.setHorizontalSpeed(21f);
+        String line = hudLine(demo);
+        assertTrue(line.startsWith("FAULT on: the slide's if (y >= 0) loop (fault=y-loop):"
+                + " stops after step 285 at x = 99.75 m, "), line);
+        assertTrue(page("docs/demos/aiming.md").contains(line), line);
+    }
+
+    /** Fly a shot at vx with the fault on; the slide's bullet stops where the listing does. */
+    private static void assertYLoop(float vx, int stopStep, double stopX) {
+        HelloAimingDemo demo = new HelloAimingDemo();
+        switchFault(demo, HelloAimingDemo.Y_LOOP);
+        demo.setHorizontalSpeed(vx);
+        assertEquals(HelloAimingDemo.Y_LOOP, demo.getActiveFault());
+        assertTrue(demo.isSlideInShot(), "the fault flies the slide's bullet");
+        particlelab.aiming.SlideCodeBullet bullet = demo.getSlideBullet();
+        float vy = demo.getParticles().get(0).copyLaunchVelocity(new Vector3f()).y;
+        // The listing re-simulated in float32 in Java's order: the test first, then
+        // V = V + g·tpf, P = P + V·tpf.
+        float x = 0f;
+        float y = 0f;
+        float vyNow = vy;
+        int steps = 0;
+        while (y >= 0f) {
+            vyNow = vyNow + -9.8f * H;
+            x = x + vx * H;
+            y = y + vyNow * H;
+            ++steps;
+        }
+        assertEquals(stopStep, steps, "the listing's own stop at vx = " + vx);
+        for (int frame = 0; frame < 2 * stopStep; ++frame) {
+            demo.advancePhysics(H);
+        }
+        assertTrue(bullet.isStopped());
+        assertEquals(stopStep, bullet.getSteps(), "the slide bullet's steps at vx = " + vx);
+        assertEquals(x, bullet.position.x, 0f);
+        assertEquals(stopStep, demo.getFaultStopStep());
+        // float32 sums of 300 steps of vx·h: each rounds by 2^-24 of x < 100 m, 2e-3 m in all
+        // at most; the closed form's x is exact
+        assertEquals(stopX, bullet.position.x, 2e-3, "stop x at vx = " + vx);
+    }
+
+    @Test
     void spotTheFaultPicksBySeedHidesThenReveals() {
         // SplitMix64's first double seeded with the seed's float bits (as new SplittableRandom(
         // Float.floatToIntBits(s)).nextDouble(), computed with the JDK's): 0.990 for seed 1
@@ -245,6 +382,10 @@ class LectureFaultsTest {
         switchFault(drag, DragDemo.SLIDE_DRAG);
         String line = hudLine(drag);
         assertTrue(page("docs/demos/drag.md").contains(line), line);
+        GravitationalPullDemo pull = new GravitationalPullDemo();
+        switchFault(pull, GravitationalPullDemo.P_BEFORE_V);
+        line = hudLine(pull);
+        assertTrue(page("docs/demos/pull.md").contains(line), line);
         // the lecture page quotes the hidden line and the revealed consequence
         String lecturing = page("docs/lecturing.md").replace("\n   ", " ");
         ThrustDemo spot = new ThrustDemo();
@@ -263,6 +404,10 @@ class LectureFaultsTest {
         StringBuilder text = new StringBuilder();
         if (demo instanceof ThrustDemo) {
             ((ThrustDemo) demo).writeHudLines(text);
+        } else if (demo instanceof HelloAimingDemo) {
+            ((HelloAimingDemo) demo).writeHudLines(text);
+        } else if (demo instanceof GravitationalPullDemo) {
+            ((GravitationalPullDemo) demo).writeHudLines(text);
         } else {
             ((DragDemo) demo).writeHudLines(text);
         }
@@ -286,6 +431,36 @@ class LectureFaultsTest {
         demo.getParameters().set("seed", 3f);
         switchFault(demo, FaultHunt.RANDOM);
         demo.revealFault();
+        assertEquals(0L, leastBytes(threads, thread, demo, demo::writeHudLines));
+        // pull's twin, P before V: its velocity half after each step, its flight ahead
+        GravitationalPullDemo pull = new GravitationalPullDemo();
+        switchFault(pull, FaultHunt.RANDOM);
+        pull.revealFault();
+        assertEquals(0L, leastBytes(threads, thread, pull, pull::writeHudLines));
+        // aiming's y >= 0 loop: its HUD line, with the flight ahead flown again for each new
+        // vx (the listing's own bullet allocates by design, so only the HUD is measured)
+        HelloAimingDemo aiming = new HelloAimingDemo();
+        switchFault(aiming, HelloAimingDemo.Y_LOOP);
+        StringBuilder hud = new StringBuilder(4096);
+        long least = Long.MAX_VALUE;
+        for (int window = 0; window < 35; ++window) {
+            aiming.setHorizontalSpeed(window % 2 == 0 ? 21f : 20f);
+            long before = threads.getThreadAllocatedBytes(thread);
+            for (int frame = 0; frame < 100; ++frame) {
+                hud.setLength(0);
+                aiming.writeHudLines(hud);
+            }
+            long bytes = threads.getThreadAllocatedBytes(thread) - before;
+            if (window >= 30) {
+                least = Math.min(least, bytes);
+            }
+        }
+        assertEquals(0L, least);
+    }
+
+    /** The least bytes of five launch-and-flight windows after 30 to warm up. */
+    private static long leastBytes(com.sun.management.ThreadMXBean threads, long thread,
+            DemoState demo, java.util.function.Consumer<StringBuilder> hudLines) {
         StringBuilder hud = new StringBuilder(4096);
         long least = Long.MAX_VALUE;
         for (int window = 0; window < 35; ++window) {
@@ -294,14 +469,14 @@ class LectureFaultsTest {
             for (int frame = 0; frame < 100; ++frame) {
                 demo.advancePhysics(H);
                 hud.setLength(0);
-                demo.writeHudLines(hud);
+                hudLines.accept(hud);
             }
             long bytes = threads.getThreadAllocatedBytes(thread) - before;
             if (window >= 30) {
                 least = Math.min(least, bytes);
             }
         }
-        assertEquals(0L, least);
+        return least;
     }
 
     /** Set the fault switch by name and launch again (it applies at the next launch). */
@@ -315,11 +490,19 @@ class LectureFaultsTest {
 
     /** Hash every particle's P and V bits after each of 600 frames of 1/60 s (FNV-1a). */
     static long runBits(DemoState demo) {
+        return runBits(demo, null);
+    }
+
+    /** The same, leaving out one particle (a bug hunt's twin, which came after the hashes). */
+    static long runBits(DemoState demo, DemoParticle leftOut) {
         long hash = 0xcbf29ce484222325L;
         for (int frame = 0; frame < FRAMES; ++frame) {
             demo.advancePhysics(H);
             List<DemoParticle> particles = demo.getParticles();
             for (int i = 0; i < particles.size(); ++i) {
+                if (particles.get(i) == leftOut) {
+                    continue;
+                }
                 hash = mix(hash, particles.get(i).getParticle().position);
                 hash = mix(hash, particles.get(i).getParticle().velocity);
             }

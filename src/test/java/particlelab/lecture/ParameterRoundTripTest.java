@@ -119,6 +119,14 @@ class ParameterRoundTripTest {
                 : one(demo, LectureFaults.UnnormalisedThrust.class,
                         LectureFaults.UnnormalisedThrust::getMagnitude) > 0f ? 2f : 0f);
         exact("thrust/seed", demo -> ((ThrustDemo) demo).getFaultSeed());
+        // pull's fault is the order the twin steps in
+        exact("pull/fault", demo -> ((GravitationalPullDemo) demo).isTwinPositionFirst()
+                ? 1f : 0f);
+        exact("pull/seed", demo -> ((GravitationalPullDemo) demo).getFaultSeed());
+        // aiming's fault is the listing's loop flying in the shot (code stays as set)
+        exact("aiming/fault", demo -> ((HelloAimingDemo) demo).isSlideInShot()
+                && ((HelloAimingDemo) demo).getCode() == HelloAimingDemo.RECIPE_CODE ? 1f : 0f);
+        exact("aiming/seed", demo -> ((HelloAimingDemo) demo).getFaultSeed());
         exact("spring/k", demo -> one(demo, Spring.class, Spring::getSpringConstant));
         // The damped spring's c; the undamped one keeps 0 (read by its own force).
         exact("spring/c", demo -> {
