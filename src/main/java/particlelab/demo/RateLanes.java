@@ -113,6 +113,21 @@ public final class RateLanes implements DemoPart {
     }
 
     /**
+     * Test whether a particle is one of the lanes' spheres (parked while the lanes are off).
+     *
+     * @param particle a particle of the demo (may be null)
+     * @return true for a lane's sphere
+     */
+    public boolean isLaneSphere(DemoParticle particle) {
+        for (DemoParticle sphere : spheres) {
+            if (sphere != null && sphere == particle) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
      * Test whether the lanes are shown.
      *
      * @return true for {@code rates=on}
