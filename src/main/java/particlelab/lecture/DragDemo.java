@@ -13,7 +13,6 @@ import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
 import particlelab.demo.WhatIfPart;
 import particlelab.demo.Presentation;
-import particlelab.demo.RateLanes;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
 import particlelab.physics.NonFiniteStepException;
@@ -94,8 +93,6 @@ public final class DragDemo extends DemoState {
             () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
-    /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
-    private final RateLanes rates = addPart(new RateLanes());
     /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, b = 2 N s/m, c = 0. */
     private final WhatIfPart whatIf = addPart(new WhatIfPart(DragDemo::new,
             new String[] {null, "h", "b", "c"}, new float[] {0f, 1f / 30f, 2f, 0f}, 0f));
@@ -142,15 +139,6 @@ public final class DragDemo extends DemoState {
      */
     public LensPart getLens() {
         return lens;
-    }
-
-    /**
-     * Access the rate lanes ({@code --set rates=on}).
-     *
-     * @return the live part (not null)
-     */
-    public RateLanes getRates() {
-        return rates;
     }
 
     /**
@@ -213,7 +201,6 @@ public final class DragDemo extends DemoState {
         faultyFlight = new QuadraticFlight();
         correctFlight = new QuadraticFlight();
         lane.follow(launch, linearSphere);
-        rates.follow(linearSphere);
         lens.follow(linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();

@@ -12,7 +12,6 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
-import particlelab.demo.RateLanes;
 import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
@@ -81,8 +80,6 @@ public final class GravitationalPullDemo extends DemoState {
             () -> SlideCode.pull(gravity), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
-    /** The lecture's loop at 30, 60, 144 and 240 Hz beside the sphere ({@code rates=on}). */
-    private final RateLanes rates = addPart(new RateLanes());
     /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, h = 1/10 s. */
     private final WhatIfPart whatIf = addPart(new WhatIfPart(GravitationalPullDemo::new,
             new String[] {null, "h", "h"}, new float[] {0f, 1f / 30f, 1f / 10f}, 0f));
@@ -135,15 +132,6 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     /**
-     * Access the rate lanes ({@code --set rates=on}).
-     *
-     * @return the live part (not null)
-     */
-    public RateLanes getRates() {
-        return rates;
-    }
-
-    /**
      * Access the what-if forks (Insert, Delete, J).
      *
      * @return the live part (not null)
@@ -169,7 +157,6 @@ public final class GravitationalPullDemo extends DemoState {
         twin.hideGhost();
         applyFault();
         lane.follow(launch, ball);
-        rates.follow(ball);
         lens.follow(ball);
         setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();

@@ -18,7 +18,6 @@ import particlelab.app.DemoCatalog;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.LensPart;
-import particlelab.demo.RateLanes;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -77,13 +76,6 @@ class ParameterRoundTripTest {
 
     static {
         // Shared by every demo: the clock's step, the energy ledger's switch.
-        // The rate lanes of the pull and drag demos: their switch, the histogram's jitter.
-        for (String name : new String[] {"pull", "drag"}) {
-            exact(name + "/rates", demo -> rates(demo).isOn() ? 1f : 0f);
-            exact(name + "/jitter", demo -> rates(demo).getJitter() == null ? 0f
-                    : 1f + rates(demo).getJitter().ordinal());
-            exact(name + "/jitter_ms", demo -> rates(demo).getJitterWidthMs());
-        }
         exact("*/h", demo -> demo.getClock().getStepSeconds());
         exact("*/energy", demo -> demo.getEnergyPart().isShown() ? 1f : 0f);
         // The comparison lane of the free-flight demos: the kind the lane flies.
@@ -275,10 +267,6 @@ class ParameterRoundTripTest {
         return ((ThrustDemo) demo).getLane().getKind().id();
     }
 
-    private static RateLanes rates(DemoState demo) {
-        return demo instanceof DragDemo ? ((DragDemo) demo).getRates()
-                : ((GravitationalPullDemo) demo).getRates();
-    }
 
     private static LensPart lens(DemoState demo) {
         if (demo instanceof UniformMotionDemo) {
