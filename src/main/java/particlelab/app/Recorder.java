@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.demo.DemoKeys;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
 import particlelab.demo.DragControl;
@@ -21,19 +22,20 @@ import particlelab.world.World;
 
 /**
  * Writes a {@link Recording} of one demo's run while the window (or the headless app) runs
- * it: the frame times the demo was given, its key presses, the panel's changes and the drags,
- * each in the order it came, and the state's hash after the frame at which each simulated
- * second is complete. Attached before the demos, so its update runs before theirs in a
- * frame: a frame is written when it starts, and what comes after it (a slider the demo's
- * update reads) belongs before the next frame, as it does in the window. The hash is taken in
- * {@link #render}, after every update of the frame. Switching to another demo ends the
- * recording, in the file and on the new demo's HUD.
+ * it: the frame times the demo was given, its key presses (the panel's buttons as the keys
+ * they stand for), its exports, the panel's changes and the drags, each in the order it came,
+ * and the state's hash after the frame at which each simulated second is complete. Attached
+ * before the demos, so its update runs before theirs in a frame: a frame is written when it
+ * starts, and what comes after it (a slider the demo's update reads) belongs before the next
+ * frame, as it does in the window. The hash is taken in {@link #render}, after every update of
+ * the frame. Switching to another demo ends the recording, in the file and on the new demo's
+ * HUD.
  *
  * <p>Writing allocates (a line a frame when the frame times vary): a recording is not a
  * lecture's run, and nothing is done without one.
  */
 final class Recorder extends BaseAppState implements DemoParameters.PanelListener,
-        DragControl.Listener, StepListener {
+        DragControl.Listener, StepListener, DemoKeys.PressListener {
 
     /** Simulated seconds between two hashes. */
     static final double HASH_SECONDS = 1.0;
@@ -116,6 +118,20 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
     }
 
     @Override
+    public void buttonPressed(String keyLabel) {
+        if (demo.isEnabled()) {
+            write(line().append("key ").append(keyLabel));
+        }
+    }
+
+    @Override
+    public void exportRequested() {
+        if (demo.isEnabled()) {
+            write(line().append("export"));
+        }
+    }
+
+    @Override
     public void dragStarted(int draggable, int particle) {
         dragDeclaration = draggable;
         dragParticle = particle;
@@ -144,6 +160,7 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
     protected void initialize(Application app) {
         demo.getParameters().setPanelListener(this);
         demo.getDragControl().setListener(this);
+        demo.getKeys().setPressListener(this);
         demo.getWorld().addStepListener(this);
         // The demo's keys, heard beside the demo's own mappings: a press is written with the
         // label of its key.
@@ -236,6 +253,7 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
         ended = true;
         demo.getParameters().setPanelListener(null);
         demo.getDragControl().setListener(null);
+        demo.getKeys().setPressListener(null);
         demo.getWorld().removeStepListener(this);
         try {
             writer.close();

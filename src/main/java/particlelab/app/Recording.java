@@ -14,7 +14,9 @@ import java.util.List;
  * particles 2000             (the fountain's count, when not the default)
  * step 0.016666668           (the clock's step h at the start, as a check)
  * frames 60 tpf 0.016666668  (60 frames of the same frame time, as Float.toString writes it)
- * key Space                  (a press of one of the demo's keys, by its label)
+ * key Space                  (a press of one of the demo's keys, by its label, or of the
+ *                            panel's button that does what the key does: Pause is Space)
+ * export                     (an export was asked for: E or the panel's Export button)
  * select b                   (the panel selected a row)
  * set b 0.25                 (the panel's slider asked for a value)
  * drag start 0 0             (a drag of declaration 0's particle 0 starts)
@@ -38,7 +40,7 @@ final class Recording {
 
     /** What a line of the body is. */
     enum Kind {
-        FRAMES, KEY, SELECT, SET, DRAG_START, DRAG_MOVE, DRAG_RELEASE, HASH
+        FRAMES, KEY, EXPORT, SELECT, SET, DRAG_START, DRAG_MOVE, DRAG_RELEASE, HASH
     }
 
     /** One line of the body. */
@@ -200,6 +202,11 @@ final class Recording {
                 Item key = new Item(number, line, Kind.KEY);
                 key.text = line.substring(4);
                 return key;
+            case "export":
+                if (words.length != 1) {
+                    throw bad(shown, number, line, "export (nothing after it)");
+                }
+                return new Item(number, line, Kind.EXPORT);
             case "select":
                 if (words.length != 2 || words[1].isEmpty()) {
                     throw bad(shown, number, line, "select NAME");
@@ -230,8 +237,8 @@ final class Recording {
                 }
                 return hash;
             default:
-                throw bad(shown, number, line, "a line is frames, key, select, set, drag, hash"
-                        + " or end");
+                throw bad(shown, number, line, "a line is frames, key, export, select, set, drag,"
+                        + " hash or end");
         }
     }
 

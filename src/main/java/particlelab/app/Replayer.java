@@ -52,6 +52,8 @@ final class Replayer extends BaseAppState implements StepListener {
     private Recording.Item diverged;
     private long divergedHash;
     private long divergedSteps;
+    /** The recorded exports passed over: a replay writes no files. */
+    private int exportsSkipped;
 
     /**
      * Replay a recording on a demo.
@@ -212,6 +214,11 @@ final class Replayer extends BaseAppState implements StepListener {
         return checked;
     }
 
+    /** @return how many recorded exports were passed over, writing nothing (&ge;0) */
+    int countExportsSkipped() {
+        return exportsSkipped;
+    }
+
     /** @return true once a hash differed */
     boolean hasDiverged() {
         return diverged != null;
@@ -313,6 +320,11 @@ final class Replayer extends BaseAppState implements StepListener {
             case KEY:
                 Object[] key = findKey(bindings, item.text);
                 ((KeyBinding) key[0]).press((Integer) key[1]);
+                break;
+            case EXPORT:
+                // An export reads the state and writes files: the replay changes nothing by
+                // skipping it, and writes nothing where the recording was made (issue 33).
+                ++exportsSkipped;
                 break;
             case SELECT:
                 parameters.select(parameters.indexOf(item.text));

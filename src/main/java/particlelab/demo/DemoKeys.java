@@ -35,6 +35,21 @@ public final class DemoKeys {
     private String helpText = "";
     /** An export asked for (key or button), for the application to carry out. */
     private boolean exportRequested;
+    /** Hears the panel's buttons and the export requests (a recording), or null. */
+    private PressListener pressListener;
+
+    /** Hears what a recording needs beyond the mapped keys: the panel's buttons, exports. */
+    public interface PressListener {
+        /**
+         * A panel button was clicked that does what a key of the demo does.
+         *
+         * @param keyLabel the label of that key (its first), as {@link KeyBinding} prints it
+         */
+        void buttonPressed(String keyLabel);
+
+        /** An export was asked for (the E key or the panel's Export button). */
+        void exportRequested();
+    }
 
     /**
      * Declare a key every demo has.
@@ -136,11 +151,18 @@ public final class DemoKeys {
     void listPanelButtons(List<String> labels, List<Runnable> actions, Runnable pause,
             Runnable step, Runnable reset, Runnable export) {
         labels.addAll(List.of("Pause", "Step", "Reset"));
-        actions.addAll(List.of(pause, step, reset));
+        actions.addAll(List.of(heard(KeyInput.KEY_SPACE, pause), heard(KeyInput.KEY_N, step),
+                heard(KeyInput.KEY_R, reset)));
         if (fireKey != null) {
             KeyBinding fire = fireKey;
+            String label = fire.getKeyLabel(0);
             labels.add("Fire");
-            actions.add(() -> fire.press(0));
+            actions.add(() -> {
+                if (pressListener != null) {
+                    pressListener.buttonPressed(label);
+                }
+                fire.press(0);
+            });
         }
         labels.add("Export");
         actions.add(export);
@@ -199,7 +221,42 @@ public final class DemoKeys {
 
     /** Ask for an export of the trajectories (key, panel), carried out by the application. */
     public void requestExport() {
+        if (pressListener != null) {
+            pressListener.exportRequested();
+        }
         exportRequested = true;
+    }
+
+    /**
+     * Replace what hears the panel's buttons and the export requests (a recording).
+     *
+     * @param listener the listener, or null for none
+     */
+    public void setPressListener(PressListener listener) {
+        pressListener = listener;
+    }
+
+    /**
+     * A button's action that first tells the listener which shared key it stands for, so a
+     * recording writes the press as that key's and a replay presses the same binding.
+     */
+    private Runnable heard(int keyCode, Runnable action) {
+        String label = null;
+        for (int i = 0; i < shared.size() && label == null; ++i) {
+            if (shared.get(i).getKeyCode(0) == keyCode) {
+                label = shared.get(i).getKeyLabel(0);
+            }
+        }
+        if (label == null) {
+            throw new IllegalStateException("no shared key " + keyCode + " for a button");
+        }
+        String keyLabel = label;
+        return () -> {
+            if (pressListener != null) {
+                pressListener.buttonPressed(keyLabel);
+            }
+            action.run();
+        };
     }
 
     /** @return true if an export was asked for since the last call, which forgets it */

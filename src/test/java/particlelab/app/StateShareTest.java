@@ -19,6 +19,7 @@ import java.io.InputStream;
 import java.io.PrintStream;
 import java.io.StringWriter;
 import java.lang.reflect.Field;
+import java.lang.reflect.Method;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -36,6 +37,7 @@ import particlelab.demo.DragControl;
 import particlelab.demo.Draggable;
 import particlelab.demo.StateHash;
 import particlelab.physics.SimulationClock;
+import particlelab.view.ParameterPanel;
 
 /**
  * Issue 33, part 2: a state as a command line. {@code --print-command} and the C key print
@@ -221,6 +223,32 @@ class StateShareTest {
     }
 
     /**
+     * The panel's buttons clicked through the panel itself (Pause, Step twice, Pause, Fire,
+     * Reset, Export) while the aiming demo is recorded: each is written as the key it stands
+     * for (Export as "export"), and the replay presses the same bindings and finds every hash
+     * again, to the bit. A button not recorded would leave a step, a shot or a reset out of
+     * the replay, whose next hash then differs. The recorded export writes no files on replay.
+     */
+    @Test
+    void aRecordedRunWithThePanelsButtonsReplaysIdentically() throws Exception {
+        String recording = recordWithButtons();
+        for (String expected : new String[] {"\nkey Space\n", "\nkey N\n", "\nkey F\n",
+            "\nkey R\n", "\nexport\n"}) {
+            assertTrue(recording.contains(expected), expected + " in\n" + recording);
+        }
+        assertTrue(firstHashStepAfter(Arrays.asList(recording.split("\n")),
+                recording.substring(0, recording.indexOf("\nkey R\n")).split("\n").length)
+                > 0L, "no hash after the reset:\n" + recording);
+        long exportsBefore = countExports();
+        Replay replay = replay("aiming", recording);
+        assertEquals(0, replay.code, replay.toString());
+        assertEquals("replayed " + lastHashStep(recording) + " steps: identical ("
+                + countHashes(recording) + " hashes compared)", replay.out.strip(),
+                replay.toString());
+        assertEquals(exportsBefore, countExports(), "the replay wrote an export");
+    }
+
+    /**
      * One event changed in a recording (the drag's last value moved by 1 cm), or one frame
      * time (the first second's frames given 0.02 s): the replay stops at the first hash
      * after the change with "DIVERGED at step K" and exit status 1.
@@ -346,12 +374,16 @@ class StateShareTest {
 
     /** Replay a recording's text with {@code demo --replay FILE}, in this JVM. */
     private static Replay replay(String recording) throws IOException {
+        return replay("pull", recording);
+    }
+
+    private static Replay replay(String demo, String recording) throws IOException {
         Path file = Files.createTempFile("particlelab-recording", ".txt");
         try {
             Files.writeString(file, recording, StandardCharsets.UTF_8);
             ByteArrayOutputStream out = new ByteArrayOutputStream();
             ByteArrayOutputStream err = new ByteArrayOutputStream();
-            int code = DemoCommand.run(new String[] {"pull", Replayer.REPLAY, file.toString()},
+            int code = DemoCommand.run(new String[] {demo, Replayer.REPLAY, file.toString()},
                     new PrintStream(out, true, StandardCharsets.UTF_8),
                     new PrintStream(err, true, StandardCharsets.UTF_8));
             return new Replay(code, out.toString(StandardCharsets.UTF_8),
@@ -380,6 +412,36 @@ class StateShareTest {
         assertEquals(null, app.getFailure());
         assertEquals(null, recorder.getFailure());
         return text.toString();
+    }
+
+    /**
+     * Record 240 frames of the aiming demo in jME's headless app with the real clock, clicking
+     * the panel's buttons on the way.
+     */
+    private static String recordWithButtons() throws Exception {
+        List<DemoState> demos = DemoCatalog.createAll();
+        int index = DemoCatalog.indexOf("aiming");
+        DemoState demo = demos.get(index);
+        ParticleLabApp app = new ParticleLabApp(demos, index, 240, null, Float.NaN, false);
+        app.getStateManager().attach(new Buttons(demo));
+        StringWriter text = new StringWriter();
+        Recorder recorder = new Recorder(app.getSwitcher(), demo, "aiming", 0, text);
+        app.getStateManager().attach(recorder);
+        app.start(JmeContext.Type.Headless);
+        assertTrue(app.awaitFinished(CHILD_SECONDS), "the run did not end");
+        assertEquals(null, app.getFailure());
+        assertEquals(null, recorder.getFailure());
+        return text.toString();
+    }
+
+    /** The export folders in the working folder (where a replay's export would go). */
+    private static long countExports() throws IOException {
+        if (!Files.isDirectory(ExportState.BASE_FOLDER)) {
+            return 0L;
+        }
+        try (java.util.stream.Stream<Path> folders = Files.list(ExportState.BASE_FOLDER)) {
+            return folders.count();
+        }
     }
 
     private static long lastHashStep(String recording) {
@@ -508,6 +570,84 @@ class StateShareTest {
         @Override
         protected void onDisable() {
             // inputs come from update
+        }
+    }
+
+    /**
+     * Clicks the panel's buttons at fixed frames of the demo, through the panel's own click
+     * (the buttons' actions, as a mouse click runs them); attached before the recorder.
+     */
+    private static final class Buttons extends BaseAppState {
+        private final DemoState demo;
+        private int frame;
+
+        Buttons(DemoState demo) {
+            this.demo = demo;
+        }
+
+        @Override
+        public void update(float tpf) {
+            if (!demo.isInitialized()) {
+                return;
+            }
+            ++frame;
+            switch (frame) {
+                case 20:
+                case 60:
+                    click("Pause");
+                    break;
+                case 30:
+                case 40:
+                    click("Step");
+                    break;
+                case 90:
+                    click("Fire");
+                    break;
+                case 130:
+                    click("Reset");
+                    break;
+                case 150:
+                    click("Export");
+                    // taken before the application's export state sees it: no files here
+                    assertTrue(demo.getKeys().takeExportRequest(), "Export asked nothing");
+                    break;
+                default:
+                    break;
+            }
+        }
+
+        /** Click a button of the demo's panel (reached by reflection: package-private). */
+        private void click(String label) {
+            try {
+                Method controls = DemoState.class.getDeclaredMethod("getParameterControls");
+                controls.setAccessible(true);
+                Object parameterControls = controls.invoke(demo);
+                Method panel = parameterControls.getClass().getDeclaredMethod("getPanel");
+                panel.setAccessible(true);
+                ((ParameterPanel) panel.invoke(parameterControls)).click(label);
+            } catch (ReflectiveOperationException failure) {
+                throw new IllegalStateException(failure);
+            }
+        }
+
+        @Override
+        protected void initialize(Application app) {
+            // nothing to build
+        }
+
+        @Override
+        protected void cleanup(Application app) {
+            // nothing to tidy
+        }
+
+        @Override
+        protected void onEnable() {
+            // clicks come from update
+        }
+
+        @Override
+        protected void onDisable() {
+            // clicks come from update
         }
     }
 
