@@ -3,15 +3,16 @@ package particlelab.app;
 import com.jme3.system.Timer;
 
 /**
- * A jME timer that reports the same frame time every frame, whatever the wall clock says, so
- * a run of N frames simulates exactly N·tpf seconds and its screenshot is reproducible.
+ * A jME timer that reports the frame time it is given, whatever the wall clock says: the same
+ * every frame, so a run of N frames simulates exactly N·tpf seconds and its screenshot is
+ * reproducible, or a recording's own frame times, set before each frame of its replay.
  */
 public final class FixedTimer extends Timer {
 
     /** Time is counted in nanoseconds. */
     private static final long RESOLUTION = 1_000_000_000L;
 
-    private final float frameSeconds;
+    private float frameSeconds;
     private long ticks;
 
     /**
@@ -20,11 +21,20 @@ public final class FixedTimer extends Timer {
      * @param frameSeconds the time per frame it reports (in seconds, finite, &ge;0)
      */
     public FixedTimer(float frameSeconds) {
-        if (!(frameSeconds >= 0f) || Float.isInfinite(frameSeconds)) {
+        setFrameSeconds(frameSeconds);
+    }
+
+    /**
+     * Change the time the next frames report.
+     *
+     * @param newFrameSeconds the time per frame (in seconds, finite, &ge;0)
+     */
+    public void setFrameSeconds(float newFrameSeconds) {
+        if (!(newFrameSeconds >= 0f) || Float.isInfinite(newFrameSeconds)) {
             throw new IllegalArgumentException(
-                    "fixed frame time (s) must be finite and >= 0, but was " + frameSeconds);
+                    "fixed frame time (s) must be finite and >= 0, but was " + newFrameSeconds);
         }
-        this.frameSeconds = frameSeconds;
+        frameSeconds = newFrameSeconds;
     }
 
     @Override

@@ -5,7 +5,6 @@ import com.jme3.app.state.BaseAppState;
 import com.jme3.math.Vector3f;
 import com.jme3.renderer.RenderManager;
 import com.jme3.system.JmeContext;
-import com.jme3.system.Timer;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -37,7 +36,7 @@ final class Replayer extends BaseAppState implements StepListener {
     private final Recording recording;
     private final DemoState demo;
     private final List<KeyBinding> bindings;
-    private final RecordedTimer timer = new RecordedTimer();
+    private final FixedTimer timer = new FixedTimer(0f);
     private final Vector3f dragValue = new Vector3f();
     /** The next item to play. */
     private int next;
@@ -65,7 +64,7 @@ final class Replayer extends BaseAppState implements StepListener {
         this.recording = recording;
         this.demo = demo;
         this.bindings = demo.getBindings();
-        timer.frameSeconds = firstFrameSeconds(recording);
+        timer.setFrameSeconds(firstFrameSeconds(recording));
     }
 
     /**
@@ -177,7 +176,7 @@ final class Replayer extends BaseAppState implements StepListener {
         if (frames > 0L) {
             DemoCommand.quietLogs();
             ParticleLabApp app = new ParticleLabApp(demos, index, (int) frames, null,
-                    replayer.timer.frameSeconds, false);
+                    replayer.timer.getTimePerFrame(), false);
             app.setTimer(replayer.getTimer());
             app.getStateManager().attach(replayer);
             app.start(JmeContext.Type.Headless);
@@ -200,7 +199,7 @@ final class Replayer extends BaseAppState implements StepListener {
     }
 
     /** @return the timer to give the application (not null) */
-    Timer getTimer() {
+    FixedTimer getTimer() {
         return timer;
     }
 
@@ -305,7 +304,7 @@ final class Replayer extends BaseAppState implements StepListener {
             Recording.Item item = recording.items.get(next);
             if (item.kind == Recording.Kind.FRAMES) {
                 framesLeft = item.count;
-                timer.frameSeconds = item.value;
+                timer.setFrameSeconds(item.value);
                 return;
             }
             play(item);
@@ -376,42 +375,5 @@ final class Replayer extends BaseAppState implements StepListener {
             }
         }
         return null;
-    }
-
-    /** A jME timer that gives each frame the frame time the replay sets. */
-    private static final class RecordedTimer extends Timer {
-        private static final long RESOLUTION = 1_000_000_000L;
-        float frameSeconds;
-        private long ticks;
-
-        @Override
-        public long getTime() {
-            return ticks;
-        }
-
-        @Override
-        public long getResolution() {
-            return RESOLUTION;
-        }
-
-        @Override
-        public float getFrameRate() {
-            return frameSeconds > 0f ? 1f / frameSeconds : 0f;
-        }
-
-        @Override
-        public float getTimePerFrame() {
-            return frameSeconds;
-        }
-
-        @Override
-        public void update() {
-            ticks += (long) (frameSeconds * RESOLUTION);
-        }
-
-        @Override
-        public void reset() {
-            ticks = 0L;
-        }
     }
 }
