@@ -153,7 +153,7 @@ public final class LensPart implements DemoPart {
     /** Bind O: the lens on and off, through the parameter so the panel shows it. */
     @Override
     public void declareKeys() {
-        demo.bindKey(KEY, "O", "derivative lens: chord, V_i+1 and exact dP/dt at one step",
+        demo.bindKey(KEY, "O", "derivative lens: chord, V_i+1, exact dP/dt",
                 () -> demo.getParameters().set(PARAMETER, on ? 0f : 1f));
     }
 

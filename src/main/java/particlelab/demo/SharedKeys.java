@@ -55,8 +55,8 @@ final class SharedKeys {
                 .withSummary("reset"));
         ContactPause contactPause = run.getContactPause();
         KeyBinding atContact = keys.addShared(new KeyBinding(KeyInput.KEY_RETURN, "Enter",
-                "pause at the step that resolves the next contact (again: the one after;"
-                        + " while waiting: cancel)",
+                // one help row at 1280x720: a wrapped row pushed the help under 16 px
+                "pause at the next contact (again: the one after; waiting: cancel)",
                 contactPause::press));
         contactPause.setKeys(atContact, pause);
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T",

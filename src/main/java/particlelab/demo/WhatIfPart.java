@@ -98,15 +98,21 @@ public final class WhatIfPart implements DemoPart {
 
     @Override
     public void declareKeys() {
-        forkKey = demo.bindKey(KeyInput.KEY_INSERT, "Insert",
-                "what if: fork a lane from the step shown with the change offered (up to "
-                        + MAX_LANES + "; then: drop the lanes)", this::forkOrDrop);
-        demo.bindKey(KeyInput.KEY_DELETE, "Delete",
-                "what if: offer the next change of this demo's list (h, e, drag, none)",
-                () -> offered = (offered + 1) % changeNames.length);
-        demo.bindKey(KeyInput.KEY_J, "J",
-                "what if: keep the newest lane (the run goes on from it, with its change)",
-                this::keepNewest);
+        // One help row for the three (the help stays legible at 1280x720): Insert forks a
+        // lane (up to MAX_LANES; once more drops them), Delete offers the next change, J
+        // keeps the newest lane (the run goes on from it, with its change).
+        forkKey = demo.bindKeys(new KeyBinding(
+                new int[] {KeyInput.KEY_INSERT, KeyInput.KEY_DELETE, KeyInput.KEY_J},
+                new String[] {"Insert", "Delete", "J"},
+                "what if: fork a lane, next change, keep the newest", null, key -> {
+                            if (key == 0) {
+                                forkOrDrop();
+                            } else if (key == 1) {
+                                offered = (offered + 1) % changeNames.length;
+                            } else {
+                                keepNewest();
+                            }
+                        }).withKeyLabel("Ins/Del/J"));
     }
 
     @Override

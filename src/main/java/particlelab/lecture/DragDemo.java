@@ -232,7 +232,7 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void declareKeys() {
-        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+        bindKey(KeyInput.KEY_B, "B", FaultHunt.REVEAL_DESCRIPTION,
                 this::revealFault);
     }
 

@@ -25,6 +25,8 @@ final class FaultHunt {
 
     /** The switch's command-line name. */
     static final String PARAMETER = "fault";
+    /** The reveal key's words in the help (one short row: the help stays legible). */
+    static final String REVEAL_DESCRIPTION = "bug hunt: reveal the hidden fault";
     /** The seed's command-line name. */
     static final String SEED_PARAMETER = "seed";
     /** The switch's value for the lecture's correct code. */

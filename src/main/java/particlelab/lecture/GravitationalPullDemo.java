@@ -175,7 +175,7 @@ public final class GravitationalPullDemo extends DemoState {
 
     @Override
     protected void declareKeys() {
-        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+        bindKey(KeyInput.KEY_B, "B", FaultHunt.REVEAL_DESCRIPTION,
                 this::revealFault);
     }
 

@@ -632,7 +632,7 @@ public final class HelloAimingDemo extends DemoState {
         codeKey = bindKey(KeyInput.KEY_J, "J",
                 "next shot's code: shared recipe -> slide's listing -> both",
                 () -> getParameters().set("code", (code + 1) % CODE_NAMES.length));
-        bindKey(KeyInput.KEY_B, "B", "bug hunt: reveal the hidden fault (--set fault=random)",
+        bindKey(KeyInput.KEY_B, "B", FaultHunt.REVEAL_DESCRIPTION,
                 faults::reveal);
     }
 
