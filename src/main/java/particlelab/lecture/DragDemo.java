@@ -247,8 +247,7 @@ public final class DragDemo extends DemoState {
      * @return its {@code --set fault=} name, or "none"
      */
     public String getActiveFault() {
-        int fault = faults.active();
-        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+        return faults.activeName();
     }
 
     /**

@@ -164,6 +164,16 @@ final class FaultHunt {
     }
 
     /**
+     * Return the name of the fault the demo runs now.
+     *
+     * @return its {@code --set fault=} name, or {@value #NONE}
+     */
+    String activeName() {
+        int fault = active();
+        return fault == 0 ? NONE : id(fault);
+    }
+
+    /**
      * Write a sphere's label with the fault it runs: as given with none, "[FAULT: label]"
      * when one is on and shown, "[FAULT: ?]" while hidden. Called at a launch or a reveal.
      *

@@ -203,8 +203,7 @@ public final class ThrustDemo extends DemoState {
      * @return its {@code --set fault=} name, or "none"
      */
     public String getActiveFault() {
-        int fault = faults.active();
-        return fault == 0 ? FaultHunt.NONE : faults.id(fault);
+        return faults.activeName();
     }
 
     /**
