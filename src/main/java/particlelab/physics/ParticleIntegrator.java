@@ -286,8 +286,13 @@ public final class ParticleIntegrator {
      * is put back and {@link #stepCarefully} decides.
      */
     private void stepOne(Particle particle, float stepSeconds) {
-        // h and m remembered for the fold and the regime's bound (one comparison when they are)
-        limits.remember(stepSeconds, particle.getMass());
+        // h and m remembered for the fold and the regime's bound; asked of this.folded, the
+        // test regime() makes, so in a loop that asks both the JIT makes it once (asked
+        // through limits, a second path to the same fold, it was made twice)
+        float massKg = particle.getMass();
+        if (!folded.isRememberedFor(stepSeconds, massKg)) {
+            limits.remember(stepSeconds, massKg);
+        }
         Vector3f velocity = particle.velocity;
         Vector3f position = particle.position;
         float vx = velocity.x;
