@@ -12,7 +12,8 @@ import java.util.Arrays;
  * <ul>
  * <li>by axes (gravity and linear drag: one σ for all), scalar passes the JIT vectorises, or
  * the Vector API ({@link VectorBatch}) with the check fused in;</li>
- * <li>by speed (quadratic drag, thrust): one pass over the particles;</li>
+ * <li>by speed (quadratic drag, thrust): in blocks, each particle's σ first, then by
+ * axes;</li>
  * <li>one by one (other forces, or b/m beyond the float range): each particle through
  * {@link FoldedForces#acceleration} and {@link EulerRecipe#step}.</li>
  * </ul>
@@ -68,6 +69,8 @@ final class PackedStep {
     private final float[] blockMarks = new float[BATCH_BLOCK];
     /** ... which {@link Arrays#mismatch} compares with these zeros. */
     private final float[] zeros = new float[BATCH_BLOCK];
+    /** Scratch of the step by speed: σ of each particle of one block (1/s). */
+    private final float[] blockSigmas = new float[BATCH_BLOCK];
     /** What the last step that finds a floor found: how many it stored. */
     private int foundCount;
     /** Whether the last block {@link #findInBlock} looked at was finite. */
@@ -402,10 +405,14 @@ final class PackedStep {
     }
 
     /**
-     * σ depends on the speed (quadratic drag, thrust): one pass over the particles, the
-     * arithmetic of {@link FoldedForces#acceleration} and {@link EulerRecipe#step}, and the
-     * finiteness check on the way: the sum of the positions is finite only if every position
-     * is (a sum that overflows although every position is finite only costs a search).
+     * σ depends on the speed (quadratic drag, thrust): {@value #BATCH_BLOCK} particles at a
+     * time, first each one's σ into a scratch ({@link FoldedForces#dragRate} of its speed, as
+     * {@link FoldedForces#acceleration} computes it), then each axis of the block in one pass
+     * ({@link #stepAxisBySpeed}: the recipe with a = g − σ·V), then the block's positions
+     * checked while they are in the cache, as the step by axes checks them. The same floats
+     * as one pass doing all of it per particle, which this replaced: that loop did not
+     * vectorise, and the recipe's four operations per axis on V, where the fold had two,
+     * made it 1.3 to 1.4 times slower than the fold's (docs/speed.md, issue 30).
      *
      * @return the index of the first non-finite value, or -1
      */
@@ -416,28 +423,42 @@ final class PackedStep {
         float gy = forces.gravityY;
         float gz = forces.gravityZ;
         float inverseMass = forces.stepInverseMass;
-        float check = 0f;
-        for (int x = 0, y = stride, z = 2 * stride; x < count; ++x, ++y, ++z) {
-            float vx = velocities[x];
-            float vy = velocities[y];
-            float vz = velocities[z];
-            // the recipe with the folded a, as FoldedForces.acceleration computes it
-            float sigma = forces.dragRate(FoldedForces.speed(vx, vy, vz), inverseMass);
-            vx = vx + stepSeconds * (gx - sigma * vx);
-            vy = vy + stepSeconds * (gy - sigma * vy);
-            vz = vz + stepSeconds * (gz - sigma * vz);
-            velocities[x] = vx;
-            velocities[y] = vy;
-            velocities[z] = vz;
-            float px = positions[x] + stepSeconds * vx;
-            float py = positions[y] + stepSeconds * vy;
-            float pz = positions[z] + stepSeconds * vz;
-            positions[x] = px;
-            positions[y] = py;
-            positions[z] = pz;
-            check += (px + py) + pz;
+        float[] sigmas = blockSigmas;
+        boolean finite = true;
+        for (int start = 0; start < count; start += BATCH_BLOCK) {
+            int n = Math.min(BATCH_BLOCK, count - start);
+            int y = stride + start;
+            int z = 2 * stride + start;
+            for (int k = 0; k < n; ++k) {
+                sigmas[k] = forces.dragRate(FoldedForces.speed(velocities[start + k],
+                        velocities[y + k], velocities[z + k]), inverseMass);
+            }
+            stepAxisBySpeed(positions, velocities, start, n, sigmas, gx, stepSeconds);
+            stepAxisBySpeed(positions, velocities, y, n, sigmas, gy, stepSeconds);
+            stepAxisBySpeed(positions, velocities, z, n, sigmas, gz, stepSeconds);
+            finite &= fusedCheck
+                    ? isFusedFinite(positions, start, n) & isFusedFinite(positions, y, n)
+                            & isFusedFinite(positions, z, n)
+                    : isSumFinite(positions, start, n) & isSumFinite(positions, y, n)
+                            & isSumFinite(positions, z, n);
         }
-        return Float.isFinite(check) ? -1 : searchNonFinite(positions, stride, count);
+        return finite ? -1 : searchNonFinite(positions, stride, count);
+    }
+
+    /**
+     * One axis of a block by speed, the recipe with the folded a: {@code a = g − σ·V} with
+     * each particle's σ from sigmas (index 0 for the particle at start), {@code V ← V + h·a},
+     * then {@code P ← P + h·V} with the new V.
+     */
+    private static void stepAxisBySpeed(float[] positions, float[] velocities, int start,
+            int count, float[] sigmas, float gravity, float stepSeconds) {
+        for (int k = 0; k < count; ++k) {
+            int i = start + k;
+            float v = velocities[i];
+            v = v + stepSeconds * (gravity - sigmas[k] * v);
+            velocities[i] = v;
+            positions[i] += stepSeconds * v;
+        }
     }
 
     /**
