@@ -71,6 +71,12 @@ final class PackedStep {
     private final float[] zeros = new float[BATCH_BLOCK];
     /** Scratch of the step by speed: σ of each particle of one block (1/s). */
     private final float[] blockSigmas = new float[BATCH_BLOCK];
+    /**
+     * ... and one axis of its V (m/s) and P (m), copied so that every array of the pass on
+     * that axis has the same index, which the JIT of JDK 17 needs to vectorise it.
+     */
+    private final float[] blockVelocities = new float[BATCH_BLOCK];
+    private final float[] blockPositions = new float[BATCH_BLOCK];
     /** What the last step that finds a floor found: how many it stored. */
     private int foundCount;
     /** Whether the last block {@link #findInBlock} looked at was finite. */
@@ -433,9 +439,9 @@ final class PackedStep {
                 sigmas[k] = forces.dragRate(FoldedForces.speed(velocities[start + k],
                         velocities[y + k], velocities[z + k]), inverseMass);
             }
-            stepAxisBySpeed(positions, velocities, start, n, sigmas, gx, stepSeconds);
-            stepAxisBySpeed(positions, velocities, y, n, sigmas, gy, stepSeconds);
-            stepAxisBySpeed(positions, velocities, z, n, sigmas, gz, stepSeconds);
+            stepAxisBySpeed(positions, velocities, start, n, gx, stepSeconds);
+            stepAxisBySpeed(positions, velocities, y, n, gy, stepSeconds);
+            stepAxisBySpeed(positions, velocities, z, n, gz, stepSeconds);
             finite &= fusedCheck
                     ? isFusedFinite(positions, start, n) & isFusedFinite(positions, y, n)
                             & isFusedFinite(positions, z, n)
@@ -450,15 +456,20 @@ final class PackedStep {
      * each particle's σ from sigmas (index 0 for the particle at start), {@code V ← V + h·a},
      * then {@code P ← P + h·V} with the new V.
      */
-    private static void stepAxisBySpeed(float[] positions, float[] velocities, int start,
-            int count, float[] sigmas, float gravity, float stepSeconds) {
+    private void stepAxisBySpeed(float[] positions, float[] velocities, int start,
+            int count, float gravity, float stepSeconds) {
+        float[] sigmas = blockSigmas;
+        float[] v = blockVelocities;
+        float[] p = blockPositions;
+        System.arraycopy(velocities, start, v, 0, count);
+        System.arraycopy(positions, start, p, 0, count);
         for (int k = 0; k < count; ++k) {
-            int i = start + k;
-            float v = velocities[i];
-            v = v + stepSeconds * (gravity - sigmas[k] * v);
-            velocities[i] = v;
-            positions[i] += stepSeconds * v;
+            float next = v[k] + stepSeconds * (gravity - sigmas[k] * v[k]);
+            v[k] = next;
+            p[k] += stepSeconds * next;
         }
+        System.arraycopy(v, 0, velocities, start, count);
+        System.arraycopy(p, 0, positions, start, count);
     }
 
     /**

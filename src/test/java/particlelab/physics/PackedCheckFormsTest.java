@@ -123,6 +123,46 @@ class PackedCheckFormsTest {
         assertArrayEquals(results[0], results[1]);
     }
 
+    /**
+     * The step by speed (quadratic drag, thrust) checks its blocks by the same two forms:
+     * both step every particle to the same floats, slow ones (no thrust term below
+     * {@link Thrust#MIN_SPEED}) and those of a partial last block included, and both name
+     * the same first non-finite particle.
+     */
+    @Test
+    void stepsBySpeedCheckedByEitherFormGiveTheSameFloatsAndRefuseTheSameParticle()
+            throws Exception {
+        // 2500 particles: two blocks of 1024 and a partial one; the bad one in the third
+        int count = 2500;
+        float[][] results = new float[4][];
+        String[] messages = new String[2];
+        for (int form = 0; form < 2; ++form) {
+            ParticleIntegrator integrator = checkedBy(form == 1, new Gravity(),
+                    new QuadraticDrag(0.02f), new Thrust(3f));
+            float[] positions = new float[3 * count];
+            float[] velocities = new float[3 * count];
+            for (int i = 0; i < count; ++i) {
+                positions[i] = i;
+                velocities[i] = i % 7 == 0 ? 0f : 20f - i % 11;
+                velocities[count + i] = i % 7 == 0 ? 1e-7f : 30f - i % 5;
+                velocities[2 * count + i] = i % 3 - 1f;
+            }
+            for (int n = 0; n < 30; ++n) {
+                integrator.batch().stepPacked(positions, velocities, count, 2f, STEP);
+            }
+            results[2 * form] = positions;
+            results[2 * form + 1] = velocities;
+            velocities[2 * count + 2100] = Float.NaN;
+            NonFiniteStepException thrown = assertThrows(NonFiniteStepException.class,
+                    () -> integrator.batch().stepPacked(positions, velocities, count, 2f, STEP));
+            messages[form] = thrown.getMessage();
+        }
+        assertArrayEquals(results[0], results[2]);
+        assertArrayEquals(results[1], results[3]);
+        assertTrue(messages[0].contains("packed particle 2100 of 2500"), messages[0]);
+        assertEquals(messages[0], messages[1]);
+    }
+
     @Test
     void theFormIsChosenByTheJdkUnlessThePropertySays() {
         assertFalse(PackedStep.chooseFusedCheck(null, 17), "JDK 17 keeps the tree");
@@ -146,9 +186,15 @@ class PackedCheckFormsTest {
 
     /** An integrator under gravity and linear drag whose batch checks by the given form. */
     private static ParticleIntegrator linearDrag(boolean fused) throws Exception {
-        ParticleIntegrator integrator = new ParticleIntegrator(new Gravity(),
-                new LinearDrag(0.5f));
+        ParticleIntegrator integrator = checkedBy(fused, new Gravity(), new LinearDrag(0.5f));
         integrator.batch().setVectorBatch(false);
+        return integrator;
+    }
+
+    /** An integrator of the forces given whose batch checks by the given form. */
+    private static ParticleIntegrator checkedBy(boolean fused, Force... forces)
+            throws Exception {
+        ParticleIntegrator integrator = new ParticleIntegrator(forces);
         Field packed = ParticleBatch.class.getDeclaredField("packed");
         packed.setAccessible(true);
         PackedStep step = (PackedStep) packed.get(integrator.batch());
