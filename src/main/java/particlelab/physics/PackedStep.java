@@ -413,12 +413,13 @@ final class PackedStep {
     /**
      * σ depends on the speed (quadratic drag, thrust): {@value #BATCH_BLOCK} particles at a
      * time, first each one's σ into a scratch ({@link FoldedForces#dragRate} of its speed, as
-     * {@link FoldedForces#acceleration} computes it), then each axis of the block in one pass
+     * {@link FoldedForces#acceleration} computes it; the square root and thrust's division
+     * keep this pass scalar), then each axis of the block in a pass the JIT vectorises
      * ({@link #stepAxisBySpeed}: the recipe with a = g − σ·V), then the block's positions
      * checked while they are in the cache, as the step by axes checks them. The same floats
-     * as one pass doing all of it per particle, which this replaced: that loop did not
-     * vectorise, and the recipe's four operations per axis on V, where the fold had two,
-     * made it 1.3 to 1.4 times slower than the fold's (docs/speed.md, issue 30).
+     * as the one pass per particle this replaced, which did not vectorise: with the recipe's
+     * four operations per axis on V (the fold had two) it was 1.3 to 1.4 times the fold's
+     * (docs/speed.md, issue 30).
      *
      * @return the index of the first non-finite value, or -1
      */
@@ -453,8 +454,10 @@ final class PackedStep {
 
     /**
      * One axis of a block by speed, the recipe with the folded a: {@code a = g − σ·V} with
-     * each particle's σ from sigmas (index 0 for the particle at start), {@code V ← V + h·a},
-     * then {@code P ← P + h·V} with the new V.
+     * each particle's σ from {@link #blockSigmas} (index 0 for the particle at start),
+     * {@code V ← V + h·a}, then {@code P ← P + h·V} with the new V. On copies of the axis's V
+     * and P, so that every array of the loop has the index k: JDK 17's JIT did not vectorise
+     * the loop that read V and P at start + k and σ at k (PrintAssembly: no packed operation).
      */
     private void stepAxisBySpeed(float[] positions, float[] velocities, int start,
             int count, float gravity, float stepSeconds) {
