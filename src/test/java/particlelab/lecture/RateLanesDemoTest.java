@@ -67,6 +67,9 @@ class RateLanesDemoTest {
             + "speed,14.142136,m/s\nangle,45.0,deg\nmass,1.0,kg\ng,9.8,m/s²\nfault,none,\n"
             + "seed,1.0,\nenergy,off,\nlane,off,\nlens,off,\n";
 
+    /** The frame-rate section of docs/lecturing.md. */
+    private static final String SECTION = "## The lecture's loop at your monitor's rate";
+
     @TempDir
     Path folder;
 
@@ -224,6 +227,34 @@ class RateLanesDemoTest {
         String hud = pull.formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Jitter normal 3.0 ms at 60 Hz, 1000 runs land "), hud);
         assertTrue(hud.contains("   fixed step: all 1000 runs in one bar at "), hud);
+    }
+
+    /**
+     * docs/lecturing.md's frame-rate section shows the lanes' HUD lines after 200 frames of
+     * {@code demo pull --set rates=uniform}: they are these, as the demo writes them.
+     */
+    @Test
+    void lecturingPageShowsTheLanesHudLinesAsPrinted() throws IOException {
+        GravitationalPullDemo pull = lanesOn(2f);
+        for (int frame = 0; frame < 200; ++frame) {
+            pull.advancePhysics(H);
+        }
+        String hud = pull.formatHud(new StringBuilder()).toString();
+        // the lanes' four lines: landings, the fixed step, the histogram and its bar
+        String[] shown = hud.substring(hud.indexOf("Raw tpf lands")).split("\n");
+        String printed = String.join("\n", shown[0], shown[1], shown[2], shown[3]);
+        List<String> page = Files.readAllLines(Path.of("docs/lecturing.md"));
+        int heading = page.indexOf(SECTION);
+        assertTrue(heading >= 0, "docs/lecturing.md has the section " + SECTION);
+        int first = heading;
+        while (!page.get(first).startsWith("Raw tpf lands")) {
+            ++first;
+        }
+        int end = first;
+        while (!page.get(end).equals("```")) {
+            ++end;
+        }
+        assertEquals(printed, String.join("\n", page.subList(first, end)));
     }
 
     @Test
