@@ -271,12 +271,12 @@ public final class RateLanes implements DemoPart {
      */
     @Override
     public void declareParameters(DemoParameters parameters) {
-        parameters.add(DemoParameter.choice(PARAMETER, "rate lanes 30/60/144/240 Hz", MODES,
+        parameters.add(DemoParameter.choice(PARAMETER, "rate lanes", MODES,
                 0, DemoParameter.Applies.NEXT_LAUNCH, value -> {
                     mode = Math.round(value);
                     needsStart = true;
                 }));
-        parameters.add(new DemoParameter(JITTER_WIDTH, "frame jitter width", "ms", 0f,
+        parameters.add(new DemoParameter(JITTER_WIDTH, "frame jitter", "ms", 0f,
                 MAX_JITTER_MS, JITTER_STEP_MS, DEFAULT_JITTER_MS, 1,
                 DemoParameter.Applies.NEXT_LAUNCH, value -> {
                     jitterMs = value;
