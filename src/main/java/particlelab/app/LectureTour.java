@@ -5,12 +5,14 @@ import java.util.List;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.HudNote;
+import particlelab.demo.RateLanes;
 import particlelab.lecture.AnyHeightDemo;
 import particlelab.lecture.BounceDemo;
 import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.FountainDemo;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
@@ -124,6 +126,7 @@ public final class LectureTour {
             new Stop("Rotation", "racket", LectureTour::watchRacket),
             new Stop("Accuracy of simulation", "pull", LectureTour::watchCoarseFall,
                     "h=1/10", "lane=rk4"),
+            new Stop("Accuracy of simulation", "pull", LectureTour::watchRates, "rates=on"),
             new Stop("Targeting problem", "height", LectureTour::watchHeights),
             new Stop("HelloAiming", "aiming", LectureTour::watchAiming, "code=both",
                     "vx=21"),
@@ -152,7 +155,7 @@ public final class LectureTour {
     }
 
     /**
-     * Write a stop's HUD heading: "Tour 6/22: Kinematics vs dynamics (PageDown next, ...)".
+     * Write a stop's HUD heading: "Tour 6/23: Kinematics vs dynamics (PageDown next, ...)".
      *
      * @param text where to append (not null, modified)
      * @param index the stop (from 0)
@@ -165,7 +168,7 @@ public final class LectureTour {
     }
 
     /**
-     * Write a stop's note after the demo's title: "1/22 Collision Response".
+     * Write a stop's note after the demo's title: "1/23 Collision Response".
      *
      * @param index the stop (from 0)
      * @return the note (not null, one line)
@@ -383,6 +386,31 @@ public final class LectureTour {
         } else {
             text.append("the dots are the steps; the path between them is a guess\n");
         }
+    }
+
+    private static void watchRates(DemoState demo, StringBuilder text) {
+        RateLanes rates = ((GravitationalPullDemo) demo).getRates();
+        int last = RateLanes.RATES_HZ.length - 1;
+        text.append(WATCH).append("raw tpf = 1/f: ");
+        if (!rates.isOn() || rates.getRun(0) == null) {
+            text.append("rate lanes off (--set rates=on)\n");
+            return;
+        }
+        DemoParticle ball = demo.getParticles().get(0);
+        if (ball.hasLanded() && rates.getRun(0).hasLanded() && rates.getRun(last).hasLanded()) {
+            text.append((int) RateLanes.RATES_HZ[0]).append(" Hz lands at ");
+            TextFormat.appendFixed(text, rates.getRun(0).getLanding().getX(), 2).append(" m, ")
+                    .append((int) RateLanes.RATES_HZ[last]).append(" Hz at ");
+            TextFormat.appendFixed(text, rates.getRun(last).getLanding().getX(), 2)
+                    .append(" m; the fixed-step ball landed at x = ");
+            TextFormat.appendFixed(text, ball.getLandingX(), 2).append(" m\n");
+            return;
+        }
+        text.append((int) RateLanes.RATES_HZ[0]).append(" Hz has taken ")
+                .append(rates.getRun(0).getSteps()).append(" steps, ")
+                .append((int) RateLanes.RATES_HZ[last]).append(" Hz ")
+                .append(rates.getRun(last).getSteps())
+                .append(": each monitor steps its own path\n");
     }
 
     private static void watchHeights(DemoState demo, StringBuilder text) {

@@ -15,7 +15,7 @@ import particlelab.view.ScreenRect;
  * Walks the {@link LectureTour} in the window: a stop selects its demo, puts every parameter
  * of it back to its default, applies the stop's settings (as {@code --set} does) and shows
  * the stop's heading and "what to watch for" under the demo's HUD, and its number and slide
- * after the demo's title ("1/22 Collision Response", in presentation mode too). PageDown and
+ * after the demo's title ("1/23 Collision Response", in presentation mode too). PageDown and
  * PageUp go forward and back; F7 starts the tour at its first stop, or leaves it. The keys are
  * the application's, listed in every demo's help.
  *

@@ -6,6 +6,7 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Random;
+import particlelab.aiming.FrameRateRun;
 import particlelab.aiming.Hitscan;
 import particlelab.aiming.IterativeAim;
 import particlelab.aiming.Landing;
@@ -21,12 +22,14 @@ import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.RateLanes;
 import particlelab.lecture.AnyHeightDemo;
 import particlelab.lecture.BounceDemo;
 import particlelab.lecture.ClipResponseDemo;
 import particlelab.lecture.CollisionsDemo;
 import particlelab.lecture.FastBulletsDemo;
 import particlelab.lecture.FountainDemo;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.lecture.HelloAimingDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.RotationDemo;
@@ -42,6 +45,7 @@ import particlelab.physics.LinearDrag;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.QuadraticDrag;
+import particlelab.physics.SimulationClock;
 import particlelab.physics.SlideFormDrag;
 import particlelab.physics.Thrust;
 import particlelab.rigid.Inertia;
@@ -94,6 +98,8 @@ public final class TourQuestions {
     /** The pull demo's ball, as it labels it. */
     private static final String PULL_BALL = "ball";
     private static final String[] SHORT_ON_LONG = {"short", "on", "long"};
+    /** The rate lanes' monitors, in their order. */
+    private static final String[] RATE_LANES = rateLaneNames();
     /** The drag demo's spheres, in its order (its first three particles). */
     private static final String[] DRAG_SPHERES = {"gravity only", "linear drag",
         "quadratic drag"};
@@ -180,6 +186,8 @@ public final class TourQuestions {
                     + FLIP_SECONDS + " s?", TourQuestions::flipRule, TourQuestions::flipOutcome,
                     "yes, it flips", "no, it spins steadily"),
             landingQuestion(),
+            new TourQuestion("Which monitor's lane lands farthest out?",
+                    TourQuestions::rateRule, TourQuestions::rateOutcome, RATE_LANES),
             new TourQuestion("Which arc reaches the target's distance first?",
                     TourQuestions::arrivalRule, TourQuestions::arrivalOutcome, "direct",
                     "lob"),
@@ -387,6 +395,56 @@ public final class TourQuestions {
         double along = (moved.x * (double) velocity.x + moved.y * (double) velocity.y
                 + moved.z * (double) velocity.z) / speed;
         return compare(along, speed * t, ON_LINE_METRES);
+    }
+
+    // ------------------------- the lecture's loop at each monitor's rate: farthest ----
+
+    /** @return "30 Hz", "60 Hz" ... in the lanes' order */
+    private static String[] rateLaneNames() {
+        String[] names = new String[RateLanes.RATES_HZ.length];
+        for (int i = 0; i < names.length; ++i) {
+            names[i] = (int) RateLanes.RATES_HZ[i] + " Hz";
+        }
+        return names;
+    }
+
+    /**
+     * Each monitor's raw-tpf run of the pull's launch, flown by {@link FrameRateRun} (the code
+     * {@code trajectory --tpf 1/f} is checked against byte for byte): the farthest landing.
+     */
+    private static int rateRule(DemoState demo) {
+        Particle launch = new Particle(new Vector3f(), launchVelocity(demo),
+                demo.getParameters().getValue("mass"));
+        FrameRateRun run = new FrameRateRun(new ParticleIntegrator(
+                gravity(demo.getParameters().getValue("g"))));
+        int farthest = TourQuestion.UNDECIDED;
+        double farthestX = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < RateLanes.RATES_HZ.length; ++i) {
+            run.start(launch, RateLanes.RATES_HZ[i], SimulationClock.Mode.RAW_TPF,
+                    demo.getParameters().getValue("h"));
+            if (run.flyToLanding() && run.getLanding().getX() > farthestX) {
+                farthestX = run.getLanding().getX();
+                farthest = i;
+            }
+        }
+        return farthest;
+    }
+
+    /** The lanes' landings in the scene, once every lane has landed. */
+    private static int rateOutcome(DemoState demo) {
+        RateLanes rates = ((GravitationalPullDemo) demo).getRates();
+        int farthest = TourQuestion.UNDECIDED;
+        for (int i = 0; i < RateLanes.RATES_HZ.length; ++i) {
+            FrameRateRun run = rates.getRun(i);
+            if (run == null || !rates.isOn() || !run.hasLanded()) {
+                return TourQuestion.UNDECIDED;
+            }
+            if (farthest == TourQuestion.UNDECIDED || run.getLanding().getX()
+                    > rates.getRun(farthest).getLanding().getX()) {
+                farthest = i;
+            }
+        }
+        return farthest;
     }
 
     // ------------------------------------------- drag: which sphere lands nearest ----

@@ -5,6 +5,7 @@ import com.jme3.math.Vector3f;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 import particlelab.physics.NonFiniteStepException;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
@@ -172,6 +173,8 @@ public final class DemoRun {
             finishStep(stepSeconds);
         }
     };
+    /** Motions beside the particles that the scene's end waits for (a part's own flights). */
+    private final List<BooleanSupplier> motionsBeside = new ArrayList<>();
     private float pendingHitchSeconds;
     private int blowUps;
     /** A restart asked for inside a step: done once the frame's steps are over. */
@@ -248,6 +251,21 @@ public final class DemoRun {
      */
     void addViewRecord(StateRecord record) {
         viewRecords.add(record);
+    }
+
+    /**
+     * Make the scene's end wait for a motion beside the particles, such as a part's flights
+     * drawn without bodies of their own (the rate lanes): the scene is not over while it
+     * says it still moves.
+     *
+     * @param stillMoving true while the motion goes on (not null; called every frame, must
+     *     allocate nothing)
+     */
+    public void waitForMotion(BooleanSupplier stillMoving) {
+        if (stillMoving == null) {
+            throw new IllegalArgumentException("motion to wait for must not be null");
+        }
+        motionsBeside.add(stillMoving);
     }
 
     /**
@@ -364,8 +382,9 @@ public final class DemoRun {
     }
 
     /**
-     * Test whether the scene is over: every particle has landed, so nothing moves and the
-     * clock is stopped until a launch or a reset.
+     * Test whether the scene is over: every particle has landed and no motion beside them
+     * ({@link #waitForMotion}) still moves, so nothing moves and the clock is stopped until a
+     * launch or a reset.
      *
      * @return true if over
      */
@@ -375,6 +394,11 @@ public final class DemoRun {
         }
         for (int i = 0; i < particles.size(); ++i) {
             if (!particles.get(i).hasLanded()) {
+                return false;
+            }
+        }
+        for (int i = 0; i < motionsBeside.size(); ++i) {
+            if (motionsBeside.get(i).getAsBoolean()) {
                 return false;
             }
         }

@@ -12,6 +12,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.RateLanes;
 import particlelab.demo.WhatIfPart;
 import particlelab.physics.Gravity;
 import particlelab.physics.Particle;
@@ -83,6 +84,8 @@ public final class GravitationalPullDemo extends DemoState {
     /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, h = 1/10 s. */
     private final WhatIfPart whatIf = addPart(new WhatIfPart(GravitationalPullDemo::new,
             new String[] {null, "h", "h"}, new float[] {0f, 1f / 30f, 1f / 10f}, 0f));
+    /** The lecture's loop at 30, 60, 144 and 240 Hz beside the ball ({@code rates=on}). */
+    private final RateLanes rates = addPart(new RateLanes(SPHERE_RADIUS));
     private DemoParticle ball;
     /** The bug hunt's switch: the twin runs P before V. */
     private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
@@ -132,6 +135,15 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     /**
+     * Access the rate lanes ({@code --set rates=on}).
+     *
+     * @return the live part (not null)
+     */
+    public RateLanes getRates() {
+        return rates;
+    }
+
+    /**
      * Access the what-if forks (Insert, Delete, J).
      *
      * @return the live part (not null)
@@ -158,6 +170,7 @@ public final class GravitationalPullDemo extends DemoState {
         applyFault();
         lane.follow(launch, ball);
         lens.follow(ball);
+        rates.follow(ball);
         setView(-2f, RIGHT_EDGE, TOP_EDGE, 1f, 5, SPHERE_RADIUS);
         showExactGhosts();
     }

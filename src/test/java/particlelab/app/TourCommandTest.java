@@ -53,7 +53,8 @@ class TourCommandTest {
             "Kinematics vs dynamics", "Discrete particle motion", "Example: gravitational pull",
             "Example: pull + drag", "Example: pull + drag", "Example: pull + drag + thrust",
             "Simulation recipe: gravity, drag, thrust, spring pull", "Rotation", "Rotation",
-            "Rotation", "Accuracy of simulation", "Targeting problem", "HelloAiming",
+            "Rotation", "Accuracy of simulation", "Accuracy of simulation",
+            "Targeting problem", "HelloAiming",
             "Euler steps: advantages and disadvantages",
             "Euler steps: advantages and disadvantages", "If accuracy matters: cheat",
             "Computer science approach: iterations"};

@@ -12,9 +12,11 @@ import particlelab.aiming.Hitscan;
 import particlelab.aiming.LaunchAngles;
 import particlelab.demo.DemoParameters;
 import particlelab.demo.DemoState;
+import particlelab.demo.RateLanes;
 import particlelab.lecture.AnyHeightDemo;
 import particlelab.lecture.BounceDemo;
 import particlelab.lecture.FastBulletsDemo;
+import particlelab.lecture.GravitationalPullDemo;
 import particlelab.lecture.IterativeAimingDemo;
 import particlelab.lecture.SpinThrowDemo;
 import particlelab.lecture.SpringDemo;
@@ -183,6 +185,37 @@ class TourQuestionsTest {
         assertTrue(off < TourQuestions.ON_LINE_METRES / 16, "off the line by " + off + " m");
         assertEquals(1, TourQuestions.forStop(stop).answer(TourCommand.stateOf(stop)));
         assertEquals(1, TourQuestions.forStop(stop).observe(demo));
+    }
+
+    /**
+     * Issue 33's tour stop: the pull's rate lanes (30, 60, 144, 240 Hz), stepped without a
+     * window. A level shot under raw tpf lands {@code vx·(1/f)} short of the parabola, so
+     * 240 Hz lands farthest and each lane beyond the slower one by {@code vx·(1/f1 − 1/f2)}:
+     * 0.17 m, 0.10 m, 0.03 m at vx = 10 m/s. The tolerance, 1 mm, is far above float
+     * round-off of a 20 m landing (1e-5 m) and far below the smallest gap (0.03 m).
+     */
+    @Test
+    void theRateStopsLanesLandByTheVxHLawAnd240HzFarthest() {
+        String question = "Which monitor's lane";
+        int stop = stopOf(question);
+        DemoState demo = TourCommand.stateOf(stop);
+        demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+        RateLanes rates = ((GravitationalPullDemo) demo).getRates();
+        for (int frame = 0; frame < 600; ++frame) {
+            demo.advancePhysics(1f / 60f);
+        }
+        assertTrue(rates.isOn(), "the stop opens the lanes");
+        DemoParameters parameters = demo.getParameters();
+        double vx = parameters.getValue("speed")
+                * Math.cos(Math.toRadians(parameters.getValue("angle")));
+        for (int i = 1; i < RateLanes.RATES_HZ.length; ++i) {
+            double gap = vx * (1.0 / RateLanes.RATES_HZ[i - 1] - 1.0 / RateLanes.RATES_HZ[i]);
+            assertEquals(gap, rates.getRun(i).getLanding().getX()
+                    - rates.getRun(i - 1).getLanding().getX(), 1e-3, "lane " + i);
+        }
+        int fastest = RateLanes.RATES_HZ.length - 1;
+        assertEquals(fastest, TourQuestions.forStop(stop).observe(demo));
+        assertEquals(fastest, answerTo(question));
     }
 
     /**

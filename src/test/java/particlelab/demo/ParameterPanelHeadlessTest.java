@@ -82,10 +82,10 @@ class ParameterPanelHeadlessTest {
         // Each demo's own, then its parts': the energy ledger's switch (every demo's first
         // part, issue 32), and the free-flight demos' comparison lane, then their derivative
         // lens (issue 32 §2), last. Pull, drag, thrust and aiming: the bug hunt's switch and
-        // seed (issue 34).
+        // seed (issue 34); pull: the rate lanes (issue 33), after the lens.
         assertNames(UniformMotionDemo.class, "h", "speed", "angle", "energy", "lane", "lens");
         assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "fault",
-                "seed", "energy", "lane", "lens");
+                "seed", "energy", "lane", "lens", "rates", "jitter_ms");
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
                 "fault", "seed", "energy", "lane", "lens");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "fault",

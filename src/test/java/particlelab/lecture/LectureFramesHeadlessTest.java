@@ -18,6 +18,7 @@ import particlelab.aiming.Hitscan;
 import particlelab.app.HeadlessHarness;
 import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
+import particlelab.demo.RateLanes;
 import particlelab.physics.Gravity;
 import particlelab.physics.SimulationClock;
 import particlelab.view.BoxView;
@@ -59,11 +60,13 @@ class LectureFramesHeadlessTest {
     private static final RotationDemo rotation = new RotationDemo();
     private static final SpinThrowDemo spinThrow = new SpinThrowDemo();
     private static final TennisRacketDemo racket = new TennisRacketDemo();
+    private static final GravitationalPullDemo pull = new GravitationalPullDemo();
     @RegisterExtension
     static final HeadlessHarness harness = HeadlessHarness.perClass(() -> {
         fountain.setParticleCount(PARTICLES);
+        pull.getParameters().set(RateLanes.PARAMETER, 2f);
         return List.of(collisions, targets, aiming, bounce, fountain, iterate, cheat, height,
-                rotation, spinThrow, racket);
+                rotation, spinThrow, racket, pull);
     });
 
     @Test
@@ -438,6 +441,32 @@ class LectureFramesHeadlessTest {
         });
         assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
         assertEquals(0L, bytes[1], "bytes allocated by the HUD text");
+    }
+
+    /**
+     * Pull's rate lanes (issue 33 §1) with their views: spheres, trails, marks and legend
+     * follow the lanes each frame without allocating. Two frames a measurement, at most 43
+     * measurements: the lanes stay in flight (they land after 122 frames), so no legend line
+     * is written (that allocates once, at a landing).
+     */
+    @Test
+    void rateLaneFramesAllocateNothingInFlight() throws Exception {
+        Object[] result = harness.call(() -> {
+            pull.restart();
+            pull.advance(H);
+            StringBuilder hud = new StringBuilder(4096);
+            long frames = Allocations.warmBytesAllocatedBy(() -> {
+                pull.advance(H);
+                pull.advance(H);
+            });
+            long text = Allocations.warmBytesAllocatedBy(() -> pull.formatHud(hud));
+            return new Object[] {frames, text, pull.getRates().isFlying(),
+                pull.getRates().getLegendLine(3)};
+        });
+        assertEquals(0L, result[0], "bytes allocated by 2 frames");
+        assertEquals(0L, result[1], "bytes allocated by the HUD text");
+        assertEquals(true, result[2], "the lanes were in flight all along");
+        assertEquals("240 Hz: flying", result[3], "the legend, with the views built");
     }
 
     @Test

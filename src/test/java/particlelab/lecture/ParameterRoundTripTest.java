@@ -18,6 +18,7 @@ import particlelab.app.DemoCatalog;
 import particlelab.demo.DemoParameter;
 import particlelab.demo.DemoState;
 import particlelab.demo.LensPart;
+import particlelab.demo.RateLanes;
 import particlelab.physics.Force;
 import particlelab.physics.Gravity;
 import particlelab.physics.LinearDrag;
@@ -94,6 +95,11 @@ class ParameterRoundTripTest {
                     .getMass());
             exact(name + "/g", ParameterRoundTripTest::gravity);
         }
+        // The pull demo's rate lanes (issue 33 §1): whether they fly, the distribution the
+        // histogram draws frame times from, and its width.
+        exact("pull/rates", demo -> rates(demo).getJitter() != null
+                ? 2f + rates(demo).getJitter().ordinal() : rates(demo).isOn() ? 1f : 0f);
+        exact("pull/jitter_ms", demo -> rates(demo).getJitterWidthMs());
         exact("drag/b", demo -> one(demo, LinearDrag.class, LinearDrag::getCoefficient));
         exact("drag/c", demo -> ((DragDemo) demo).isSlideForm()
                 ? one(demo, SlideFormDrag.class, SlideFormDrag::getCoefficient)
@@ -267,6 +273,10 @@ class ParameterRoundTripTest {
         return ((ThrustDemo) demo).getLane().getKind().id();
     }
 
+
+    private static RateLanes rates(DemoState demo) {
+        return ((GravitationalPullDemo) demo).getRates();
+    }
 
     private static LensPart lens(DemoState demo) {
         if (demo instanceof UniformMotionDemo) {
