@@ -223,7 +223,7 @@ final class StateShare {
         DemoCommand.applySettings(fresh, settings);
         if (steps == 0L) {
             // the scene declared and started, no step taken (a frame of 0 s takes none)
-            fresh.advancePhysics(0f);
+            fresh.getRun().advancePhysics(0f);
             return StateHash.of(fresh);
         }
         try {

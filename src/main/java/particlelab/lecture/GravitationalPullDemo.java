@@ -315,7 +315,7 @@ public final class GravitationalPullDemo extends DemoState {
     /** Hide the twin while the fault is off. Allocates nothing. */
     @Override
     protected void afterFrame() {
-        particlelab.view.ParticleView view = getView(twin);
+        particlelab.view.ParticleView view = getWindow().getView(twin);
         if (view != null) {
             view.getNode().setCullHint(faults.active() == 0 ? Spatial.CullHint.Always
                     : Spatial.CullHint.Inherit);

@@ -574,7 +574,7 @@ public final class HelloAimingDemo extends DemoState {
         launchSlide();
         // The slide's code runs in the world's steps, after the world has moved the recipe's
         // bullets: both see the same h (the raw tpf in raw mode).
-        addSimulation(this::stepSlide);
+        getRun().addSimulation(this::stepSlide);
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
         // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
@@ -620,7 +620,7 @@ public final class HelloAimingDemo extends DemoState {
     @Override
     protected void declareKeys() {
         fireKey = bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
-        setFireKey(fireKey);
+        getKeys().setFireKey(fireKey);
         String step = Math.round(VX_STEP) + " m/s";
         fasterKey = bindKey(KeyInput.KEY_UP, "Up", "vx + " + step, () -> changeVx(VX_STEP));
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
@@ -984,7 +984,7 @@ public final class HelloAimingDemo extends DemoState {
     private void frameArcs() {
         // The discrete aim is the higher of the two (for h > 0): it bounds the next shot.
         float highest = Math.max(apex(shotVy), apex(getVerticalSpeed(Aim.DISCRETE)));
-        setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
+        getWindow().setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
     }
 
     /**
@@ -1112,13 +1112,13 @@ public final class HelloAimingDemo extends DemoState {
      */
     private void showFiredBullets() {
         for (int a = 0; a < AIMS.length; ++a) {
-            ParticleView view = getView(bullets[a]);
+            ParticleView view = getWindow().getView(bullets[a]);
             if (view != null) {
                 view.getNode().setCullHint(inShot[a] && shotCode != SLIDE_CODE
                         ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
             }
         }
-        ParticleView student = getView(studentBullet);
+        ParticleView student = getWindow().getView(studentBullet);
         if (student != null) {
             student.getNode().setCullHint(studentInShot && shotCode != SLIDE_CODE
                     ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);

@@ -100,8 +100,8 @@ class DemoCatalogTest {
         for (int i = 0; i < demos.size(); ++i) {
             boolean takesCount = DemoCatalog.entries().get(i).hasParticleCount();
             assertEquals(i == DemoCatalog.indexOf(counted), takesCount, demos.get(i).getTitle());
-            assertEquals(takesCount ? 2000 : plain.get(i).countSimulatedParticles(),
-                    demos.get(i).countSimulatedParticles(), demos.get(i).getTitle());
+            assertEquals(takesCount ? 2000 : plain.get(i).getRun().countSimulatedParticles(),
+                    demos.get(i).getRun().countSimulatedParticles(), demos.get(i).getTitle());
         }
     }
 }

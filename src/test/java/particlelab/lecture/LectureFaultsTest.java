@@ -85,7 +85,7 @@ class LectureFaultsTest {
         DemoParticle thruster = demo.getParticles().get(1);
         int steps = 0;
         while (!thruster.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             boolean otherLanded = false;
             if (otherFlies) {
@@ -126,7 +126,7 @@ class LectureFaultsTest {
                 demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
         ThrustDemo correct = new ThrustDemo();
         while (!correct.getParticles().get(1).hasLanded()) {
-            correct.advancePhysics(H);
+            correct.getRun().advancePhysics(H);
         }
         assertEquals(correct.getParticles().get(1).getLandingX(), demo.getCorrectLandingX(),
                 1e-4);
@@ -144,7 +144,7 @@ class LectureFaultsTest {
         double[] shifted = {10.0, 10.0 - G / r};
         DemoParticle thruster = demo.getParticles().get(1);
         for (int n = 1; n <= 300; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             double grown = Math.pow(q, n);
             double x = shifted[0] * q * (grown - 1.0) / r;
             // g/r has y = −9.8/r, so −n·h·g/r adds n·h·9.8/r to y
@@ -175,7 +175,7 @@ class LectureFaultsTest {
         double[] s = {0, 0, 10, 10};
         int steps = 0;
         while (!sphere.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             double speedSquared = s[2] * s[2] + s[3] * s[3];
             s[2] += H * (-c * speedSquared * s[2]);
@@ -192,7 +192,7 @@ class LectureFaultsTest {
         assertEquals(demo.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
         DragDemo physical = new DragDemo();
         while (!physical.getParticles().get(2).hasLanded()) {
-            physical.advancePhysics(H);
+            physical.getRun().advancePhysics(H);
         }
         assertEquals(physical.getParticles().get(2).getLandingX(), demo.getCorrectLandingX(),
                 1e-4);
@@ -207,7 +207,7 @@ class LectureFaultsTest {
         // off, the twin flies the lecture's order hidden: the ball's floats, the same landing
         assertTrue(twin.isParked(), "the twin is out of the HUD while the fault is off");
         while (!twin.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals(demo.getParticles().get(0).getLandingX(), twin.getLandingX(), 0f);
         switchFault(demo, GravitationalPullDemo.P_BEFORE_V);
@@ -224,7 +224,7 @@ class LectureFaultsTest {
         float gy = -9.8f;
         int steps = 0;
         while (!twin.hasLanded()) {
-            demo.advancePhysics(h);
+            demo.getRun().advancePhysics(h);
             ++steps;
             px = px + h * vx;
             py = py + h * vy;
@@ -238,7 +238,7 @@ class LectureFaultsTest {
             assertTrue(steps < 1000, "the twin should land");
         }
         while (!ball.hasLanded()) {
-            demo.advancePhysics(h);
+            demo.getRun().advancePhysics(h);
         }
         // Closed forms: forward Euler's y_n = n·h·vy0 − g·h²·n(n−1)/2 lies on the parabola
         // launched with vy0 + g·h/2, the lecture's y_n = n·h·vy0 − g·h²·n(n+1)/2 on the one
@@ -307,7 +307,7 @@ class LectureFaultsTest {
         }
         assertEquals(stopStep, steps, "the listing's own stop at vx = " + vx);
         for (int frame = 0; frame < 2 * stopStep; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(bullet.isStopped());
         assertEquals(stopStep, bullet.getSteps(), "the slide bullet's steps at vx = " + vx);
@@ -467,7 +467,7 @@ class LectureFaultsTest {
             long before = threads.getThreadAllocatedBytes(thread);
             demo.restart();
             for (int frame = 0; frame < 100; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
                 hud.setLength(0);
                 hudLines.accept(hud);
             }
@@ -510,7 +510,7 @@ class LectureFaultsTest {
     static long runBits(DemoState demo, java.util.function.Predicate<DemoParticle> leftOut) {
         long hash = 0xcbf29ce484222325L;
         for (int frame = 0; frame < FRAMES; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             List<DemoParticle> particles = demo.getParticles();
             for (int i = 0; i < particles.size(); ++i) {
                 if (leftOut.test(particles.get(i))) {
