@@ -148,8 +148,6 @@ public final class HelloAimingDemo extends DemoState {
     private static final String[] FAULTS = {Y_LOOP};
     private static final String[] FAULT_TITLES = {"the slide's if (y >= 0) loop"};
     private static final String[] FAULT_LABELS = {"y >= 0 loop"};
-    /** The longest flight flown ahead for the fault's consequence (steps). */
-    private static final int MAX_FLIGHT_STEPS = 20_000;
     private static final float SLIDE_MARK_SIZE = 1.6f;
 
     private final Gravity gravity = new Gravity();
@@ -1068,7 +1066,7 @@ public final class HelloAimingDemo extends DemoState {
         float vxNow = shotVx;
         float vy = launchVy;
         faultStopStep = 0;
-        while (y >= 0f && faultStopStep < MAX_FLIGHT_STEPS) {
+        while (y >= 0f && faultStopStep < FaultConsequence.MAX_FLIGHT_STEPS) {
             vy = vy + gy * shotStep;
             x = x + vxNow * shotStep;
             y = y + vy * shotStep;
@@ -1082,7 +1080,7 @@ public final class HelloAimingDemo extends DemoState {
         bullets[0].copyLaunchPosition(flown.position);
         bullets[0].copyLaunchVelocity(flown.velocity);
         crossingX = Double.NaN;
-        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+        for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
             double landing = crossingFlight.step(flown, shotStep);
             if (landing != Flight.NO_LANDING) {
                 crossingX = crossingFlight.crossingX(landing);

@@ -121,15 +121,16 @@ class LectureFaultsTest {
         // The consequence flown ahead is the scene's own landing (the world's swept crossing
         // in float against the flight's in double: 1e-4 m), and the fault moves it by more
         // than 50 times the tolerance the path was checked with (measured: 0.11 m short).
-        assertEquals(demo.getFaultyLandingX(), thruster.getLandingX(), 1e-4);
-        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.05,
-                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+        FaultConsequence consequence = demo.getFaultConsequence();
+        assertEquals(consequence.getFaultyLandingX(), thruster.getLandingX(), 1e-4);
+        assertTrue(consequence.getCorrectLandingX() - consequence.getFaultyLandingX() > 0.05,
+                consequence.getFaultyLandingX() + " vs " + consequence.getCorrectLandingX());
         ThrustDemo correct = new ThrustDemo();
         while (!correct.getParticles().get(1).hasLanded()) {
             correct.getRun().advancePhysics(H);
         }
-        assertEquals(correct.getParticles().get(1).getLandingX(), demo.getCorrectLandingX(),
-                1e-4);
+        assertEquals(correct.getParticles().get(1).getLandingX(),
+                consequence.getCorrectLandingX(), 1e-4);
     }
 
     @Test
@@ -189,15 +190,16 @@ class LectureFaultsTest {
             }
             assertTrue(steps < 1000, "the sphere should land");
         }
-        assertEquals(demo.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
+        FaultConsequence consequence = demo.getFaultConsequence();
+        assertEquals(consequence.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
         DragDemo physical = new DragDemo();
         while (!physical.getParticles().get(2).hasLanded()) {
             physical.getRun().advancePhysics(H);
         }
-        assertEquals(physical.getParticles().get(2).getLandingX(), demo.getCorrectLandingX(),
-                1e-4);
-        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.5,
-                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+        assertEquals(physical.getParticles().get(2).getLandingX(),
+                consequence.getCorrectLandingX(), 1e-4);
+        assertTrue(consequence.getCorrectLandingX() - consequence.getFaultyLandingX() > 0.5,
+                consequence.getFaultyLandingX() + " vs " + consequence.getCorrectLandingX());
     }
 
     @Test
@@ -254,8 +256,8 @@ class LectureFaultsTest {
         assertEquals(2.0 * 10.0 * H, twin.getLandingX() - ball.getLandingX(), 2e-3);
         // the consequence flown ahead is the scene's own (float crossings against double,
         // 1e-4 m)
-        assertEquals(twin.getLandingX(), demo.getFaultyLandingX(), 1e-4);
-        assertEquals(ball.getLandingX(), demo.getCorrectLandingX(), 1e-4);
+        assertEquals(twin.getLandingX(), demo.getFaultConsequence().getFaultyLandingX(), 1e-4);
+        assertEquals(ball.getLandingX(), demo.getFaultConsequence().getCorrectLandingX(), 1e-4);
         StringBuilder hud = new StringBuilder();
         demo.writeHudLines(hud);
         assertTrue(hud.toString().startsWith("FAULT on: P updated before V (forward Euler)"
@@ -349,7 +351,8 @@ class LectureFaultsTest {
                 + " (fault=other-velocity): lands at x = "), shown);
         // the numbers are the flights': the faulty landing and the correct one
         StringBuilder landing = new StringBuilder();
-        particlelab.view.TextFormat.appendFixed(landing, demo.getFaultyLandingX(), 2);
+        particlelab.view.TextFormat.appendFixed(landing,
+                demo.getFaultConsequence().getFaultyLandingX(), 2);
         assertTrue(shown.contains("x = " + landing + " m"), shown);
         // seed 1 picks the other fault
         demo.getParameters().set("seed", 1f);
