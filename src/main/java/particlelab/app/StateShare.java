@@ -239,12 +239,11 @@ final class StateShare {
 
     /** The demo's place in the catalogue, by its class. */
     private static int catalogIndex(DemoState demo) {
-        List<DemoCatalog.Entry> entries = DemoCatalog.entries();
-        for (int i = 0; i < entries.size(); ++i) {
-            if (entries.get(i).create().getClass() == demo.getClass()) {
-                return i;
-            }
+        int index = DemoCatalog.indexOfDemo(demo);
+        if (index < 0) {
+            throw new IllegalArgumentException("not a demo of the catalogue: "
+                    + demo.getTitle());
         }
-        throw new IllegalArgumentException("not a demo of the catalogue: " + demo.getTitle());
+        return index;
     }
 }
