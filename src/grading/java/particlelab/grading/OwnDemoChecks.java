@@ -83,7 +83,7 @@ final class OwnDemoChecks {
     private static DemoState run(Submission s) throws Exception {
         DemoState demo = s.create(DemoState.class);
         for (int frame = 0; frame < FRAMES; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         return demo;
     }

@@ -32,20 +32,23 @@ import particlelab.lecture.WindDemo;
  */
 public final class DemoCatalog {
 
-    /** One demo: its command-line name and how to create it. */
+    /** One demo: its command-line name, its class and how to create it. */
     public static final class Entry {
         private final String name;
-        private final Supplier<DemoState> factory;
+        /** The class every demo it creates has: a demo's entry is found without a new one. */
+        private final Class<? extends DemoState> type;
+        private final Supplier<? extends DemoState> factory;
         /** Creates it with a particle count ({@code --particles}); null if it has none. */
-        private final IntFunction<DemoState> countedFactory;
+        private final IntFunction<? extends DemoState> countedFactory;
 
-        Entry(String name, Supplier<DemoState> factory) {
-            this(name, factory, null);
+        <D extends DemoState> Entry(String name, Class<D> type, Supplier<D> factory) {
+            this(name, type, factory, null);
         }
 
-        Entry(String name, Supplier<DemoState> factory,
-                IntFunction<DemoState> countedFactory) {
+        <D extends DemoState> Entry(String name, Class<D> type, Supplier<D> factory,
+                IntFunction<D> countedFactory) {
             this.name = name;
+            this.type = type;
             this.factory = factory;
             this.countedFactory = countedFactory;
         }
@@ -53,6 +56,11 @@ public final class DemoCatalog {
         /** @return the name used by {@code particle-lab demo NAME} (not null) */
         public String getName() {
             return name;
+        }
+
+        /** @return the class of the demos it creates (not null) */
+        public Class<? extends DemoState> getType() {
+            return type;
         }
 
         /** @return a new instance of the demo (not null) */
@@ -78,29 +86,29 @@ public final class DemoCatalog {
     }
 
     private static final List<Entry> ENTRIES = Collections.unmodifiableList(List.of(
-            new Entry("uniform", UniformMotionDemo::new),
-            new Entry("pull", GravitationalPullDemo::new),
-            new Entry("drag", DragDemo::new),
-            new Entry("thrust", ThrustDemo::new),
-            new Entry("aiming", HelloAimingDemo::new),
-            new Entry("iterate", IterativeAimingDemo::new),
-            new Entry("cheat", FastBulletsDemo::new),
-            new Entry("height", AnyHeightDemo::new),
-            new Entry("bounce", BounceDemo::new),
-            new Entry("collisions", CollisionsDemo::new),
-            new Entry("tunnelling", TunnellingDemo::new),
-            new Entry("targets", TargetsDemo::new),
-            new Entry("rotation", RotationDemo::new),
-            new Entry("throw", SpinThrowDemo::new),
-            new Entry("racket", TennisRacketDemo::new),
-            new Entry("wind", WindDemo::new),
-            new Entry("fountain", FountainDemo::new, particles -> {
+            new Entry("uniform", UniformMotionDemo.class, UniformMotionDemo::new),
+            new Entry("pull", GravitationalPullDemo.class, GravitationalPullDemo::new),
+            new Entry("drag", DragDemo.class, DragDemo::new),
+            new Entry("thrust", ThrustDemo.class, ThrustDemo::new),
+            new Entry("aiming", HelloAimingDemo.class, HelloAimingDemo::new),
+            new Entry("iterate", IterativeAimingDemo.class, IterativeAimingDemo::new),
+            new Entry("cheat", FastBulletsDemo.class, FastBulletsDemo::new),
+            new Entry("height", AnyHeightDemo.class, AnyHeightDemo::new),
+            new Entry("bounce", BounceDemo.class, BounceDemo::new),
+            new Entry("collisions", CollisionsDemo.class, CollisionsDemo::new),
+            new Entry("tunnelling", TunnellingDemo.class, TunnellingDemo::new),
+            new Entry("targets", TargetsDemo.class, TargetsDemo::new),
+            new Entry("rotation", RotationDemo.class, RotationDemo::new),
+            new Entry("throw", SpinThrowDemo.class, SpinThrowDemo::new),
+            new Entry("racket", TennisRacketDemo.class, TennisRacketDemo::new),
+            new Entry("wind", WindDemo.class, WindDemo::new),
+            new Entry("fountain", FountainDemo.class, FountainDemo::new, particles -> {
                 FountainDemo fountain = new FountainDemo();
                 fountain.setParticleCount(particles);
                 return fountain;
             }),
-            new Entry("spring", SpringDemo::new),
-            new Entry("clip", ClipResponseDemo::new)));
+            new Entry("spring", SpringDemo.class, SpringDemo::new),
+            new Entry("clip", ClipResponseDemo.class, ClipResponseDemo::new)));
 
     private DemoCatalog() {
     }
@@ -137,6 +145,21 @@ public final class DemoCatalog {
         int number = numberOf(name);
         for (int i = 0; i < ENTRIES.size(); ++i) {
             if (number == i + 1 || ENTRIES.get(i).getName().equalsIgnoreCase(name)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * Find the catalogue's entry of a demo by its class, creating no demo.
+     *
+     * @param demo a demo (not null)
+     * @return the index (&ge;0), or -1 if no entry creates demos of its class
+     */
+    public static int indexOfDemo(DemoState demo) {
+        for (int i = 0; i < ENTRIES.size(); ++i) {
+            if (ENTRIES.get(i).getType() == demo.getClass()) {
                 return i;
             }
         }

@@ -433,7 +433,8 @@ public final class DemoCommand {
     static String profileLine(DemoState demo) {
         FrameTimes mesh = demo instanceof FountainDemo ? ((FountainDemo) demo).getMeshTimes()
                 : null;
-        return profileLine(demo.getRun().getPhysicsTimes(), mesh, demo.countSimulatedParticles());
+        return profileLine(demo.getRun().getPhysicsTimes(), mesh,
+                demo.getRun().countSimulatedParticles());
     }
 
     /**

@@ -181,7 +181,7 @@ public final class DemoSwitcher extends BaseAppState {
         for (int i = 0; i < demos.size(); ++i) {
             DemoState demo = demos.get(i);
             demo.getDemoHud().setCatalogNumber(i + 1);
-            demo.setApplicationBindings(bindings);
+            demo.getKeys().setApplicationBindings(bindings);
             demo.getKeys().setDemoTitles(titles);
             demo.setEnabled(i == selected);
             app.getStateManager().attach(demo);
@@ -275,7 +275,8 @@ public final class DemoSwitcher extends BaseAppState {
             select(number - 1);
         } else {
             String count = demos.size() == 1 ? "there is 1" : "there are " + demos.size();
-            getSelected().showNotice("no demo " + number + ": " + count + "; Tab cycles");
+            getSelected().getDemoHud().showNotice("no demo " + number + ": " + count
+                    + "; Tab cycles");
         }
     }
 

@@ -80,7 +80,8 @@ public final class ExportState extends BaseAppState {
         String what = files.isEmpty() ? "no CSV (" + ExportRun.NOTHING_TO_EXPORT + ")"
                 : files.size() + (files.size() == 1 ? " CSV" : " CSVs");
         if (getApplication().getContext().getType() == JmeContext.Type.Headless) {
-            demo.showNotice("exported " + what + " to " + folder + " (no window: no PNG)");
+            demo.getDemoHud().showNotice("exported " + what + " to " + folder
+                    + " (no window: no PNG)");
             return folder;
         }
         removeCapture();
@@ -112,7 +113,7 @@ public final class ExportState extends BaseAppState {
     @Override
     public void update(float tpf) {
         if (capture != null && (capture.isWritten() || capture.getFailure() != null)) {
-            capturedDemo.showNotice(capture.isWritten() ? pendingNotice
+            capturedDemo.getDemoHud().showNotice(capture.isWritten() ? pendingNotice
                     : pendingNotice.replace(" + " + SCREENSHOT_NAME, "") + "; the PNG failed: "
                             + UsageException.reason(capture.getFailure()));
             removeCapture();
@@ -122,7 +123,7 @@ public final class ExportState extends BaseAppState {
             try {
                 exportNow();
             } catch (IOException | RuntimeException failure) {
-                demo.showNotice("export failed: " + oneLine(failure));
+                demo.getDemoHud().showNotice("export failed: " + oneLine(failure));
             }
         }
     }

@@ -375,7 +375,7 @@ public final class ParticleLabApp extends SimpleApplication {
                 + (log == null ? "(no log could be written)" : log.toString());
         LOGGER.log(Level.WARNING, recovered);
         demo.restart();
-        demo.showNotice(recovered);
+        demo.getDemoHud().showNotice(recovered);
     }
 
     @Override

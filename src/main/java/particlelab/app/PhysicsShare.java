@@ -26,8 +26,8 @@ import particlelab.world.World;
  * {@link DemoCatalog} spends on its simulation, measured headless. Every demo runs in a real
  * jME application in the headless context (no window, no rendering), fixed-step mode, fed a
  * fixed frame time of 1/60 s: some frames of warm-up, then each measured frame's
- * {@link DemoState#advance} is timed with {@link System#nanoTime}. That is the whole
- * simulation side of a frame: the clock, the world's steps (integration, collisions, the
+ * {@link particlelab.demo.DemoWindow#advance} is timed with {@link System#nanoTime}. That is
+ * the whole simulation side of a frame: the clock, the world's steps (integration, collisions, the
  * contact phases), the stability bookkeeping, the demo's own hooks, trails and moving the
  * views; not the HUD text (rebuilt every frame, after the steps) and not rendering. A scene
  * that is over (every particle landed) is restarted between two frames, outside the timing,
@@ -82,7 +82,10 @@ public final class PhysicsShare {
             return name;
         }
 
-        /** @return the particles it simulates ({@link DemoState#countSimulatedParticles}) */
+        /**
+         * @return the particles it simulates
+         *     ({@link particlelab.demo.DemoRun#countSimulatedParticles})
+         */
         public int particles() {
             return particles;
         }
@@ -184,7 +187,7 @@ public final class PhysicsShare {
                 + "fixed frame time of 1/").append(Math.round(1.0 / FRAME_SECONDS))
                 .append(" s: ").append(warmupFrames).append(" frames of warm-up, then ")
                 .append(frames).append(" measured frames. Timed per frame with `System.nanoTime`:"
-                + " the demo's whole `DemoState.advance(tpf)`, the simulation side of a frame "
+                + " the demo's whole `DemoWindow.advance(tpf)`, the simulation side of a frame "
                 + "(the clock, the world's steps with integration, collisions and the contact "
                 + "phases, the stability bookkeeping, the demo's own hooks, trails and moving "
                 + "the views), so it is an upper bound on the physics alone; the HUD text "
@@ -243,7 +246,7 @@ public final class PhysicsShare {
         System.gc();
         for (int frame = 0; frame < warmup; ++frame) {
             restartIfOver(demo);
-            demo.advance(FRAME_SECONDS);
+            demo.getWindow().advance(FRAME_SECONDS);
         }
         StepCounter counter = new StepCounter();
         demo.getWorld().addStepListener(counter);
@@ -252,13 +255,13 @@ public final class PhysicsShare {
         for (int frame = 0; frame < measured; ++frame) {
             restartIfOver(demo);
             long start = System.nanoTime();
-            demo.advance(FRAME_SECONDS);
+            demo.getWindow().advance(FRAME_SECONDS);
             long elapsed = System.nanoTime() - start;
             totalNanos += elapsed;
             longestNanos = Math.max(longestNanos, elapsed);
         }
         demo.getWorld().removeStepListener(counter);
-        return new Row(name, demo.getTitle(), demo.countSimulatedParticles(),
+        return new Row(name, demo.getTitle(), demo.getRun().countSimulatedParticles(),
                 (double) counter.steps / measured, totalNanos / 1e6 / measured,
                 longestNanos / 1e6);
     }

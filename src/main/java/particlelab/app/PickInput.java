@@ -57,12 +57,12 @@ final class PickInput extends BaseAppState implements RawInputListener {
         if (!demo.isInitialized() || demo.getWindow().isHudAt(screenX, screenY)) {
             return false;
         }
-        demo.getDragControl().press(getApplication().getCamera(), screenX, screenY);
-        if (demo.getDragControl().wasClickTaken()) {
+        demo.getWindow().getDragControl().press(getApplication().getCamera(), screenX, screenY);
+        if (demo.getWindow().getDragControl().wasClickTaken()) {
             // a step dot chose the lens's step: nothing to drag, nothing behind to react
             return true;
         }
-        if (demo.getDragControl().getHeld() == null) {
+        if (demo.getWindow().getDragControl().getHeld() == null) {
             return false;
         }
         pressed = demo;
@@ -80,7 +80,7 @@ final class PickInput extends BaseAppState implements RawInputListener {
         if (pressed == null) {
             return false;
         }
-        pressed.getDragControl().move(getApplication().getCamera(), screenX, screenY);
+        pressed.getWindow().getDragControl().move(getApplication().getCamera(), screenX, screenY);
         return true;
     }
 
@@ -93,7 +93,7 @@ final class PickInput extends BaseAppState implements RawInputListener {
         if (pressed == null) {
             return false;
         }
-        pressed.getDragControl().release();
+        pressed.getWindow().getDragControl().release();
         pressed = null;
         return true;
     }

@@ -159,13 +159,13 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
     @Override
     protected void initialize(Application app) {
         demo.getParameters().setPanelListener(this);
-        demo.getDragControl().setListener(this);
+        demo.getWindow().getDragControl().setListener(this);
         demo.getKeys().setPressListener(this);
         demo.getWorld().addStepListener(this);
         // The demo's keys, heard beside the demo's own mappings: a press is written with the
         // label of its key.
         // The bindings build the scene if it was not yet: its settings are then in place.
-        List<KeyBinding> bindings = demo.getBindings();
+        List<KeyBinding> bindings = demo.getKeys().getBindings();
         StringBuilder header = new StringBuilder();
         Recording.writeHeader(demoName, particles, StateShare.settingsOf(demo),
                 demo.getClock().getStepSeconds(), header);
@@ -211,7 +211,7 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
             // the switch came after this state's update: the demo did not run this frame
             --pendingFrames;
             finish("switched to another demo");
-            switcher.getSelected().showNotice("the recording of " + demoName
+            switcher.getSelected().getDemoHud().showNotice("the recording of " + demoName
                     + " ended: another demo was chosen");
             return;
         }
@@ -252,7 +252,7 @@ final class Recorder extends BaseAppState implements DemoParameters.PanelListene
         write(line().append("end ").append(why));
         ended = true;
         demo.getParameters().setPanelListener(null);
-        demo.getDragControl().setListener(null);
+        demo.getWindow().getDragControl().setListener(null);
         demo.getKeys().setPressListener(null);
         demo.getWorld().removeStepListener(this);
         try {

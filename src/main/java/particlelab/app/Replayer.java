@@ -63,7 +63,7 @@ final class Replayer extends BaseAppState implements StepListener {
     Replayer(Recording recording, DemoState demo) {
         this.recording = recording;
         this.demo = demo;
-        this.bindings = demo.getBindings();
+        this.bindings = demo.getKeys().getBindings();
         timer.setFrameSeconds(firstFrameSeconds(recording));
     }
 
@@ -77,9 +77,9 @@ final class Replayer extends BaseAppState implements StepListener {
      * @throws UsageException naming the first line that does not fit
      */
     static void check(Recording recording, DemoState demo, String shown) {
-        List<KeyBinding> bindings = demo.getBindings();
+        List<KeyBinding> bindings = demo.getKeys().getBindings();
         DemoParameters parameters = demo.getParameters();
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         for (Recording.Item item : recording.items) {
             String line = item.source;
             switch (item.kind) {
@@ -314,7 +314,7 @@ final class Replayer extends BaseAppState implements StepListener {
 
     private void play(Recording.Item item) {
         DemoParameters parameters = demo.getParameters();
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         switch (item.kind) {
             case KEY:
                 Object[] key = findKey(bindings, item.text);

@@ -75,7 +75,7 @@ final class ShareKey extends BaseAppState {
         out.flush();
         String head = "C: command printed to the terminal (step " + capture.steps + ", hash "
                 + StateHash.hex(capture.hash).substring(0, 8) + "...; ";
-        demo.showNotice(head + "re-running it to check...)");
+        demo.getDemoHud().showNotice(head + "re-running it to check...)");
         CompletableFuture<StateShare> done = new CompletableFuture<>();
         Application app = getApplication();
         checks.execute(() -> {
@@ -90,7 +90,7 @@ final class ShareKey extends BaseAppState {
             Runnable report = () -> {
                 out.println(share.stateLine());
                 out.flush();
-                demo.showNotice(head + verdict(share));
+                demo.getDemoHud().showNotice(head + verdict(share));
                 done.complete(share);
             };
             if (app == null) {

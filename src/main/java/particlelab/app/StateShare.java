@@ -223,7 +223,7 @@ final class StateShare {
         DemoCommand.applySettings(fresh, settings);
         if (steps == 0L) {
             // the scene declared and started, no step taken (a frame of 0 s takes none)
-            fresh.advancePhysics(0f);
+            fresh.getRun().advancePhysics(0f);
             return StateHash.of(fresh);
         }
         try {
@@ -239,12 +239,11 @@ final class StateShare {
 
     /** The demo's place in the catalogue, by its class. */
     private static int catalogIndex(DemoState demo) {
-        List<DemoCatalog.Entry> entries = DemoCatalog.entries();
-        for (int i = 0; i < entries.size(); ++i) {
-            if (entries.get(i).create().getClass() == demo.getClass()) {
-                return i;
-            }
+        int index = DemoCatalog.indexOfDemo(demo);
+        if (index < 0) {
+            throw new IllegalArgumentException("not a demo of the catalogue: "
+                    + demo.getTitle());
         }
-        throw new IllegalArgumentException("not a demo of the catalogue: " + demo.getTitle());
+        return index;
     }
 }

@@ -120,7 +120,7 @@ final class TourGuide {
         }
         if (switcher.getDemos().size() != DemoCatalog.names().size()) {
             // A window on a few demos (a test's) has not every stop's demo.
-            switcher.getSelected().showNotice("the lecture tour needs every demo: run"
+            switcher.getSelected().getDemoHud().showNotice("the lecture tour needs every demo: run"
                     + " particle-lab tour or particle-lab demo");
             return;
         }
@@ -207,12 +207,12 @@ final class TourGuide {
     void advanceQuestion() {
         DemoState demo = switcher.getSelected();
         if (stop < 0) {
-            demo.showNotice("F4 asks a tour stop's question: start the tour with F7");
+            demo.getDemoHud().showNotice("F4 asks a tour stop's question: start the tour with F7");
             return;
         }
         TourQuestion question = TourQuestions.forStop(stop);
         if (question == null) {
-            demo.showNotice("stop " + (stop + 1) + " has no question yet");
+            demo.getDemoHud().showNotice("stop " + (stop + 1) + " has no question yet");
             return;
         }
         DemoState stopDemo = switcher.getDemos().get(DemoCatalog.indexOf(
@@ -222,7 +222,7 @@ final class TourGuide {
             // Otherwise Tab or a digit switched away: the question is about the stop's scene,
             // and this demo has none of its parameters ("no parameter named e" closed the
             // window, issue 36).
-            demo.showNotice(switcher.isSwitchPending()
+            demo.getDemoHud().showNotice(switcher.isSwitchPending()
                     ? "the stop is still opening: press F4 again"
                     : "F4 asks stop " + (stop + 1) + "'s question in " + stopDemo.getTitle()
                             + ": go back to it first");
@@ -242,7 +242,7 @@ final class TourGuide {
         } else if (vote.isRevealed()) {
             vote = null;
         } else {
-            demo.showNotice("the scene has not shown the answer yet");
+            demo.getDemoHud().showNotice("the scene has not shown the answer yet");
             return;
         }
         ++voteVersion;
@@ -292,7 +292,7 @@ final class TourGuide {
             try {
                 votesFile.record(vote);
             } catch (IOException e) {
-                demo.showNotice("votes not written: " + e.getMessage());
+                demo.getDemoHud().showNotice("votes not written: " + e.getMessage());
             }
         }
         ++voteVersion;
@@ -309,8 +309,9 @@ final class TourGuide {
             return vote != null && !vote.isRevealed();
         }
         if (!vote.vote(digit - 1)) {
-            switcher.getSelected().showNotice("keys 1-" + vote.getQuestion().getAnswers()
-                    .size() + " vote while the question is open; F4 runs the scene");
+            switcher.getSelected().getDemoHud().showNotice("keys 1-"
+                    + vote.getQuestion().getAnswers().size()
+                    + " vote while the question is open; F4 runs the scene");
             return true;
         }
         ++voteVersion;

@@ -603,7 +603,7 @@ public final class TourQuestions {
 
     /** The fountain's own simulation (seeded, as the demo's), stepped without a window. */
     private static int fountainRule(DemoState demo) {
-        int particles = demo.countSimulatedParticles();
+        int particles = demo.getRun().countSimulatedParticles();
         return inFlightShare(liveAfter(demo.getParameters().getValue("h"), particles),
                 particles);
     }

@@ -160,13 +160,13 @@ public final class WindowControls extends BaseAppState {
         float next = HudScale.step(uiFactor, steps);
         DemoState demo = switcher.getSelected();
         if (next == uiFactor) {
-            demo.showNotice("HUD factor x" + uiFactor + " is the " + (steps > 0 ? "largest"
-                    : "smallest") + " (" + HudScale.MIN_FACTOR + " to " + HudScale.MAX_FACTOR
-                    + ")");
+            demo.getDemoHud().showNotice("HUD factor x" + uiFactor + " is the "
+                    + (steps > 0 ? "largest" : "smallest") + " (" + HudScale.MIN_FACTOR + " to "
+                    + HudScale.MAX_FACTOR + ")");
             return;
         }
         uiFactor = next;
-        demo.showNotice("HUD factor x" + uiFactor);
+        demo.getDemoHud().showNotice("HUD factor x" + uiFactor);
     }
 
     private void toggleFullscreen() {
@@ -174,7 +174,7 @@ public final class WindowControls extends BaseAppState {
         JmeContext context = app.getContext();
         DemoState demo = switcher.getSelected();
         if (context.getType() != JmeContext.Type.Display) {
-            demo.showNotice("fullscreen needs a window (this run has none)");
+            demo.getDemoHud().showNotice("fullscreen needs a window (this run has none)");
             return;
         }
         AppSettings settings = new AppSettings(false);
@@ -187,7 +187,7 @@ public final class WindowControls extends BaseAppState {
             windowedHeight = app.getCamera().getHeight();
             GLFWVidMode mode = GLFW.glfwGetVideoMode(GLFW.glfwGetPrimaryMonitor());
             if (mode == null) {
-                demo.showNotice("fullscreen: no monitor found");
+                demo.getDemoHud().showNotice("fullscreen: no monitor found");
                 return;
             }
             settings.setResolution(mode.width(), mode.height());

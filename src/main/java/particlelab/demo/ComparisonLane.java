@@ -442,7 +442,7 @@ public final class ComparisonLane implements DemoPart {
         if (particle == null) {
             return;
         }
-        ParticleView view = demo.getView(particle);
+        ParticleView view = demo.getWindow().getView(particle);
         if (view != null) {
             view.getNode().setCullHint(kind == Kind.OFF ? Spatial.CullHint.Always
                     : Spatial.CullHint.Inherit);
@@ -719,7 +719,7 @@ public final class ComparisonLane implements DemoPart {
             return text.append("-");
         }
         double metres = Math.hypot(dx, dy);
-        PlaneView view = demo.getPlaneView();
+        PlaneView view = demo.getWindow().getPlaneView();
         double pixels = ScreenError.pixels(view, dx, dy);
         double radii = ScreenError.radii(metres, radiusMetres);
         if (withMetres) {

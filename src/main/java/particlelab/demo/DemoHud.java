@@ -3,9 +3,6 @@ package particlelab.demo;
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
 import com.jme3.input.KeyInput;
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import particlelab.view.HudScale;
 import particlelab.view.HudView;
 
@@ -14,9 +11,9 @@ import particlelab.view.HudView;
  * {@link StringBuilder}s (every frame by default, or less often), the band the body takes
  * and the scene's area that follows it, the window size and the user's factor it was laid
  * out for, a tour stop's note, and presentation mode (the slide instead of the body, its
- * footer). The demo writes the lines ({@link DemoState#formatHud},
- * {@link DemoState#formatPresentation}); this class decides when and lays them out. The
- * application reaches it through {@link DemoState#getDemoHud()}.
+ * footer), and the short notices the HUD shows for a few seconds. The demo writes the lines
+ * ({@link DemoWindow#formatHud}, {@link DemoWindow#formatPresentation}); this class decides
+ * when and lays them out. The application reaches it through {@link DemoState#getDemoHud()}.
  */
 public final class DemoHud {
 
@@ -28,6 +25,7 @@ public final class DemoHud {
     private final DemoKeys keys;
     private final ParameterControls parameterControls;
     private final StepWarnings warnings;
+    private final HudWriter hudWriter;
     private final String title;
     private final StringBuilder hudText = new StringBuilder(2048);
     private final StringBuilder warningText = new StringBuilder(256);
@@ -55,7 +53,6 @@ public final class DemoHud {
     private int laidOutWidth;
     private int laidOutHeight;
     private float uiScale = 1f;
-    private List<KeyBinding> applicationBindings = Collections.emptyList();
 
     /**
      * Create the HUD of a demo; its view comes with {@link #build}.
@@ -66,15 +63,17 @@ public final class DemoHud {
      * @param keys the demo's keys, for the footer (not null)
      * @param parameterControls the panel, whose state the slide's footer names (not null)
      * @param warnings the step warnings shown under the body (not null)
+     * @param hudWriter the lines every demo shows, the notice among them (not null)
      */
     DemoHud(DemoState demo, String title, DemoScene scene, DemoKeys keys,
-            ParameterControls parameterControls, StepWarnings warnings) {
+            ParameterControls parameterControls, StepWarnings warnings, HudWriter hudWriter) {
         this.demo = demo;
         this.title = title;
         this.scene = scene;
         this.keys = keys;
         this.parameterControls = parameterControls;
         this.warnings = warnings;
+        this.hudWriter = hudWriter;
         titleText.append(title);
     }
 
@@ -101,7 +100,7 @@ public final class DemoHud {
      * then lines are hidden (HudScale, HudLayout).
      */
     void layOutFirst() {
-        hud.setBody(demo.formatHud(hudText));
+        hud.setBody(demo.getWindow().formatHud(hudText));
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
         layOutScene();
@@ -117,9 +116,15 @@ public final class DemoHud {
         dirty = true;
     }
 
-    /** @param bindings the application's keys, for the slide's footer (not null, copied) */
-    void setApplicationBindings(List<KeyBinding> bindings) {
-        applicationBindings = new ArrayList<>(bindings);
+    /** @param text a short notice for the HUD, shown a few seconds (one non-empty line) */
+    public void showNotice(String text) {
+        hudWriter.showNotice(text);
+        markDirty();
+    }
+
+    /** @return the notice on the HUD now, or null if none is up */
+    public String getNotice() {
+        return hudWriter.getNotice();
     }
 
     /** @param number the demo's place in the catalogue (&ge;1) */
@@ -311,11 +316,11 @@ public final class DemoHud {
     /** The slide's formulas and readout while presenting, else the full body. */
     private void writeBody() {
         if (presenting) {
-            demo.formatPresentation();
+            demo.getWindow().formatPresentation();
             hud.setBody(presentation.getFormulas());
             hud.setReadout(presentation.getReadout());
         } else {
-            hud.setBody(demo.formatHud(hudText));
+            hud.setBody(demo.getWindow().formatHud(hudText));
         }
     }
 
@@ -369,13 +374,10 @@ public final class DemoHud {
 
     /** Append an application key's label and what it does here, if the application has it. */
     private void appendApplicationKey(StringBuilder footer, int keyCode, String what) {
-        for (int i = 0; i < applicationBindings.size(); ++i) {
-            KeyBinding binding = applicationBindings.get(i);
-            if (binding.getKeyCode(0) == keyCode) {
-                footer.append(footer.length() == 0 ? "" : "     ")
-                        .append(binding.getKeyLabel()).append("  ").append(what);
-                return;
-            }
+        KeyBinding binding = keys.findApplicationKey(keyCode);
+        if (binding != null) {
+            footer.append(footer.length() == 0 ? "" : "     ")
+                    .append(binding.getKeyLabel()).append("  ").append(what);
         }
     }
 

@@ -37,6 +37,8 @@ public final class DemoKeys {
     private boolean exportRequested;
     /** Hears the panel's buttons and the export requests (a recording), or null. */
     private PressListener pressListener;
+    /** Declares the demo's scene, and with it its keys, if not done yet. */
+    private final Runnable declareScene;
 
     /** Hears what a recording needs beyond the mapped keys: the panel's buttons, exports. */
     public interface PressListener {
@@ -49,6 +51,21 @@ public final class DemoKeys {
 
         /** An export was asked for (the E key or the panel's Export button). */
         void exportRequested();
+    }
+
+    /** Create the keys of a demo without a scene to declare (a test of the keys alone). */
+    DemoKeys() {
+        this(() -> { });
+    }
+
+    /**
+     * Create the keys of a demo.
+     *
+     * @param declareScene declares the demo's scene, and with it its keys, if not done yet
+     *     (not null; run before the bindings are read)
+     */
+    DemoKeys(Runnable declareScene) {
+        this.declareScene = declareScene;
     }
 
     /**
@@ -72,29 +89,58 @@ public final class DemoKeys {
      * @return the new binding (not null)
      */
     KeyBinding addOwn(int keyCode, String keyLabel, String description, Runnable action) {
-        return addOwn(new KeyBinding(keyCode, keyLabel, description, action));
+        return bindKeys(new KeyBinding(keyCode, keyLabel, description, action));
     }
 
     /**
-     * Declare keys of the demo's own that share one action and one help row.
+     * Declare keys of the demo's own that share one action and one help row (a key pair, a
+     * group). Call from the demo's {@code declareKeys()}.
      *
      * @param binding the keys, none reserved nor bound yet (not null)
      * @return binding
      */
-    KeyBinding addOwn(KeyBinding binding) {
+    public KeyBinding bindKeys(KeyBinding binding) {
         add(own, binding);
         return binding;
     }
 
     /**
-     * Replace the application's keys, listed in the help overlay only; the demo may not bind
-     * them. Call before the demo declares its keys.
+     * Tell the demo the keys the application handles (the help, the footer, the panel, the
+     * slide's footer), which it may not bind. Call before the demo declares its keys (before
+     * its initialisation).
      *
      * @param bindings the application's keys (not null, copied)
      */
-    void setApplication(List<KeyBinding> bindings) {
+    public void setApplicationBindings(List<KeyBinding> bindings) {
         application.clear();
         application.addAll(bindings);
+    }
+
+    /**
+     * Find the application's key with a key code.
+     *
+     * @param keyCode a {@link KeyInput} code
+     * @return the application's binding whose first key it is, or null if none
+     */
+    KeyBinding findApplicationKey(int keyCode) {
+        for (int i = 0; i < application.size(); ++i) {
+            KeyBinding binding = application.get(i);
+            if (binding.getKeyCode(0) == keyCode) {
+                return binding;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * Copy every key the demo responds to, its scene declared first: the shared ones, then
+     * its own.
+     *
+     * @return a new list (not null)
+     */
+    public List<KeyBinding> getBindings() {
+        declareScene.run();
+        return copyMapped();
     }
 
     /**
@@ -128,11 +174,12 @@ public final class DemoKeys {
     }
 
     /**
-     * Name the key that fires or launches, so the panel gets a Fire button for it.
+     * Name the key that fires or launches, so the panel gets a Fire button for it. Call from
+     * the demo's {@code declareKeys()}.
      *
      * @param binding one of the demo's bindings (not null)
      */
-    void setFireKey(KeyBinding binding) {
+    public void setFireKey(KeyBinding binding) {
         fireKey = binding;
     }
 

@@ -177,6 +177,8 @@ public final class DemoRun {
     private final List<BooleanSupplier> motionsBeside = new ArrayList<>();
     private float pendingHitchSeconds;
     private int blowUps;
+    /** The most particles a simulation beside the world steps ({@link #addSimulation}). */
+    private int simulationParticles;
     /** A restart asked for inside a step: done once the frame's steps are over. */
     private boolean restartRequested;
 
@@ -216,16 +218,35 @@ public final class DemoRun {
     }
 
     /**
-     * Add a simulation beside the world, stepped right after it with every step; one that is
-     * a {@link StateRecord} goes into the ring with the world.
+     * Add a simulation beside the world, stepped right after it with every step of the same
+     * clock: a second world or a packed batch (the fountain); one that is a
+     * {@link StateRecord} goes into the ring with the world. Its listeners observe, they move
+     * nothing. Call in the demo's {@code createScene()}.
      *
      * @param simulation what takes each step (not null)
      */
-    void addSimulation(SimulationClock.Stepper simulation) {
+    public void addSimulation(SimulationClock.Stepper simulation) {
+        addSimulation(simulation, 0);
+    }
+
+    /**
+     * Add a simulation beside the world as {@link #addSimulation(SimulationClock.Stepper)}
+     * does, that steps particles of its own (no bodies of the world): the count
+     * {@link #countSimulatedParticles} reports.
+     *
+     * @param simulation what takes each step (not null)
+     * @param particleCount how many particles it steps (&ge;0)
+     */
+    public void addSimulation(SimulationClock.Stepper simulation, int particleCount) {
         if (simulation == null) {
             throw new IllegalArgumentException("simulation must be a stepper, but was null");
         }
+        if (particleCount < 0) {
+            throw new IllegalArgumentException("a simulation's particle count must be >= 0,"
+                    + " but was " + particleCount);
+        }
         simulations.add(simulation);
+        simulationParticles = Math.max(simulationParticles, particleCount);
         if (simulation instanceof StateRecord) {
             stateRecords.add((StateRecord) simulation);
         }
@@ -266,6 +287,17 @@ public final class DemoRun {
             throw new IllegalArgumentException("motion to wait for must not be null");
         }
         motionsBeside.add(stillMoving);
+    }
+
+    /**
+     * Count the particles this run simulates ({@code demo --profile}, the report, the tour):
+     * the world's bodies, the demo's particles or a simulation's beside the world, whichever
+     * are more.
+     *
+     * @return the count (&ge;0)
+     */
+    public int countSimulatedParticles() {
+        return Math.max(Math.max(particles.size(), world.countBodies()), simulationParticles);
     }
 
     /**

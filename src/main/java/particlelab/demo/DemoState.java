@@ -10,9 +10,6 @@ import java.util.List;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SimulationClock;
 import particlelab.view.HudLayout;
-import particlelab.view.HudView;
-import particlelab.view.ParticleView;
-import particlelab.view.PlaneView;
 import particlelab.view.TextFormat;
 import particlelab.world.StateRecord;
 import particlelab.world.StepListener;
@@ -43,11 +40,20 @@ import particlelab.world.World;
  * rebuilt in a reused {@link StringBuilder}; a whole frame allocates nothing.
  *
  * <h2>Beside it</h2>
- * {@code DemoRun} (the physics, no jME), {@code DemoWindow} (the views in a window),
- * {@code DemoScene} and {@code SceneFraming} (region, grid, posts, particle views, camera),
- * {@code DemoHud} and {@code HudWriter} (HUD, layout, presentation mode), {@code DemoKeys}
- * and {@code SharedKeys}, {@code ParameterControls} (the panel, the kept shots),
- * {@code ReplayControls}, {@code DemoMouse}, {@code ExactGhosts}, and the {@link DemoPart}s.
+ * This class's own members are what a demo writes and calls: the hooks, the tools, the
+ * scene's parts ({@link #getWorld()}, {@link #getClock()}, {@link #getParticles()},
+ * {@link #getParameters()}, {@link #getSceneNode()}, {@link #restart()}) and the jME
+ * lifecycle (at most 46, {@code DemoStateSourceTest}). The rest is the owners', reached from
+ * the demo: {@link #getRun()} ({@link DemoRun}: the physics, no jME; a frame's steps, a
+ * simulation beside the world, the count of particles simulated), {@link #getWindow()}
+ * ({@link DemoWindow}: a frame with its views, a particle's view, the HUD's view, the plane's
+ * mapping, the mouse's drags, the blend the views draw with, the frame's top, the HUD's text
+ * and slide), {@link #getDemoHud()} ({@link DemoHud}: notices, notes, layout, presentation
+ * mode), {@link #getKeys()} ({@link DemoKeys}: the bindings, the application's keys, a key
+ * group, the fire key, the help) and {@link #getReplayControls()} (step back and forward,
+ * F6). Behind them: {@code DemoScene} and {@code SceneFraming} (region, grid, posts, particle
+ * views, camera), {@code HudWriter}, {@code SharedKeys}, {@code ParameterControls} (the panel,
+ * the kept shots), {@code DemoMouse}, {@code ExactGhosts}, and the {@link DemoPart}s.
  */
 public abstract class DemoState extends BaseAppState {
 
@@ -112,7 +118,7 @@ public abstract class DemoState extends BaseAppState {
     private final DemoScene scene = new DemoScene(particles);
     private final SceneFraming framing = new SceneFraming(this, scene, particles, clock);
     private final ExactGhosts ghosts = new ExactGhosts(particles);
-    private final DemoKeys keys = new DemoKeys();
+    private final DemoKeys keys = new DemoKeys(this::ensureScene);
     private final ParameterControls parameterControls =
             new ParameterControls(run.getParameterValues());
     private final HudWriter hudWriter = new HudWriter(clock, particles);
@@ -150,7 +156,7 @@ public abstract class DemoState extends BaseAppState {
         this.title = title;
         this.sceneNode = new Node(title + " scene");
         this.demoHud = new DemoHud(this, title, scene, keys, parameterControls,
-                run.getWarnings());
+                run.getWarnings(), hudWriter);
         this.replayControls = new ReplayControls(run, scene, hudWriter, demoHud);
         this.window = new DemoWindow(this, run, scene, framing, ghosts, keys, parameterControls,
                 parts, demoHud, mouse, hudWriter, sceneNode);
@@ -285,16 +291,6 @@ public abstract class DemoState extends BaseAppState {
     public void collectExportTables(List<StepTable> storeResult) {
     }
 
-    /**
-     * Count the particles this demo simulates ({@code demo --profile}, the report): its
-     * world's bodies or its particles, whichever are more; a packed batch's demo overrides it.
-     *
-     * @return the count (&ge;0)
-     */
-    public int countSimulatedParticles() {
-        return Math.max(particles.size(), world.countBodies());
-    }
-
     // ------------------------------------------------------- tools for createScene etc. ----
 
     /**
@@ -332,17 +328,6 @@ public abstract class DemoState extends BaseAppState {
     protected void setView(float xMin, float xMax, float yMax, float gridSpacingMetres,
             int labelEvery, float sphereRadiusMetres) {
         scene.setRegion(xMin, xMax, yMax, gridSpacingMetres, labelEvery, sphereRadiusMetres);
-    }
-
-    /**
-     * Frame less than the whole region: up to a height (e.g. the apex of the shot in the
-     * air), at most the region's top. Call from {@link #createScene()} or later; the camera
-     * is reframed at once.
-     *
-     * @param topMetres the top edge to frame (in metres, finite, &gt;0)
-     */
-    protected void setViewTop(float topMetres) {
-        framing.setTop(topMetres);
     }
 
     /**
@@ -387,16 +372,6 @@ public abstract class DemoState extends BaseAppState {
         return keys.addOwn(keyCode, keyLabel, description, action);
     }
 
-    /** @param binding a key pair or group of one action, one help row (not null, not bound) */
-    protected KeyBinding bindKeys(KeyBinding binding) {
-        return keys.addOwn(binding);
-    }
-
-    /** @param binding the demo's key that fires or launches: the panel's Fire (not null) */
-    protected void setFireKey(KeyBinding binding) {
-        keys.setFireKey(binding);
-    }
-
     /**
      * Declare a parameter. Call from {@link #declareParameters()}.
      *
@@ -415,17 +390,6 @@ public abstract class DemoState extends BaseAppState {
      */
     protected Draggable declareDraggable(Draggable draggable) {
         return mouse.getDrags().add(draggable);
-    }
-
-    /**
-     * Add a simulation beside the demo's world, stepped right after it with every step of the
-     * same clock: a second world (Bounce's other detection lane) or a packed batch (the
-     * fountain). Its listeners observe, they move nothing. Call in {@link #createScene()}.
-     *
-     * @param simulation what takes each step (not null)
-     */
-    protected void addSimulation(SimulationClock.Stepper simulation) {
-        run.addSimulation(simulation);
     }
 
     /**
@@ -497,14 +461,6 @@ public abstract class DemoState extends BaseAppState {
         ghosts.enable();
     }
 
-    /**
-     * Say that this demo's own views draw the raw physics steps, not the interpolated picture
-     * of F6 (the fountain's points, the rotating boxes), so the HUD's stepping line says so.
-     */
-    protected void drawsRawSteps() {
-        replay.drawsRawSteps();
-    }
-
     /** Start with the velocity arrows hidden (fast balls); the V key still shows them. */
     protected void hideArrowsAtStart() {
         if (scene.areArrowsVisible()) {
@@ -520,27 +476,11 @@ public abstract class DemoState extends BaseAppState {
         demoHud.markDirty();
     }
 
-    /**
-     * @return the blend the views draw with this frame, {@code α = leftover / h} between the
-     *     last two physics states, or 1 (interpolation off, raw tpf, paused, replaying)
-     */
-    protected float getDrawBlend() {
-        return replay.getFrameBlend();
-    }
-
     // ----------------------------------------------------------------------- public API ----
 
     /** @return the demo's name, shown in the HUD and the demo list (not null) */
     public String getTitle() {
         return title;
-    }
-
-    /**
-     * @param particle one of this demo's particles (not null)
-     * @return its view: sphere, label, trail, arrow (live; null before a window built it)
-     */
-    public ParticleView getView(DemoParticle particle) {
-        return scene.viewOf(particle);
     }
 
     /** @return the node holding the demo's scene, for extra geometry (live, not null) */
@@ -591,65 +531,6 @@ public abstract class DemoState extends BaseAppState {
         return particles;
     }
 
-    /** @return every key the demo responds to: shared, then the demo's (a new list) */
-    public List<KeyBinding> getBindings() {
-        ensureScene();
-        return keys.copyMapped();
-    }
-
-    /** @return the HUD (live, null before initialisation) */
-    public HudView getHud() {
-        return demoHud.getView();
-    }
-
-    /** @return the mouse's control of the bodies: pick, drag, release (live, not null) */
-    public DragControl getDragControl() {
-        ensureScene();
-        return mouse.getDrags();
-    }
-
-    /** @return the mapping of the scene's plane to the window, as last laid out (live) */
-    public PlaneView getPlaneView() {
-        return scene.getPlaneView();
-    }
-
-    /**
-     * Tell the demo the keys the application handles (the help, footer, panel), which it may
-     * not bind. Call before initialisation.
-     *
-     * @param bindings the application's keys (not null, copied)
-     */
-    public void setApplicationBindings(List<KeyBinding> bindings) {
-        keys.setApplication(bindings);
-        demoHud.setApplicationBindings(bindings);
-    }
-
-    /** @param text a short notice for the HUD, shown a few seconds (one non-empty line) */
-    public void showNotice(String text) {
-        hudWriter.showNotice(text);
-        demoHud.markDirty();
-    }
-
-    /** @return the notice on the HUD now, or null if none is up */
-    public String getNotice() {
-        return hudWriter.getNotice();
-    }
-
-    /**
-     * @param storeResult storage for the HUD's body text (not null, cleared and modified)
-     * @return storeResult: every demo's lines, the demo's, its parts', the note (no allocation)
-     */
-    public StringBuilder formatHud(StringBuilder storeResult) {
-        ensureScene();
-        return window.formatHud(storeResult);
-    }
-
-    /** @return the slide of presentation mode, the demo's then its parts' (live, reused) */
-    public Presentation formatPresentation() {
-        ensureScene();
-        return window.formatPresentation();
-    }
-
     /**
      * Put every particle back to its launch state and the clock to zero ({@link DemoRun#restart}
      * says when); keeps the stepping mode, time scale, pause and camera.
@@ -659,40 +540,23 @@ public abstract class DemoState extends BaseAppState {
     }
 
     /**
-     * Advance the simulation by one frame, then the demo's and its parts' frame hooks and the
-     * views (in a window): {@link #update} without the HUD. Allocates nothing.
-     *
-     * @param tpf the frame time (in seconds, finite, &ge;0)
+     * @return the views in a window: built, attached, the rectangles shown; a frame's
+     *     {@code advance} (live; the scene declared)
      */
-    public void advance(float tpf) {
-        advancePhysics(tpf);
-        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
-        replay.updateFrameBlend(run.isSceneOver());
-        parts.afterFrame();
-        world.getImpacts().clear();
-        window.drawFrame(replay.updateFrameBlend(run.isSceneOver()), tpf);
-    }
-
-    /**
-     * Advance the physics by one frame ({@link DemoRun#advancePhysics}), touching no view.
-     *
-     * @param tpf the frame time (in seconds, finite, &ge;0)
-     */
-    public void advancePhysics(float tpf) {
-        run.advancePhysics(tpf);
-    }
-
-    /** @return the views in a window: built, attached, the rectangles shown (live) */
     public DemoWindow getWindow() {
+        ensureScene();
         return window;
     }
 
-    /** @return the HUD's controls: title, notes, layout, presentation mode (live) */
+    /** @return the HUD's controls: notices, title, notes, layout, presentation mode (live) */
     public DemoHud getDemoHud() {
         return demoHud;
     }
 
-    /** @return the keys: the help, the demos by number, an export asked for (live) */
+    /**
+     * @return the keys: the bindings, the application's, a key group, the fire key, the help,
+     *     the demos by number, an export asked for (live)
+     */
     public DemoKeys getKeys() {
         return keys;
     }
@@ -728,7 +592,7 @@ public abstract class DemoState extends BaseAppState {
 
     @Override
     public void update(float tpf) {
-        advance(tpf);
+        window.advance(tpf);
         window.update(tpf);
     }
 

@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import particlelab.view.HudFont;
 import particlelab.view.HudView;
+import particlelab.view.ParticleView;
+import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
 import particlelab.view.TextFormat;
 
@@ -87,13 +89,82 @@ public final class DemoWindow {
     }
 
     /**
+     * Advance the demo by one frame: the physics ({@link DemoRun#advancePhysics}), then the
+     * demo's and its parts' frame hooks ({@code afterFrame}), then the views in a window (none
+     * without one): {@link DemoState#update} without the HUD. Allocates nothing.
+     *
+     * @param tpf the frame time (in seconds, finite, &ge;0)
+     */
+    public void advance(float tpf) {
+        run.advancePhysics(tpf);
+        Replay replay = run.getReplay();
+        // This frame's blend, for the demo's own views in afterFrame (getDrawBlend).
+        replay.updateFrameBlend(run.isSceneOver());
+        parts.afterFrame();
+        run.getWorld().getImpacts().clear();
+        drawFrame(replay.updateFrameBlend(run.isSceneOver()), tpf);
+    }
+
+    /**
+     * @return the blend the views draw with this frame, {@code α = leftover / h} between the
+     *     last two physics states, or 1 (interpolation off, raw tpf, paused, replaying): for
+     *     a demo's own views in its {@code afterFrame}
+     */
+    public float getDrawBlend() {
+        return run.getReplay().getFrameBlend();
+    }
+
+    /**
+     * Say that the demo's own views draw the raw physics steps, not the interpolated picture
+     * of F6 (the fountain's points, the rotating boxes), so the HUD's stepping line says so.
+     * Call from the demo's {@code createScene()}.
+     */
+    public void drawsRawSteps() {
+        run.getReplay().drawsRawSteps();
+    }
+
+    /** @return the HUD (live, null before initialisation) */
+    public HudView getHud() {
+        return demoHud.getView();
+    }
+
+    /**
+     * @param particle one of the demo's particles (not null)
+     * @return its view: sphere, label, trail, arrow (live; null before a window built it)
+     */
+    public ParticleView getView(DemoParticle particle) {
+        return scene.viewOf(particle);
+    }
+
+    /** @return the mapping of the scene's plane to the window, as last laid out (live) */
+    public PlaneView getPlaneView() {
+        return scene.getPlaneView();
+    }
+
+    /** @return the mouse's control of the bodies: pick, drag, release (live, not null) */
+    public DragControl getDragControl() {
+        return mouse.getDrags();
+    }
+
+    /**
+     * Frame less than the whole region: up to a height (e.g. the apex of the shot in the
+     * air), at most the region's top. Call from the demo's {@code createScene()} or later;
+     * the camera is reframed at once.
+     *
+     * @param topMetres the top edge to frame (in metres, finite, &gt;0)
+     */
+    public void setViewTop(float topMetres) {
+        framing.setTop(topMetres);
+    }
+
+    /**
      * Write the HUD's body text: the lines every demo shows, the demo's own, its parts', then
      * the note (a tour stop's). Allocates nothing.
      *
      * @param storeResult storage for the text (not null, cleared and modified)
      * @return storeResult
      */
-    StringBuilder formatHud(StringBuilder storeResult) {
+    public StringBuilder formatHud(StringBuilder storeResult) {
         hudWriter.write(storeResult, run.isSceneOver());
         parts.writeHudLines(storeResult);
         HudNote note = demoHud.getNote();
@@ -114,7 +185,7 @@ public final class DemoWindow {
      *
      * @return the slide (live: rewritten by the next call or frame)
      */
-    Presentation formatPresentation() {
+    public Presentation formatPresentation() {
         Presentation slide = demoHud.getSlide();
         slide.clear();
         parts.writePresentation(slide);
@@ -271,7 +342,7 @@ public final class DemoWindow {
         guiRoot.attachChild(demoHud.getView().getNode());
         guiRoot.attachChild(ghosts.getGraphNode());
         guiRoot.attachChild(parameterControls.getPanel().getNode());
-        keyMappings.map(app.getInputManager(), demo.getBindings());
+        keyMappings.map(app.getInputManager(), keys.copyMapped());
         framing.frameCamera();
         demoHud.markDirty();
     }

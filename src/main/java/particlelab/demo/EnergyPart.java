@@ -201,14 +201,14 @@ public final class EnergyPart implements DemoPart {
      */
     @Override
     public void afterFrame() {
-        if (bars == null || demo.getHud() == null) {
+        if (bars == null || demo.getWindow().getHud() == null) {
             return;
         }
         if (bars.getNode().getParent() == null) {
             // The HUD's node comes and goes with the demo: the bars with it.
-            demo.getHud().getNode().attachChild(bars.getNode());
+            demo.getWindow().getHud().getNode().attachChild(bars.getNode());
         }
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         boolean wanted = isDrawn() && hasLedger();
         int rows = wanted ? writeBars() : 0;
         boolean presenting = demo.getDemoHud().isPresenting();
@@ -223,7 +223,7 @@ public final class EnergyPart implements DemoPart {
             barsHeight = wanted ? bars.heightFor(rows, size) : 0f;
             askStrip();
         }
-        boolean visible = wanted && !demo.getHud().isHelpVisible();
+        boolean visible = wanted && !demo.getWindow().getHud().isHelpVisible();
         bars.setVisible(visible);
         if (!visible) {
             return;
@@ -294,10 +294,10 @@ public final class EnergyPart implements DemoPart {
      * @return storeResult
      */
     ScreenRect copyBelowBars(ScreenRect storeResult) {
-        if (demo.getHud() == null) {
+        if (demo.getWindow().getHud() == null) {
             return storeResult.set(0f, 0f, 0f, 0f);
         }
-        return splitStrip(demo.getHud().getLayout(), false, storeResult);
+        return splitStrip(demo.getWindow().getHud().getLayout(), false, storeResult);
     }
 
     /**
@@ -433,14 +433,14 @@ public final class EnergyPart implements DemoPart {
 
     /** Ask the layout for a strip that holds the bars and the view below them, if any. */
     private void askStrip() {
-        if (demo.getHud() == null) {
+        if (demo.getWindow().getHud() == null) {
             return;
         }
         boolean both = barsHeight > 0f && belowHeight > 0f;
         float width = Math.max(barsHeight > 0f ? barsWidth : 0f,
                 belowHeight > 0f ? belowWidth : 0f);
         float height = barsHeight + belowHeight + (both ? HudLayout.MARGIN : 0f);
-        demo.getHud().getLayout().setLedgerSize(width, width > 0f ? height : 0f);
+        demo.getWindow().getHud().getLayout().setLedgerSize(width, width > 0f ? height : 0f);
         demo.getWindow().relayOutPanel();
     }
 

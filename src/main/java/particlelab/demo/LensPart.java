@@ -171,7 +171,7 @@ public final class LensPart implements DemoPart {
         }
         graph = new LensGraph(app.getAssetManager(), HudFont.load(app.getAssetManager()));
         graph.setVisible(false);
-        demo.getDragControl().addClickTarget(this::clickStepDot);
+        demo.getWindow().getDragControl().addClickTarget(this::clickStepDot);
     }
 
     /**
@@ -357,12 +357,12 @@ public final class LensPart implements DemoPart {
      */
     private void drawGraph(boolean looking) {
         EnergyPart strip = demo.getEnergyPart();
-        if (demo.getHud() == null || strip == null) {
+        if (demo.getWindow().getHud() == null || strip == null) {
             return;
         }
         if (graph.getNode().getParent() == null) {
             // The HUD's node comes and goes with the demo: the graph with it.
-            demo.getHud().getNode().attachChild(graph.getNode());
+            demo.getWindow().getHud().getNode().attachChild(graph.getNode());
         }
         boolean wanted = looking && readSteps();
         boolean presenting = demo.getDemoHud().isPresenting();
@@ -374,12 +374,12 @@ public final class LensPart implements DemoPart {
         }
         strip.askBelowBars(wanted ? graph.widthFor(size) : 0f,
                 wanted ? graph.heightFor(size) : 0f);
-        boolean visible = wanted && !demo.getHud().isHelpVisible();
+        boolean visible = wanted && !demo.getWindow().getHud().isHelpVisible();
         graph.setVisible(visible);
         if (!visible) {
             return;
         }
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         strip.copyBelowBars(graphSlot);
         float textSize = layout.isPresenting()
                 ? PRESENT_TEXT_FRACTION * layout.getBodySize() : layout.getSceneLabelSize();

@@ -7,7 +7,7 @@ import particlelab.physics.SimulationClock;
  * The camera's frame of a demo's scene, beside its base class: the declared region, widened
  * to what the launches reach ({@link LaunchReach}: each grounded particle in flight flown
  * ahead with its own integrator and h), or narrowed to a top the demo chose
- * ({@link DemoState#setViewTop}); the scene's texts laid out again and the application's
+ * ({@link DemoWindow#setViewTop}); the scene's texts laid out again and the application's
  * camera reframed whenever the frame changed. Only a launch, a reset or a new top reframes,
  * never a frame of its own.
  */
@@ -49,8 +49,8 @@ final class SceneFraming {
      */
     void setTop(float topMetres) {
         scene.setFrameTop(topMetres);
-        if (demo.getHud() != null) {
-            scene.layOut(demo.getHud().getLayout());
+        if (demo.getWindow().getHud() != null) {
+            scene.layOut(demo.getWindow().getHud().getLayout());
             if (demo.isEnabled()) {
                 frameCamera();
             }
@@ -71,8 +71,8 @@ final class SceneFraming {
                 reach.include(particle, clock.getStepSeconds());
             }
         }
-        if (scene.frameReach(reach) && demo.getHud() != null) {
-            scene.layOut(demo.getHud().getLayout());
+        if (scene.frameReach(reach) && demo.getWindow().getHud() != null) {
+            scene.layOut(demo.getWindow().getHud().getLayout());
             scene.updateViews();
             if (demo.isEnabled()) {
                 frameCamera();

@@ -31,7 +31,8 @@ final class SharedKeys {
             ExactGhosts ghosts, HudWriter hudWriter, ParameterControls parameterControls) {
         SimulationClock clock = run.getClock();
         keys.addShared(new KeyBinding(KeyInput.KEY_H, "H", "show / hide this help",
-                () -> demo.getHud().setHelpVisible(!demo.getHud().isHelpVisible()))
+                () -> demo.getWindow().getHud().setHelpVisible(
+                        !demo.getWindow().getHud().isHelpVisible()))
                 .withSummary("help"));
         KeyBinding pause = keys.addShared(new KeyBinding(KeyInput.KEY_SPACE, "Space",
                 "pause / resume the simulation (the camera keeps moving)",

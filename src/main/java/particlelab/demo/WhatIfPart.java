@@ -101,7 +101,7 @@ public final class WhatIfPart implements DemoPart {
         // One help row for the three (the help stays legible at 1280x720): Insert forks a
         // lane (up to MAX_LANES; once more drops them), Delete offers the next change, J
         // keeps the newest lane (the run goes on from it, with its change).
-        forkKey = demo.bindKeys(new KeyBinding(
+        forkKey = demo.getKeys().bindKeys(new KeyBinding(
                 new int[] {KeyInput.KEY_INSERT, KeyInput.KEY_DELETE, KeyInput.KEY_J},
                 new String[] {"Insert", "Delete", "J"},
                 "what if: fork a lane, next change, keep the newest", null, key -> {

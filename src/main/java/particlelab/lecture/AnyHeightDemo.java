@@ -344,7 +344,7 @@ public final class AnyHeightDemo extends DemoState {
     /**
      * Show the shots' new angles before the frame: jME rebuilds a text's mesh when its text
      * changes, which allocates, so this happens here, once per change, and not in the
-     * allocation-free {@link #advance}.
+     * allocation-free {@link particlelab.demo.DemoWindow#advance}.
      */
     @Override
     public void update(float tpf) {

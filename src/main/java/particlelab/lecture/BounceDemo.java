@@ -283,12 +283,13 @@ public final class BounceDemo extends DemoState {
         if (graph == null) {
             return;
         }
-        graph.setVisible(!getHud().isHelpVisible());
-        ScreenRect slot = getHud().getLayout().getGraph();
-        if (!sameRect(slot, graphRect) || getHud().getLayout().getScale() != graphScale) {
+        graph.setVisible(!getWindow().getHud().isHelpVisible());
+        ScreenRect slot = getWindow().getHud().getLayout().getGraph();
+        if (!sameRect(slot, graphRect)
+                || getWindow().getHud().getLayout().getScale() != graphScale) {
             graphRect.set(slot);
-            graphScale = getHud().getLayout().getScale();
-            graph.layOut(slot, getHud().getLayout().getSceneLabelSize());
+            graphScale = getWindow().getHud().getLayout().getScale();
+            graph.layOut(slot, getWindow().getHud().getLayout().getSceneLabelSize());
         }
         graph.refresh();
     }
@@ -342,10 +343,10 @@ public final class BounceDemo extends DemoState {
         super.initialize(app);
         graph = new LiveGraph(app.getAssetManager(), HudFont.load(app.getAssetManager()),
                 LANE_COLORS);
-        getHud().getLayout().setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
+        getWindow().getHud().getLayout().setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
         getDemoHud().layOut(app.getCamera().getWidth(), app.getCamera().getHeight());
         // The graph is a GUI overlay of the demo: it comes and goes with the HUD's node.
-        getHud().getNode().attachChild(graph.getNode());
+        getWindow().getHud().getNode().attachChild(graph.getNode());
     }
 
     /**

@@ -414,7 +414,7 @@ public final class ClipResponseDemo extends DemoState {
                 this::nextClip);
         KeyBinding fire = bindKey(KeyInput.KEY_F, "F", "fire the same shot again in both lanes",
                 this::restart);
-        setFireKey(fire);
+        getKeys().setFireKey(fire);
     }
 
     @Override

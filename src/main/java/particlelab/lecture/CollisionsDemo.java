@@ -809,9 +809,10 @@ public final class CollisionsDemo extends DemoState {
             return;
         }
         double now = getWorld().getTimeSeconds();
-        PlaneView plane = getPlaneView();
+        PlaneView plane = getWindow().getPlaneView();
         float pixelsPerMetre = Math.max(PlaneView.MIN_PIXELS, plane.getPixelsPerMetre());
-        float sizePixels = IMPULSE_LABEL_SHARE * getHud().getLayout().getSceneLabelSize();
+        float sizePixels = IMPULSE_LABEL_SHARE
+                * getWindow().getHud().getLayout().getSceneLabelSize();
         float size = sizePixels / pixelsPerMetre;
         float height = labelMeasure.lineHeight(sizePixels);
         beginCallouts(plane);
@@ -868,7 +869,7 @@ public final class CollisionsDemo extends DemoState {
         calloutArea.set(calloutArea.getX(), Math.max(calloutArea.getY(), ground),
                 calloutArea.getWidth(), Math.max(0f, calloutArea.getTop() - ground));
         callouts.begin(calloutArea);
-        HudLayout layout = getHud().getLayout();
+        HudLayout layout = getWindow().getHud().getLayout();
         callouts.addObstacle(layout.getTitle());
         callouts.addObstacle(layout.getBody());
         callouts.addObstacle(layout.getWarning());
@@ -882,7 +883,7 @@ public final class CollisionsDemo extends DemoState {
             Vector3f position = shown.get(p).getParticle().position;
             callouts.addObstacle(plane.screenX(position.x) - radius,
                     plane.screenY(position.y) - radius, 2f * radius, 2f * radius);
-            callouts.addObstacle(getView(shown.get(p)).getLabelRect());
+            callouts.addObstacle(getWindow().getView(shown.get(p)).getLabelRect());
         }
         addTrailPoints(plane, shown);
     }
@@ -895,7 +896,7 @@ public final class CollisionsDemo extends DemoState {
     private void addTrailPoints(PlaneView plane, List<DemoParticle> shown) {
         int capacity = 0;
         for (int p = 0; p < shown.size(); ++p) {
-            capacity += getView(shown.get(p)).getTrail().getCapacity();
+            capacity += getWindow().getView(shown.get(p)).getTrail().getCapacity();
         }
         if (trailScreenX.length < capacity) {
             trailScreenX = new float[capacity];
@@ -904,7 +905,7 @@ public final class CollisionsDemo extends DemoState {
         int count = 0;
         float halfWidth = 0f;
         for (int p = 0; p < shown.size(); ++p) {
-            ParticleView view = getView(shown.get(p));
+            ParticleView view = getWindow().getView(shown.get(p));
             if (view.getNode().getCullHint() == Spatial.CullHint.Always) {
                 continue;
             }
@@ -1025,7 +1026,7 @@ public final class CollisionsDemo extends DemoState {
     }
 
     private void hideIfParked(DemoParticle body) {
-        ParticleView view = getView(body);
+        ParticleView view = getWindow().getView(body);
         if (view != null) {
             view.getNode().setCullHint(body.isParked() ? Spatial.CullHint.Always
                     : Spatial.CullHint.Inherit);

@@ -80,8 +80,6 @@ public final class DragDemo extends DemoState {
     private static final String[] FAULTS = {SLIDE_DRAG};
     private static final String[] FAULT_TITLES = {"the slide's -c|V|²V as quadratic drag"};
     private static final String[] FAULT_LABELS = {"slide's |V|²V"};
-    /** The longest flight flown ahead for the fault's consequence (steps): 5.5 min at 60 Hz. */
-    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -104,14 +102,8 @@ public final class DragDemo extends DemoState {
     /** The bug hunt's switch: the slide's form on the third sphere, unannounced. */
     private final FaultHunt faults = new FaultHunt(FAULTS, FAULT_TITLES, FAULT_LABELS);
     /** The consequence: the third sphere's landing x, slide form and physical (m). */
-    private double faultyLandingX = Double.NaN;
-    private double correctLandingX = Double.NaN;
-    private final StringBuilder consequence = new StringBuilder();
-    /** The launch, c, b, h or the fault changed since the consequence was flown. */
-    private boolean consequenceStale = true;
-    private float consequenceStepSeconds;
-    private QuadraticFlight faultyFlight;
-    private QuadraticFlight correctFlight;
+    private final FaultConsequence consequence = new FaultConsequence(faults, getClock(),
+            "the third sphere", "the physical law");
     /** The law in the scene's label and equations: 0 physical, 1 the slide's form. */
     private int law;
     /** c as the parameter has it, for whichever law (kg/m or kg·s/m²). */
@@ -198,8 +190,10 @@ public final class DragDemo extends DemoState {
                 new ParticleIntegrator(launch.add(quadraticGravity), quadraticDrag,
                         slideDrag)));
         quadraticSphere.stopAtGround();
-        faultyFlight = new QuadraticFlight();
-        correctFlight = new QuadraticFlight();
+        QuadraticFlight faultyFlight = new QuadraticFlight();
+        QuadraticFlight correctFlight = new QuadraticFlight();
+        consequence.setFlight((fault, h) -> fault == 0 ? correctFlight.landingX(false, h)
+                : faultyFlight.landingX(true, h));
         lane.follow(launch, linearSphere);
         lens.follow(linearSphere);
         setView(-2f, 24f, 7f, 1f, 5, SPHERE_RADIUS);
@@ -238,7 +232,7 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void onRestart() {
-        consequenceStale = true;
+        consequence.markStale();
     }
 
     /**
@@ -260,24 +254,13 @@ public final class DragDemo extends DemoState {
     }
 
     /**
-     * Return the fault's consequence: where the third sphere lands with the slide's form,
-     * flown ahead from the launch as the world steps it.
+     * Access the fault's consequence: where the third sphere lands with the slide's form and
+     * with the physical law, flown ahead from the launch as the world steps it.
      *
-     * @return the landing x (in metres; NaN without the fault or a landing)
+     * @return the live consequence (not null)
      */
-    public double getFaultyLandingX() {
-        refreshConsequence();
-        return faultyLandingX;
-    }
-
-    /**
-     * Return where the third sphere lands with the physical law from the same launch.
-     *
-     * @return the landing x (in metres; NaN without the fault or a landing)
-     */
-    public double getCorrectLandingX() {
-        refreshConsequence();
-        return correctLandingX;
+    FaultConsequence getFaultConsequence() {
+        return consequence;
     }
     @Override
     protected void declareDraggables() {
@@ -299,8 +282,7 @@ public final class DragDemo extends DemoState {
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        refreshConsequence();
-        faults.appendHudLine(text, "B", consequence);
+        consequence.appendHudLine(text, "B");
         // v_t from the closed forms (the spheres' lines give the stepped |V|), and the step's
         // limit 2/λ there.
         double g = getParameters().getValueInScene(getParameters().indexOf("g"));
@@ -323,7 +305,7 @@ public final class DragDemo extends DemoState {
         boolean slideRuns = law == 1 || faults.active() != 0;
         quadraticDrag.setCoefficient(slideRuns ? 0f : coefficientC);
         slideDrag.setCoefficient(slideRuns ? coefficientC : 0f);
-        consequenceStale = true;
+        consequence.markStale();
     }
 
     /** The law, the fault or the seed changed: the coefficients and the label. */
@@ -345,34 +327,6 @@ public final class DragDemo extends DemoState {
             faults.reveal();
             relabel(quadraticSphere, quadraticLabel());
         }
-    }
-
-    /**
-     * Fly the launch ahead with the slide's form and the physical law and write the
-     * consequence, if anything changed since. Allocates nothing.
-     */
-    private void refreshConsequence() {
-        float h = getClock().getStepSeconds();
-        if (!consequenceStale && h == consequenceStepSeconds) {
-            return;
-        }
-        consequenceStale = false;
-        consequenceStepSeconds = h;
-        consequence.setLength(0);
-        if (faults.active() == 0 || faultyFlight == null) {
-            faultyLandingX = Double.NaN;
-            correctLandingX = Double.NaN;
-            return;
-        }
-        faultyLandingX = faultyFlight.landingX(true, h);
-        correctLandingX = correctFlight.landingX(false, h);
-        double difference = faultyLandingX - correctLandingX;
-        consequence.append("lands at x = ");
-        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
-        TextFormat.appendFixed(consequence, Math.abs(difference), 2)
-                .append(difference < 0.0 ? " m short of" : " m beyond")
-                .append(" the physical law's ");
-        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m");
     }
 
     /**
@@ -402,7 +356,7 @@ public final class DragDemo extends DemoState {
             quadraticSphere.copyLaunchPosition(ball.position);
             quadraticSphere.copyLaunchVelocity(ball.velocity);
             try {
-                for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+                for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
                     double landing = flight.step(ball, stepSeconds);
                     if (landing != Flight.NO_LANDING) {
                         return flight.crossingX(landing);

@@ -519,8 +519,8 @@ public final class FastBulletsDemo extends DemoState {
                         : Spatial.CullHint.Always);
             }
             if (WAYS[w] == CheatFrontier.Way.STEPPED && bullet != null
-                    && getView(bullet) != null) {
-                getView(bullet).getNode().setCullHint(visible ? Spatial.CullHint.Inherit
+                    && getWindow().getView(bullet) != null) {
+                getWindow().getView(bullet).getNode().setCullHint(visible ? Spatial.CullHint.Inherit
                         : Spatial.CullHint.Always);
             }
         }

@@ -193,16 +193,11 @@ public final class FountainDemo extends DemoState {
     }
 
     @Override
-    public int countSimulatedParticles() {
-        return fountain == null ? particleCount : fountain.getCapacity();
-    }
-
-    @Override
     protected void createScene() {
-        drawsRawSteps(); // its own views draw the physics steps, not the blend
+        getWindow().drawsRawSteps(); // its own views draw the physics steps, not the blend
         fountain = new Fountain(particleCount);
         // The packed particles are a simulation beside the world, stepped by the same clock.
-        addSimulation(this::stepFountain);
+        getRun().addSimulation(this::stepFountain, fountain.getCapacity());
         addStateRecord(fountain);
         addStateRecord(countsState());
         waterBrightness = (float) Math.min(1.0, WATER_BRIGHTNESS
@@ -374,7 +369,7 @@ public final class FountainDemo extends DemoState {
         ground.setRestitution(Math.max(0f, Math.min(1f, steps * RESTITUTION_STEP)));
         StringBuilder notice = new StringBuilder("ground restitution e = ");
         TextFormat.appendFixed(notice, ground.getRestitution(), 1);
-        showNotice(notice.toString());
+        getDemoHud().showNotice(notice.toString());
         refreshEquations();
     }
 

@@ -62,8 +62,6 @@ public final class GravitationalPullDemo extends DemoState {
     private static final String[] FAULT_LABELS = {"P before V"};
     /** The twin's own label, before its fault's. */
     private static final String TWIN_LABEL = "twin";
-    /** The longest flight flown ahead for the fault's consequence (steps): 5.5 min at 60 Hz. */
-    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -100,12 +98,8 @@ public final class GravitationalPullDemo extends DemoState {
     /** The twin's V update comes after its P update (the fault) or before it (off). */
     private boolean positionFirst;
     /** The consequence: the twin's landing x and the ball's, flown ahead (m). */
-    private double faultyLandingX = Double.NaN;
-    private double correctLandingX = Double.NaN;
-    private final StringBuilder consequence = new StringBuilder();
-    /** The launch, g, h or the fault changed since the consequence was flown. */
-    private boolean consequenceStale = true;
-    private float consequenceStepSeconds;
+    private final FaultConsequence consequence = new FaultConsequence(faults, getClock(),
+            "the twin", "the lecture order");
     /** Scratch for the flights ahead: a particle and a flight with the ball's forces. */
     private final Particle flown = new Particle();
     private final Flight correctFlight = new Flight(new ParticleIntegrator(gravity));
@@ -167,6 +161,18 @@ public final class GravitationalPullDemo extends DemoState {
         // ghost the ball draws already
         twin.setPathIntegrator(ball.getIntegrator());
         twin.hideGhost();
+        consequence.setFlight(new FaultConsequence.AheadFlight() {
+            @Override
+            public double landingX(int fault, float stepSeconds) {
+                return fault == 0 ? correctLandingX(stepSeconds) : faultyLandingX(stepSeconds);
+            }
+
+            @Override
+            public void appendAfter(StringBuilder text, float stepSeconds) {
+                double vxh = twin.copyLaunchVelocity(scratchPosition).x * (double) stepSeconds;
+                TextFormat.appendFixed(text.append(" (2·Vx·h = "), 2.0 * vxh, 2).append(" m)");
+            }
+        });
         applyFault();
         lane.follow(launch, ball);
         lens.follow(ball);
@@ -231,30 +237,18 @@ public final class GravitationalPullDemo extends DemoState {
     }
 
     /**
-     * Return the fault's consequence: where the twin lands, flown ahead from the launch with
-     * the fault's order.
+     * Access the fault's consequence: where the twin lands, flown ahead from the launch with
+     * the fault's order, and where the ball lands, flown with the lecture's recipe.
      *
-     * @return the landing x (in metres; NaN without the fault or a landing)
+     * @return the live consequence (not null)
      */
-    public double getFaultyLandingX() {
-        refreshConsequence();
-        return faultyLandingX;
-    }
-
-    /**
-     * Return where the ball lands from the same launch, flown ahead with the lecture's recipe.
-     *
-     * @return the landing x (in metres; NaN without the fault or a landing)
-     */
-    public double getCorrectLandingX() {
-        refreshConsequence();
-        return correctLandingX;
+    FaultConsequence getFaultConsequence() {
+        return consequence;
     }
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        refreshConsequence();
-        faults.appendHudLine(text, "B", consequence);
+        consequence.appendHudLine(text, "B");
     }
 
     @Override
@@ -328,7 +322,7 @@ public final class GravitationalPullDemo extends DemoState {
     /** Hide the twin while the fault is off. Allocates nothing. */
     @Override
     protected void afterFrame() {
-        particlelab.view.ParticleView view = getView(twin);
+        particlelab.view.ParticleView view = getWindow().getView(twin);
         if (view != null) {
             view.getNode().setCullHint(faults.active() == 0 ? Spatial.CullHint.Always
                     : Spatial.CullHint.Inherit);
@@ -337,7 +331,7 @@ public final class GravitationalPullDemo extends DemoState {
 
     /** The fault or the seed changed: the twin's label, and whether it flies. */
     private void faultChanged() {
-        consequenceStale = true;
+        consequence.markStale();
         if (twin != null) {
             applyFault();
             relabel(twin, faults.label(TWIN_LABEL));
@@ -352,7 +346,7 @@ public final class GravitationalPullDemo extends DemoState {
         boolean on = faults.active() != 0;
         positionFirst = on;
         twin.setParked(!on);
-        consequenceStale = true;
+        consequence.markStale();
     }
 
     /** Reveal the hidden fault (key B): the label and the HUD name it. */
@@ -363,40 +357,12 @@ public final class GravitationalPullDemo extends DemoState {
         }
     }
 
-    /**
-     * Fly the launch ahead with the fault's order and the lecture's and write the
-     * consequence, if anything changed since. Allocates nothing.
-     */
-    private void refreshConsequence() {
-        float h = getClock().getStepSeconds();
-        if (!consequenceStale && h == consequenceStepSeconds) {
-            return;
-        }
-        consequenceStale = false;
-        consequenceStepSeconds = h;
-        consequence.setLength(0);
-        faultyLandingX = Double.NaN;
-        correctLandingX = Double.NaN;
-        if (faults.active() == 0 || twin == null) {
-            return;
-        }
-        faultyLandingX = faultyLandingX(h);
-        correctLandingX = correctLandingX(h);
-        double vxh = twin.copyLaunchVelocity(scratchPosition).x * (double) h;
-        consequence.append("lands at x = ");
-        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
-        TextFormat.appendFixed(consequence, faultyLandingX - correctLandingX, 2)
-                .append(" m beyond the lecture order's ");
-        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m (2·Vx·h = ");
-        TextFormat.appendFixed(consequence, 2.0 * vxh, 2).append(" m)");
-    }
-
     /** The twin flown from its launch with the fault's order; NaN if it does not land. */
     private double faultyLandingX(float h) {
         flown.copyFrom(twin.getParticle());
         twin.copyLaunchPosition(flown.position);
         twin.copyLaunchVelocity(flown.velocity);
-        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+        for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
             // as in the scene: a forceless step moves P with the old V, swept against the
             // ground; then the fault's V += h·g
             double landing = twinFlight.step(flown, h);
@@ -413,7 +379,7 @@ public final class GravitationalPullDemo extends DemoState {
         flown.copyFrom(ball.getParticle());
         ball.copyLaunchPosition(flown.position);
         ball.copyLaunchVelocity(flown.velocity);
-        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+        for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
             double landing = correctFlight.step(flown, h);
             if (landing != Flight.NO_LANDING) {
                 return correctFlight.crossingX(landing);

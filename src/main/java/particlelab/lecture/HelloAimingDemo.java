@@ -148,8 +148,6 @@ public final class HelloAimingDemo extends DemoState {
     private static final String[] FAULTS = {Y_LOOP};
     private static final String[] FAULT_TITLES = {"the slide's if (y >= 0) loop"};
     private static final String[] FAULT_LABELS = {"y >= 0 loop"};
-    /** The longest flight flown ahead for the fault's consequence (steps). */
-    private static final int MAX_FLIGHT_STEPS = 20_000;
     private static final float SLIDE_MARK_SIZE = 1.6f;
 
     private final Gravity gravity = new Gravity();
@@ -574,7 +572,7 @@ public final class HelloAimingDemo extends DemoState {
         launchSlide();
         // The slide's code runs in the world's steps, after the world has moved the recipe's
         // bullets: both see the same h (the raw tpf in raw mode).
-        addSimulation(this::stepSlide);
+        getRun().addSimulation(this::stepSlide);
         addMarker("gun", 0f, 3f, new ColorRGBA(0.6f, 0.9f, 0.6f, 1f));
         addMarker("target  S = 100 m", TARGET_DISTANCE, 6f, new ColorRGBA(1f, 0.3f, 0.25f, 1f));
         // The grid reaches the highest arc the keys and the panel allow: the slowest vx and
@@ -620,7 +618,7 @@ public final class HelloAimingDemo extends DemoState {
     @Override
     protected void declareKeys() {
         fireKey = bindKey(KeyInput.KEY_F, "F", "fire", this::fire);
-        setFireKey(fireKey);
+        getKeys().setFireKey(fireKey);
         String step = Math.round(VX_STEP) + " m/s";
         fasterKey = bindKey(KeyInput.KEY_UP, "Up", "vx + " + step, () -> changeVx(VX_STEP));
         slowerKey = bindKey(KeyInput.KEY_DOWN, "Down", "vx - " + step,
@@ -984,7 +982,7 @@ public final class HelloAimingDemo extends DemoState {
     private void frameArcs() {
         // The discrete aim is the higher of the two (for h > 0): it bounds the next shot.
         float highest = Math.max(apex(shotVy), apex(getVerticalSpeed(Aim.DISCRETE)));
-        setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
+        getWindow().setViewTop(Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest));
     }
 
     /**
@@ -1068,7 +1066,7 @@ public final class HelloAimingDemo extends DemoState {
         float vxNow = shotVx;
         float vy = launchVy;
         faultStopStep = 0;
-        while (y >= 0f && faultStopStep < MAX_FLIGHT_STEPS) {
+        while (y >= 0f && faultStopStep < FaultConsequence.MAX_FLIGHT_STEPS) {
             vy = vy + gy * shotStep;
             x = x + vxNow * shotStep;
             y = y + vy * shotStep;
@@ -1082,7 +1080,7 @@ public final class HelloAimingDemo extends DemoState {
         bullets[0].copyLaunchPosition(flown.position);
         bullets[0].copyLaunchVelocity(flown.velocity);
         crossingX = Double.NaN;
-        for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+        for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
             double landing = crossingFlight.step(flown, shotStep);
             if (landing != Flight.NO_LANDING) {
                 crossingX = crossingFlight.crossingX(landing);
@@ -1112,13 +1110,13 @@ public final class HelloAimingDemo extends DemoState {
      */
     private void showFiredBullets() {
         for (int a = 0; a < AIMS.length; ++a) {
-            ParticleView view = getView(bullets[a]);
+            ParticleView view = getWindow().getView(bullets[a]);
             if (view != null) {
                 view.getNode().setCullHint(inShot[a] && shotCode != SLIDE_CODE
                         ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
             }
         }
-        ParticleView student = getView(studentBullet);
+        ParticleView student = getWindow().getView(studentBullet);
         if (student != null) {
             student.getNode().setCullHint(studentInShot && shotCode != SLIDE_CODE
                     ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);

@@ -497,7 +497,7 @@ public final class IterativeAimingDemo extends DemoState {
      */
     public void aimBy(float degrees, float speed) {
         if (!duelOn) {
-            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            getDemoHud().showNotice("the duel is off: --set duel=on, or the panel (F2)");
             return;
         }
         // Whole tenths: a key pressed a hundred times leaves no float drift in the aim.
@@ -515,15 +515,15 @@ public final class IterativeAimingDemo extends DemoState {
      */
     public boolean fireHuman() {
         if (!duelOn) {
-            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            getDemoHud().showNotice("the duel is off: --set duel=on, or the panel (F2)");
             return false;
         }
         if (duel.isRoundOver()) {
-            showNotice("round over: felt fair? Y yes, B no");
+            getDemoHud().showNotice("round over: felt fair? Y yes, B no");
             return false;
         }
         if (humanInAir) {
-            showNotice("your shot is still in the air");
+            getDemoHud().showNotice("your shot is still in the air");
             return false;
         }
         if (duel.fire(duelDegrees, duelSpeed, getClock().getSimulatedSeconds()
@@ -543,7 +543,8 @@ public final class IterativeAimingDemo extends DemoState {
             top = Math.max(top, plan.getVerticalSpeed(i) * plan.getVerticalSpeed(i)
                     / (2f * GRAVITY));
         }
-        setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * top)));
+        getWindow().setViewTop(Math.min(MAX_VIEW_TOP,
+                Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * top)));
         return true;
     }
 
@@ -556,15 +557,15 @@ public final class IterativeAimingDemo extends DemoState {
      */
     public boolean poll(boolean fair) {
         if (!duelOn) {
-            showNotice("the duel is off: --set duel=on, or the panel (F2)");
+            getDemoHud().showNotice("the duel is off: --set duel=on, or the panel (F2)");
             return false;
         }
         if (!duel.isRoundOver() || humanInAir) {
-            showNotice("the round is not over: hit the target first (F fires)");
+            getDemoHud().showNotice("the round is not over: hit the target first (F fires)");
             return false;
         }
         duel.closeRound(fair);
-        showNotice("round " + duel.countClosedRounds() + " logged (felt fair: "
+        getDemoHud().showNotice("round " + duel.countClosedRounds() + " logged (felt fair: "
                 + (fair ? "yes" : "no") + "); E exports " + DUEL_TABLE + ".csv");
         setSeed(seed + 1L);
         return true;
@@ -704,13 +705,13 @@ public final class IterativeAimingDemo extends DemoState {
         StringBuilder arrows = new StringBuilder("duel: aim (Up/Down) ");
         TextFormat.appendFixed(arrows, DUEL_ANGLE_STEP, 1).append(" deg, speed (Right/Left) ");
         TextFormat.appendFixed(arrows, DUEL_SPEED_STEP, 1).append(" m/s");
-        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_UP, KeyInput.KEY_DOWN,
+        getKeys().bindKeys(new KeyBinding(new int[] {KeyInput.KEY_UP, KeyInput.KEY_DOWN,
             KeyInput.KEY_RIGHT, KeyInput.KEY_LEFT}, new String[] {"Up", "Down", "Right", "Left"},
                 arrows.toString(), null, key -> aimBy(
                         key == 0 ? DUEL_ANGLE_STEP : key == 1 ? -DUEL_ANGLE_STEP : 0f,
                         key == 2 ? DUEL_SPEED_STEP : key == 3 ? -DUEL_SPEED_STEP : 0f))
                 .withKeyLabel("arrows"));
-        bindKeys(new KeyBinding(new int[] {KeyInput.KEY_Y, KeyInput.KEY_B},
+        getKeys().bindKeys(new KeyBinding(new int[] {KeyInput.KEY_Y, KeyInput.KEY_B},
                 new String[] {"Y", "B"}, "duel: felt fair? yes/no (ends the round)", null,
                 key -> poll(key == 0)));
     }
@@ -761,7 +762,8 @@ public final class IterativeAimingDemo extends DemoState {
 
     /**
      * Show the labels and trail tints that changed, before the frame: once per change, here
-     * rather than in {@link #advance}, which only steps and moves the views.
+     * rather than in {@link particlelab.demo.DemoWindow#advance}, which only steps and moves
+     * the views.
      */
     @Override
     public void update(float tpf) {
@@ -779,9 +781,9 @@ public final class IterativeAimingDemo extends DemoState {
         if (tintsChanged) {
             tintsChanged = false;
             for (int i = 0; i < VISIBLE_SHOTS; ++i) {
-                if (slotShot[i] >= 0 && getView(slots[i]) != null) {
+                if (slotShot[i] >= 0 && getWindow().getView(slots[i]) != null) {
                     int age = Math.min(fired - 1 - slotShot[i], tints.length - 1);
-                    getView(slots[i]).getTrail().setTint(tints[age]);
+                    getWindow().getView(slots[i]).getTrail().setTint(tints[age]);
                 }
             }
         }
@@ -898,7 +900,8 @@ public final class IterativeAimingDemo extends DemoState {
             apexFlight.climb(apexProbe, flyStep, (int) Math.ceil(MAX_FLIGHT_SECONDS / flyStep));
             highest = Math.max(highest, apexProbe.position.y);
         }
-        setViewTop(Math.min(MAX_VIEW_TOP, Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest)));
+        getWindow().setViewTop(Math.min(MAX_VIEW_TOP,
+                Math.max(MIN_VIEW_TOP, (1f + HEADROOM) * highest)));
     }
 
     /** Fire the next attempt from the gun in the next slot; fade the older trails. */
@@ -1057,8 +1060,8 @@ public final class IterativeAimingDemo extends DemoState {
         if (duelOn && (strategy != AimStrategy.BELIEVABLE || instant || mismatch)) {
             duelOn = false;
             getParameters().set("duel", 0);
-            showNotice("the duel is off: it plays the believable player, every shot visible,"
-                    + " with the flight's own predictor");
+            getDemoHud().showNotice("the duel is off: it plays the believable player, every"
+                    + " shot visible, with the flight's own predictor");
         }
         if (duelOn) {
             duel.setSimulator(flySimulator);

@@ -405,7 +405,7 @@ public final class RotationDemo extends DemoState {
      * replaying or drawing raw steps).
      */
     private void updateBoxes() {
-        float alpha = getDrawBlend();
+        float alpha = getWindow().getDrawBlend();
         for (int i = 0; i < METHODS.length; ++i) {
             if (views[i] != null) {
                 views[i].update(previousOrientations[i], centres[i], orientations[i],

@@ -317,7 +317,7 @@ public final class SpinThrowDemo extends DemoState {
         // The box is the body now: hide the centre's sphere, and draw its trail thinner
         // (the shared one is as wide as half the sphere, here the box's half diagonal). The
         // label stays, placed clear of the box.
-        ParticleView centreView = getView(centre);
+        ParticleView centreView = getWindow().getView(centre);
         centreView.getNode().getChild(centre.getLabel() + " sphere")
                 .setCullHint(Spatial.CullHint.Always);
         centreView.getNode().detachChild(centreView.getTrail().getGeometry());
@@ -379,7 +379,7 @@ public final class SpinThrowDemo extends DemoState {
         if (box != null) {
             box.update(previousOrientation, centre.getBody().copyPreviousPosition(
                     previousCentre), body.orientation, body.getParticle().position,
-                    getDrawBlend());
+                    getWindow().getDrawBlend());
             centreTrail.refresh();
             cornerTrail.refresh();
             formulaTrail.refresh();

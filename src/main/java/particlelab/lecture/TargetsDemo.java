@@ -275,7 +275,7 @@ public final class TargetsDemo extends DemoState {
             spawnTargets();
         }
         if (views != null) {
-            views.update(getDrawBlend());
+            views.update(getWindow().getDrawBlend());
         }
     }
 

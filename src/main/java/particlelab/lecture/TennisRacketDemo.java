@@ -409,7 +409,7 @@ public final class TennisRacketDemo extends DemoState {
      * paused, replaying or drawing raw steps).
      */
     private void updateView() {
-        float alpha = getDrawBlend();
+        float alpha = getWindow().getDrawBlend();
         for (int i = 0; i < METHODS.length; ++i) {
             if (views[i] != null) {
                 views[i].update(previousOrientations[i], centres[i], bodies[i].orientation,

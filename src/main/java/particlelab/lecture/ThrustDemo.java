@@ -64,8 +64,6 @@ public final class ThrustDemo extends DemoState {
     private static final String[] FAULT_TITLES = {"thrust along the other sphere's velocity",
         "thrust direction not normalised (F = k V)"};
     private static final String[] FAULT_LABELS = {"other sphere's V", "k V unnormalised"};
-    /** The longest flight flown ahead for a fault's consequence (steps): 5.5 min at 60 Hz. */
-    private static final int MAX_FLIGHT_STEPS = 20_000;
 
     /** The launch, mass and g, declared as parameters. */
     private final LaunchControl launch = new LaunchControl(LAUNCH_VELOCITY);
@@ -89,20 +87,11 @@ public final class ThrustDemo extends DemoState {
     private LectureFaults.ThrustAlongAnother alongOther;
     private final LectureFaults.UnnormalisedThrust unnormalised =
             new LectureFaults.UnnormalisedThrust();
-    /** Flies the pair ahead for a fault's consequence, correct and faulty. */
-    private ThrusterFlight faultyFlight;
-    private ThrusterFlight correctFlight;
     /** k as the parameter has it (N), for whichever thrust runs. */
     private float thrustK = THRUST_K;
     /** The fault's consequence: the thruster's landing x, faulty and correct (m; NaN: none). */
-    private double faultyLandingX = Double.NaN;
-    private double correctLandingX = Double.NaN;
-    /** The consequence as the HUD writes it (rebuilt when stale, not every frame). */
-    private final StringBuilder consequence = new StringBuilder();
-    /** The launch, k or the fault changed since the consequence was flown. */
-    private boolean consequenceStale = true;
-    /** The h the consequence was flown with (s). */
-    private float consequenceStepSeconds;
+    private final FaultConsequence consequence = new FaultConsequence(faults, getClock(),
+            "the thruster", "the correct code");
     /** Scratch: the thruster's launch velocity (m/s). */
     private final Vector3f launchScratch = new Vector3f();
     private DemoParticle pullDragSphere;
@@ -153,8 +142,26 @@ public final class ThrustDemo extends DemoState {
                 new ParticleIntegrator(launch.add(thrusterGravity), thrusterDrag, thrust,
                         alongOther, unnormalised)));
         thruster.stopAtGround();
-        faultyFlight = new ThrusterFlight();
-        correctFlight = new ThrusterFlight();
+        // The pair flown ahead for a fault's consequence, faulty and correct.
+        ThrusterFlight faultyFlight = new ThrusterFlight();
+        ThrusterFlight correctFlight = new ThrusterFlight();
+        consequence.setFlight(new FaultConsequence.AheadFlight() {
+            @Override
+            public double landingX(int fault, float stepSeconds) {
+                return (fault == 0 ? correctFlight : faultyFlight).landingX(fault, stepSeconds);
+            }
+
+            @Override
+            public void appendBefore(StringBuilder text, int fault) {
+                if (fault == 2) {
+                    // F = k·V: at launch its magnitude is k·|V0|, not k
+                    float launchSpeed = thruster.copyLaunchVelocity(launchScratch).length();
+                    TextFormat.appendFixed(text.append("pushes k|V| = "),
+                            thrustK * launchSpeed, 2).append(" N at launch, not k = ");
+                    TextFormat.appendFixed(text, thrustK, 2).append(" N; ");
+                }
+            }
+        });
         applyFault();
         lane.follow(launch, thruster);
         lens.follow(thruster);
@@ -169,7 +176,7 @@ public final class ThrustDemo extends DemoState {
                 0.05f, LINEAR_B, 2, DemoParameter.Applies.LIVE, value -> {
                     drag.setCoefficient(value);
                     thrusterDrag.setCoefficient(value);
-                    consequenceStale = true;
+                    consequence.markStale();
                 }));
         declareParameter(new DemoParameter("k", "thrust", "N", 0f, MAX_K, 0.25f,
                 THRUST_K, 2, DemoParameter.Applies.LIVE, value -> {
@@ -188,13 +195,12 @@ public final class ThrustDemo extends DemoState {
 
     @Override
     protected void onRestart() {
-        consequenceStale = true;
+        consequence.markStale();
     }
 
     @Override
     protected void writeHudLines(StringBuilder text) {
-        refreshConsequence();
-        faults.appendHudLine(text, "B", consequence);
+        consequence.appendHudLine(text, "B");
     }
 
     /**
@@ -216,24 +222,13 @@ public final class ThrustDemo extends DemoState {
     }
 
     /**
-     * Return the fault's consequence: where the thruster lands with the faulty code that
-     * runs, flown ahead from the launch exactly as the world steps it.
+     * Access the fault's consequence: where the thruster lands with the faulty code that runs
+     * and with the correct code, flown ahead from the launch exactly as the world steps it.
      *
-     * @return the landing x (in metres; NaN without a fault or a landing)
+     * @return the live consequence (not null)
      */
-    public double getFaultyLandingX() {
-        refreshConsequence();
-        return faultyLandingX;
-    }
-
-    /**
-     * Return where the thruster lands with the correct code from the same launch.
-     *
-     * @return the landing x (in metres; NaN without a fault or a landing)
-     */
-    public double getCorrectLandingX() {
-        refreshConsequence();
-        return correctLandingX;
+    FaultConsequence getFaultConsequence() {
+        return consequence;
     }
 
     /** Reveal the hidden fault (key B): the label and the HUD name it. */
@@ -260,48 +255,7 @@ public final class ThrustDemo extends DemoState {
             alongOther.setMagnitude(fault == 1 ? thrustK : 0f);
         }
         unnormalised.setMagnitude(fault == 2 ? thrustK : 0f);
-        consequenceStale = true;
-    }
-
-    /**
-     * Fly the launch ahead, faulty and correct, and write the consequence, if the launch, k,
-     * h or the fault changed since. Allocates nothing.
-     */
-    private void refreshConsequence() {
-        float h = getClock().getStepSeconds();
-        if (!consequenceStale && h == consequenceStepSeconds) {
-            return;
-        }
-        consequenceStale = false;
-        consequenceStepSeconds = h;
-        consequence.setLength(0);
-        int fault = faults.active();
-        if (fault == 0 || faultyFlight == null) {
-            faultyLandingX = Double.NaN;
-            correctLandingX = Double.NaN;
-            return;
-        }
-        faultyLandingX = faultyFlight.landingX(fault, h);
-        correctLandingX = correctFlight.landingX(0, h);
-        if (fault == 2) {
-            // F = k·V: at launch its magnitude is k·|V0|, not k
-            float launchSpeed = thruster.copyLaunchVelocity(launchScratch).length();
-            TextFormat.appendFixed(consequence.append("pushes k|V| = "),
-                    thrustK * launchSpeed, 2).append(" N at launch, not k = ");
-            TextFormat.appendFixed(consequence, thrustK, 2).append(" N; ");
-        }
-        if (Double.isNaN(faultyLandingX)) {
-            consequence.append("the thruster never lands (the correct code lands at x = ");
-            TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m)");
-            return;
-        }
-        double difference = faultyLandingX - correctLandingX;
-        consequence.append("lands at x = ");
-        TextFormat.appendFixed(consequence, faultyLandingX, 2).append(" m, ");
-        TextFormat.appendFixed(consequence, Math.abs(difference), 2)
-                .append(difference < 0.0 ? " m short of" : " m beyond")
-                .append(" the correct code's ");
-        TextFormat.appendFixed(consequence, correctLandingX, 2).append(" m");
+        consequence.markStale();
     }
 
     @Override
@@ -371,7 +325,7 @@ public final class ThrustDemo extends DemoState {
             thruster.copyLaunchVelocity(ship.velocity);
             boolean otherFlies = true;
             try {
-                for (int n = 1; n <= MAX_FLIGHT_STEPS; ++n) {
+                for (int n = 1; n <= FaultConsequence.MAX_FLIGHT_STEPS; ++n) {
                     double otherLanding = Flight.NO_LANDING;
                     if (otherFlies) {
                         otherLanding = otherFlight.step(other, stepSeconds);

@@ -88,6 +88,27 @@ class DemoCatalogTest {
     }
 
     /**
+     * Each entry knows the class of the demos it creates, so the entry of a demo shown (the
+     * share key C, every press) is found by its class, with no demo created to compare with.
+     */
+    @Test
+    void aDemosEntryIsFoundByItsClassWithoutCreatingOne() {
+        List<DemoCatalog.Entry> entries = DemoCatalog.entries();
+        List<DemoState> demos = DemoCatalog.createAll();
+        for (int i = 0; i < entries.size(); ++i) {
+            assertEquals(entries.get(i).getType(), demos.get(i).getClass(),
+                    entries.get(i).getName());
+            assertEquals(i, DemoCatalog.indexOfDemo(demos.get(i)), entries.get(i).getName());
+        }
+        // A demo of no entry's class (a student's, not listed yet) has no place.
+        assertEquals(-1, DemoCatalog.indexOfDemo(new DemoState("not listed") {
+            @Override
+            protected void createScene() {
+            }
+        }));
+    }
+
+    /**
      * {@code --particles N} reaches the one demo that takes a count (the fountain) through
      * the catalogue, with no cast in the command; every other demo is made as by name.
      */
@@ -100,8 +121,8 @@ class DemoCatalogTest {
         for (int i = 0; i < demos.size(); ++i) {
             boolean takesCount = DemoCatalog.entries().get(i).hasParticleCount();
             assertEquals(i == DemoCatalog.indexOf(counted), takesCount, demos.get(i).getTitle());
-            assertEquals(takesCount ? 2000 : plain.get(i).countSimulatedParticles(),
-                    demos.get(i).countSimulatedParticles(), demos.get(i).getTitle());
+            assertEquals(takesCount ? 2000 : plain.get(i).getRun().countSimulatedParticles(),
+                    demos.get(i).getRun().countSimulatedParticles(), demos.get(i).getTitle());
         }
     }
 }

@@ -158,9 +158,9 @@ class DemoPresetsTest {
     /** Run the demo's physics for the frames and return its HUD text. */
     private static String run(DemoState demo) {
         for (int i = 0; i < FRAMES; ++i) {
-            demo.advancePhysics(TPF);
+            demo.getRun().advancePhysics(TPF);
         }
-        return demo.formatHud(new StringBuilder()).toString();
+        return demo.getWindow().formatHud(new StringBuilder()).toString();
     }
 
     private static String panel(DemoState demo) {
@@ -172,7 +172,7 @@ class DemoPresetsTest {
      * shared controls (a demo's F is not the shared one).
      */
     private static void press(DemoState demo, String label) {
-        List<KeyBinding> bindings = demo.getBindings();
+        List<KeyBinding> bindings = demo.getKeys().getBindings();
         for (int b = bindings.size() - 1; b >= 0; --b) {
             KeyBinding binding = bindings.get(b);
             for (int i = 0; i < binding.countKeys(); ++i) {

@@ -90,7 +90,7 @@ class DemoSwitcherTest {
 
         type(switcher, keys);
 
-        assertEquals(notice, demos.get(2).getNotice());
+        assertEquals(notice, demos.get(2).getDemoHud().getNotice());
         assertEquals(2, demos.indexOf(switcher.getSelected()));
     }
 
@@ -106,8 +106,8 @@ class DemoSwitcherTest {
         assertEquals(1, demos.indexOf(switcher.getSelected()));
         press(switcher, "7");
 
-        assertEquals("no demo 7: there are 2; Tab cycles", demos.get(1).getNotice());
-        assertNull(demos.get(0).getNotice());
+        assertEquals("no demo 7: there are 2; Tab cycles", demos.get(1).getDemoHud().getNotice());
+        assertNull(demos.get(0).getDemoHud().getNotice());
         assertEquals(1, demos.indexOf(switcher.getSelected()));
     }
 

@@ -98,7 +98,7 @@ class EnergyLedgerAllDemosTest {
             world.addStepListener(check);
             double startKinetic = energy.getLedger().getKineticJoules();
             for (int frame = 0; frame < FRAMES; ++frame) {
-                demo.advancePhysics(TPF);
+                demo.getRun().advancePhysics(TPF);
             }
             assertTrue(check.steps > 0, entry.getName() + " took no step");
             EnergyLedger ledger = energy.getLedger();
@@ -126,7 +126,7 @@ class EnergyLedgerAllDemosTest {
         FountainDemo off = new FountainDemo();
         off.setParticleCount(2_000);
         for (int frame = 0; frame < 10; ++frame) {
-            off.advancePhysics(TPF);
+            off.getRun().advancePhysics(TPF);
         }
         assertTrue(off.getFountain().getEnergy() == null && !off.getEnergyPart().hasLedger(),
                 "off: no ledger kept, no cost");
@@ -134,7 +134,7 @@ class EnergyLedgerAllDemosTest {
         demo.setParticleCount(20_000);
         demo.getParameters().set("energy", 1f);
         for (int frame = 0; frame < FRAMES; ++frame) {
-            demo.advancePhysics(TPF);
+            demo.getRun().advancePhysics(TPF);
         }
         assertTrue(demo.getEnergyPart().hasLedger(), "on: the fountain's own ledger");
         EnergyLedger ledger = demo.getFountain().getEnergy().getLedger();

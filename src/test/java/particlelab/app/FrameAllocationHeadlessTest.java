@@ -425,7 +425,7 @@ class FrameAllocationHeadlessTest {
         // The inspector open on the first body shown: its numbers change every frame too.
         for (DemoParticle particle : demo.getParticles()) {
             if (!particle.isParked()) {
-                demo.getDragControl().inspect(particle);
+                demo.getWindow().getDragControl().inspect(particle);
                 break;
             }
         }
@@ -435,7 +435,7 @@ class FrameAllocationHeadlessTest {
 
     /** Put the HUD's refresh rate, the window's size and the HUD factor back. */
     private static Boolean end(DemoState demo) {
-        demo.getDragControl().clearPick();
+        demo.getWindow().getDragControl().clearPick();
         demo.getParameters().set(demo.getParameters().indexOf(EnergyPart.PARAMETER), 0);
         demo.getDemoHud().setRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
         resize(ParticleLabApp.WIDTH, ParticleLabApp.HEIGHT);
@@ -459,7 +459,8 @@ class FrameAllocationHeadlessTest {
 
     /** @return true if the body shown is the HUD's text wrapped, not the text itself */
     private static Boolean isBodyWrapped(DemoState demo) {
-        return !demo.getHud().getBodyText().equals(demo.formatHud(new StringBuilder())
+        return !demo.getWindow().getHud().getBodyText()
+                .equals(demo.getWindow().formatHud(new StringBuilder())
                 .toString());
     }
 
@@ -484,7 +485,7 @@ class FrameAllocationHeadlessTest {
         DemoState demo = demos.get(index);
         long[] bytes = new long[WINDOWS];
         double[] simulated = new double[WINDOWS];
-        int textChanges = demo.getHud().countTextChanges();
+        int textChanges = demo.getWindow().getHud().countTextChanges();
         int allocating = 0;
         for (int w = 0; w < WINDOWS; ++w) {
             if (demo.getRun().isSceneOver()) {
@@ -497,7 +498,7 @@ class FrameAllocationHeadlessTest {
                 ++allocating;
             }
         }
-        textChanges = demo.getHud().countTextChanges() - textChanges;
+        textChanges = demo.getWindow().getHud().countTextChanges() - textChanges;
         String name = (index + 1) + ". " + demo.getTitle();
         if (allocating > 1) {
             return name + ": " + allocating + " of " + WINDOWS + " windows of "

@@ -135,7 +135,7 @@ public final class HeadlessHarness implements AutoCloseable, BeforeAllCallback,
      * @throws IllegalStateException if no binding has that label
      */
     public static void press(DemoState demo, String keyLabel) {
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             if (keyLabel.equals(binding.getKeyLabel())) {
                 binding.press(0);
                 return;

@@ -16,10 +16,10 @@ import particlelab.view.HelpText;
 
 /**
  * Writes the pages' key tables from the bindings themselves, the way the help overlay is
- * written: a demo's own keys ({@link DemoState#getBindings()} after the shared ones), the keys
- * every demo shares, the application's (choosing a demo, the window, export: read from the
- * {@link DemoSwitcher} of a {@link ParticleLabApp} built as the window builds it), jME's,
- * and the mouse's gestures (each demo's declared drags).
+ * written: a demo's own keys ({@link particlelab.demo.DemoKeys#getBindings()} after the shared
+ * ones), the keys every demo shares, the application's (choosing a demo, the window,
+ * export: read from the {@link DemoSwitcher} of a {@link ParticleLabApp} built as the window
+ * builds it), jME's, and the mouse's gestures (each demo's declared drags).
  * No jME application is started: a demo declares its keys without one.
  *
  * <p>A table is Markdown: one row per binding, its keys in code spans, its description as the
@@ -51,7 +51,7 @@ final class KeyTables {
      */
     static String demoTable(String name) {
         DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
-        List<KeyBinding> all = demo.getBindings();
+        List<KeyBinding> all = demo.getKeys().getBindings();
         List<KeyBinding> shared = sharedBindings(hasGhostKeys(all));
         for (int i = 0; i < shared.size(); ++i) {
             if (!all.get(i).getKeyLabel().equals(shared.get(i).getKeyLabel())) {
@@ -118,7 +118,7 @@ final class KeyTables {
         List<String> without = new ArrayList<>();
         for (String name : DemoCatalog.names()) {
             DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
-            List<Draggable> declared = demo.getDragControl().getDraggables();
+            List<Draggable> declared = demo.getWindow().getDragControl().getDraggables();
             if (declared.isEmpty()) {
                 without.add(name);
             }
@@ -247,7 +247,7 @@ final class KeyTables {
      * @return the bindings, in the order a demo lists them
      */
     private static List<KeyBinding> sharedBindings(boolean ghosts) {
-        return new BareDemo(ghosts).getBindings();
+        return new BareDemo(ghosts).getKeys().getBindings();
     }
 
     /**

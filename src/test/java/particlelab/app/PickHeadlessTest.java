@@ -85,24 +85,25 @@ class PickHeadlessTest {
     void aPressOnTheParameterPanelOrUnderTheHelpPicksNothing() throws Exception {
         List<Object> result = harness.call(() -> {
             drag.restart();
-            drag.getDragControl().clearPick();
+            drag.getWindow().getDragControl().clearPick();
             KeyBinding panelKey = binding(drag, KeyInput.KEY_F2);
             panelKey.press(0);
             drag.update(H);
             // The panel's slot down the right edge; its first rows are at the slot's top.
-            ScreenRect panel = new ScreenRect().set(drag.getHud().getLayout().getSidePanel());
+            ScreenRect panel = new ScreenRect()
+                    .set(drag.getWindow().getHud().getLayout().getSidePanel());
             boolean onPanel = harness.app().getPickInput().press(
                     panel.getX() + panel.getWidth() / 2f, panel.getTop() - 20f);
             harness.app().getPickInput().release();
             panelKey.press(0);
             drag.update(H);
-            drag.getHud().setHelpVisible(true);
+            drag.getWindow().getHud().setHelpVisible(true);
             Vector3f sphere = harness.app().getCamera().getScreenCoordinates(
                     drag.getParticles().get(0).getParticle().position);
             boolean underHelp = harness.app().getPickInput().press(sphere.x, sphere.y);
             harness.app().getPickInput().release();
-            DemoParticle picked = drag.getDragControl().getPicked();
-            drag.getHud().setHelpVisible(false);
+            DemoParticle picked = drag.getWindow().getDragControl().getPicked();
+            drag.getWindow().getHud().setHelpVisible(false);
             boolean visible = harness.app().getPickInput().press(sphere.x, sphere.y);
             harness.app().getPickInput().release();
             return java.util.Arrays.asList(panel.isEmpty(), onPanel, underHelp, picked,
@@ -120,7 +121,7 @@ class PickHeadlessTest {
             throws Exception {
         Object[] result = harness.call(() -> {
             drag.restart();
-            drag.getDragControl().clearPick();
+            drag.getWindow().getDragControl().clearPick();
             drag.getParameters().set(LensPart.PARAMETER, 1f);
             HeadlessHarness.fly(drag, 40, H);
             // the lens follows the linear-drag sphere, the second particle: its position at
@@ -139,7 +140,8 @@ class PickHeadlessTest {
             drag.update(H);
             LensGraph graph = drag.getLens().getGraph();
             ScreenRect area = new ScreenRect().set(graph.getArea());
-            ScreenRect strip = new ScreenRect().set(drag.getHud().getLayout().getLedger());
+            ScreenRect strip = new ScreenRect()
+                    .set(drag.getWindow().getHud().getLayout().getLedger());
             ScreenRect scene = drag.getWindow().copySceneRect(new ScreenRect());
             List<ScreenRect> graphTexts = graph.copyTextRects(new java.util.ArrayList<>());
             List<ScreenRect> hudTexts = drag.getWindow().copyTextRects(new java.util.ArrayList<>());
@@ -184,7 +186,7 @@ class PickHeadlessTest {
     @Test
     void theHelpAndTheFooterNameTheMouse() throws Exception {
         String[] texts = harness.call(() -> new String[] {drag.getKeys().getHelpText(),
-            drag.getHud().getLayout().getFooterText()});
+            drag.getWindow().getHud().getLayout().getFooterText()});
         // The sphere and its arrow tip share a row.
         assertTrue(texts[0].contains("Mouse\n   drag a sphere / its arrow tip  -  launch P0 of"
                 + " all 3 / launch V0 of all 3 = speed, angle (pauses, t = 0)\n"
@@ -195,7 +197,7 @@ class PickHeadlessTest {
     }
 
     private static KeyBinding binding(DemoState demo, int keyCode) {
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             for (int k = 0; k < binding.countKeys(); ++k) {
                 if (binding.getKeyCode(k) == keyCode) {
                     return binding;

@@ -51,7 +51,7 @@ class RecoveryHeadlessTest {
                     + "RecoveryHeadlessTest$FailingView.controlUpdate("), recovered);
             // The demo restarted: its clock is back at 0 (the harness's frames have tpf 0).
             assertEquals(0.0, harness.call(() -> demo.getClock().getSimulatedSeconds()));
-            assertEquals(recovered, harness.call(demo::getNotice));
+            assertEquals(recovered, harness.call(demo.getDemoHud()::getNotice));
             assertNull(app.getFailure());
             Matcher log = LOG.matcher(recovered);
             assertTrue(log.find(), recovered);

@@ -101,7 +101,7 @@ class StateShareTest {
         bounce.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         bounce.getClock().setPaused(false);
         for (int frame = 0; frame < 300; ++frame) {
-            bounce.advancePhysics(1f / 60f);
+            bounce.getRun().advancePhysics(1f / 60f);
         }
         bounce.getClock().setPaused(true);
         for (int i = 0; i < 10; ++i) {
@@ -113,7 +113,7 @@ class StateShareTest {
         assertTrue(share.reproduces(), share.stateLine());
         assertEquals(share.command + "\n" + share.stateLine() + "\n",
                 printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
-        String notice = bounce.getNotice();
+        String notice = bounce.getDemoHud().getNotice();
         assertTrue(notice.startsWith("C: command printed to the terminal (step 290, hash "
                 + StateHash.hex(share.hash).substring(0, 8)), notice);
         assertTrue(notice.endsWith("re-run: same bits)"), notice);
@@ -137,15 +137,15 @@ class StateShareTest {
         uniform.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         uniform.getClock().setPaused(false);
         for (int frame = 0; frame < 40; ++frame) {
-            uniform.advancePhysics(1f / 60f);
+            uniform.getRun().advancePhysics(1f / 60f);
         }
         uniform.getClock().setPaused(true);
         CompletableFuture<StateShare> pending = key.share();
         // the key returned with the check still held: the window's frame goes on
         assertFalse(pending.isDone());
         assertEquals(1, held.size());
-        assertTrue(uniform.getNotice().endsWith("re-running it to check...)"),
-                uniform.getNotice());
+        assertTrue(uniform.getDemoHud().getNotice().endsWith("re-running it to check...)"),
+                uniform.getDemoHud().getNotice());
         assertEquals("particle-lab demo uniform --frames 40 --fixed-tpf " + FRAME + "\n",
                 printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
         held.get(0).run();
@@ -153,7 +153,8 @@ class StateShareTest {
         assertTrue(share.reproduces(), share.stateLine());
         assertEquals(share.command + "\n" + share.stateLine() + "\n",
                 printed.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n"));
-        assertTrue(uniform.getNotice().endsWith("re-run: same bits)"), uniform.getNotice());
+        assertTrue(uniform.getDemoHud().getNotice().endsWith("re-run: same bits)"),
+                uniform.getDemoHud().getNotice());
     }
 
     /**
@@ -165,12 +166,12 @@ class StateShareTest {
         DemoState uniform = DemoCatalog.entries().get(DemoCatalog.indexOf("uniform"))
                 .create();
         for (int i = 0; i < 30; ++i) {
-            uniform.advancePhysics(1f / 60f);
+            uniform.getRun().advancePhysics(1f / 60f);
         }
         StateShare untouched = StateShare.of(uniform);
         assertTrue(untouched.reproduces(), untouched.stateLine());
         uniform.getParticles().get(0).getParticle().velocity.x += 1f;
-        uniform.advancePhysics(1f / 60f);
+        uniform.getRun().advancePhysics(1f / 60f);
         StateShare changed = StateShare.of(uniform);
         assertEquals("particle-lab demo uniform --frames 31 --fixed-tpf " + FRAME,
                 changed.command);
@@ -348,7 +349,7 @@ class StateShareTest {
         // demo's update: pull ran 79 frames of one step each
         assertTrue(recording.contains("\nframes 19 tpf " + FRAME + "\nhash 79 "), recording);
         assertEquals("the recording of pull ended: another demo was chosen",
-                demos.get(other).getNotice());
+                demos.get(other).getDemoHud().getNotice());
         Replay replay = replay(recording);
         assertEquals("replayed 79 steps: identical (2 hashes compared)", replay.out.strip(),
                 replay.toString());
@@ -494,7 +495,7 @@ class StateShareTest {
             }
             ++frame;
             Camera camera = getApplication().getCamera();
-            DragControl drags = demo.getDragControl();
+            DragControl drags = demo.getWindow().getDragControl();
             switch (frame) {
                 case 20:
                 case 50:

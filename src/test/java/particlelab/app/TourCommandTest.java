@@ -85,10 +85,10 @@ class TourCommandTest {
             LectureTour.Stop stop = stops.get(i);
             DemoState demo = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
             DemoCommand.applySettings(demo, stop.getSettings());
-            demo.advancePhysics(TPF);
+            demo.getRun().advancePhysics(TPF);
             String early = watch(stop, demo);
             for (int frame = 0; frame < FRAMES; ++frame) {
-                demo.advancePhysics(TPF);
+                demo.getRun().advancePhysics(TPF);
             }
             String later = watch(stop, demo);
             assertTrue(early.startsWith(LectureTour.WATCH) && early.endsWith("\n"), early);
@@ -113,7 +113,7 @@ class TourCommandTest {
             DemoState demo = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
             DemoCommand.applySettings(demo, stop.getSettings());
             for (int frame = 0; frame < FRAMES; ++frame) {
-                demo.advancePhysics(TPF);
+                demo.getRun().advancePhysics(TPF);
             }
             String line = watch(stop, demo);
             // The balls the watch line is about: pull's one, drag's three, thrust's two.
@@ -144,7 +144,7 @@ class TourCommandTest {
         DemoCommand.applySettings(demo, stop.getSettings());
         boolean sawOne = false;
         for (int frame = 0; frame < 3000 && demo.countLanded() < 2; ++frame) {
-            demo.advancePhysics(TPF);
+            demo.getRun().advancePhysics(TPF);
             String line = watch(stop, demo);
             if (demo.countLanded() == 1) {
                 sawOne = true;
@@ -163,7 +163,7 @@ class TourCommandTest {
         for (LectureTour.Stop stop : LectureTour.stops()) {
             DemoState demo = DemoCatalog.createAll().get(DemoCatalog.indexOf(stop.getDemo()));
             DemoCommand.applySettings(demo, stop.getSettings());
-            demo.advancePhysics(TPF);
+            demo.getRun().advancePhysics(TPF);
             for (int i = 0; i < 200; ++i) {
                 text.setLength(0);
                 stop.getWatch().append(demo, text);

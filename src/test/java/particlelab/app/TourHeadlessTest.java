@@ -134,8 +134,8 @@ class TourHeadlessTest {
         press("F8");
         harness.awaitFrames(3);
         DemoState demo = harness.call(() -> app.getSwitcher().getSelected());
-        String title = harness.call(() -> demo.getHud().getTitleText());
-        assertTrue(harness.call(() -> demo.getHud().isPresenting()), title);
+        String title = harness.call(() -> demo.getWindow().getHud().getTitleText());
+        assertTrue(harness.call(() -> demo.getWindow().getHud().isPresenting()), title);
         assertTrue(title.contains("1/" + LectureTour.stops().size() + " Collision Response"),
                 title);
         harness.call(() -> {
@@ -143,7 +143,7 @@ class TourHeadlessTest {
             return true;
         });
         harness.awaitFrames(2);
-        String footer = harness.call(() -> demo.getHud().getFooterText());
+        String footer = harness.call(() -> demo.getWindow().getHud().getFooterText());
         harness.call(() -> {
             HeadlessHarness.press(demo, "F2");
             return true;
@@ -177,8 +177,8 @@ class TourHeadlessTest {
             List<String> problems) throws Exception {
         DemoState demo = app.getSwitcher().getDemos()
                 .get(DemoCatalog.indexOf(LectureTour.stops().get(index).getDemo()));
-        String shown = harness.call(() -> demo.getHud().getBodyText());
-        String footer = harness.call(() -> demo.getHud().getFooterText());
+        String shown = harness.call(() -> demo.getWindow().getHud().getBodyText());
+        String footer = harness.call(() -> demo.getWindow().getHud().getFooterText());
         int stop = harness.call(() -> app.getTour().getStop());
         String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": ";
         // Lines are hidden from the body's end, the watch lines first, and only with the
@@ -201,12 +201,13 @@ class TourHeadlessTest {
                 .get(DemoCatalog.indexOf(stop.getDemo()));
         assertSame(expected, harness.call(() -> app.getSwitcher().getSelected()),
                 stop.getSlide());
-        String hud = harness.call(() -> expected.formatHud(new StringBuilder()).toString());
+        String hud = harness
+                .call(() -> expected.getWindow().formatHud(new StringBuilder()).toString());
         String heading = "Tour " + (index + 1) + "/" + LectureTour.stops().size() + ": "
                 + stop.getSlide();
         assertTrue(hud.contains(heading) && hud.contains(LectureTour.WATCH), hud);
         // The title names the stop too, for presentation mode, which shows no heading.
-        String title = harness.call(() -> expected.getHud().getTitleText());
+        String title = harness.call(() -> expected.getWindow().getHud().getTitleText());
         assertTrue(title.endsWith((index + 1) + "/" + LectureTour.stops().size() + " "
                 + stop.getSlide()), title);
         // The state: each setting's value is the one the demo holds now.

@@ -173,7 +173,7 @@ class TourQuestionsTest {
         DemoState demo = TourCommand.stateOf(stop);
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         while (demo.getClock().getSimulatedSeconds() < TourQuestions.UNIFORM_SECONDS) {
-            demo.advancePhysics(1f / 60f);
+            demo.getRun().advancePhysics(1f / 60f);
         }
         com.jme3.math.Vector3f p = demo.getParticles().get(0).getParticle().position;
         com.jme3.math.Vector3f p0 = demo.getParticles().get(0)
@@ -290,7 +290,7 @@ class TourQuestionsTest {
         // A minute of frames: a search of a few shots of a few seconds each is over by then.
         for (int frame = 0; frame < 3600 && !((IterativeAimingDemo) demo).isRoundOver();
                 ++frame) {
-            demo.advancePhysics(1f / 60f);
+            demo.getRun().advancePhysics(1f / 60f);
         }
         IterativeAimingDemo iterate = (IterativeAimingDemo) demo;
         assertTrue(iterate.isRoundOver());
@@ -401,7 +401,7 @@ class TourQuestionsTest {
     void theFountainStopsLiveShareIsFarFromHalfAndAll() {
         int stop = stopOf("After " + TourQuestions.FOUNTAIN_SECONDS + " s, how many");
         DemoState demo = TourCommand.stateOf(stop);
-        int pool = demo.countSimulatedParticles();
+        int pool = demo.getRun().countSimulatedParticles();
         int live = TourQuestions.liveAfter(demo.getParameters().getValue("h"), pool);
         assertTrue(live > 0.6 * pool && live < 0.95 * pool, live + " of " + pool);
         assertEquals(1, TourQuestions.forStop(stop).answer(demo));
@@ -456,7 +456,7 @@ class TourQuestionsTest {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         // Ten seconds of frames: every sphere is down after a few.
         for (int frame = 0; frame < 600; ++frame) {
-            demo.advancePhysics(1f / 60f);
+            demo.getRun().advancePhysics(1f / 60f);
         }
         double[] landings = new double[count];
         for (int i = 0; i < count; ++i) {

@@ -89,7 +89,7 @@ class TourSceneShareHeadlessTest {
         // Presenting a slide about energy, the ledger's bars beside the scene are part of the
         // picture (issue 32; PresentationHeadlessTest counts them so): with them the scene
         // reaches the window's right edge.
-        float across = presenting && !demo.getHud().getLayout().getLedger().isEmpty()
+        float across = presenting && !demo.getWindow().getHud().getLayout().getLedger().isEmpty()
                 ? width - scene.getX() : scene.getWidth();
         float share = across * scene.getHeight() / (width * (float) height);
         range[slot] = Math.min(range[slot], share);

@@ -228,7 +228,7 @@ class TourVoteHeadlessTest {
             } catch (RuntimeException e) {
                 thrown = e.toString();
             }
-            String notice = shown.getNotice();
+            String notice = shown.getDemoHud().getNotice();
             boolean asked = tour.getVote() != null;
             tour.leave();
             return new String[] {thrown, String.valueOf(asked), notice};

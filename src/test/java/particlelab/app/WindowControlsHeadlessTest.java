@@ -79,10 +79,10 @@ class WindowControlsHeadlessTest {
         });
         harness.awaitFrames(2);
         assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 1f)));
-        assertEquals(1920f, harness.call(() -> demo.getHud().getLayout().getWindow()
+        assertEquals(1920f, harness.call(() -> demo.getWindow().getHud().getLayout().getWindow()
                 .getWidth()));
         assertEquals(HudLayout.scaleFor(1920, 1080),
-                harness.call(() -> demo.getHud().getLayout().getScale()));
+                harness.call(() -> demo.getWindow().getHud().getLayout().getScale()));
 
         harness.call(() -> {
             app.getWindowControls().setUiFactor(0.5f);
@@ -91,7 +91,7 @@ class WindowControlsHeadlessTest {
         harness.awaitFrames(2);
         assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(1920, 1080, 0.5f)));
         assertEquals(0.5f * HudLayout.scaleFor(1920, 1080),
-                harness.call(() -> demo.getHud().getLayout().getScale()));
+                harness.call(() -> demo.getWindow().getHud().getLayout().getScale()));
 
         harness.call(() -> {
             app.getWindowControls().setUiFactor(1f);
@@ -158,7 +158,7 @@ class WindowControlsHeadlessTest {
         });
         harness.awaitFrames(2);
         assertEquals("fullscreen needs a window (this run has none)",
-                harness.call(() -> app.getSwitcher().getSelected().getNotice()));
+                harness.call(() -> app.getSwitcher().getSelected().getDemoHud().getNotice()));
     }
 
     @Test
@@ -173,7 +173,7 @@ class WindowControlsHeadlessTest {
             });
             harness.awaitFrames(2);
             assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
-            assertTrue(harness.call(() -> switcher.getSelected().getHud().getLayout()
+            assertTrue(harness.call(() -> switcher.getSelected().getWindow().getHud().getLayout()
                     .isPresenting()));
             // Tab, a digit (select) and a tour stop: each demo shown opens presenting.
             for (int next : new int[] {1, 8}) {
@@ -193,7 +193,8 @@ class WindowControlsHeadlessTest {
             });
             harness.awaitFrames(3);
             assertTrue(harness.call(() -> switcher.getSelected().getDemoHud().isPresenting()));
-            assertTrue(harness.call(() -> switcher.getSelected().getHud().getFooterText()
+            assertTrue(harness
+                    .call(() -> switcher.getSelected().getWindow().getHud().getFooterText()
                     .contains("PageDown  next stop")));
             // F8 again: the full HUD, for the demo shown and the next one.
             harness.call(() -> {
@@ -250,7 +251,8 @@ class WindowControlsHeadlessTest {
                 harness.awaitFrames(FRAMES_BETWEEN);
                 String where = demo.getTitle() + " at " + size[0] + "x" + size[1];
                 assertTrue(harness.call(() -> demo.getDemoHud().isLaidOutFor(size[0], size[1], 1f)), where);
-                ScreenRect scene = harness.call(() -> demo.getHud().getLayout().getScene());
+                ScreenRect scene = harness
+                        .call(() -> demo.getWindow().getHud().getLayout().getScene());
                 assertTrue(!scene.isEmpty() && new ScreenRect(0f, 0f, size[0], size[1])
                         .contains(scene), where + ": scene " + scene);
             }
@@ -300,7 +302,7 @@ class WindowControlsHeadlessTest {
                     // wait pass by hand.
                     assertTrue(harness.call(() -> harness.app().getSwitcher().isEntryPending()));
                     String title = harness.call(() -> harness.app().getSwitcher().getSelected()
-                            .getHud().getTitleText());
+                            .getWindow().getHud().getTitleText());
                     assertEquals("4.  " + demos().get(3).getTitle()
                             + "      typed 1_  (a second digit for 10-19)", title);
                     harness.call(() -> {
@@ -325,7 +327,7 @@ class WindowControlsHeadlessTest {
         assertTrue(help.contains("\nThe demos, by number\n   1  -  " + demos().get(0).getTitle()
                 + ";   2  -  " + demos().get(1).getTitle() + "\n"), help);
         assertTrue(help.contains("\n   19  -  " + demos().get(18).getTitle() + "\n"), help);
-        String footer = harness.call(() -> demo.getHud().getFooterText());
+        String footer = harness.call(() -> demo.getWindow().getHud().getFooterText());
         assertTrue(footer.contains("Tab / Shift+Tab  demos (or 1-19)"), footer);
     }
 
@@ -498,7 +500,7 @@ class WindowControlsHeadlessTest {
 
     /** Every rectangle and number of a demo's layout, exactly, as text to compare. */
     private static String describe(DemoState demo) {
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         List<String> parts = new ArrayList<>();
         for (ScreenRect rect : new ScreenRect[] {layout.getWindow(), layout.getTitle(),
             layout.getBody(), layout.getWarning(), layout.getFooter(), layout.getScene(),
@@ -506,15 +508,15 @@ class WindowControlsHeadlessTest {
             parts.add(rect.getX() + "," + rect.getY() + "," + rect.getWidth() + ","
                     + rect.getHeight());
         }
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         parts.add("scale " + layout.getScale() + ", body lines " + layout.getBodyLines()
                 + ", help " + layout.getHelpSize() + ", " + plane.getPixelsPerMetre()
                 + " px/m at " + plane.getCentreX() + ", " + plane.getCentreY());
-        parts.add(demo.getHud().getFooterText());
+        parts.add(demo.getWindow().getHud().getFooterText());
         // The HUD is rebuilt every frame, so a line of wall-clock figures (the fountain's
         // "physics ... ms/frame ... fps") differs from frame to frame: its text is left out,
         // the lines it took are kept.
-        for (String line : demo.getHud().getBodyText().split("\n", -1)) {
+        for (String line : demo.getWindow().getHud().getBodyText().split("\n", -1)) {
             parts.add(line.contains(" ms/frame") ? "(measured line)" : line);
         }
         return String.join("\n", parts);

@@ -52,7 +52,7 @@ class ComparisonLaneTest {
         choose(demo, ComparisonLane.Kind.SLIDE);
         int steps = 0;
         while (!followed.hasLanded() && steps < MAX_STEPS) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             if (followed.hasLanded()) {
                 break;
@@ -72,7 +72,7 @@ class ComparisonLaneTest {
         choose(demo, ComparisonLane.Kind.SLIDE);
         DemoParticle sphere = demo.getParticles().get(0);
         for (int n = 1; n <= 300; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             if (demo.getClock().getSimulatedSeconds() < H / 2) {
                 // the sphere left the view and both started over
                 continue;
@@ -113,7 +113,7 @@ class ComparisonLaneTest {
                 new Vector3f(10f, 10f, 0f), 1f);
         Vector3f g = new Vector3f(0f, -9.8f, 0f);
         for (int n = 1; n <= 90; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             style.step(g, DragDemo.LINEAR_B, H);
             assertSameBits(style.position, lane.getSlideCode().position, "P at step " + n);
         }
@@ -131,7 +131,7 @@ class ComparisonLaneTest {
         DemoParticle thruster = demo.getParticles().get(1);
         double largest = 0.0;
         for (int n = 0; n < MAX_STEPS && !thruster.hasLanded(); ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             if (!thruster.hasLanded()) {
                 largest = Math.max(largest, thruster.getParticle().position
                         .distance(lane.getSlideCode().position));
@@ -158,7 +158,7 @@ class ComparisonLaneTest {
         MotionState expected = new MotionState(0.0, 0.0, 10.0, 10.0);
         int steps = 0;
         while (!lane.getParticle().hasLanded() && steps < MAX_STEPS) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             alone.step(expected, H);
             for (int i = 0; i < 3; ++i) {
@@ -184,7 +184,7 @@ class ComparisonLaneTest {
         DemoParticle linear = demo.getParticles().get(1);
         for (int n = 1; n <= 90; ++n) {
             // the flight lands after 97 steps; the ground then moves the sphere, not a step
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             Vector3f shared = linear.getParticle().position;
             for (int i = 0; i < 3; ++i) {
                 assertEquals(shared.get(i), lane.getState().position[i], 0.0, "step " + n);
@@ -204,7 +204,7 @@ class ComparisonLaneTest {
         ComparisonLane lane = demo.getLane();
         choose(demo, ComparisonLane.Kind.RK4);
         for (int n = 0; n < MAX_STEPS && !lane.getParticle().hasLanded(); ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(lane.getParticle().hasLanded());
         assertTrue(lane.getErrorMetres() < Gravity.STANDARD_G * H * H / 8,
@@ -233,7 +233,7 @@ class ComparisonLaneTest {
         choose(demo, ComparisonLane.Kind.RK4);
         DemoParticle ball = demo.getParticles().get(0);
         for (int n = 0; n < MAX_STEPS && !lane.getParticle().hasLanded(); ++n) {
-            demo.advancePhysics(0.1f);
+            demo.getRun().advancePhysics(0.1f);
         }
         assertTrue(ball.hasLanded() && lane.getParticle().hasLanded());
         double h = 0.1;
@@ -254,14 +254,15 @@ class ComparisonLaneTest {
     @Test
     void offLeavesTheHudAloneAndTheLaneKeyCyclesEveryLane() {
         GravitationalPullDemo demo = new GravitationalPullDemo();
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals(ComparisonLane.Kind.OFF, demo.getLane().getKind());
         StringBuilder text = new StringBuilder();
         ((DemoState) demo).writeOwnHudLines(text);
         assertEquals("", text.toString());
-        assertFalse(demo.formatHud(new StringBuilder()).toString().contains("comparison"));
+        assertFalse(demo.getWindow().formatHud(new StringBuilder()).toString()
+                .contains("comparison"));
         KeyBinding key = null;
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             if (binding.getKeyLabel().equals("L")) {
                 key = binding;
             }

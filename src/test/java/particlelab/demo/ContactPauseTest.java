@@ -63,7 +63,7 @@ class ContactPauseTest {
         assertTrue(rebound > 0f, "V_y = " + rebound);
 
         for (int frame = 0; frame < FRAMES_WHILE_PAUSED; ++frame) {
-            bounce.advancePhysics(frameSeconds);
+            bounce.getRun().advancePhysics(frameSeconds);
         }
         assertEquals(contactStep, world.getStepCount(), "stepped while paused at the contact");
         assertEquals(contactStep * (double) H, bounce.getClock().getSimulatedSeconds(),
@@ -121,7 +121,7 @@ class ContactPauseTest {
         long firstStop = world.getStepCount();
 
         press(bounce, "Space");
-        bounce.advancePhysics(H);
+        bounce.getRun().advancePhysics(H);
         assertEquals(firstStop + 1, world.getStepCount(), "Space resumes");
         assertFalse(hud(bounce).contains("at contact"), hud(bounce));
 
@@ -150,7 +150,7 @@ class ContactPauseTest {
         BounceDemo bounce = new BounceDemo();
         // 950 frames: 15.83 s, after both lanes came to rest (the swept one at 15.49 s)
         for (int frame = 0; frame < 950; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
         assertTrue(hud(bounce).contains("swept 0.042 m, 0.000 J, at rest at 15.494 s"),
                 hud(bounce));
@@ -169,7 +169,7 @@ class ContactPauseTest {
         press(bounce, "Enter");
         press(bounce, "Enter");
         for (int frame = 0; frame < firstContactStep() + 30; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
         assertFalse(bounce.getClock().isPaused());
         assertEquals(firstContactStep() + 30, bounce.getWorld().getStepCount());
@@ -194,17 +194,17 @@ class ContactPauseTest {
 
     private static void runUntilPaused(DemoState demo, float frameSeconds) {
         for (int frame = 0; frame < MAX_FRAMES && !demo.getClock().isPaused(); ++frame) {
-            demo.advancePhysics(frameSeconds);
+            demo.getRun().advancePhysics(frameSeconds);
         }
         assertTrue(demo.getClock().isPaused(), "no contact paused the clock");
     }
 
     private static String hud(DemoState demo) {
-        return demo.formatHud(new StringBuilder()).toString();
+        return demo.getWindow().formatHud(new StringBuilder()).toString();
     }
 
     private static void press(DemoState demo, String label) {
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             for (int i = 0; i < binding.countKeys(); ++i) {
                 if (binding.getKeyLabel(i).equals(label)) {
                     binding.press(i);

@@ -37,7 +37,7 @@ class DemoKeysTest {
         keys.addShared(new KeyBinding(KeyInput.KEY_T, "T", "mode", () -> { }));
         keys.addShared(new KeyBinding(KeyInput.KEY_P, "P", "pause", () -> { })
                 .withSummary("pause"));
-        keys.setApplication(List.of(new KeyBinding(KeyInput.KEY_TAB, "Tab", "next demo",
+        keys.setApplicationBindings(List.of(new KeyBinding(KeyInput.KEY_TAB, "Tab", "next demo",
                 () -> { }).withSummary("next demo")));
 
         // The camera's gesture last: the right button turns it (the left one picks).
@@ -48,7 +48,8 @@ class DemoKeysTest {
     @Test
     void keysOfJmeOfTheApplicationAndOfAnotherActionAreRefusedNamingBoth() {
         DemoKeys keys = new DemoKeys();
-        keys.setApplication(List.of(new KeyBinding(KeyInput.KEY_7, "7", "no demo", () -> { })));
+        keys.setApplicationBindings(List.of(new KeyBinding(KeyInput.KEY_7, "7", "no demo",
+                () -> { })));
         keys.addShared(new KeyBinding(KeyInput.KEY_V, "V", "arrows", () -> { }));
 
         IllegalArgumentException jme = assertThrows(IllegalArgumentException.class,

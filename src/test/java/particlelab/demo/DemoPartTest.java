@@ -55,12 +55,12 @@ class DemoPartTest {
                 "a.declareDraggables", "b.declareDraggables"), log);
         // a part's draggable follows the demo's, in the order added
         List<String> drags = new ArrayList<>();
-        for (Draggable draggable : demo.getDragControl().getDraggables()) {
+        for (Draggable draggable : demo.getWindow().getDragControl().getDraggables()) {
             drags.add(draggable.getGestureLabel());
         }
         assertEquals(List.of("drag demo's ball", "drag a's ball"), drags);
         List<String> keys = new ArrayList<>();
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             keys.add(binding.getKeyLabel());
         }
         // the parts' keys follow the demo's, in the order added
@@ -75,19 +75,19 @@ class DemoPartTest {
 
         log.clear();
         demo.getClock().setMode(SimulationClock.Mode.RAW_TPF);
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         // raw tpf: one frame is one step
         assertEquals(1, demo.getWorld().getStepCount());
         assertEquals(List.of("demo.beforeStep", "a.beforeStep", "b.beforeStep",
                 "demo.afterStep", "a.afterStep", "b.afterStep"), log);
 
         log.clear();
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertEquals(List.of("demo.writeHudLines", "a.writeHudLines", "b.writeHudLines"), log);
         assertTrue(hud.endsWith("demo's line\na's line\nb's line\n"), hud);
 
         log.clear();
-        Presentation slide = demo.formatPresentation();
+        Presentation slide = demo.getWindow().formatPresentation();
         assertEquals(List.of("demo.writePresentation", "a.writePresentation",
                 "b.writePresentation"), log);
         // the demo wrote the slide's one readout; the parts add their formula lines after it
@@ -101,7 +101,7 @@ class DemoPartTest {
         demo.getClock().setMode(SimulationClock.Mode.RAW_TPF);
         for (int i = 0; i < 5; ++i) {
             // raw tpf: one frame is one step
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals(5, demo.first.steps);
         assertTrue(demo.getReplayControls().stepBack(), "the ring holds the earlier steps");
@@ -116,7 +116,7 @@ class DemoPartTest {
     void noViewsAreBuiltWithoutAWindow() {
         List<String> log = new ArrayList<>();
         RecordingDemo demo = new RecordingDemo(log);
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertFalse(log.contains("demo.buildViews"), "views built without a window: " + log);
         assertFalse(log.contains("a.buildViews") || log.contains("b.buildViews"), log.toString());
     }

@@ -106,7 +106,7 @@ class DemoPartsHeadlessTest {
                 EnergyBars bars = demo.getEnergyPart().getBars();
                 shown.append(shown.length() == 0 ? "" : ", ").append(name).append(' ')
                         .append(bars.isVisible()
-                                && !demo.getHud().getLayout().getLedger().isEmpty());
+                                && !demo.getWindow().getHud().getLayout().getLedger().isEmpty());
                 app.getWindowControls().setPresenting(false);
                 frames(app, FRAMES);
             }
@@ -131,7 +131,7 @@ class DemoPartsHeadlessTest {
             demo.getDemoHud().setPresenting(true);
             demo.getDemoHud().layOut(1920, 1080, 1.25f);
             HeadlessHarness.fly(demo, FRAMES, H);
-            HudLayout layout = demo.getHud().getLayout();
+            HudLayout layout = demo.getWindow().getHud().getLayout();
             String found = layout.getWindow() + ", strip " + !layout.getLedger().isEmpty()
                     + ", scene right of the strip " + (layout.getScene().getRight()
                     > layout.getLedger().getX());
@@ -196,7 +196,7 @@ class DemoPartsHeadlessTest {
                 "the parts were laid out with the first layout: " + log);
         List<String> frame = harness.call(() -> {
             log.clear();
-            demo.advance(H);
+            demo.getWindow().advance(H);
             List<String> seen = new ArrayList<>();
             for (String entry : log) {
                 if (entry.endsWith("afterFrame")) {
@@ -226,7 +226,7 @@ class DemoPartsHeadlessTest {
         String where = demo.getTitle() + " at " + window[0] + "x" + window[1]
                 + (presenting ? " presenting" : "");
         List<String> found = new ArrayList<>();
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         ScreenRect strip = layout.getLedger();
         EnergyBars bars = demo.getEnergyPart().getBars();
         if (!(strip.getWidth() >= 0f && strip.getHeight() >= 0f)) {
@@ -301,7 +301,7 @@ class DemoPartsHeadlessTest {
             for (int frame = 0; frame < LANE_FRAMES; ++frame) {
                 SmallPanelHeadlessTest.frame(app);
             }
-            return new String[] {studentPull.getHud().getBodyText(),
+            return new String[] {studentPull.getWindow().getHud().getBodyText(),
                 String.valueOf(studentPull.getClock().getSimulatedSeconds() - before),
                 String.valueOf(app.getRecovered()), String.valueOf(app.getFailure())};
         });

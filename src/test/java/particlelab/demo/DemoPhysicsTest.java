@@ -17,7 +17,7 @@ import particlelab.physics.SimulationClock;
 
 /**
  * The demos' physics in plain JUnit, with no jME application: each demo is made with
- * {@code new} and driven by {@link DemoState#advancePhysics}, the frame without its views.
+ * {@code new} and driven by {@link DemoRun#advancePhysics}, the frame without its views.
  */
 class DemoPhysicsTest {
 
@@ -33,7 +33,7 @@ class DemoPhysicsTest {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < steps; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             for (DemoParticle particle : demo.getParticles()) {
                 if (particle.getPathIntegrator() != particle.getIntegrator()) {
@@ -121,7 +121,7 @@ class DemoPhysicsTest {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < 30; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             assertEquals(30L, demo.getWorld().getStepCount(), demo.getTitle());
             // The world sums the same float steps in double as the clock does.
@@ -141,7 +141,7 @@ class DemoPhysicsTest {
         int steps = 90;
         pull.restart();
         for (int frame = 0; frame < steps; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
         Vector3f position = pull.getParticles().get(0).getParticle().position;
         // docs/numerics.md: y_n = n·h·vy − g·h²·n(n+1)/2, x_n = n·h·vx (the stepped parabola).

@@ -88,12 +88,12 @@ class DemoStateHeadlessTest {
             drag.restart();
             drag.getClock().setPaused(true);
             for (int frame = 0; frame < 10; ++frame) {
-                drag.advance(H);
+                drag.getWindow().advance(H);
             }
             double paused = drag.getClock().getSimulatedSeconds();
             drag.getClock().requestSingleStep();
-            drag.advance(H);
-            drag.advance(H);
+            drag.getWindow().advance(H);
+            drag.getWindow().advance(H);
             double stepped = drag.getClock().getSimulatedSeconds();
             drag.getClock().setPaused(false);
             return new double[] {paused, stepped};
@@ -118,9 +118,9 @@ class DemoStateHeadlessTest {
             StringBuilder expected = new StringBuilder();
             for (int frame = 1; frame <= 1200; ++frame) {
                 tunnelling.update(H);
-                String shown = tunnelling.getHud().getBodyText();
+                String shown = tunnelling.getWindow().getHud().getBodyText();
                 for (DemoParticle ball : tunnelling.getParticles()) {
-                    Spatial sphere = tunnelling.getView(ball).getNode()
+                    Spatial sphere = tunnelling.getWindow().getView(ball).getNode()
                             .getChild(ball.getLabel() + " sphere");
                     expected.setLength(0);
                     expected.append('\n').append(ball.getLabel()).append(":  P = ");
@@ -152,8 +152,8 @@ class DemoStateHeadlessTest {
             for (int frame = 1; frame <= 300; ++frame) {
                 // 1.5 h a frame: the leftover is 0 or h/2, so α is 0 or 0.5.
                 tunnelling.update(1.5f * H);
-                String shown = tunnelling.getHud().getBodyText();
-                float alpha = tunnelling.getDrawBlend();
+                String shown = tunnelling.getWindow().getHud().getBodyText();
+                float alpha = tunnelling.getWindow().getDrawBlend();
                 double leftover = tunnelling.getClock().getLeftoverSeconds()
                         / tunnelling.getClock().getStepSeconds();
                 if (Math.abs(alpha - leftover) > 1e-6) {
@@ -166,7 +166,7 @@ class DemoStateHeadlessTest {
                     return "frame " + frame + ": no " + expected + " in the HUD:\n" + shown;
                 }
                 for (DemoParticle ball : tunnelling.getParticles()) {
-                    Spatial sphere = tunnelling.getView(ball).getNode()
+                    Spatial sphere = tunnelling.getWindow().getView(ball).getNode()
                             .getChild(ball.getLabel() + " sphere");
                     ball.getBody().copyDrawnPosition(alpha, drawn);
                     if (!sphere.getLocalTranslation().equals(drawn)) {
@@ -228,14 +228,14 @@ class DemoStateHeadlessTest {
         List<KeyBinding> appKeys = harness.app().getSwitcher().getBindings();
         for (DemoState demo : demos()) {
             String help = demo.getKeys().getHelpText();
-            List<KeyBinding> keys = demo.getBindings();
+            List<KeyBinding> keys = demo.getKeys().getBindings();
             keys.addAll(appKeys);
             assertTrue(keys.size() > 10, demo.getTitle());
             for (KeyBinding key : keys) {
                 String line = key.getKeyLabel() + "  -  " + key.getDescription();
                 assertTrue(help.contains(line), demo.getTitle() + " help lacks: " + line);
             }
-            assertEquals(help, harness.call(() -> demo.getHud().getHelpText()));
+            assertEquals(help, harness.call(() -> demo.getWindow().getHud().getHelpText()));
         }
     }
 
@@ -261,18 +261,18 @@ class DemoStateHeadlessTest {
             long[][] allocated = harness.call(() -> {
                 demo.restart();
                 for (int frame = 0; frame < warmUp; ++frame) {
-                    demo.advance(H);
-                    demo.formatHud(hudText);
+                    demo.getWindow().advance(H);
+                    demo.getWindow().formatHud(hudText);
                 }
                 long[][] bytes = new long[2][windows];
                 for (int window = 0; window < windows; ++window) {
                     long start = threads.getCurrentThreadAllocatedBytes();
                     for (int frame = 0; frame < 100; ++frame) {
-                        demo.advance(H);
+                        demo.getWindow().advance(H);
                     }
                     long middle = threads.getCurrentThreadAllocatedBytes();
                     for (int frame = 0; frame < 10; ++frame) {
-                        demo.formatHud(hudText);
+                        demo.getWindow().formatHud(hudText);
                     }
                     bytes[0][window] = middle - start;
                     bytes[1][window] = threads.getCurrentThreadAllocatedBytes() - middle;
@@ -293,11 +293,11 @@ class DemoStateHeadlessTest {
             demo.getDemoHud().setRefreshSeconds(DemoState.SLOW_HUD_REFRESH_SECONDS);
             try {
                 demo.restart(); // a shot in the air: the HUD has something to follow
-                int before = demo.getHud().countTextChanges();
+                int before = demo.getWindow().getHud().countTextChanges();
                 for (int frame = 0; frame < 600; ++frame) {
                     demo.update(H);
                 }
-                return demo.getHud().countTextChanges() - before;
+                return demo.getWindow().getHud().countTextChanges() - before;
             } finally {
                 demo.getDemoHud().setRefreshSeconds(DemoState.HUD_REFRESH_SECONDS);
             }
@@ -321,7 +321,7 @@ class DemoStateHeadlessTest {
             stiff.getClock().setTimeScale(1f);
             stiff.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             stiff.update(H);
-            return stiff.getHud().getWarningText();
+            return stiff.getWindow().getHud().getWarningText();
         });
         assertEquals(1, stiff.getRun().countBlowUps());
         assertTrue(warning.contains("blew up"), warning);
@@ -341,7 +341,7 @@ class DemoStateHeadlessTest {
                 stiff.update(H);
             }
             stiff.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
-            return stiff.getHud().getWarningText();
+            return stiff.getWindow().getHud().getWarningText();
         });
         assertTrue(warning.startsWith("UNSTABLE: h = 250.0 ms"), warning);
         // Linear drag b/m = 10 /s: sigma = lambda, and h > 2/sigma grows the speed.
@@ -364,7 +364,7 @@ class DemoStateHeadlessTest {
             double previous = 0.0;
             // 7.5 s to the edge; run 12 s of simulated time, through at least one loop.
             for (int frame = 0; frame < Math.round(12f / scale / H); ++frame) {
-                uniform.advance(H);
+                uniform.getWindow().advance(H);
                 double t = uniform.getClock().getSimulatedSeconds();
                 if (t < previous && Double.isNaN(firstLoop)) {
                     firstLoop = t;
@@ -395,11 +395,11 @@ class DemoStateHeadlessTest {
             drag.restart();
             // The three spheres land within 2.1 s (gravity only: 2.04 s).
             for (int frame = 0; frame < 200; ++frame) {
-                drag.advance(H);
+                drag.getWindow().advance(H);
             }
             double t = drag.getClock().getSimulatedSeconds();
             for (int frame = 0; frame < 100; ++frame) {
-                drag.advance(H);
+                drag.getWindow().advance(H);
             }
             double latest = 0.0;
             for (DemoParticle particle : drag.getParticles()) {
@@ -407,7 +407,7 @@ class DemoStateHeadlessTest {
             }
             return new Object[] {drag.getRun().isSceneOver(), t,
                 drag.getClock().getSimulatedSeconds(), latest,
-                drag.formatHud(new StringBuilder()).toString()};
+                drag.getWindow().formatHud(new StringBuilder()).toString()};
         });
         assertTrue((Boolean) result[0]);
         assertEquals((Double) result[1], (Double) result[2], 0.0);
@@ -443,7 +443,7 @@ class DemoStateHeadlessTest {
     }
 
     private static KeyBinding binding(DemoState demo, String descriptionStart) {
-        for (KeyBinding key : demo.getBindings()) {
+        for (KeyBinding key : demo.getKeys().getBindings()) {
             if (key.getDescription().startsWith(descriptionStart)) {
                 return key;
             }
@@ -515,7 +515,7 @@ class DemoStateHeadlessTest {
                 before.set(rigid.orientation);
                 beforeCentre.set(rigid.getParticle().position);
                 long steps = demo.getWorld().getStepCount();
-                demo.advance(H);
+                demo.getWindow().advance(H);
                 if (demo.getWorld().getStepCount() != steps) {
                     previous.set(before);
                     previousCentre.set(beforeCentre);
@@ -558,13 +558,13 @@ class DemoStateHeadlessTest {
             }
             // F6 off: the raw step, R itself.
             demo.getReplayControls().setInterpolating(false);
-            demo.advance(H);
+            demo.getWindow().advance(H);
             String raw = compareMesh(view.get(), rigid.orientation, rigid.getParticle().position);
             if (raw != null) {
                 found.add("F6 off: " + raw);
             }
             demo.getReplayControls().setInterpolating(true);
-            String hud = demo.formatHud(new StringBuilder()).toString();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
             if (hud.contains("raw steps (this demo's views)")) {
                 found.add("the HUD still says raw steps: " + hud);
             }
@@ -691,11 +691,11 @@ class DemoStateHeadlessTest {
     /** Each post's name is shown, and covers no post, no resting sphere and no trail. */
     private static List<String> checkPostNames(String when) {
         List<String> problems = new ArrayList<>();
-        PlaneView plane = clip.getPlaneView();
+        PlaneView plane = clip.getWindow().getPlaneView();
         List<ScreenRect> names = ((DemoState) clip).getWindow().copyPostLabelRects(new ArrayList<>());
         List<ScreenRect> posts = ((DemoState) clip).getWindow().copyPostRects(new ArrayList<>());
         List<DemoParticle> particles = clip.getParticles();
-        Node sceneNode = clip.getView(particles.get(0)).getNode().getParent();
+        Node sceneNode = clip.getWindow().getView(particles.get(0)).getNode().getParent();
         List<ScreenRect> shown = clip.getWindow().copyTextRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int n = 0; n < names.size(); ++n) {
@@ -715,7 +715,8 @@ class DemoStateHeadlessTest {
                 if (particle.isParked()) {
                     continue;
                 }
-                float radius = clip.getView(particle).getRadius() * plane.getPixelsPerMetre();
+                float radius = clip.getWindow().getView(particle).getRadius()
+                        * plane.getPixelsPerMetre();
                 Vector3f centre = particle.getParticle().position;
                 // The sphere is drawn as a disc: the rectangle's point nearest its centre.
                 float x = plane.screenX(centre.x);
@@ -742,7 +743,7 @@ class DemoStateHeadlessTest {
                 ScreenRect reach = new ScreenRect(name.getX() - halfWidth,
                         name.getY() - halfWidth, name.getWidth() + 2f * halfWidth,
                         name.getHeight() + 2f * halfWidth);
-                Trail trail = clip.getView(particle).getTrail();
+                Trail trail = clip.getWindow().getView(particle).getTrail();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
                     if (reach.contains(plane.screenX(point.x), plane.screenY(point.y))) {

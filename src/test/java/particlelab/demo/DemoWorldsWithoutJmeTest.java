@@ -35,11 +35,11 @@ class DemoWorldsWithoutJmeTest {
     @MethodSource("demoNames")
     void theDemosWorldStepsWithoutAnApplication(String name) {
         DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
-        String hudBefore = demo.formatHud(new StringBuilder()).toString();
+        String hudBefore = demo.getWindow().formatHud(new StringBuilder()).toString();
         float[] before = positions(demo);
         for (int i = 0; i < STEPS; ++i) {
             // The frame's physics: the world and the simulations beside it, by the clock.
-            demo.advancePhysics(STEP_SECONDS);
+            demo.getRun().advancePhysics(STEP_SECONDS);
         }
         assertTrue(demo.getWorld().getStepCount() > 0, name + ": the world never stepped");
         float[] after = positions(demo);
@@ -52,7 +52,7 @@ class DemoWorldsWithoutJmeTest {
         } else {
             // Demos whose bodies live outside the world's list (the rotation demo's matrices,
             // the fountain's packed particles) show the steps in their numbers.
-            String hudAfter = demo.formatHud(new StringBuilder()).toString();
+            String hudAfter = demo.getWindow().formatHud(new StringBuilder()).toString();
             assertNotEquals(hudBefore, hudAfter, name + ": the HUD's numbers did not change");
         }
     }
@@ -76,7 +76,7 @@ class DemoWorldsWithoutJmeTest {
             }
         });
         for (int i = 0; i < 20 * 60; ++i) {
-            demo.advancePhysics(STEP_SECONDS);
+            demo.getRun().advancePhysics(STEP_SECONDS);
         }
         // Each frame of 1/60 s is one step of the default h, each checked by the audit, until
         // a demo whose shots have all landed stops stepping (its scene is over).

@@ -47,7 +47,7 @@ class DragControlTest {
     @Test
     void draggingASphereMovesTheLaunchOfAllThreeToThePointUnderTheMouse() {
         DragDemo demo = new DragDemo();
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         Vector3f screen = camera.getScreenCoordinates(Vector3f.ZERO);
         assertTrue(drags.press(camera, screen.x, screen.y));
         assertSame(Draggable.Grip.BODY, drags.getHeld().getGrip());
@@ -71,7 +71,7 @@ class DragControlTest {
 
         // One step from there, as N takes it: V1 = V0 + h·g, P1 = P0 + h·V1.
         demo.getClock().requestSingleStep();
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         float h = demo.getClock().getStepSeconds();
         Vector3f p1 = demo.getParticles().get(0).getParticle().position;
         float v1y = 10f - h * Gravity.STANDARD_G;
@@ -84,7 +84,7 @@ class DragControlTest {
     @Test
     void draggingAnArrowTipSetsTheLaunchVelocityThroughTheSpeedAndAngle() {
         DragDemo demo = new DragDemo();
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         DemoParticle first = demo.getParticles().get(0);
         Vector3f tip = DragControl.copyGripPoint(Draggable.Grip.ARROW_TIP, first,
                 new Vector3f());
@@ -121,12 +121,12 @@ class DragControlTest {
     void aClickOnAFlyingSpherePicksItForTheInspectorAndChangesNothing() {
         DragDemo demo = new DragDemo();
         for (int i = 0; i < 30; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         double seconds = demo.getClock().getSimulatedSeconds();
         DemoParticle linear = demo.getParticles().get(1);
         Vector3f screen = camera.getScreenCoordinates(linear.getParticle().position);
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         drags.press(camera, screen.x + 1f, screen.y);
         // A jitter below the drag's threshold is no drag.
         assertFalse(drags.move(camera, screen.x + 2f, screen.y + 1f));
@@ -162,7 +162,7 @@ class DragControlTest {
     @Test
     void aLaunchDraggedBelowTheGroundStaysOnIt() {
         DragDemo demo = new DragDemo();
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         Vector3f screen = camera.getScreenCoordinates(Vector3f.ZERO);
         drags.press(camera, screen.x, screen.y);
         drags.move(camera, screen.x + 40f, screen.y - 100f);
@@ -174,7 +174,7 @@ class DragControlTest {
     @Test
     void theDeclarationsOfTheFreeFlightDemosOfferTheLaunch() {
         DragDemo demo = new DragDemo();
-        List<Draggable> declared = demo.getDragControl().getDraggables();
+        List<Draggable> declared = demo.getWindow().getDragControl().getDraggables();
         assertEquals(2, declared.size());
         assertEquals("drag a sphere", declared.get(0).getGestureLabel());
         assertEquals("drag a sphere's arrow tip", declared.get(1).getGestureLabel());
@@ -197,7 +197,7 @@ class DragControlTest {
         DragDemo other = new DragDemo();
         Draggable foreign = Draggable.launchPosition("a sphere", other.getParticles());
         IllegalArgumentException refused = assertThrows(IllegalArgumentException.class,
-                () -> demo.getDragControl().add(foreign));
+                () -> demo.getWindow().getDragControl().add(foreign));
         assertTrue(refused.getMessage().contains("is not the demo's"), refused.getMessage());
         IllegalArgumentException empty = assertThrows(IllegalArgumentException.class,
                 () -> Draggable.launchPosition("nothing", List.of()));
@@ -217,8 +217,8 @@ class DragControlTest {
             }
         };
         Vector3f screen = camera.getScreenCoordinates(new Vector3f(3f, 2f, 0f));
-        assertTrue(bare.getDragControl().press(camera, screen.x, screen.y));
-        assertNull(bare.getDragControl().getHeld());
+        assertTrue(bare.getWindow().getDragControl().press(camera, screen.x, screen.y));
+        assertNull(bare.getWindow().getDragControl().getHeld());
         assertEquals("ball\nP = (3.00, 2.00) m\nV = (1.00, 0.00) m/s   |V| = 1.00 m/s\n"
                 + "m = 2.00 kg\nno force",
                 bare.getMouse().formatInspector(new StringBuilder()).toString());

@@ -45,7 +45,7 @@ class DragHeadlessTest {
             Camera camera = harness.app().getCamera();
             DemoParticle first = drag.getParticles().get(0);
             DemoParticle quadratic = drag.getParticles().get(2);
-            DragControl drags = drag.getDragControl();
+            DragControl drags = drag.getWindow().getDragControl();
             // The launch point: drag it right and up, then the arrow's tip left and up.
             Vector3f screen = camera.getScreenCoordinates(first.getParticle().position);
             drags.press(camera, screen.x, screen.y);
@@ -96,7 +96,7 @@ class DragHeadlessTest {
             Camera camera = harness.app().getCamera();
             DemoParticle quadratic = drag.getParticles().get(2);
             Vector3f screen = camera.getScreenCoordinates(quadratic.getParticle().position);
-            DragControl drags = drag.getDragControl();
+            DragControl drags = drag.getWindow().getDragControl();
             drags.press(camera, screen.x, screen.y);
             drags.release();
             drag.update(H);
@@ -116,9 +116,9 @@ class DragHeadlessTest {
                     }
                 }
             }
-            if (!drag.getHud().getLayout().getScene().contains(box)) {
+            if (!drag.getWindow().getHud().getLayout().getScene().contains(box)) {
                 found.add("inspector " + box + " outside the scene "
-                        + drag.getHud().getLayout().getScene());
+                        + drag.getWindow().getHud().getLayout().getScene());
             }
             String text = ((DemoState) drag).getMouse().formatInspector(new StringBuilder())
                     .toString();
@@ -147,11 +147,11 @@ class DragHeadlessTest {
             List<String> found = new ArrayList<>();
             DemoParticle ball = pull.getParticles().get(0);
             pull.restart();
-            float lecturePixelsPerMetre = pull.getPlaneView().getPixelsPerMetre();
+            float lecturePixelsPerMetre = pull.getWindow().getPlaneView().getPixelsPerMetre();
             // Apex vy²/2g = 20.4 m, range 2·vx·vy/g = 81.6 m: four times the lecture's.
             ball.setLaunch(Vector3f.ZERO, new Vector3f(20f, 20f, 0f));
             pull.restart();
-            float higherPixelsPerMetre = pull.getPlaneView().getPixelsPerMetre();
+            float higherPixelsPerMetre = pull.getWindow().getPlaneView().getPixelsPerMetre();
             if (!(higherPixelsPerMetre < 0.5f * lecturePixelsPerMetre)) {
                 found.add("no zoom out: " + lecturePixelsPerMetre + " then "
                         + higherPixelsPerMetre + " px/m");
@@ -159,7 +159,7 @@ class DragHeadlessTest {
             found.addAll(flyInsideScene(pull, ball, 600));
             ball.setLaunch(Vector3f.ZERO, LECTURE_V0);
             pull.restart();
-            assertEquals(lecturePixelsPerMetre, pull.getPlaneView().getPixelsPerMetre(),
+            assertEquals(lecturePixelsPerMetre, pull.getWindow().getPlaneView().getPixelsPerMetre(),
                     "back to the lecture's launch, back to the declared view");
             return found;
         });
@@ -188,12 +188,12 @@ class DragHeadlessTest {
     /** Step a demo until the ball lands, checking its sphere stays in the scene's area. */
     private static List<String> flyInsideScene(DemoState demo, DemoParticle ball, int frames) {
         List<String> found = new ArrayList<>();
-        ScreenRect area = demo.getHud().getLayout().getScene();
+        ScreenRect area = demo.getWindow().getHud().getLayout().getScene();
         for (int frame = 0; frame < frames && !ball.hasLanded(); ++frame) {
             demo.update(H);
-            PlaneView plane = demo.getPlaneView();
+            PlaneView plane = demo.getWindow().getPlaneView();
             Vector3f p = ball.getParticle().position;
-            float radius = demo.getView(ball).getRadius() * plane.getPixelsPerMetre();
+            float radius = demo.getWindow().getView(ball).getRadius() * plane.getPixelsPerMetre();
             ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
                     plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
             if (!area.contains(sphere)) {

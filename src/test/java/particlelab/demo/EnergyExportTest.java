@@ -26,7 +26,7 @@ class EnergyExportTest {
     private static List<String> exported(DemoState demo, Path folder) throws IOException {
         demo.getParameters().set(EnergyPart.PARAMETER, 1f);
         for (int i = 0; i < 60; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         TrajectoryExport.write(demo, folder, false);
         Path file = folder.resolve("energy.csv");

@@ -72,7 +72,7 @@ class ExactGhostsHeadlessTest {
             pull.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             pull.restart();
             for (int frame = 0; frame < steps; ++frame) {
-                pull.advance(H);
+                pull.getWindow().advance(H);
             }
             Vector3f ball = pull.getParticles().get(0).getParticle().position;
             ExactPath path = ((DemoState) pull).getExactGhosts().getPath(0);
@@ -91,7 +91,7 @@ class ExactGhostsHeadlessTest {
         // And it is the Euler step's known error g·h·t/2 (docs/numerics.md), up to the float
         // round-off of the stepped particle: n·EPS·(|P| + t·|V|) with |P|, t·|V| below 15 m.
         assertEquals(G * H * t / 2.0, measured[4], steps * EPS * 30.0);
-        String hud = harness.call(() -> pull.formatHud(new StringBuilder()).toString());
+        String hud = harness.call(() -> pull.getWindow().formatHud(new StringBuilder()).toString());
         String shown = TextFormat.appendFixed(new StringBuilder("|P - P_exact| = "),
                 measured[4], 3).toString();
         assertTrue(hud.contains(" m/s   " + shown + " m\n"), hud);
@@ -104,7 +104,7 @@ class ExactGhostsHeadlessTest {
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.restart();
             for (int frame = 0; frame < steps; ++frame) {
-                drag.advance(H);
+                drag.getWindow().advance(H);
             }
             ExactPath linear = ((DemoState) drag).getExactGhosts().getPath(1);
             ExactPath quadratic = ((DemoState) drag).getExactGhosts().getPath(2);
@@ -137,7 +137,7 @@ class ExactGhostsHeadlessTest {
             pull.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             pull.restart();
             for (int frame = 0; frame < 200 && !pull.getRun().isSceneOver(); ++frame) {
-                pull.advance(H);
+                pull.getWindow().advance(H);
             }
             ExactGhosts ghosts = ((DemoState) pull).getExactGhosts();
             ExactPath path = ghosts.getPath(0);
@@ -171,7 +171,7 @@ class ExactGhostsHeadlessTest {
         // in x (the slope is 1 here) and g·h²/(8·vy) in t; float round-off adds below 1e-4.
         assertEquals(r[4] - vx * h, r[8], G * h * h / 8 + 1e-4);
         assertEquals(r[5] - h, r[9], G * h * h / (8 * vy) + 1e-5);
-        String hud = harness.call(() -> pull.formatHud(new StringBuilder()).toString());
+        String hud = harness.call(() -> pull.getWindow().formatHud(new StringBuilder()).toString());
         StringBuilder apex = new StringBuilder("ball, Euler | exact:  apex ");
         TextFormat.appendFixed(apex, r[6], 2).append(" | ");
         TextFormat.appendFixed(apex, r[2], 2).append(" m at ");
@@ -213,7 +213,7 @@ class ExactGhostsHeadlessTest {
                     if (labels.size() != 4) {
                         found.add("graph labels: " + labels);
                     }
-                    ScreenRect slot = drag.getHud().getLayout().getGraph();
+                    ScreenRect slot = drag.getWindow().getHud().getLayout().getGraph();
                     for (ScreenRect label : labels) {
                         if (!slot.contains(label)) {
                             found.add(window[0] + "x" + window[1] + ": " + label
@@ -255,8 +255,8 @@ class ExactGhostsHeadlessTest {
             for (int flight = 0; flight < 3; ++flight) {
                 drag.restart();
                 for (int frame = 0; frame < 150; ++frame) {
-                    drag.advance(H);
-                    drag.formatHud(hudText);
+                    drag.getWindow().advance(H);
+                    drag.getWindow().formatHud(hudText);
                 }
             }
             drag.restart();
@@ -266,8 +266,8 @@ class ExactGhostsHeadlessTest {
                 int labels = graph.countLabelChanges();
                 long start = threads.getCurrentThreadAllocatedBytes();
                 for (int frame = 0; frame < 4; ++frame) {
-                    drag.advance(H);
-                    drag.formatHud(hudText);
+                    drag.getWindow().advance(H);
+                    drag.getWindow().formatHud(hudText);
                 }
                 bytes[0][window] = threads.getCurrentThreadAllocatedBytes() - start;
                 bytes[1][window] = graph.countLabelChanges() - labels;
@@ -307,12 +307,12 @@ class ExactGhostsHeadlessTest {
             ExactGhosts ghosts = bounce.getExactGhosts();
             boolean stoppedEarly = ghosts.isStoppedAtContact(0);
             for (int frame = 0; frame < 90; ++frame) {
-                bounce.advance(H);
+                bounce.getWindow().advance(H);
             }
             return new Object[] {stoppedEarly, ghosts.isStoppedAtContact(0),
                 ghosts.getPath(0).getTimeSeconds(),
                 (double) bounce.getParticles().get(0).getParticle().velocity.y,
-                bounce.formatHud(new StringBuilder()).toString()};
+                bounce.getWindow().formatHud(new StringBuilder()).toString()};
         });
         assertFalse((Boolean) r[0]);
         assertTrue((Boolean) r[1], "the ball bounced within 1.5 s");
@@ -353,7 +353,7 @@ class ExactGhostsHeadlessTest {
             shots.clear();
             aiming.fire();
             for (int i = 0; i < 40; ++i) {
-                aiming.advance(H);
+                aiming.getWindow().advance(H);
             }
             // The second launch keeps the first shot's path.
             aiming.fire();
@@ -362,7 +362,7 @@ class ExactGhostsHeadlessTest {
             String legendLive = shots.formatLegend(new StringBuilder(),
                     aiming.getParameters()).toString();
             for (int i = 0; i < 20; ++i) {
-                aiming.advance(H);
+                aiming.getWindow().advance(H);
             }
             // Back past the launch: 20 steps, the launch's entry, one more.
             for (int i = 0; i < 22; ++i) {
@@ -411,7 +411,7 @@ class ExactGhostsHeadlessTest {
     }
 
     private static void press(DemoState demo, String key) {
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             if (binding.getKeyLabel().equals(key)) {
                 binding.press(0);
                 return;
@@ -429,7 +429,7 @@ class ExactGhostsHeadlessTest {
         String[] lines = new String[REPLAY_STEPS + 2];
         String[] graphEnds = new String[REPLAY_STEPS + 2];
         for (int i = 0; i < REPLAY_STEPS && !demo.getRun().isSceneOver(); ++i) {
-            demo.advance(H);
+            demo.getWindow().advance(H);
             lines[(int) ring.getLastIndex()] = ghostLines(demo);
             graphEnds[(int) ring.getLastIndex()] = graphEnd(demo);
         }
@@ -437,7 +437,7 @@ class ExactGhostsHeadlessTest {
         long last = ring.getLastIndex();
         for (int k = 1; k <= last - ring.getFirstIndex(); ++k) {
             demo.getReplayControls().stepBack();
-            demo.advance(0f);
+            demo.getWindow().advance(0f);
             long shown = demo.getRun().getShownStep();
             if (lines[(int) shown] == null) {
                 continue;
@@ -469,7 +469,7 @@ class ExactGhostsHeadlessTest {
     /** The HUD's lines about the ghosts: the live distances and the readouts. */
     private static String ghostLines(DemoState demo) {
         StringBuilder kept = new StringBuilder();
-        for (String line : demo.formatHud(new StringBuilder()).toString().split("\n")) {
+        for (String line : demo.getWindow().formatHud(new StringBuilder()).toString().split("\n")) {
             if (line.contains("P_exact") || line.contains("Euler | exact")) {
                 kept.append(line).append('\n');
             }

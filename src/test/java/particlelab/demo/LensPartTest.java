@@ -49,7 +49,7 @@ class LensPartTest {
         demo.getClock().setMode(SimulationClock.Mode.RAW_TPF);
         for (int i = 0; i < steps; ++i) {
             // raw tpf: one frame is one step of H
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
     }
 
@@ -118,7 +118,7 @@ class LensPartTest {
             DemoState demo = withLens(((Supplier<DemoState>) entry[0]).get());
             advance(demo, 20);
             DemoParticle sphere = demo.getParticles().get((Integer) entry[1]);
-            String hud = demo.formatHud(new StringBuilder()).toString();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
             assertTrue(hud.contains("derivative lens (O; click a step dot) at step "
                     + demo.getRun().getShownStep() + ", t_i = 0.333 s, h = 0.0167 s"),
                     demo.getTitle() + ":\n" + hud);
@@ -136,7 +136,7 @@ class LensPartTest {
         advance(demo, 30);
         DemoParticle ball = demo.getParticles().get(0);
         Vector3f v = ball.getParticle().velocity.clone();
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         float[] chord = parse(line(hud, "yellow"));
         float[] step = parse(line(hud, "white"));
         float[] atStart = parse(line(hud, "orange"));
@@ -180,7 +180,7 @@ class LensPartTest {
         int k = steps - 3;
         // the ring gave back step k's state bit for bit
         assertEquals(positions[k], ball.getParticle().position);
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + (live - 3)
                 + ", t_i = "), hud);
         DerivativeLens lens = assertLinesFor(hud, ball, positions[k], velocities[k]);
@@ -201,7 +201,7 @@ class LensPartTest {
         String quoted = page.substring(start, page.indexOf("```", start));
         GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
         advance(demo, 60);
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains(quoted), "the page quotes\n" + quoted + "the HUD has\n" + hud);
     }
 
@@ -209,18 +209,21 @@ class LensPartTest {
     void keyOSwitchesTheLensAndOffItWritesNothing() {
         UniformMotionDemo demo = new UniformMotionDemo();
         advance(demo, 5);
-        assertFalse(demo.formatHud(new StringBuilder()).toString().contains("derivative lens"));
+        assertFalse(demo.getWindow().formatHud(new StringBuilder()).toString()
+                .contains("derivative lens"));
         KeyBinding lensKey = null;
-        for (KeyBinding binding : demo.getBindings()) {
+        for (KeyBinding binding : demo.getKeys().getBindings()) {
             if (binding.getKeyLabel().equals("O")) {
                 lensKey = binding;
             }
         }
         assertNotNull(lensKey, "the lens has a key");
         lensKey.press(0);
-        assertTrue(demo.formatHud(new StringBuilder()).toString().contains("derivative lens"));
+        assertTrue(demo.getWindow().formatHud(new StringBuilder()).toString()
+                .contains("derivative lens"));
         lensKey.press(0);
-        assertFalse(demo.formatHud(new StringBuilder()).toString().contains("derivative lens"));
+        assertFalse(demo.getWindow().formatHud(new StringBuilder()).toString()
+                .contains("derivative lens"));
     }
 
     /** A camera facing the plane z = 0 from 30 m, centred on pull's flight (29 px/m). */
@@ -259,7 +262,7 @@ class LensPartTest {
         assertEquals(chosen, demo.getRun().getShownStep());
         // the sphere is at that dot, bit for bit, and the lens looks at the step from there
         assertEquals(dot, demo.getParticles().get(0).getParticle().position);
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("derivative lens (O; click a step dot) at step " + chosen
                 + ", t_i = 0.333 s"), hud);
         assertEquals(dot, part.getLens().startPosition);
@@ -291,7 +294,7 @@ class LensPartTest {
         GravitationalPullDemo demo = withLens(new GravitationalPullDemo());
         // the launch at (10, 10) m/s lands after 2.04 s: 150 steps are past it
         advance(demo, 150);
-        String landed = demo.formatHud(new StringBuilder()).toString();
+        String landed = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(landed.contains("derivative lens (O): the sphere is not flying;"
                 + " click a step dot of its flight\n"), landed);
         Camera camera = faceOnCamera();
@@ -299,7 +302,7 @@ class LensPartTest {
         Vector3f screen = camera.getScreenCoordinates(dot);
         assertTrue(demo.getLens().clickStepDot(camera, screen.x, screen.y));
         assertEquals(60, demo.getRun().getShownStep());
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("derivative lens (O; click a step dot) at step 60,"), hud);
     }
 

@@ -59,7 +59,7 @@ public final class OverlapProbe {
         }
         List<String> problems = new ArrayList<>(ScreenChecks.textsApartInside(texts, width,
                 height, where));
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         List<DemoParticle> particles = demo.getParticles();
         List<ScreenRect> posts = demo.getWindow().copyPostRects(new ArrayList<>());
         // The spheres a viewer sees: shown, and inside the scene (above it the HUD's backdrop
@@ -68,14 +68,16 @@ public final class OverlapProbe {
         List<ScreenRect> spheres = new ArrayList<>();
         List<String> sphereNames = new ArrayList<>();
         List<DemoParticle> sphereParticles = new ArrayList<>();
-        ScreenRect panel = demo.getHud().getLayout().getSidePanel();
-        ScreenRect graph = demo.getHud().getLayout().getGraph();
+        ScreenRect panel = demo.getWindow().getHud().getLayout().getSidePanel();
+        ScreenRect graph = demo.getWindow().getHud().getLayout().getGraph();
         for (DemoParticle particle : particles) {
             Vector3f centre = particle.getParticle().position;
-            float radius = demo.getView(particle).getRadius() * plane.getPixelsPerMetre();
+            float radius = demo.getWindow().getView(particle).getRadius()
+                    * plane.getPixelsPerMetre();
             float x = plane.screenX(centre.x);
             float y = plane.screenY(centre.y);
-            if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
+            if (demo.getWindow().getView(particle).getNode().getCullHint()
+                    != Spatial.CullHint.Always
                     && scene.contains(x, y)) {
                 spheres.add(new ScreenRect(x - radius, y - radius, 2f * radius, 2f * radius));
                 sphereNames.add(particle.getLabel());
@@ -83,14 +85,16 @@ public final class OverlapProbe {
                 // A label is never dropped silently: only a sphere under the panel or the
                 // graph, which hide it anyway, or one named by a joined label, may go
                 // without one.
-                if (demo.getView(particle).getLabelRect().isEmpty() && !panel.contains(x, y)
+                if (demo.getWindow().getView(particle).getLabelRect().isEmpty()
+                        && !panel.contains(x, y)
                         && !graph.contains(x, y) && !namedByJoinedLabel(demo, particle)) {
                     problems.add(where + ": the sphere of '" + particle.getLabel() + "' at ("
                             + x + ", " + y + ") has no label");
                 }
-            } else if (demo.getView(particle).getNode().getCullHint() != Spatial.CullHint.Always
+            } else if (demo.getWindow().getView(particle).getNode().getCullHint()
+                    != Spatial.CullHint.Always
                     && (x + radius < scene.getX() || x - radius > scene.getRight())
-                    && demo.getView(particle).getLabelRect().isEmpty()
+                    && demo.getWindow().getView(particle).getLabelRect().isEmpty()
                     && !particle.getLabel().isEmpty()) {
                 // Beyond the scene's side (rolled out of the framed view): its label stands
                 // at that side and says where it is.
@@ -112,7 +116,7 @@ public final class OverlapProbe {
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
             DemoParticle particle = particles.get(i);
-            ScreenRect label = demo.getView(particle).getLabelRect();
+            ScreenRect label = demo.getWindow().getView(particle).getLabelRect();
             if (label.isEmpty()) {
                 continue;
             }
@@ -129,9 +133,9 @@ public final class OverlapProbe {
             // No trail as drawn (ribbon and step dots) under a label, but where no slot was
             // free: then the label lies on a plate that hides the trail under it.
             for (int o = 0; o < particles.size()
-                    && !demo.getView(particle).isLabelPlated(); ++o) {
+                    && !demo.getWindow().getView(particle).isLabelPlated(); ++o) {
                 DemoParticle other = particles.get(o);
-                Trail trail = demo.getView(other).getTrail();
+                Trail trail = demo.getWindow().getView(other).getTrail();
                 float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
@@ -158,14 +162,15 @@ public final class OverlapProbe {
     private static List<String> coincidingSpheresShareOneLabel(DemoState demo,
             List<DemoParticle> shown, String where) {
         List<String> problems = new ArrayList<>();
-        PlaneView plane = demo.getPlaneView();
-        ScreenRect panel = demo.getHud().getLayout().getSidePanel();
-        ScreenRect graph = demo.getHud().getLayout().getGraph();
+        PlaneView plane = demo.getWindow().getPlaneView();
+        ScreenRect panel = demo.getWindow().getHud().getLayout().getSidePanel();
+        ScreenRect graph = demo.getWindow().getHud().getLayout().getGraph();
         for (int a = 0; a < shown.size(); ++a) {
             for (int b = a + 1; b < shown.size(); ++b) {
                 DemoParticle first = shown.get(a);
                 DemoParticle second = shown.get(b);
-                float radius = demo.getView(first).getRadius() * plane.getPixelsPerMetre();
+                float radius = demo.getWindow().getView(first).getRadius()
+                        * plane.getPixelsPerMetre();
                 float ax = plane.screenX(first.getParticle().position.x);
                 float ay = plane.screenY(first.getParticle().position.y);
                 float dx = plane.screenX(second.getParticle().position.x) - ax;
@@ -175,8 +180,8 @@ public final class OverlapProbe {
                         || graph.contains(ax, ay)) {
                     continue;
                 }
-                ParticleView firstView = demo.getView(first);
-                ParticleView secondView = demo.getView(second);
+                ParticleView firstView = demo.getWindow().getView(first);
+                ParticleView secondView = demo.getWindow().getView(second);
                 String pair = where + ": '" + first.getLabel() + "' and '" + second.getLabel()
                         + "' coincide on the screen";
                 if (!firstView.getLabelRect().isEmpty()
@@ -206,9 +211,9 @@ public final class OverlapProbe {
         if (particles.isEmpty()) {
             return problems;
         }
-        Node sceneNode = demo.getView(particles.get(0)).getNode().getParent();
+        Node sceneNode = demo.getWindow().getView(particles.get(0)).getNode().getParent();
         List<ScreenRect> names = demo.getWindow().copyPostLabelRects(new ArrayList<>());
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         Vector3f point = new Vector3f();
         for (int n = 0; n < names.size(); ++n) {
             ScreenRect name = names.get(n);
@@ -218,10 +223,11 @@ public final class OverlapProbe {
                 continue;
             }
             for (DemoParticle other : particles) {
-                if (demo.getView(other).getNode().getCullHint() == Spatial.CullHint.Always) {
+                if (demo.getWindow().getView(other).getNode().getCullHint()
+                        == Spatial.CullHint.Always) {
                     continue;
                 }
-                Trail trail = demo.getView(other).getTrail();
+                Trail trail = demo.getWindow().getView(other).getTrail();
                 float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
@@ -254,10 +260,10 @@ public final class OverlapProbe {
      */
     public static List<String> labelsAboveTheGround(DemoState demo, String where) {
         List<String> problems = new ArrayList<>();
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         float ground = plane.screenY(0f);
         for (DemoParticle particle : demo.getParticles()) {
-            ParticleView view = demo.getView(particle);
+            ParticleView view = demo.getWindow().getView(particle);
             ScreenRect label = view.getLabelRect();
             float y = plane.screenY(particle.getParticle().position.y);
             if (!label.isEmpty() && y >= ground && label.getY() < ground - PIXEL) {
@@ -280,14 +286,15 @@ public final class OverlapProbe {
     public static List<String> impulseLabelsClearOfTrails(CollisionsDemo demo, String where) {
         List<String> problems = new ArrayList<>();
         List<ScreenRect> labels = demo.copyImpulseLabelRects(new ArrayList<>());
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         Vector3f point = new Vector3f();
         for (ScreenRect label : labels) {
             for (DemoParticle other : demo.getParticles()) {
-                if (demo.getView(other).getNode().getCullHint() == Spatial.CullHint.Always) {
+                if (demo.getWindow().getView(other).getNode().getCullHint()
+                        == Spatial.CullHint.Always) {
                     continue;
                 }
-                Trail trail = demo.getView(other).getTrail();
+                Trail trail = demo.getWindow().getView(other).getTrail();
                 float half = trail.getDrawnHalfWidth() * plane.getPixelsPerMetre();
                 for (int age = 0; age < trail.size(); ++age) {
                     trail.copyPoint(age, point);
@@ -321,7 +328,7 @@ public final class OverlapProbe {
     /** Test whether a shown joined label names the particle among its names. */
     private static boolean namedByJoinedLabel(DemoState demo, DemoParticle particle) {
         for (DemoParticle other : demo.getParticles()) {
-            ParticleView view = demo.getView(other);
+            ParticleView view = demo.getWindow().getView(other);
             if (view.isLabelJoined() && !view.getLabelRect().isEmpty()) {
                 // Names hold " = " themselves ("linear drag  F = -b V"): a name is found in the
                 // text, not split out of it.

@@ -121,11 +121,11 @@ class ParameterPanelHeadlessTest {
             DragDemo drag = demo(DragDemo.class);
             drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             drag.restart();
-            drag.advance(H);
+            drag.getWindow().advance(H);
             DemoParticle linear = drag.getParticles().get(1);
             drag.getParameters().set("b", 0f);
             Vector3f before = new Vector3f(linear.getParticle().velocity);
-            drag.advance(H);
+            drag.getWindow().advance(H);
             Vector3f after = linear.getParticle().velocity;
             drag.getParameters().set("b", DragDemo.LINEAR_B);
             return new float[] {after.x - before.x, after.y - before.y};
@@ -231,12 +231,12 @@ class ParameterPanelHeadlessTest {
                 drag.getParameters().set("b", 0.1f * (shot + 1));
                 drag.restart();
                 for (int frame = 0; frame < 30; ++frame) {
-                    drag.advance(H);
+                    drag.getWindow().advance(H);
                 }
             }
             drag.getParameters().set("b", 0.9f);
             drag.restart();
-            controls.update(drag.getHud().getLayout());
+            controls.update(drag.getWindow().getHud().getLayout());
             controls.getPanel().refresh();
             int kept = controls.getKeptShots().size();
             String text = controls.getPanel().getLegendText();
@@ -260,20 +260,20 @@ class ParameterPanelHeadlessTest {
             ParameterControls controls = ((DemoState) drag).getParameterControls();
             HeadlessHarness.press(drag, "F2");
             boolean shown = controls.isPanelVisible()
-                    && !drag.getHud().getLayout().getSidePanel().isEmpty();
+                    && !drag.getWindow().getHud().getLayout().getSidePanel().isEmpty();
             drag.restart();
             for (int frame = 0; frame < 20; ++frame) {
-                drag.advance(H);
+                drag.getWindow().advance(H);
             }
             drag.restart();
-            controls.update(drag.getHud().getLayout());
+            controls.update(drag.getWindow().getHud().getLayout());
             long frames = Allocations.warmBytesAllocatedBy(() -> {
-                drag.advance(H);
-                controls.update(drag.getHud().getLayout());
+                drag.getWindow().advance(H);
+                controls.update(drag.getWindow().getHud().getLayout());
             });
             // Keeping a shot (copying the trails, fading the older ones) at a reset.
             long keep = Allocations.warmBytesAllocatedBy(() -> {
-                drag.advance(H);
+                drag.getWindow().advance(H);
                 drag.restart();
             });
             controls.getKeptShots().clear();

@@ -92,20 +92,20 @@ class PresentationHeadlessTest {
         DemoState demo = harness.app().getSwitcher().getDemos().get(0);
         harness.call(() -> {
             demo.getDemoHud().layOut(1280, 720);
-            String full = demo.getHud().getFooterText();
+            String full = demo.getWindow().getHud().getFooterText();
             demo.getDemoHud().setPresenting(true);
-            assertEquals("F8  full HUD", demo.getHud().getFooterText());
-            assertTrue(demo.getHud().getLayout().isPresenting());
+            assertEquals("F8  full HUD", demo.getWindow().getHud().getFooterText());
+            assertTrue(demo.getWindow().getHud().getLayout().isPresenting());
             // On a tour stop, the tour's keys too.
             demo.getDemoHud().setNote((shown, text) -> text.append("watch\n"));
             assertEquals("F8  full HUD     PageDown  next stop     PageUp  previous stop",
-                    demo.getHud().getFooterText());
+                    demo.getWindow().getHud().getFooterText());
             demo.getDemoHud().setNote(null);
             demo.getDemoHud().setPresenting(false);
-            assertEquals(full, demo.getHud().getFooterText());
-            assertFalse(demo.getHud().getLayout().isPresenting());
-            assertTrue(demo.getHud().getBodyText().startsWith(
-                    demo.formatHud(new StringBuilder()).substring(0, 10)));
+            assertEquals(full, demo.getWindow().getHud().getFooterText());
+            assertFalse(demo.getWindow().getHud().getLayout().isPresenting());
+            assertTrue(demo.getWindow().getHud().getBodyText().startsWith(
+                    demo.getWindow().formatHud(new StringBuilder()).substring(0, 10)));
             return true;
         });
     }
@@ -116,7 +116,7 @@ class PresentationHeadlessTest {
         String where = demo.getTitle() + " " + width + "x" + height + ": ";
         try {
             demo.getDemoHud().layOut(width, height);
-            HudLayout layout = demo.getHud().getLayout();
+            HudLayout layout = demo.getWindow().getHud().getLayout();
             // The full HUD's body line as drawn: the band's height over its lines.
             float hudLine = layout.getBody().getHeight() / layout.getBodyLines();
             float hudSize = layout.getBodySize();
@@ -127,7 +127,7 @@ class PresentationHeadlessTest {
                 ScreenRect drawn = demo.getWindow().copySceneRect(new ScreenRect());
                 // The energy ledger's bars beside the scene (issue 32, on an energy slide)
                 // are part of the picture: the scene with them reaches the window's edge.
-                float across = demo.getHud().getLayout().getLedger().isEmpty()
+                float across = demo.getWindow().getHud().getLayout().getLedger().isEmpty()
                         ? drawn.getWidth() : width - drawn.getX();
                 float share = across * drawn.getHeight() / (width * (float) height);
                 if (share < MIN_SCENE_AREA_SHARE) {
@@ -195,8 +195,8 @@ class PresentationHeadlessTest {
             if (frame % SAMPLE_EVERY != SAMPLE_EVERY - 1) {
                 continue;
             }
-            String hud = demo.formatHud(new StringBuilder()).toString();
-            Presentation slide = demo.formatPresentation();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
+            Presentation slide = demo.getWindow().formatPresentation();
             String where = demo.getTitle() + " frame " + frame + ": ";
             if (slide.countFormulaLines() < 1 || slide.getReadout().length() == 0) {
                 problems.add(where + "slide without a formula or a readout");

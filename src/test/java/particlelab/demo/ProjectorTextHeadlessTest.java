@@ -40,7 +40,7 @@ class ProjectorTextHeadlessTest {
                     float before = 0f;
                     for (float factor : FACTORS) {
                         demo.getDemoHud().layOut(window[0], window[1], factor);
-                        HudLayout layout = demo.getHud().getLayout();
+                        HudLayout layout = demo.getWindow().getHud().getLayout();
                         // The body band's real line height on the screen.
                         float line = layout.getBody().getHeight() / layout.getBodyLines();
                         if (!(line > before)) {
@@ -65,8 +65,8 @@ class ProjectorTextHeadlessTest {
             problems.addAll(harness.call(() -> {
                 List<String> found = new ArrayList<>();
                 demo.getDemoHud().layOut(1280, 720);
-                demo.getHud().setHelpVisible(true);
-                HudLayout layout = demo.getHud().getLayout();
+                demo.getWindow().getHud().setHelpVisible(true);
+                HudLayout layout = demo.getWindow().getHud().getLayout();
                 List<ScreenRect> columns = layout.getHelpColumns();
                 float right = columns.get(columns.size() - 1).getRight();
                 if (layout.getHelpSize() < MIN_HELP_PIXELS) {
@@ -75,7 +75,7 @@ class ProjectorTextHeadlessTest {
                 if (columns.size() > 1 && right < 0.5f * 1280) {
                     found.add(demo.getTitle() + ": help columns end at " + right + " px");
                 }
-                demo.getHud().setHelpVisible(false);
+                demo.getWindow().getHud().setHelpVisible(false);
                 return found;
             }));
         }

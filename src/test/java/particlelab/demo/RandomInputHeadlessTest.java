@@ -361,7 +361,7 @@ class RandomInputHeadlessTest {
                 return "action " + (i + 1) + " of " + length + " (" + what + "): "
                         + app.getRecovered();
             }
-            String hud = app.getSwitcher().getSelected().getHud().getBodyText();
+            String hud = app.getSwitcher().getSelected().getWindow().getHud().getBodyText();
             if (hud.contains("NaN") || hud.contains("Infinity")) {
                 return "action " + (i + 1) + " of " + length + " (" + what
                         + "): the HUD shows " + hud;
@@ -381,7 +381,7 @@ class RandomInputHeadlessTest {
         int height = app.getCamera().getHeight();
         switch (action.kind()) {
             case KEY: {
-                List<KeyBinding> keys = new ArrayList<>(demo.getBindings());
+                List<KeyBinding> keys = new ArrayList<>(demo.getKeys().getBindings());
                 keys.addAll(app.getSwitcher().getBindings());
                 KeyBinding key = keys.get(action.a() % keys.size());
                 int which = action.b() % key.countKeys();

@@ -53,7 +53,7 @@ class RandomKeysHeadlessTest {
     private static List<String> pressRandomKeys(DemoState demo) {
         List<String> problems = new ArrayList<>();
         Random random = new Random(SEED);
-        List<KeyBinding> bindings = demo.getBindings();
+        List<KeyBinding> bindings = demo.getKeys().getBindings();
         String where = demo.getTitle() + " " + WIDTH + "x" + HEIGHT + " ";
         demo.getDemoHud().layOut(WIDTH, HEIGHT);
         int press = 0;

@@ -94,7 +94,7 @@ class ReplayDeterminismTest {
         StateRing ring = demo.getRun().getStateRing();
         String[] ownLines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ownLines[(int) ring.getLastIndex()] = ownLines(demo);
         }
         long last = ring.getLastIndex();
@@ -115,7 +115,7 @@ class ReplayDeterminismTest {
             // Space: the clock runs again from the step shown, re-simulating.
             demo.getClock().setPaused(false);
             for (int i = 0; i < steps; ++i) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
                 long index = ring.getLastIndex();
                 assertArrayEquals(first[(int) index], ring.copyEntry(index),
                         name + ": step " + index + " re-simulated after " + steps + " back");

@@ -31,7 +31,7 @@ class ReplayTest {
     void theBlendIsTheLeftoverOverH() {
         DemoState demo = new DragDemo();
         Replay replay = demo.getRun().getReplay();
-        demo.advancePhysics(1.37f * H);
+        demo.getRun().advancePhysics(1.37f * H);
         double leftover = demo.getClock().getLeftoverSeconds();
         // One step taken, 0.37 h left over (up to the float round-off of 1.37·h).
         assertEquals(1L, demo.getWorld().getStepCount());
@@ -65,9 +65,9 @@ class ReplayTest {
     void aDemoWhoseViewsDrawRawStepsSaysSo() {
         for (String name : List.of("fountain", "rotation", "throw", "racket", "drag")) {
             DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
-            demo.advancePhysics(1.37f * H);
+            demo.getRun().advancePhysics(1.37f * H);
             demo.getRun().getReplay().updateFrameBlend(demo.getRun().isSceneOver());
-            String hud = demo.formatHud(new StringBuilder()).toString();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
             boolean raw = name.equals("fountain");
             assertEquals(raw, hud.contains("drawn: raw steps (this demo's views)"),
                     name + ": " + hud);
@@ -81,7 +81,7 @@ class ReplayTest {
         StateRing ring = demo.getRun().getStateRing();
         long most = 0L;
         for (int i = 0; i < 60; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             most = Math.max(most, ring.getBytes());
         }
         assertTrue(most <= StateRing.DEFAULT_BUDGET_BYTES, most + " bytes");
@@ -98,7 +98,7 @@ class ReplayTest {
         DemoState demo = new DragDemo();
         StateRing ring = demo.getRun().getStateRing();
         for (int i = 0; i < 2 * StateRing.DEFAULT_MAX_STEPS; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             assertTrue(ring.getBytes() <= StateRing.DEFAULT_BUDGET_BYTES);
         }
         assertEquals(StateRing.DEFAULT_MAX_STEPS, ring.getCapacity());
@@ -111,7 +111,7 @@ class ReplayTest {
         for (String name : List.of("drag", "targets", "collisions", "rotation", "tunnelling")) {
             DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf(name)).create();
             for (int i = 0; i < 600; ++i) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             Allocations.assertAllocatesNothing(name + ": steps recorded, back and forth",
                     () -> {
@@ -122,7 +122,7 @@ class ReplayTest {
                         demo.getReplayControls().stepForward();
                         demo.getClock().setPaused(false);
                         for (int i = 0; i < 120; ++i) {
-                            demo.advancePhysics(H);
+                            demo.getRun().advancePhysics(H);
                         }
                     });
         }
@@ -133,7 +133,7 @@ class ReplayTest {
         DemoState demo = new DragDemo();
         int[] sizes = new int[demo.getParticles().size()];
         for (int i = 0; i < 100; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             if (i == 89) {
                 for (int k = 0; k < sizes.length; ++k) {
                     sizes[k] = demo.getParticles().get(k).getRecord().size();

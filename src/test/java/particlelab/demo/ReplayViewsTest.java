@@ -34,7 +34,7 @@ class ReplayViewsTest {
         StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[STEPS + 2];
         for (int i = 0; i < STEPS; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             lines[(int) ring.getLastIndex()] = hud(demo);
         }
         long last = ring.getLastIndex();
@@ -50,7 +50,7 @@ class ReplayViewsTest {
     /** The HUD's text without the lines that say paused or replaying. */
     static String hud(DemoState demo) {
         StringBuilder text = new StringBuilder();
-        demo.formatHud(text);
+        demo.getWindow().formatHud(text);
         StringBuilder kept = new StringBuilder();
         for (String line : text.toString().split("\n")) {
             if (!line.contains("ms/frame") && !line.startsWith("t = ")

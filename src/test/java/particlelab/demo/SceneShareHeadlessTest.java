@@ -62,7 +62,7 @@ class SceneShareHeadlessTest {
                 break;
             }
             // No empty gap: the scene is drawn up to the HUD's bands.
-            float gap = demo.getHud().getLayout().getScene().getTop() - drawn.getTop();
+            float gap = demo.getWindow().getHud().getLayout().getScene().getTop() - drawn.getTop();
             if (gap > PIXEL) {
                 problems.add(where + ": " + Math.round(gap) + " px empty above the scene");
             }

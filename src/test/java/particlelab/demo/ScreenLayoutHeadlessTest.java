@@ -61,9 +61,9 @@ class ScreenLayoutHeadlessTest {
             for (int[] window : WINDOWS) {
                 List<String> problems = harness.call(() -> {
                     demo.getDemoHud().layOut(window[0], window[1]);
-                    demo.getHud().setHelpVisible(true);
+                    demo.getWindow().getHud().setHelpVisible(true);
                     List<String> found = check(demo, window[0], window[1], "help");
-                    List<String> columns = demo.getHud().getHelpColumnTexts();
+                    List<String> columns = demo.getWindow().getHud().getHelpColumnTexts();
                     // The first section is the demo's own keys: it opens the first column.
                     String help = demo.getKeys().getHelpText();
                     String ownSection = help.substring(0, help.indexOf("\n\n"));
@@ -79,7 +79,7 @@ class ScreenLayoutHeadlessTest {
                             found.add(demo.getTitle() + ": help column lacks " + line);
                         }
                     }
-                    demo.getHud().setHelpVisible(false);
+                    demo.getWindow().getHud().setHelpVisible(false);
                     demo.getDemoHud().layOut(1280, 720);
                     return found;
                 });
@@ -101,12 +101,12 @@ class ScreenLayoutHeadlessTest {
                     aiming.fire();
                     // The lowest vx flies S/vx = 8.3 s: 600 frames see it land.
                     DemoParticle bullet = aiming.getBullet(aim);
-                    ScreenRect area = aiming.getHud().getLayout().getScene();
+                    ScreenRect area = aiming.getWindow().getHud().getLayout().getScene();
                     for (int frame = 0; frame < 600; ++frame) {
                         aiming.update(H);
-                        PlaneView plane = aiming.getPlaneView();
+                        PlaneView plane = aiming.getWindow().getPlaneView();
                         Vector3f p = bullet.getParticle().position;
-                        float radius = aiming.getView(bullet).getRadius()
+                        float radius = aiming.getWindow().getView(bullet).getRadius()
                                 * plane.getPixelsPerMetre();
                         ScreenRect sphere = new ScreenRect(plane.screenX(p.x) - radius,
                                 plane.screenY(p.y) - radius, 2f * radius, 2f * radius);
@@ -182,12 +182,12 @@ class ScreenLayoutHeadlessTest {
     private static List<String> checkParticleLabels(DemoState demo, int width, int height,
             int frame) {
         List<String> problems = new ArrayList<>();
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         List<DemoParticle> particles = demo.getParticles();
         List<ScreenRect> posts = demo.getWindow().copyPostRects(new ArrayList<>());
         Vector3f point = new Vector3f();
         for (int i = 0; i < particles.size(); ++i) {
-            ScreenRect label = demo.getView(particles.get(i)).getLabelRect();
+            ScreenRect label = demo.getWindow().getView(particles.get(i)).getLabelRect();
             for (int p = 0; p < posts.size(); ++p) {
                 if (label.intersects(posts.get(p))) {
                     problems.add(demo.getTitle() + " " + width + "x" + height + " frame "
@@ -197,7 +197,7 @@ class ScreenLayoutHeadlessTest {
             }
             for (int j = 0; j < particles.size(); ++j) {
                 Vector3f other = particles.get(j).getParticle().position;
-                float radius = demo.getView(particles.get(j)).getRadius()
+                float radius = demo.getWindow().getView(particles.get(j)).getRadius()
                         * plane.getPixelsPerMetre();
                 ScreenRect sphere = new ScreenRect(plane.screenX(other.x) - radius,
                         plane.screenY(other.y) - radius, 2f * radius, 2f * radius);
@@ -206,9 +206,9 @@ class ScreenLayoutHeadlessTest {
                             + frame + ": label of " + particles.get(i).getLabel()
                             + " covers the sphere of " + particles.get(j).getLabel());
                 }
-                Trail trail = demo.getView(particles.get(j)).getTrail();
+                Trail trail = demo.getWindow().getView(particles.get(j)).getTrail();
                 // A label on its plate (no free slot) hides the trail under it.
-                boolean plated = demo.getView(particles.get(i)).isLabelPlated();
+                boolean plated = demo.getWindow().getView(particles.get(i)).isLabelPlated();
                 for (int age = 0; age < trail.size() && !plated; ++age) {
                     trail.copyPoint(age, point);
                     if (label.contains(plane.screenX(point.x), plane.screenY(point.y))) {
@@ -225,14 +225,14 @@ class ScreenLayoutHeadlessTest {
 
     private static void collectMissing(DemoState demo, List<String> found) {
         List<String> texts = new ArrayList<>();
-        texts.add(demo.getHud().getTitleText());
-        texts.add(demo.getHud().getBodyText());
-        texts.add(demo.getHud().getWarningText());
-        texts.add(demo.getHud().getFooterText());
-        texts.addAll(demo.getHud().getHelpColumnTexts());
+        texts.add(demo.getWindow().getHud().getTitleText());
+        texts.add(demo.getWindow().getHud().getBodyText());
+        texts.add(demo.getWindow().getHud().getWarningText());
+        texts.add(demo.getWindow().getHud().getFooterText());
+        texts.addAll(demo.getWindow().getHud().getHelpColumnTexts());
         List<BitmapText> shown = new ArrayList<>();
         collectTexts(demo.getSceneNode(), BitmapText.class, shown);
-        collectTexts(demo.getHud().getNode(), BitmapText.class, shown);
+        collectTexts(demo.getWindow().getHud().getNode(), BitmapText.class, shown);
         for (BitmapText text : shown) {
             texts.add(text.getText());
             if (!HudFont.BASE_NAME.equals(fontName(text.getFont()))) {
@@ -241,7 +241,7 @@ class ScreenLayoutHeadlessTest {
         }
         List<HudText> hudTexts = new ArrayList<>();
         collectTexts(demo.getSceneNode(), HudText.class, hudTexts);
-        collectTexts(demo.getHud().getNode(), HudText.class, hudTexts);
+        collectTexts(demo.getWindow().getHud().getNode(), HudText.class, hudTexts);
         for (HudText text : hudTexts) {
             texts.add(text.getText());
             if (!HudFont.BASE_NAME.equals(fontName(text.getFont()))) {

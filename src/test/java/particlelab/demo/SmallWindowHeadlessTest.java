@@ -61,7 +61,7 @@ class SmallWindowHeadlessTest {
 
     /** Lay a demo out for a window, run its launch and check it every few frames. */
     private static List<String> run(DemoState demo, int width, int height, boolean slots) {
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         if (slots) {
             layout.setPanelWidth(PANEL_WIDTH);
             layout.setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
@@ -80,10 +80,10 @@ class SmallWindowHeadlessTest {
                             + frame));
                 }
             }
-            demo.getHud().setHelpVisible(true);
+            demo.getWindow().getHud().setHelpVisible(true);
             problems.addAll(check(demo, width, height, slots, where + "help"));
         } finally {
-            demo.getHud().setHelpVisible(false);
+            demo.getWindow().getHud().setHelpVisible(false);
             layout.setPanelWidth(0f);
             layout.setGraphSize(0f, 0f);
             demo.getDemoHud().layOut(1280, 720);
@@ -100,10 +100,10 @@ class SmallWindowHeadlessTest {
         // or touch another, so there only the HUD's texts and slots are checked.
         List<ScreenRect> rects = width >= SCENE_LABELS_WIDTH && height >= SCENE_LABELS_HEIGHT
                 ? demo.getWindow().copyTextRects(new ArrayList<>())
-                : demo.getHud().copyTextRects(new ArrayList<>());
-        if (!demo.getHud().isHelpVisible()) {
-            rects.add(demo.getHud().getLayout().getSidePanel());
-            rects.add(demo.getHud().getLayout().getGraph());
+                : demo.getWindow().getHud().copyTextRects(new ArrayList<>());
+        if (!demo.getWindow().getHud().isHelpVisible()) {
+            rects.add(demo.getWindow().getHud().getLayout().getSidePanel());
+            rects.add(demo.getWindow().getHud().getLayout().getGraph());
         }
         problems.addAll(ScreenChecks.textsApartInside(rects, width, height, where));
         return problems;
@@ -116,7 +116,7 @@ class SmallWindowHeadlessTest {
     static List<String> checkViews(DemoState demo, int width, int height, boolean panel,
             boolean graph, String where) {
         List<String> problems = new ArrayList<>();
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         ScreenRect window = new ScreenRect(0f, 0f, width, height);
         List<ScreenRect> views = new ArrayList<>(List.of(layout.getScene()));
         if (panel) {
@@ -133,7 +133,7 @@ class SmallWindowHeadlessTest {
         if (layout.getScene().getHeight() < HudLayout.MIN_SCENE_SHARE * height) {
             problems.add(where + ": the scene gets only " + layout.getScene());
         }
-        PlaneView plane = demo.getPlaneView();
+        PlaneView plane = demo.getWindow().getPlaneView();
         if (!(plane.getPixelsPerMetre() > 0f && Float.isFinite(plane.getCentreX())
                 && Float.isFinite(plane.getCentreY()))) {
             problems.add(where + ": the plane view is " + plane.getPixelsPerMetre()

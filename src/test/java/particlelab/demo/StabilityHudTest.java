@@ -32,7 +32,7 @@ class StabilityHudTest {
     void dragDemoLineNamesTheSphereWithTheSmallestLimit() throws Exception {
         String body = measure(() -> {
             drag.restart();
-            return drag.formatHud(new StringBuilder()).toString();
+            return drag.getWindow().formatHud(new StringBuilder()).toString();
         });
         // At launch |V| = sqrt(200): quadratic lambda = 2·0.064·14.142 = 1.810 /s, limit
         // 2/lambda = 1.105 s, below linear drag's 2m/b = 2.222 s. No "k", no second limit.
@@ -53,7 +53,8 @@ class StabilityHudTest {
             String warning = warningOf(drag);
             drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
             drag.restart();
-            return new String[] {warning, drag.formatHud(new StringBuilder()).toString()};
+            return new String[] {warning,
+                    drag.getWindow().formatHud(new StringBuilder()).toString()};
         });
         String warning = texts[0];
         assertTrue(warning.startsWith("UNSTABLE: h = 1200.0 ms is beyond the stability limit"
@@ -66,7 +67,7 @@ class StabilityHudTest {
     void springShowsItsLimitTwoOverOmegaAndWarnsBeyondIt() throws Exception {
         String[] texts = measure(() -> {
             sprung.restart();
-            String body = sprung.formatHud(new StringBuilder()).toString();
+            String body = sprung.getWindow().formatHud(new StringBuilder()).toString();
             sprung.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             sprung.getClock().setStepSeconds(0.55f);
             takeOneStep(sprung);
@@ -88,9 +89,9 @@ class StabilityHudTest {
         String body = measure(() -> {
             drag.restart();
             for (int frame = 0; frame < 600; ++frame) {
-                drag.advancePhysics(H);
+                drag.getRun().advancePhysics(H);
             }
-            return drag.formatHud(new StringBuilder()).toString();
+            return drag.getWindow().formatHud(new StringBuilder()).toString();
         });
         // After 10 s all three spheres have landed and stopped: no limit to show, and not
         // the landed quadratic sphere's (infinite) one as "any h is stable".
@@ -110,10 +111,10 @@ class StabilityHudTest {
             // step and landed, the linear one has landed too, only "gravity only" flies; the
             // warning stays up for 4 s of real time.
             for (int frame = 0; frame < 102; ++frame) {
-                drag.advancePhysics(H);
+                drag.getRun().advancePhysics(H);
             }
             String[] result = {warningOf(drag),
-                drag.formatHud(new StringBuilder()).toString()};
+                drag.getWindow().formatHud(new StringBuilder()).toString()};
             drag.getParameters().set("c", DragDemo.QUADRATIC_C);
             drag.getClock().setStepSeconds(SimulationClock.DEFAULT_STEP_SECONDS);
             drag.restart();
@@ -139,7 +140,7 @@ class StabilityHudTest {
     private static void takeOneStep(DemoState demo) {
         for (int frame = 0; frame < 1000 && demo.getClock().getSimulatedSeconds() == 0.0;
                 ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(demo.getClock().getSimulatedSeconds() > 0.0, "no step taken");
     }

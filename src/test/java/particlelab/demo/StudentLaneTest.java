@@ -113,8 +113,8 @@ class StudentLaneTest {
         studentLane(studentDemo, studentLane, SOLUTION, GENEROUS_LIMIT_NANOS);
         int steps = 0;
         while (!semiLane.getParticle().hasLanded() && steps < MAX_STEPS) {
-            semiDemo.advancePhysics(H);
-            studentDemo.advancePhysics(H);
+            semiDemo.getRun().advancePhysics(H);
+            studentDemo.getRun().advancePhysics(H);
             ++steps;
             assertSameBits(semiLane.getState(), studentLane.getState(), "step " + steps);
         }
@@ -141,8 +141,8 @@ class StudentLaneTest {
         choose(semi, ComparisonLane.Kind.SEMI);
         studentLane(student, student.getLane(), SOLUTION, GENEROUS_LIMIT_NANOS);
         for (int n = 1; n <= 300; ++n) {
-            semi.advancePhysics(H);
-            student.advancePhysics(H);
+            semi.getRun().advancePhysics(H);
+            student.getRun().advancePhysics(H);
             assertSameBits(semi.getLane().getState(), student.getLane().getState(),
                     "step " + n);
         }
@@ -171,8 +171,8 @@ class StudentLaneTest {
         studentLane(student, studentLane, SOLUTION, GENEROUS_LIMIT_NANOS);
         int steps = 0;
         while (!studentLane.getParticle().hasLanded() && steps < MAX_STEPS) {
-            slide.advancePhysics(H);
-            student.advancePhysics(H);
+            slide.getRun().advancePhysics(H);
+            student.getRun().advancePhysics(H);
             ++steps;
             if (studentLane.getParticle().hasLanded()) {
                 break;
@@ -238,7 +238,7 @@ class StudentLaneTest {
         double largest = 0.0;
         int steps = 0;
         while (!lane.getParticle().hasLanded() && steps < MAX_STEPS) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             if (lane.getParticle().hasLanded()) {
                 break;
@@ -272,7 +272,7 @@ class StudentLaneTest {
         choose(demo, ComparisonLane.Kind.STUDENT);
         DemoParticle shared = demo.getParticles().get(0);
         for (int n = 0; n < 30; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals("not written yet", lane.getStudentProblem());
         String hud = hud(demo);
@@ -291,7 +291,7 @@ class StudentLaneTest {
                 ThrowingRecipe.class.getName(), GENEROUS_LIMIT_NANOS);
         DemoParticle shared = demo.getParticles().get(0);
         for (int n = 0; n < 20; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         String problem = lane.getStudentProblem();
         assertTrue(problem.matches("step 3: threw IllegalStateException: boom at call 3"
@@ -300,14 +300,14 @@ class StudentLaneTest {
         assertEquals("Lane student's recipe (L):  " + problem + "\n", hud);
         // The lane's sphere stays where its last good step left it (2 steps of vx·h ...)
         float laneX = lane.getParticle().getParticle().position.x;
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals(laneX, lane.getParticle().getParticle().position.x, 0f);
         // ... and the shared sphere flies on.
         assertTrue(shared.getParticle().position.x > 2f * laneX, "shared flew on");
         // A new launch calls the same instance again: past its third call it steps on.
         demo.restart();
         for (int n = 0; n < 20; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertNull(lane.getStudentProblem());
         assertTrue(lane.getParticle().getParticle().position.x > laneX, "the lane flew on");
@@ -319,7 +319,7 @@ class StudentLaneTest {
         ComparisonLane lane = studentLane(demo, demo.getLane(), NanRecipe.class.getName(),
                 GENEROUS_LIMIT_NANOS);
         for (int n = 0; n < 10; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals("step 1 gave P = (NaN, NaN, NaN) m, V = (NaN, NaN, NaN) m/s: not a"
                 + " number", lane.getStudentProblem());
@@ -340,16 +340,16 @@ class StudentLaneTest {
             ComparisonLane lane = studentLane(demo, demo.getLane(),
                     EndlessRecipe.class.getName(), 200_000_000L);
             DemoParticle shared = demo.getParticles().get(0);
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             assertEquals("step 1: did not return within 0.2 s: an endless loop? (no more"
                     + " calls)", lane.getStudentProblem());
             // No more calls: the next frames and a new launch take no 0.2 s each (not timed:
             // the runner is abandoned, which the line after a restart still says).
             for (int n = 0; n < 30; ++n) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             demo.restart();
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             assertTrue(lane.getStudentProblem().contains("did not return"),
                     lane.getStudentProblem());
             assertTrue(shared.getParticle().position.x > 0f, "the shared sphere flew on");
@@ -384,7 +384,7 @@ class StudentLaneTest {
     void forcesTheRecipeHasNotStopTheLaneSayingSo() {
         QuadraticDragDemo demo = new QuadraticDragDemo();
         studentLane(demo, demo.lane, SOLUTION, GENEROUS_LIMIT_NANOS);
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals("these forces are not exercise 1's (gravity, linear drag, thrust)",
                 demo.lane.getStudentProblem());
         assertEquals("Lane student's recipe (L):  these forces are not exercise 1's (gravity,"
@@ -396,7 +396,7 @@ class StudentLaneTest {
         DragDemo demo = new DragDemo();
         ComparisonLane lane = studentLane(demo, demo.getLane(), "particlelab.nowhere.Recipe",
                 GENEROUS_LIMIT_NANOS);
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals("no class particlelab.nowhere.Recipe here: run it with gradle run"
                 + " (docs/exercises.md)", lane.getStudentProblem());
         assertNotEquals(0f, demo.getParticles().get(0).getParticle().position.x);
@@ -418,11 +418,11 @@ class StudentLaneTest {
         for (int window = 0; window < 8; ++window) {
             demo.restart();
             for (int n = 0; n < 5; ++n) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             long before = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
             for (int n = 0; n < 60; ++n) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             long after = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
             least = Math.min(least, after - before);

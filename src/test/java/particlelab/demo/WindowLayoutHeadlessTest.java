@@ -63,9 +63,11 @@ class WindowLayoutHeadlessTest {
             try {
                 demo.getDemoHud().layOut(640, 360, HudScale.MAX_FACTOR);
                 // The factor the window got: the scale laid out over the one that suits it.
-                float got = demo.getHud().getLayout().getScale() / HudLayout.scaleFor(640, 360);
+                float got = demo.getWindow().getHud().getLayout().getScale()
+                        / HudLayout.scaleFor(640, 360);
                 long tenths = Math.round(10.0 * got);
-                return new String[] {demo.getHud().getFooterText().replace("\n    ", " "),
+                return new String[] {demo.getWindow().getHud().getFooterText().replace("\n    ",
+                        " "),
                     tenths / 10 + "." + tenths % 10};
             } finally {
                 demo.getDemoHud().layOut(1280, 720);
@@ -78,7 +80,7 @@ class WindowLayoutHeadlessTest {
     }
 
     private static List<String> run(DemoState demo, int width, int height, float factor) {
-        HudLayout layout = demo.getHud().getLayout();
+        HudLayout layout = demo.getWindow().getHud().getLayout();
         layout.setPanelWidth(PANEL_WIDTH);
         layout.setGraphSize(GRAPH_WIDTH, GRAPH_HEIGHT);
         List<String> problems = new ArrayList<>();
@@ -109,8 +111,8 @@ class WindowLayoutHeadlessTest {
     private static List<String> check(DemoState demo, int width, int height, String where) {
         List<String> problems = new ArrayList<>();
         List<ScreenRect> rects = demo.getWindow().copyTextRects(new ArrayList<>());
-        rects.add(demo.getHud().getLayout().getSidePanel());
-        rects.add(demo.getHud().getLayout().getGraph());
+        rects.add(demo.getWindow().getHud().getLayout().getSidePanel());
+        rects.add(demo.getWindow().getHud().getLayout().getGraph());
         problems.addAll(ScreenChecks.textsApartInside(rects, width, height, where));
         return problems;
     }

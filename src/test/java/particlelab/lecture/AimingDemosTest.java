@@ -59,7 +59,7 @@ class AimingDemosTest {
                         vy[i] = iterate.getPlan().getVerticalSpeed(i);
                     }
                     return new Object[] {frames, flown, vy,
-                        iterate.formatHud(new StringBuilder()).toString()};
+                        iterate.getWindow().formatHud(new StringBuilder()).toString()};
                 });
                 assertTrue((Integer) run[0] < MAX_FRAMES, what + ": the round did not end");
                 assertTrue(reference.isHit(), what);
@@ -106,7 +106,7 @@ class AimingDemosTest {
             for (int i = 0; i < shots; ++i) {
                 flown[i] = iterate.getFlownLandingX(i);
             }
-            String hud = iterate.formatHud(new StringBuilder()).toString();
+            String hud = iterate.getWindow().formatHud(new StringBuilder()).toString();
             double watch = iterate.getWatchSeconds();
             double plannedLast = iterate.getPlan().getLandingX(shots - 1);
             iterate.setInstant(false);
@@ -142,7 +142,7 @@ class AimingDemosTest {
                 int last = iterate.getPlan().size() - 1;
                 Object[] result = {iterate.getPlan().getLandingX(last),
                     iterate.getFlownLandingX(last), iterate.getExpectedMismatchMiss(),
-                    iterate.formatHud(new StringBuilder()).toString()};
+                    iterate.getWindow().formatHud(new StringBuilder()).toString()};
                 iterate.setMismatch(false);
                 iterate.setInstant(false);
                 return result;
@@ -174,15 +174,15 @@ class AimingDemosTest {
             cheat.setSpeedIndex(0);
             int frames = 0;
             while (!cheat.isReached() && frames < 600) {
-                cheat.advancePhysics(H);
+                cheat.getRun().advancePhysics(H);
                 ++frames;
             }
             for (int frame = 0; frame < 30; ++frame) {
-                cheat.advancePhysics(H);
+                cheat.getRun().advancePhysics(H);
             }
             return new Object[] {cheat.isHit(), cheat.getSteppedDrop(),
                 cheat.getArrivalSeconds(), cheat.getBullet().getParticle().position.clone(),
-                cheat.formatHud(new StringBuilder()).toString()};
+                cheat.getWindow().formatHud(new StringBuilder()).toString()};
         });
         float v = FastBulletsDemo.SPEEDS[0];
         assertFalse((Boolean) run[0], "the 35 m/s bullet must drop below the disc");
@@ -212,13 +212,13 @@ class AimingDemosTest {
                 height.setTarget(target[0], target[1]);
                 int frames = 0;
                 while (!(height.hasArrived(false) && height.hasArrived(true)) && frames < 900) {
-                    height.advancePhysics(H);
+                    height.getRun().advancePhysics(H);
                     ++frames;
                 }
                 return new Object[] {height.getAngles().isReachable(),
                     height.getArrivalHeight(false), height.getArrivalSeconds(false),
                     height.getArrivalHeight(true), height.getArrivalSeconds(true),
-                    height.formatHud(new StringBuilder()).toString()};
+                    height.getWindow().formatHud(new StringBuilder()).toString()};
             });
             String where = "target (" + target[0] + ", " + target[1] + ")";
             assertTrue((Boolean) run[0], where);
@@ -246,7 +246,7 @@ class AimingDemosTest {
         Object[] run = measure(() -> {
             height.setTarget(AnyHeightDemo.MAX_DISTANCE, 10f);
             Object[] result = {height.getAngles().isReachable(), height.isFired(false),
-                height.isFired(true), height.formatHud(new StringBuilder()).toString()};
+                height.isFired(true), height.getWindow().formatHud(new StringBuilder()).toString()};
             height.setTarget(30f, 4f);
             return result;
         });
@@ -266,7 +266,7 @@ class AimingDemosTest {
     private static int runRound(IterativeAimingDemo demo) {
         int frames = 0;
         while (!demo.isRoundOver() && frames < MAX_FRAMES) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++frames;
         }
         return frames;

@@ -33,7 +33,7 @@ class AimsFollowTheStepTest {
         assertEquals(1, aiming.getShotNumber());
         flyToLanding(aiming, LONG_STEP);
         assertLandsOnTarget(aiming);
-        String hud = aiming.formatHud(new StringBuilder()).toString();
+        String hud = aiming.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("vx·h = 2.000 m at h = 100.0 ms"), hud);
         assertTrue(hud.contains("Shot 1 landed (vx 20.0 m/s):  lecture x = 98.000 m, miss"
                 + " -2.000 m; discrete x = 100.000 m, miss 0.000 m"), hud);
@@ -43,7 +43,7 @@ class AimsFollowTheStepTest {
     void helloAimingFiresTheShotInTheAirAgainForANewStep() {
         HelloAimingDemo aiming = new HelloAimingDemo();
         for (int frame = 0; frame < 60; ++frame) {
-            aiming.advancePhysics(DEFAULT_STEP);
+            aiming.getRun().advancePhysics(DEFAULT_STEP);
         }
         assertEquals(1, aiming.getShotNumber());
         aiming.getParameters().set("h", LONG_STEP);
@@ -85,7 +85,7 @@ class AimsFollowTheStepTest {
         IterativeAimingDemo iterate = new IterativeAimingDemo();
         iterate.getParameters().set("h", LONG_STEP);
         iterate.getWorld();
-        String hud = iterate.formatHud(new StringBuilder()).toString();
+        String hud = iterate.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("predictor h 100.0 ms, flight h 100.0 ms"), hud);
         assertFlownAsPlanned(iterate, LONG_STEP);
     }
@@ -94,11 +94,11 @@ class AimsFollowTheStepTest {
     void iterativeAimingPlansANewRoundForALiveStep() {
         IterativeAimingDemo iterate = new IterativeAimingDemo();
         for (int frame = 0; frame < 30; ++frame) {
-            iterate.advancePhysics(DEFAULT_STEP);
+            iterate.getRun().advancePhysics(DEFAULT_STEP);
         }
         iterate.getParameters().set("h", LONG_STEP);
         assertEquals(0, iterate.countLanded());
-        String hud = iterate.formatHud(new StringBuilder()).toString();
+        String hud = iterate.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("flight h 100.0 ms"), hud);
         assertFlownAsPlanned(iterate, LONG_STEP);
     }
@@ -108,7 +108,7 @@ class AimsFollowTheStepTest {
         HelloAimingDemo.Aim last = HelloAimingDemo.Aim.DISCRETE;
         for (int frame = 0; frame < FRAMES
                 && aiming.getLandedShotNumber(last) != aiming.getShotNumber(); ++frame) {
-            aiming.advancePhysics(step);
+            aiming.getRun().advancePhysics(step);
         }
         assertEquals(aiming.getShotNumber(), aiming.getLandedShotNumber(last));
     }
@@ -126,7 +126,7 @@ class AimsFollowTheStepTest {
     /** Fly the whole round: each shot lands where the aimer, stepping h, predicted. */
     private static void assertFlownAsPlanned(IterativeAimingDemo iterate, float step) {
         for (int frame = 0; frame < 20 * FRAMES && !iterate.isRoundOver(); ++frame) {
-            iterate.advancePhysics(step);
+            iterate.getRun().advancePhysics(step);
         }
         assertTrue(iterate.isRoundOver());
         for (int shot = 0; shot < iterate.getPlan().size(); ++shot) {

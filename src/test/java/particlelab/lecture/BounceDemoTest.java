@@ -28,7 +28,7 @@ class BounceDemoTest {
         float[] apexes = measure(() -> {
             bounce.configure(0.8f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
             BounceRecorder recorder = bounce.getRecorder(Detection.SWEPT);
             float[] result = new float[recorder.countApexes()];
@@ -54,12 +54,12 @@ class BounceDemoTest {
         Object[] result = measure(() -> {
             bounce.configure(1f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
             BounceRecorder swept = bounce.getRecorder(Detection.SWEPT);
             return new Object[] {swept.getApex(swept.countApexes() - 1),
                 bounce.getRecorder(Detection.OVERLAP).countApexes(),
-                bounce.formatHud(new StringBuilder()).toString()};
+                bounce.getWindow().formatHud(new StringBuilder()).toString()};
         });
         // Swept: every impact is found on the step's segment, so the apex stays within one
         // step's travel at the impact speed (8.9 m/s · h = 0.15 m) of h0.
@@ -78,15 +78,15 @@ class BounceDemoTest {
             String[] result = new String[3];
             bounce.configure(0.8f, 1, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
-            result[0] = bounce.formatHud(new StringBuilder()).toString();
+            result[0] = bounce.getWindow().formatHud(new StringBuilder()).toString();
             result[1] = String.valueOf(bounce.getRecorder(Detection.SWEPT).isResting());
             bounce.configure(0.8f, 2, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
-            result[2] = bounce.formatHud(new StringBuilder()).toString();
+            result[2] = bounce.getWindow().formatHud(new StringBuilder()).toString();
             return result;
         });
         // The 4 m drop with e = 0.8 settles on hops of K = 4 steps (HopCycleTest checks the
@@ -115,12 +115,12 @@ class BounceDemoTest {
         Object[] result = measure(() -> {
             bounce.configure(1f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 9000; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
             BounceRecorder swept = bounce.getRecorder(Detection.SWEPT);
             int count = swept.countApexes();
             return new Object[] {count, swept.getApex(count - 1),
-                bounce.formatHud(new StringBuilder()).toString()};
+                bounce.getWindow().formatHud(new StringBuilder()).toString()};
         });
         int count = (Integer) result[0];
         assertTrue(count > BounceRecorder.MAX_APEXES + 4, "apexes " + count);
@@ -141,9 +141,9 @@ class BounceDemoTest {
         String hud = measure(() -> {
             bounce.configure(0.9f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 12_000; ++frame) {
-                bounce.advancePhysics(H);
+                bounce.getRun().advancePhysics(H);
             }
-            return bounce.formatHud(new StringBuilder()).toString();
+            return bounce.getWindow().formatHud(new StringBuilder()).toString();
         });
         assertTrue(hud.contains("swept lane never at rest: a cycle of 64 hops, K = 4 to 9"
                 + " steps, impacts 0.300 to 0.815 m/s, all > threshold 0.00 m/s\n"), hud);

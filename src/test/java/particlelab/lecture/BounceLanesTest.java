@@ -60,7 +60,7 @@ class BounceLanesTest {
         }
         World world = bounce.getWorld();
         for (int frame = 0; frame < 1200; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
             for (int i = 0; i < TESTS.length; ++i) {
                 while (alone[i].getStepCount() < world.getStepCount()) {
                     alone[i].step(bounce.getClock().getStepSeconds());
@@ -102,7 +102,7 @@ class BounceLanesTest {
     void theDefaultApexRatiosReadESquaredWithinTheStepsError() {
         BounceDemo bounce = new BounceDemo();
         for (int frame = 0; frame < 900; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
         double e = bounce.getRestitution();
         assertEquals(0.9, e, 1e-6, "the default e");
@@ -145,7 +145,7 @@ class BounceLanesTest {
             }
         });
         for (int frame = 0; frame < 480; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
         assertTrue(impacts.size() >= 6, "impacts " + impacts.size());
         float cost = e * G * H;
@@ -154,7 +154,7 @@ class BounceLanesTest {
             assertEquals(restingFix ? cost : 0f, plain - impact[1], 1e-5f,
                     "impact at " + impact[0] + " m/s, rebound " + impact[1]);
         }
-        String hud = bounce.formatHud(new StringBuilder()).toString();
+        String hud = bounce.getWindow().formatHud(new StringBuilder()).toString();
         StringBuilder named = new StringBuilder(restingFix
                 ? "resting fix on: rebound e v - e g h, e g h = "
                 : "resting fix off: rebound e v (on: less e g h = ");
@@ -173,9 +173,9 @@ class BounceLanesTest {
         BounceDemo bounce = new BounceDemo();
         bounce.configure(0.9f, 2, false, Detection.OVERLAP);
         for (int frame = 0; frame < 300; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
-        String hud = bounce.formatHud(new StringBuilder()).toString();
+        String hud = bounce.getWindow().formatHud(new StringBuilder()).toString();
         BounceRecorder overlap = bounce.getRecorder(Detection.OVERLAP);
         assertTrue(overlap.countApexes() >= 2, "apexes " + overlap.countApexes());
         StringBuilder rows = new StringBuilder("overlap lane, h_n (h_n/h_(n-1)):  1: ");
@@ -205,7 +205,7 @@ class BounceLanesTest {
         bounce.configure(1f, 2, false, Detection.SWEPT);
         BounceRecorder overlap = bounce.getRecorder(Detection.OVERLAP);
         for (int frame = 0; frame < 3600 && overlap.countApexes() < 20; ++frame) {
-            bounce.advancePhysics(H);
+            bounce.getRun().advancePhysics(H);
         }
         int n = 0;
         while (BounceDemo.DROP_HEIGHT - G * H * H * n * (n + 1) / 2.0 >= 0.0) {
@@ -221,7 +221,7 @@ class BounceLanesTest {
             assertEquals(offset, overlap.getApex(i) - BounceDemo.DROP_HEIGHT, 1e-4,
                     "apex " + (i + 1));
         }
-        String hud = bounce.formatHud(new StringBuilder()).toString();
+        String hud = bounce.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("e = 1, apex - h0 after "), hud);
         assertTrue(hud.contains("overlap test -0.1045 m"), hud);
     }

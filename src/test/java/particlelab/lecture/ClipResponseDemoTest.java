@@ -53,7 +53,7 @@ class ClipResponseDemoTest {
         boolean pastContactStep = false;
         for (int i = 0; i < STEPS_TO_IMPACT + STEPS_AFTER; ++i) {
             boolean hitBefore = demo.hasHit(CLIP_LANE);
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             pastContactStep |= hitBefore;
             if (!pastContactStep) {
                 continue;
@@ -118,7 +118,7 @@ class ClipResponseDemoTest {
         demo.getParameters().set("m_target", targetKg);
         demo.fire(v, angle);
         for (int i = 0; i < STEPS_TO_IMPACT && !demo.hasHit(PHYSICS_LANE); ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(demo.hasHit(PHYSICS_LANE));
         double theta = Math.toRadians(angle);
@@ -210,7 +210,7 @@ class ClipResponseDemoTest {
 
     private static void step(ClipResponseDemo demo, int steps) {
         for (int i = 0; i < steps; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
     }
 

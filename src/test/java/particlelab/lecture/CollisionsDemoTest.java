@@ -25,7 +25,7 @@ class CollisionsDemoTest {
         Vector3f start = collisions.copyMomentum(new Vector3f());
         float startEnergy = collisions.kineticEnergy();
         for (int frame = 0; frame < frames; ++frame) {
-            collisions.advancePhysics(H);
+            collisions.getRun().advancePhysics(H);
         }
         return new Object[] {start, collisions.copyMomentum(new Vector3f()), startEnergy,
             collisions.kineticEnergy(), collisions.countImpactSteps(),
@@ -33,7 +33,7 @@ class CollisionsDemoTest {
             collisions.getImpactPredictedLoss(), collisions.exitAngleDegrees(),
             collisions.getParticles().get(0).getParticle().velocity.clone(),
             collisions.getParticles().get(4).getParticle().velocity.clone(),
-            collisions.formatHud(new StringBuilder()).toString()};
+            collisions.getWindow().formatHud(new StringBuilder()).toString()};
     }
 
     @Test

@@ -38,7 +38,7 @@ class CollisionsImpulsesTest {
         CollisionsDemo demo = demo(CollisionsDemo.Preset.HEAD_ON, 5, 1, 0);
         ContactImpulses impulses = demo.getImpulses();
         for (int frame = 0; frame < 120 && impulses.size() == 0; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals(1, impulses.size(), "one contact between the balls");
         Vector3f onA = impulses.copyImpulse(0, true, new Vector3f());
@@ -57,7 +57,7 @@ class CollisionsImpulsesTest {
         double found = demo.getWorld().getTimeSeconds();
         assertTrue(impulses.isShown(0, found));
         while (demo.getWorld().getTimeSeconds() - found <= ContactImpulses.HOLD_SECONDS) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertFalse(impulses.isShown(0, demo.getWorld().getTimeSeconds()));
     }
@@ -73,7 +73,7 @@ class CollisionsImpulsesTest {
         for (int frame = 0; frame < 200 && demo.countPaddleContacts() == 0; ++frame) {
             before.set(ball.getParticle().velocity);
             start = demo.getWorld().getTimeSeconds();
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals(1, demo.countPaddleContacts(), "the paddle hit ball 1 once");
         // The ball's momentum change is the impulse it got (no force acts in free flight).
@@ -106,7 +106,7 @@ class CollisionsImpulsesTest {
         Vector3f last = new Vector3f();
         int contacts = 0;
         for (int frame = 0; frame < 600; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             // One paddle contact a step at most here: each new one adds its impulse.
             if (demo.countPaddleContacts() != contacts) {
                 assertEquals(contacts + 1, demo.countPaddleContacts());
@@ -118,7 +118,7 @@ class CollisionsImpulsesTest {
         Vector3f total = demo.copyPaddleImpulse(new Vector3f());
         // The same floats summed in the same order.
         VectorAssert.assertVectorEquals(sum, total, 0f);
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         String shown = TextFormat.appendVector(new StringBuilder("ΣJ from the paddle "), total,
                 3).toString();
         assertTrue(hud.contains(shown), hud);
@@ -139,7 +139,7 @@ class CollisionsImpulsesTest {
         StateRing ring = demo.getRun().getStateRing();
         String[] lines = new String[400];
         for (int frame = 0; frame < 150; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             lines[(int) ring.getLastIndex()] = ownLines(demo);
         }
         for (int i = 0; i < 40; ++i) {
@@ -149,7 +149,7 @@ class CollisionsImpulsesTest {
         assertEquals(lines[(int) shown], ownLines(demo), "read back at step " + shown);
         demo.getClock().setPaused(false);
         for (int i = 0; i < 40; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             long index = ring.getLastIndex();
             assertEquals(lines[(int) index], ownLines(demo), "re-simulated step " + index);
         }
@@ -175,13 +175,13 @@ class CollisionsImpulsesTest {
     @Test
     void eachPresetHasItsOwnFormulaLine() {
         CollisionsDemo demo = demo(CollisionsDemo.Preset.PADDLE, 10, 0, 0);
-        assertTrue(demo.formatHud(new StringBuilder()).toString()
+        assertTrue(demo.getWindow().formatHud(new StringBuilder()).toString()
                 .startsWith("paddle-ball (1/m_paddle = 0):  v' = (1+e) u - e v along n"));
         for (CollisionsDemo.Preset preset : new CollisionsDemo.Preset[] {
             CollisionsDemo.Preset.HEAD_ON, CollisionsDemo.Preset.GLANCING,
             CollisionsDemo.Preset.CRADLE}) {
             demo.choose(preset);
-            String hud = demo.formatHud(new StringBuilder()).toString();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
             assertTrue(hud.startsWith("j = -(1+e) v_rel.n / (1/m1 + 1/m2)"), hud);
         }
     }
@@ -190,11 +190,11 @@ class CollisionsImpulsesTest {
     void thePaddlesSlideShowsNumbersOfTheFullHud() {
         CollisionsDemo demo = demo(CollisionsDemo.Preset.PADDLE, 10, 0, 0);
         for (int frame = 0; frame < 150; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(demo.countPaddleContacts() >= 1);
-        String hud = demo.formatHud(new StringBuilder()).toString();
-        Presentation slide = demo.formatPresentation();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
+        Presentation slide = demo.getWindow().formatPresentation();
         String readout = slide.getReadout().toString();
         String total = TextFormat.appendVector(new StringBuilder(),
                 demo.copyPaddleImpulse(new Vector3f()), 3).toString();

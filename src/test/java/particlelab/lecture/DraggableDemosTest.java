@@ -35,7 +35,7 @@ class DraggableDemosTest {
         DemoParticle ball = demo.getParticles().get(0);
         Vector3f start = ball.copyLaunchPosition(new Vector3f());
         Vector3f screen = camera.getScreenCoordinates(start);
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         assertTrue(drags.press(camera, screen.x, screen.y));
         assertSame(Draggable.Grip.BODY, drags.getHeld().getGrip());
         drags.move(camera, screen.x + 30f, screen.y + 45f);
@@ -68,7 +68,7 @@ class DraggableDemosTest {
         Vector3f tip = DragControl.copyGripPoint(Draggable.Grip.ARROW_TIP, ball,
                 new Vector3f());
         Vector3f screen = camera.getScreenCoordinates(tip);
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         assertTrue(drags.press(camera, screen.x, screen.y));
         assertSame(Draggable.Grip.ARROW_TIP, drags.getHeld().getGrip());
         drags.move(camera, screen.x - 20f, screen.y + 40f);
@@ -89,12 +89,12 @@ class DraggableDemosTest {
         Camera camera = faceOn(25f, 14f, 60f);
         float metresPerPixel = metresPerPixel(60f);
         for (int i = 0; i < 30; ++i) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         DemoParticle target = find(demo, "target");
         Vector3f before = new Vector3f(target.getParticle().position);
         Vector3f screen = camera.getScreenCoordinates(before);
-        DragControl drags = demo.getDragControl();
+        DragControl drags = demo.getWindow().getDragControl();
         assertTrue(drags.press(camera, screen.x, screen.y));
         // 5.3 m left and 2.6 m up: the target goes to the nearest metre, 5 m and 3 m away.
         drags.move(camera, screen.x - 5.3f / metresPerPixel, screen.y + 2.6f / metresPerPixel);

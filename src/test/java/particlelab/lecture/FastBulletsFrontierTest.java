@@ -36,7 +36,7 @@ class FastBulletsFrontierTest {
             assertEquals(0.0, frontier.getHitSeconds(CheatFrontier.Way.RAY));
             int frames = 0;
             while (!demo.isReached() && frames < 600) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
                 ++frames;
             }
             assertTrue(demo.isReached(), "v = " + v);
@@ -58,8 +58,8 @@ class FastBulletsFrontierTest {
     @Test
     void theHudListsTheFourWaysAndMarksTheOneShown() {
         FastBulletsDemo demo = new FastBulletsDemo();
-        demo.advancePhysics(H);
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        demo.getRun().advancePhysics(H);
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         String[] names = {"ray ", "line ", "raised ", "stepped "};
         CheatFrontier.Way[] ways = CheatFrontier.Way.values();
         for (int w = 0; w < ways.length; ++w) {
@@ -71,7 +71,7 @@ class FastBulletsFrontierTest {
         assertTrue(hud.contains("not timed"), hud);
         demo.getParameters().set("shot", 3);
         assertEquals(3, demo.getShown());
-        hud = demo.formatHud(new StringBuilder()).toString();
+        hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("[raised] "), hud);
         assertTrue(hud.contains("Ways (L: raised)"), hud);
     }

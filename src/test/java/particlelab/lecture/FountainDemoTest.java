@@ -35,12 +35,12 @@ class FountainDemoTest {
             demo.getClock().setPaused(false);
             demo.restart();
             for (int frame = 0; frame < 90; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             double running = demo.getFountain().getTimeSeconds();
             demo.getClock().setPaused(true);
             for (int frame = 0; frame < 30; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             double paused = demo.getFountain().getTimeSeconds();
             demo.getClock().setPaused(false);
@@ -58,16 +58,17 @@ class FountainDemoTest {
             demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             demo.restart();
             for (int frame = 0; frame < 300; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             Fountain fountain = demo.getFountain();
             String expected = "particles: " + fountain.countLive() + " in flight (stepped) of "
                     + PARTICLES + ": water " + fountain.countLive(Fountain.WATER);
-            return new String[] {demo.formatHud(new StringBuilder()).toString(), expected};
+            return new String[] {demo.getWindow().formatHud(new StringBuilder()).toString(),
+                    expected};
         });
         assertTrue(texts[0].contains(texts[1]), texts[0]);
         assertTrue(SHARE_LINE.matcher(texts[0]).find(), texts[0]);
-        assertEquals(PARTICLES, demo.countSimulatedParticles());
+        assertEquals(PARTICLES, demo.getRun().countSimulatedParticles());
     }
 
     /**

@@ -23,7 +23,7 @@ class GravitationalPullDemoTest {
         pull.getParameters().set("g", 0f);
         int frames = 36;
         for (int frame = 0; frame < frames; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
         DemoParticle ball = pull.getParticles().get(0);
         Particle state = ball.getParticle();
@@ -51,7 +51,7 @@ class GravitationalPullDemoTest {
         // with the clock, so 1 s of frames leaves it about 0.3 s into its second flight.
         float highest = 0f;
         for (int frame = 0; frame < 60; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
             highest = Math.max(highest, pull.getParticles().get(0).getParticle().position.y);
         }
         assertTrue(highest > 6.5f, "highest " + highest);

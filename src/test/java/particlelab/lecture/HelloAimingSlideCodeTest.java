@@ -40,7 +40,7 @@ class HelloAimingSlideCodeTest {
         SlideCodeBullet slide = demo.getSlideBullet();
         int steps = 0;
         while (!recipe.hasLanded() && steps < 1000) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             if (!recipe.hasLanded()) {
                 Vector3f p = recipe.getParticle().position;
@@ -59,11 +59,11 @@ class HelloAimingSlideCodeTest {
         assertTrue(past > 0f && past < VX * H, "past the crossing by " + past);
         // More steps leave it where its test stopped it.
         Vector3f end = slide.position.clone();
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals(end, slide.position);
         assertEquals(expected, slide.getSteps());
 
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         for (String line : SlideCodeBullet.LISTING) {
             assertTrue(hud.contains(line), line + " in\n" + hud);
         }
@@ -80,17 +80,17 @@ class HelloAimingSlideCodeTest {
     @Test
     void theLaneIsOffByDefaultAndAppliesFromTheNextShot() {
         HelloAimingDemo demo = new HelloAimingDemo();
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertEquals(HelloAimingDemo.RECIPE_CODE, demo.getCode());
         assertFalse(demo.isSlideInShot());
         assertEquals(0, demo.getSlideBullet().getSteps());
-        String hud = demo.formatHud(new StringBuilder()).toString();
+        String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
         assertFalse(hud.contains(SlideCodeBullet.LISTING[1]), hud);
         demo.setCode(HelloAimingDemo.SLIDE_CODE);
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertFalse(demo.isSlideInShot());
         demo.fire();
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         assertTrue(demo.isSlideInShot());
         assertEquals(1, demo.getSlideBullet().getSteps());
         // g changes the slide's gravity vector too: it flies the recipe's g.
@@ -98,7 +98,7 @@ class HelloAimingSlideCodeTest {
         demo.fire();
         float vy = (float) LevelAim.lectureVy(5f, HelloAimingDemo.TARGET_DISTANCE,
                 demo.getHorizontalSpeed());
-        demo.advancePhysics(H);
+        demo.getRun().advancePhysics(H);
         // One step: vy − g·h in float, a rounding or two of about 1e-6 m/s.
         assertEquals(vy - 5f * H, demo.getSlideBullet().velocity.y, 1e-5);
     }
@@ -121,10 +121,10 @@ class HelloAimingSlideCodeTest {
             demo.getParameters().set("code", HelloAimingDemo.BOTH_CODES);
             demo.getParameters().set("vx", speeds[i]);
             for (int frame = 0; frame < 400; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
             }
             assertTrue(demo.getSlideBullet().isStopped());
-            String hud = demo.formatHud(new StringBuilder()).toString();
+            String hud = demo.getWindow().formatHud(new StringBuilder()).toString();
             assertTrue(hud.contains(expected[2 * i]), expected[2 * i] + " in\n" + hud);
             assertTrue(hud.contains(expected[2 * i + 1]), expected[2 * i + 1] + " in\n" + hud);
         }

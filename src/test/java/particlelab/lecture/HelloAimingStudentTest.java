@@ -78,12 +78,12 @@ class HelloAimingStudentTest {
 
     private static void fly(HelloAimingDemo demo) {
         for (int n = 0; n < FLIGHT_STEPS; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
     }
 
     private static String hud(HelloAimingDemo demo) {
-        return demo.formatHud(new StringBuilder()).toString();
+        return demo.getWindow().formatHud(new StringBuilder()).toString();
     }
 
     /** The lecture's two bullets landed as they do without the student's. */

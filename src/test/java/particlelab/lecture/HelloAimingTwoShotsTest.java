@@ -44,7 +44,7 @@ class HelloAimingTwoShotsTest {
         // crossing by well under 1 mm.
         assertEquals(100.0 - 20.0 / 60.0, both.getLastLandingX(Aim.LECTURE), 1e-3);
         assertEquals(100.0, both.getLastLandingX(Aim.DISCRETE), 1e-3);
-        String hud = both.formatHud(new StringBuilder()).toString();
+        String hud = both.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Next shot (L): both aims,  F fires;  S = 100 m,  vx = 20.0 m/s"
                 + " (Up/Down),  S/vx = 5.000 s,  vx·h = 0.333 m at h = 16.7 ms"), hud);
         assertTrue(hud.contains("lecture   vy = g·S/(2·vx) = 24.500 m/s:  predicted x = 99.667 m,"
@@ -80,7 +80,7 @@ class HelloAimingTwoShotsTest {
         run(aiming);
         assertEquals(2, aiming.getLandedShotNumber(Aim.LECTURE));
         assertEquals(1, aiming.getLandedShotNumber(Aim.DISCRETE));
-        String hud = aiming.formatHud(new StringBuilder()).toString();
+        String hud = aiming.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Next shot (L): lecture alone,"), hud);
         assertTrue(hud.contains("Shot 2 landed (vx 20.0 m/s):  lecture x = 99.667 m, miss -0.333"
                 + " m\n"), hud);
@@ -93,7 +93,7 @@ class HelloAimingTwoShotsTest {
 
     private static HelloAimingDemo run(HelloAimingDemo aiming) {
         for (int frame = 0; frame < FRAMES; ++frame) {
-            aiming.advancePhysics(H);
+            aiming.getRun().advancePhysics(H);
         }
         return aiming;
     }

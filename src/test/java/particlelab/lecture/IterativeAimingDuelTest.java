@@ -40,7 +40,7 @@ class IterativeAimingDuelTest {
         // As --set duel=on does: applied when the scene starts, at the first frame.
         iterate.getParameters().set("duel", 1f);
         iterate.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
-        iterate.advancePhysics(TPF);
+        iterate.getRun().advancePhysics(TPF);
         assertTrue(iterate.isDuelOn());
         assertEquals(AimStrategy.BELIEVABLE, iterate.getStrategy());
         assertSamePlan(iterate.getPlan(), iterate.getDuel().getComputerShots());
@@ -62,12 +62,12 @@ class IterativeAimingDuelTest {
         }
         assertEquals(27.4f, iterate.getDuelSpeed());
         assertTrue(iterate.getDuel().hasHumanHit());
-        String hud = iterate.formatHud(new StringBuilder()).toString();
+        String hud = iterate.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Duel, round 1 (seed 1): your aim 45.0° (Up/Down) at 27.4 m/s"),
                 hud);
         assertTrue(hud.contains("felt fair? Y yes, B no"), hud);
         // Presenting: the aim on the slide's second formula line, the score as its readout.
-        Presentation slide = iterate.formatPresentation();
+        Presentation slide = iterate.getWindow().formatPresentation();
         String readout = slide.getReadout().toString();
         assertEquals(2, slide.countFormulaLines());
         assertTrue(slide.getFormulas().toString().endsWith("your aim 45.0° (Up/Down) at 27.4"
@@ -102,7 +102,7 @@ class IterativeAimingDuelTest {
     @Test
     void anotherStrategyEndsTheDuelAndTheKeysThenOnlySaySo() {
         IterativeAimingDemo iterate = new IterativeAimingDemo();
-        iterate.advancePhysics(TPF);
+        iterate.getRun().advancePhysics(TPF);
         iterate.getParameters().set("duel", 1f);
         assertTrue(iterate.isDuelOn());
         // strategy=secant: the third of lecture, bisection, secant, believable.
@@ -110,7 +110,8 @@ class IterativeAimingDuelTest {
         assertFalse(iterate.isDuelOn());
         assertEquals(0f, iterate.getParameters().getValue("duel"));
         assertFalse(iterate.fireHuman());
-        assertTrue(iterate.getNotice().contains("the duel is off"), iterate.getNotice());
+        assertTrue(iterate.getDemoHud().getNotice().contains("the duel is off"),
+                iterate.getDemoHud().getNotice());
         assertFalse(iterate.poll(true));
         List<StepTable> tables = new ArrayList<>();
         iterate.collectExportTables(tables);
@@ -120,7 +121,7 @@ class IterativeAimingDuelTest {
     private static void flyUntilHumanLanded(IterativeAimingDemo iterate) {
         // Ten seconds of frames: a shot at up to 40 m/s lands within six.
         for (int frame = 0; frame < 600 && iterate.isHumanInAir(); ++frame) {
-            iterate.advancePhysics(TPF);
+            iterate.getRun().advancePhysics(TPF);
         }
         assertFalse(iterate.isHumanInAir(), "the human's shot did not land within 10 s");
     }

@@ -13,10 +13,10 @@ class IterativeAimingHudTest {
         IterativeAimingDemo iterate = new IterativeAimingDemo();
         iterate.setInstant(true);
         for (int frame = 0; frame < 2000 && !iterate.isRoundOver(); ++frame) {
-            iterate.advancePhysics(1f / 60f);
+            iterate.getRun().advancePhysics(1f / 60f);
         }
         assertTrue(iterate.isRoundOver());
-        String hud = iterate.formatHud(new StringBuilder()).toString();
+        String hud = iterate.getWindow().formatHud(new StringBuilder()).toString();
         // The instant mode flies only the final shot.
         assertTrue(hud.contains("Round over after 1 flown shot (F fires a new round)"), hud);
         assertFalse(hud.contains(" 1 flown shots"), hud);

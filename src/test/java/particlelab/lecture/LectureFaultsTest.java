@@ -85,7 +85,7 @@ class LectureFaultsTest {
         DemoParticle thruster = demo.getParticles().get(1);
         int steps = 0;
         while (!thruster.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             boolean otherLanded = false;
             if (otherFlies) {
@@ -121,15 +121,16 @@ class LectureFaultsTest {
         // The consequence flown ahead is the scene's own landing (the world's swept crossing
         // in float against the flight's in double: 1e-4 m), and the fault moves it by more
         // than 50 times the tolerance the path was checked with (measured: 0.11 m short).
-        assertEquals(demo.getFaultyLandingX(), thruster.getLandingX(), 1e-4);
-        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.05,
-                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+        FaultConsequence consequence = demo.getFaultConsequence();
+        assertEquals(consequence.getFaultyLandingX(), thruster.getLandingX(), 1e-4);
+        assertTrue(consequence.getCorrectLandingX() - consequence.getFaultyLandingX() > 0.05,
+                consequence.getFaultyLandingX() + " vs " + consequence.getCorrectLandingX());
         ThrustDemo correct = new ThrustDemo();
         while (!correct.getParticles().get(1).hasLanded()) {
-            correct.advancePhysics(H);
+            correct.getRun().advancePhysics(H);
         }
-        assertEquals(correct.getParticles().get(1).getLandingX(), demo.getCorrectLandingX(),
-                1e-4);
+        assertEquals(correct.getParticles().get(1).getLandingX(),
+                consequence.getCorrectLandingX(), 1e-4);
     }
 
     @Test
@@ -144,7 +145,7 @@ class LectureFaultsTest {
         double[] shifted = {10.0, 10.0 - G / r};
         DemoParticle thruster = demo.getParticles().get(1);
         for (int n = 1; n <= 300; ++n) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             double grown = Math.pow(q, n);
             double x = shifted[0] * q * (grown - 1.0) / r;
             // g/r has y = −9.8/r, so −n·h·g/r adds n·h·9.8/r to y
@@ -175,7 +176,7 @@ class LectureFaultsTest {
         double[] s = {0, 0, 10, 10};
         int steps = 0;
         while (!sphere.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             ++steps;
             double speedSquared = s[2] * s[2] + s[3] * s[3];
             s[2] += H * (-c * speedSquared * s[2]);
@@ -189,15 +190,16 @@ class LectureFaultsTest {
             }
             assertTrue(steps < 1000, "the sphere should land");
         }
-        assertEquals(demo.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
+        FaultConsequence consequence = demo.getFaultConsequence();
+        assertEquals(consequence.getFaultyLandingX(), sphere.getLandingX(), 1e-4);
         DragDemo physical = new DragDemo();
         while (!physical.getParticles().get(2).hasLanded()) {
-            physical.advancePhysics(H);
+            physical.getRun().advancePhysics(H);
         }
-        assertEquals(physical.getParticles().get(2).getLandingX(), demo.getCorrectLandingX(),
-                1e-4);
-        assertTrue(demo.getCorrectLandingX() - demo.getFaultyLandingX() > 0.5,
-                demo.getFaultyLandingX() + " vs " + demo.getCorrectLandingX());
+        assertEquals(physical.getParticles().get(2).getLandingX(),
+                consequence.getCorrectLandingX(), 1e-4);
+        assertTrue(consequence.getCorrectLandingX() - consequence.getFaultyLandingX() > 0.5,
+                consequence.getFaultyLandingX() + " vs " + consequence.getCorrectLandingX());
     }
 
     @Test
@@ -207,7 +209,7 @@ class LectureFaultsTest {
         // off, the twin flies the lecture's order hidden: the ball's floats, the same landing
         assertTrue(twin.isParked(), "the twin is out of the HUD while the fault is off");
         while (!twin.hasLanded()) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertEquals(demo.getParticles().get(0).getLandingX(), twin.getLandingX(), 0f);
         switchFault(demo, GravitationalPullDemo.P_BEFORE_V);
@@ -224,7 +226,7 @@ class LectureFaultsTest {
         float gy = -9.8f;
         int steps = 0;
         while (!twin.hasLanded()) {
-            demo.advancePhysics(h);
+            demo.getRun().advancePhysics(h);
             ++steps;
             px = px + h * vx;
             py = py + h * vy;
@@ -238,7 +240,7 @@ class LectureFaultsTest {
             assertTrue(steps < 1000, "the twin should land");
         }
         while (!ball.hasLanded()) {
-            demo.advancePhysics(h);
+            demo.getRun().advancePhysics(h);
         }
         // Closed forms: forward Euler's y_n = n·h·vy0 − g·h²·n(n−1)/2 lies on the parabola
         // launched with vy0 + g·h/2, the lecture's y_n = n·h·vy0 − g·h²·n(n+1)/2 on the one
@@ -254,8 +256,8 @@ class LectureFaultsTest {
         assertEquals(2.0 * 10.0 * H, twin.getLandingX() - ball.getLandingX(), 2e-3);
         // the consequence flown ahead is the scene's own (float crossings against double,
         // 1e-4 m)
-        assertEquals(twin.getLandingX(), demo.getFaultyLandingX(), 1e-4);
-        assertEquals(ball.getLandingX(), demo.getCorrectLandingX(), 1e-4);
+        assertEquals(twin.getLandingX(), demo.getFaultConsequence().getFaultyLandingX(), 1e-4);
+        assertEquals(ball.getLandingX(), demo.getFaultConsequence().getCorrectLandingX(), 1e-4);
         StringBuilder hud = new StringBuilder();
         demo.writeHudLines(hud);
         assertTrue(hud.toString().startsWith("FAULT on: P updated before V (forward Euler)"
@@ -307,7 +309,7 @@ class LectureFaultsTest {
         }
         assertEquals(stopStep, steps, "the listing's own stop at vx = " + vx);
         for (int frame = 0; frame < 2 * stopStep; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
         }
         assertTrue(bullet.isStopped());
         assertEquals(stopStep, bullet.getSteps(), "the slide bullet's steps at vx = " + vx);
@@ -349,7 +351,8 @@ class LectureFaultsTest {
                 + " (fault=other-velocity): lands at x = "), shown);
         // the numbers are the flights': the faulty landing and the correct one
         StringBuilder landing = new StringBuilder();
-        particlelab.view.TextFormat.appendFixed(landing, demo.getFaultyLandingX(), 2);
+        particlelab.view.TextFormat.appendFixed(landing,
+                demo.getFaultConsequence().getFaultyLandingX(), 2);
         assertTrue(shown.contains("x = " + landing + " m"), shown);
         // seed 1 picks the other fault
         demo.getParameters().set("seed", 1f);
@@ -467,7 +470,7 @@ class LectureFaultsTest {
             long before = threads.getThreadAllocatedBytes(thread);
             demo.restart();
             for (int frame = 0; frame < 100; ++frame) {
-                demo.advancePhysics(H);
+                demo.getRun().advancePhysics(H);
                 hud.setLength(0);
                 hudLines.accept(hud);
             }
@@ -510,7 +513,7 @@ class LectureFaultsTest {
     static long runBits(DemoState demo, java.util.function.Predicate<DemoParticle> leftOut) {
         long hash = 0xcbf29ce484222325L;
         for (int frame = 0; frame < FRAMES; ++frame) {
-            demo.advancePhysics(H);
+            demo.getRun().advancePhysics(H);
             List<DemoParticle> particles = demo.getParticles();
             for (int i = 0; i < particles.size(); ++i) {
                 if (leftOut.test(particles.get(i))) {

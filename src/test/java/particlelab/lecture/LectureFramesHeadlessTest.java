@@ -74,7 +74,7 @@ class LectureFramesHeadlessTest {
         Object[] result = harness.call(() -> {
             targets.restart();
             for (int frame = 0; frame < 240; ++frame) {
-                targets.advance(H); // the first shot's flight; fragments expire
+                targets.getWindow().advance(H); // the first shot's flight; fragments expire
             }
             World world = targets.getWorld();
             int[] listeners = {world.countContactListeners(), world.countStepListeners(),
@@ -92,11 +92,11 @@ class LectureFramesHeadlessTest {
                 long before = targets.countDestroyed();
                 for (int frame = 0; frame < 200 && targets.countDestroyed() == before;
                         ++frame) {
-                    targets.advance(H);
+                    targets.getWindow().advance(H);
                 }
             }
             for (int frame = 0; frame < 400; ++frame) {
-                targets.advance(H); // every fragment expires, the targets come back
+                targets.getWindow().advance(H); // every fragment expires, the targets come back
             }
             return new Object[] {targets.countDestroyed() - startDestroyed, cycles,
                 world.countBodies(), targets.getBodyViews().countShown(),
@@ -106,7 +106,7 @@ class LectureFramesHeadlessTest {
                     world.countBodyListeners(), world.countRules()},
                 targets.countSpawned(),
                 targets.getSceneNode().getChildren().size(),
-                targets.formatHud(new StringBuilder()).toString()};
+                targets.getWindow().formatHud(new StringBuilder()).toString()};
         });
         long destroyed = (Long) result[0];
         assertTrue(destroyed >= 120, destroyed + " targets in " + result[1] + " shots");
@@ -133,7 +133,7 @@ class LectureFramesHeadlessTest {
             aiming.setBothAims();
             aiming.fire();
             for (int frame = 0; frame < 400; ++frame) {
-                aiming.advance(H);
+                aiming.getWindow().advance(H);
             }
             float lecture = aiming.getLastLandingX(HelloAimingDemo.Aim.LECTURE);
             float discrete = aiming.getLastLandingX(HelloAimingDemo.Aim.DISCRETE);
@@ -141,7 +141,7 @@ class LectureFramesHeadlessTest {
                     && drawn(HelloAimingDemo.Aim.DISCRETE);
             aiming.setAim(HelloAimingDemo.Aim.DISCRETE);
             aiming.fire();
-            aiming.advance(H);
+            aiming.getWindow().advance(H);
             boolean[] alone = {drawn(HelloAimingDemo.Aim.LECTURE),
                 drawn(HelloAimingDemo.Aim.DISCRETE)};
             aiming.setBothAims();
@@ -167,7 +167,7 @@ class LectureFramesHeadlessTest {
             aiming.setBothAims();
             aiming.restart(); // shot 1 in the air at t = 0
             for (int frame = 0; frame < 400; ++frame) {
-                aiming.advance(H);
+                aiming.getWindow().advance(H);
             }
             double landedAt = aiming.getClock().getSimulatedSeconds();
             aiming.fire(); // shot 2
@@ -175,11 +175,11 @@ class LectureFramesHeadlessTest {
             for (int frame = 0; frame < 60; ++frame) {
                 aiming.update(H);
             }
-            tooSmall[0] = aiming.getHud().getLayout().isTooSmall();
+            tooSmall[0] = aiming.getWindow().getHud().getLayout().isTooSmall();
             return new Object[] {landedAt, aiming.getClock().getSimulatedSeconds(),
                 aiming.getShotNumber(), aiming.getLandedShotNumber(),
                 aiming.getLastFlightSeconds(HelloAimingDemo.Aim.DISCRETE),
-                aiming.formatHud(new StringBuilder()).toString()};
+                aiming.getWindow().formatHud(new StringBuilder()).toString()};
         });
         double flight = (Double) inTheAir[4];
         // The corrected shot 1 flew about S/vx = 5 s (the lecture's lands a step early), and
@@ -203,7 +203,8 @@ class LectureFramesHeadlessTest {
     /** Whether an aim's bullet is drawn: its view's node is not culled. */
     private static boolean drawn(HelloAimingDemo.Aim aim) {
         DemoParticle bullet = aiming.getBullet(aim);
-        return aiming.getView(bullet).getNode().getCullHint() != Spatial.CullHint.Always;
+        return aiming.getWindow().getView(bullet).getNode().getCullHint()
+                != Spatial.CullHint.Always;
     }
 
     @Test
@@ -215,13 +216,13 @@ class LectureFramesHeadlessTest {
             StateRing ring = bounce.getRun().getStateRing();
             String[] ends = new String[REPLAY_STEPS + 2];
             for (int i = 0; i < REPLAY_STEPS; ++i) {
-                bounce.advance(REPLAY_H);
+                bounce.getWindow().advance(REPLAY_H);
                 ends[(int) ring.getLastIndex()] = graphEnd(bounce.getGraph());
             }
             List<String> found = new ArrayList<>();
             for (int k = 0; k < REPLAY_BACK; ++k) {
                 bounce.getReplayControls().stepBack();
-                bounce.advance(0f);
+                bounce.getWindow().advance(0f);
                 long shown = bounce.getRun().getShownStep();
                 String now = graphEnd(bounce.getGraph());
                 if (ends[(int) shown] != null && !ends[(int) shown].equals(now)) {
@@ -231,7 +232,7 @@ class LectureFramesHeadlessTest {
             // Going on from the step shown: the graph's clock is that step's.
             bounce.getClock().setPaused(false);
             long from = bounce.getRun().getShownStep();
-            bounce.advance(REPLAY_H);
+            bounce.getWindow().advance(REPLAY_H);
             long index = ring.getLastIndex();
             String now = graphEnd(bounce.getGraph());
             if (index != from + 1 || !ends[(int) index].equals(now)) {
@@ -262,18 +263,18 @@ class LectureFramesHeadlessTest {
         Object[] result = harness.call(() -> {
             bounce.configure(0.5f, 2, true, Detection.SWEPT);
             for (int frame = 0; frame < 600; ++frame) {
-                bounce.advance(H);
+                bounce.getWindow().advance(H);
             }
             Body ball = bounce.getBall(Detection.SWEPT);
             float y = ball.getPosition().y;
             boolean still = true;
             for (int frame = 0; frame < 120; ++frame) {
-                bounce.advance(H);
+                bounce.getWindow().advance(H);
                 still &= ball.getPosition().y == y && ball.getVelocity().y == 0f;
             }
             return new Object[] {bounce.getRecorder(Detection.SWEPT).isResting(), still, y,
                 bounce.getRecorder(Detection.SWEPT).getRestSeconds(),
-                bounce.formatHud(new StringBuilder()).toString()};
+                bounce.getWindow().formatHud(new StringBuilder()).toString()};
         });
         assertTrue((Boolean) result[0]);
         assertTrue((Boolean) result[1], "the resting ball moved");
@@ -300,7 +301,7 @@ class LectureFramesHeadlessTest {
         float[] result = harness.call(() -> {
             bounce.configure(0.9f, 0, false, Detection.SWEPT);
             for (int frame = 0; frame < 3600; ++frame) {
-                bounce.advance(H);
+                bounce.getWindow().advance(H);
             }
             LiveGraph graph = bounce.getGraph();
             int last = graph.size() - 1;
@@ -330,10 +331,10 @@ class LectureFramesHeadlessTest {
             int width = camera.getWidth();
             int height = camera.getHeight();
             camera.resize(3840, 2160, true);
-            fountain.advance(H);
+            fountain.getWindow().advance(H);
             float large = fountain.drawnPointSize();
             camera.resize(width, height, true);
-            fountain.advance(H);
+            fountain.getWindow().advance(H);
             return new float[] {large, fountain.drawnPointSize(), height};
         });
         assertEquals(FountainDemo.pointSizeFor(2160), drawn[0], 0f, "at 3840x2160");
@@ -351,15 +352,15 @@ class LectureFramesHeadlessTest {
         StringBuilder hud = new StringBuilder(4096);
         Runnable frames = () -> {
             for (int frame = 0; frame < 30; ++frame) {
-                fountain.advance(H);
-                fountain.formatHud(hud);
+                fountain.getWindow().advance(H);
+                fountain.getWindow().formatHud(hud);
             }
         };
         long bytes = harness.call(() -> {
             fountain.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
             fountain.restart();
             for (int frame = 0; frame < 600; ++frame) {
-                fountain.advance(H); // the pool fills, shells burst
+                fountain.getWindow().advance(H); // the pool fills, shells burst
             }
             return Allocations.warmBytesAllocatedBy(frames);
         });
@@ -376,10 +377,10 @@ class LectureFramesHeadlessTest {
             // The first shot flies about 2.9 s: the 70 frames run stay inside its flight.
             long frames = Allocations.warmBytesAllocatedBy(() -> {
                 for (int frame = 0; frame < 10; ++frame) {
-                    iterate.advance(H);
+                    iterate.getWindow().advance(H);
                 }
             });
-            long text = Allocations.warmBytesAllocatedBy(() -> iterate.formatHud(hud));
+            long text = Allocations.warmBytesAllocatedBy(() -> iterate.getWindow().formatHud(hud));
             return new long[] {frames, text};
         });
         assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
@@ -393,15 +394,15 @@ class LectureFramesHeadlessTest {
             cheat.setSpeedIndex(FastBulletsDemo.SPEEDS.length - 1);
             int frames = 0;
             while (!cheat.isReached() && frames < 600) {
-                cheat.advance(H);
+                cheat.getWindow().advance(H);
                 ++frames;
             }
-            Trail trail = cheat.getView(cheat.getBullet()).getTrail();
+            Trail trail = cheat.getWindow().getView(cheat.getBullet()).getTrail();
             Vector3f newest = trail.copyPoint(trail.size() - 1, new Vector3f());
             return new Object[] {cheat.isHit(), cheat.copyImpact(new Vector3f()),
                 cheat.getBullet().getParticle().position.clone(), newest,
                 cheat.getSteppedDrop(), cheat.getArrivalSeconds(),
-                cheat.formatHud(new StringBuilder()).toString()};
+                cheat.getWindow().formatHud(new StringBuilder()).toString()};
         });
         float v = FastBulletsDemo.SPEEDS[FastBulletsDemo.SPEEDS.length - 1];
         // One step is 15 m, fifty times the disc's 0.3 m: no step ends inside it.
@@ -433,10 +434,10 @@ class LectureFramesHeadlessTest {
             // The 35 m/s bullet flies 1.4 s to the disc: the 70 frames run stay in flight.
             long frames = Allocations.warmBytesAllocatedBy(() -> {
                 for (int frame = 0; frame < 10; ++frame) {
-                    cheat.advance(H);
+                    cheat.getWindow().advance(H);
                 }
             });
-            long text = Allocations.warmBytesAllocatedBy(() -> cheat.formatHud(hud));
+            long text = Allocations.warmBytesAllocatedBy(() -> cheat.getWindow().formatHud(hud));
             return new long[] {frames, text};
         });
         assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
@@ -478,10 +479,10 @@ class LectureFramesHeadlessTest {
             // The low arc flies 1.8 s: the 70 frames run stay in flight.
             long frames = Allocations.warmBytesAllocatedBy(() -> {
                 for (int frame = 0; frame < 10; ++frame) {
-                    height.advance(H);
+                    height.getWindow().advance(H);
                 }
             });
-            long text = Allocations.warmBytesAllocatedBy(() -> height.formatHud(hud));
+            long text = Allocations.warmBytesAllocatedBy(() -> height.getWindow().formatHud(hud));
             return new long[] {frames, text};
         });
         assertEquals(0L, bytes[0], "bytes allocated by 10 frames");
@@ -495,7 +496,7 @@ class LectureFramesHeadlessTest {
             // The raw steps (F6 off): the box drawn at R, not between two steps.
             rotation.getReplayControls().setInterpolating(false);
             for (int i = 0; i < 300; ++i) {
-                rotation.advance(H);
+                rotation.getWindow().advance(H);
             }
             rotation.getReplayControls().setInterpolating(true);
             BoxView view = rotation.getView(0);
@@ -528,10 +529,10 @@ class LectureFramesHeadlessTest {
                 demo.restart();
                 long simulation = Allocations.warmBytesAllocatedBy(() -> {
                     for (int i = 0; i < 30; ++i) {
-                        demo.advance(H);
+                        demo.getWindow().advance(H);
                     }
                 });
-                long text = Allocations.warmBytesAllocatedBy(() -> demo.formatHud(hud));
+                long text = Allocations.warmBytesAllocatedBy(() -> demo.getWindow().formatHud(hud));
                 return new long[] {simulation, text};
             });
             assertEquals(0L, bytes[0], demo.getTitle() + ": 30 frames allocated");
@@ -623,16 +624,16 @@ class LectureFramesHeadlessTest {
             if (!particle.isParked()) {
                 continue;
             }
-            if (collisions.getView(particle).getNode().getCullHint()
+            if (collisions.getWindow().getView(particle).getNode().getCullHint()
                     != Spatial.CullHint.Always) {
                 found.add(where + ": idle " + particle.getLabel() + " is drawn");
             }
-            if (!collisions.getView(particle).getLabelRect().isEmpty()) {
+            if (!collisions.getWindow().getView(particle).getLabelRect().isEmpty()) {
                 found.add(where + ": idle " + particle.getLabel() + " has a label");
             }
         }
         ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
-        PlaneView plane = collisions.getPlaneView();
+        PlaneView plane = collisions.getWindow().getPlaneView();
         // The walls are drawn 0.05 m thick outside their planes; a ball's diameter of room
         // (2·RADIUS) beyond them shows the wall as a wall, not as the window's frame.
         float room = 2f * CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
@@ -675,10 +676,10 @@ class LectureFramesHeadlessTest {
 
     private static void check(List<String> found, String where, boolean labels) {
         ScreenRect scene = collisions.getWindow().copySceneRect(new ScreenRect());
-        PlaneView plane = collisions.getPlaneView();
+        PlaneView plane = collisions.getWindow().getPlaneView();
         float radius = CollisionsDemo.RADIUS * plane.getPixelsPerMetre();
         List<ScreenRect> texts = collisions.getWindow().copyTextRects(new ArrayList<>());
-        List<ScreenRect> hud = collisions.getHud().copyTextRects(new ArrayList<>());
+        List<ScreenRect> hud = collisions.getWindow().getHud().copyTextRects(new ArrayList<>());
         checkImpulses(found, where, plane, radius, hud);
         for (DemoParticle particle : collisions.getParticles()) {
             if (particle.isParked()) {
@@ -701,7 +702,7 @@ class LectureFramesHeadlessTest {
                             + text);
                 }
             }
-            ScreenRect label = collisions.getView(particle).getLabelRect();
+            ScreenRect label = collisions.getWindow().getView(particle).getLabelRect();
             if (!labels || label.isEmpty()) {
                 continue;
             }
@@ -752,7 +753,7 @@ class LectureFramesHeadlessTest {
                     found.add(where + ": impulse label " + callout + " covers "
                             + particle.getLabel());
                 }
-                if (callout.intersects(collisions.getView(particle).getLabelRect())) {
+                if (callout.intersects(collisions.getWindow().getView(particle).getLabelRect())) {
                     found.add(where + ": impulse label " + callout + " covers the name of "
                             + particle.getLabel());
                 }

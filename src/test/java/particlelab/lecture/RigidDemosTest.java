@@ -37,7 +37,7 @@ class RigidDemosTest {
         double[] measured = measure(() -> {
             rotation.restart();
             for (int i = 0; i < steps; ++i) {
-                rotation.advancePhysics(H);
+                rotation.getRun().advancePhysics(H);
             }
             RotationCheck check = new RotationCheck();
             Vector3f omega = rotation.copyOmega(new Vector3f());
@@ -71,7 +71,7 @@ class RigidDemosTest {
         double[] measured = measure(() -> {
             rotation.restart();
             for (int i = 0; i < 600; ++i) {
-                rotation.advancePhysics(H);
+                rotation.getRun().advancePhysics(H);
             }
             return new double[] {rotation.countPlainRestarts(),
                 new RotationCheck().determinant(rotation.getOrientation(0))};
@@ -102,9 +102,9 @@ class RigidDemosTest {
                 press("Right");
                 rotation.restart();
                 for (int i = 0; i < 60; ++i) {
-                    rotation.advancePhysics(1f / 15f);
+                    rotation.getRun().advancePhysics(1f / 15f);
                 }
-                return new String[] {rotation.formatHud(new StringBuilder()).toString(),
+                return new String[] {rotation.getWindow().formatHud(new StringBuilder()).toString(),
                     Double.toString(rotation.getElapsedSeconds(3)),
                     Double.toString(rotation.getLagRadians(1)),
                     Double.toString(rotation.getLagRadians(2)),
@@ -160,13 +160,13 @@ class RigidDemosTest {
         String[] lines = measure(() -> {
             rotation.restart();
             for (int i = 0; i < 600; ++i) {
-                rotation.advancePhysics(H);
+                rotation.getRun().advancePhysics(H);
             }
-            String soon = rotation.formatHud(new StringBuilder()).toString();
+            String soon = rotation.getWindow().formatHud(new StringBuilder()).toString();
             for (int i = 0; i < 120; ++i) {
-                rotation.advancePhysics(H);
+                rotation.getRun().advancePhysics(H);
             }
-            String later = rotation.formatHud(new StringBuilder()).toString();
+            String later = rotation.getWindow().formatHud(new StringBuilder()).toString();
             return new String[] {soon, later, Double.toString(rotation.getPlainRestartSeconds())};
         });
         // (1 + 0.05²)ⁿ ≥ 1.5³ from n = 488 (8.13 s): 600 steps are 1.87 s after it, 720 steps
@@ -186,7 +186,7 @@ class RigidDemosTest {
         double[] measured = measure(() -> {
             spinThrow.setTorqueChoice(1);
             for (int i = 0; i < steps; ++i) {
-                spinThrow.advancePhysics(H);
+                spinThrow.getRun().advancePhysics(H);
             }
             RigidBody body = spinThrow.getBody();
             Particle twin = new Particle(SpinThrowDemo.LAUNCH_POSITION,
@@ -231,7 +231,7 @@ class RigidDemosTest {
             double previous = explicit0;
             boolean monotone = true;
             for (int i = 0; i < 900; ++i) {
-                racket.advancePhysics(H);
+                racket.getRun().advancePhysics(H);
                 double explicit = racket.getBody(0).rotationalEnergy(scratch);
                 monotone &= explicit > previous;
                 previous = explicit;
@@ -292,7 +292,7 @@ class RigidDemosTest {
         double[] measured = measure(() -> {
             racket.setGyroscopic(false);
             for (int i = 0; i < 900; ++i) {
-                racket.advancePhysics(H);
+                racket.getRun().advancePhysics(H);
             }
             double[] result = {racket.countFlips(0), racket.countFlips(1)};
             racket.setGyroscopic(true);
@@ -308,7 +308,7 @@ class RigidDemosTest {
             spinThrow.setTorqueChoice(0);
             spinThrow.setDrag(true);
             for (int i = 0; i < 60; ++i) {
-                spinThrow.advancePhysics(H);
+                spinThrow.getRun().advancePhysics(H);
             }
             Vector3f corner = spinThrow.getBody().bodyToWorld(SpinThrowDemo.CORNER,
                     new Vector3f());
@@ -325,7 +325,7 @@ class RigidDemosTest {
 
     /** Press the rotation demo's key with this label. */
     private void press(String label) {
-        for (KeyBinding binding : rotation.getBindings()) {
+        for (KeyBinding binding : rotation.getKeys().getBindings()) {
             if (binding.getKeyLabel().equals(label)) {
                 binding.press(0);
                 return;

@@ -123,7 +123,7 @@ class SpringDemoTest {
         double restY = SpringDemo.ANCHOR_Y - (double) Gravity.STANDARD_G / SpringDemo.SPRING_K;
         double start = swing(particle, restY);
         for (int n = 0; n < TRIAL_STEPS; ++n) {
-            spring.advancePhysics((float) stepSeconds);
+            spring.getRun().advancePhysics((float) stepSeconds);
         }
         if (spring.getRun().countBlowUps() > 0) {
             return false;

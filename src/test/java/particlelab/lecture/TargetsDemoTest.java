@@ -19,10 +19,10 @@ class TargetsDemoTest {
         targets.restart();
         targets.fireAtAngle(-90f); // straight down into the gun's platform
         for (int frame = 0; frame < 3; ++frame) {
-            targets.advancePhysics(H);
+            targets.getRun().advancePhysics(H);
         }
         targets.fireAtAngle(35f);
-        String hud = targets.formatHud(new StringBuilder()).toString();
+        String hud = targets.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("1 prologue:   ignored: friendly (the gun's own platform)"),
                 hud);
     }

@@ -31,7 +31,7 @@ class TennisRacketSideBySideTest {
         assertEquals(explicit.orientation, midpoint.orientation);
         assertEquals(explicit.angularVelocity, midpoint.angularVelocity);
         for (int frame = 0; frame < FRAMES; ++frame) {
-            racket.advancePhysics(H);
+            racket.getRun().advancePhysics(H);
         }
         int steps = (int) Math.round(racket.getClock().getSimulatedSeconds() / H);
         assertTrue(steps >= FRAMES - 1, "steps " + steps);
@@ -73,7 +73,7 @@ class TennisRacketSideBySideTest {
             assertEquals(!name.equals("midpoint"), racket.isShown(0), name);
             assertEquals(!name.equals("explicit"), racket.isShown(1), name);
         }
-        String hud = racket.formatHud(new StringBuilder()).toString();
+        String hud = racket.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("shown (I): both,"), hud);
         assertTrue(hud.contains("explicit Euler vs implicit midpoint: the plates are 0.0° apart"),
                 hud);

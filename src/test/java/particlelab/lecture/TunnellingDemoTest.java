@@ -19,7 +19,7 @@ class TunnellingDemoTest {
         for (float speed : new float[] {10f, 40f, 120f}) {
             tunnelling.setSpeed(speed);
             for (int frame = 0; frame < 20000; ++frame) {
-                tunnelling.advancePhysics(H);
+                tunnelling.getRun().advancePhysics(H);
             }
             int shots = tunnelling.countShots(false);
             int sweptShots = tunnelling.countShots(true);
@@ -33,7 +33,7 @@ class TunnellingDemoTest {
             double sigma = Math.sqrt(p * (1.0 - p) / shots);
             assertEquals(p, measured, 4.0 * sigma + 1.0 / shots,
                     speed + " m/s over " + shots + " shots");
-            String hud = tunnelling.formatHud(new StringBuilder()).toString();
+            String hud = tunnelling.getWindow().formatHud(new StringBuilder()).toString();
             assertTrue(hud.contains("swept test  :  shots " + sweptShots + "   hits "
                     + sweptShots + "   misses 0"), hud);
         }

@@ -12,7 +12,7 @@ import particlelab.physics.Particle;
 /**
  * The student's worked example, tested the way "Write your own demo" says: its physics in
  * plain JUnit, no jME application. {@code new WindDemo()} builds its scene when first asked,
- * and {@link DemoState#advancePhysics} runs a frame's steps with a fixed frame time.
+ * and {@link particlelab.demo.DemoRun#advancePhysics} runs a frame's steps with a fixed frame time.
  */
 class WindDemoTest {
 
@@ -24,7 +24,7 @@ class WindDemoTest {
     void ballInTheWindFollowsTheEulerStepsClosedForm() {
         int frames = 30;
         for (int frame = 0; frame < frames; ++frame) {
-            wind.advancePhysics(H);
+            wind.getRun().advancePhysics(H);
         }
         Particle ball = wind.getParticles().get(1).getParticle();
         float[] state = {ball.velocity.x, ball.velocity.y,
@@ -49,7 +49,7 @@ class WindDemoTest {
     @Test
     void headwindShortensTheFlightAndStillAirLandsVxHShortOfTheParabola() {
         for (int frame = 0; frame < 300; ++frame) {
-            wind.advancePhysics(H);
+            wind.getRun().advancePhysics(H);
         }
         float[] landings = {wind.getParticles().get(0).getLandingX(),
             wind.getParticles().get(1).getLandingX()};
@@ -78,7 +78,7 @@ class WindDemoTest {
         // The help overlay is generated from these declarations.
         boolean left = false;
         boolean right = false;
-        for (KeyBinding binding : wind.getBindings()) {
+        for (KeyBinding binding : wind.getKeys().getBindings()) {
             left |= binding.getKeyLabel().equals("Left");
             right |= binding.getKeyLabel().equals("Right");
         }
