@@ -547,12 +547,12 @@ public final class RateLanes implements DemoPart {
                 marks[i].setCullHint(hint);
             }
         }
-        boolean legendShown = shown && laidOut && demo.getHud() != null
-                && !demo.getHud().isHelpVisible();
+        boolean legendShown = shown && laidOut && demo.getWindow().getHud() != null
+                && !demo.getWindow().getHud().isHelpVisible();
         for (int i = 0; i < legend.length; ++i) {
             if (legendShown && legend[i].getParent() == null) {
                 // the HUD's node comes and goes with the demo: the legend with it
-                demo.getHud().getNode().attachChild(legend[i]);
+                demo.getWindow().getHud().getNode().attachChild(legend[i]);
             }
             legend[i].setCullHint(legendShown ? Spatial.CullHint.Inherit
                     : Spatial.CullHint.Always);

@@ -202,7 +202,7 @@ class TourQuestionsTest {
         demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
         RateLanes rates = ((GravitationalPullDemo) demo).getRates();
         for (int frame = 0; frame < 600; ++frame) {
-            demo.advancePhysics(1f / 60f);
+            demo.getRun().advancePhysics(1f / 60f);
         }
         assertTrue(rates.isOn(), "the stop opens the lanes");
         DemoParameters parameters = demo.getParameters();

@@ -454,13 +454,13 @@ class LectureFramesHeadlessTest {
     void rateLaneFramesAllocateNothingInFlight() throws Exception {
         Object[] result = harness.call(() -> {
             pull.restart();
-            pull.advance(H);
+            pull.getWindow().advance(H);
             StringBuilder hud = new StringBuilder(4096);
             long frames = Allocations.warmBytesAllocatedBy(() -> {
-                pull.advance(H);
-                pull.advance(H);
+                pull.getWindow().advance(H);
+                pull.getWindow().advance(H);
             });
-            long text = Allocations.warmBytesAllocatedBy(() -> pull.formatHud(hud));
+            long text = Allocations.warmBytesAllocatedBy(() -> pull.getWindow().formatHud(hud));
             return new Object[] {frames, text, pull.getRates().isFlying(),
                 pull.getRates().getLegendLine(3)};
         });

@@ -84,11 +84,11 @@ class RateLanesDemoTest {
         assertEquals(MAIN_END_SECONDS, pull.getWorld().getTimeSeconds(), 0.0);
         assertEquals(MAIN_ENTRY_INTS, run.entryInts, "a ring entry's size");
         assertFalse(pull.getRates().isOn());
-        assertFalse(pull.formatHud(new StringBuilder()).toString().contains("Raw tpf"));
+        assertFalse(pull.getWindow().formatHud(new StringBuilder()).toString().contains("Raw tpf"));
         // lanes switched on and off again (at the next launch, as the panel does)
         GravitationalPullDemo toggled = new GravitationalPullDemo();
         toggled.getParameters().set(RateLanes.PARAMETER, 2f);
-        toggled.advancePhysics(H);
+        toggled.getRun().advancePhysics(H);
         toggled.getParameters().set(RateLanes.PARAMETER, 0f);
         toggled.restart();
         assertEquals(MAIN_STATE_FOLD, run(toggled).fold, "after rates=uniform, then off");
@@ -165,7 +165,7 @@ class RateLanesDemoTest {
             assertEquals(gap, rates.getRun(i).getLanding().getX()
                     - rates.getRun(i - 1).getLanding().getX(), 1e-3, "lane " + i);
         }
-        String hud = pull.formatHud(new StringBuilder()).toString();
+        String hud = pull.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Raw tpf lands (vs fixed):  30 Hz 20.07 m (-0.17)  60 Hz 20.24 m"
                 + " (+0.00)  144 Hz 20.34 m (+0.10)  240 Hz 20.37 m (+0.13)\n"), hud);
         assertTrue(hud.contains("Fixed step h = 16.67 ms (the cure): 20.24 m at every rate,"
@@ -178,7 +178,7 @@ class RateLanesDemoTest {
         RateLanes rates = pull.getRates();
         int steps = 31;
         for (int frame = 0; frame < steps; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
         // after 31 steps of 1/60 s, a monitor at f Hz has shown floor(31·f/60) frames
         for (int i = 0; i < RateLanes.RATES_HZ.length; ++i) {
@@ -188,7 +188,7 @@ class RateLanesDemoTest {
         DemoParticle ball = pull.getParticles().get(0);
         int frame = steps;
         while (!ball.hasLanded()) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
             ++frame;
         }
         // the ball lands at the 122nd step (as without lanes), the 144 and 240 Hz lanes later
@@ -197,7 +197,7 @@ class RateLanesDemoTest {
         assertTrue(rates.isFlying());
         assertFalse(pull.getRun().isSceneOver());
         while (!pull.getRun().isSceneOver() && frame < FRAMES) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
             ++frame;
         }
         for (int i = 0; i < RateLanes.RATES_HZ.length; ++i) {
@@ -209,7 +209,7 @@ class RateLanesDemoTest {
         assertEquals(123L, pull.getWorld().getStepCount());
         // and a reset starts them again
         pull.restart();
-        pull.advancePhysics(H);
+        pull.getRun().advancePhysics(H);
         assertEquals(4, rates.getRun(3).getSteps(), "240 Hz: 4 frames in the first step");
     }
 
@@ -217,7 +217,7 @@ class RateLanesDemoTest {
     void histogramIsTheSameSeedsSimulatedAgain() {
         GravitationalPullDemo pull = lanesOn(3f);
         pull.getParameters().set(RateLanes.JITTER_WIDTH, 3f);
-        pull.advancePhysics(H);
+        pull.getRun().advancePhysics(H);
         RateLanes rates = pull.getRates();
         assertEquals(FrameJitter.Distribution.NORMAL, rates.getJitter());
         JitterHistogram histogram = rates.getHistogram();
@@ -236,7 +236,7 @@ class RateLanesDemoTest {
         }
         // the fixed step's single bar is where every run of it lands: the ball's landing
         assertEquals(rates.getFixedRun().getLanding().getX(), histogram.getFixedX(), 0.0);
-        String hud = pull.formatHud(new StringBuilder()).toString();
+        String hud = pull.getWindow().formatHud(new StringBuilder()).toString();
         assertTrue(hud.contains("Jitter normal 3.0 ms at 60 Hz, 1000 runs land "), hud);
         assertTrue(hud.contains("   fixed step: all 1000 runs in one bar at "), hud);
     }
@@ -249,9 +249,9 @@ class RateLanesDemoTest {
     void lecturingPageShowsTheLanesHudLinesAsPrinted() throws IOException {
         GravitationalPullDemo pull = lanesOn(2f);
         for (int frame = 0; frame < 200; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
-        String hud = pull.formatHud(new StringBuilder()).toString();
+        String hud = pull.getWindow().formatHud(new StringBuilder()).toString();
         // the lanes' four lines: landings, the fixed step, the histogram and its bar
         String[] shown = hud.substring(hud.indexOf("Raw tpf lands")).split("\n");
         String printed = String.join("\n", shown[0], shown[1], shown[2], shown[3]);
@@ -273,18 +273,18 @@ class RateLanesDemoTest {
     void stepsAndFramesWithLanesAllocateNothing() {
         GravitationalPullDemo pull = lanesOn(2f);
         // the launch's step computes the histogram, in preallocated arrays; then a flight
-        pull.advancePhysics(H);
+        pull.getRun().advancePhysics(H);
         StringBuilder hud = new StringBuilder(4096);
         Allocations.assertAllocatesNothing("60 frames of pull with the rate lanes", () -> {
             for (int frame = 0; frame < 60; ++frame) {
-                pull.advance(H);
+                pull.getWindow().advance(H);
                 hud.setLength(0);
-                pull.formatHud(hud);
+                pull.getWindow().formatHud(hud);
             }
         });
         Allocations.assertAllocatesNothing("a reset and its launch's histogram", () -> {
             pull.restart();
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         });
     }
 
@@ -292,13 +292,13 @@ class RateLanesDemoTest {
     void stepBackPutsTheLanesWhereTheyWere() {
         GravitationalPullDemo pull = lanesOn(1f);
         for (int frame = 0; frame < 60; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
         RateLanes rates = pull.getRates();
         Vector3f at240 = rates.getRun(3).getParticle().position.clone();
         long hash = StateHash.of(pull);
         for (int frame = 0; frame < 30; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
         }
         for (int step = 0; step < 30; ++step) {
             assertTrue(pull.getReplayControls().stepBack());
@@ -317,7 +317,7 @@ class RateLanesDemoTest {
     private static Run run(GravitationalPullDemo pull) {
         Run run = new Run();
         for (int frame = 0; frame < FRAMES; ++frame) {
-            pull.advancePhysics(H);
+            pull.getRun().advancePhysics(H);
             run.fold = run.fold * 31 + StateHash.of(pull);
             if (run.sceneOverFrame < 0 && pull.getRun().isSceneOver()) {
                 run.sceneOverFrame = frame;
