@@ -29,7 +29,8 @@ import particlelab.world.World;
  *
  * <p>The demo may give a sphere other forces while it runs ({@link #setForces}: the drag
  * demo's swapped laws); its exact ghost, which follows the forces the sphere was launched
- * with, is then hidden. Per step and per frame this allocates nothing.
+ * with, is then hidden, and the HUD compares nothing with it. Per step and per frame this
+ * allocates nothing.
  */
 public final class MethodPart implements DemoPart {
 
@@ -189,13 +190,16 @@ public final class MethodPart implements DemoPart {
         }
     }
 
-    /** Hide the exact ghost of a sphere whose forces are not those it was launched with. */
+    /**
+     * A sphere whose forces are not those its exact path follows: its ghost hidden, nothing
+     * compared with it on the HUD. Allocates nothing.
+     */
     @Override
     public void afterFrame() {
         for (int i = 0; i < count; ++i) {
             int index = demo.getParticles().indexOf(spheres[i]);
-            demo.getExactGhosts().setGhostShown(index,
-                    forces[i] == spheres[i].getPathIntegrator());
+            demo.getExactGhosts().setOtherForces(index,
+                    forces[i] != spheres[i].getPathIntegrator());
         }
     }
 

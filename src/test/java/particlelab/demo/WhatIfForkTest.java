@@ -122,6 +122,11 @@ class WhatIfForkTest {
         // h·a with a → 0; the fixed point holds to a few ulps of v_t (1e-6 relative ≈ 8 ulps)
         assertEquals(linear, settledSpeed(linearSphere), 1e-5 * linear);
         assertEquals(quadratic, settledSpeed(quadraticSphere), 1e-5 * quadratic);
+        // the HUD says what changed, with the two constants (docs/demos/drag.md quotes it)
+        StringBuilder hud = new StringBuilder();
+        drag.formatHud(hud);
+        assertTrue(hud.toString().contains("\nLaws swapped (drag), v_t kept:  c' = b²/(mg) ="
+                + " 0.083 kg/m,  b' = mg/v_t = 0.792 N s/m\n"), hud.toString());
     }
 
     /**
