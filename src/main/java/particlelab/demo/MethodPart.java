@@ -142,7 +142,8 @@ public final class MethodPart implements DemoPart {
     /** Declare {@code --set method=recipe|euler}: live, from the next step on. */
     @Override
     public void declareParameters(DemoParameters parameters) {
-        parameters.add(DemoParameter.choice(PARAMETER, "integration method", NAMES, RECIPE,
+        // "integrator", short: the drag panel's 15 rows fit at 1280x720 only unwrapped
+        parameters.add(DemoParameter.choice(PARAMETER, "integrator", NAMES, RECIPE,
                 DemoParameter.Applies.LIVE, value -> {
                     method = Math.round(value);
                     install();
