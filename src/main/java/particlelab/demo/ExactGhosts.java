@@ -87,6 +87,11 @@ final class ExactGhosts implements StateRecord {
     private GhostView[] views = new GhostView[0];
     /** Per particle: whether its ghost may be shown (a hidden comparison lane's is not). */
     private boolean[] ghostShown = new boolean[0];
+    /**
+     * Per particle: moved by other forces than those its exact path follows (the drag demo's
+     * swapped laws), so neither its ghost nor its distance to it means anything.
+     */
+    private boolean[] otherForces = new boolean[0];
     /** Per particle: the Euler particle's highest step point and when (NaN: none yet). */
     private float[] eulerApexHeight = new float[0];
     private double[] eulerApexSeconds = new double[0];
@@ -160,6 +165,7 @@ final class ExactGhosts implements StateRecord {
         paths = new ExactPath[count];
         views = new GhostView[count];
         ghostShown = new boolean[count];
+        otherForces = new boolean[count];
         for (int i = 0; i < count; ++i) {
             ghostShown[i] = !particles.get(i).isGhostHidden();
         }
@@ -417,6 +423,21 @@ final class ExactGhosts implements StateRecord {
     }
 
     /**
+     * Say whether a particle runs other forces than its exact path follows (the drag demo's
+     * swapped laws): then its ghost is hidden and the HUD compares nothing with it. Does
+     * nothing before the ghosts are built. Allocates nothing.
+     *
+     * @param index the particle's index
+     * @param other true while its forces are not its path's
+     */
+    void setOtherForces(int index, boolean other) {
+        if (index < otherForces.length) {
+            otherForces[index] = other;
+            setGhostShown(index, !other && !particles.get(index).isGhostHidden());
+        }
+    }
+
+    /**
      * Let one particle's ghost be shown (with the others, as G has them) or keep it hidden,
      * e.g. the ghost of a comparison lane while the lane is off. Does nothing before the
      * ghosts are built. Allocates nothing.
@@ -532,7 +553,8 @@ final class ExactGhosts implements StateRecord {
             return false;
         }
         DemoParticle particle = particles.get(index);
-        return particle.stopsAtGround() && particle.hasLanded() && paths[index].hasLanded();
+        return particle.stopsAtGround() && particle.hasLanded() && paths[index].hasLanded()
+                && !otherForces[index];
     }
 
     /**
@@ -561,7 +583,7 @@ final class ExactGhosts implements StateRecord {
      * @param index the particle's index
      */
     void appendLiveError(StringBuilder text, int index) {
-        if (!enabled || paths.length == 0) {
+        if (!enabled || paths.length == 0 || otherForces[index]) {
             return;
         }
         text.append("   |P - P_exact| = ");

@@ -94,6 +94,11 @@ final class WhatIfFork {
         return run;
     }
 
+    /** @return the twin: the demo's class, never shown (live, not null) */
+    DemoState getTwin() {
+        return twin;
+    }
+
     /** @return the parameter changed, or null for none */
     String getParameter() {
         return parameter;

@@ -274,7 +274,7 @@ public final class WhatIfPart implements DemoPart {
         }
     }
 
-    /** "h = 1/30 s", "e = 0.6", "as recorded". */
+    /** "h = 1/30 s", "e = 0.6", "method = euler" (a choice by its name), "as recorded". */
     private StringBuilder appendChange(StringBuilder text, String name, float value) {
         if (name == null) {
             return text.append("as recorded");
@@ -282,6 +282,11 @@ public final class WhatIfPart implements DemoPart {
         text.append(name).append(" = ");
         if ("h".equals(name)) {
             return DemoParameter.appendStep(text, value);
+        }
+        DemoParameters parameters = demo.getParameters();
+        int index = parameters.indexOf(name);
+        if (index >= 0 && parameters.get(index).isChoice()) {
+            return text.append(parameters.get(index).getChoice(Math.round(value)));
         }
         return DemoParameter.appendShort(text, value, 2);
     }

@@ -11,6 +11,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.demo.DemoState;
 import particlelab.demo.LaunchControl;
 import particlelab.demo.LensPart;
+import particlelab.demo.MethodPart;
 import particlelab.demo.WhatIfPart;
 import particlelab.demo.Presentation;
 import particlelab.physics.Gravity;
@@ -52,6 +53,12 @@ import particlelab.view.TextFormat;
  * {@code −c·|V|²·V} while its label, equations and terminal speed still claim the physical
  * law, as a student who copied the slide would believe; {@code fault=random} hides it
  * ({@code --set seed=N}) until B reveals it, with where it lands against the physical law.
+ *
+ * <p>What if (Insert, Delete, J; {@link WhatIfPart}): a fork lane with h = 1/30 s, b = 2 N s/m,
+ * the drag laws swapped ({@code --set drag=swapped}: the linear sphere runs quadratic drag with
+ * {@code c' = m·g/v_t² = b²/(m·g)}, the quadratic sphere linear drag with
+ * {@code b' = m·g/v_t}, so each keeps its terminal speed v_t and only the way there changes),
+ * or another integration method ({@code --set method=euler}, {@link MethodPart}).
  */
 public final class DragDemo extends DemoState {
 
@@ -75,6 +82,11 @@ public final class DragDemo extends DemoState {
     /** The third sphere's labels, by law. */
     private static final String[] LAW_LABELS = {"quadratic drag  F = -c |V|V",
         "slide form  F = -c |V|²V (not physical)"};
+    /** The swap of the drag laws: its parameter, its values, the spheres' labels then. */
+    static final String SWAP = "drag";
+    private static final String[] SWAPS = {"as-labelled", "swapped"};
+    private static final String[] SWAPPED_LABELS = {"swapped: quadratic  F = -c' |V|V",
+        "swapped: linear  F = -b' V"};
     /** The fault of this demo, by {@code --set fault=} name, and what it is. */
     static final String SLIDE_DRAG = "slide-drag";
     private static final String[] FAULTS = {SLIDE_DRAG};
@@ -91,9 +103,23 @@ public final class DragDemo extends DemoState {
             () -> SlideCode.linearDrag(linearGravity, linearDrag), SPHERE_RADIUS));
     /** The derivative lens on the followed sphere (key O, {@code --set lens=on}). */
     private final LensPart lens = addPart(new LensPart(SPHERE_RADIUS));
-    /** What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, b = 2 N s/m, c = 0. */
+    /** How the spheres step: the lecture's recipe, or forward Euler ({@code method}). */
+    private final MethodPart method = addPart(new MethodPart());
+    /**
+     * What-if forks (Insert, Delete, J): as recorded, h = 1/30 s, b = 2 N s/m, the drag laws
+     * swapped (v_t kept), forward Euler.
+     */
     private final WhatIfPart whatIf = addPart(new WhatIfPart(DragDemo::new,
-            new String[] {null, "h", "b", "c"}, new float[] {0f, 1f / 30f, 2f, 0f}, 0f));
+            new String[] {null, "h", "b", SWAP, MethodPart.PARAMETER},
+            new float[] {0f, 1f / 30f, 2f, 1f, MethodPart.FORWARD_EULER}, 0f));
+    /** The swapped laws: quadratic drag on the linear sphere, linear on the quadratic one. */
+    private final QuadraticDrag swappedQuadratic = new QuadraticDrag(0f);
+    private final LinearDrag swappedLinear = new LinearDrag(0f);
+    private ParticleIntegrator linearAsQuadratic;
+    private ParticleIntegrator quadraticAsLinear;
+    /** The drag laws are swapped ({@code --set drag=swapped}). */
+    private boolean swapped;
+    private DemoParticle linearSphere;
     private final QuadraticDrag quadraticDrag = new QuadraticDrag(QUADRATIC_C);
     /** The slide's form, on the same sphere: c is in one of the two, 0 in the other. */
     private final SlideFormDrag slideDrag = new SlideFormDrag(0f);
@@ -179,7 +205,7 @@ public final class DragDemo extends DemoState {
         launch.add(addParticle("gravity only", ColorRGBA.Orange, Vector3f.ZERO,
                 LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(new Gravity())))).stopAtGround();
-        DemoParticle linearSphere = launch.add(addParticle("linear drag  F = -b V",
+        linearSphere = launch.add(addParticle(linearLabel(),
                 new ColorRGBA(0.3f, 0.85f, 1f, 1f), Vector3f.ZERO, LAUNCH_VELOCITY, MASS_KG,
                 new ParticleIntegrator(launch.add(linearGravity), linearDrag)));
         linearSphere.stopAtGround();
@@ -190,6 +216,13 @@ public final class DragDemo extends DemoState {
                 new ParticleIntegrator(launch.add(quadraticGravity), quadraticDrag,
                         slideDrag)));
         quadraticSphere.stopAtGround();
+        // The swapped laws, each with its sphere's gravity (g moves them too).
+        linearAsQuadratic = new ParticleIntegrator(linearGravity, swappedQuadratic);
+        quadraticAsLinear = new ParticleIntegrator(quadraticGravity, swappedLinear);
+        for (int i = 0; i < 3; ++i) {
+            method.drive(getParticles().get(i));
+        }
+        applySwap();
         QuadraticFlight faultyFlight = new QuadraticFlight();
         QuadraticFlight correctFlight = new QuadraticFlight();
         consequence.setFlight((fault, h) -> fault == 0 ? correctFlight.landingX(false, h)
@@ -220,6 +253,16 @@ public final class DragDemo extends DemoState {
                         lawChanged();
                     }
                 }));
+        // Each drag sphere runs the other law with its own v_t, from the next step on.
+        declareParameter(DemoParameter.choice(SWAP, "drag laws", SWAPS, 0,
+                DemoParameter.Applies.LIVE, value -> {
+                    swapped = Math.round(value) == 1;
+                    if (quadraticSphere != null) {
+                        relabel(linearSphere, linearLabel());
+                        relabel(quadraticSphere, quadraticLabel());
+                        applySwap();
+                    }
+                }));
         declareParameter(faults.switchParameter(this::lawChanged));
         declareParameter(faults.seedParameter(this::lawChanged));
     }
@@ -233,6 +276,57 @@ public final class DragDemo extends DemoState {
     @Override
     protected void onRestart() {
         consequence.markStale();
+    }
+
+    /**
+     * Tell whether the drag laws are swapped ({@code --set drag=swapped}).
+     *
+     * @return true if the linear sphere runs quadratic drag and the quadratic sphere linear
+     */
+    public boolean isSwapped() {
+        return swapped;
+    }
+
+    /**
+     * Access the integration method ({@code --set method=...}).
+     *
+     * @return the live part (not null)
+     */
+    public MethodPart getMethod() {
+        return method;
+    }
+
+    /** The swapped laws' coefficients follow b, c, g and m: set before every step. */
+    @Override
+    protected void beforeStep(float stepSeconds) {
+        applySwap();
+    }
+
+    /**
+     * Give the swapped laws their coefficients, each keeping its sphere's v_t, and hand the
+     * method part the forces each sphere runs with. Allocates nothing.
+     */
+    private void applySwap() {
+        double weight = linearSphere.getParticle().getMass()
+                * (double) getParameters().getValueInScene(getParameters().indexOf("g"));
+        // quadratic with the linear sphere's v_t: m·g = c'·v_t², so c' = m·g/v_t² = b²/(m·g)
+        double linear = terminalSpeed(1);
+        float quadraticC = linear > 0.0 && linear < Double.POSITIVE_INFINITY
+                ? (float) (weight / (linear * linear)) : 0f;
+        // linear with the quadratic sphere's v_t: m·g = b'·v_t
+        double quadratic = terminalSpeed(2);
+        float linearB = quadratic > 0.0 && quadratic < Double.POSITIVE_INFINITY
+                ? (float) (weight / quadratic) : 0f;
+        if (swappedQuadratic.getCoefficient() != quadraticC) {
+            swappedQuadratic.setCoefficient(quadraticC);
+        }
+        if (swappedLinear.getCoefficient() != linearB) {
+            swappedLinear.setCoefficient(linearB);
+        }
+        method.setForces(linearSphere, swapped ? linearAsQuadratic
+                : linearSphere.getIntegrator());
+        method.setForces(quadraticSphere, swapped ? quadraticAsLinear
+                : quadraticSphere.getIntegrator());
     }
 
     /**
@@ -283,6 +377,13 @@ public final class DragDemo extends DemoState {
     @Override
     protected void writeHudLines(StringBuilder text) {
         consequence.appendHudLine(text, "B");
+        if (swapped) {
+            DemoParameter.appendShort(text.append("Laws swapped (").append(SWAP)
+                    .append("), v_t kept:  c' = b²/(mg) = "), swappedQuadratic.getCoefficient(),
+                    3).append(" kg/m,  b' = mg/v_t = ");
+            DemoParameter.appendShort(text, swappedLinear.getCoefficient(), 3)
+                    .append(" N s/m\n");
+        }
         // v_t from the closed forms (the spheres' lines give the stepped |V|), and the step's
         // limit 2/λ there.
         double g = getParameters().getValueInScene(getParameters().indexOf("g"));
@@ -318,7 +419,15 @@ public final class DragDemo extends DemoState {
 
     /** @return the third sphere's label: its law, and the fault if one runs */
     private String quadraticLabel() {
+        if (swapped) {
+            return SWAPPED_LABELS[1];
+        }
         return law == 1 ? LAW_LABELS[1] : faults.label(LAW_LABELS[0]);
+    }
+
+    /** @return the second sphere's label: linear drag, or the quadratic law swapped in */
+    private String linearLabel() {
+        return swapped ? SWAPPED_LABELS[0] : "linear drag  F = -b V";
     }
 
     /** Reveal the hidden fault (key B): the label and the HUD name it. */

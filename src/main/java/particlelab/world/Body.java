@@ -214,6 +214,11 @@ public final class Body {
         return integrator;
     }
 
+    /** Let another integrator move this body from its next step (World.setIntegrator). */
+    void setIntegrator(ParticleIntegrator newIntegrator) {
+        integrator = newIntegrator;
+    }
+
     /**
      * Return the mass.
      *

@@ -191,6 +191,27 @@ public final class World implements SimulationClock.Stepper, StateRecord {
     }
 
     /**
+     * Let another integrator move a body from its next integration on: a demo's visible
+     * choice of how its bodies step (the drag demo's {@code method} and drag laws). Allowed
+     * between steps and in {@link StepListener#beforeStep}; the integrator is remembered for
+     * state records (which name a body's integrator by its place), so the first time an
+     * integrator is given may allocate, never again.
+     *
+     * @param body a body of this world (not null)
+     * @param integrator its new forces (not null, may be shared)
+     */
+    public void setIntegrator(Body body, ParticleIntegrator integrator) {
+        getPoolIndex(body);
+        if (integrator == null) {
+            throw new IllegalArgumentException("integrator must be an integrator, but was null");
+        }
+        if (indexOfIntegrator(integrator) < 0) {
+            integrators.add(integrator);
+        }
+        body.setIntegrator(integrator);
+    }
+
+    /**
      * Destroy a body: during a step it leaves after the epilogue (so no loop is corrupted and
      * every contact of the step still sees it); otherwise at once. Destroying a body already
      * waiting to leave does nothing.

@@ -97,6 +97,47 @@ class ExactGhostsHeadlessTest {
         assertTrue(hud.contains(" m/s   " + shown + " m\n"), hud);
     }
 
+    /**
+     * With the drag laws swapped ({@code drag=swapped}) the two drag spheres run other forces
+     * than their ghosts follow: the HUD compares nothing with those ghosts, in flight or
+     * landed (it once read "Euler | exact: range 9.65 | 8.59 m", the second the labelled
+     * law's), while the gravity sphere keeps its comparison.
+     */
+    @Test
+    void swappedLawsCompareNothingWithTheLabelledLawsGhosts() throws Exception {
+        String[] huds = harness.call(() -> {
+            drag.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            drag.getParameters().set("drag", 1f);
+            try {
+                drag.restart();
+                String[] taken = new String[2];
+                for (int frame = 1; frame <= 150; ++frame) {
+                    drag.advance(H);
+                    if (frame == 45) {
+                        taken[0] = drag.formatHud(new StringBuilder()).toString();
+                    }
+                }
+                taken[1] = drag.formatHud(new StringBuilder()).toString();
+                return taken;
+            } finally {
+                drag.getParameters().set("drag", 0f);
+                drag.restart();
+            }
+        });
+        String flying = huds[0];
+        assertTrue(flying.contains("\ngravity only:  P = ") && flying.contains(
+                "|P - P_exact|"), flying);
+        String landed = huds[1];
+        assertTrue(landed.contains("\ngravity only, Euler | exact:  apex"), landed);
+        assertTrue(landed.contains("\nswapped: quadratic  F = -c' |V|V:  P = "), landed);
+        assertTrue(landed.contains("\nswapped: linear  F = -b' V:  P = "), landed);
+        for (String line : (flying + landed).split("\n")) {
+            if (line.startsWith("swapped")) {
+                assertFalse(line.contains("exact"), line);
+            }
+        }
+    }
+
     @Test
     void dragGhostsAreTheClosedFormAndRk4AtTheParticlesTime() throws Exception {
         int steps = 45;

@@ -87,7 +87,7 @@ class ParameterPanelHeadlessTest {
         assertNames(GravitationalPullDemo.class, "h", "speed", "angle", "mass", "g", "fault",
                 "seed", "energy", "lane", "lens", "rates", "jitter_ms");
         assertNames(DragDemo.class, "h", "speed", "angle", "mass", "g", "b", "c", "law",
-                "fault", "seed", "energy", "lane", "lens");
+                "drag", "fault", "seed", "energy", "lane", "lens", "method");
         assertNames(ThrustDemo.class, "h", "speed", "angle", "mass", "g", "b", "k", "fault",
                 "seed", "energy", "lane", "lens");
         assertNames(HelloAimingDemo.class, "h", "vx", "g", "aim", "code", "fault", "seed",

@@ -56,6 +56,20 @@ class ReplayDeterminismTest {
     }
 
     /**
+     * Drag's what-if changes set for the whole run: forward Euler (its waiting velocities and
+     * the forceless integrator in the ring), the swapped laws (the bodies' other integrators).
+     */
+    @ParameterizedTest(name = "drag, {0}")
+    @ValueSource(strings = {"method=1", "drag=1"})
+    void dragsMethodAndSwappedLawsReplayTheSameBits(String setting) {
+        DemoState demo = DemoCatalog.entries().get(DemoCatalog.indexOf("drag")).create();
+        String[] nameValue = setting.split("=");
+        demo.getParameters().set(nameValue[0], Float.parseFloat(nameValue[1]));
+        demo.restart();
+        assertReplaysTheSameBits(demo, "drag, " + setting);
+    }
+
+    /**
      * The student lane with the reference solution: stepped on again from a state read back,
      * the student's recipe gives the same bits (its state is the lane's, in the ring).
      */

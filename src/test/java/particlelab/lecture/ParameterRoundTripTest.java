@@ -110,6 +110,13 @@ class ParameterRoundTripTest {
         exact("drag/fault", demo -> !((DragDemo) demo).isSlideForm()
                 && one(demo, SlideFormDrag.class, SlideFormDrag::getCoefficient) > 0f ? 1f : 0f);
         exact("drag/seed", demo -> ((DragDemo) demo).getFaultSeed());
+        // The method: forward Euler's spheres are moved by a forceless integrator (P += h·V
+        // with the old V), the recipe's by their forces.
+        exact("drag/method", demo -> demo.getWorld().getBody(0).getIntegrator()
+                .countForces() == 0 ? 1f : 0f);
+        // The swapped laws: the linear sphere's body carries quadratic drag.
+        exact("drag/drag", demo -> count(demo.getWorld().getBody(1).getIntegrator(),
+                QuadraticDrag.class) > 0 ? 1f : 0f);
         exact("thrust/b", demo -> one(demo, LinearDrag.class, LinearDrag::getCoefficient));
         exact("thrust/k", demo -> one(demo, Thrust.class, Thrust::getMagnitude));
         exact("thrust/fault", demo -> one(demo, LectureFaults.ThrustAlongAnother.class,
@@ -319,6 +326,14 @@ class ParameterRoundTripTest {
                     found.add(type.cast(force));
                 }
             }
+        }
+        return found;
+    }
+
+    private static int count(ParticleIntegrator integrator, Class<? extends Force> type) {
+        int found = 0;
+        for (int k = 0; k < integrator.countForces(); ++k) {
+            found += type.isInstance(integrator.getForce(k)) ? 1 : 0;
         }
         return found;
     }

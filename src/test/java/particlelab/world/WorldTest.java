@@ -52,6 +52,39 @@ class WorldTest {
         assertEquals(1000 * (double) H, a.getFlightSeconds(), 1e-9);
     }
 
+    /**
+     * A body given another integrator ({@link World#setIntegrator}: a demo's choice of how
+     * its bodies step) steps by it from the next step on, bit for bit, and a state read back
+     * gives the body the integrator it had when the state was written. Foreign bodies and
+     * null are refused.
+     */
+    @Test
+    void aBodyGivenAnotherIntegratorStepsByItAndTheStateNamesWhich() {
+        ParticleIntegrator falling = new ParticleIntegrator(new Gravity());
+        ParticleIntegrator coasting = new ParticleIntegrator();
+        World world = new World();
+        Body body = world.addBody(falling, new Vector3f(), new Vector3f(10f, 10f, 0f), 1f, 0f);
+        world.step(H);
+        int[] written = new int[world.countStateInts()];
+        StateSlab slab = new StateSlab();
+        slab.point(written, 0, written.length);
+        world.writeState(slab);
+        world.setIntegrator(body, coasting);
+        Particle expected = new Particle();
+        expected.copyFrom(body.getParticle());
+        world.step(H);
+        coasting.step(expected, H);
+        assertBitwiseEqual(expected, body.getParticle());
+        assertSame(coasting, body.getIntegrator());
+        slab.point(written, 0, written.length);
+        world.readState(slab);
+        assertSame(falling, body.getIntegrator(), "the state names the integrator it had");
+        assertThrows(IllegalArgumentException.class, () -> world.setIntegrator(body, null));
+        Body foreign = new World().addBody(falling, new Vector3f(), new Vector3f(), 1f, 0f);
+        assertThrows(IllegalArgumentException.class,
+                () -> world.setIntegrator(foreign, coasting));
+    }
+
     @ParameterizedTest
     @EnumSource(Detection.class)
     void prologueThatIgnoresSkipsResolutionAndEpilogue(Detection detection) {
