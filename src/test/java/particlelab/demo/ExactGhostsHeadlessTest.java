@@ -112,12 +112,12 @@ class ExactGhostsHeadlessTest {
                 drag.restart();
                 String[] taken = new String[2];
                 for (int frame = 1; frame <= 150; ++frame) {
-                    drag.advance(H);
+                    drag.getWindow().advance(H);
                     if (frame == 45) {
-                        taken[0] = drag.formatHud(new StringBuilder()).toString();
+                        taken[0] = drag.getWindow().formatHud(new StringBuilder()).toString();
                     }
                 }
-                taken[1] = drag.formatHud(new StringBuilder()).toString();
+                taken[1] = drag.getWindow().formatHud(new StringBuilder()).toString();
                 return taken;
             } finally {
                 drag.getParameters().set("drag", 0f);

@@ -124,7 +124,7 @@ class WhatIfForkTest {
         assertEquals(quadratic, settledSpeed(quadraticSphere), 1e-5 * quadratic);
         // the HUD says what changed, with the two constants (docs/demos/drag.md quotes it)
         StringBuilder hud = new StringBuilder();
-        drag.formatHud(hud);
+        drag.getWindow().formatHud(hud);
         assertTrue(hud.toString().contains("\nLaws swapped (drag), v_t kept:  c' = b²/(mg) ="
                 + " 0.083 kg/m,  b' = mg/v_t = 0.792 N s/m\n"), hud.toString());
     }
