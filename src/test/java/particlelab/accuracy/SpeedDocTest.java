@@ -49,11 +49,11 @@ class SpeedDocTest {
                 continue;
             }
             String[] cells = row.substring(2, row.length() - 2).split(" \\| ");
-            if (cells.length == 5) {
+            if (cells.length == 6) {
                 comparisons.add(cells[0]);
                 lines.add(line(cells));
             } else {
-                assertEquals(10, cells.length, row);
+                assertEquals(11, cells.length, row);
                 counts.add(Integer.parseInt(cells[0]));
                 peers.add(peer(cells));
             }
@@ -147,22 +147,26 @@ class SpeedDocTest {
         assertTrue(atBound, "the verdict of this row disagrees with its figures: " + pasted);
     }
 
+    /** A ratio row: comparison, collector, ratio, A/A, target, verdict. */
     private static SpeedSpreads.Line line(String[] cells) {
-        boolean atMost = cells[3].startsWith("≤");
-        double target = Double.parseDouble(cells[3].substring(2, cells[3].length() - 1));
+        boolean atMost = cells[4].startsWith("≤");
+        double target = Double.parseDouble(cells[4].substring(2, cells[4].length() - 1));
         if (cells[2].equals("—")) {
-            String failure = cells[4].substring("not measured: ".length());
-            return new SpeedSpreads.Line(cells[0], cells[1], null, target, atMost, failure);
+            String failure = cells[5].substring("not measured: ".length());
+            return new SpeedSpreads.Line(cells[0], cells[1], target, atMost, failure);
         }
-        return new SpeedSpreads.Line(cells[0], cells[1], spread(cells[2]), target, atMost);
+        return new SpeedSpreads.Line(cells[0], cells[1], spread(cells[2]), spread(cells[3]),
+                target, atMost, true);
     }
 
+    /** A peer row of a full run: the run recorded its full collection ("judged" or not). */
     private static SpeedSpreads.PeerRow peer(String[] cells) {
-        String[] emitterBytes = cells[6].split(" \\+ ");
+        String[] emitterBytes = cells[7].split(" \\+ ");
         return new SpeedSpreads.PeerRow(Integer.parseInt(cells[0]), spread(cells[1]),
                 spread(cells[2]), spread(cells[3]), spread(cells[4]), spread(cells[5]),
-                Double.parseDouble(emitterBytes[0]), Double.parseDouble(emitterBytes[1]),
-                Double.parseDouble(cells[7]));
+                spread(cells[6]), Double.parseDouble(emitterBytes[0]),
+                Double.parseDouble(emitterBytes[1]), Double.parseDouble(cells[8]), true,
+                !cells[10].equals(SpeedSpreads.NO_FULL_GC));
     }
 
     private static CostMeter.Spread spread(String cell) {
