@@ -30,6 +30,12 @@ class SpeedDocTest {
     private static final Pattern SPREAD = Pattern.compile(
             "([0-9.]+) / \\*\\*([0-9.]+)\\*\\* / ([0-9.]+)×?");
     private static final Pattern ROUNDS = Pattern.compile("over (\\d+) rounds");
+    /** The heading of the section on the one-particle rows' store order (issue 35 §3). */
+    static final String PASTED_ONE_PARTICLE =
+            "One particle: the store order, found in the machine code (issue 35 §3)";
+    /** The heading of the section on the fountain against stepPacked (issue 35 §4). */
+    static final String PASTED_FOUNTAIN =
+            "The fountain's whole step against `stepPacked`, A/A-controlled (issue 35 §4)";
 
     @Test
     void speedPageShowsTheReportsSideBySideSectionAsTheReportWritesIt() throws IOException {
@@ -99,6 +105,36 @@ class SpeedDocTest {
             assertTrue(Pattern.compile("(?<![0-9.])" + Pattern.quote(ratio) + "(?![0-9])")
                     .matcher(block).find(), ratio + "× is stated beside the pasted run but is "
                     + "not one of its figures");
+        }
+    }
+
+    @Test
+    void everyRatioOfTheIssue35SectionsIsInTheRunsPastedThere() throws IOException {
+        // The sections on issue 35's one-particle and fountain rows state ratios in words
+        // beside the runs they paste (in fenced blocks, as the tools printed them): each
+        // ratio stated outside the blocks must be a figure of one of the section's blocks.
+        String page = new String(Files.readAllBytes(Paths.get("docs", "speed.md")),
+                StandardCharsets.UTF_8);
+        for (String heading : new String[] {PASTED_ONE_PARTICLE, PASTED_FOUNTAIN}) {
+            int start = page.indexOf("\n### " + heading);
+            assertTrue(start >= 0, "docs/speed.md has no section " + heading);
+            int stop = page.indexOf("\n## ", start + 1);
+            int next = page.indexOf("\n### ", start + 1);
+            String section = page.substring(start, next >= 0 && next < stop ? next : stop);
+            String[] parts = section.split("\n```[a-z]*\n", -1);
+            StringBuilder prose = new StringBuilder();
+            StringBuilder runs = new StringBuilder();
+            for (int i = 0; i < parts.length; ++i) {
+                (i % 2 == 0 ? prose : runs).append(parts[i]).append('\n');
+            }
+            List<String> stated = statedRatios(prose.toString());
+            assertTrue(stated.size() >= 4, heading + " states too few ratios: " + stated);
+            assertTrue(runs.length() > 0, heading + " pastes no run");
+            for (String ratio : stated) {
+                assertTrue(Pattern.compile("(?<![0-9.])" + Pattern.quote(ratio)
+                        + "(?![0-9])").matcher(runs).find(), ratio + "× is stated in "
+                        + heading + " but is not a figure of the runs pasted there");
+            }
         }
     }
 
