@@ -5,6 +5,7 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.Arrays;
 import java.util.Locale;
+import particlelab.accuracy.AaControl;
 import particlelab.accuracy.ForceMix;
 import particlelab.accuracy.HostInfo;
 import particlelab.accuracy.OneParticleMixScene;
@@ -24,8 +25,14 @@ import particlelab.physics.Particle;
  * keeping the state in the particle's fields costs (each step's V is stored and read back);
  * </li>
  * <li>{@code fold-fields}: the primitive loop's arithmetic ({@code V·(1 − h·σ) + h·g}, two
- * dependent operations on V where the recipe has four, or one for gravity) on the fields.</li>
+ * dependent operations on V where the recipe has four, or one for gravity) on the fields;</li>
+ * <li>{@code primitive-again}: the primitive loop of a second scene, the A/A pass: how far
+ * identical work appears to differ in these rounds.</li>
  * </ul>
+ * After the table, per mix: shared ÷ primitive with the verdict on "within 2×" by the A/A
+ * rule ({@link AaControl}: judged only where the median lies outside the A/A band and 2× lies
+ * outside the band around the median), and shared ÷ {@code recipe-registers}, the ratio to a
+ * primitive loop computing the recipe's own floats (the overhead apart from the arithmetic).
  * Each flight is {@link OneParticleMixScene}'s: relaunch at (20, 30, 4) m/s, then
  * {@value OneParticleMixScene#STEPS_PER_LAUNCH} dependent steps of 1/60 s at 1 kg. The recipe
  * forms give the shared step's floats bit for bit (checked before timing; a mismatch stops
@@ -39,16 +46,22 @@ public final class OneParticleFloor {
 
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
     private static final String[] PATHS = {"primitive-loop", "shared-objects", "recipe-fields",
-        "recipe-registers", "fold-fields"};
+        "recipe-registers", "fold-fields", "primitive-again"};
     private static final int PRIMITIVE = 0;
     private static final int SHARED = 1;
     private static final int RECIPE_FIELDS = 2;
+    private static final int RECIPE_REGISTERS = 3;
+    private static final int FOLD_FIELDS = 4;
+    /** The one-particle target: shared at most this many times the primitive loop. */
+    private static final double TARGET = 2.0;
     private static final float STEP_SECONDS = 1f / 60f;
     private static final int STEPS = OneParticleMixScene.STEPS_PER_LAUNCH;
     /** Keeps the results alive so no work is dead code. */
     private static volatile Object sink;
 
     private final OneParticleMixScene scene;
+    /** A second scene, for the A/A pass. */
+    private final OneParticleMixScene sceneAgain;
     private final Particle particle = new Particle();
     private final float[] registers = new float[6];
     /** g per axis (m/s²), as the integrator's acceleration at rest gives it. */
@@ -60,6 +73,7 @@ public final class OneParticleFloor {
 
     private OneParticleFloor(ForceMix mix) {
         scene = new OneParticleMixScene(mix);
+        sceneAgain = new OneParticleMixScene(mix);
         Vector3f g = mix.integrator().acceleration(new Particle(), new Vector3f());
         gravityX = g.x;
         gravityY = g.y;
@@ -81,6 +95,7 @@ public final class OneParticleFloor {
         long budget = (args.length > 1 ? Long.parseLong(args[1]) : 200L) * 1_000_000L;
         String[] mixes = (args.length > 2 ? args[2] : "gravity,linear").split(",");
         StringBuilder table = new StringBuilder();
+        StringBuilder verdicts = new StringBuilder();
         table.append("| mix | path | ns per step: min / median / max "
                 + "| ÷ primitive per round: min / median / max |\n|---|---|---|---|\n");
         for (String mixName : mixes) {
@@ -104,9 +119,38 @@ public final class OneParticleFloor {
                 table.append(String.format(Locale.ROOT, "| %s | `%s` | %s | %s |%n", mixName,
                         PATHS[path], spread(nanos[path]), spread(ratio)));
             }
+            verdicts.append(verdicts(mixName, nanos));
         }
-        System.out.printf(Locale.ROOT, "Host:%n%s%n%d rounds of %d ms per path%n%n%s", host.block(),
-                rounds, budget / 1_000_000L, table);
+        System.out.printf(Locale.ROOT, "Host:%n%s%n%d rounds of %d ms per path%n%n%s%n%s",
+                host.block(), rounds, budget / 1_000_000L, table, verdicts);
+    }
+
+    /**
+     * One mix's verdict on shared ≤ 2× primitive by the A/A rule, and shared ÷
+     * recipe-registers.
+     */
+    private static String verdicts(String mixName, double[][] nanos) {
+        int rounds = nanos[PRIMITIVE].length;
+        double[] shared = new double[rounds];
+        double[] aa = new double[rounds];
+        double[] overRecipe = new double[rounds];
+        for (int round = 0; round < rounds; ++round) {
+            shared[round] = nanos[SHARED][round] / nanos[PRIMITIVE][round];
+            aa[round] = nanos[PATHS.length - 1][round] / nanos[PRIMITIVE][round];
+            overRecipe[round] = nanos[SHARED][round] / nanos[RECIPE_REGISTERS][round];
+        }
+        double aaMin = Arrays.stream(aa).min().getAsDouble();
+        double aaMax = Arrays.stream(aa).max().getAsDouble();
+        double median = AaControl.median(shared);
+        String verdict = AaControl.isInsideBand(aaMin, aaMax, median)
+                ? "inside the A/A band: no verdict"
+                : AaControl.isInsideBand(aaMin, aaMax, median / TARGET)
+                ? "target within the A/A band: no verdict"
+                : median <= TARGET ? "met" : "missed";
+        return String.format(Locale.ROOT, "%s: shared ÷ primitive %s, A/A (primitive again ÷"
+                + " primitive) %s, band %.3f–%.3f: ≤ %.0f× %s; shared ÷ recipe-registers %s%n",
+                mixName, spread(shared), spread(aa), AaControl.bandLow(aaMin, aaMax),
+                AaControl.bandHigh(aaMin, aaMax), TARGET, verdict, spread(overRecipe));
     }
 
     /** Stop unless the recipe forms give the shared step's floats after a flight. */
@@ -135,10 +179,12 @@ public final class OneParticleFloor {
                 return scene.flySharedObjects();
             case RECIPE_FIELDS:
                 return flyRecipeFields();
-            case 3:
+            case RECIPE_REGISTERS:
                 return flyRecipeRegisters();
-            default:
+            case FOLD_FIELDS:
                 return flyFoldFields();
+            default:
+                return sceneAgain.flyPrimitiveLoop();
         }
     }
 

@@ -38,18 +38,56 @@ public final class AaControl {
         if (!measured(aaRatios) || !measured(abRatios)) {
             return "not measured";
         }
-        double low = Double.POSITIVE_INFINITY;
-        double high = 0.0;
+        double aaMin = Double.POSITIVE_INFINITY;
+        double aaMax = 0.0;
         for (double ratio : aaRatios) {
-            low = Math.min(low, Math.min(ratio, 1.0 / ratio));
-            high = Math.max(high, Math.max(ratio, 1.0 / ratio));
+            aaMin = Math.min(aaMin, ratio);
+            aaMax = Math.max(aaMax, ratio);
         }
+        double low = bandLow(aaMin, aaMax);
+        double high = bandHigh(aaMin, aaMax);
         double median = median(abRatios);
-        if (median >= low && median <= high) {
+        if (isInsideBand(aaMin, aaMax, median)) {
             return NO_VERDICT;
         }
         return String.format(Locale.ROOT, "%s (%.3f× outside the A/A band %.3f–%.3f)",
                 median > high ? "slower" : "faster", median, low, high);
+    }
+
+    /**
+     * The A/A band's lower edge: the least of the A/A rounds and of their reciprocals.
+     *
+     * @param aaMin the least A/A ratio over the rounds (&gt;0)
+     * @param aaMax the largest A/A ratio over the rounds (&ge;aaMin)
+     * @return min(aaMin, 1/aaMax)
+     */
+    public static double bandLow(double aaMin, double aaMax) {
+        return Math.min(aaMin, 1.0 / aaMax);
+    }
+
+    /**
+     * The A/A band's upper edge: the largest of the A/A rounds and of their reciprocals.
+     *
+     * @param aaMin the least A/A ratio over the rounds (&gt;0)
+     * @param aaMax the largest A/A ratio over the rounds (&ge;aaMin)
+     * @return max(aaMax, 1/aaMin)
+     */
+    public static double bandHigh(double aaMin, double aaMax) {
+        return Math.max(aaMax, 1.0 / aaMin);
+    }
+
+    /**
+     * Tell whether a ratio lies inside (edges included) the A/A band of rounds whose least
+     * and largest A/A ratios are given: the rule of {@link #verdict}, for callers that keep
+     * only a row's min and max (the report's side-by-side rows).
+     *
+     * @param aaMin the least A/A ratio over the rounds (&gt;0)
+     * @param aaMax the largest A/A ratio over the rounds (&ge;aaMin)
+     * @param ratio the ratio to judge (a median of rounds, or a median over a target)
+     * @return true if identical code has been seen to differ by as much: no verdict
+     */
+    public static boolean isInsideBand(double aaMin, double aaMax, double ratio) {
+        return ratio >= bandLow(aaMin, aaMax) && ratio <= bandHigh(aaMin, aaMax);
     }
 
     /**

@@ -45,6 +45,11 @@ final class PeerScenes {
     private final float[] startVelocities;
     private final float[] positions;
     private final float[] velocities;
+    /** A second copy of the packed state, for the A/A pass ({@link #packedStepAgain}). */
+    private final float[] positionsAgain;
+    private final float[] velocitiesAgain;
+    private final ParticleIntegrator integratorAgain = new ParticleIntegrator(new Gravity(),
+            new LinearDrag(Fountain.DRAG_B));
     /** Heap allocated by building and filling the emitter, per particle (B; NaN: unknown). */
     private final double emitterHeapBytes;
     /** The emitter's mesh buffers, per particle (B, direct memory). */
@@ -53,6 +58,7 @@ final class PeerScenes {
     private final double fountainHeapBytes;
     private int emitterFrames;
     private int packedSteps;
+    private int packedStepsAgain;
 
     /**
      * Build the three at one N.
@@ -95,6 +101,9 @@ final class PeerScenes {
         startVelocities = planar(fountain.getVelocities(), count);
         positions = startPositions.clone();
         velocities = startVelocities.clone();
+        integratorAgain.batch().setVectorBatch(false);
+        positionsAgain = startPositions.clone();
+        velocitiesAgain = startVelocities.clone();
     }
 
     /**
@@ -138,6 +147,23 @@ final class PeerScenes {
         integrator.batch().stepPacked(positions, velocities, count, Fountain.MASS_KG,
                 FRAME_SECONDS);
         return positions;
+    }
+
+    /**
+     * {@link #packedStep} on a second copy of the same state with an integrator of its own:
+     * the same work, timed beside the first as the peer rows' A/A pass.
+     *
+     * @return something the caller must consume
+     */
+    Object packedStepAgain() {
+        if (++packedStepsAgain == FRAMES_PER_RELAUNCH) {
+            packedStepsAgain = 0;
+            System.arraycopy(startPositions, 0, positionsAgain, 0, positionsAgain.length);
+            System.arraycopy(startVelocities, 0, velocitiesAgain, 0, velocitiesAgain.length);
+        }
+        integratorAgain.batch().stepPacked(positionsAgain, velocitiesAgain, count,
+                Fountain.MASS_KG, FRAME_SECONDS);
+        return positionsAgain;
     }
 
     /** @return N */

@@ -23,6 +23,12 @@ import particlelab.reference.CostMeter;
  * started with {@value #PARALLEL_GC} (same class path, same code, same heap flags), because
  * that figure measures the collector as much as the integrator. Then jME's ParticleEmitter
  * beside the fountain's whole step and {@code stepPacked} ({@link PeerScenes}).
+ *
+ * <p>Every ratio comes with an A/A pass measured in the same rounds: the ratio's reference
+ * path timed a second time (a second copy of its scene, the same code) beside the first, so
+ * the A/A ratio per round shows how far identical work appears to differ in this run. A row
+ * is judged only where its median lies outside that A/A band ({@link AaControl}'s rule) and
+ * its target lies outside the band around the median; otherwise it says so, "no verdict".
  */
 final class SpeedSpreads {
 
@@ -32,10 +38,26 @@ final class SpeedSpreads {
     static final String PARALLEL_GC = "-XX:+UseParallelGC";
     /** The line the child JVM prints its ratio on, then min, median, max and collector. */
     static final String PROBE_PREFIX = "lecture-over-objects";
+    /** The line the child JVM prints its A/A ratio on (objects ÷ objects), min, median, max. */
+    static final String PROBE_AA_PREFIX = "objects-over-objects";
     /** Verdict of a row too noisy to judge. */
     static final String TOO_NOISY = "too noisy: no verdict";
-    /** Verdict of a peer row from a sweep too short to warm its scenes to a steady state. */
+    /** Verdict of a row from a sweep too short to warm its paths to a steady state. */
     static final String NOT_WARMED = "not warmed: no verdict";
+    /** Verdict of a row whose ratio lies inside the A/A band measured beside it. */
+    static final String INSIDE_AA = "inside the A/A band: no verdict";
+    /** Verdict of a row whose target lies inside the A/A band around its median. */
+    static final String NEAR_TARGET = "target within the A/A band: no verdict";
+    /** {@link #oneParticle}'s workloads: the primitive loop ... */
+    static final int PRIMITIVE = 0;
+    /** ... {@code step(Particle, h)} ... */
+    static final int OBJECTS = 1;
+    /** ... the primitive loop again, a second scene (the A/A pass of ratios over it) ... */
+    static final int PRIMITIVE_AGAIN = 2;
+    /** ... {@code step(Particle, h)} again, a second scene (the A/A of ratios over it) ... */
+    static final int OBJECTS_AGAIN = 3;
+    /** ... and, if asked, the lecture style. */
+    static final int LECTURE_STYLE = 4;
     /** Verdict of a peer row timed with no full collection before it (heap layout unknown). */
     static final String NO_FULL_GC = "no full GC before timing: no verdict";
     /** The peer rows' particle counts (the quick sweep leaves out the last). */
@@ -54,28 +76,51 @@ final class SpeedSpreads {
     /** The child JVM's longest run (s). */
     private static final long CHILD_TIMEOUT_SECONDS = 300;
 
-    /** One judged ratio: what over what, under which collector, its spread and its target. */
+    /**
+     * One judged ratio: what over what, under which collector, its spread, the A/A pass
+     * beside it and its target.
+     */
     static final class Line {
         private final String comparison;
         private final String collector;
         private final CostMeter.Spread ratio;
+        /** The ratio's reference path over itself, per round (null if not measured). */
+        private final CostMeter.Spread aa;
         /** The target: at most this (atMost) or at least this. NaN: no target. */
         private final double target;
         private final boolean atMost;
+        /** False for a sweep too short to warm the paths to a steady state. */
+        private final boolean warmed;
         private final String failure;
 
-        Line(String comparison, String collector, CostMeter.Spread ratio, double target,
-                boolean atMost) {
-            this(comparison, collector, ratio, target, atMost, null);
+        /**
+         * A measured row.
+         *
+         * @param ratio the ratio per round (not null)
+         * @param aa the A/A ratio per round, measured in the same rounds (not null)
+         * @param warmed false if the sweep's warm-up is too short for a steady state
+         */
+        Line(String comparison, String collector, CostMeter.Spread ratio, CostMeter.Spread aa,
+                double target, boolean atMost, boolean warmed) {
+            this(comparison, collector, ratio, aa, target, atMost, warmed, null);
         }
 
-        Line(String comparison, String collector, CostMeter.Spread ratio, double target,
-                boolean atMost, String failure) {
+        /** A row that could not be measured, and why. */
+        Line(String comparison, String collector, double target, boolean atMost,
+                String failure) {
+            this(comparison, collector, null, null, target, atMost, true, failure);
+        }
+
+        private Line(String comparison, String collector, CostMeter.Spread ratio,
+                CostMeter.Spread aa, double target, boolean atMost, boolean warmed,
+                String failure) {
             this.comparison = comparison;
             this.collector = collector;
             this.ratio = ratio;
+            this.aa = aa;
             this.target = target;
             this.atMost = atMost;
+            this.warmed = warmed;
             this.failure = failure;
         }
 
@@ -84,16 +129,32 @@ final class SpeedSpreads {
             return comparison;
         }
 
-        /** @return the verdict cell: met, missed, too noisy, or why it was not measured */
+        /**
+         * The verdict: met or missed only where the median lies outside the A/A band (the
+         * two paths differ by more than identical work did) and the target lies outside the
+         * band around the median (the verdict would not flip within that noise).
+         *
+         * @return the verdict cell: met, missed, why there is none, or why it was not
+         *     measured
+         */
         String verdict() {
             if (failure != null) {
                 return "not measured: " + failure;
             }
+            if (!warmed) {
+                return NOT_WARMED;
+            }
             if (ratio.exceeds(SPREAD_BOUND)) {
                 return TOO_NOISY;
             }
+            if (AaControl.isInsideBand(aa.min(), aa.max(), ratio.median())) {
+                return INSIDE_AA;
+            }
             if (Double.isNaN(target)) {
                 return "—";
+            }
+            if (AaControl.isInsideBand(aa.min(), aa.max(), ratio.median() / target)) {
+                return NEAR_TARGET;
             }
             boolean met = atMost ? ratio.median() <= target : ratio.median() >= target;
             return met ? "met" : "**missed**";
@@ -103,6 +164,7 @@ final class SpeedSpreads {
         String row() {
             return "| " + comparison + " | " + collector + " | "
                     + (failure != null ? "—" : spread(ratio, 2) + "×") + " | "
+                    + (failure != null ? "—" : spread(aa, 3) + "×") + " | "
                     + (Double.isNaN(target) ? "—" : (atMost ? "≤ " : "≥ ") + num(target) + "×")
                     + " | " + verdict() + " |";
         }
@@ -116,6 +178,8 @@ final class SpeedSpreads {
         private final CostMeter.Spread packed;
         private final CostMeter.Spread emitterOverPacked;
         private final CostMeter.Spread emitterOverFountain;
+        /** {@code stepPacked} over a second copy of itself, per round (null: not measured). */
+        private final CostMeter.Spread packedAa;
         private final double emitterHeap;
         private final double emitterDirect;
         private final double fountainHeap;
@@ -126,19 +190,11 @@ final class SpeedSpreads {
          */
         private final Boolean afterFullGc;
 
-        /** A warmed row of a run that did not record a full collection (a pasted older run). */
         PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
                 CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
-                CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
-                double fountainHeap) {
-            this(count, emitter, fountain, packed, emitterOverPacked, emitterOverFountain,
-                    emitterHeap, emitterDirect, fountainHeap, true, null);
-        }
-
-        PeerRow(int count, CostMeter.Spread emitter, CostMeter.Spread fountain,
-                CostMeter.Spread packed, CostMeter.Spread emitterOverPacked,
-                CostMeter.Spread emitterOverFountain, double emitterHeap, double emitterDirect,
-                double fountainHeap, boolean warmed, Boolean afterFullGc) {
+                CostMeter.Spread emitterOverFountain, CostMeter.Spread packedAa,
+                double emitterHeap, double emitterDirect, double fountainHeap, boolean warmed,
+                Boolean afterFullGc) {
             this.warmed = warmed;
             this.afterFullGc = afterFullGc;
             this.count = count;
@@ -147,6 +203,7 @@ final class SpeedSpreads {
             this.packed = packed;
             this.emitterOverPacked = emitterOverPacked;
             this.emitterOverFountain = emitterOverFountain;
+            this.packedAa = packedAa;
             this.emitterHeap = emitterHeap;
             this.emitterDirect = emitterDirect;
             this.fountainHeap = fountainHeap;
@@ -156,13 +213,19 @@ final class SpeedSpreads {
         String row() {
             boolean noisy = emitterOverPacked.exceeds(SPREAD_BOUND)
                     || emitterOverFountain.exceeds(SPREAD_BOUND);
+            boolean insideAa = packedAa != null && (AaControl.isInsideBand(packedAa.min(),
+                    packedAa.max(), emitterOverPacked.median())
+                    || AaControl.isInsideBand(packedAa.min(), packedAa.max(),
+                            emitterOverFountain.median()));
             return "| " + count + " | " + spread(emitter, 2) + " | " + spread(fountain, 2)
                     + " | " + spread(packed, 2) + " | " + spread(emitterOverPacked, 1) + "× | "
-                    + spread(emitterOverFountain, 1) + "× | " + fix(emitterHeap, 0) + " + "
+                    + spread(emitterOverFountain, 1) + "× | "
+                    + (packedAa == null ? "—" : spread(packedAa, 3) + "×") + " | "
+                    + fix(emitterHeap, 0) + " + "
                     + fix(emitterDirect, 0) + " | " + fix(fountainHeap, 0) + " | "
                     + fix(PeerScenes.packedBytes(), 0) + " | "
                     + (!warmed ? NOT_WARMED : Boolean.FALSE.equals(afterFullGc) ? NO_FULL_GC
-                    : noisy ? TOO_NOISY : "judged") + " |";
+                    : noisy ? TOO_NOISY : insideAa ? INSIDE_AA : "judged") + " |";
         }
     }
 
@@ -179,22 +242,28 @@ final class SpeedSpreads {
     static void append(StringBuilder md, ReportConfig config, CostMeter meter) {
         List<Line> lines = new ArrayList<>();
         String here = collectorLabel(thisCollector(), heapFlags());
+        boolean warmed = isWarmed(config);
         CostMeter.SideBySide linear = oneParticle(ForceMix.LINEAR, meter, true);
         CostMeter.SideBySide gravity = oneParticle(ForceMix.GRAVITY, meter, false);
-        lines.add(new Line(OBJECTS_LINEAR, here, linear.ratio(1, 0),
-                MixTargets.PER_PARTICLE_VS_PRIMITIVE, true));
-        lines.add(new Line(OBJECTS_GRAVITY, here, gravity.ratio(1, 0),
-                MixTargets.PER_PARTICLE_VS_PRIMITIVE, true));
-        lines.add(new Line(LECTURE, here, linear.ratio(2, 1),
-                MixTargets.PER_PARTICLE_VS_LECTURE, false));
+        lines.add(new Line(OBJECTS_LINEAR, here, linear.ratio(OBJECTS, PRIMITIVE),
+                linear.ratio(PRIMITIVE_AGAIN, PRIMITIVE), MixTargets.PER_PARTICLE_VS_PRIMITIVE,
+                true, warmed));
+        lines.add(new Line(OBJECTS_GRAVITY, here, gravity.ratio(OBJECTS, PRIMITIVE),
+                gravity.ratio(PRIMITIVE_AGAIN, PRIMITIVE),
+                MixTargets.PER_PARTICLE_VS_PRIMITIVE, true, warmed));
+        lines.add(new Line(LECTURE, here, linear.ratio(LECTURE_STYLE, OBJECTS),
+                linear.ratio(OBJECTS_AGAIN, OBJECTS), MixTargets.PER_PARTICLE_VS_LECTURE,
+                false, warmed));
         lines.add(childLine(config));
         for (int count : config.particleCounts()) {
             BulkScene scene = new BulkScene(ForceMix.LINEAR, count);
+            // the A/A pass: the primitive loop again, on a second scene
+            BulkScene again = new BulkScene(ForceMix.LINEAR, count);
             CostMeter.SideBySide bulk = meter.measureSideBySide(new CostMeter.Workload[] {
-                units -> scene.stepPrimitiveLoop(), units -> scene.stepSharedBatch()},
-                new int[] {count, count});
-            lines.add(new Line(BATCH + count, here, bulk.ratio(1, 0),
-                    MixTargets.BATCH_VS_PRIMITIVE, true));
+                units -> scene.stepPrimitiveLoop(), units -> scene.stepSharedBatch(),
+                units -> again.stepPrimitiveLoop()}, new int[] {count, count, count});
+            lines.add(new Line(BATCH + count, here, bulk.ratio(1, 0), bulk.ratio(2, 0),
+                    MixTargets.BATCH_VS_PRIMITIVE, true, warmed));
         }
         List<PeerRow> peers = new ArrayList<>();
         for (int count : peerCounts(config)) {
@@ -202,7 +271,7 @@ final class SpeedSpreads {
             // the emitter's objects, compacted: issue 35 read its 10^5 row at 9.0 or 25.4 ns
             // per particle in otherwise identical JVMs, before or after one full collection
             boolean collected = fullCollection();
-            peers.add(peer(scenes, meter, config.size() == ReportConfig.Size.FULL, collected));
+            peers.add(peer(scenes, meter, warmed, collected));
         }
         appendTables(md, lines, peers, meter.rounds(), config);
     }
@@ -220,6 +289,19 @@ final class SpeedSpreads {
             names.add(BATCH + count);
         }
         return names;
+    }
+
+    /**
+     * Tell whether a sweep warms its paths to a steady state: only the full one does. The
+     * quick sweep's 80 ms of warm-up and rounds of 20 ms are too short (its fountain at
+     * N = 10^4 read 6.83 ns per particle against 1.81 in a full run), and the tiny one's
+     * are shorter still, so their side-by-side rows say {@value #NOT_WARMED}.
+     *
+     * @param config the report's size (not null)
+     * @return true for the full sweep
+     */
+    static boolean isWarmed(ReportConfig config) {
+        return config.size() == ReportConfig.Size.FULL;
     }
 
     /**
@@ -260,7 +342,19 @@ final class SpeedSpreads {
                 + "other jobs do not count. Each cell is min / **median** / max over ")
                 .append(rounds).append(" rounds. A row whose max ÷ min exceeds ")
                 .append(num(SPREAD_BOUND)).append(" says \"").append(TOO_NOISY)
-                .append("\" instead of met or missed. \"Objects ≤ ")
+                .append("\" instead of met or missed. The A/A column is the row's reference "
+                + "path (the divisor) timed a second time in the same rounds, on a second copy "
+                + "of its scene, over the first: how far identical work appeared to differ in "
+                + "this run. Its band is the least and largest of those rounds and of their "
+                + "reciprocals; a row whose median lies inside it says \"").append(INSIDE_AA)
+                .append("\", and one whose target lies inside the band around the median "
+                + "(median ÷ target inside it) says \"").append(NEAR_TARGET).append("\"");
+        if (!isWarmed(config)) {
+            md.append(". This sweep's warm-up and rounds are too short for a steady state, "
+                    + "so every row says \"").append(NOT_WARMED).append("\": run the full "
+                    + "report to judge them");
+        }
+        md.append(". \"Objects ≤ ")
                 .append(num(MixTargets.PER_PARTICLE_VS_PRIMITIVE)).append("× primitive\" is "
                 + "judged against the one-particle primitive loop, the same chain of dependent "
                 + "steps written by hand: the fair loop for one particle (the bulk loop "
@@ -270,8 +364,8 @@ final class SpeedSpreads {
                 + "step), so it is measured under this JVM's collector and again in a child "
                 + "JVM started with `").append(PARALLEL_GC).append("` (same class path, same "
                 + "heap flags).\n\n");
-        md.append("| comparison | collector, heap | min / **median** / max | target "
-                + "| verdict |\n|---|---|---|---|---|\n");
+        md.append("| comparison | collector, heap | min / **median** / max | A/A: reference "
+                + "÷ itself | target | verdict |\n|---|---|---|---|---|---|\n");
         for (Line line : lines) {
             md.append(line.row()).append('\n');
         }
@@ -288,7 +382,10 @@ final class SpeedSpreads {
                 + "emitter's heap as the thread allocation counter saw it while the emitter "
                 + "was built and filled, plus its mesh buffers' capacities (direct memory); "
                 + "the fountain's heap likewise (its point mesh belongs to the view and is "
-                + "not counted); the packed state is its two arrays, 6 floats.");
+                + "not counted); the packed state is its two arrays, 6 floats. The A/A column "
+                + "is `stepPacked` timed a second time in the same rounds, on a second copy of "
+                + "its state, over the first; a row whose emitter ratio lies inside its band "
+                + "says \"").append(INSIDE_AA).append("\".");
         if (peers.stream().anyMatch(peer -> peer.afterFullGc != null)) {
             md.append(" Each N's scenes are built and filled, then one full collection runs "
                     + "(`System.gc()`) before the rounds start, so the emitter's objects are "
@@ -304,9 +401,9 @@ final class SpeedSpreads {
                     .append(NOT_WARMED).append("\": run the full report to judge them.");
         }
         md.append("\n\n| N | emitter (ns) | `Fountain.step` (ns) | `stepPacked` (ns) "
-                + "| emitter ÷ `stepPacked` | emitter ÷ `Fountain.step` "
-                + "| emitter B/particle (heap + direct) | fountain B/particle | packed "
-                + "B/particle | spread |\n|---|---|---|---|---|---|---|---|---|---|\n");
+                + "| emitter ÷ `stepPacked` | emitter ÷ `Fountain.step` | A/A: `stepPacked` "
+                + "÷ itself | emitter B/particle (heap + direct) | fountain B/particle | packed "
+                + "B/particle | spread |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (PeerRow peer : peers) {
             md.append(peer.row()).append('\n');
         }
@@ -412,14 +509,15 @@ final class SpeedSpreads {
     }
 
     /**
-     * Parse the probe's line.
+     * Parse one of the probe's lines.
      *
-     * @param line {@value #PROBE_PREFIX} min median max collector
-     * @return the spread, or null if the line is not the probe's
+     * @param line e.g. {@value #PROBE_PREFIX} min median max collector
+     * @param prefix the line's first word, {@value #PROBE_PREFIX} or {@value #PROBE_AA_PREFIX}
+     * @return the spread, or null if the line is not that one of the probe's
      */
-    static CostMeter.Spread parseProbe(String line) {
+    static CostMeter.Spread parseProbe(String line, String prefix) {
         String[] cells = line.trim().split(" ");
-        if (cells.length < 4 || !cells[0].equals(PROBE_PREFIX)) {
+        if (cells.length < 4 || !cells[0].equals(prefix)) {
             return null;
         }
         try {
@@ -431,17 +529,22 @@ final class SpeedSpreads {
     }
 
     /**
-     * One particle of a mix side by side: workloads primitive loop (0), {@code step(Particle,
-     * h)} (1) and, if asked, the lecture style (2).
+     * One particle of a mix side by side: workloads {@link #PRIMITIVE}, {@link #OBJECTS},
+     * the same two again on a second scene ({@link #PRIMITIVE_AGAIN}, {@link #OBJECTS_AGAIN}:
+     * the A/A passes) and, if asked, {@link #LECTURE_STYLE}.
      */
     static CostMeter.SideBySide oneParticle(ForceMix mix, CostMeter meter, boolean lecture) {
         OneParticleMixScene scene = new OneParticleMixScene(mix);
+        OneParticleMixScene again = new OneParticleMixScene(mix);
         int steps = OneParticleMixScene.STEPS_PER_LAUNCH;
         CostMeter.Workload primitive = units -> scene.flyPrimitiveLoop();
         CostMeter.Workload objects = units -> scene.flySharedObjects();
+        CostMeter.Workload primitiveAgain = units -> again.flyPrimitiveLoop();
+        CostMeter.Workload objectsAgain = units -> again.flySharedObjects();
         CostMeter.Workload[] workloads = lecture
-                ? new CostMeter.Workload[] {primitive, objects, units -> scene.flyLectureStyle()}
-                : new CostMeter.Workload[] {primitive, objects};
+                ? new CostMeter.Workload[] {primitive, objects, primitiveAgain, objectsAgain,
+                    units -> scene.flyLectureStyle()}
+                : new CostMeter.Workload[] {primitive, objects, primitiveAgain, objectsAgain};
         int[] units = new int[workloads.length];
         java.util.Arrays.fill(units, steps);
         return meter.measureSideBySide(workloads, units);
@@ -479,9 +582,10 @@ final class SpeedSpreads {
         int n = scenes.count();
         CostMeter.SideBySide timed = meter.measureSideBySide(new CostMeter.Workload[] {
             units -> scenes.emitterFrame(), units -> scenes.fountainStep(),
-            units -> scenes.packedStep()}, new int[] {n, n, n});
+            units -> scenes.packedStep(), units -> scenes.packedStepAgain()},
+            new int[] {n, n, n, n});
         return new PeerRow(n, timed.nanosPerUnit(0), timed.nanosPerUnit(1),
-                timed.nanosPerUnit(2), timed.ratio(0, 2), timed.ratio(0, 1),
+                timed.nanosPerUnit(2), timed.ratio(0, 2), timed.ratio(0, 1), timed.ratio(3, 2),
                 scenes.emitterHeapBytes(), scenes.emitterDirectBytes(),
                 scenes.fountainHeapBytes(), warmed, afterFullGc);
     }
@@ -492,37 +596,41 @@ final class SpeedSpreads {
                 + PARALLEL_GC + "`)";
         String comparison = LECTURE;
         if (config.size() == ReportConfig.Size.TINY) {
-            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+            return new Line(comparison, label, MixTargets.PER_PARTICLE_VS_LECTURE, false,
                     "the tiny sweep starts no child JVM");
         }
         try {
             Process child = new ProcessBuilder(childCommand(config))
                     .redirectError(ProcessBuilder.Redirect.DISCARD).start();
             CostMeter.Spread found = null;
+            CostMeter.Spread foundAa = null;
             try (BufferedReader out = new BufferedReader(new InputStreamReader(
                     child.getInputStream(), StandardCharsets.UTF_8))) {
                 for (String line = out.readLine(); line != null; line = out.readLine()) {
-                    CostMeter.Spread parsed = parseProbe(line);
+                    CostMeter.Spread parsed = parseProbe(line, PROBE_PREFIX);
                     found = parsed != null ? parsed : found;
+                    CostMeter.Spread parsedAa = parseProbe(line, PROBE_AA_PREFIX);
+                    foundAa = parsedAa != null ? parsedAa : foundAa;
                 }
             }
             if (!child.waitFor(CHILD_TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
                 child.destroy();
-                return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE,
+                return new Line(comparison, label, MixTargets.PER_PARTICLE_VS_LECTURE,
                         false, "the child JVM took longer than " + CHILD_TIMEOUT_SECONDS + " s");
             }
-            if (found == null || child.exitValue() != 0) {
-                return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE,
+            if (found == null || foundAa == null || child.exitValue() != 0) {
+                return new Line(comparison, label, MixTargets.PER_PARTICLE_VS_LECTURE,
                         false, "the child JVM exited with " + child.exitValue()
                         + " and no ratio");
             }
-            return new Line(comparison, label, found, MixTargets.PER_PARTICLE_VS_LECTURE, false);
+            return new Line(comparison, label, found, foundAa,
+                    MixTargets.PER_PARTICLE_VS_LECTURE, false, isWarmed(config));
         } catch (IOException e) {
-            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+            return new Line(comparison, label, MixTargets.PER_PARTICLE_VS_LECTURE, false,
                     "the child JVM did not start (" + e.getMessage() + ")");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            return new Line(comparison, label, null, MixTargets.PER_PARTICLE_VS_LECTURE, false,
+            return new Line(comparison, label, MixTargets.PER_PARTICLE_VS_LECTURE, false,
                     "interrupted");
         }
     }

@@ -72,8 +72,13 @@ final class EulerRecipe {
         float px = position.x + stepSeconds * vx;
         float py = position.y + stepSeconds * vy;
         float pz = position.z + stepSeconds * vz;
-        velocity.set(vx, vy, vz);
+        // P stored before V: the next step starts by reading V, and C2 hands a value read
+        // right after its own store over in a register only if no store to the same field
+        // of another Vector3f (P's, which it cannot tell apart) came between; stored the
+        // other way round, V went through memory on the step's chain (docs/speed.md, "One
+        // particle against the primitive loop on this host")
         position.set(px, py, pz);
+        velocity.set(vx, vy, vz);
         // a finite sum means three finite terms
         return Float.isFinite(px + py + pz)
                 || Float.isFinite(px) && Float.isFinite(py) && Float.isFinite(pz);

@@ -30,6 +30,12 @@ class SpeedDocTest {
     private static final Pattern SPREAD = Pattern.compile(
             "([0-9.]+) / \\*\\*([0-9.]+)\\*\\* / ([0-9.]+)×?");
     private static final Pattern ROUNDS = Pattern.compile("over (\\d+) rounds");
+    /** The heading of the section on the one-particle rows' store order (issue 35 §3). */
+    static final String PASTED_ONE_PARTICLE =
+            "One particle: the store order, found in the machine code (issue 35 §3)";
+    /** The heading of the section on the fountain against stepPacked (issue 35 §4). */
+    static final String PASTED_FOUNTAIN =
+            "The fountain's whole step against `stepPacked`, A/A-controlled (issue 35 §4)";
 
     @Test
     void speedPageShowsTheReportsSideBySideSectionAsTheReportWritesIt() throws IOException {
@@ -49,11 +55,11 @@ class SpeedDocTest {
                 continue;
             }
             String[] cells = row.substring(2, row.length() - 2).split(" \\| ");
-            if (cells.length == 5) {
+            if (cells.length == 6) {
                 comparisons.add(cells[0]);
                 lines.add(line(cells));
             } else {
-                assertEquals(10, cells.length, row);
+                assertEquals(11, cells.length, row);
                 counts.add(Integer.parseInt(cells[0]));
                 peers.add(peer(cells));
             }
@@ -103,6 +109,36 @@ class SpeedDocTest {
     }
 
     @Test
+    void everyRatioOfTheIssue35SectionsIsInTheRunsPastedThere() throws IOException {
+        // The sections on issue 35's one-particle and fountain rows state ratios in words
+        // beside the runs they paste (in fenced blocks, as the tools printed them): each
+        // ratio stated outside the blocks must be a figure of one of the section's blocks.
+        String page = new String(Files.readAllBytes(Paths.get("docs", "speed.md")),
+                StandardCharsets.UTF_8);
+        for (String heading : new String[] {PASTED_ONE_PARTICLE, PASTED_FOUNTAIN}) {
+            int start = page.indexOf("\n### " + heading);
+            assertTrue(start >= 0, "docs/speed.md has no section " + heading);
+            int stop = page.indexOf("\n## ", start + 1);
+            int next = page.indexOf("\n### ", start + 1);
+            String section = page.substring(start, next >= 0 && next < stop ? next : stop);
+            String[] parts = section.split("\n```[a-z]*\n", -1);
+            StringBuilder prose = new StringBuilder();
+            StringBuilder runs = new StringBuilder();
+            for (int i = 0; i < parts.length; ++i) {
+                (i % 2 == 0 ? prose : runs).append(parts[i]).append('\n');
+            }
+            List<String> stated = statedRatios(prose.toString());
+            assertTrue(stated.size() >= 4, heading + " states too few ratios: " + stated);
+            assertTrue(runs.length() > 0, heading + " pastes no run");
+            for (String ratio : stated) {
+                assertTrue(Pattern.compile("(?<![0-9.])" + Pattern.quote(ratio)
+                        + "(?![0-9])").matcher(runs).find(), ratio + "× is stated in "
+                        + heading + " but is not a figure of the runs pasted there");
+            }
+        }
+    }
+
+    @Test
     void statedRatiosAreReadFromSignsWordsAndRanges() {
         assertEquals(List.of("2.3", "1.8", "2.0", "1.6", "1.3", "1.7", "4.1"),
                 statedRatios("2.3× and 1.8–2.0× here, 1.6, 1.3 and 1.7 times; 4.1 times"));
@@ -147,22 +183,26 @@ class SpeedDocTest {
         assertTrue(atBound, "the verdict of this row disagrees with its figures: " + pasted);
     }
 
+    /** A ratio row: comparison, collector, ratio, A/A, target, verdict. */
     private static SpeedSpreads.Line line(String[] cells) {
-        boolean atMost = cells[3].startsWith("≤");
-        double target = Double.parseDouble(cells[3].substring(2, cells[3].length() - 1));
+        boolean atMost = cells[4].startsWith("≤");
+        double target = Double.parseDouble(cells[4].substring(2, cells[4].length() - 1));
         if (cells[2].equals("—")) {
-            String failure = cells[4].substring("not measured: ".length());
-            return new SpeedSpreads.Line(cells[0], cells[1], null, target, atMost, failure);
+            String failure = cells[5].substring("not measured: ".length());
+            return new SpeedSpreads.Line(cells[0], cells[1], target, atMost, failure);
         }
-        return new SpeedSpreads.Line(cells[0], cells[1], spread(cells[2]), target, atMost);
+        return new SpeedSpreads.Line(cells[0], cells[1], spread(cells[2]), spread(cells[3]),
+                target, atMost, true);
     }
 
+    /** A peer row of a full run: the run recorded its full collection ("judged" or not). */
     private static SpeedSpreads.PeerRow peer(String[] cells) {
-        String[] emitterBytes = cells[6].split(" \\+ ");
+        String[] emitterBytes = cells[7].split(" \\+ ");
         return new SpeedSpreads.PeerRow(Integer.parseInt(cells[0]), spread(cells[1]),
                 spread(cells[2]), spread(cells[3]), spread(cells[4]), spread(cells[5]),
-                Double.parseDouble(emitterBytes[0]), Double.parseDouble(emitterBytes[1]),
-                Double.parseDouble(cells[7]));
+                spread(cells[6]), Double.parseDouble(emitterBytes[0]),
+                Double.parseDouble(emitterBytes[1]), Double.parseDouble(cells[8]), true,
+                !cells[10].equals(SpeedSpreads.NO_FULL_GC));
     }
 
     private static CostMeter.Spread spread(String cell) {

@@ -13,29 +13,86 @@ import particlelab.reference.CostMeter;
 class SpeedSpreadsTest {
 
     private static final ReportConfig FULL = ReportConfig.of(ReportConfig.Size.FULL);
+    /** A tight A/A pass: identical work read 0.98 to 1.02 in these rounds. */
+    private static final CostMeter.Spread TIGHT_AA = new CostMeter.Spread(0.98, 1.0, 1.02);
+    /**
+     * Recorded, not timed here: {@code step(Particle, h)} (linear drag) against a second copy
+     * of itself, a full report's budget (7 rounds of 60 ms, thread CPU time), JDK 17.0.15,
+     * AMD EPYC host, load average 14.8 ...
+     */
+    private static final CostMeter.Spread RECORDED_AA =
+            new CostMeter.Spread(0.9520, 0.9786, 1.0141);
+    /** ... and, in the same rounds, a third copy flying twice per call: twice the work. */
+    private static final CostMeter.Spread RECORDED_TWICE =
+            new CostMeter.Spread(1.9248, 1.9802, 2.0110);
 
     @Test
     void aRowIsJudgedByItsMedianUnlessItsRoundsSpreadBeyondTheBound() {
         CostMeter.Spread steady = new CostMeter.Spread(1.5, 1.6, 1.7);
         assertEquals("met", line(steady, 2.0, true).verdict());
         assertEquals("**missed**", line(steady, 1.5, true).verdict());
-        assertEquals("met", line(steady, 1.6, false).verdict(), "at least 1.6: met at 1.6");
+        assertEquals("met", line(steady, 1.55, false).verdict(), "at least 1.55: met at 1.6");
         // max ÷ min = 3.1 / 2.0 > 1.5: no verdict, whatever the median says
         CostMeter.Spread noisy = new CostMeter.Spread(2.0, 2.1, 3.1);
         assertEquals(SpeedSpreads.TOO_NOISY, line(noisy, 5.0, true).verdict());
         assertEquals(SpeedSpreads.TOO_NOISY, line(noisy, 1.0, true).verdict());
-        SpeedSpreads.Line failed = new SpeedSpreads.Line("x", "Parallel", null, 5.0, false,
+        SpeedSpreads.Line failed = new SpeedSpreads.Line("x", "Parallel", 5.0, false,
                 "the child JVM exited with 1 and no ratio");
         assertEquals("not measured: the child JVM exited with 1 and no ratio",
                 failed.verdict());
     }
 
     @Test
-    void aRowShowsItsSpreadAndTarget() {
+    void aRowShowsItsSpreadItsAaPassAndTarget() {
         SpeedSpreads.Line row = new SpeedSpreads.Line(SpeedSpreads.LECTURE,
-                "G1, default heap", new CostMeter.Spread(5.012, 5.5, 6.0), 5.0, false);
-        assertEquals("| " + SpeedSpreads.LECTURE + " | G1, default heap | 5.01 / **5.50** / "
-                + "6.00× | ≥ 5× | met |", row.row());
+                "G1, default heap", new CostMeter.Spread(5.012, 5.7, 6.0), TIGHT_AA, 5.0,
+                false, true);
+        assertEquals("| " + SpeedSpreads.LECTURE + " | G1, default heap | 5.01 / **5.70** / "
+                + "6.00× | 0.980 / **1.000** / 1.020× | ≥ 5× | met |", row.row());
+    }
+
+    @Test
+    void anAaPairReadAsAComparisonGivesNoVerdict() {
+        // The recorded A/A pass used as the row's own ratio: its median lies inside its band,
+        // whatever the target, so neither "met" (≤ 2×) nor "missed" (≥ 5×) is said.
+        assertEquals(SpeedSpreads.INSIDE_AA, new SpeedSpreads.Line("x", "G1", RECORDED_AA,
+                RECORDED_AA, 2.0, true, true).verdict());
+        assertEquals(SpeedSpreads.INSIDE_AA, new SpeedSpreads.Line("x", "G1", RECORDED_AA,
+                RECORDED_AA, 5.0, false, true).verdict());
+        // 1/0.952 = 1.050: identical work has no direction, so 1.04 is inside the band too
+        assertEquals(SpeedSpreads.INSIDE_AA, new SpeedSpreads.Line("x", "G1",
+                new CostMeter.Spread(1.03, 1.04, 1.05), RECORDED_AA, 2.0, true, true)
+                .verdict());
+    }
+
+    @Test
+    void aPathDoingTwiceTheWorkIsJudgedUnlessTheTargetIsWithinTheBand() {
+        // Recorded: twice the work read 1.98× (1.92 to 2.01) beside an A/A band of 0.952 to
+        // 1.050 (1/0.952): outside it, so the row is judged against a target away from it ...
+        assertEquals("**missed**", new SpeedSpreads.Line("x", "G1", RECORDED_TWICE,
+                RECORDED_AA, 1.5, true, true).verdict());
+        assertEquals("met", new SpeedSpreads.Line("x", "G1", RECORDED_TWICE, RECORDED_AA,
+                1.5, false, true).verdict());
+        // ... but not against 2×: 1.98 / 2 = 0.99 lies inside the band, so a run as noisy as
+        // its own A/A pass could read either side of the target
+        assertEquals(SpeedSpreads.NEAR_TARGET, new SpeedSpreads.Line("x", "G1",
+                RECORDED_TWICE, RECORDED_AA, 2.0, true, true).verdict());
+    }
+
+    @Test
+    void aRowOfASweepTooShortToWarmGivesNoVerdict() {
+        assertEquals(SpeedSpreads.NOT_WARMED, new SpeedSpreads.Line("x", "G1",
+                RECORDED_TWICE, RECORDED_AA, 1.5, true, false).verdict());
+        assertTrue(SpeedSpreads.isWarmed(FULL));
+        assertTrue(!SpeedSpreads.isWarmed(ReportConfig.of(ReportConfig.Size.QUICK)));
+        assertTrue(!SpeedSpreads.isWarmed(ReportConfig.of(ReportConfig.Size.TINY)));
+        StringBuilder md = new StringBuilder();
+        SpeedSpreads.appendTables(md, List.of(new SpeedSpreads.Line("x", "G1",
+                RECORDED_TWICE, RECORDED_AA, 1.5, true, false)), List.of(), 5,
+                ReportConfig.of(ReportConfig.Size.QUICK));
+        String text = md.toString();
+        assertTrue(text.contains("so every row says \"not warmed: no verdict\""), text);
+        assertTrue(text.contains("| not warmed: no verdict |"), text);
     }
 
     @Test
@@ -54,14 +111,22 @@ class SpeedSpreadsTest {
     }
 
     @Test
-    void theProbesLineIsParsedAndAnythingElseIgnored() {
+    void theProbesLinesAreParsedAndAnythingElseIgnored() {
         CostMeter.Spread spread = SpeedSpreads.parseProbe(
-                "lecture-over-objects 2.7000 3.0100 3.3000 Parallel");
+                "lecture-over-objects 2.7000 3.0100 3.3000 Parallel", SpeedSpreads.PROBE_PREFIX);
         assertEquals(2.7, spread.min(), 0.0);
         assertEquals(3.01, spread.median(), 0.0);
         assertEquals(3.3, spread.max(), 0.0);
-        assertNull(SpeedSpreads.parseProbe("WARNING: something else"));
-        assertNull(SpeedSpreads.parseProbe("lecture-over-objects a b c G1"));
+        CostMeter.Spread aa = SpeedSpreads.parseProbe("objects-over-objects 0.9700 1.0000 "
+                + "1.0400", SpeedSpreads.PROBE_AA_PREFIX);
+        assertEquals(0.97, aa.min(), 0.0);
+        assertEquals(1.04, aa.max(), 0.0);
+        assertNull(SpeedSpreads.parseProbe("objects-over-objects 0.97 1.0 1.04",
+                SpeedSpreads.PROBE_PREFIX));
+        assertNull(SpeedSpreads.parseProbe("WARNING: something else",
+                SpeedSpreads.PROBE_PREFIX));
+        assertNull(SpeedSpreads.parseProbe("lecture-over-objects a b c G1",
+                SpeedSpreads.PROBE_PREFIX));
     }
 
     @Test
@@ -95,19 +160,25 @@ class SpeedSpreadsTest {
         CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
         SpeedSpreads.PeerRow steady = new SpeedSpreads.PeerRow(10_000, one, one, one,
                 new CostMeter.Spread(8.0, 8.5, 9.0), new CostMeter.Spread(1.2, 1.3, 1.4),
-                132.4, 36.0, 60.0);
+                TIGHT_AA, 132.4, 36.0, 60.0, true, true);
         SpeedSpreads.PeerRow noisy = new SpeedSpreads.PeerRow(100_000, one, one, one,
                 new CostMeter.Spread(5.0, 8.5, 9.0), new CostMeter.Spread(1.2, 1.3, 1.4),
-                132.4, 36.0, 60.0);
-        SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(steady, noisy),
-                7, FULL);
+                TIGHT_AA, 132.4, 36.0, 60.0, true, true);
+        // the emitter no slower than the fountain, within the A/A band of stepPacked
+        SpeedSpreads.PeerRow alike = new SpeedSpreads.PeerRow(1_000_000, one, one, one,
+                new CostMeter.Spread(8.0, 8.5, 9.0), new CostMeter.Spread(0.99, 1.01, 1.03),
+                TIGHT_AA, 132.4, 36.0, 60.0, true, true);
+        SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)),
+                List.of(steady, noisy, alike), 7, FULL);
         String text = md.toString();
         assertTrue(text.contains("A row whose max ÷ min exceeds 1.5 says \"too noisy: no "
                 + "verdict\""), text);
         assertTrue(text.contains("over 7 rounds"), text);
         assertTrue(text.contains("| 10000 | 1.00 / **1.00** / 1.00 | 1.00 / **1.00** / 1.00 "
                 + "| 1.00 / **1.00** / 1.00 | 8.0 / **8.5** / 9.0× | 1.2 / **1.3** / 1.4× "
-                + "| 132 + 36 | 60 | 24 | judged |"), text);
+                + "| 0.980 / **1.000** / 1.020× | 132 + 36 | 60 | 24 | judged |"), text);
+        assertTrue(text.contains("| 1000000 |") && text.contains("| 24 | inside the A/A band: "
+                + "no verdict |"), text);
         assertTrue(text.contains("| 100000 |") && text.contains("| too noisy: no verdict |"),
                 text);
         assertTrue(text.contains("What the batch form gains a jME user"), text);
@@ -120,7 +191,7 @@ class SpeedSpreadsTest {
         StringBuilder md = new StringBuilder();
         CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
         SpeedSpreads.PeerRow quick = new SpeedSpreads.PeerRow(10_000, one, one, one, one, one,
-                132.4, 36.0, 60.0, false, true);
+                TIGHT_AA, 132.4, 36.0, 60.0, false, true);
         SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(quick), 7,
                 ReportConfig.of(ReportConfig.Size.QUICK));
         String text = md.toString();
@@ -138,7 +209,7 @@ class SpeedSpreadsTest {
         StringBuilder md = new StringBuilder();
         CostMeter.Spread one = new CostMeter.Spread(1.0, 1.0, 1.0);
         SpeedSpreads.PeerRow uncollected = new SpeedSpreads.PeerRow(10_000, one, one, one, one,
-                one, 132.4, 36.0, 60.0, true, false);
+                one, TIGHT_AA, 132.4, 36.0, 60.0, true, false);
         SpeedSpreads.appendTables(md, List.of(line(one, 2.0, true)), List.of(uncollected), 7,
                 FULL);
         String text = md.toString();
@@ -150,7 +221,8 @@ class SpeedSpreadsTest {
 
     private static SpeedSpreads.Line line(CostMeter.Spread spread, double target,
             boolean atMost) {
-        return new SpeedSpreads.Line("x", "G1, default heap", spread, target, atMost);
+        return new SpeedSpreads.Line("x", "G1, default heap", spread, TIGHT_AA, target, atMost,
+                true);
     }
 
     private static List<Integer> toList(int[] values) {
