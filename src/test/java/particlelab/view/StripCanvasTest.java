@@ -14,6 +14,7 @@ import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import org.junit.jupiter.api.Test;
+import particlelab.Allocations;
 
 /**
  * The strip-drawing helper the energy bars, the live graph and the lens graph share, without
@@ -112,5 +113,45 @@ class StripCanvasTest {
                     "roundUp(" + value + ")");
             assertEquals(StripCanvas.roundUp(value), EnergyBars.roundUp(value), 0.0);
         }
+    }
+
+    @Test
+    void drawingAFrameOfEachStripAllocatesNothing() {
+        // what the demos call every frame, on strips laid out once: the bars' rows and
+        // refresh, the live graph's record and refresh (axes that stay put, so no label is
+        // set), the lens graph's plot
+        EnergyBars bars = new EnergyBars(ASSETS, FONT, 3);
+        bars.setRowCount(3);
+        bars.layOut(new ScreenRect(900f, 300f, 360f, 200f), 19f, "kinetic");
+        LiveGraph graph = new LiveGraph(ASSETS, FONT, new ColorRGBA[] {ColorRGBA.Orange});
+        graph.layOut(new ScreenRect(700f, 300f, 500f, 180f), 19f);
+        LensGraph lens = new LensGraph(ASSETS, FONT);
+        lens.layOut(new ScreenRect(900f, 50f, 360f, 240f), 19f);
+        double[] times = new double[64];
+        float[] vx = new float[64];
+        float[] vy = new float[64];
+        for (int i = 0; i < times.length; ++i) {
+            times[i] = i / 60.0;
+            vx[i] = 10f;
+            vy[i] = 10f - 9.8f * i / 60f;
+        }
+        float[] height = new float[1];
+        float[] speed = new float[1];
+        float[] none = {Float.NaN};
+        Runnable frames = () -> {
+            graph.clear();
+            for (int f = 0; f < 60; ++f) {
+                bars.setRow(0, "kinetic", 50.0 - f, ColorRGBA.Blue);
+                bars.setRow(1, "potential", f, ColorRGBA.Green);
+                bars.setRow(2, "numerical", -0.01 * f, ColorRGBA.White);
+                bars.refresh();
+                height[0] = 0.5f + 0.4f * (f % 7) / 7f;
+                speed[0] = 0.5f;
+                graph.record(f / 64f, height, speed, none, none);
+                graph.refresh();
+                lens.plot(times, vx, vy, times.length, f, f, 0.0, -9.8);
+            }
+        };
+        Allocations.assertAllocatesNothing("60 frames of the three strips", frames);
     }
 }
