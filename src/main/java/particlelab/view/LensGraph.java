@@ -14,9 +14,9 @@ import java.util.List;
  * slope lines are set in their curve's colour, so they are the legend too.
  *
  * <p>{@link #plot} writes the curves into one preallocated mesh of thin quads
- * ({@link StripCanvas.Quads}: lines of a pixel are lost on a projector) and the text into {@link HudText}s rewritten in place:
- * nothing is allocated per frame. {@link #layOut} measures text; call it when the rectangle
- * or the text size changes.
+ * ({@link StripCanvas.Quads}: lines of a pixel are lost on a projector) and the text into
+ * {@link HudText}s rewritten in place: nothing is allocated per frame. {@link #layOut}
+ * measures text; call it when the rectangle or the text size changes.
  */
 public final class LensGraph {
 
