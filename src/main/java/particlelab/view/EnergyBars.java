@@ -2,19 +2,9 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.material.Material;
-import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
-import com.jme3.renderer.queue.RenderQueue;
-import com.jme3.scene.Geometry;
-import com.jme3.scene.Mesh;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
-import com.jme3.scene.VertexBuffer;
-import com.jme3.scene.shape.Quad;
-import com.jme3.util.BufferUtils;
-import java.nio.FloatBuffer;
-import java.nio.ShortBuffer;
 
 /**
  * The energy ledger drawn as bars, for the HUD's ledger strip ({@link HudLayout#getLedger}):
@@ -26,14 +16,13 @@ import java.nio.ShortBuffer;
  * joules, so a scale that does not change from frame to frame draws bars that do not jitter
  * ({@link #roundUp} gives a round number to keep). A value beyond it is drawn to the edge.
  *
- * <p>{@link #refresh} writes the bars into one preallocated mesh and the values into
- * {@link HudText}s rewritten in place: nothing is allocated per frame. {@link #layOut}
+ * <p>{@link #refresh} writes the bars into one preallocated mesh of quads
+ * ({@link StripCanvas.Quads}) and the values into {@link HudText}s rewritten in place:
+ * nothing is allocated per frame. {@link #layOut}
  * measures text and may allocate; call it when the strip or the text size changes.
  */
 public final class EnergyBars {
 
-    /** The round numbers a scale ends at, times a power of ten. */
-    private static final double[] ROUND_STEPS = {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0};
     /** Padding inside the strip and between its columns, as a fraction of the text size. */
     private static final float PADDING = 0.4f;
     /** A row's height, as a multiple of a line's height. */
@@ -48,22 +37,16 @@ public final class EnergyBars {
     private static final String WIDEST_VALUE = "-00000.00";
     /** The zero line's half width, as a fraction of the text size. */
     private static final float AXIS_HALF_WIDTH = 0.06f;
-    private static final ColorRGBA BACKGROUND = new ColorRGBA(0.05f, 0.06f, 0.09f, 0.85f);
     private static final ColorRGBA TEXT = new ColorRGBA(0.85f, 0.9f, 1f, 1f);
     private static final ColorRGBA AXIS = new ColorRGBA(0.7f, 0.75f, 0.85f, 1f);
-    private static final int FLOATS_PER_VERTEX = 3;
-    private static final int COLOR_FLOATS = 4;
     /** Where an unused quad goes: off the screen. */
-    private static final float HIDDEN = -1000f;
+    private static final float HIDDEN = StripCanvas.HIDDEN;
 
     private final int maxRows;
     private final TextMeasure measure;
-    private final Node node = new Node("energy bars");
-    private final Geometry background;
-    private final FloatBuffer positions;
-    private final FloatBuffer colors;
-    private final VertexBuffer positionBuffer;
-    private final VertexBuffer colorBuffer;
+    private final StripCanvas canvas;
+    /** One quad per row and one for the zero line. */
+    private final StripCanvas.Quads quads;
     private final HudText title;
     private final HudText[] names;
     private final HudText[] values;
@@ -100,52 +83,18 @@ public final class EnergyBars {
         joules = new double[maxRows];
         rowColors = new ColorRGBA[maxRows];
         writtenColors = new ColorRGBA[maxRows];
-        Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
-
-        Material shade = unshaded.clone();
-        shade.setColor("Color", BACKGROUND);
-        shade.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
-        background = new Geometry("energy bars background", new Quad(1f, 1f));
-        background.setMaterial(shade);
-        background.setQueueBucket(RenderQueue.Bucket.Gui);
-        node.attachChild(background);
-
-        // One quad per row and one for the zero line: 4 vertices, 2 triangles each.
-        int quads = maxRows + 1;
-        positions = BufferUtils.createFloatBuffer(quads * 4 * FLOATS_PER_VERTEX);
-        colors = BufferUtils.createFloatBuffer(quads * 4 * COLOR_FLOATS);
-        ShortBuffer indices = BufferUtils.createShortBuffer(quads * 6);
-        for (int q = 0; q < quads; ++q) {
-            short base = (short) (4 * q);
-            indices.put(base).put((short) (base + 1)).put((short) (base + 2))
-                    .put(base).put((short) (base + 2)).put((short) (base + 3));
-        }
-        indices.flip();
-        Mesh mesh = new Mesh();
-        mesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_VERTEX, positions);
-        mesh.setBuffer(VertexBuffer.Type.Color, COLOR_FLOATS, colors);
-        mesh.setBuffer(VertexBuffer.Type.Index, 3, indices);
-        mesh.setStreamed();
-        positionBuffer = mesh.getBuffer(VertexBuffer.Type.Position);
-        colorBuffer = mesh.getBuffer(VertexBuffer.Type.Color);
-        for (int q = 0; q < quads; ++q) {
+        canvas = new StripCanvas(assetManager, "energy bars");
+        quads = canvas.addQuads("energy bars", maxRows + 1);
+        for (int q = 0; q <= maxRows; ++q) {
             writeColor(q, q == maxRows ? AXIS : TEXT);
-            writeQuad(q, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
         }
-        Material bars = unshaded.clone();
-        bars.setBoolean("VertexColor", true);
-        Geometry barGeometry = new Geometry("energy bars", mesh);
-        barGeometry.setMaterial(bars);
-        barGeometry.setQueueBucket(RenderQueue.Bucket.Gui);
-        barGeometry.setCullHint(Spatial.CullHint.Never);
-        node.attachChild(barGeometry);
 
-        title = newText(font);
+        title = canvas.addText(font, TEXT);
         names = new HudText[maxRows];
         values = new HudText[maxRows];
         for (int i = 0; i < maxRows; ++i) {
-            names[i] = newText(font);
-            values[i] = newText(font);
+            names[i] = canvas.addText(font, TEXT);
+            values[i] = canvas.addText(font, TEXT);
         }
         layOut(new ScreenRect(), 1f, "");
     }
@@ -157,21 +106,12 @@ public final class EnergyBars {
      * @return the round number (&ge;value, &gt;0)
      */
     public static double roundUp(double value) {
-        if (!(value > 0.0) || Double.isInfinite(value)) {
-            return 1.0;
-        }
-        double decade = Math.pow(10.0, Math.floor(Math.log10(value)));
-        for (double step : ROUND_STEPS) {
-            if (step * decade >= value) {
-                return step * decade;
-            }
-        }
-        return 10.0 * decade;
+        return StripCanvas.roundUp(value);
     }
 
     /** @return the node to attach to the GUI scene (live, not null) */
     public Node getNode() {
-        return node;
+        return canvas.getNode();
     }
 
     /**
@@ -180,12 +120,12 @@ public final class EnergyBars {
      * @param visible true to show them
      */
     public void setVisible(boolean visible) {
-        node.setCullHint(visible ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        canvas.setVisible(visible);
     }
 
     /** @return true if shown */
     public boolean isVisible() {
-        return node.getCullHint() != Spatial.CullHint.Always;
+        return canvas.isVisible();
     }
 
     /**
@@ -293,8 +233,8 @@ public final class EnergyBars {
         area.set(strip);
         if (strip.isEmpty()) {
             laidOut = false;
-            node.setLocalTranslation(HIDDEN, HIDDEN, 0f);
-            background.setLocalScale(0f);
+            canvas.getNode().setLocalTranslation(HIDDEN, HIDDEN, 0f);
+            canvas.hideBackground();
             return;
         }
         laidOut = true;
@@ -310,8 +250,8 @@ public final class EnergyBars {
                 - measure.width(WIDEST_VALUE, textSize) - pad);
         firstRowTop = strip.getHeight() - pad - rowHeight;
         rowsShown = Math.max(0, Math.min(rows, (int) Math.floor(firstRowTop / rowHeight)));
-        node.setLocalTranslation(strip.getX(), strip.getY(), 0f);
-        background.setLocalScale(strip.getWidth(), strip.getHeight(), 1f);
+        canvas.getNode().setLocalTranslation(strip.getX(), strip.getY(), 0f);
+        canvas.placeBackground(0f, 0f, strip.getWidth(), strip.getHeight());
         title.setSize(textSize);
         title.setLocalTranslation(pad, strip.getHeight() - pad, 1f);
         for (int i = 0; i < maxRows; ++i) {
@@ -331,7 +271,7 @@ public final class EnergyBars {
         for (int i = 0; i < maxRows; ++i) {
             int slot = slotOf(i);
             if (!laidOut || slot < 0) {
-                writeQuad(i, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+                quads.hide(i);
                 names[i].setCullHint(Spatial.CullHint.Always);
                 values[i].setCullHint(Spatial.CullHint.Always);
                 continue;
@@ -348,7 +288,7 @@ public final class EnergyBars {
                 // a value too small for a pixel still shows a sliver on its side
                 end = zero + Math.signum(fraction);
             }
-            writeQuad(i, Math.min(zero, end), middle - 0.5f * thickness, Math.max(zero, end),
+            quads.write(i, Math.min(zero, end), middle - 0.5f * thickness, Math.max(zero, end),
                     middle + 0.5f * thickness);
             if (writtenColors[i] != rowColors[i] && rowColors[i] != null) {
                 writeColor(i, rowColors[i]);
@@ -357,12 +297,11 @@ public final class EnergyBars {
         if (laidOut && rows > 0) {
             float axis = AXIS_HALF_WIDTH * textSize;
             float bottom = firstRowTop - rowsShown * rowHeight;
-            writeQuad(maxRows, zero - axis, bottom, zero + axis, firstRowTop);
+            quads.write(maxRows, zero - axis, bottom, zero + axis, firstRowTop);
         } else {
-            writeQuad(maxRows, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+            quads.hide(maxRows);
         }
-        positionBuffer.updateData(positions);
-        colorBuffer.updateData(colors);
+        quads.uploadWithColors();
     }
 
     /** @return the text size of the last layout (in pixels) */
@@ -406,27 +345,8 @@ public final class EnergyBars {
         return row < rowsShown - 1 ? row : -1;
     }
 
-    private HudText newText(BitmapFont font) {
-        HudText text = new HudText(font, TEXT);
-        text.setQueueBucket(RenderQueue.Bucket.Gui);
-        node.attachChild(text);
-        return text;
-    }
-
-    private void writeQuad(int quad, float left, float bottom, float right, float top) {
-        int at = quad * 4 * FLOATS_PER_VERTEX;
-        positions.put(at, left).put(at + 1, bottom).put(at + 2, 0.5f)
-                .put(at + 3, right).put(at + 4, bottom).put(at + 5, 0.5f)
-                .put(at + 6, right).put(at + 7, top).put(at + 8, 0.5f)
-                .put(at + 9, left).put(at + 10, top).put(at + 11, 0.5f);
-    }
-
     private void writeColor(int quad, ColorRGBA color) {
-        int at = quad * 4 * COLOR_FLOATS;
-        for (int v = 0; v < 4; ++v) {
-            colors.put(at + 4 * v, color.r).put(at + 4 * v + 1, color.g)
-                    .put(at + 4 * v + 2, color.b).put(at + 4 * v + 3, color.a);
-        }
+        quads.color(quad, color);
         if (quad < maxRows) {
             writtenColors[quad] = color;
         }

@@ -2,19 +2,8 @@ package particlelab.view;
 
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
-import com.jme3.material.Material;
-import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
-import com.jme3.renderer.queue.RenderQueue;
-import com.jme3.scene.Geometry;
-import com.jme3.scene.Mesh;
 import com.jme3.scene.Node;
-import com.jme3.scene.Spatial;
-import com.jme3.scene.VertexBuffer;
-import com.jme3.scene.shape.Quad;
-import com.jme3.util.BufferUtils;
-import java.nio.FloatBuffer;
-import java.nio.ShortBuffer;
 import java.util.List;
 
 /**
@@ -24,10 +13,10 @@ import java.util.List;
  * computed it from the plotted points there ({@code −g} for V_y under gravity alone). The
  * slope lines are set in their curve's colour, so they are the legend too.
  *
- * <p>{@link #plot} writes the curves into one preallocated mesh of thin quads (lines of a
- * pixel are lost on a projector) and the text into {@link HudText}s rewritten in place:
- * nothing is allocated per frame. {@link #layOut} measures text; call it when the rectangle
- * or the text size changes.
+ * <p>{@link #plot} writes the curves into one preallocated mesh of thin quads
+ * ({@link StripCanvas.Quads}: lines of a pixel are lost on a projector) and the text into
+ * {@link HudText}s rewritten in place: nothing is allocated per frame. {@link #layOut}
+ * measures text; call it when the rectangle or the text size changes.
  */
 public final class LensGraph {
 
@@ -37,7 +26,6 @@ public final class LensGraph {
     public static final ColorRGBA X_COLOR = new ColorRGBA(0.35f, 0.85f, 1f, 1f);
     /** V_y's colour, and its slope line's. */
     public static final ColorRGBA Y_COLOR = new ColorRGBA(1f, 0.5f, 0.8f, 1f);
-    private static final ColorRGBA BACKGROUND = new ColorRGBA(0.05f, 0.06f, 0.09f, 0.85f);
     private static final ColorRGBA FRAME = new ColorRGBA(0.45f, 0.5f, 0.6f, 1f);
     private static final ColorRGBA TEXT = new ColorRGBA(0.85f, 0.9f, 1f, 1f);
     private static final ColorRGBA MARKER = new ColorRGBA(1f, 1f, 1f, 1f);
@@ -66,8 +54,6 @@ public final class LensGraph {
     private static final double HEADROOM = 1.1;
     /** The slopes' decimals: 3, so that g = 9.800 shows to the millimetre per second². */
     private static final int SLOPE_DECIMALS = 3;
-    private static final int FLOATS_PER_VERTEX = 3;
-    private static final int COLOR_FLOATS = 4;
     /** The quads: each curve's segments and chosen dot, the frame's 4 sides, zero, marker. */
     private static final int CURVE_QUADS = CAPACITY - 1;
     private static final int X_DOT = 2 * CURVE_QUADS;
@@ -77,13 +63,11 @@ public final class LensGraph {
     private static final int MARKER_QUAD = ZERO_QUAD + 1;
     private static final int QUADS = MARKER_QUAD + 1;
     /** Where an unused quad goes: off the screen. */
-    private static final float HIDDEN = -1000f;
+    private static final float HIDDEN = StripCanvas.HIDDEN;
 
     private final TextMeasure measure;
-    private final Node node = new Node("lens graph");
-    private final Geometry background;
-    private final FloatBuffer positions;
-    private final VertexBuffer positionBuffer;
+    private final StripCanvas canvas;
+    private final StripCanvas.Quads quads;
     private final HudText title;
     private final HudText top;
     private final HudText bottom;
@@ -112,58 +96,26 @@ public final class LensGraph {
      */
     public LensGraph(AssetManager assetManager, BitmapFont font) {
         measure = TextMeasure.of(font);
-        Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
-        Material shade = unshaded.clone();
-        shade.setColor("Color", BACKGROUND);
-        shade.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
-        background = new Geometry("lens graph background", new Quad(1f, 1f));
-        background.setMaterial(shade);
-        background.setQueueBucket(RenderQueue.Bucket.Gui);
-        node.attachChild(background);
-
-        positions = BufferUtils.createFloatBuffer(QUADS * 4 * FLOATS_PER_VERTEX);
-        FloatBuffer colors = BufferUtils.createFloatBuffer(QUADS * 4 * COLOR_FLOATS);
-        ShortBuffer indices = BufferUtils.createShortBuffer(QUADS * 6);
+        canvas = new StripCanvas(assetManager, "lens graph");
+        quads = canvas.addQuads("lens graph curves", QUADS);
         for (int q = 0; q < QUADS; ++q) {
-            short base = (short) (4 * q);
-            indices.put(base).put((short) (base + 1)).put((short) (base + 2))
-                    .put(base).put((short) (base + 2)).put((short) (base + 3));
-            ColorRGBA color = q < CURVE_QUADS || q == X_DOT ? X_COLOR
-                    : q < X_DOT || q == Y_DOT ? Y_COLOR : q == MARKER_QUAD ? MARKER : FRAME;
-            for (int v = 0; v < 4; ++v) {
-                colors.put(color.r).put(color.g).put(color.b).put(color.a);
-            }
-            writeQuad(q, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+            quads.color(q, q < CURVE_QUADS || q == X_DOT ? X_COLOR
+                    : q < X_DOT || q == Y_DOT ? Y_COLOR : q == MARKER_QUAD ? MARKER : FRAME);
         }
-        indices.flip();
-        colors.flip();
-        Mesh mesh = new Mesh();
-        mesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_VERTEX, positions);
-        mesh.setBuffer(VertexBuffer.Type.Color, COLOR_FLOATS, colors);
-        mesh.setBuffer(VertexBuffer.Type.Index, 3, indices);
-        mesh.setStreamed();
-        positionBuffer = mesh.getBuffer(VertexBuffer.Type.Position);
-        Material lines = unshaded.clone();
-        lines.setBoolean("VertexColor", true);
-        Geometry curves = new Geometry("lens graph curves", mesh);
-        curves.setMaterial(lines);
-        curves.setQueueBucket(RenderQueue.Bucket.Gui);
-        curves.setCullHint(Spatial.CullHint.Never);
-        node.attachChild(curves);
 
-        title = newText(font, TEXT);
-        top = newText(font, TEXT);
-        bottom = newText(font, TEXT);
-        timeAxis = newText(font, TEXT);
-        slopeX = newText(font, X_COLOR);
-        slopeY = newText(font, Y_COLOR);
+        title = canvas.addText(font, TEXT);
+        top = canvas.addText(font, TEXT);
+        bottom = canvas.addText(font, TEXT);
+        timeAxis = canvas.addText(font, TEXT);
+        slopeX = canvas.addText(font, X_COLOR);
+        slopeY = canvas.addText(font, Y_COLOR);
         texts = new HudText[] {title, top, bottom, timeAxis, slopeX, slopeY};
         layOut(new ScreenRect(), 1f);
     }
 
     /** @return the node to attach to the GUI scene (live, not null) */
     public Node getNode() {
-        return node;
+        return canvas.getNode();
     }
 
     /**
@@ -172,12 +124,12 @@ public final class LensGraph {
      * @param visible true to show it
      */
     public void setVisible(boolean visible) {
-        node.setCullHint(visible ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        canvas.setVisible(visible);
     }
 
     /** @return true if shown */
     public boolean isVisible() {
-        return node.getCullHint() != Spatial.CullHint.Always;
+        return canvas.isVisible();
     }
 
     /**
@@ -214,8 +166,8 @@ public final class LensGraph {
         area.set(rect);
         if (rect.isEmpty()) {
             laidOut = false;
-            node.setLocalTranslation(HIDDEN, HIDDEN, 0f);
-            background.setLocalScale(0f);
+            canvas.getNode().setLocalTranslation(HIDDEN, HIDDEN, 0f);
+            canvas.hideBackground();
             return;
         }
         laidOut = true;
@@ -226,8 +178,8 @@ public final class LensGraph {
         textSize = Math.max(1f, fit);
         float pad = PADDING * textSize;
         float lineHeight = measure.lineHeight(textSize);
-        node.setLocalTranslation(rect.getX(), rect.getY(), 0f);
-        background.setLocalScale(rect.getWidth(), rect.getHeight(), 1f);
+        canvas.getNode().setLocalTranslation(rect.getX(), rect.getY(), 0f);
+        canvas.placeBackground(0f, 0f, rect.getWidth(), rect.getHeight());
         for (HudText text : texts) {
             text.setSize(textSize);
         }
@@ -272,9 +224,9 @@ public final class LensGraph {
         setSlope(slopeY, "slope of V_y: ", slopeOfY);
         if (!laidOut || count < 1) {
             for (int q = 0; q < QUADS; ++q) {
-                writeQuad(q, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+                quads.hide(q);
             }
-            positionBuffer.updateData(positions);
+            quads.upload();
             return;
         }
         double low = 0.0;
@@ -283,8 +235,8 @@ public final class LensGraph {
             low = Math.min(low, Math.min(velocityX[i], velocityY[i]));
             high = Math.max(high, Math.max(velocityX[i], velocityY[i]));
         }
-        double axisHigh = high > 0.0 ? roundUp(HEADROOM * high) : 0.0;
-        double axisLow = low < 0.0 ? -roundUp(HEADROOM * -low) : 0.0;
+        double axisHigh = high > 0.0 ? StripCanvas.roundUp(HEADROOM * high) : 0.0;
+        double axisLow = low < 0.0 ? -StripCanvas.roundUp(HEADROOM * -low) : 0.0;
         if (axisHigh == axisLow) {
             axisHigh = 1.0;
         }
@@ -304,40 +256,40 @@ public final class LensGraph {
             if (i + 1 < count) {
                 float x0 = xOf(times[i], start, span);
                 float x1 = xOf(times[i + 1], start, span);
-                writeSegment(i, x0, yOf(velocityX[i], axisLow, axisHigh), x1,
+                quads.writeSegment(i, x0, yOf(velocityX[i], axisLow, axisHigh), x1,
                         yOf(velocityX[i + 1], axisLow, axisHigh), curve);
-                writeSegment(CURVE_QUADS + i, x0, yOf(velocityY[i], axisLow, axisHigh), x1,
+                quads.writeSegment(CURVE_QUADS + i, x0, yOf(velocityY[i], axisLow, axisHigh), x1,
                         yOf(velocityY[i + 1], axisLow, axisHigh), curve);
             } else {
-                writeQuad(i, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
-                writeQuad(CURVE_QUADS + i, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+                quads.hide(i);
+                quads.hide(CURVE_QUADS + i);
             }
         }
         float thin = 0.5f * LINE_THICKNESS * textSize;
         float right = plotLeft + plotWidth;
         float plotTop = plotBottom + plotHeight;
-        writeQuad(FRAME_QUADS, plotLeft - thin, plotBottom - thin, right + thin,
+        quads.write(FRAME_QUADS, plotLeft - thin, plotBottom - thin, right + thin,
                 plotBottom + thin);
-        writeQuad(FRAME_QUADS + 1, plotLeft - thin, plotTop - thin, right + thin,
+        quads.write(FRAME_QUADS + 1, plotLeft - thin, plotTop - thin, right + thin,
                 plotTop + thin);
-        writeQuad(FRAME_QUADS + 2, plotLeft - thin, plotBottom, plotLeft + thin, plotTop);
-        writeQuad(FRAME_QUADS + 3, right - thin, plotBottom, right + thin, plotTop);
+        quads.write(FRAME_QUADS + 2, plotLeft - thin, plotBottom, plotLeft + thin, plotTop);
+        quads.write(FRAME_QUADS + 3, right - thin, plotBottom, right + thin, plotTop);
         float zero = yOf(0f, axisLow, axisHigh);
-        writeQuad(ZERO_QUAD, plotLeft, zero - thin, right, zero + thin);
+        quads.write(ZERO_QUAD, plotLeft, zero - thin, right, zero + thin);
         if (chosen >= 0 && chosen < count) {
             float x = xOf(times[chosen], start, span);
             float dot = DOT_HALF_SIDE * textSize;
-            writeQuad(MARKER_QUAD, x - thin, plotBottom, x + thin, plotTop);
+            quads.write(MARKER_QUAD, x - thin, plotBottom, x + thin, plotTop);
             float vx = yOf(velocityX[chosen], axisLow, axisHigh);
             float vy = yOf(velocityY[chosen], axisLow, axisHigh);
-            writeQuad(X_DOT, x - dot, vx - dot, x + dot, vx + dot);
-            writeQuad(Y_DOT, x - dot, vy - dot, x + dot, vy + dot);
+            quads.write(X_DOT, x - dot, vx - dot, x + dot, vx + dot);
+            quads.write(Y_DOT, x - dot, vy - dot, x + dot, vy + dot);
         } else {
-            writeQuad(MARKER_QUAD, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
-            writeQuad(X_DOT, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
-            writeQuad(Y_DOT, HIDDEN, HIDDEN, HIDDEN, HIDDEN);
+            quads.hide(MARKER_QUAD);
+            quads.hide(X_DOT);
+            quads.hide(Y_DOT);
         }
-        positionBuffer.updateData(positions);
+        quads.upload();
     }
 
     /** @return the text size of the last layout (in pixels) */
@@ -391,11 +343,6 @@ public final class LensGraph {
         return storeResult;
     }
 
-    /** The round number at or above a value, as the energy bars' scale has it. */
-    private static double roundUp(double value) {
-        return EnergyBars.roundUp(value);
-    }
-
     private void setSlope(HudText text, String name, double slope) {
         line.setLength(0);
         line.append(name);
@@ -414,34 +361,5 @@ public final class LensGraph {
     private float yOf(float value, double low, double high) {
         double fraction = (value - low) / (high - low);
         return plotBottom + (float) Math.max(0.0, Math.min(1.0, fraction)) * plotHeight;
-    }
-
-    /** A segment as a thin quad: its ends moved sideways by half its thickness. */
-    private void writeSegment(int quad, float x0, float y0, float x1, float y1, float half) {
-        float dx = x1 - x0;
-        float dy = y1 - y0;
-        float length = (float) Math.sqrt(dx * dx + dy * dy);
-        float nx = length > 0f ? -dy / length * half : 0f;
-        float ny = length > 0f ? dx / length * half : half;
-        int at = quad * 4 * FLOATS_PER_VERTEX;
-        positions.put(at, x0 + nx).put(at + 1, y0 + ny).put(at + 2, 0.5f)
-                .put(at + 3, x0 - nx).put(at + 4, y0 - ny).put(at + 5, 0.5f)
-                .put(at + 6, x1 - nx).put(at + 7, y1 - ny).put(at + 8, 0.5f)
-                .put(at + 9, x1 + nx).put(at + 10, y1 + ny).put(at + 11, 0.5f);
-    }
-
-    private HudText newText(BitmapFont font, ColorRGBA color) {
-        HudText text = new HudText(font, color);
-        text.setQueueBucket(RenderQueue.Bucket.Gui);
-        node.attachChild(text);
-        return text;
-    }
-
-    private void writeQuad(int quad, float left, float bottomY, float right, float topY) {
-        int at = quad * 4 * FLOATS_PER_VERTEX;
-        positions.put(at, left).put(at + 1, bottomY).put(at + 2, 0.5f)
-                .put(at + 3, right).put(at + 4, bottomY).put(at + 5, 0.5f)
-                .put(at + 6, right).put(at + 7, topY).put(at + 8, 0.5f)
-                .put(at + 9, left).put(at + 10, topY).put(at + 11, 0.5f);
     }
 }

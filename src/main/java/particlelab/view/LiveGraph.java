@@ -3,7 +3,6 @@ package particlelab.view;
 import com.jme3.asset.AssetManager;
 import com.jme3.font.BitmapFont;
 import com.jme3.material.Material;
-import com.jme3.material.RenderState;
 import com.jme3.math.ColorRGBA;
 import com.jme3.renderer.queue.RenderQueue;
 import com.jme3.scene.Geometry;
@@ -11,7 +10,6 @@ import com.jme3.scene.Mesh;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import com.jme3.scene.VertexBuffer;
-import com.jme3.scene.shape.Quad;
 import com.jme3.util.BufferUtils;
 import java.nio.FloatBuffer;
 import java.util.List;
@@ -47,10 +45,9 @@ public final class LiveGraph {
     /** A dash of the exact curve, and the gap after it (in pixels at text size 19). */
     private static final float DASH_PIXELS_PER_TEXT_PIXEL = 6f / 19f;
     /** Where an unused segment goes: off the screen. */
-    private static final float HIDDEN = -1000f;
+    private static final float HIDDEN = StripCanvas.HIDDEN;
     /** Padding inside the graph, as a fraction of the text size. */
     private static final float PADDING = 0.4f;
-    private static final ColorRGBA BACKGROUND = new ColorRGBA(0.05f, 0.06f, 0.09f, 0.85f);
     private static final ColorRGBA FRAME = new ColorRGBA(0.45f, 0.5f, 0.6f, 1f);
     private static final ColorRGBA TEXT = new ColorRGBA(0.85f, 0.9f, 1f, 1f);
     /** How far the exact curve's colour is mixed toward white. */
@@ -60,15 +57,12 @@ public final class LiveGraph {
     private static final String LEGEND = "solid Euler, dashed exact";
     /** The legend of a graph whose particles have no exact ghost: only solid curves. */
     static final String LEGEND_EULER_ONLY = "Euler (no exact path)";
-    /** The round numbers an axis ends at, times a power of ten. */
-    private static final double[] ROUND_STEPS = {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0};
     /** The labels' size, as a fraction of the scene labels' size. */
     private static final float TEXT_SHRINK = 0.85f;
 
     private final int series;
     private final TextMeasure measure;
-    private final Node node = new Node("live graph");
-    private final Geometry background;
+    private final StripCanvas canvas;
     private final Geometry frame;
     private final FloatBuffer framePositions;
     private final VertexBuffer frameBuffer;
@@ -132,15 +126,8 @@ public final class LiveGraph {
         measure = TextMeasure.of(font);
         values = new float[CAPACITY * series * VALUES];
         endValues = new float[series * VALUES];
-        Material unshaded = new Material(assetManager, "Common/MatDefs/Misc/Unshaded.j3md");
-
-        Material shade = unshaded.clone();
-        shade.setColor("Color", BACKGROUND);
-        shade.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
-        background = new Geometry("live graph background", new Quad(1f, 1f));
-        background.setMaterial(shade);
-        background.setQueueBucket(RenderQueue.Bucket.Gui);
-        node.attachChild(background);
+        canvas = new StripCanvas(assetManager, "live graph");
+        Node node = canvas.getNode();
 
         // Two boxes: 4 segments each.
         framePositions = BufferUtils.createFloatBuffer(PANELS * 8 * FLOATS_PER_VERTEX);
@@ -148,7 +135,7 @@ public final class LiveGraph {
         frameMesh.setMode(Mesh.Mode.Lines);
         frameMesh.setBuffer(VertexBuffer.Type.Position, FLOATS_PER_VERTEX, framePositions);
         frameBuffer = frameMesh.getBuffer(VertexBuffer.Type.Position);
-        Material frameColor = unshaded.clone();
+        Material frameColor = canvas.newUnshaded();
         frameColor.setColor("Color", FRAME);
         frame = new Geometry("live graph frame", frameMesh);
         frame.setMaterial(frameColor);
@@ -178,7 +165,7 @@ public final class LiveGraph {
         curveMesh.setBuffer(VertexBuffer.Type.Color, 4, curveColors);
         curveMesh.setStreamed();
         curveBuffer = curveMesh.getBuffer(VertexBuffer.Type.Position);
-        Material lines = unshaded.clone();
+        Material lines = canvas.newUnshaded();
         lines.setBoolean("VertexColor", true);
         Geometry curves = new Geometry("live graph curves", curveMesh);
         curves.setMaterial(lines);
@@ -187,9 +174,7 @@ public final class LiveGraph {
         node.attachChild(curves);
 
         for (int i = 0; i < labels.length; ++i) {
-            labels[i] = new HudText(font, TEXT);
-            labels[i].setQueueBucket(RenderQueue.Bucket.Gui);
-            node.attachChild(labels[i]);
+            labels[i] = canvas.addText(font, TEXT);
             labelRects[i] = new ScreenRect();
         }
         shownLegend = LEGEND;
@@ -203,7 +188,7 @@ public final class LiveGraph {
      * @return the live node (not null)
      */
     public Node getNode() {
-        return node;
+        return canvas.getNode();
     }
 
     /**
@@ -212,7 +197,7 @@ public final class LiveGraph {
      * @param visible true to show it
      */
     public void setVisible(boolean visible) {
-        node.setCullHint(visible ? Spatial.CullHint.Inherit : Spatial.CullHint.Always);
+        canvas.setVisible(visible);
     }
 
     /**
@@ -221,7 +206,7 @@ public final class LiveGraph {
      * @return true if shown
      */
     public boolean isVisible() {
-        return node.getCullHint() != Spatial.CullHint.Always;
+        return canvas.isVisible();
     }
 
     /**
@@ -403,8 +388,8 @@ public final class LiveGraph {
     public void layOut(ScreenRect area, float textSize) {
         if (area.isEmpty()) {
             laidOut = false;
-            node.setLocalTranslation(0f, 0f, 0f);
-            background.setLocalScale(0f);
+            canvas.getNode().setLocalTranslation(0f, 0f, 0f);
+            canvas.hideBackground();
             for (int i = 0; i < labels.length; ++i) {
                 labelRects[i].set(0f, 0f, 0f, 0f);
             }
@@ -417,8 +402,7 @@ public final class LiveGraph {
         float lineHeight = measure.lineHeight(size);
         pad = PADDING * size;
         panelWidth = (area.getWidth() - (PANELS + 1) * pad) / PANELS;
-        background.setLocalScale(area.getWidth(), area.getHeight(), 1f);
-        background.setLocalTranslation(area.getX(), area.getY(), 0f);
+        canvas.placeBackground(area.getX(), area.getY(), area.getWidth(), area.getHeight());
         plotBottom = area.getY() + pad + lineHeight + pad;
         plotHeight = area.getTop() - pad - lineHeight - pad - plotBottom;
         plotWidth = panelWidth;
@@ -639,13 +623,7 @@ public final class LiveGraph {
      * @return the round number
      */
     static float roundUp(float value) {
-        double power = Math.pow(10.0, Math.floor(Math.log10(value)));
-        for (int i = 0; i < ROUND_STEPS.length; ++i) {
-            if (ROUND_STEPS[i] * power >= value) {
-                return (float) (ROUND_STEPS[i] * power);
-            }
-        }
-        return (float) (10.0 * power);
+        return (float) StripCanvas.roundUp(value);
     }
 
     /** A range's end as a label shows it: a decimal only where it has one (1.5). */

@@ -6,7 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Paths;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoParticle;
@@ -195,6 +199,17 @@ class TourCommandTest {
             assertTrue(run.err.startsWith("particle-lab tour: --stop"), run.toString());
             assertTrue(run.err.contains(Integer.toString(count)), run.toString());
         }
+    }
+
+    @Test
+    void theCommandPagesExampleRefusalIsTheOneTheCommandPrints() throws IOException {
+        // docs/cli.md quotes `tour --stop 99`'s line inline (no transcript TranscriptTest
+        // runs): it said "from 1 to 16" after the tour had grown to 22 stops
+        CommandRun run = CommandRun.of("tour", "--stop", "99");
+        String page = new String(Files.readAllBytes(Paths.get("docs", "cli.md")),
+                StandardCharsets.UTF_8).replaceAll("\\s+", " ");
+        String line = run.err.trim();
+        assertTrue(page.contains("`" + line + "`"), "docs/cli.md should quote: " + line);
     }
 
     @Test
