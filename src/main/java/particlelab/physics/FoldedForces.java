@@ -150,8 +150,8 @@ final class FoldedForces {
 
     /**
      * One per-particle step: the recipe ({@link EulerRecipe#step}) with a computed here in
-     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it. The
-     * numbers for h and the particle's mass must be remembered ({@link StepLimits#remember}).
+     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it, with the
+     * particle's 1/m ({@link Particle#inverseMass}, the floats of {@link #inverseMass}).
      *
      * @param particle the particle (not null, modified even where the result is not finite)
      * @param stepSeconds h (in seconds, &gt;0)
@@ -173,8 +173,10 @@ final class FoldedForces {
             ay += otherAcceleration.y;
             az += otherAcceleration.z;
         }
-        float sigma = speedDependent ? dragRate(speed(vx, vy, vz), stepInverseMass)
-                : stepLinearRate;
+        // the particle's own 1/m: nothing remembered for one h and m, so a loop over particles
+        // has no branch that calls out to remember them (a call on any path of a loop makes
+        // the JIT read every field again per particle)
+        float sigma = dragRate(speedDependent ? speed(vx, vy, vz) : 0f, particle.inverseMass());
         // F/m = −σ·V; σ = 0 adds nothing to a finite V, so skip it (gravity alone)
         if (sigma != 0f) {
             ax -= sigma * vx;
