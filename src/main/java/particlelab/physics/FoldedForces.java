@@ -17,9 +17,10 @@ import com.jme3.math.Vector3f;
  * ({@code ParticleIntegratorFoldingTest}); gravity alone gives identical numbers.
  *
  * <p>The per-particle step ({@link #step}), {@link #acceleration} and the batch
- * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers
- * for a step and mass are filled by {@link StepLimits#remember}, which keys the regime's bound
- * on the same h and m. A setter of a folded force marks this fold {@link #markStale stale}
+ * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The step
+ * reads each particle's 1/m ({@link Particle#inverseMass}); the batch's numbers for one step
+ * and mass are filled by {@link StepLimits#remember}, which keys the regime's bound on the
+ * same h and m. A setter of a folded force marks this fold {@link #markStale stale}
  * ({@link FoldedForce}); the integrator folds again before its next step
  * ({@link #refoldIfStale}).
  */
@@ -39,7 +40,7 @@ final class FoldedForces {
     float thrustSum;
     /** Folded: true if σ depends on |V| (some c or k is not zero). */
     boolean speedDependent;
-    /** Remembered for one step and mass ({@link #isRememberedFor}): 1/m (1/kg) ... */
+    /** Remembered for the batch's step and mass ({@link #isRememberedFor}): 1/m (1/kg) ... */
     float stepInverseMass;
     /** ... σ of the folded forces at rest, {@code dragRate(0, 1/m)}: b/m (1/s) ... */
     float stepLinearRate;
