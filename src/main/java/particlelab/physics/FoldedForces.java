@@ -309,7 +309,8 @@ final class FoldedForces {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
-        // nothing remembered for the old coefficients holds: neither step nor regime bound
+        // nothing remembered for the old coefficients holds: neither the batch's numbers nor
+        // the regime's bound
         rememberedSeconds = Float.NaN;
         stale = false;
     }
