@@ -17,9 +17,10 @@ import com.jme3.math.Vector3f;
  * ({@code ParticleIntegratorFoldingTest}); gravity alone gives identical numbers.
  *
  * <p>The per-particle step ({@link #step}), {@link #acceleration} and the batch
- * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The numbers
- * for a step and mass are filled by {@link StepLimits#remember}, which keys the regime's bound
- * on the same h and m. A setter of a folded force marks this fold {@link #markStale stale}
+ * ({@link PackedStep}) compute the same σ and a, so they give the same floats. The step
+ * reads each particle's 1/m ({@link Particle#inverseMass}); the batch's numbers for one step
+ * and mass are filled by {@link StepLimits#remember}, which keys the regime's bound on the
+ * same h and m. A setter of a folded force marks this fold {@link #markStale stale}
  * ({@link FoldedForce}); the integrator folds again before its next step
  * ({@link #refoldIfStale}).
  */
@@ -39,7 +40,7 @@ final class FoldedForces {
     float thrustSum;
     /** Folded: true if σ depends on |V| (some c or k is not zero). */
     boolean speedDependent;
-    /** Remembered for one step and mass ({@link #isRememberedFor}): 1/m (1/kg) ... */
+    /** Remembered for the batch's step and mass ({@link #isRememberedFor}): 1/m (1/kg) ... */
     float stepInverseMass;
     /** ... σ of the folded forces at rest, {@code dragRate(0, 1/m)}: b/m (1/s) ... */
     float stepLinearRate;
@@ -150,8 +151,8 @@ final class FoldedForces {
 
     /**
      * One per-particle step: the recipe ({@link EulerRecipe#step}) with a computed here in
-     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it. The
-     * numbers for h and the particle's mass must be remembered ({@link StepLimits#remember}).
+     * locals, {@code a = (g + a_other) − σ·V} as {@link #acceleration} computes it, with the
+     * particle's 1/m ({@link Particle#inverseMass}, the floats of {@link #inverseMass}).
      *
      * @param particle the particle (not null, modified even where the result is not finite)
      * @param stepSeconds h (in seconds, &gt;0)
@@ -173,8 +174,10 @@ final class FoldedForces {
             ay += otherAcceleration.y;
             az += otherAcceleration.z;
         }
-        float sigma = speedDependent ? dragRate(speed(vx, vy, vz), stepInverseMass)
-                : stepLinearRate;
+        // the particle's own 1/m: nothing remembered for one h and m, so a loop over particles
+        // has no branch that calls out to remember them (a call on any path of a loop makes
+        // the JIT read every field again per particle)
+        float sigma = dragRate(speedDependent ? speed(vx, vy, vz) : 0f, particle.inverseMass());
         // F/m = −σ·V; σ = 0 adds nothing to a finite V, so skip it (gravity alone)
         if (sigma != 0f) {
             ax -= sigma * vx;
@@ -306,7 +309,8 @@ final class FoldedForces {
             thrustSum += thrusts[i].getMagnitude();
         }
         speedDependent = quadraticSum != 0f || thrustSum != 0f;
-        // nothing remembered for the old coefficients holds: neither step nor regime bound
+        // nothing remembered for the old coefficients holds: neither the batch's numbers nor
+        // the regime's bound
         rememberedSeconds = Float.NaN;
         stale = false;
     }

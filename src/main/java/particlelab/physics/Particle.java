@@ -22,12 +22,17 @@ public final class Particle {
     public final Vector3f velocity = new Vector3f();
 
     private float massKg;
+    /**
+     * 1/m (in 1/kg), set with the mass: the per-particle step reads it, so a loop over
+     * particles needs no division and no inverse remembered for one mass.
+     */
+    private float inverseMassPerKg;
 
     /**
      * Create a particle of mass 1 kg at rest at the origin.
      */
     public Particle() {
-        this.massKg = 1f;
+        setMass(1f);
     }
 
     /**
@@ -58,6 +63,16 @@ public final class Particle {
      */
     public void setMass(float massKg) {
         this.massKg = checkMass(massKg);
+        inverseMassPerKg = 1f / massKg;
+    }
+
+    /**
+     * Return 1/m, computed when the mass was set.
+     *
+     * @return {@code 1f / getMass()} (in 1/kg, finite, &gt;0)
+     */
+    float inverseMass() {
+        return inverseMassPerKg;
     }
 
     /**
@@ -83,6 +98,7 @@ public final class Particle {
         position.set(source.position);
         velocity.set(source.velocity);
         massKg = source.massKg;
+        inverseMassPerKg = source.inverseMassPerKg;
     }
 
     /**

@@ -286,13 +286,8 @@ public final class ParticleIntegrator {
      * is put back and {@link #stepCarefully} decides.
      */
     private void stepOne(Particle particle, float stepSeconds) {
-        // h and m remembered for the fold and the regime's bound; asked of this.folded, the
-        // test regime() makes, so in a loop that asks both the JIT makes it once (asked
-        // through limits, a second path to the same fold, it was made twice)
-        float massKg = particle.getMass();
-        if (!folded.isRememberedFor(stepSeconds, massKg)) {
-            limits.remember(stepSeconds, massKg);
-        }
+        // nothing remembered for h and m: the fold reads the particle's 1/m, so no path of the
+        // step calls out (regime() remembers its bound for itself)
         Vector3f velocity = particle.velocity;
         Vector3f position = particle.position;
         float vx = velocity.x;

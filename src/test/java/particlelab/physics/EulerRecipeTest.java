@@ -54,6 +54,45 @@ class EulerRecipeTest {
         }
     }
 
+    /**
+     * The step reads each particle's own 1/m (nothing remembered for one mass): particles of
+     * many masses in one array, one of them copied and one given a new mass between steps,
+     * are each stepped with their own, bit for bit.
+     */
+    @ParameterizedTest
+    @MethodSource("particlelab.physics.FastPathsMatchTheRecipeTest#mixes")
+    void particlesOfManyMassesInOneArrayAreEachSteppedWithTheirOwnMass(
+            FastPathsMatchTheRecipeTest.Mix mix) {
+        ParticleIntegrator integrator = new ParticleIntegrator(mix.forces());
+        Random random = new Random(23);
+        Particle[] particles = new Particle[12];
+        for (int i = 0; i < particles.length; ++i) {
+            particles[i] = new Particle(randomVector(random, 50f),
+                    randomVector(random, i % 3 == 0 ? 1f : 60f), 0.1f + 5f * random.nextFloat());
+        }
+        particles[5] = copy(particles[4]);
+        Vector3f[] expectedV = new Vector3f[particles.length];
+        Vector3f[] expectedP = new Vector3f[particles.length];
+        Vector3f a = new Vector3f();
+        for (int n = 0; n < 20; ++n) {
+            particles[7].setMass(n % 2 == 0 ? 0.25f : 4f);
+            for (int i = 0; i < particles.length; ++i) {
+                integrator.acceleration(particles[i], a);
+                Vector3f v = particles[i].velocity;
+                Vector3f p = particles[i].position;
+                expectedV[i] = new Vector3f(v.x + H * a.x, v.y + H * a.y, v.z + H * a.z);
+                expectedP[i] = new Vector3f(p.x + H * expectedV[i].x, p.y + H * expectedV[i].y,
+                        p.z + H * expectedV[i].z);
+            }
+            integrator.step(particles, H);
+            for (int i = 0; i < particles.length; ++i) {
+                String where = mix + ", step " + n + ", particle " + i;
+                assertBits(expectedV[i], particles[i].velocity, where);
+                assertBits(expectedP[i], particles[i].position, where);
+            }
+        }
+    }
+
     @Test
     void whereTheFoldOverflowsTheStepIsTheRecipeWithEveryForceAsked() {
         // b/m beyond the float range at rest: σ·V is ∞·0; asked force by force, a is g

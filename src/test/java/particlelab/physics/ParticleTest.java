@@ -138,6 +138,27 @@ class ParticleTest {
         assertEquals(3f, copy.getMass(), 0f);
     }
 
+    /** The step reads 1/m from the particle: every way the mass is set must set it too. */
+    @Test
+    void theInverseMassIsOneOverTheMassAfterEveryWayTheMassIsSet() {
+        Particle particle = new Particle();
+        assertInverseBits(particle, "default particle");
+        particle = new Particle(POSITION, VELOCITY, 3f);
+        assertInverseBits(particle, "constructor");
+        particle.setMass(0.7f);
+        assertInverseBits(particle, "setMass");
+        assertThrows(IllegalArgumentException.class, () -> new Particle().setMass(-1f));
+        Particle refused = new Particle(POSITION, VELOCITY, 0.3f);
+        assertThrows(IllegalArgumentException.class, () -> refused.setMass(Float.NaN));
+        assertInverseBits(refused, "a refused setMass");
+        Particle copy = new Particle();
+        copy.copyFrom(particle);
+        assertInverseBits(copy, "copyFrom");
+        particle.setMass(Particle.MIN_MASS_KG);
+        assertInverseBits(particle, "the smallest mass");
+        assertTrue(Float.isFinite(particle.inverseMass()));
+    }
+
     @Test
     void isFiniteTurnsFalseWhenAComponentIsWrittenNonFinite() {
         Particle particle = new Particle(POSITION, VELOCITY, 1f);
@@ -160,5 +181,11 @@ class ParticleTest {
                 thrown.getMessage());
         Particle lightest = new Particle(POSITION, VELOCITY, Particle.MIN_MASS_KG);
         assertTrue(Float.isFinite(1f / lightest.getMass()));
+    }
+
+    private static void assertInverseBits(Particle particle, String where) {
+        // 1f/m exactly, the float the step's σ has always been computed with
+        assertEquals(Float.floatToIntBits(1f / particle.getMass()),
+                Float.floatToIntBits(particle.inverseMass()), where);
     }
 }
