@@ -5,6 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Paths;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoParticle;
 import particlelab.physics.Particle;
@@ -83,7 +87,7 @@ class DragDemoTest {
      * The running integrators' own limits at those speeds say the same.
      */
     @Test
-    void swappedStabilityLineGivesTheLimitsOfTheLawsTheSpheresRun() {
+    void swappedStabilityLineGivesTheLimitsOfTheLawsTheSpheresRun() throws IOException {
         DragDemo drag = new DragDemo();
         drag.getParameters().set("drag", 1f);
         double linearVt = G / DragDemo.LINEAR_B;
@@ -97,6 +101,9 @@ class DragDemoTest {
         // printed to 3 decimals: 1.1111 and 2.5254 are far from a rounding edge
         assertEquals("v_t (h < there), laws swapped: quadratic c' √(mg/c') 10.89 m/s (1.111 s),"
                 + " linear b' mg/b' 12.37 (2.525 s)", line);
+        // docs/demos/drag.md quotes the line
+        assertTrue(new String(Files.readAllBytes(Paths.get("docs/demos/drag.md")),
+                StandardCharsets.UTF_8).contains("\n" + line + "\n"), line);
     }
 
     /**
