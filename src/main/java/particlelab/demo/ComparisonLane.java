@@ -138,6 +138,8 @@ public final class ComparisonLane implements DemoPart {
     private DemoParticle particle;
     private ExactPath exact;
     private Kind kind = Kind.OFF;
+    /** What the HUD says when the lane follows other forces than the sphere's (or null). */
+    private String forcesNote;
     /** The lane's state (m, m/s), in double for the report's steppers. */
     private final MotionState state = new MotionState();
     /** The report's stepper for the forces now (null: to be built). */
@@ -495,6 +497,9 @@ public final class ComparisonLane implements DemoPart {
         }
         appendCost(text);
         text.append('\n');
+        if (forcesNote != null) {
+            text.append("   ").append(forcesNote).append('\n');
+        }
         appendSeenError(text);
         if (kind == Kind.SLIDE) {
             List<String> lines = slide.listing();
@@ -502,6 +507,17 @@ public final class ComparisonLane implements DemoPart {
                 text.append("   slide:  ").append(lines.get(i)).append('\n');
             }
         }
+    }
+
+    /**
+     * Say on the HUD, under the lane's first line, that the lane follows other forces than
+     * the sphere runs now (the drag demo's swapped laws); set before the parts write their
+     * lines.
+     *
+     * @param note one line without its newline, or null when the lane follows the sphere's
+     */
+    public void setForcesNote(String note) {
+        forcesNote = note;
     }
 
     /** The next lane, from a new launch. */

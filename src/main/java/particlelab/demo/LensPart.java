@@ -114,6 +114,8 @@ public final class LensPart implements DemoPart {
     private float graphTextSize = Float.NaN;
     /** Whether the graph's room was asked for presenting (its text is larger then). */
     private boolean graphPresenting;
+    /** What the HUD says when the step re-taken is not the one the sphere takes (or null). */
+    private String stepNote;
 
     /**
      * Create the part.
@@ -197,6 +199,17 @@ public final class LensPart implements DemoPart {
         pointArrow(EXACT_MIDDLE, lens.exactAtMiddle);
     }
 
+    /**
+     * Say on the HUD, under the lens's first line, that the step it re-takes (the recipe's,
+     * with the sphere's own forces) is not the one the sphere takes: a demo whose spheres
+     * run other forces or another method sets it before the parts write their lines.
+     *
+     * @param note one line without its newline, or null when the lens shows the sphere's step
+     */
+    public void setStepNote(String note) {
+        stepNote = note;
+    }
+
     @Override
     public void writeHudLines(StringBuilder text) {
         if (!on) {
@@ -213,6 +226,9 @@ public final class LensPart implements DemoPart {
         TextFormat.appendFixed(text, demo.getWorld().getTimeSeconds(), 3).append(" s, h = ");
         TextFormat.appendFixed(text, lens.getStepSeconds(), 4)
                 .append(" s; arrows from P_i, in m/s:\n");
+        if (stepNote != null) {
+            text.append("  ").append(stepNote).append('\n');
+        }
         appendLine(text, CHORD, "chord (P_i+1 - P_i)/h", lens.chord);
         appendLine(text, STEP, "V_i+1, the step's velocity", lens.stepVelocity);
         appendLine(text, EXACT_START, "exact dP/dt at t_i", lens.exactAtStart);

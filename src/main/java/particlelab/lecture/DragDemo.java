@@ -87,6 +87,16 @@ public final class DragDemo extends DemoState {
     private static final String[] SWAPS = {"as-labelled", "swapped"};
     private static final String[] SWAPPED_LABELS = {"swapped: quadratic  F = -c' |V|V",
         "swapped: linear  F = -b' V"};
+    /** The lane's note while the laws are swapped: it follows the labelled linear law. */
+    private static final String LANE_SWAPPED_NOTE = "the lane, its exact path and the seen"
+            + " errors follow the labelled law F = -b V, not the swapped one the sphere runs";
+    /** The lens's notes: the step it re-takes is the recipe's, with the labelled law. */
+    private static final String LENS_SWAPPED_NOTE = "not the sphere's step: the lens re-takes"
+            + " the labelled law F = -b V, the sphere runs the swapped one (drag)";
+    private static final String LENS_EULER_NOTE = "not the sphere's step: the lens re-takes"
+            + " the lecture's recipe, the sphere steps by forward Euler (method)";
+    private static final String LENS_BOTH_NOTE = "not the sphere's step: the lens re-takes"
+            + " the labelled law by the recipe, the sphere the swapped one by forward Euler";
     /** The fault of this demo, by {@code --set fault=} name, and what it is. */
     static final String SLIDE_DRAG = "slide-drag";
     private static final String[] FAULTS = {SLIDE_DRAG};
@@ -391,6 +401,24 @@ public final class DragDemo extends DemoState {
         double linear = terminalSpeed(1);
         double physical = Math.sqrt(weight / coefficientC);
         double slide = SlideFormDrag.terminalSpeed(1.0, weight, coefficientC);
+        // The forks' notes, set before the parts write their lines (they follow these): the
+        // lane and the lens re-take the labelled law by the recipe, whatever the spheres run.
+        lane.setForcesNote(swapped ? LANE_SWAPPED_NOTE : null);
+        lens.setStepNote(method.getMethod() != MethodPart.RECIPE
+                ? (swapped ? LENS_BOTH_NOTE : LENS_EULER_NOTE)
+                : (swapped ? LENS_SWAPPED_NOTE : null));
+        if (swapped) {
+            // The laws each sphere runs now, each with its v_t kept: the linear sphere's
+            // quadratic c' limits h to v_t/g there (λ = 2g/v_t), the quadratic sphere's
+            // linear b' to 2v_t/g (λ = g/v_t).
+            double quadraticVt = terminalSpeed(2);
+            text.append("v_t (h < there), laws swapped: quadratic c' √(mg/c') ");
+            TextFormat.appendFixed(text, linear, 2).append(" m/s (");
+            TextFormat.appendFixed(text, linear / g, 3).append(" s), linear b' mg/b' ");
+            TextFormat.appendFixed(text, quadraticVt, 2).append(" (");
+            TextFormat.appendFixed(text, 2.0 * quadraticVt / g, 3).append(" s)\n");
+            return;
+        }
         text.append("v_t (h < there): mg/b ");
         TextFormat.appendFixed(text, linear, 2).append(" m/s (");
         TextFormat.appendFixed(text, 2.0 * linear / g, 3).append(" s), √(mg/c) ");

@@ -5,6 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Paths;
 import org.junit.jupiter.api.Test;
 import particlelab.demo.DemoParticle;
 import particlelab.physics.Particle;
@@ -73,6 +77,112 @@ class DragDemoTest {
         double limit = 2.0 * vt / (3.0 * G);
         assertTrue(kickShrinks(forces, vt, (float) (0.9 * limit)));
         assertFalse(kickShrinks(forces, vt, (float) (1.1 * limit)));
+    }
+
+    /**
+     * With the laws swapped ({@code drag=swapped}) the v_t line gives the step limits of the
+     * laws the spheres run now: the linear sphere's quadratic c' at its v_t = m·g/b has
+     * {@code 2/λ = v_t/g = m/b = 1.111} s, the quadratic sphere's linear b' at its
+     * v_t = √(m·g/c) has {@code 2v_t/g = 2.525} s; not the labelled laws' 2.222 and 1.263 s.
+     * The running integrators' own limits at those speeds say the same.
+     */
+    @Test
+    void swappedStabilityLineGivesTheLimitsOfTheLawsTheSpheresRun() throws IOException {
+        DragDemo drag = new DragDemo();
+        drag.getParameters().set("drag", 1f);
+        double linearVt = G / DragDemo.LINEAR_B;
+        double quadraticVt = Math.sqrt(G / DragDemo.QUADRATIC_C);
+        double quadraticLimit = linearVt / G;
+        double linearLimit = 2.0 * quadraticVt / G;
+        // the bodies' integrators are the swapped laws; their λ in float: 1e-5 relative
+        assertEquals(quadraticLimit, limitAt(drag, 1, linearVt), 1e-5 * quadraticLimit);
+        assertEquals(linearLimit, limitAt(drag, 2, quadraticVt), 1e-5 * linearLimit);
+        String line = hudLine(drag, "v_t (h < there)");
+        // printed to 3 decimals: 1.1111 and 2.5254 are far from a rounding edge
+        assertEquals("v_t (h < there), laws swapped: quadratic c' √(mg/c') 10.89 m/s (1.111 s),"
+                + " linear b' mg/b' 12.37 (2.525 s)", line);
+        // docs/demos/drag.md quotes the line
+        assertTrue(new String(Files.readAllBytes(Paths.get("docs/demos/drag.md")),
+                StandardCharsets.UTF_8).contains("\n" + line + "\n"), line);
+    }
+
+    /**
+     * The comparison lane follows the labelled linear law (its forces, exact path and slide
+     * code are the labelled sphere's): with the laws swapped its lines say so, and only then.
+     */
+    @Test
+    void laneSaysItFollowsTheLabelledLawWhenTheLawsAreSwapped() {
+        DragDemo drag = new DragDemo();
+        drag.getParameters().set("lane", 2f);
+        drag.restart();
+        stepSingly(drag, 10);
+        String note = "the lane, its exact path and the seen errors follow the labelled law";
+        String hud = hud(drag);
+        assertTrue(hud.contains("Lane forward Euler (L):"), hud);
+        assertFalse(hud.contains(note), hud);
+        drag.getParameters().set("drag", 1f);
+        stepSingly(drag, 1);
+        hud = hud(drag);
+        assertTrue(hud.contains("\n   " + note + " F = -b V, not the swapped one the sphere"
+                + " runs\n"), hud);
+    }
+
+    /**
+     * The derivative lens re-takes the recipe's step with the labelled forces: with forward
+     * Euler ({@code method=euler}) or the swapped laws its lines say it is not the sphere's
+     * step, and with neither they say nothing of the kind.
+     */
+    @Test
+    void lensSaysItIsNotTheSpheresStepUnderAnotherMethodOrLaw() {
+        DragDemo drag = new DragDemo();
+        drag.getParameters().set("lens", 1f);
+        stepSingly(drag, 10);
+        assertTrue(hud(drag).contains("derivative lens (O; click a step dot)"), hud(drag));
+        assertFalse(hud(drag).contains("not the sphere's step"), hud(drag));
+        drag.getParameters().set("method", 1f);
+        stepSingly(drag, 1);
+        assertTrue(hud(drag).contains(" s; arrows from P_i, in m/s:\n  not the sphere's step:"
+                + " the lens re-takes the lecture's recipe, the sphere steps by forward Euler"
+                + " (method)\n"), hud(drag));
+        drag.getParameters().set("method", 0f);
+        drag.getParameters().set("drag", 1f);
+        stepSingly(drag, 1);
+        assertTrue(hud(drag).contains("\n  not the sphere's step: the lens re-takes the"
+                + " labelled law F = -b V, the sphere runs the swapped one (drag)\n"), hud(drag));
+        drag.getParameters().set("method", 1f);
+        assertTrue(hud(drag).contains("\n  not the sphere's step: the lens re-takes the"
+                + " labelled law by the recipe, the sphere the swapped one by forward Euler\n"),
+                hud(drag));
+    }
+
+    private static String hud(DragDemo drag) {
+        return drag.getWindow().formatHud(new StringBuilder()).toString();
+    }
+
+    /** The HUD's line that starts with the prefix. */
+    private static String hudLine(DragDemo drag, String prefix) {
+        String[] lines = hud(drag).split("\n");
+        for (String line : lines) {
+            if (line.startsWith(prefix)) {
+                return line;
+            }
+        }
+        throw new AssertionError("no HUD line starts with '" + prefix + "' in " + hud(drag));
+    }
+
+    /** The stability limit of the integrator the world steps a sphere with, at speed v down. */
+    private static double limitAt(DragDemo drag, int index, double speed) {
+        Particle falling = new Particle(new Vector3f(), new Vector3f(0f, (float) -speed, 0f),
+                1f);
+        return drag.getWorld().getBody(index).getIntegrator().maxStableStep(falling);
+    }
+
+    /** Take steps one at a time with the demo's single step, as N does. */
+    private static void stepSingly(DragDemo drag, int steps) {
+        for (int i = 0; i < steps; ++i) {
+            drag.getRun().singleStep();
+            drag.getRun().advancePhysics(0f);
+        }
     }
 
     /** Step a sphere's own forces on a copy from rest for 60 s at h; return its speed. */
