@@ -33,8 +33,12 @@ public final class HudView {
     private static final ColorRGBA FOOTER_COLOR = new ColorRGBA(0.7f, 0.76f, 0.86f, 1f);
     /** The help panel hides the scene and the HUD below the title (opaque). */
     private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
-    /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
-    private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
+    /**
+     * Behind the top band: hides grid lines and trails that reach above the scene's area,
+     * opaque (a trail flown out of the top showed through it, behind the body's text, at
+     * 3840x2160; the sphere's label at the top of the scene says where it went).
+     */
+    private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
 
     private final Node node = new Node("HUD");
     private final Geometry backdrop;
