@@ -515,9 +515,11 @@ class WindowControlsHeadlessTest {
         parts.add(demo.getWindow().getHud().getFooterText());
         // The HUD is rebuilt every frame, so a line of wall-clock figures (the fountain's
         // "physics ... ms/frame ... fps") differs from frame to frame: its text is left out,
-        // the lines it took are kept.
+        // the lines it took are kept (its continuation too, where it wraps).
+        boolean measured = false;
         for (String line : demo.getWindow().getHud().getBodyText().split("\n", -1)) {
-            parts.add(line.contains(" ms/frame") ? "(measured line)" : line);
+            measured = line.contains(" ms/frame") || measured && line.startsWith(" ");
+            parts.add(measured ? "(measured line)" : line);
         }
         return String.join("\n", parts);
     }

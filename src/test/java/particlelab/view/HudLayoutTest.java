@@ -191,7 +191,88 @@ class HudLayoutTest {
                     count + " lines: " + layout.getScene());
             assertTrue(layout.getWindow().contains(layout.getBody()), count + " lines");
         }
-        assertEquals(60, layout.getBodyLinesNeeded());
+        // Sixty short lines: in the two columns a wide enough window gives, thirty rows each.
+        assertEquals(60 / layout.getBodyColumns(), layout.getBodyLinesNeeded());
+    }
+
+    /**
+     * Issue 29 §3: a wide window sets the body in two columns side by side, which need fewer
+     * rows than one, so the scene gets the rows saved; the columns keep apart inside the
+     * band, the first holds the lines before the split and the second the rest, an indented
+     * block (a listing) is never split, and a window too narrow for two keeps one.
+     */
+    @Test
+    void aWideWindowSetsTheBodyInTwoColumnsThatLeaveTheSceneTheRowsSaved() {
+        String body = lines(5) + "\nListing:\n    a = 1;\n    b = 2;\n    c = 3;\n    d = 4;\n"
+                + lines(3);
+        HudLayout one = new HudLayout(MONO);
+        one.layOut(640, 360, 1f, "3.  Drag", body, FOOTER, help(4));
+        assertEquals(1, one.getBodyColumns(), "640 px hold one 22-em column pair at most");
+        HudLayout two = new HudLayout(MONO);
+        two.layOut(1280, 720, 1f, "3.  Drag", body, FOOTER, help(4));
+        assertEquals(2, two.getBodyColumns());
+        // 13 lines, none wrapped: of the splits before an unindented line, the one before
+        // "Listing:" leaves 5 and 8 rows, the fewest; inside the listing, before "c = 3;",
+        // would give 7 and 6, and is not taken.
+        assertEquals(8, two.getBodyLinesNeeded());
+        StringBuilder left = two.copyBodyColumn(body, 0, new StringBuilder());
+        StringBuilder right = two.copyBodyColumn(body, 1, new StringBuilder());
+        assertTrue(right.toString().startsWith("Listing:"), right.toString());
+        assertEquals(body, left + "\n" + right, "the columns hold the body's lines in order");
+        float firstRight = two.getBodyColumnX(0) + two.getBodyColumnWidth(0);
+        assertTrue(firstRight < two.getBodyColumnX(1), "the columns keep apart");
+        assertTrue(two.getBodyColumnX(1) + two.getBodyColumnWidth(1)
+                <= two.getBody().getRight() + 1e-3f, "the second column inside the band");
+        assertTrue(two.getBody().getHeight() < 13 * MONO.lineHeight(two.getBodySize()),
+                "the band is lower than one column's");
+    }
+
+    /**
+     * Issue 29 §2: the body's columns are a function of the window, the text size and the
+     * body's lines and labels, never of the layouts before nor of the values shown when laid
+     * out: a layout that saw another body, other windows and the same lines with other
+     * numbers (a sign flipped, a digit fewer) sets the body as a fresh one does. A body with
+     * other lines is not the one the columns were chosen for.
+     */
+    @Test
+    void theBodysColumnsDependOnTheWindowAndTheLinesNotOnWhatCameBefore() {
+        String body = BODY + "\n" + lines(9) + "\nball landed at x = 31.62 m after 2.04 s";
+        String otherValues = body.replace("16.17", "-16.17").replace("2.04", "12.1")
+                .replace("-5.84", "5.8");
+        String otherLines = lines(4) + "\nball:  P = (1.00, 2.00, 0.00) m";
+        HudLayout fresh = new HudLayout(MONO);
+        fresh.layOut(1280, 720, 1f, "3.  Drag", body, FOOTER, help(4));
+        HudLayout seen = new HudLayout(MONO);
+        seen.layOut(640, 360, 0.75f, "3.  Drag", otherLines, FOOTER, help(4));
+        seen.layOut(1920, 1080, 1.5f, "3.  Drag", body, FOOTER, help(4));
+        seen.layOut(1280, 720, 1f, "3.  Drag", otherLines, FOOTER, help(4));
+        seen.layOut(1280, 720, 1f, "3.  Drag", otherValues, FOOTER, help(4));
+        // The band keeps the most rows it needed until it is sized afresh (HudView does at
+        // a new size, a new stop and after DemoState.HUD_BAND_KEEP_SECONDS).
+        seen.forgetBodyLines();
+        seen.layOut(1280, 720, 1f, "3.  Drag", body, FOOTER, help(4));
+        assertEquals(2, fresh.getBodyColumns(), "this body takes two columns at 1280x720");
+        assertEquals(describeColumns(fresh, body), describeColumns(seen, body));
+        assertEquals(fresh.getBody().toString(), seen.getBody().toString());
+        assertEquals(fresh.getScene().toString(), seen.getScene().toString());
+        assertTrue(seen.isLaidOutForShape(otherValues), "the same lines with other values");
+        assertFalse(seen.isLaidOutForShape(otherLines), "other lines");
+        // The shape of a number is its width class, not its value or sign.
+        StringBuilder a = HudLayout.appendShape("x = -0.52 m, n 3", new StringBuilder());
+        StringBuilder b = HudLayout.appendShape("x = 10.5 m, n 12", new StringBuilder());
+        assertEquals("x = 00000 m, n 00000", a.toString());
+        assertEquals(a.toString(), b.toString());
+        assertEquals("t = 0000000 s", HudLayout.appendShape("t = 123.45 s",
+                new StringBuilder()).toString(), "a number wider than the usual keeps its width");
+    }
+
+    /** The columns of a layout, their widths and lines, as text to compare. */
+    private static String describeColumns(HudLayout layout, String body) {
+        return layout.getBodyColumns() + " columns, " + layout.getBodyColumnWidth(0) + " | "
+                + layout.getBodyColumnWidth(1) + " px at " + layout.getBodyColumnX(0) + " | "
+                + layout.getBodyColumnX(1) + ":\n" + layout.copyBodyColumn(body, 0,
+                new StringBuilder()) + "\n|\n" + layout.copyBodyColumn(body, 1,
+                new StringBuilder());
     }
 
     /**
