@@ -33,6 +33,11 @@ public final class DemoParticle {
     private final ParticleIntegrator integrator;
     /** The forces its exact ghost follows: its own integrator's, unless a lane says. */
     private ParticleIntegrator pathIntegrator;
+    /**
+     * The integrator whose forces move the particle now: its own, unless a part gave it
+     * others while it runs (the drag demo's swapped laws, {@link MethodPart#setForces}).
+     */
+    private ParticleIntegrator forcesNow;
     /** Every state since the launch, for the export. */
     private final TrajectoryRecord record = new TrajectoryRecord();
     /** The demo world's stop at the ground, which keeps the landing. */
@@ -55,6 +60,7 @@ public final class DemoParticle {
         this.body = body;
         this.particle = body.getParticle();
         this.integrator = body.getIntegrator();
+        this.forcesNow = integrator;
         this.pathIntegrator = integrator;
     }
 
@@ -134,6 +140,22 @@ public final class DemoParticle {
      */
     public ParticleIntegrator getIntegrator() {
         return integrator;
+    }
+
+    /**
+     * Access the integrator whose forces move the particle now, for what speaks of the
+     * step it takes (the stability line, the step warnings): {@link #getIntegrator()}
+     * unless a part gave the particle other forces while it runs.
+     *
+     * @return the live integrator (not null)
+     */
+    public ParticleIntegrator getForcesNow() {
+        return forcesNow;
+    }
+
+    /** Say which integrator's forces move the particle now (null: its own). */
+    void setForcesNow(ParticleIntegrator forces) {
+        forcesNow = forces == null ? integrator : forces;
     }
 
     /**

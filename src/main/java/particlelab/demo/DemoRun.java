@@ -544,7 +544,7 @@ public final class DemoRun {
             demoParticle.steppedThisStep = !demoParticle.isHeld();
             if (demoParticle.steppedThisStep) {
                 demoParticle.getRecord().begin(demoParticle.getParticle());
-                warnings.observe(demoParticle.getLabel(), demoParticle.getIntegrator(),
+                warnings.observe(demoParticle.getLabel(), demoParticle.getForcesNow(),
                         demoParticle.getParticle());
             }
         }

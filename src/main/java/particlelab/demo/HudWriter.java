@@ -334,7 +334,7 @@ final class HudWriter {
                 continue;
             }
             ++moving;
-            float particleLimit = particle.getIntegrator().maxStableStep(particle.getParticle());
+            float particleLimit = particle.getForcesNow().maxStableStep(particle.getParticle());
             if (particleLimit < limit) {
                 limit = particleLimit;
                 limiting = particle;
@@ -363,9 +363,9 @@ final class HudWriter {
         text.append("Stability: h < ");
         TextFormat.appendFixed(text, limit, 3).append(" s for '").append(limiting.getLabel())
                 .append("' (λ = ");
-        TextFormat.appendFixed(text, limiting.getIntegrator().dampingRate(particle), 2)
+        TextFormat.appendFixed(text, limiting.getForcesNow().dampingRate(particle), 2)
                 .append(" /s");
-        float stiffness = limiting.getIntegrator().stiffness(particle);
+        float stiffness = limiting.getForcesNow().stiffness(particle);
         if (stiffness > 0f) {
             text.append(", ω = ");
             TextFormat.appendFixed(text, (float) Math.sqrt(stiffness), 2).append(" /s");

@@ -100,6 +100,7 @@ public final class MethodPart implements DemoPart {
         for (int i = 0; i < count; ++i) {
             if (spheres[i] == sphere) {
                 forces[i] = newForces;
+                sphere.setForcesNow(newForces);
                 install();
                 return;
             }

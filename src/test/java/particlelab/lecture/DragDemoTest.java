@@ -2,6 +2,7 @@ package particlelab.lecture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.jme3.math.Vector3f;
@@ -14,6 +15,7 @@ import particlelab.demo.DemoParticle;
 import particlelab.physics.Particle;
 import particlelab.physics.ParticleIntegrator;
 import particlelab.physics.SlideFormDrag;
+import particlelab.view.TextFormat;
 
 /**
  * Demo 3's terminal speeds and its slide-form switch, in plain JUnit: each sphere's own forces
@@ -104,6 +106,45 @@ class DragDemoTest {
         // docs/demos/drag.md quotes the line
         assertTrue(new String(Files.readAllBytes(Paths.get("docs/demos/drag.md")),
                 StandardCharsets.UTF_8).contains("\n" + line + "\n"), line);
+    }
+
+    /**
+     * With the laws swapped the generic stability line and the step warnings speak of the
+     * forces each sphere runs now ({@link DemoParticle#getForcesNow()}, the world's body
+     * integrator), not the labelled ones: the line read 'h < 2.222 s for swapped: quadratic
+     * ... (λ = 0.90 /s)', the labelled linear law's limit, for a sphere running quadratic drag.
+     */
+    @Test
+    void stabilityLineSpeaksOfTheForcesTheSpheresRunNow() {
+        DragDemo drag = new DragDemo();
+        drag.getParameters().set("drag", 1f);
+        drag.restart();
+        stepSingly(drag, 10);
+        float limit = Float.POSITIVE_INFINITY;
+        DemoParticle limiting = null;
+        for (int i = 0; i < 3; ++i) {
+            DemoParticle sphere = drag.getParticles().get(i);
+            assertSame(drag.getWorld().getBody(i).getIntegrator(), sphere.getForcesNow(),
+                    sphere.getLabel());
+            float own = sphere.getForcesNow().maxStableStep(sphere.getParticle());
+            if (!sphere.isHeld() && own < limit) {
+                limit = own;
+                limiting = sphere;
+            }
+        }
+        // the labelled laws differ: the swapped linear sphere is no longer at the labelled λ
+        float labelled = drag.getParticles().get(1).getIntegrator()
+                .dampingRate(drag.getParticles().get(1).getParticle());
+        float running = drag.getParticles().get(1).getForcesNow()
+                .dampingRate(drag.getParticles().get(1).getParticle());
+        assertFalse(Math.abs(labelled - running) < 0.01f, labelled + " " + running);
+        StringBuilder expected = new StringBuilder("Stability: h < ");
+        TextFormat.appendFixed(expected, limit, 3).append(" s for '")
+                .append(limiting.getLabel()).append("' (λ = ");
+        TextFormat.appendFixed(expected,
+                limiting.getForcesNow().dampingRate(limiting.getParticle()), 2);
+        String line = hudLine(drag, "Stability:");
+        assertTrue(line.startsWith(expected.toString()), line + " | expected " + expected);
     }
 
     /**
