@@ -141,7 +141,7 @@ final class DemoScene {
     private final List<SceneLabel> fixedLabels = new ArrayList<>();
     /** The HUD's text rectangles, which no scene text may cover. */
     private final List<ScreenRect> hudRects = new ArrayList<>();
-    /** The window less its margin: where every text must stay. */
+    /** The window less its margin, above the footer band: where particles' labels stay. */
     private final ScreenRect textArea = new ScreenRect();
     /** The scene's area within the margins: where the fixed labels must stay. */
     private final ScreenRect fixedArea = new ScreenRect();
@@ -458,8 +458,12 @@ final class DemoScene {
         gridBottom = bottom;
         grid.setGroundDepth(-bottom);
         float margin = hud.getMargin();
-        textArea.set(margin, margin, window.getWidth() - 2f * margin,
-                window.getHeight() - 2f * margin);
+        // The particles' labels stay inside the margins and above the footer band, which
+        // holds the footer's line: "discrete" dropped there at the target's foot (aiming,
+        // h = 1/10, issue 29 §3), where the footer band scored better than the post.
+        float textBottom = Math.max(margin, hud.getSceneFloor());
+        textArea.set(margin, textBottom, window.getWidth() - 2f * margin,
+                window.getHeight() - margin - textBottom);
         // The fixed labels stay inside the scene's area (marks above the frame are hidden).
         float fixedBottom = Math.max(area.getY(), margin);
         fixedArea.set(Math.max(area.getX(), margin), fixedBottom,
@@ -887,7 +891,7 @@ final class DemoScene {
         int bestScore = Integer.MAX_VALUE;
         int currentScore = Integer.MAX_VALUE;
         for (int slot = 0; slot < LabelSlots.COUNT; ++slot) {
-            LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, candidate);
+            slotRect(slot, i, radius, width, height, candidate);
             int score = score(candidate, i, radius);
             if (slot == current) {
                 currentScore = score;
@@ -900,7 +904,7 @@ final class DemoScene {
         boolean keep = current >= 0 && currentScore == 0
                 && LabelSlots.ring(best) >= LabelSlots.ring(current);
         int slot = keep ? current : best;
-        LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, chosen);
+        slotRect(slot, i, radius, width, height, chosen);
         if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
                 || (keep ? currentScore : bestScore) >= SPHERE_PENALTY) {
             // The sphere is under the panel or the graph, or every slot beside it covers
@@ -913,6 +917,28 @@ final class DemoScene {
         // that hides the trail under it, so the name stays readable.
         view.placeLabel(plane, labelSize, slot, chosen, coversNearPoint(chosen));
         return true;
+    }
+
+    /**
+     * Compute particle i's label slot ({@link LabelSlots}), the nearest ring's slots beside the
+     * sphere (right and left) raised onto the ground line where the sphere's centre lies
+     * within half a label height above it: a landed sphere's side slots would reach into the
+     * ground band, and with its top slots over a post (aiming, h = 1/10: both shots down at
+     * the target's foot) its label had no free place. Raised by at most half a label height,
+     * the slot stays beside the sphere; the farther rings are not raised, so a label does not
+     * hop over a neighbouring sphere to the ground beyond it ("lecture" beside "discrete"'s
+     * sphere).
+     */
+    private void slotRect(int slot, int i, float radius, float width, float height,
+            ScreenRect storeResult) {
+        LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, storeResult);
+        int direction = slot % LabelSlots.DIRECTIONS;
+        float ground = plane.screenY(0f);
+        if (LabelSlots.ring(slot) == 0 && (direction == 1 || direction == 3)
+                && sphereY[i] >= ground
+                && storeResult.getY() < ground) {
+            storeResult.set(storeResult.getX(), ground, width, height);
+        }
     }
 
     /**

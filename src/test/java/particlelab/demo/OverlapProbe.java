@@ -276,6 +276,30 @@ public final class OverlapProbe {
     }
 
     /**
+     * No particle's label reaches into the footer band, below the scene's floor
+     * ({@code HudLayout.getSceneFloor()}): that band holds the footer's line, not the scene's
+     * texts (issue 29 §3: aiming's "discrete" dropped there at the target's foot).
+     *
+     * @param demo the demo (laid out and updated, not null)
+     * @param where what was laid out, for the messages (not null)
+     * @return one line per problem (empty if none)
+     */
+    public static List<String> labelsAboveTheFooterBand(DemoState demo, String where) {
+        List<String> problems = new ArrayList<>();
+        float floor = demo.getWindow().getHud().getLayout().getSceneFloor();
+        for (DemoParticle particle : demo.getParticles()) {
+            ParticleView view = demo.getWindow().getView(particle);
+            ScreenRect label = view.getLabelRect();
+            if (!label.isEmpty() && label.getY() < floor - PIXEL) {
+                problems.add(where + ": label '" + view.getLabel().getText() + "' " + label
+                        + " reaches into the footer band (scene floor at y = " + floor
+                        + " px)");
+            }
+        }
+        return problems;
+    }
+
+    /**
      * No impulse label of the collisions demo lies over a trail as drawn (ribbon and step
      * dots): the callouts treat the trails as obstacles, as they do the other labels.
      *
