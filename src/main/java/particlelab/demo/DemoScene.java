@@ -12,6 +12,7 @@ import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.view.BodyViews;
 import particlelab.view.CameraFraming;
 import particlelab.view.DistanceGrid;
 import particlelab.view.HudLayout;
@@ -137,6 +138,14 @@ final class DemoScene {
     private boolean gridStale;
 
     private final PlaneView plane = new PlaneView();
+    /**
+     * Spheres beyond the particles that labels keep off as they keep off the particles'
+     * (targets' gun platform, targets, fragments), or null: "shot" lay over the grey
+     * platform at tour stop 1 (issue 29 §3).
+     */
+    private BodyViews obstacleSpheres;
+    /** Scratch: an obstacle sphere's centre (in metres). */
+    private final Vector3f obstacleCentre = new Vector3f();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
     private final List<SceneLabel> fixedLabels = new ArrayList<>();
     /** The HUD's text rectangles, which no scene text may cover. */
@@ -649,6 +658,37 @@ final class DemoScene {
     }
 
     /**
+     * Make a demo's own spheres obstacles for the particles' labels, as the particles' spheres
+     * are (as bad to cover as a sphere): the views are read each frame, as last drawn.
+     *
+     * @param spheres the spheres (alias kept; null for none)
+     */
+    void setObstacleSpheres(BodyViews spheres) {
+        obstacleSpheres = spheres;
+    }
+
+    /** Test whether a place covers an obstacle sphere shown. Allocates nothing. */
+    private boolean coversObstacleSphere(ScreenRect place) {
+        if (obstacleSpheres == null) {
+            return false;
+        }
+        float scale = plane.getPixelsPerMetre();
+        for (int k = 0; k < obstacleSpheres.capacity(); ++k) {
+            float r = obstacleSpheres.getDrawnRadius(k) * scale;
+            if (r > 0f) {
+                obstacleSpheres.copyDrawnCentre(k, obstacleCentre);
+                float x = plane.screenX(obstacleCentre.x);
+                float y = plane.screenY(obstacleCentre.y);
+                if (x + r > place.getX() && x - r < place.getRight() && y + r > place.getY()
+                        && y - r < place.getTop()) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
      * Copy the screen rectangle of every post ({@link #addMarker}), from the ground to its
      * top, into a list, for tests of the layout.
      *
@@ -1080,7 +1120,7 @@ final class DemoScene {
      * before it and no sphere.
      */
     private boolean isFreeForEdgeLabel(ScreenRect place, int self, float radius) {
-        if (!textArea.contains(place) || coversHud(place)) {
+        if (!textArea.contains(place) || coversHud(place) || coversObstacleSphere(place)) {
             return false;
         }
         for (int i = 0; i < particles.size(); ++i) {
@@ -1256,6 +1296,9 @@ final class DemoScene {
                     && sphereY[i] - radius < place.getTop()) {
                 score += SPHERE_PENALTY;
             }
+        }
+        if (coversObstacleSphere(place)) {
+            score += SPHERE_PENALTY;
         }
         float left = place.getX() - trailClearance;
         float right = place.getRight() + trailClearance;

@@ -202,6 +202,41 @@ class OverlapMatrixHeadlessTest {
     }
 
     /**
+     * Tour stop 1 (targets) presenting at 1280x720, sampled every 10 frames from 240 to 360
+     * (the shot rolls back to the gun near frame 300): no label covers the gun's grey
+     * platform nor a target, spheres the demo draws beside its particles (issue 29 §3:
+     * "shot" lay over the platform).
+     */
+    @Test
+    void targetsStopKeepsTheShotsLabelOffThePlatform() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<String> problems = harness.call(() -> {
+            app.getTour().go(0);
+            app.getSwitcher().update(0f);
+            DemoState demo = app.getSwitcher().getSelected();
+            List<String> found = new ArrayList<>();
+            demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
+            demo.getClock().setPaused(false);
+            demo.restart();
+            demo.getDemoHud().setPresenting(true);
+            demo.getDemoHud().layOut(1280, 720);
+            for (int f = 1; f <= 360; ++f) {
+                demo.update(H);
+                if (f >= 240 && f % 10 == 0) {
+                    demo.update(0f);
+                    found.addAll(OverlapProbe.check(demo, 1280, 720,
+                            "tour stop 1 1280x720 presenting frame " + f));
+                }
+            }
+            demo.getDemoHud().setPresenting(false);
+            demo.getDemoHud().layOut(1280, 720);
+            app.getTour().leave();
+            return found;
+        });
+        assertEquals(List.of(), problems);
+    }
+
+    /**
      * The collisions demo's impulse labels keep off the trails as drawn, in every preset
      * (issue 29 §3: "impulse labels over trails"), sampled every {@value #IMPULSE_SAMPLE}
      * frames through the contacts of the first {@value #IMPULSE_FRAMES} frames (a label is

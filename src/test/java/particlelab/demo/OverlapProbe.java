@@ -6,6 +6,8 @@ import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.lecture.CollisionsDemo;
+import particlelab.lecture.TargetsDemo;
+import particlelab.view.BodyViews;
 import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
@@ -100,6 +102,20 @@ public final class OverlapProbe {
                 // at that side and says where it is.
                 problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
                         + " the scene's side at x = " + x + " px has no label at the edge");
+            }
+        }
+        // The targets demo's own spheres beyond its particles (the gun's platform, the
+        // targets, the fragments), from its views, not from the label layout's obstacles.
+        BodyViews bodies = demo instanceof TargetsDemo
+                ? ((TargetsDemo) demo).getBodyViews() : null;
+        for (int b = 0; bodies != null && b < bodies.capacity(); ++b) {
+            float r = bodies.getDrawnRadius(b) * plane.getPixelsPerMetre();
+            Vector3f centre = bodies.copyDrawnCentre(b, new Vector3f());
+            float x = plane.screenX(centre.x);
+            float y = plane.screenY(centre.y);
+            if (r > 0f && scene.contains(x, y)) {
+                spheres.add(new ScreenRect(x - r, y - r, 2f * r, 2f * r));
+                sphereNames.add("body view " + b);
             }
         }
         problems.addAll(coincidingSpheresShareOneLabel(demo, sphereParticles, where));
