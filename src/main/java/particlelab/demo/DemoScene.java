@@ -12,6 +12,7 @@ import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.view.BodyViews;
 import particlelab.view.CameraFraming;
 import particlelab.view.DistanceGrid;
 import particlelab.view.HudLayout;
@@ -139,11 +140,19 @@ final class DemoScene {
     private boolean gridStale;
 
     private final PlaneView plane = new PlaneView();
+    /**
+     * Spheres beyond the particles that labels keep off as they keep off the particles'
+     * (targets' gun platform, targets, fragments), or null: "shot" lay over the grey
+     * platform at tour stop 1 (issue 29 §3).
+     */
+    private BodyViews obstacleSpheres;
+    /** Scratch: an obstacle sphere's centre (in metres). */
+    private final Vector3f obstacleCentre = new Vector3f();
     /** The posts' names, then the distance marks: placed once per layout, in this order. */
     private final List<SceneLabel> fixedLabels = new ArrayList<>();
     /** The HUD's text rectangles, which no scene text may cover. */
     private final List<ScreenRect> hudRects = new ArrayList<>();
-    /** The window less its margin: where every text must stay. */
+    /** The window less its margin, above the footer band: where particles' labels stay. */
     private final ScreenRect textArea = new ScreenRect();
     /** The scene's area within the margins: where the fixed labels must stay. */
     private final ScreenRect fixedArea = new ScreenRect();
@@ -460,8 +469,12 @@ final class DemoScene {
         gridBottom = bottom;
         grid.setGroundDepth(-bottom);
         float margin = hud.getMargin();
-        textArea.set(margin, margin, window.getWidth() - 2f * margin,
-                window.getHeight() - 2f * margin);
+        // The particles' labels stay inside the margins and above the footer band, which
+        // holds the footer's line: "discrete" dropped there at the target's foot (aiming,
+        // h = 1/10, issue 29 §3), where the footer band scored better than the post.
+        float textBottom = Math.max(margin, hud.getSceneFloor());
+        textArea.set(margin, textBottom, window.getWidth() - 2f * margin,
+                window.getHeight() - margin - textBottom);
         // The fixed labels stay inside the scene's area (marks above the frame are hidden).
         float fixedBottom = Math.max(area.getY(), margin);
         fixedArea.set(Math.max(area.getX(), margin), fixedBottom,
@@ -644,6 +657,37 @@ final class DemoScene {
         float top = Math.min(area.getTop(), plane.screenY(Math.max(yMax, gridTop)));
         storeResult.set(left, bottom, Math.max(0f, right - left), Math.max(0f, top - bottom));
         return storeResult;
+    }
+
+    /**
+     * Make a demo's own spheres obstacles for the particles' labels, as the particles' spheres
+     * are (as bad to cover as a sphere): the views are read each frame, as last drawn.
+     *
+     * @param spheres the spheres (alias kept; null for none)
+     */
+    void setObstacleSpheres(BodyViews spheres) {
+        obstacleSpheres = spheres;
+    }
+
+    /** Test whether a place covers an obstacle sphere shown. Allocates nothing. */
+    private boolean coversObstacleSphere(ScreenRect place) {
+        if (obstacleSpheres == null) {
+            return false;
+        }
+        float scale = plane.getPixelsPerMetre();
+        for (int k = 0; k < obstacleSpheres.capacity(); ++k) {
+            float r = obstacleSpheres.getDrawnRadius(k) * scale;
+            if (r > 0f) {
+                obstacleSpheres.copyDrawnCentre(k, obstacleCentre);
+                float x = plane.screenX(obstacleCentre.x);
+                float y = plane.screenY(obstacleCentre.y);
+                if (x + r > place.getX() && x - r < place.getRight() && y + r > place.getY()
+                        && y - r < place.getTop()) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**
@@ -889,7 +933,7 @@ final class DemoScene {
         int bestScore = Integer.MAX_VALUE;
         int currentScore = Integer.MAX_VALUE;
         for (int slot = 0; slot < LabelSlots.COUNT; ++slot) {
-            LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, candidate);
+            slotRect(slot, i, radius, width, height, candidate);
             int score = score(candidate, i, radius);
             if (slot == current) {
                 currentScore = score;
@@ -902,7 +946,7 @@ final class DemoScene {
         boolean keep = current >= 0 && currentScore == 0
                 && LabelSlots.ring(best) >= LabelSlots.ring(current);
         int slot = keep ? current : best;
-        LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, chosen);
+        slotRect(slot, i, radius, width, height, chosen);
         if (chosen.intersects(panelSlot) || chosen.intersects(graphSlot)
                 || (keep ? currentScore : bestScore) >= SPHERE_PENALTY) {
             // The sphere is under the panel or the graph, or every slot beside it covers
@@ -915,6 +959,28 @@ final class DemoScene {
         // that hides the trail under it, so the name stays readable.
         view.placeLabel(plane, labelSize, slot, chosen, coversNearPoint(chosen));
         return true;
+    }
+
+    /**
+     * Compute particle i's label slot ({@link LabelSlots}), the nearest ring's slots beside the
+     * sphere (right and left) raised onto the ground line where the sphere's centre lies
+     * within half a label height above it: a landed sphere's side slots would reach into the
+     * ground band, and with its top slots over a post (aiming, h = 1/10: both shots down at
+     * the target's foot) its label had no free place. Raised by at most half a label height,
+     * the slot stays beside the sphere; the farther rings are not raised, so a label does not
+     * hop over a neighbouring sphere to the ground beyond it ("lecture" beside "discrete"'s
+     * sphere).
+     */
+    private void slotRect(int slot, int i, float radius, float width, float height,
+            ScreenRect storeResult) {
+        LabelSlots.rect(slot, sphereX[i], sphereY[i], radius, width, height, storeResult);
+        int direction = slot % LabelSlots.DIRECTIONS;
+        float ground = plane.screenY(0f);
+        if (LabelSlots.ring(slot) == 0 && (direction == 1 || direction == 3)
+                && sphereY[i] >= ground
+                && storeResult.getY() < ground) {
+            storeResult.set(storeResult.getX(), ground, width, height);
+        }
     }
 
     /**
@@ -1074,7 +1140,7 @@ final class DemoScene {
      * before it and no sphere.
      */
     private boolean isFreeForEdgeLabel(ScreenRect place, int self, float radius) {
-        if (!textArea.contains(place) || coversHud(place)) {
+        if (!textArea.contains(place) || coversHud(place) || coversObstacleSphere(place)) {
             return false;
         }
         for (int i = 0; i < particles.size(); ++i) {
@@ -1250,6 +1316,9 @@ final class DemoScene {
                     && sphereY[i] - radius < place.getTop()) {
                 score += SPHERE_PENALTY;
             }
+        }
+        if (coversObstacleSphere(place)) {
+            score += SPHERE_PENALTY;
         }
         float left = place.getX() - trailClearance;
         float right = place.getRight() + trailClearance;

@@ -6,6 +6,7 @@ import com.jme3.font.BitmapFont;
 import com.jme3.scene.Node;
 import java.util.ArrayList;
 import java.util.List;
+import particlelab.view.BodyViews;
 import particlelab.view.HudFont;
 import particlelab.view.HudView;
 import particlelab.view.ParticleView;
@@ -234,6 +235,16 @@ public final class DemoWindow {
      */
     public ScreenRect copySceneRect(ScreenRect storeResult) {
         return scene.copyDrawnRect(demoHud.getView().getLayout().getScene(), storeResult);
+    }
+
+    /**
+     * Make a demo's own spheres (beyond its particles: the targets' platform) obstacles for
+     * the particles' labels, which keep off them as off the particles' spheres.
+     *
+     * @param spheres the spheres, read each frame as last drawn (alias kept; null for none)
+     */
+    public void setLabelObstacles(BodyViews spheres) {
+        scene.setObstacleSpheres(spheres);
     }
 
     /**

@@ -195,6 +195,8 @@ public final class TargetsDemo extends DemoState {
         world.addBodyListener(views);
         getSceneNode().attachChild(views.getNode());
         views.show(platform, ColorRGBA.Gray);
+        // The particles' labels keep off these spheres ("shot" lay over the platform).
+        getWindow().setLabelObstacles(views);
         for (int i = 0; i < TARGETS; ++i) {
             if (targets[i] != null) {
                 views.show(targets[i], TARGET_COLOR);

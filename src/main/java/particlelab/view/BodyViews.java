@@ -119,6 +119,37 @@ public final class BodyViews implements BodyListener {
     }
 
     /**
+     * Count the pool's places, shown or not: {@link #getDrawnRadius} and
+     * {@link #copyDrawnCentre} take an index below it.
+     *
+     * @return the capacity (&ge;1)
+     */
+    public int capacity() {
+        return spheres.length;
+    }
+
+    /**
+     * Return the radius of the sphere in a place of the pool as drawn.
+     *
+     * @param index the place (0 to {@link #capacity()} - 1)
+     * @return the radius (in metres; 0 if the place shows no body)
+     */
+    public float getDrawnRadius(int index) {
+        return bodies[index] == null ? 0f : spheres[index].getLocalScale().x;
+    }
+
+    /**
+     * Copy the centre of the sphere in a place of the pool as last drawn ({@link #update}).
+     *
+     * @param index the place (0 to {@link #capacity()} - 1)
+     * @param storeResult storage for the centre (in metres, not null, modified)
+     * @return storeResult
+     */
+    public Vector3f copyDrawnCentre(int index, Vector3f storeResult) {
+        return storeResult.set(spheres[index].getLocalTranslation());
+    }
+
+    /**
      * Test whether a body has a sphere.
      *
      * @param body the body (not null)

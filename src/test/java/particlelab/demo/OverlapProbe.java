@@ -6,6 +6,8 @@ import com.jme3.scene.Spatial;
 import java.util.ArrayList;
 import java.util.List;
 import particlelab.lecture.CollisionsDemo;
+import particlelab.lecture.TargetsDemo;
+import particlelab.view.BodyViews;
 import particlelab.view.ParticleView;
 import particlelab.view.PlaneView;
 import particlelab.view.ScreenRect;
@@ -102,6 +104,20 @@ public final class OverlapProbe {
                 problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
                         + " the scene's edge at (" + x + ", " + y + ") px has no label at"
                         + " the edge");
+            }
+        }
+        // The targets demo's own spheres beyond its particles (the gun's platform, the
+        // targets, the fragments), from its views, not from the label layout's obstacles.
+        BodyViews bodies = demo instanceof TargetsDemo
+                ? ((TargetsDemo) demo).getBodyViews() : null;
+        for (int b = 0; bodies != null && b < bodies.capacity(); ++b) {
+            float r = bodies.getDrawnRadius(b) * plane.getPixelsPerMetre();
+            Vector3f centre = bodies.copyDrawnCentre(b, new Vector3f());
+            float x = plane.screenX(centre.x);
+            float y = plane.screenY(centre.y);
+            if (r > 0f && scene.contains(x, y)) {
+                spheres.add(new ScreenRect(x - r, y - r, 2f * r, 2f * r));
+                sphereNames.add("body view " + b);
             }
         }
         problems.addAll(coincidingSpheresShareOneLabel(demo, sphereParticles, where));
@@ -271,6 +287,30 @@ public final class OverlapProbe {
             if (!label.isEmpty() && y >= ground && label.getY() < ground - PIXEL) {
                 problems.add(where + ": label '" + view.getLabel().getText() + "' " + label
                         + " reaches into the ground band (ground line at y = " + ground
+                        + " px)");
+            }
+        }
+        return problems;
+    }
+
+    /**
+     * No particle's label reaches into the footer band, below the scene's floor
+     * ({@code HudLayout.getSceneFloor()}): that band holds the footer's line, not the scene's
+     * texts (issue 29 §3: aiming's "discrete" dropped there at the target's foot).
+     *
+     * @param demo the demo (laid out and updated, not null)
+     * @param where what was laid out, for the messages (not null)
+     * @return one line per problem (empty if none)
+     */
+    public static List<String> labelsAboveTheFooterBand(DemoState demo, String where) {
+        List<String> problems = new ArrayList<>();
+        float floor = demo.getWindow().getHud().getLayout().getSceneFloor();
+        for (DemoParticle particle : demo.getParticles()) {
+            ParticleView view = demo.getWindow().getView(particle);
+            ScreenRect label = view.getLabelRect();
+            if (!label.isEmpty() && label.getY() < floor - PIXEL) {
+                problems.add(where + ": label '" + view.getLabel().getText() + "' " + label
+                        + " reaches into the footer band (scene floor at y = " + floor
                         + " px)");
             }
         }
