@@ -137,6 +137,9 @@ final class TourGuide {
             // A launch value waits for the next launch: the stop starts from the launch.
             demo.restart();
         }
+        // A restart keeps the launch before it as a faint path: at a stop, the stop before's
+        // flights (another h, a lane switched off here) would be drawn as this stop's.
+        demo.getWindow().clearKeptShots();
         demo.getDemoHud().setNote(notes.get(index));
         // The title names the stop in both modes: presentation mode shows no heading line.
         demo.getDemoHud().setTitleNote(LectureTour.titleNote(index));

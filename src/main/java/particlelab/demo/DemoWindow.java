@@ -434,6 +434,20 @@ public final class DemoWindow {
     }
 
     /**
+     * Forget the faint paths of earlier launches (the kept shots) and their legend: a tour
+     * stop starts with none, so no path of the stop before (another h, a lane since switched
+     * off) is drawn beside this stop's. Allocates nothing.
+     */
+    public void clearKeptShots() {
+        parameterControls.clearShots();
+    }
+
+    /** @return how many earlier launches are drawn as kept shots now (&ge;0) */
+    public int countKeptShots() {
+        return parameterControls.countHeldShots();
+    }
+
+    /**
      * After one particle was launched again: its trail and ghost start again, the camera
      * frames the launches, the HUD follows.
      *

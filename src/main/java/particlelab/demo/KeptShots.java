@@ -151,6 +151,11 @@ final class KeptShots {
         return kept;
     }
 
+    /** @return how many shots are held to be drawn now (&ge;0, at most {@link #SHOTS}) */
+    int countHeld() {
+        return count;
+    }
+
     /**
      * Count the kept paths drawn: holding points and not hidden.
      *

@@ -293,7 +293,13 @@ final class ParameterControls {
         panel.setTimeline(timelineText, replay.getFraction());
     }
 
-    private void clearShots() {
+    /** @return how many kept shots are held to be drawn (0 before {@link #build}) */
+    int countHeldShots() {
+        return keptShots == null ? 0 : keptShots.countHeld();
+    }
+
+    /** Forget the kept shots and their legend (before {@link #build}, nothing). */
+    void clearShots() {
         if (keptShots != null) {
             keptShots.clear();
             legendDirty = true;

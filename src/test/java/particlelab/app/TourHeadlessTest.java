@@ -69,6 +69,46 @@ class TourHeadlessTest {
      * window had 7 body rows where a resize gave 6). At 1280x720 a stop resized to 640x360
      * and back is laid out as it was opened too.
      */
+    /**
+     * A restart keeps the launch before it as a faint path (kept shots); the tour's stops 16
+     * and 17 are the same demo (pull at h = 1/10 with the RK4 lane, then the rate lanes at
+     * 1/60), and PageDown drew stop 16's ball and lane beside stop 17's as if they were its
+     * lanes (seen in a walk at 1280x720). A stop starts with none.
+     */
+    @Test
+    void aStopStartsWithNoPathOfTheStopBefore() throws Exception {
+        ParticleLabApp app = harness.app();
+        List<LectureTour.Stop> stops = LectureTour.stops();
+        int found = -1;
+        for (int i = 0; i + 1 < stops.size() && found < 0; ++i) {
+            found = stops.get(i).getDemo().equals(stops.get(i + 1).getDemo()) ? i : -1;
+        }
+        assertTrue(found >= 0, "no two stops in a row show one demo");
+        int before = found;
+        harness.call(() -> {
+            app.getTour().go(before);
+            return true;
+        });
+        harness.awaitFrames(40);
+        int[] kept = new int[2];
+        harness.call(() -> {
+            DemoState demo = app.getSwitcher().getSelected();
+            HeadlessHarness.fly(demo, 60, 1f / 60f);
+            demo.restart();
+            kept[0] = demo.getWindow().countKeptShots();
+            return true;
+        });
+        // the feature itself: a restart keeps the flight before it
+        assertTrue(kept[0] > 0, "a restart kept no shot");
+        press("PageDown");
+        harness.awaitFrames(3);
+        harness.call(() -> {
+            kept[1] = app.getSwitcher().getSelected().getWindow().countKeptShots();
+            return true;
+        });
+        assertEquals(0, kept[1], "paths of stop " + (before + 1) + " drawn at the next stop");
+    }
+
     @Test
     void everyStopShowsItsTourLinesAt1280x720AndUp() throws Exception {
         ParticleLabApp app = harness.app();
