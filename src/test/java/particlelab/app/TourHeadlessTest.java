@@ -266,7 +266,7 @@ class TourHeadlessTest {
         DemoState demo = app.getSwitcher().getDemos()
                 .get(DemoCatalog.indexOf(LectureTour.stops().get(index).getDemo()));
         String layout = harness.call(() -> {
-            HudLayout hud = demo.getWindow().getHud().getLayout();
+            HudLayout hud = demo.getHud().getLayout();
             StringBuilder text = new StringBuilder();
             text.append("scale ").append(hud.getScale()).append(", ")
                     .append(hud.getBodyColumns()).append(" columns ")
@@ -277,7 +277,7 @@ class TourHeadlessTest {
             // A line of wall-clock figures differs from frame to frame: the rows it took
             // count, not its text (its continuation too, where it wraps).
             boolean measured = false;
-            for (String line : demo.getWindow().getHud().getBodyText().split("\n", -1)) {
+            for (String line : demo.getHud().getBodyText().split("\n", -1)) {
                 measured = line.contains(" ms/frame") || measured && line.startsWith(" ");
                 text.append('\n').append(measured ? "(measured)" : line);
             }

@@ -103,10 +103,10 @@ class TourSceneShareHeadlessTest {
                     + (presenting ? " presenting" : "") + ": the scene " + scene
                     + (across > scene.getWidth() ? " with the energy bars" : "") + " is "
                     + Math.round(1000f * share) / 10f + " % of the window (HUD scale "
-                    + demo.getWindow().getHud().getLayout().getScale() + ", body "
-                    + demo.getWindow().getHud().getLayout().getBodyLines() + " rows in "
-                    + demo.getWindow().getHud().getLayout().getBodyColumns() + " columns, needed "
-                    + demo.getWindow().getHud().getLayout().getBodyLinesNeeded() + ")");
+                    + demo.getHud().getLayout().getScale() + ", body "
+                    + demo.getHud().getLayout().getBodyLines() + " rows in "
+                    + demo.getHud().getLayout().getBodyColumns() + " columns, needed "
+                    + demo.getHud().getLayout().getBodyLinesNeeded() + ")");
         }
     }
 }
