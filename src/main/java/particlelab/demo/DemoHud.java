@@ -47,17 +47,8 @@ public final class DemoHud {
     private boolean dirty = true;
     /** Lay the HUD out afresh at the next refresh: its note (a tour stop's lines) changed. */
     private boolean afresh;
-    /**
-     * How long the body has needed fewer lines than its band keeps (seconds of frame time).
-     */
+    /** How long the body has needed fewer lines than its band keeps (seconds of frame time). */
     private float slackSeconds;
-    /**
-     * True from a fresh layout (a new window size or factor, a stop, presentation mode)
-     * until a refresh after frame time has passed: while no time has passed, the body's new
-     * lines lay the HUD out afresh at once, so a window reached by any of these ways is laid
-     * out alike (issue 29 §2).
-     */
-    private boolean settling = true;
     /** The window size (pixels) and the user's HUD scale factor of the last layout. */
     private int laidOutWidth;
     private int laidOutHeight;
@@ -112,7 +103,6 @@ public final class DemoHud {
         hud.setBody(demo.getWindow().formatHud(hudText));
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
-        settling = true;
         layOutScene();
     }
 
@@ -237,7 +227,6 @@ public final class DemoHud {
         boolean fresh = userScale != uiScale || width != laidOutWidth
                 || height != laidOutHeight;
         HudScale.layOut(hud, width, height, userScale, fresh);
-        settling |= fresh;
         laidOutWidth = width;
         laidOutHeight = height;
         uiScale = userScale;
@@ -310,7 +299,6 @@ public final class DemoHud {
         writeBody();
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, true);
         hud.takeLayoutChange();
-        settling = true;
         layOutScene();
         scene.updateViews();
         if (demo.isEnabled()) {
@@ -340,27 +328,21 @@ public final class DemoHud {
      * Keep the HUD's body band fitted to the body after a refresh. A body grown past its band
      * is laid out again at the scale that suits the window, shrunk while the window cannot
      * hold every line ({@link HudScale#layOut}), so lines are hidden only when even the
-     * smallest text does not fit. A new note, a body needing fewer lines than the band for
-     * {@link DemoState#HUD_BAND_KEEP_SECONDS}, or a body of other lines or labels than the
-     * layout's while {@link #settling}, lays it out afresh: the band, its columns and the
-     * text size follow the body as it is now, not the most it ever needed nor the lines it
-     * had when laid out. Allocates only when it lays out.
+     * smallest text does not fit. A new note, or a body needing fewer lines than the band for
+     * {@link DemoState#HUD_BAND_KEEP_SECONDS}, lays it out afresh: the band and the text size
+     * follow the body as it is now, not the most it ever needed. Allocates only when it lays
+     * out.
      *
      * @param sinceRefresh the frame time since the last refresh (in seconds, &ge;0)
      */
     private void fitBand(float sinceRefresh) {
         boolean grew = hud.takeLayoutChange();
-        // Other lines or labels than the layout's (its columns were chosen for those): laid
-        // out afresh right after a fresh layout, else kept while they fit (a line that comes
-        // and goes every few frames would move the scene each time).
-        boolean reshaped = settling && !hud.isLaidOutForBody();
         if (hud.getBodyLinesWrapped() < hud.getLayout().getBodyLinesNeeded()) {
             slackSeconds += sinceRefresh;
         } else {
             slackSeconds = 0f;
         }
-        boolean fresh = afresh || reshaped || slackSeconds >= DemoState.HUD_BAND_KEEP_SECONDS;
-        settling &= !(sinceRefresh > 0f);
+        boolean fresh = afresh || slackSeconds >= DemoState.HUD_BAND_KEEP_SECONDS;
         if (!grew && !fresh) {
             return;
         }
@@ -368,7 +350,6 @@ public final class DemoHud {
         slackSeconds = 0f;
         HudScale.layOut(hud, laidOutWidth, laidOutHeight, uiScale, fresh);
         hud.takeLayoutChange();
-        settling |= fresh && !(sinceRefresh > 0f);
         // The band grew or shrank: the scene's area follows it.
         layOutScene();
         demo.frameCamera();

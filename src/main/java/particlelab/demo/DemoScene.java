@@ -76,14 +76,12 @@ final class DemoScene {
     /** An edge label's arrows: its sphere is beyond the scene's right or left edge. */
     private static final String RIGHT_ARROW = " \u2192";
     private static final String LEFT_ARROW = "\u2190 ";
-    /** An edge label's arrow: its sphere is above the scene's top. */
-    private static final String UP_ARROW = " \u2191";
     /** A stacked joined label's separator: " =" ends a line, the next name starts one. */
     private static final String STACKED_SEPARATOR = " =\n";
     private static final String STACKED_LINE_END = " =";
     /** An edge label's position's decimals (metres). */
     private static final int EDGE_DECIMALS = 1;
-    /** How many label heights an edge label moves up or down, at most, to leave a text free. */
+    /** How many label heights an edge label moves up, at most, to leave a text free. */
     private static final int EDGE_TRIES = 6;
     /** A post name's plate's name, before the post's index (tests find it by it). */
     static final String POST_PLATE = "post name plate ";
@@ -1058,23 +1056,19 @@ final class DemoScene {
     }
 
     /**
-     * Give a particle whose sphere lies beyond the scene's left or right side, or above its
-     * top, a label at that edge, on a plate, at the sphere's height (above the ground line)
-     * or at the top under the HUD, saying where it is ("target (physics) at x = 21.0 m →",
-     * "thruster at y = 66.9 m ↑"): a body that rolled or flew out of the framed view is not
-     * lost from it (issue 29 §3, clip's physics lane and thrust's unnormalised fault). The
-     * label takes the free place nearest the sphere's height, up or down the edge. When the
-     * sphere is back, its label is its name again. Allocates nothing once the edge text has
-     * been this long.
+     * Give a particle whose sphere lies beyond the scene's left or right side a label at that
+     * side, on a plate, at the sphere's height (above the ground line), saying where it is
+     * ("target (physics) at x = 21.0 m →"): a body that rolled out of the framed view is not
+     * lost from it (issue 29 §3, clip's physics lane). When the sphere is back, its label is
+     * its name again. Allocates nothing once the edge text has been this long.
      *
-     * @return true if the particle's label was handled here (its sphere is beyond an edge)
+     * @return true if the particle's label was handled here (its sphere is beyond a side)
      */
     private boolean placeEdgeLabel(int i, ParticleView view, float radius) {
         boolean beyondRight = sphereX[i] - radius > sceneArea.getRight();
         boolean beyondLeft = sphereX[i] + radius < sceneArea.getX();
-        boolean beyondTop = sphereY[i] - radius > sceneArea.getTop();
         DemoParticle particle = particles.get(i);
-        if (!beyondRight && !beyondLeft && !beyondTop) {
+        if (!beyondRight && !beyondLeft) {
             if (atEdge[i]) {
                 atEdge[i] = false;
                 view.setLabelText(particle.getLabel());
@@ -1092,43 +1086,29 @@ final class DemoScene {
         if (beyondLeft) {
             text.append(LEFT_ARROW);
         }
-        text.append(particle.getLabel());
-        boolean side = beyondLeft || beyondRight;
-        if (side) {
-            text.append(" at x = ");
-            TextFormat.appendFixed(text, particle.getParticle().position.x, EDGE_DECIMALS)
-                    .append(" m");
+        text.append(particle.getLabel()).append(" at x = ");
+        TextFormat.appendFixed(text, particle.getParticle().position.x, EDGE_DECIMALS)
+                .append(" m");
+        if (beyondRight) {
+            text.append(RIGHT_ARROW);
         }
-        if (beyondTop) {
-            text.append(side ? ", y = " : " at y = ");
-            TextFormat.appendFixed(text, particle.getParticle().position.y, EDGE_DECIMALS)
-                    .append(" m");
-        }
-        text.append(beyondRight ? RIGHT_ARROW : side ? "" : UP_ARROW);
         atEdge[i] = true;
         view.setLabelJoined(false);
         view.setLabelText(text);
         float width = measure.width(text, labelSize);
-        float x = beyondRight ? fixedArea.getRight() - width
-                : beyondLeft ? fixedArea.getX()
-                : Math.max(fixedArea.getX(), Math.min(fixedArea.getRight() - width,
-                        sphereX[i] - width / 2f));
+        float x = beyondRight ? fixedArea.getRight() - width : fixedArea.getX();
         float lowest = Math.max(fixedArea.getY(), plane.screenY(0f) + 0.15f * labelHeight);
         float highest = fixedArea.getTop() - labelHeight;
         float y = Math.max(lowest, Math.min(highest, sphereY[i] - labelHeight / 2f));
-        // The nearest free place along the edge: the sphere's height, then a label height
-        // up and down in turn (at the top, only down: the warning band lies over the
-        // scene's sky there).
-        for (int tries = 0; tries < 2 * EDGE_TRIES + 1; ++tries) {
-            int steps = (tries + 1) / 2;
-            float at = y + (tries % 2 == 1 ? steps : -steps) * labelHeight;
-            if (at > highest || at < lowest) {
-                continue;
-            }
-            chosen.set(x, at, width, labelHeight);
+        for (int tries = 0; tries < EDGE_TRIES; ++tries) {
+            chosen.set(x, y, width, labelHeight);
             if (isFreeForEdgeLabel(chosen, i, radius)) {
                 view.placeLabel(plane, labelSize, -1, chosen, true);
                 return true;
+            }
+            y += labelHeight;
+            if (y > highest) {
+                break;
             }
         }
         view.hideLabel();

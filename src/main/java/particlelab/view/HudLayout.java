@@ -19,13 +19,9 @@ import java.util.List;
  * demo's own keys) first; it shrinks its text until every column fits the window.
  *
  * <p>Text wider than the window is wrapped at spaces, continuation lines indented, a number
- * kept on one line with its unit. On a window wide enough the body is set in two columns
- * side by side where that takes fewer rows (issue 29 §3: the scene's share), chosen from the
- * window, the text size and the body's shape, its lines and labels with every number as
- * wide as it usually gets ({@link #appendShape}), never from the values shown nor from the
- * layouts before. The band keeps the most rows the body has needed since it was last sized
- * afresh ({@link #getBodyLinesNeeded()}, {@link #forgetBodyLines()}), so that the numbers
- * changing from one refresh to the next never move the scene.
+ * kept on one line with its unit. The body keeps the most lines it has needed so far
+ * ({@link #getBodyLinesNeeded()}), so that the numbers changing from one refresh to the next
+ * never move the scene.
  *
  * <h2>A small window</h2>
  * At any size the layout gives every view a rectangle inside the window, and the scene at
@@ -109,27 +105,6 @@ public final class HudLayout {
     /** Presentation mode's space below the title and the formulas (in its line heights). */
     private static final float PRESENT_BAND_SPACE = 0.1f;
     private static final float HELP_SHRINK = 0.98f;
-    /**
-     * The most columns the full HUD's body is set in, side by side under the title: a wide
-     * window holds its lines in two columns and gives the rows saved to the scene
-     * (issue 29 §3: one full-width column left the scene 54 % of a 16:9 window on a tour
-     * stop).
-     */
-    public static final int MAX_BODY_COLUMNS = 2;
-    /**
-     * The narrowest a body column may be (in body text sizes, about 45 characters): narrower
-     * columns would wrap most lines, and a window that narrow keeps one column.
-     */
-    public static final float MIN_BODY_COLUMN_EMS = 22f;
-    /**
-     * The characters a number in the body is taken to need when its columns are chosen (a
-     * sign, whether it has one or not, and four more: two digits, a point and a decimal, or
-     * a digit, a point and two decimals): the columns are chosen for the numbers' usual
-     * widest, not for the values shown when laid out. A longer number counts as it is.
-     */
-    static final int NUMBER_CHARS = 5;
-    /** How many widths between the narrowest and the widest a column is tried at. */
-    private static final int WIDTH_STEPS = 12;
     /** The most columns the help is set in. */
     private static final int MAX_HELP_COLUMNS = 5;
     /** The largest share of the window's width the side panel takes. */
@@ -176,22 +151,8 @@ public final class HudLayout {
     private float helpLaidOutScale = -1f;
     /** How many times the help was flowed into columns (for tests of the layout's work). */
     private int helpFlows;
-    /** The most lines the body has needed so far, wrapped (rows of its columns). */
+    /** The most lines the body has needed so far, wrapped. */
     private int bodyLinesNeeded = 1;
-    /** How many columns the body is set in, and the width of each (pixels). */
-    private int bodyColumns = 1;
-    private final float[] bodyColumnWidths = {1f, 0f};
-    /**
-     * What the body's columns were chosen for: the band width and text size (pixels) and
-     * the body's shape ({@link #appendShape}); the same three give the same columns.
-     */
-    private float bodyColumnsWidth = -1f;
-    private float bodyColumnsSize = -1f;
-    private final StringBuilder bodyColumnsShape = new StringBuilder(2048);
-    /** Scratch: the shape of a body asked about ({@link #isLaidOutForShape}). */
-    private final StringBuilder shapeScratch = new StringBuilder(2048);
-    /** The body's first line (unwrapped) that starts the second column. */
-    private int bodySplit = Integer.MAX_VALUE;
     /** The lines the body band shows: all it needs, or fewer on a small window. */
     private int bodyLines = 1;
     /** The lines the warning band holds. */
@@ -291,7 +252,7 @@ public final class HudLayout {
         float warningLineHeight = measure.lineHeight(getWarningSize());
         float footerLineHeight = measure.lineHeight(getFooterSize());
         bodyLinesNeeded = Math.max(bodyLinesNeeded,
-                chooseBodyColumns(bodyText, textWidth, margin));
+                countLines(wrap(bodyText, getBodySize(), textWidth)));
         String keys = wrap(footerLine, getFooterSize(), titleWidth);
         // Room for the body, the warning band and the footer: the window less the margins,
         // the title, the spaces around the body, the gaps around the scene and the scene's
@@ -395,11 +356,6 @@ public final class HudLayout {
         float size = getBodySize();
         float lineHeight = measure.lineHeight(size);
         float footerLineHeight = measure.lineHeight(getFooterSize());
-        bodyColumns = 1;
-        bodyColumnWidths[0] = textWidth;
-        bodyColumnWidths[1] = 0f;
-        bodySplit = Integer.MAX_VALUE;
-        bodyColumnsWidth = -1f;
 
         // The title on one row where a smaller size down to the least fraction does it.
         presentTitleSize = PRESENT_SIZE * scale;
@@ -804,92 +760,9 @@ public final class HudLayout {
         return title;
     }
 
-    /**
-     * @return the body band (live, do not modify): the whole width left of the side panel,
-     *     every column of the body inside it
-     */
+    /** @return the body band (live, do not modify) */
     public ScreenRect getBody() {
         return body;
-    }
-
-    /**
-     * Test whether the last layout was made for a body of this shape ({@link #appendShape}):
-     * a body whose numbers changed but whose lines and labels did not is laid out as it is
-     * (its band grows where a wider number wraps a line); for a body of another shape a
-     * fresh layout may choose other columns. True when presenting (the slide's lines are
-     * laid out as they come). Allocates nothing once the scratch builder is large enough
-     * (the HUD asks every refresh).
-     *
-     * @param bodyText the body as it is now (not null)
-     * @return true if the layout is the one a fresh layout would make for this shape
-     */
-    public boolean isLaidOutForShape(CharSequence bodyText) {
-        if (presenting) {
-            return true;
-        }
-        appendShape(bodyText, shapeScratch);
-        return TextFormat.sameText(shapeScratch, bodyColumnsShape);
-    }
-
-    /** @return how many columns the body is set in (1 or 2; 1 when presenting) */
-    public int getBodyColumns() {
-        return bodyColumns;
-    }
-
-    /**
-     * @param column the column (0 or 1)
-     * @return the width the column's lines are wrapped to (in pixels; 0 for a second column
-     *     the body does not have)
-     */
-    public float getBodyColumnWidth(int column) {
-        return bodyColumnWidths[column];
-    }
-
-    /**
-     * Return where a column of the body begins: the first at the band's left, the second a
-     * margin right of the first's width.
-     *
-     * @param column the column (0 or 1)
-     * @return its left edge (in pixels)
-     */
-    public float getBodyColumnX(int column) {
-        return body.getX() + column * (bodyColumnWidths[0] + getMargin());
-    }
-
-    /**
-     * Copy the lines of one of the body's columns, unwrapped, into a builder: the body's
-     * lines before the split go in the first column, the rest in the second (empty when the
-     * body has one column). The split is the layout's, kept while the text changes between
-     * layouts, so lines do not jump between the columns as their numbers change. Allocates
-     * nothing once the builder is large enough.
-     *
-     * @param text the body (not null, not modified, not storeResult)
-     * @param column the column (0 or 1)
-     * @param storeResult storage for the column's lines (not null, cleared and modified)
-     * @return storeResult
-     */
-    public StringBuilder copyBodyColumn(CharSequence text, int column,
-            StringBuilder storeResult) {
-        storeResult.setLength(0);
-        int line = 0;
-        int start = 0;
-        int length = text.length();
-        boolean first = true;
-        for (int i = 0; i <= length; ++i) {
-            if (i == length || text.charAt(i) == '\n') {
-                boolean inFirst = bodyColumns < 2 || line < bodySplit;
-                if (inFirst == (column == 0)) {
-                    if (!first) {
-                        storeResult.append('\n');
-                    }
-                    first = false;
-                    storeResult.append(text, start, i);
-                }
-                ++line;
-                start = i + 1;
-            }
-        }
-        return storeResult;
     }
 
     /** @return the warning band (live, do not modify) */
@@ -946,177 +819,6 @@ public final class HudLayout {
     public List<String> getHelpColumnTexts() {
         layOutHelp(helpToLayOut);
         return helpColumnTexts;
-    }
-
-    /**
-     * Choose the body's columns for a band width: two columns side by side where they need
-     * fewer rows than one, else one. The choice is made on the body's shape ({@link
-     * #appendShape}: every number as wide as the widest it usually takes), so it depends on
-     * the window, the text size and the body's lines and labels, never on the values shown
-     * when it was made nor on the layouts before it: a window opened, resized or reached by
-     * PageDown lays the same body out the same way. The first column is as wide as its
-     * widest line and the second takes the rest, or the second as wide as its widest and
-     * the first the rest, or one of {@value #WIDTH_STEPS} widths between, each at least
-     * {@value #MIN_BODY_COLUMN_EMS} body sizes; of every split before a line that starts a
-     * block (not indented: a listing's lines stay together) where every wrapped line fits
-     * its column (a word longer than the column, such as a line of code, would run out of
-     * it), the one needing the fewest rows. Sets {@link #bodyColumns}, {@link
-     * #bodyColumnWidths} and {@link #bodySplit}. Allocates (at a layout only).
-     *
-     * @return the rows the body needs now, its text as it is wrapped in the columns chosen
-     */
-    private int chooseBodyColumns(CharSequence bodyText, float textWidth, float margin) {
-        float size = getBodySize();
-        String[] real = bodyText.toString().split("\n", -1);
-        appendShape(bodyText, shapeScratch);
-        if (bodyColumnsWidth != textWidth || bodyColumnsSize != size
-                || !TextFormat.sameText(shapeScratch, bodyColumnsShape)) {
-            // Only the inputs of the choice decide it: the same three give the same columns.
-            bodyColumnsWidth = textWidth;
-            bodyColumnsSize = size;
-            bodyColumnsShape.setLength(0);
-            bodyColumnsShape.append(shapeScratch);
-            chooseColumnsForShape(bodyColumnsShape.toString(), size, textWidth - margin);
-        }
-        if (bodyColumns == 1) {
-            // One column is the band's whole width.
-            bodyColumnWidths[0] = textWidth;
-            return countLines(wrap(bodyText, size, textWidth));
-        }
-        int split = Math.min(bodySplit, real.length);
-        return Math.max(realRows(real, 0, split, bodyColumnWidths[0], size),
-                realRows(real, split, real.length, bodyColumnWidths[1], size));
-    }
-
-    /**
-     * Choose the columns for a body's shape (see {@link #chooseBodyColumns}).
-     *
-     * @param shape the body's shape (not null)
-     * @param size the body's text size (in pixels)
-     * @param both the width the two columns share, the margin between them taken off (pixels)
-     */
-    private void chooseColumnsForShape(String shape, float size, float both) {
-        bodyColumns = 1;
-        bodyColumnWidths[1] = 0f;
-        bodySplit = Integer.MAX_VALUE;
-        float least = MIN_BODY_COLUMN_EMS * size;
-        if (both < 2f * least) {
-            return;
-        }
-        String[] lines = shape.split("\n", -1);
-        int oneColumn = countLines(wrap(shape, size, both + getMargin()));
-        float[] widths = new float[lines.length];
-        for (int i = 0; i < lines.length; ++i) {
-            widths[i] = measure.width(lines[i], size);
-        }
-        // The widest line from each line to the end: the second column's widest.
-        float[] widestAfter = new float[lines.length + 1];
-        for (int i = lines.length - 1; i >= 0; --i) {
-            widestAfter[i] = Math.max(widths[i], widestAfter[i + 1]);
-        }
-        int bestRows = oneColumn;
-        float widest = 0f;
-        for (int split = 1; split < lines.length; ++split) {
-            widest = Math.max(widest, widths[split - 1]);
-            if (lines[split].isEmpty() || lines[split].charAt(0) == ' ') {
-                continue;
-            }
-            // Where both columns' widest lines fit side by side, the room left is shared
-            // between them, so a number growing by a digit wraps no line (a new layout
-            // allocates); else the first column as wide as its widest line, or the second,
-            // or one of WIDTH_STEPS widths between the narrowest and the widest (a long
-            // listing in one column and wrapped prose in the other balance in between).
-            boolean side = widest + widestAfter[split] <= both;
-            int candidates = side ? 1 : 2 + WIDTH_STEPS + 1;
-            for (int fit = 0; fit < candidates; ++fit) {
-                float wanted = side ? 0.5f * (widest + both - widestAfter[split])
-                        : fit == 0 ? widest : fit == 1 ? both - widestAfter[split]
-                        : least + (fit - 2) * (both - 2f * least) / WIDTH_STEPS;
-                float first = Math.max(least, Math.min(wanted, both - least));
-                float second = both - first;
-                int rows = Math.max(rows(lines, widths, 0, split, first, size),
-                        rows(lines, widths, split, lines.length, second, size));
-                if (rows < bestRows) {
-                    bestRows = rows;
-                    bodyColumns = MAX_BODY_COLUMNS;
-                    bodyColumnWidths[0] = first;
-                    bodyColumnWidths[1] = second;
-                    bodySplit = split;
-                }
-            }
-        }
-    }
-
-    /**
-     * Append a body's shape: the text with every number (a run of digits and points, with
-     * the sign before it) written as zeros, one for each character and one for a sign
-     * whether it has one or not, at least {@value #NUMBER_CHARS} of them, so the same lines
-     * with other values (a sign that flips, a digit more or less below the usual widest)
-     * have the same shape, and the shape is at least as wide as the text (the font's digits
-     * share one width, a point and a minus sign are narrower). Allocates nothing once the
-     * builder is large enough.
-     *
-     * @param text the text (not null, not storeResult)
-     * @param storeResult storage for the shape (not null, cleared and modified)
-     * @return storeResult
-     */
-    static StringBuilder appendShape(CharSequence text, StringBuilder storeResult) {
-        storeResult.setLength(0);
-        int length = text.length();
-        int i = 0;
-        while (i < length) {
-            char c = text.charAt(i);
-            boolean sign = (c == '-' || c == '+') && i + 1 < length
-                    && Character.isDigit(text.charAt(i + 1));
-            if (!sign && !Character.isDigit(c)) {
-                storeResult.append(c);
-                ++i;
-                continue;
-            }
-            int start = i;
-            i = sign ? i + 1 : i;
-            while (i < length && (Character.isDigit(text.charAt(i)) || text.charAt(i) == '.')) {
-                ++i;
-            }
-            int chars = i - start + (sign ? 0 : 1);
-            for (int zero = 0; zero < Math.max(chars, NUMBER_CHARS); ++zero) {
-                storeResult.append('0');
-            }
-        }
-        return storeResult;
-    }
-
-    /**
-     * Count the rows lines from..to-1 take wrapped to a width, as the HUD wraps them.
-     */
-    private int realRows(String[] lines, int from, int to, float width, float size) {
-        int rows = 0;
-        for (int i = from; i < to; ++i) {
-            rows += measure.width(lines[i], size) <= width ? 1
-                    : countLines(wrap(lines[i], size, width));
-        }
-        return rows;
-    }
-
-    /**
-     * Count the rows lines from..to-1 take wrapped to a width (a line that fits: one); a
-     * line that still runs wider once wrapped counts as more rows than any band holds.
-     */
-    private int rows(String[] lines, float[] widths, int from, int to, float width,
-            float size) {
-        int rows = 0;
-        for (int i = from; i < to; ++i) {
-            if (widths[i] <= width) {
-                ++rows;
-                continue;
-            }
-            String wrapped = wrap(lines[i], size, width);
-            if (measure.width(wrapped, size) > width) {
-                return Integer.MAX_VALUE / 2;
-            }
-            rows += countLines(wrapped);
-        }
-        return rows;
     }
 
     /**

@@ -33,12 +33,8 @@ public final class HudView {
     private static final ColorRGBA FOOTER_COLOR = new ColorRGBA(0.7f, 0.76f, 0.86f, 1f);
     /** The help panel hides the scene and the HUD below the title (opaque). */
     private static final ColorRGBA PANEL_COLOR = new ColorRGBA(0.02f, 0.03f, 0.06f, 1f);
-    /**
-     * Behind the top band: hides grid lines and trails that reach above the scene's area,
-     * opaque (a trail flown out of the top showed through it, behind the body's text, at
-     * 3840x2160; the sphere's label at the top of the scene says where it went).
-     */
-    private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 1f);
+    /** Behind the top band: hides grid lines and trails that reach above the scene's area. */
+    private static final ColorRGBA BACKDROP_COLOR = new ColorRGBA(0.07f, 0.08f, 0.11f, 0.92f);
 
     private final Node node = new Node("HUD");
     private final Geometry backdrop;
@@ -47,8 +43,6 @@ public final class HudView {
     private final HudLayout layout;
     private final HudText title;
     private final HudText body;
-    /** The body's second column, right of the first (empty when it has one). */
-    private final HudText bodyRight;
     private final HudText warning;
     private final HudText footer;
     /** Presentation mode's readout (empty in the full HUD). */
@@ -63,8 +57,6 @@ public final class HudView {
     private final StringBuilder wrapLine = new StringBuilder(256);
     private final StringBuilder wrapped = new StringBuilder(2048);
     private final StringBuilder cut = new StringBuilder(2048);
-    /** Scratch: one of the body's columns, unwrapped. */
-    private final StringBuilder column = new StringBuilder(2048);
     /** The body and the warning as given, unwrapped and whole (the bands may show less). */
     private final StringBuilder bodySource = new StringBuilder(2048);
     private final StringBuilder warningSource = new StringBuilder(256);
@@ -98,14 +90,12 @@ public final class HudView {
         this.layout = new HudLayout(measure);
         title = text(font, TITLE_COLOR);
         body = text(font, BODY_COLOR);
-        bodyRight = text(font, BODY_COLOR);
         footer = text(font, FOOTER_COLOR);
         warning = text(font, WARNING_COLOR);
         readout = text(font, TITLE_COLOR);
         node.attachChild(title);
         node.attachChild(readout);
         node.attachChild(body);
-        node.attachChild(bodyRight);
         node.attachChild(footer);
         node.attachChild(warning);
 
@@ -193,17 +183,6 @@ public final class HudView {
     }
 
     /**
-     * Test whether the layout was made for a body of the shape shown: the same lines and
-     * labels, whatever their numbers ({@link HudLayout#isLaidOutForShape}). Allocates nothing
-     * once the layout's scratch is large enough.
-     *
-     * @return true if it was
-     */
-    public boolean isLaidOutForBody() {
-        return layout.isLaidOutForShape(bodySource);
-    }
-
-    /**
      * Copy the screen rectangle of every HUD text shown into a list, for tests of the layout:
      * the title, body, warning and footer (and in presentation mode the readout), or with
      * the help shown, the title and the help's
@@ -220,9 +199,6 @@ public final class HudView {
             }
         } else {
             storeResult.add(rectOf(body));
-            if (bodyRight.getChars().length() > 0) {
-                storeResult.add(rectOf(bodyRight));
-            }
             storeResult.add(rectOf(warning));
             storeResult.add(rectOf(footer));
             if (presenting) {
@@ -260,21 +236,15 @@ public final class HudView {
      * @return true if the text changed
      */
     public boolean setBody(CharSequence text) {
-        // A body that ends with a line break (a tour stop's lines) has no more to show:
-        // the empty line after it would take a row of the band from the scene.
-        int length = text.length();
-        while (length > 0 && text.charAt(length - 1) == '\n') {
-            --length;
-        }
-        if (isBodySource(text, length)) {
+        if (TextFormat.sameText(text, bodySource)) {
             return false;
         }
         bodySource.setLength(0);
-        bodySource.append(text, 0, length);
-        boolean changed = setBodyColumns();
-        if (bodyWrappedLines > layout.getBodyLinesNeeded()) {
-            // More rows than the band holds: it grows (its columns chosen for the body's
-            // shape now).
+        bodySource.append(text);
+        boolean changed = setWrapped(body, bodySource, layout.getBodySize(),
+                layout.getBodyLines());
+        bodyWrappedLines = wrappedLines;
+        if (wrappedLines > layout.getBodyLinesNeeded()) {
             relayOut();
             layoutChanged = true;
         }
@@ -417,13 +387,12 @@ public final class HudView {
     }
 
     /**
-     * Return the text shown in the body: its first column's lines, then its second's.
+     * Return the text shown in the body.
      *
      * @return the text (not null)
      */
     public String getBodyText() {
-        return bodyRight.getChars().length() == 0 ? body.getText()
-                : body.getText() + "\n" + bodyRight.getText();
+        return body.getText();
     }
 
     /**
@@ -478,13 +447,11 @@ public final class HudView {
         place(title, layout.getTitle(), layout.getTitleSize(), 1f);
         set(title, layout.getTitleText());
         place(body, layout.getBody(), layout.getBodySize(), 1f);
-        place(bodyRight, layout.getBody(), layout.getBodySize(), 1f);
-        bodyRight.setLocalTranslation(layout.getBodyColumnX(1), layout.getBody().getTop(), 1f);
         place(warning, layout.getWarning(), layout.getWarningSize(), 1f);
         place(footer, layout.getFooter(), layout.getFooterSize(), 1f);
         set(footer, layout.getFooterText());
         // Text set before this layout was wrapped for the old width: wrap it again.
-        setBodyColumns();
+        setWrapped(body, bodySource, layout.getBodySize(), layout.getBodyLines());
         setWrapped(warning, warningSource, layout.getWarningSize(), layout.getWarningLines());
         place(readout, layout.getReadout(), layout.getBodySize(), 1f);
         setWrapped(readout, readoutSource, layout.getBodySize(), layout.getReadoutLines());
@@ -523,37 +490,6 @@ public final class HudView {
     }
 
     /**
-     * Set the body's columns: each column's lines of the body ({@link
-     * HudLayout#copyBodyColumn}) wrapped to the column's width and cut to the band's rows;
-     * {@link #bodyWrappedLines} counts the rows before the cut (the most either column
-     * needs). Allocates nothing once the scratch builders are large enough.
-     *
-     * @return true if a column's text changed
-     */
-    private boolean setBodyColumns() {
-        float size = layout.getBodySize();
-        int rows = 0;
-        boolean changed = false;
-        for (int c = 0; c < HudLayout.MAX_BODY_COLUMNS; ++c) {
-            HudText target = c == 0 ? body : bodyRight;
-            if (c >= layout.getBodyColumns()) {
-                changed |= set(target, "");
-                continue;
-            }
-            float width = layout.getBodyColumnWidth(c);
-            layout.copyBodyColumn(bodySource, c, column);
-            CharSequence shown = measure.width(column, size) <= width ? column
-                    : layout.wrap(column, size, width, wrapLine, wrapped);
-            if (c == 0 || column.length() > 0) {
-                rows = Math.max(rows, HudLayout.countLines(shown));
-            }
-            changed |= set(target, HudLayout.firstLines(shown, layout.getBodyLines(), cut));
-        }
-        bodyWrappedLines = rows;
-        return changed;
-    }
-
-    /**
      * Set a text wrapped to the body's width and cut to a band's lines, if that differs from
      * what is shown; {@link #wrappedLines} counts the lines before the cut. Allocates nothing
      * once the scratch builders are large enough.
@@ -564,19 +500,6 @@ public final class HudView {
                 : layout.wrap(text, size, maxWidth, wrapLine, wrapped);
         wrappedLines = HudLayout.countLines(shown);
         return set(target, HudLayout.firstLines(shown, maxLines, cut));
-    }
-
-    /** @return true if text[0, length) is the body shown */
-    private boolean isBodySource(CharSequence text, int length) {
-        if (length != bodySource.length()) {
-            return false;
-        }
-        for (int i = 0; i < length; ++i) {
-            if (text.charAt(i) != bodySource.charAt(i)) {
-                return false;
-            }
-        }
-        return true;
     }
 
     private static void place(HudText text, ScreenRect where, float size, float z) {

@@ -47,8 +47,6 @@ class OverlapMatrixHeadlessTest {
     private static final int AIMING_LANDED_FRAMES = 400;
     /** Frames of iterate's screenshot ({@code demo iterate --frames 300}): rounds flown. */
     private static final int ITERATE_FRAMES = 300;
-    /** The bug hunt's parameter (FaultHunt's), and its choice of no fault. */
-    private static final String FAULT = "fault";
     /** Frames the impulse labels are followed for, and the gap between samples. */
     private static final int IMPULSE_FRAMES = 360;
     private static final int IMPULSE_SAMPLE = 6;
@@ -97,8 +95,7 @@ class OverlapMatrixHeadlessTest {
      * shot of drag and pull has landed, trails drawn in full): no overlap, and every sphere
      * a viewer sees keeps its label (drag's linear-drag sphere had none at 1280x720, with
      * and without the RK4 lane, its every slot touching a trail), and a sphere that rolled
-     * beyond the scene's side (clip's physics target) keeps its label at that side, one that
-     * flew out of its top (thrust's unnormalised fault at 3840x2160) at the top.
+     * beyond the scene's side (clip's physics target) keeps its label at that side.
      */
     @Test
     void theIssuesScenesKeepEveryLabelClearOrPlatedAfterTheLanding() throws Exception {
@@ -123,12 +120,6 @@ class OverlapMatrixHeadlessTest {
             {"clip", -1, 1280, 720, false, LANDED_FRAMES},
             {"drag", -1, 640, 360, false, LANDED_FRAMES},
             {"drag", -1, 3840, 2160, true, LANDED_FRAMES},
-            // the unnormalised thrust flies out of the top of the framed view: its label at
-            // the top says where it is
-            {"thrust", -1, 3840, 2160, false, LANDED_FRAMES, "unnormalised"},
-            {"thrust", -1, 1280, 720, false, LANDED_FRAMES, "unnormalised"},
-            // the fault's twin beside the ball on a small window
-            {"pull", -1, 640, 360, false, LANDED_FRAMES, "p-before-v"},
         };
         for (Object[] c : cases) {
             DemoState demo = app.getSwitcher().getDemos().get(
@@ -138,10 +129,9 @@ class OverlapMatrixHeadlessTest {
             int height = (Integer) c[3];
             boolean presenting = (Boolean) c[4];
             int frames = (Integer) c[5];
-            String fault = c.length > 6 ? (String) c[6] : null;
             String where = c[0] + (lane >= 0 ? " lane " + ComparisonLane.Kind.values()[lane]
-                    : "") + (fault != null ? " fault=" + fault : "") + " " + width + "x"
-                    + height + (presenting ? " presenting" : "") + " frame " + frames;
+                    : "") + " " + width + "x" + height + (presenting ? " presenting" : "")
+                    + " frame " + frames;
             problems.addAll(harness.call(() -> {
                 demo.getClock().setMode(SimulationClock.Mode.FIXED_STEP);
                 demo.getClock().setPaused(false);
@@ -149,11 +139,6 @@ class OverlapMatrixHeadlessTest {
                         ? demo.getParameters().getValue(ComparisonLane.PARAMETER) : 0f;
                 if (lane >= 0) {
                     demo.getParameters().set(ComparisonLane.PARAMETER, lane);
-                }
-                int faultIndex = demo.getParameters().indexOf(FAULT);
-                if (fault != null) {
-                    demo.getParameters().set(FAULT,
-                            demo.getParameters().get(faultIndex).indexOfChoice(fault));
                 }
                 demo.restart();
                 demo.getDemoHud().setPresenting(presenting);
@@ -166,11 +151,6 @@ class OverlapMatrixHeadlessTest {
                 found.addAll(OverlapProbe.labelsAboveTheGround(demo, where));
                 if (lane >= 0) {
                     demo.getParameters().set(ComparisonLane.PARAMETER, laneBefore);
-                    demo.restart();
-                }
-                if (fault != null) {
-                    demo.getParameters().set(FAULT,
-                            demo.getParameters().get(faultIndex).indexOfChoice("none"));
                     demo.restart();
                 }
                 demo.getDemoHud().setPresenting(false);

@@ -95,15 +95,13 @@ public final class OverlapProbe {
                 }
             } else if (demo.getWindow().getView(particle).getNode().getCullHint()
                     != Spatial.CullHint.Always
-                    && (x + radius < scene.getX() || x - radius > scene.getRight()
-                            || y - radius > scene.getTop())
+                    && (x + radius < scene.getX() || x - radius > scene.getRight())
                     && demo.getWindow().getView(particle).getLabelRect().isEmpty()
                     && !particle.getLabel().isEmpty()) {
-                // Beyond the scene's side or above its top (rolled or flown out of the
-                // framed view): its label stands at that edge and says where it is.
+                // Beyond the scene's side (rolled out of the framed view): its label stands
+                // at that side and says where it is.
                 problems.add(where + ": the sphere of '" + particle.getLabel() + "' beyond"
-                        + " the scene's edge at (" + x + ", " + y + ") px has no label at"
-                        + " the edge");
+                        + " the scene's side at x = " + x + " px has no label at the edge");
             }
         }
         // The targets demo's own spheres beyond its particles (the gun's platform, the

@@ -22,7 +22,7 @@ class SceneShareHeadlessTest {
     /** The least share of the window's area the scene is drawn into. */
     static final float MIN_SCENE_AREA_SHARE = 0.55f;
     private static final float H = 1f / 60f;
-    private static final int[][] WINDOWS = {{1280, 720}, {1024, 768}, {1920, 1080}, {3840, 2160}};
+    private static final int[][] WINDOWS = {{1280, 720}, {1024, 768}, {1920, 1080}};
     private static final int FRAMES = 240;
     private static final int SAMPLE_EVERY = 20;
     /** A pixel's rounding between the HUD's band and the scene's edge. */
