@@ -22,7 +22,7 @@ import particlelab.physics.SimulationClock;
  * bit-identical, each raw-tpf lane is {@code trajectory --tpf 1/f} byte for byte, a level shot
  * lands {@code vx·h} short, and the jitter histogram is a re-simulation of its seeds.
  */
-class FrameRateRunTest {
+public class FrameRateRunTest {
 
     private static final float[] RATES_HZ = {30f, 60f, 144f, 240f};
     private static final float G = 9.8f;
@@ -198,7 +198,7 @@ class FrameRateRunTest {
     }
 
     /** A row as {@code trajectory} prints it: t = n·h from the step count, floats' digits. */
-    private static void appendRow(StringBuilder csv, int n, float tpf, Particle particle) {
+    public static void appendRow(StringBuilder csv, int n, float tpf, Particle particle) {
         Vector3f p = particle.position;
         Vector3f v = particle.velocity;
         csv.append((float) (n * (double) tpf)).append(',').append(p.x).append(',').append(p.y)
@@ -206,7 +206,8 @@ class FrameRateRunTest {
                 .append(',').append(v.z).append('\n');
     }
 
-    private static String trajectory(String... args) {
+    /** @return what {@code trajectory} prints for the arguments (exit 0 asserted), lines by \n */
+    public static String trajectory(String... args) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int code = TrajectoryCommand.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),

@@ -23,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
 import particlelab.Allocations;
 import particlelab.aiming.FrameJitter;
 import particlelab.aiming.FrameRateRun;
+import particlelab.aiming.FrameRateRunTest;
 import particlelab.aiming.JitterHistogram;
 import particlelab.app.Main;
 import particlelab.app.TrajectoryCommand;
@@ -137,12 +138,12 @@ class RateLanesDemoTest {
             FrameRateRun alone = new FrameRateRun(ball.getIntegrator());
             alone.start(launch, rate, SimulationClock.Mode.RAW_TPF, H);
             StringBuilder csv = new StringBuilder(TrajectoryCommand.HEADER).append('\n');
-            appendRow(csv, 0, tpf, alone.getParticle());
+            FrameRateRunTest.appendRow(csv, 0, tpf, alone.getParticle());
             while (!alone.hasLanded()) {
                 alone.frame(tpf);
-                appendRow(csv, alone.getSteps(), tpf, alone.getParticle());
+                FrameRateRunTest.appendRow(csv, alone.getSteps(), tpf, alone.getParticle());
             }
-            assertEquals(trajectory("--v0", "10,10,0", "--g", "0,-9.8,0", "--tpf",
+            assertEquals(FrameRateRunTest.trajectory("--v0", "10,10,0", "--g", "0,-9.8,0", "--tpf",
                     "1/" + (int) rate, "--until-ground"), csv.toString(), rate + " Hz");
             // and the lane in the demo took the same frames: the same bits
             FrameRateRun lane = rates.getRun(i);
@@ -333,24 +334,6 @@ class RateLanesDemoTest {
         long fold;
         int sceneOverFrame = -1;
         int entryInts;
-    }
-
-    /** A row as {@code trajectory} prints it: t = n·h from the step count, floats' digits. */
-    private static void appendRow(StringBuilder csv, int n, float tpf, Particle particle) {
-        Vector3f p = particle.position;
-        Vector3f v = particle.velocity;
-        csv.append((float) (n * (double) tpf)).append(',').append(p.x).append(',').append(p.y)
-                .append(',').append(p.z).append(',').append(v.x).append(',').append(v.y)
-                .append(',').append(v.z).append('\n');
-    }
-
-    private static String trajectory(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = TrajectoryCommand.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8));
-        assertEquals(0, code, err.toString(StandardCharsets.UTF_8));
-        return out.toString(StandardCharsets.UTF_8).replace(System.lineSeparator(), "\n");
     }
 
     private static int main(String... args) {
